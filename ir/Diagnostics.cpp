@@ -1,0 +1,193 @@
+#include "ir/Diagnostics.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace ncc {
+
+uint32_t SourceManager::addFile(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return 0;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return addBuffer(path, ss.str());
+}
+
+uint32_t SourceManager::addBuffer(std::string name, std::string text) {
+  auto f = std::make_unique<File>();
+  f->name = std::move(name);
+  f->text = std::move(text);
+  files_.push_back(std::move(f));
+  return (uint32_t)files_.size();
+}
+
+const SourceManager::File *SourceManager::get(uint32_t file) const {
+  if (file == 0 || file > files_.size()) return nullptr;
+  return files_[file - 1].get();
+}
+
+const std::string &SourceManager::name(uint32_t file) const {
+  static const std::string none = "<unknown>";
+  auto *f = get(file);
+  return f ? f->name : none;
+}
+
+const std::string &SourceManager::text(uint32_t file) const {
+  static const std::string none;
+  auto *f = get(file);
+  return f ? f->text : none;
+}
+
+std::string_view SourceManager::lineText(uint32_t file, uint32_t line) const {
+  auto *f = get(file);
+  if (!f || line == 0) return {};
+  if (f->lineStarts.empty()) {
+    auto &ls = const_cast<File *>(f)->lineStarts;
+    ls.push_back(0);
+    for (uint32_t i = 0; i < f->text.size(); ++i)
+      if (f->text[i] == '\n') ls.push_back(i + 1);
+  }
+  if (line > f->lineStarts.size()) return {};
+  uint32_t b = f->lineStarts[line - 1];
+  uint32_t e = line < f->lineStarts.size() ? f->lineStarts[line] - 1 : (uint32_t)f->text.size();
+  if (e > b && f->text[e - 1] == '\r') --e;
+  if (e < b) e = b;
+  return std::string_view(f->text).substr(b, e - b);
+}
+
+static const char *severityName(Severity s) {
+  switch (s) {
+  case Severity::Note: return "note";
+  case Severity::Warning: return "warning";
+  case Severity::Error: return "error";
+  }
+  return "error";
+}
+
+static std::string jsonEscape(std::string_view s) {
+  std::string o;
+  for (unsigned char c : s) {
+    switch (c) {
+    case '"': o += "\\\""; break;
+    case '\\': o += "\\\\"; break;
+    case '\n': o += "\\n"; break;
+    case '\t': o += "\\t"; break;
+    case '\r': o += "\\r"; break;
+    default:
+      if (c < 0x20) o += fmt::format("\\u{:04x}", c);
+      else o += (char)c;
+    }
+  }
+  return o;
+}
+
+// Non-printable bytes in a quoted source line would garble the terminal: show them as '?'.
+static std::string printable(std::string_view s) {
+  std::string o(s);
+  for (char &c : o)
+    if ((unsigned char)c < 0x20 && c != '\t') c = '?';
+    else if ((unsigned char)c >= 0x7f) c = '?';
+  return o;
+}
+
+std::string Diagnostics::render(const Diagnostic &d) const {
+  std::string file = d.loc.file ? sm_.name(d.loc.file) : "ncc";
+  if (format_ == Format::Json) {
+    return fmt::format(R"({{"file":"{}","line":{},"column":{},"severity":"{}","message":"{}","rule":"{}"}})",
+                       jsonEscape(file), d.loc.line, d.loc.col, severityName(d.severity),
+                       jsonEscape(d.message), jsonEscape(d.rule));
+  }
+  std::string out;
+  if (d.loc.valid())
+    out = fmt::format("{}:{}:{}: {}: {}", file, d.loc.line, d.loc.col ? d.loc.col : 1,
+                      severityName(d.severity), d.message);
+  else
+    out = fmt::format("{}: {}: {}", file, severityName(d.severity), d.message);
+  if (!d.rule.empty()) out += fmt::format(" [{}]", d.rule);
+  out += '\n';
+  if (d.loc.valid()) {
+    std::string_view line = sm_.lineText(d.loc.file, d.loc.line);
+    if (line.size() > 300) line = line.substr(0, 300);
+    out += printable(line);
+    out += '\n';
+    uint32_t col = d.loc.col ? d.loc.col : 1;
+    std::string pad;
+    for (uint32_t i = 1; i < col && i <= line.size(); ++i) pad += line[i - 1] == '\t' ? '\t' : ' ';
+    out += pad + "^\n";
+  }
+  return out;
+}
+
+void Diagnostics::report(Severity s, SourceLoc loc, std::string message, std::string rule) {
+  if (s == Severity::Warning && werror_) s = Severity::Error;
+  if (s == Severity::Error) ++errors_;
+  if (s == Severity::Warning) ++warnings_;
+  Diagnostic d{s, loc, std::move(message), std::move(rule)};
+  if (s == Severity::Error && errors_ > errorLimit_) {
+    if (errors_ == errorLimit_ + 1 && out_ && !collect_)
+      std::fprintf(out_, "ncc: note: too many errors, stopping here\n");
+    return;
+  }
+  if (collect_) {
+    collected_.push_back(std::move(d));
+    return;
+  }
+  if (out_) {
+    std::string text = render(d);
+    if (format_ == Format::Json) text += '\n';
+    std::fputs(text.c_str(), out_);
+  }
+}
+
+bool writeFileAtomic(const std::string &path, std::string_view data, std::string &err) {
+  AtomicFile f(path);
+  if (!f.ok()) {
+    err = fmt::format("cannot create '{}'", path);
+    return false;
+  }
+  if (std::fwrite(data.data(), 1, data.size(), f.stream()) != data.size()) {
+    err = fmt::format("cannot write '{}'", path);
+    return false;
+  }
+  return f.commit(err);
+}
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  tmp_ = path_ + fmt::format(".tmp{}", (long)getpid());
+  f_ = std::fopen(tmp_.c_str(), "wb");
+  if (f_) std::setvbuf(f_, nullptr, _IOFBF, 1 << 16);
+}
+
+AtomicFile::~AtomicFile() {
+  if (f_) {
+    std::fclose(f_);
+    std::remove(tmp_.c_str());
+  }
+}
+
+bool AtomicFile::commit(std::string &err) {
+  if (!f_) {
+    err = fmt::format("cannot create '{}'", path_);
+    return false;
+  }
+  bool bad = std::ferror(f_) != 0;
+  bad |= std::fclose(f_) != 0;
+  f_ = nullptr;
+  if (bad) {
+    std::remove(tmp_.c_str());
+    err = fmt::format("cannot write '{}'", path_);
+    return false;
+  }
+  if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+    std::remove(tmp_.c_str());
+    err = fmt::format("cannot rename to '{}'", path_);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc

@@ -1,0 +1,69 @@
+// MachineCmd: one machine-level NC IR op with every operand evaluated to a number. This is the
+// boundary between program evaluation (the eval engine or JIT-compiled code) and the executor
+// (runtime/Executor), which gives the commands their modal meaning and produces Motion IR.
+// It is a plain struct so JIT code can build it on the stack or store long runs as constant
+// tables.
+#pragma once
+#include "ir/Diagnostics.h"
+#include "ir/ModeTable.h"
+
+#include <cstdint>
+
+namespace ncc {
+
+// The address words a machine op can carry, in a fixed order (a word's slot in `w`).
+enum class Word : uint8_t { X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, Count };
+constexpr int kWords = (int)Word::Count;
+constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE";
+inline uint32_t wordBit(Word w) { return 1u << (unsigned)w; }
+// Returns false for letters that are not words of a machine op.
+bool wordFromLetter(char c, Word &out);
+
+enum class CmdKind : uint8_t {
+  Block,        // start of a source block: blockNumber, loc
+  Comment,      // text
+  Message,      // text
+  Mode,         // modes[0..nmodes)
+  Feed,         // w[F]
+  Speed,        // w[S]
+  ToolSelect,   // w[T]
+  ToolChange,
+  Spindle,      // sub: 0 stop, 1 cw, 2 ccw
+  Coolant,      // sub: bit0 flood on, bit1 mist on; sub2 = bit0 flood given, bit1 mist given
+  Dwell,        // w[P] seconds
+  Move,         // words in mask
+  Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words
+  MachineMove,  // sub: 0 rapid, 1 feed; G53 target in mask words
+  ToolLength,   // w[H] offset number, 0 cancels
+  CutterComp,   // sub: 0 off, 1 left, 2 right; w[D] when in mask
+  WorkOffset,   // sub: 1..9 (G54..G59.3)
+  SetOffset,    // sub: SetOffsetKind; index in w[P]; values in mask words
+  Stop,         // sub: StopKind
+  Aux,          // w[P] the M number (or other aux value); sub: letter ('M', 'B', 'H')
+  Count
+};
+
+enum class StopKind : uint8_t { Program, Optional, End, EndRewind };
+enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20 };
+
+struct MachineCmd {
+  CmdKind kind = CmdKind::Block;
+  uint8_t sub = 0;
+  uint8_t sub2 = 0;
+  uint8_t nmodes = 0;
+  ModeValue modes[6] = {};
+  uint32_t mask = 0;        // wordBit(...) of the words present
+  int64_t blockNumber = -1; // for Block: the N word, -1 when none
+  SourceLoc loc;
+  const char *text = nullptr;  // Comment/Message; owned by the module or a string pool
+  double w[kWords] = {};
+
+  bool has(Word x) const { return mask & wordBit(x); }
+  double get(Word x) const { return w[(unsigned)x]; }
+  void set(Word x, double v) {
+    w[(unsigned)x] = v;
+    mask |= wordBit(x);
+  }
+};
+
+}  // namespace ncc

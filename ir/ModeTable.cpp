@@ -1,0 +1,79 @@
+#include "ir/ModeTable.h"
+#include "ir/MachineCmd.h"
+
+namespace ncc {
+
+static const char *kGroupNames[] = {"motion", "plane", "units", "distance", "arc_distance",
+                                    "feed_mode", "retract", "path_mode"};
+static_assert(sizeof(kGroupNames) / sizeof(kGroupNames[0]) == (size_t)ModeGroup::Count);
+
+static const ModeValueInfo kValues[] = {
+    {ModeValue::Rapid, ModeGroup::Motion, "rapid"},
+    {ModeValue::Linear, ModeGroup::Motion, "linear"},
+    {ModeValue::ArcCW, ModeGroup::Motion, "arc_cw"},
+    {ModeValue::ArcCCW, ModeGroup::Motion, "arc_ccw"},
+    {ModeValue::CycleOff, ModeGroup::Motion, "cycle_off"},
+    {ModeValue::Drill, ModeGroup::Motion, "drill"},
+    {ModeValue::DrillDwell, ModeGroup::Motion, "drill_dwell"},
+    {ModeValue::Peck, ModeGroup::Motion, "peck"},
+    {ModeValue::PeckChipBreak, ModeGroup::Motion, "peck_chipbreak"},
+    {ModeValue::Tap, ModeGroup::Motion, "tap"},
+    {ModeValue::TapLeft, ModeGroup::Motion, "tap_left"},
+    {ModeValue::BoreFeed, ModeGroup::Motion, "bore_feed"},
+    {ModeValue::BoreStop, ModeGroup::Motion, "bore_stop"},
+    {ModeValue::BoreDwell, ModeGroup::Motion, "bore_dwell"},
+    {ModeValue::BoreBack, ModeGroup::Motion, "bore_back"},
+    {ModeValue::BoreFine, ModeGroup::Motion, "bore_fine"},
+    {ModeValue::XY, ModeGroup::Plane, "xy"},
+    {ModeValue::ZX, ModeGroup::Plane, "zx"},
+    {ModeValue::YZ, ModeGroup::Plane, "yz"},
+    {ModeValue::MM, ModeGroup::Units, "mm"},
+    {ModeValue::Inch, ModeGroup::Units, "inch"},
+    {ModeValue::Absolute, ModeGroup::Distance, "absolute"},
+    {ModeValue::Incremental, ModeGroup::Distance, "incremental"},
+    {ModeValue::ArcAbsolute, ModeGroup::ArcDistance, "arc_absolute"},
+    {ModeValue::ArcIncremental, ModeGroup::ArcDistance, "arc_incremental"},
+    {ModeValue::PerMinute, ModeGroup::FeedMode, "per_minute"},
+    {ModeValue::PerRev, ModeGroup::FeedMode, "per_rev"},
+    {ModeValue::InverseTime, ModeGroup::FeedMode, "inverse_time"},
+    {ModeValue::RetractInitial, ModeGroup::Retract, "retract_initial"},
+    {ModeValue::RetractR, ModeGroup::Retract, "retract_r"},
+    {ModeValue::ExactPath, ModeGroup::PathMode, "exact_path"},
+    {ModeValue::ExactStop, ModeGroup::PathMode, "exact_stop"},
+    {ModeValue::Continuous, ModeGroup::PathMode, "continuous"},
+};
+static_assert(sizeof(kValues) / sizeof(kValues[0]) == (size_t)ModeValue::Count);
+
+const char *modeGroupName(ModeGroup g) { return kGroupNames[(unsigned)g]; }
+
+bool modeGroupFromName(std::string_view s, ModeGroup &out) {
+  for (unsigned i = 0; i < (unsigned)ModeGroup::Count; ++i)
+    if (s == kGroupNames[i]) {
+      out = (ModeGroup)i;
+      return true;
+    }
+  return false;
+}
+
+const ModeValueInfo &modeValueInfo(ModeValue v) { return kValues[(unsigned)v]; }
+
+bool modeValueFromName(std::string_view s, ModeValue &out) {
+  for (auto &i : kValues)
+    if (s == i.name) {
+      out = i.value;
+      return true;
+    }
+  return false;
+}
+
+bool wordFromLetter(char c, Word &out) {
+  if (c >= 'a' && c <= 'z') c = (char)(c - 'a' + 'A');
+  for (int i = 0; i < kWords; ++i)
+    if (kWordLetters[i] == c) {
+      out = (Word)i;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace ncc

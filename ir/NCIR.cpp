@@ -1,0 +1,216 @@
+#include "ir/NCIR.h"
+
+#include <cstring>
+
+namespace ncc::ir {
+
+const char *typeName(Type t) {
+  static const char *names[] = {"unknown", "void", "bool", "int", "real", "string", "symbol", "axis", "frame"};
+  return names[(unsigned)t];
+}
+
+const char *opCodeName(OpCode op) {
+  static const char *names[] = {"none", "neg", "not", "add", "sub", "mul", "div", "mod", "pow", "idiv",
+                                "eq",   "ne",  "lt",  "le",  "gt",  "ge",  "and", "or",  "xor", "concat"};
+  return names[(unsigned)op];
+}
+
+ExprPtr Expr::number(double v, Type t, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Number;
+  e->type = t;
+  e->num = v;
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::string(std::string s, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::String;
+  e->type = Type::String;
+  e->str = std::move(s);
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::boolean(bool b, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Bool;
+  e->type = Type::Bool;
+  e->num = b ? 1 : 0;
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::symbol(std::string s, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Symbol;
+  e->type = Type::Symbol;
+  e->str = std::move(s);
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::vacant(SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Vacant;
+  e->type = Type::Real;
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::var(VarSpace space, std::string name, ExprPtr index, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Var;
+  e->space = space;
+  e->str = std::move(name);
+  if (index) e->args.push_back(std::move(index));
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::unary(OpCode op, ExprPtr a, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Unary;
+  e->op = op;
+  e->args.push_back(std::move(a));
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::binary(OpCode op, ExprPtr a, ExprPtr b, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Binary;
+  e->op = op;
+  e->args.push_back(std::move(a));
+  e->args.push_back(std::move(b));
+  e->loc = loc;
+  return e;
+}
+ExprPtr Expr::call(std::string fn, std::vector<ExprPtr> args, SourceLoc loc) {
+  auto e = std::make_unique<Expr>();
+  e->kind = ExprKind::Call;
+  e->str = std::move(fn);
+  e->args = std::move(args);
+  e->loc = loc;
+  return e;
+}
+
+ExprPtr Expr::clone() const {
+  auto e = std::make_unique<Expr>();
+  e->kind = kind;
+  e->type = type;
+  e->op = op;
+  e->space = space;
+  e->loc = loc;
+  e->num = num;
+  e->str = str;
+  for (auto &a : args) e->args.push_back(a->clone());
+  return e;
+}
+
+// The op table: textual name, region counts, required and allowed argument keys.
+static const OpInfo kOps[] = {
+    {OpKind::Block, "block", 0, 0, "", "n skip"},
+    {OpKind::Comment, "comment", 0, 0, "text", ""},
+    {OpKind::Message, "message", 0, 0, "text", ""},
+    {OpKind::Mode, "mode", 0, 0, "", "motion plane units distance arc_distance feed_mode retract path_mode"},
+    {OpKind::Feed, "feed", 0, 0, "value", ""},
+    {OpKind::Speed, "speed", 0, 0, "value", ""},
+    {OpKind::ToolSelect, "tool_select", 0, 0, "value", ""},
+    {OpKind::ToolChange, "tool_change", 0, 0, "", ""},
+    {OpKind::Spindle, "spindle", 0, 0, "dir", ""},
+    {OpKind::Coolant, "coolant", 0, 0, "", "flood mist"},
+    {OpKind::Dwell, "dwell", 0, 0, "seconds", ""},
+    {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L"},
+    {OpKind::Home, "home", 0, 0, "ref", "X Y Z A B C"},
+    {OpKind::MachineMove, "machine_move", 0, 0, "rapid", "X Y Z A B C"},
+    {OpKind::ToolLength, "tool_length", 0, 0, "h", ""},
+    {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d"},
+    {OpKind::WorkOffset, "work_offset", 0, 0, "index", ""},
+    {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C"},
+    {OpKind::Stop, "stop", 0, 0, "kind", ""},
+    {OpKind::Aux, "aux", 0, 0, "", "m b h"},
+    {OpKind::Declare, "declare", 0, 0, "var type", "init"},
+    {OpKind::Assign, "assign", 0, 0, "target value", ""},
+    {OpKind::If, "if", 1, 2, "cond", ""},
+    {OpKind::While, "while", 1, 1, "cond", "id"},
+    {OpKind::Loop, "loop", 1, 1, "", "count"},
+    {OpKind::Break, "break", 0, 0, "", ""},
+    {OpKind::Continue, "continue", 0, 0, "", ""},
+    {OpKind::Label, "label", 0, 0, "name", ""},
+    {OpKind::Goto, "goto", 0, 0, "", "n label dir"},
+    {OpKind::Call, "call", 0, 0, "callee", "*"},
+    {OpKind::Return, "return", 0, 0, "", "value"},
+};
+static_assert(sizeof(kOps) / sizeof(kOps[0]) == (size_t)OpKind::Count, "op table out of sync");
+
+const OpInfo &opInfo(OpKind k) { return kOps[(unsigned)k]; }
+
+bool opKindFromName(std::string_view name, OpKind &out) {
+  for (auto &i : kOps)
+    if (name == i.name) {
+      out = i.kind;
+      return true;
+    }
+  return false;
+}
+
+Op Op::clone() const {
+  Op o(kind, loc);
+  for (auto &a : args) o.args.push_back({a.key, a.value ? a.value->clone() : nullptr});
+  for (auto &r : regions) {
+    Region nr;
+    nr.reserve(r.size());
+    for (auto &op : r) nr.push_back(op.clone());
+    o.regions.push_back(std::move(nr));
+  }
+  return o;
+}
+
+const Expr *Op::get(std::string_view key) const {
+  for (auto &a : args)
+    if (a.key == key) return a.value.get();
+  return nullptr;
+}
+Expr *Op::get(std::string_view key) {
+  for (auto &a : args)
+    if (a.key == key) return a.value.get();
+  return nullptr;
+}
+Op &Op::set(std::string key, ExprPtr value) {
+  for (auto &a : args)
+    if (a.key == key) {
+      a.value = std::move(value);
+      return *this;
+    }
+  args.push_back({std::move(key), std::move(value)});
+  return *this;
+}
+bool Op::erase(std::string_view key) {
+  for (size_t i = 0; i < args.size(); ++i)
+    if (args[i].key == key) {
+      args.erase(args.begin() + i);
+      return true;
+    }
+  return false;
+}
+
+const char *dialectName(Dialect d) {
+  static const char *names[] = {"iso", "sinumerik", "heidenhain", "cldata", "unknown"};
+  return names[(unsigned)d];
+}
+bool dialectFromName(std::string_view s, Dialect &out) {
+  for (unsigned i = 0; i < 4; ++i)
+    if (s == dialectName((Dialect)i)) {
+      out = (Dialect)i;
+      return true;
+    }
+  return false;
+}
+
+Function *Module::find(std::string_view name) {
+  for (auto &f : functions)
+    if (f.name == name) return &f;
+  return nullptr;
+}
+const Function *Module::find(std::string_view name) const {
+  for (auto &f : functions)
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
+}  // namespace ncc::ir

@@ -1,0 +1,49 @@
+// The executor gives machine commands their meaning: it keeps the modal state (ModalState),
+// resolves implicit motion modes, expands canned cycles, normalises units and incremental
+// values, applies work and tool offsets, and pushes Motion IR records into a sink.
+// Both engines feed it: the eval engine (passes/Eval) and JIT-compiled code (through ncrt_*).
+#pragma once
+#include "ir/MachineCmd.h"
+#include "ir/MotionIR.h"
+#include "runtime/Machine.h"
+
+namespace ncc {
+
+struct ModalState {
+  ModeValue motion = ModeValue::Rapid;
+  ModeValue plane = ModeValue::XY;
+  ModeValue units = ModeValue::MM;
+  ModeValue distance = ModeValue::Absolute;
+  ModeValue arcDistance = ModeValue::ArcIncremental;
+  ModeValue feedMode = ModeValue::PerMinute;
+  ModeValue retract = ModeValue::RetractInitial;
+  ModeValue pathMode = ModeValue::Continuous;
+  double feed = 0;          // program units per minute (or rev)
+  double speed = 0;
+  int spindle = 0;          // 0 stop, 1 cw, 2 ccw
+  int toolSelected = 0, toolInSpindle = 0;
+  int workOffset = 1;       // 1..9
+  int cutterComp = 0;       // 0 off, 1 left, 2 right
+  int toolLengthH = 0;
+  bool flood = false, mist = false;
+  bool ended = false;       // after M2/M30
+  AxisVec position{};       // current position, machine coordinates mm
+};
+
+class Executor {
+public:
+  Executor(const Machine &machine, MotionSink &sink, Diagnostics &diags);
+  ~Executor();
+  // Executes one command. Errors go to diags (with the command's loc); returns false on error,
+  // after which the caller stops the program.
+  bool exec(const MachineCmd &cmd);
+  // Flushes pending state at program end (no M2 seen: warns); returns false on error.
+  bool finish();
+  const ModalState &state() const;
+
+private:
+  struct Impl;
+  Impl *impl_;
+};
+
+}  // namespace ncc
