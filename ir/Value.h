@@ -1,0 +1,42 @@
+// Run-time value semantics shared by the eval engine and JIT-compiled code, so both engines
+// compute the same numbers. Numeric values are doubles; Macro B's "vacant" (#0, unset locals)
+// is a NaN with a fixed payload so it survives copies and is told apart from real NaNs.
+//
+// Rules (Fanuc Custom Macro B):
+//  - vacant in arithmetic and in function arguments counts as 0 (vacant + 1 = 1, -vacant = 0);
+//  - assigning vacant keeps it vacant (#2 = #0 makes #2 vacant);
+//  - EQ/NE: vacant equals only vacant (#1 EQ #0 is true when #1 is vacant; vacant EQ 0 false);
+//  - LT/LE/GT/GE: vacant counts as 0;
+//  - a word whose value is vacant is as if not programmed (G1 X#0 moves no axis).
+//  - booleans are 1.0 / 0.0; any non-zero, non-vacant value is true.
+// Angles of trigonometric builtins are degrees (every dialect ncc reads uses degrees).
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace ncc {
+
+constexpr uint64_t kVacantBits = 0x7ff8dead0000beefull;
+
+inline double vacantValue() {
+  double d;
+  std::memcpy(&d, &kVacantBits, sizeof d);
+  return d;
+}
+inline bool isVacant(double v) {
+  uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b == kVacantBits;
+}
+// The value used in arithmetic.
+inline double num(double v) { return isVacant(v) ? 0.0 : v; }
+inline bool truthy(double v) { return !isVacant(v) && v != 0.0; }
+
+inline double valueEq(double a, double b) {
+  bool va = isVacant(a), vb = isVacant(b);
+  if (va || vb) return (va && vb) ? 1.0 : 0.0;
+  return a == b ? 1.0 : 0.0;
+}
+
+}  // namespace ncc
