@@ -330,15 +330,15 @@ private:
     Function f;
     f.name = expectName("function name");
     if (m.find(f.name)) fail(nt, fmt::format("function '@{}' is defined twice", f.name));
-    expectPunct('(');
-    if (!isPunct(')')) {
-      for (;;) {
+    if (isPunct('(')) {  // the parameter list is optional when empty
+      next();
+      while (!isPunct(')')) {
         f.params.push_back(parseParam());
         if (!isPunct(',')) break;
         next();
       }
+      expectPunct(')');
     }
-    expectPunct(')');
     f.loc = parseLocOpt();
     f.body = parseRegion();
     return f;

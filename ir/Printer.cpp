@@ -163,7 +163,8 @@ private:
   }
 
   void printFunction(const Function &f) {
-    out_ += "func @" + nameText(f.name) + "(";
+    out_ += "func @" + nameText(f.name);
+    if (!f.params.empty()) out_ += '(';
     for (size_t i = 0; i < f.params.size(); ++i) {
       auto &p = f.params[i];
       if (i) out_ += ", ";
@@ -174,7 +175,7 @@ private:
         printExprTo(p.defaultValue.get(), out_);
       }
     }
-    out_ += ")";
+    if (!f.params.empty()) out_ += ')';
     printLoc(f.loc);
     out_ += " {\n";
     printRegion(f.body, 1);
