@@ -1,12 +1,11 @@
-// Run-time limits shared by the eval engine and the JIT, so a runaway program stops with a
-// diagnostic instead of hanging (both engines report the same errors at the same limits).
+// Limits that stop runaway programs in both engines (documented in README "Limits").
 #pragma once
 #include <cstdint>
 
 namespace ncc {
 
 struct ExecLimits {
-  uint64_t maxLoopIterations = 10'000'000;
+  uint64_t maxLoopIterations = 10'000'000;  // per loop entry (while/loop/backward goto)
   unsigned maxCallDepth = 64;
   double maxSeconds = 600;
 };

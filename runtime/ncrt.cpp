@@ -3,18 +3,16 @@
 
 #include "ir/Arith.h"
 #include "ir/Diagnostics.h"
-#include "runtime/Executor.h"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstring>
 
 using namespace ncc;
 
-bool ExecutorTarget::exec(const MachineCmd &cmd) { return exec_.exec(cmd); }
-
-ncrt_ctx::ncrt_ctx(CmdTarget &t, Diagnostics &d, const ExecLimits &l)
-    : target(t), diags(d), limits(l), start(std::chrono::steady_clock::now()) {}
+ncrt_ctx::ncrt_ctx(CmdSink &t, Diagnostics &d, const ExecLimits &l)
+    : sink(t), diags(d), limits(l), start(std::chrono::steady_clock::now()) {}
 
 static double unsetValue() {
   uint64_t bits = NCRT_UNSET_BITS;
@@ -30,7 +28,7 @@ static bool endsProgram(const MachineCmd &c) {
 
 // One command through the target; the status generated code acts on.
 static int execOne(ncrt_ctx *ctx, const MachineCmd &c) {
-  if (!ctx->target.exec(c)) return NCRT_ERROR;
+  if (!ctx->sink.exec(c)) return NCRT_ERROR;
   if (endsProgram(c)) {
     ctx->ended = true;
     return NCRT_END;
@@ -119,9 +117,9 @@ static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
 extern "C" {
 
 ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t namedGlobals, uint32_t qSpaces) {
-  ctx->numbered.assign(kNumberedVars, vacantValue());
-  ctx->rparam.assign(kRParams, vacantValue());
-  ctx->qparam.assign((size_t)kQParams * qSpaces, vacantValue());
+  ctx->numbered.assign(NCRT_NUMBERED, vacantValue());
+  ctx->rparam.assign(NCRT_RPARAMS, vacantValue());
+  ctx->qparam.assign((size_t)NCRT_QPARAMS * qSpaces, vacantValue());
   ctx->named.assign(namedGlobals, unsetValue());
   ncrt_storage &s = ctx->storage;
   s.numbered = ctx->numbered.data();
@@ -163,19 +161,21 @@ void ncrt_error(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const
 void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint32_t kind,
                 const char *name, double value) {
   std::string msg;
+  const ExecLimits &l = ctx->limits;
   switch (kind) {
   case NCRT_FAULT_LOOP_LIMIT:
-    msg = fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)",
-                      ctx->limits.maxLoopIterations);
+    msg = fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)", l.maxLoopIterations);
+    break;
+  case NCRT_FAULT_BACKJUMP:
+    msg = fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)", l.maxLoopIterations);
     break;
   case NCRT_FAULT_CALL_DEPTH:
-    msg = fmt::format("call depth limit {} exceeded", ctx->limits.maxCallDepth);
+    msg = fmt::format("call depth limit {} exceeded (limit --max-call-depth)", l.maxCallDepth);
     break;
   case NCRT_FAULT_UNSET_VAR: msg = fmt::format("variable '{}' used before assignment", name); break;
-  case NCRT_FAULT_GOTO_TARGET: msg = fmt::format("goto target {} not found", value); break;
-  case NCRT_FAULT_SYSTEM_WRITE:
-    msg = fmt::format("assignment to system variable '{}' is not supported", name);
-    break;
+  case NCRT_FAULT_NUMBERED: msg = fmt::format("parameter number #{} out of range", std::lround(value)); break;
+  case NCRT_FAULT_RPARAM: msg = fmt::format("R parameter index {} out of range", std::lround(value)); break;
+  case NCRT_FAULT_QPARAM: msg = fmt::format("Q parameter index {} out of range", std::lround(value)); break;
   default: msg = "internal error: unknown run-time fault"; break;
   }
   ctx->diags.error({file, line, col}, msg);
@@ -184,8 +184,9 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   ctx->storage.poll = NCRT_POLL_INTERVAL;
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx->start).count();
-  if (secs <= ctx->limits.maxSeconds) return NCRT_OK;
-  ctx->diags.error({file, line, col}, fmt::format("run time limit of {} s exceeded", ctx->limits.maxSeconds));
+  if (ctx->limits.maxSeconds <= 0 || secs <= ctx->limits.maxSeconds) return NCRT_OK;
+  ctx->diags.error({file, line, col},
+                   fmt::format("run time limit of {} s exceeded (limit --max-seconds)", ctx->limits.maxSeconds));
   return NCRT_ERROR;
 }
 

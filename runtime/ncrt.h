@@ -15,6 +15,7 @@
 
 #ifdef __cplusplus
 #include "ir/MachineCmd.h"
+#include "passes/Eval.h"  // CmdSink: where commands go (the Executor, or a recorder in tests)
 #include "passes/ExecLimits.h"
 
 #include <chrono>
@@ -30,21 +31,24 @@ typedef struct ncrt_ctx ncrt_ctx;
 
 enum { NCRT_OK = 0, NCRT_END = 1, NCRT_ERROR = 2 };
 
-/* Run-time faults whose message the runtime formats (it knows the limits). */
+/* Run-time faults whose message the runtime formats (it knows the limits); the texts are the
+ * eval engine's (passes/Eval.cpp), so both engines report the same errors. */
 enum {
-  NCRT_FAULT_LOOP_LIMIT = 1,  /* loop did not terminate after N iterations (...) */
-  NCRT_FAULT_CALL_DEPTH = 2,  /* call depth limit N exceeded */
-  NCRT_FAULT_UNSET_VAR = 3,   /* variable 'name' used before assignment */
-  NCRT_FAULT_GOTO_TARGET = 4, /* goto target N not found (value) */
-  NCRT_FAULT_SYSTEM_WRITE = 5 /* assignment to system variable 'name' is not supported */
+  NCRT_FAULT_LOOP_LIMIT = 1,    /* loop did not terminate after N iterations (...) */
+  NCRT_FAULT_BACKJUMP = 2,      /* backward jump repeated more than N times (...) */
+  NCRT_FAULT_CALL_DEPTH = 3,    /* call depth limit N exceeded (...) */
+  NCRT_FAULT_UNSET_VAR = 4,     /* variable 'name' used before assignment */
+  NCRT_FAULT_NUMBERED = 5,      /* parameter number #lround(value) out of range */
+  NCRT_FAULT_RPARAM = 6,        /* R parameter index lround(value) out of range */
+  NCRT_FAULT_QPARAM = 7         /* Q parameter index lround(value) out of range */
 };
 
 /* Variable storage and limits, laid out for direct access from generated code. Every numbered
  * and parameter slot starts vacant; named globals start unset (NCRT_UNSET_BITS). */
 typedef struct ncrt_storage {
-  double *numbered;   /* #0 .. #(kNumberedVars-1); #1..#33 are never used here (frame locals) */
-  double *rparam;     /* R0 .. R(kRParams-1) */
-  double *qparam;     /* q_spaces arrays of kQParams, one per Q prefix */
+  double *numbered;   /* #0 .. #(NCRT_NUMBERED-1); #1..#33 are never used here (frame locals) */
+  double *rparam;     /* R0 .. R(NCRT_RPARAMS-1) */
+  double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, one per Q prefix */
   double *named;      /* named globals (%%name) */
   uint64_t max_loop;  /* ExecLimits::maxLoopIterations */
   uint32_t max_depth; /* ExecLimits::maxCallDepth */
@@ -55,6 +59,10 @@ typedef struct ncrt_storage {
 /* Bit pattern of an unset named variable (a NaN distinct from vacant, never produced by
  * arithmetic). */
 #define NCRT_UNSET_BITS 0x7ff8dead0000f00dull
+/* Array sizes (the eval engine's). */
+#define NCRT_NUMBERED 100000
+#define NCRT_RPARAMS 1000
+#define NCRT_QPARAMS 2000
 /* Loop iterations between two run-time limit checks. */
 #define NCRT_POLL_INTERVAL 65536
 
@@ -74,7 +82,7 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 /* Called when storage->poll runs out: resets it and checks the run-time limit. Returns
  * NCRT_ERROR (reported at the given loc) when the limit is exceeded, else NCRT_OK. */
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
-/* Arithmetic of ir/Arith.h for generated code (the divisor is checked by the caller). */
+/* Arithmetic of ir/Arith.h on num() operands (the divisor is checked by the caller). */
 double ncrt_mod(double a, double b);
 double ncrt_idiv(double a, double b);
 double ncrt_pow(double a, double b);
@@ -83,25 +91,6 @@ double ncrt_pow(double a, double b);
 }  // extern "C"
 
 namespace ncc {
-class Diagnostics;
-class Executor;
-
-// Where the commands of a compiled program go: the Executor in production, a recorder in tests.
-class CmdTarget {
-public:
-  virtual ~CmdTarget() = default;
-  virtual bool exec(const MachineCmd &cmd) = 0;  // false = error (already reported)
-};
-
-class ExecutorTarget final : public CmdTarget {
-public:
-  explicit ExecutorTarget(Executor &e) : exec_(e) {}
-  bool exec(const MachineCmd &cmd) override;
-
-private:
-  Executor &exec_;
-};
-
 namespace ncrt {
 // Appends one command to a packed stream: kind sub sub2 nmodes modes[nmodes] (bytes), then
 // LEB128 mask, blockNumber+1 (Block only), file, line, col, then the doubles of the mask words
@@ -111,8 +100,8 @@ void packCmd(const MachineCmd &cmd, const char *text, std::string &out);
 }  // namespace ncc
 
 struct ncrt_ctx {
-  ncrt_ctx(ncc::CmdTarget &target, ncc::Diagnostics &diags, const ncc::ExecLimits &limits);
-  ncc::CmdTarget &target;
+  ncrt_ctx(ncc::CmdSink &sink, ncc::Diagnostics &diags, const ncc::ExecLimits &limits);
+  ncc::CmdSink &sink;
   ncc::Diagnostics &diags;
   ncc::ExecLimits limits;
   std::chrono::steady_clock::time_point start;

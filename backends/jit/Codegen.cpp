@@ -4,7 +4,7 @@
 #include "backends/jit/Codegen.h"
 #include "backends/jit/CodegenImpl.h"
 
-#include "ir/Arith.h"
+#include "ir/Value.h"
 #include "ir/Builtins.h"
 #include "runtime/ncrt.h"
 
@@ -21,6 +21,8 @@ using ir::Expr;
 using ir::ExprKind;
 using ir::Op;
 using ir::OpKind;
+
+static constexpr unsigned kFrameLocals = 33;
 
 // The LLVM struct types below mirror these C++ layouts.
 static_assert(offsetof(MachineCmd, modes) == 4 && offsetof(MachineCmd, mask) == 12 &&
@@ -84,26 +86,23 @@ void Codegen::declareRuntime() {
 }
 
 // ---------------------------------------------------------------- name scan
-void Codegen::scanExprNames(const Expr &e) {
+// Named locals get slots per function (a frame=shared call gets fresh named locals, as in the
+// eval engine); named globals and Q prefixes get module-wide slots.
+void Codegen::scanExprNames(FnInfo &fi, const Expr &e) {
   if (e.kind == ExprKind::Var) {
-    if (e.space == ir::VarSpace::Local) localNames_.emplace(e.str, (unsigned)localNames_.size());
+    if (e.space == ir::VarSpace::Local) fi.locals.emplace(e.str, (unsigned)fi.locals.size());
     if (e.space == ir::VarSpace::Global) globalNames_.emplace(e.str, (unsigned)globalNames_.size());
     if (e.space == ir::VarSpace::QParam) qSpaces_.emplace(e.str, (unsigned)qSpaces_.size());
   }
   for (auto &a : e.args)
-    if (a) scanExprNames(*a);
+    if (a) scanExprNames(fi, *a);
 }
 
-void Codegen::scanNames(const ir::Region &r) {
+void Codegen::scanNames(FnInfo &fi, const ir::Region &r) {
   for (auto &op : r) {
-    for (auto &a : op.args) {
-      if (a.value) scanExprNames(*a.value);
-      // Named call arguments become named locals of the callee.
-      if (op.kind == OpKind::Call && a.key.size() > 2 && a.key.compare(0, 2, "a.") == 0 &&
-          !std::isdigit((unsigned char)a.key[2]))
-        localNames_.emplace(a.key.substr(2), (unsigned)localNames_.size());
-    }
-    for (auto &sub : op.regions) scanNames(sub);
+    for (auto &a : op.args)
+      if (a.value) scanExprNames(fi, *a.value);
+    for (auto &sub : op.regions) scanNames(fi, sub);
   }
 }
 
@@ -153,6 +152,13 @@ void Codegen::failIf(Value *cond, SourceLoc loc, const std::string &msg) {
   B.SetInsertPoint(cont);
 }
 
+void Codegen::fail(SourceLoc loc, const std::string &msg) {
+  auto args = locArgs(loc);
+  B.CreateCall(fError, {ctxArg, args[0], args[1], args[2], cstring(msg)});
+  B.CreateBr(failBB);
+  B.SetInsertPoint(newBlock("dead"));
+}
+
 void Codegen::faultIf(Value *cond, SourceLoc loc, unsigned kind, const std::string &name, Value *value) {
   BasicBlock *err = newBlock("fault"), *cont = newBlock("cont");
   B.CreateCondBr(cond, err, cont);
@@ -164,35 +170,18 @@ void Codegen::faultIf(Value *cond, SourceLoc loc, unsigned kind, const std::stri
   B.SetInsertPoint(cont);
 }
 
-// Fresh frame: #0..#33 vacant, named locals unset.
-void Codegen::initFrame(Value *frame) {
+// Fresh frame slots: [from, 34) vacant (#n), [34, size) unset (named locals).
+void Codegen::initFrame(Value *frame, unsigned size, unsigned from) {
   Constant *vac = ConstantFP::get(dblTy, vacantValue());
   uint64_t unsetBits = NCRT_UNSET_BITS;
   Constant *unset = ConstantExpr::getBitCast(ConstantInt::get(i64Ty, unsetBits), dblTy);
-  if (frameSize_ <= 64) {  // unrolled stores let SROA keep main's locals in registers
-    for (unsigned i = 0; i < frameSize_; ++i)
-      B.CreateStore(i <= kFrameLocals ? vac : unset, B.CreateConstGEP1_32(dblTy, frame, i));
-    return;
-  }
-  for (unsigned i = 0; i <= kFrameLocals; ++i) B.CreateStore(vac, B.CreateConstGEP1_32(dblTy, frame, i));
-  BasicBlock *pre = B.GetInsertBlock(), *loop = newBlock("frame.init"), *done = newBlock("frame.done");
-  B.CreateBr(loop);
-  B.SetInsertPoint(loop);
-  PHINode *i = B.CreatePHI(i64Ty, 2);
-  i->addIncoming(B.getInt64(kFrameLocals + 1), pre);
-  B.CreateStore(unset, B.CreateGEP(dblTy, frame, i));
-  Value *next = B.CreateAdd(i, B.getInt64(1));
-  i->addIncoming(next, loop);
-  B.CreateCondBr(B.CreateICmpULT(next, B.getInt64(frameSize_)), loop, done);
-  B.SetInsertPoint(done);
+  // Unrolled stores let SROA keep main's locals in registers.
+  for (unsigned i = from; i < size; ++i)
+    B.CreateStore(i <= kFrameLocals ? vac : unset, B.CreateConstGEP1_32(dblTy, frame, i));
 }
 
-// Counts one loop iteration (or backward goto) against maxLoopIterations and, every
-// NCRT_POLL_INTERVAL iterations of any loop, lets the runtime check the time limit.
-void Codegen::emitIterationCheck(Value *counter, SourceLoc loc) {
-  Value *n = B.CreateAdd(B.CreateLoad(i64Ty, counter), B.getInt64(1));
-  B.CreateStore(n, counter);
-  faultIf(B.CreateICmpUGT(n, maxLoop), loc, NCRT_FAULT_LOOP_LIMIT, "", nullptr);
+// Every NCRT_POLL_INTERVAL loop iterations or backward jumps, the runtime checks the time limit.
+void Codegen::emitTimeCheck(SourceLoc loc) {
   Value *p = B.CreateSub(B.CreateLoad(i64Ty, pollPtr), B.getInt64(1));
   B.CreateStore(p, pollPtr);
   BasicBlock *poll = newBlock("poll"), *cont = newBlock("cont");
@@ -205,8 +194,9 @@ void Codegen::emitIterationCheck(Value *counter, SourceLoc loc) {
 }
 
 // ---------------------------------------------------------------- functions
-void Codegen::emitFunction(const ir::Function &fn, Function *Fn) {
-  F = Fn;
+void Codegen::emitFunction(FnInfo &fi) {
+  cur_ = &fi;
+  F = fi.F;
   ctxArg = F->getArg(0);
   stArg = F->getArg(1);
   frameArg = F->getArg(2);
@@ -220,10 +210,10 @@ void Codegen::emitFunction(const ir::Function &fn, Function *Fn) {
   maxLoop = B.CreateLoad(i64Ty, field(4), "max_loop");
   depthPtr = field(6);
   pollPtr = field(7);
-  cmdSlot = argSlot = calleeFrame = nullptr;
-  gotoCounter = B.CreateAlloca(i64Ty, nullptr, "goto.count");
+  cmdSlot = argSlot = nullptr;
+  backJumps = B.CreateAlloca(i64Ty, nullptr, "backjumps");
   scratch = B.CreateAlloca(dblTy, nullptr, "scratch");
-  B.CreateStore(B.getInt64(0), gotoCounter);
+  B.CreateStore(B.getInt64(0), backJumps);
   failBB = newBlock("fail");
   exitBB = newBlock("exit");
   BasicBlock *body = newBlock("body");
@@ -233,19 +223,26 @@ void Codegen::emitFunction(const ir::Function &fn, Function *Fn) {
   B.SetInsertPoint(exitBB);
   exitPhi = B.CreatePHI(i32Ty, 4, "status");
   B.CreateRet(exitPhi);
+  B.SetInsertPoint(body);
 
   order_.clear();
   blocks_.clear();
   labels_.clear();
   targetBBs_.clear();
-  dynamicGoto_ = false;
   loops_.clear();
   run_.clear();
-  scanTargets(fn.body);
-
-  B.SetInsertPoint(body);
-  emitRegion(fn.body);
-  if (!B.GetInsertBlock()->getTerminator()) B.CreateRet(B.getInt32(NCRT_OK));
+  if (!fi.compileErrors.empty()) {
+    // The eval engine rejects this function when it first runs it: so does the compiled code.
+    for (auto &e : fi.compileErrors) {
+      auto args = locArgs(e.first);
+      B.CreateCall(fError, {ctxArg, args[0], args[1], args[2], cstring(e.second)});
+    }
+    B.CreateBr(failBB);
+  } else {
+    scanTargets(fi.fn->body);
+    emitRegion(fi.fn->body);
+    if (!B.GetInsertBlock()->getTerminator()) B.CreateRet(B.getInt32(NCRT_OK));
+  }
   if (pred_empty(exitBB)) exitBB->eraseFromParent();
 }
 
@@ -258,33 +255,37 @@ void Codegen::emitEntry() {
   Value *ctx = main->getArg(0);
   Value *st = B.CreateCall(fBegin, {ctx, B.getInt32((uint32_t)globalNames_.size()),
                                     B.getInt32((uint32_t)qSpaces_.size())});
-  Value *frame = B.CreateAlloca(ArrayType::get(dblTy, frameSize_), nullptr, "frame");
-  initFrame(frame);
-  Value *status = B.CreateCall(functions_[src_.functions[0].name], {ctx, st, frame});
-  // NCRT_END only means "stopped at M2/M30": the run succeeded.
-  B.CreateRet(status);
+  FnInfo &fi = functions_.at(src_.functions[0].name);
+  Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
+  initFrame(frame, fi.frameSize, 0);
+  B.CreateRet(B.CreateCall(fi.F, {ctx, st, frame}));
 }
 
 std::unique_ptr<Module> Codegen::run() {
-  if (src_.functions.empty()) {
-    diags_.error({}, "module has no functions");
-    return nullptr;
-  }
   declareRuntime();
-  for (auto &fn : src_.functions) {
-    scanNames(fn.body);
-    for (auto &p : fn.params) localNames_.emplace(p.name, (unsigned)localNames_.size());
-  }
-  frameSize_ = (unsigned)(kFrameLocals + 1 + localNames_.size());
   for (auto &fn : src_.functions) {
     if (functions_.count(fn.name)) {
       diags_.error(fn.loc, "function '" + fn.name + "' defined twice");
       return nullptr;
     }
-    functions_[fn.name] = Function::Create(ncFnTy, GlobalValue::InternalLinkage, "nc." + fn.name, M.get());
+    FnInfo &fi = functions_[fn.name];
+    fi.fn = &fn;
+    for (auto &p : fn.params) fi.locals.emplace(p.name, (unsigned)fi.locals.size());
+    scanNames(fi, fn.body);
+    fi.frameSize = (unsigned)(kFrameLocals + 1 + fi.locals.size());
+    fi.F = Function::Create(ncFnTy, GlobalValue::InternalLinkage, "nc." + fn.name, M.get());
+    validate(fi);
   }
-  for (auto &fn : src_.functions) emitFunction(fn, functions_[fn.name]);
-  emitEntry();
+  if (src_.functions.empty()) {
+    // Nothing to run: an entry that succeeds at once (the eval engine does the same).
+    auto *main = Function::Create(FunctionType::get(i32Ty, {ptrTy}, false), GlobalValue::ExternalLinkage,
+                                  "ncc_program_main", M.get());
+    B.SetInsertPoint(BasicBlock::Create(C, "entry", main));
+    B.CreateRet(B.getInt32(NCRT_OK));
+  } else {
+    for (auto &fn : src_.functions) emitFunction(functions_.at(fn.name));
+    emitEntry();
+  }
   if (failed_) return nullptr;
   std::string err;
   raw_string_ostream os(err);

@@ -1,11 +1,15 @@
-// NC IR -> LLVM IR: statements and control flow (if, while, loop, goto, call).
+// NC IR -> LLVM IR: statements and control flow (assign, if, while, loop, goto, call), with the
+// eval engine's semantics: loop limits counted at the back edge, backward jumps counted per
+// function activation, calls sharing or renewing the #1..#33 frame.
 #include "backends/jit/CodegenImpl.h"
 
-#include "ir/Arith.h"
+#include "ir/Value.h"
 #include "runtime/ncrt.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
-#include <set>
+#include <cstdlib>
 
 namespace ncc::jit {
 
@@ -15,75 +19,132 @@ using ir::ExprKind;
 using ir::Op;
 using ir::OpKind;
 
-static const Expr *literalGotoN(const Op &go) {
-  const Expr *n = go.get("n");
-  return n && n->kind == ExprKind::Number ? n : nullptr;
-}
-static const std::string *gotoLabel(const Op &go) {
-  const Expr *l = go.get("label");
-  return l && (l->kind == ExprKind::String || l->kind == ExprKind::Symbol) ? &l->str : nullptr;
-}
+static constexpr int kFrameLocals = 33;
 
-// Numbers every op in pre-order and records block numbers and labels, then marks the ops that
-// gotos can reach: those need a basic block of their own (and end a constant run).
+// Numbers every op in pre-order (the eval engine's instruction order), records block numbers
+// and labels, and marks the ops gotos reach: they start a basic block (and end a constant run).
 void Codegen::scanTargets(const ir::Region &body) {
+  order_.clear();
+  blocks_.clear();
+  labels_.clear();
+  targetBBs_.clear();
   std::vector<const Op *> gotos;
   auto walk = [&](auto &self, const ir::Region &r) -> void {
     for (auto &op : r) {
       order_[&op] = (unsigned)order_.size();
       if (op.kind == OpKind::Block)
-        if (const Expr *n = op.get("n"); n && n->kind == ExprKind::Number)
-          blocks_.push_back({(int64_t)std::llround(n->num), &op});
+        if (const Expr *n = op.get("n"); n && (n->kind == ExprKind::Number || n->kind == ExprKind::Bool) &&
+                                         (int64_t)n->num >= 0)
+          blocks_.push_back({(int64_t)n->num, &op});
       if (op.kind == OpKind::Label)
-        if (const Expr *l = op.get("name"); l && (l->kind == ExprKind::String || l->kind == ExprKind::Symbol))
-          labels_.push_back({l->str, &op});
+        if (const Expr *l = op.get("name")) labels_[l->str] = &op;
       if (op.kind == OpKind::Goto) gotos.push_back(&op);
       for (auto &sub : op.regions) self(self, sub);
     }
   };
   walk(walk, body);
-  for (const Op *go : gotos) {
-    const Expr *n = literalGotoN(*go);
-    const std::string *label = gotoLabel(*go);
-    if (!n && !label) {
-      dynamicGoto_ = true;
-      continue;
-    }
-    if (const Op *t = resolveTarget(order_[go], *go, n ? std::llround(n->num) : 0, label)) targetBBs_[t] = nullptr;
-  }
-  if (dynamicGoto_)
-    for (auto &b : blocks_) targetBBs_[b.second] = nullptr;
+  for (const Op *go : gotos)
+    if (const Op *t = resolveTarget(*go)) targetBBs_[t] = nullptr;
 }
 
-// Fanuc search order: forward from the goto, then from the start of the function.
-const Op *Codegen::resolveTarget(unsigned from, const Op &go, int64_t n, const std::string *label) {
-  std::string dir = "any";
-  if (const Expr *d = go.get("dir"); d && (d->kind == ExprKind::Symbol || d->kind == ExprKind::String)) dir = d->str;
-  auto search = [&](bool after) -> const Op * {
-    if (label) {
-      for (auto &l : labels_)
-        if (l.first == *label && (order_[l.second] > from) == after) return l.second;
-    } else {
-      for (auto &b : blocks_)
-        if (b.first == n && (order_[b.second] > from) == after) return b.second;
+// Fanuc search order: forward from the goto, then from the start of the function;
+// dir=forward|backward restricts it (Sinumerik GOTOF/GOTOB).
+const Op *Codegen::resolveTarget(const Op &go) {
+  const Expr *n = go.get("n"), *l = go.get("label"), *d = go.get("dir");
+  std::string dir = d ? d->str : "any";
+  std::vector<const Op *> cands;
+  if (n && n->kind == ExprKind::Number) {
+    for (auto &b : blocks_)
+      if (b.first == (int64_t)n->num) cands.push_back(b.second);
+  } else if (l) {
+    if (auto it = labels_.find(l->str); it != labels_.end()) cands.push_back(it->second);
+  }
+  unsigned from = order_.at(&go);
+  if (dir != "backward")
+    for (const Op *c : cands)
+      if (order_[c] > from) return c;
+  if (dir != "forward")
+    for (const Op *c : cands)
+      if (order_[c] <= from) return c;
+  return nullptr;
+}
+
+// The errors the eval engine raises when it compiles a function (on its first call): invalid
+// machine ops, bad assignment targets, break outside loops, unsupported ops, unresolved gotos.
+void Codegen::validate(FnInfo &fi) {
+  Diagnostics tmp(diags_.sources());
+  tmp.setCollect(true);
+  auto &errs = fi.compileErrors;
+  std::vector<const Op *> gotos;
+  auto walk = [&](auto &self, const ir::Region &r, unsigned loopDepth) -> bool {
+    for (auto &op : r) {
+      if (isMachineOp(op.kind)) {
+        CmdTemplate t;
+        if (!buildCmdTemplate(op, t, tmp)) {
+          for (auto &d : tmp.collected()) errs.push_back({d.loc, d.message});
+          errs.push_back({op.loc, "invalid machine operation"});
+          return false;
+        }
+        continue;
+      }
+      switch (op.kind) {
+      case OpKind::Assign:
+      case OpKind::Declare: {
+        const Expr *t = op.get(op.kind == OpKind::Assign ? "target" : "var");
+        if (!t || t->kind != ExprKind::Var) {
+          errs.push_back({op.loc, "assignment target is not a variable"});
+          return false;
+        }
+        break;
+      }
+      case OpKind::If:
+      case OpKind::While:
+      case OpKind::Loop:
+        if (op.regions.empty() || ((op.kind != OpKind::Loop) && !op.get("cond"))) {
+          errs.push_back({op.loc, fmt::format("malformed '{}'", ir::opInfo(op.kind).name)});
+          return false;
+        }
+        for (auto &sub : op.regions)
+          if (!self(self, sub, loopDepth + (op.kind == OpKind::If ? 0 : 1))) return false;
+        break;
+      case OpKind::Break:
+      case OpKind::Continue:
+        if (!loopDepth) {
+          errs.push_back({op.loc, fmt::format("'{}' outside a loop", ir::opInfo(op.kind).name)});
+          return false;
+        }
+        break;
+      case OpKind::Goto: gotos.push_back(&op); break;
+      case OpKind::Label:
+      case OpKind::Call:
+      case OpKind::Return: break;
+      default:
+        errs.push_back({op.loc, fmt::format("the JIT cannot execute '{}'", ir::opInfo(op.kind).name)});
+        return false;
+      }
     }
-    return nullptr;
+    return true;
   };
-  const Op *t = nullptr;
-  if (dir != "backward") t = search(true);
-  if (!t && dir != "forward") t = search(false);
-  return t;
+  if (!walk(walk, fi.fn->body, 0)) return;
+  scanTargets(fi.fn->body);
+  for (const Op *go : gotos) {
+    const Expr *n = go->get("n"), *l = go->get("label");
+    if (!(n && n->kind == ExprKind::Number) && !l) {
+      errs.push_back({go->loc, "goto target must be a constant sequence number or a label"});
+      return;
+    }
+    if (!resolveTarget(*go)) {
+      errs.push_back({go->loc, n ? fmt::format("jump to missing sequence number N{}", (int64_t)n->num)
+                                 : fmt::format("jump to missing label '{}'", l->str)});
+      return;
+    }
+  }
 }
 
 BasicBlock *Codegen::targetBlock(const Op *op) {
   BasicBlock *&bb = targetBBs_[op];
   if (!bb) bb = newBlock(op->kind == OpKind::Label ? "label" : "block");
   return bb;
-}
-
-void Codegen::emitJump(const Op &go, const Op *target) {
-  if (order_[target] < order_[&go]) emitIterationCheck(gotoCounter, go.loc);
-  B.CreateBr(targetBlock(target));
 }
 
 void Codegen::emitRegion(const ir::Region &r) {
@@ -107,57 +168,30 @@ void Codegen::emitRegion(const ir::Region &r) {
 void Codegen::emitOp(const Op &op) {
   switch (op.kind) {
   case OpKind::Assign: {
-    const Expr *target = op.get("target"), *value = op.get("value");
-    if (!target || !value || target->kind != ExprKind::Var) {
-      diags_.error(op.loc, "assign needs a variable target and a value");
-      failed_ = true;
-      return;
-    }
-    Val v = expr(*value);
-    storeVar(*target, v.v);
+    const Expr *value = op.get("value");
+    Value *v = value ? expr(*value).v : ConstantFP::get(dblTy, vacantValue());
+    storeVar(*op.get("target"), v);
     return;
   }
   case OpKind::Declare: {
-    const Expr *var = op.get("var");
-    if (!var || var->kind != ExprKind::Var) {
-      diags_.error(op.loc, "declare needs a variable");
-      failed_ = true;
-      return;
-    }
     const Expr *init = op.get("init");
-    storeVar(*var, init ? expr(*init).v : ConstantFP::get(dblTy, 0.0));
+    storeVar(*op.get("var"), init ? expr(*init).v : ConstantFP::get(dblTy, 0.0));
     return;
   }
   case OpKind::If: emitIf(op); return;
-  case OpKind::While: emitWhile(op); return;
+  case OpKind::While:
   case OpKind::Loop: emitLoop(op); return;
-  case OpKind::Break:
-  case OpKind::Continue:
-    if (loops_.empty()) {
-      diags_.error(op.loc, std::string(ir::opInfo(op.kind).name) + " outside a loop");
-      failed_ = true;
-      return;
-    }
-    B.CreateBr(op.kind == OpKind::Break ? loops_.back().brk : loops_.back().cont);
-    return;
+  case OpKind::Break: B.CreateBr(loops_.back().brk); return;
+  case OpKind::Continue: B.CreateBr(loops_.back().cont); return;
   case OpKind::Goto: emitGoto(op); return;
   case OpKind::Call: emitCall(op); return;
   case OpKind::Return: B.CreateRet(B.getInt32(NCRT_OK)); return;
-  default:
-    diags_.error(op.loc, std::string("the JIT does not support '") + ir::opInfo(op.kind).name + "'");
-    failed_ = true;
-    return;
+  default: return;  // rejected by validate()
   }
 }
 
 void Codegen::emitIf(const Op &op) {
-  const Expr *cond = op.get("cond");
-  if (!cond || op.regions.empty()) {
-    diags_.error(op.loc, "if needs cond and a then region");
-    failed_ = true;
-    return;
-  }
-  Value *c = truthy(expr(*cond));
+  Value *c = truthy(expr(*op.get("cond")));
   BasicBlock *thenBB = newBlock("then"), *elseBB = op.regions.size() > 1 ? newBlock("else") : nullptr,
              *done = newBlock("endif");
   B.CreateCondBr(c, thenBB, elseBB ? elseBB : done);
@@ -171,184 +205,126 @@ void Codegen::emitIf(const Op &op) {
   startBlock(done);
 }
 
-void Codegen::emitWhile(const Op &op) {
-  const Expr *cond = op.get("cond");
-  if (!cond || op.regions.empty()) {
-    diags_.error(op.loc, "while needs cond and a body");
-    failed_ = true;
-    return;
-  }
-  Value *counter = allocaEntry(i64Ty, "while.count");
-  B.CreateStore(B.getInt64(0), counter);
-  BasicBlock *condBB = newBlock("while.cond"), *bodyBB = newBlock("while.body"), *done = newBlock("while.end");
-  startBlock(condBB);
-  B.CreateCondBr(truthy(expr(*cond)), bodyBB, done);
-  B.SetInsertPoint(bodyBB);
-  emitIterationCheck(counter, op.loc);
-  loops_.push_back({condBB, done});
-  emitRegion(op.regions[0]);
-  loops_.pop_back();
-  startBlock(condBB);
-  B.SetInsertPoint(done);
-}
-
-// Repeat count: rounded like an index, clamped so the conversion to an integer is defined;
-// NaN and counts below 1 run nothing.
-static Value *repeatCount(IRBuilder<> &B, Value *rounded) {
-  Type *dbl = rounded->getType();
-  Value *c = B.CreateSelect(B.CreateFCmpOGE(rounded, ConstantFP::get(dbl, 0.0)), rounded, ConstantFP::get(dbl, 0.0));
-  c = B.CreateSelect(B.CreateFCmpOGT(c, ConstantFP::get(dbl, 0x1p62)), ConstantFP::get(dbl, 0x1p62), c);
-  return B.CreateFPToSI(c, B.getInt64Ty());
-}
-
+// while: enter (counter = 0) -> head: cond -> body -> latch -> head.
+// loop:  enter, remaining = round(count) (-1 = endless) -> head: remaining == 0 ? exit :
+//        (remaining > 0 ? remaining - 1) -> body -> latch -> head.
+// The latch (also the target of continue) counts the iteration: reaching maxLoopIterations is
+// the error, as in the eval engine.
 void Codegen::emitLoop(const Op &op) {
-  if (op.regions.empty()) {
-    diags_.error(op.loc, "loop needs a body");
-    failed_ = true;
-    return;
-  }
-  Value *limit = nullptr;
-  if (const Expr *count = op.get("count")) limit = repeatCount(B, roundIndex(expr(*count)));
   Value *counter = allocaEntry(i64Ty, "loop.count");
   B.CreateStore(B.getInt64(0), counter);
-  BasicBlock *condBB = newBlock("loop.cond"), *bodyBB = newBlock("loop.body"), *done = newBlock("loop.end");
-  startBlock(condBB);
-  if (limit)
-    B.CreateCondBr(B.CreateICmpSLT(B.CreateLoad(i64Ty, counter), limit), bodyBB, done);
-  else
-    B.CreateBr(bodyBB);  // endless until break/goto/return or the iteration limit
-  B.SetInsertPoint(bodyBB);
-  emitIterationCheck(counter, op.loc);
-  loops_.push_back({condBB, done});
+  Value *remaining = nullptr;
+  if (op.kind == OpKind::Loop) {
+    remaining = allocaEntry(dblTy, "loop.remaining");
+    const Expr *count = op.get("count");
+    B.CreateStore(count ? roundOf(numOf(expr(*count))) : ConstantFP::get(dblTy, -1.0), remaining);
+  }
+  BasicBlock *head = newBlock("loop.head"), *body = newBlock("loop.body"), *latch = newBlock("loop.latch"),
+             *done = newBlock("loop.end");
+  startBlock(head);
+  if (remaining) {
+    Value *r = B.CreateLoad(dblTy, remaining);
+    BasicBlock *more = newBlock("loop.more");
+    B.CreateCondBr(B.CreateFCmpOEQ(r, ConstantFP::get(dblTy, 0.0)), done, more);
+    B.SetInsertPoint(more);
+    Value *dec = B.CreateFSub(r, ConstantFP::get(dblTy, 1.0));
+    B.CreateStore(B.CreateSelect(B.CreateFCmpOGT(r, ConstantFP::get(dblTy, 0.0)), dec, r), remaining);
+    B.CreateBr(body);
+  } else {
+    B.CreateCondBr(truthy(expr(*op.get("cond"))), body, done);
+  }
+  B.SetInsertPoint(body);
+  loops_.push_back({latch, done});
   emitRegion(op.regions[0]);
   loops_.pop_back();
-  startBlock(condBB);
+  startBlock(latch);
+  Value *n = B.CreateAdd(B.CreateLoad(i64Ty, counter), B.getInt64(1));
+  B.CreateStore(n, counter);
+  faultIf(B.CreateICmpUGE(n, maxLoop), op.loc, NCRT_FAULT_LOOP_LIMIT, "", nullptr);
+  emitTimeCheck(op.loc);
+  B.CreateBr(head);
   B.SetInsertPoint(done);
 }
 
 void Codegen::emitGoto(const Op &go) {
-  unsigned from = order_[&go];
-  const Expr *n = literalGotoN(go);
-  const std::string *label = gotoLabel(go);
-  if (label || n) {
-    int64_t num = n ? std::llround(n->num) : 0;
-    if (const Op *t = resolveTarget(from, go, num, label)) {
-      emitJump(go, t);
-    } else if (label) {
-      failIf(B.getTrue(), go.loc, "goto target '" + *label + "' not found");
-      B.CreateBr(failBB);
-    } else {
-      faultIf(B.getTrue(), go.loc, NCRT_FAULT_GOTO_TARGET, "", ConstantFP::get(dblTy, (double)num));
-      B.CreateBr(failBB);
-    }
-    return;
+  const Op *target = resolveTarget(go);  // validate() guarantees one
+  if (order_[target] <= order_[&go]) {
+    Value *n = B.CreateAdd(B.CreateLoad(i64Ty, backJumps), B.getInt64(1));
+    B.CreateStore(n, backJumps);
+    faultIf(B.CreateICmpUGT(n, maxLoop), go.loc, NCRT_FAULT_BACKJUMP, "", nullptr);
+    emitTimeCheck(go.loc);
   }
-  const Expr *dyn = go.get("n");
-  if (!dyn) {
-    diags_.error(go.loc, "goto needs n or label");
-    failed_ = true;
-    return;
-  }
-  // Computed goto: a switch over the function's block numbers, each resolved from here.
-  Value *r = roundIndex(expr(*dyn));
-  Value *inRange = B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, -0x1p62)),
-                               B.CreateFCmpOLE(r, ConstantFP::get(dblTy, 0x1p62)));
-  Value *key = B.CreateFPToSI(B.CreateSelect(inRange, r, ConstantFP::get(dblTy, -0x1p63)), i64Ty);
-  BasicBlock *missing = newBlock("goto.missing");
-  SwitchInst *sw = B.CreateSwitch(key, missing);
-  std::set<int64_t> seen;
-  for (auto &b : blocks_) {
-    if (!seen.insert(b.first).second) continue;
-    const Op *t = resolveTarget(from, go, b.first, nullptr);
-    BasicBlock *caseBB = newBlock("goto.case");
-    sw->addCase(B.getInt64((uint64_t)b.first), caseBB);
-    B.SetInsertPoint(caseBB);
-    emitJump(go, t);
-  }
-  B.SetInsertPoint(missing);
-  faultIf(B.getTrue(), go.loc, NCRT_FAULT_GOTO_TARGET, "", r);
-  B.CreateBr(failBB);
+  B.CreateBr(targetBlock(target));
 }
 
-// call callee=<name> count=<int>? frame=new|shared a.<n>=<expr>...: arguments are evaluated
-// once in the caller; each repetition gets a fresh frame (frame=new) holding them.
+// call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are
+// evaluated once in the caller; frame=new gives each repetition fresh #1..#33 holding the
+// numbered arguments (and the callee's named locals that are named arguments); otherwise
+// (shared, the default) the callee works on the caller's #1..#33. Named locals are per call.
 void Codegen::emitCall(const Op &op) {
   const Expr *callee = op.get("callee");
-  const ir::Function *target = nullptr;
-  if (callee && (callee->kind == ExprKind::String || callee->kind == ExprKind::Symbol))
-    target = src_.find(callee->str);
+  const ir::Function *target = callee ? src_.find(callee->str) : nullptr;
   if (!target) {
-    diags_.error(op.loc, "call to unknown function" + (callee ? " '" + callee->str + "'" : std::string()));
-    failed_ = true;
+    fail(op.loc, fmt::format("call to unknown program '{}'", callee ? callee->str : "?"));
     return;
   }
-  bool shared = false;
-  if (const Expr *fr = op.get("frame"); fr && (fr->kind == ExprKind::Symbol || fr->kind == ExprKind::String)) {
-    if (fr->str != "new" && fr->str != "shared") {
-      diags_.error(op.loc, "frame must be new or shared");
-      failed_ = true;
-      return;
-    }
-    shared = fr->str == "shared";
-  }
-  std::vector<std::pair<unsigned, Value *>> args;  // frame slot, value
-  std::set<std::string> given;
+  FnInfo &fi = functions_.at(target->name);
+  const Expr *countE = op.get("count");
+  Value *count = countE ? numOf(expr(*countE)) : nullptr;
+  const Expr *frameE = op.get("frame");
+  bool newFrame = frameE && frameE->str == "new";
+  Value *depth = B.CreateLoad(i32Ty, depthPtr);
+  Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
+  faultIf(B.CreateICmpUGE(depth, maxDepth), op.loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
+  std::vector<std::pair<unsigned, Value *>> args;  // callee frame slot, value
   for (auto &a : op.args) {
-    if (a.key.size() <= 2 || a.key.compare(0, 2, "a.") != 0 || !a.value) continue;
-    std::string name = a.key.substr(2);
-    given.insert(name);
-    unsigned slot;
-    if (std::isdigit((unsigned char)name[0])) {
-      long n = std::strtol(name.c_str(), nullptr, 10);
-      if (n < 1 || n > kFrameLocals) {
-        diags_.error(op.loc, "call argument '" + a.key + "' is not a local #1..#33");
-        failed_ = true;
-        return;
-      }
-      slot = (unsigned)n;
-    } else {
-      slot = (unsigned)(kFrameLocals + 1 + localNames_.at(name));
+    if (a.key.rfind("a.", 0) != 0 || !a.value) continue;
+    std::string k = a.key.substr(2);
+    Value *v = expr(*a.value).v;
+    if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
+      long n = std::atol(k.c_str());
+      if (n >= 1 && n <= kFrameLocals) args.push_back({(unsigned)n, v});
+    } else if (auto it = fi.locals.find(k); it != fi.locals.end()) {
+      args.push_back({(unsigned)(kFrameLocals + 1 + it->second), v});
     }
-    args.push_back({slot, expr(*a.value).v});
   }
-  for (auto &p : target->params)
-    if (!given.count(p.name) && p.defaultValue)
-      args.push_back({(unsigned)(kFrameLocals + 1 + localNames_.at(p.name)), expr(*p.defaultValue).v});
-  Value *limit = nullptr;
-  if (const Expr *count = op.get("count")) limit = repeatCount(B, roundIndex(expr(*count)));
+  B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
 
-  Value *counter = nullptr;
-  BasicBlock *condBB = nullptr, *done = nullptr;
-  if (limit) {
+  Value *counter = nullptr, *limit = nullptr;
+  BasicBlock *head = nullptr, *done = nullptr;
+  if (count) {  // repetitions: llround(count); NaN and counts below 1 run none
+    Value *r = roundOf(count);
+    Value *c = B.CreateSelect(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 1.0)), r, ConstantFP::get(dblTy, 0.0));
+    c = B.CreateSelect(B.CreateFCmpOGT(c, ConstantFP::get(dblTy, 0x1p62)), ConstantFP::get(dblTy, 0x1p62), c);
+    limit = B.CreateFPToSI(c, i64Ty);
     counter = allocaEntry(i64Ty, "call.count");
     B.CreateStore(B.getInt64(0), counter);
-    condBB = newBlock("call.cond");
+    head = newBlock("call.head");
     done = newBlock("call.end");
     BasicBlock *body = newBlock("call.body");
-    startBlock(condBB);
+    startBlock(head);
     Value *i = B.CreateLoad(i64Ty, counter);
     B.CreateCondBr(B.CreateICmpSLT(i, limit), body, done);
     B.SetInsertPoint(body);
     B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
   }
-  Value *depth = B.CreateLoad(i32Ty, depthPtr);
-  Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
-  faultIf(B.CreateICmpUGE(depth, maxDepth), op.loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
-  B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
-  Value *frame = frameArg;
-  if (!shared) {
-    if (!calleeFrame) calleeFrame = allocaEntry(ArrayType::get(dblTy, frameSize_), "callee.frame");
-    frame = calleeFrame;
-    initFrame(frame);
+  Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
+  const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);
+  if (newFrame) {
+    initFrame(frame, fi.frameSize, 0);
+    for (auto &a : args) B.CreateStore(a.second, B.CreateConstGEP1_32(dblTy, frame, a.first));
+  } else {
+    B.CreateMemCpy(frame, MaybeAlign(8), frameArg, MaybeAlign(8), localsBytes);
+    initFrame(frame, fi.frameSize, kFrameLocals + 1);
   }
-  for (auto &a : args) B.CreateStore(a.second, B.CreateConstGEP1_32(dblTy, frame, a.first));
-  Value *st = B.CreateCall(functions_.at(target->name), {ctxArg, stArg, frame});
-  B.CreateStore(depth, depthPtr);
+  Value *st = B.CreateCall(fi.F, {ctxArg, stArg, frame});
   checkStatus(st);
-  if (limit) {
-    B.CreateBr(condBB);
+  if (!newFrame) B.CreateMemCpy(frameArg, MaybeAlign(8), frame, MaybeAlign(8), localsBytes);
+  if (count) {
+    B.CreateBr(head);
     B.SetInsertPoint(done);
   }
+  B.CreateStore(depth, depthPtr);
 }
 
 }  // namespace ncc::jit

@@ -2,12 +2,15 @@
 // ir/Arith.h. Vacant checks are emitted only for values that can be vacant (variable reads).
 #include "backends/jit/CodegenImpl.h"
 
-#include "ir/Arith.h"
+#include "ir/Value.h"
 #include "ir/Builtins.h"
 #include "runtime/ncrt.h"
 
 #include <llvm/IR/Intrinsics.h>
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <cstdlib>
 
 namespace ncc::jit {
@@ -18,10 +21,7 @@ using ir::ExprKind;
 using ir::OpCode;
 using ir::VarSpace;
 
-void Codegen::badExpr(const Expr &e, const std::string &msg) {
-  diags_.error(e.loc, msg);
-  failed_ = true;
-}
+static constexpr int kFrameLocals = 33;
 
 Value *Codegen::isVacant(Value *v) {
   return B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, kVacantBits));
@@ -43,10 +43,10 @@ Value *Codegen::toDouble(Value *i1) {
   return B.CreateSelect(i1, ConstantFP::get(dblTy, 1.0), ConstantFP::get(dblTy, 0.0));
 }
 
-Value *Codegen::roundIndex(Val v) { return B.CreateUnaryIntrinsic(Intrinsic::round, numOf(v)); }
+Value *Codegen::roundOf(Value *v) { return B.CreateUnaryIntrinsic(Intrinsic::round, v); }
 
-// The index of a variable when it is a literal: args[0] if a number, else the digits of the
-// name (`#12` may be stored as name "12").
+// A literal index: args[0] when it is a number (the IR parser always gives #n an index
+// expression); a front end may also spell the number in the name.
 static bool literalIndex(const Expr &var, double &out) {
   if (!var.args.empty()) {
     const Expr &i = *var.args[0];
@@ -61,62 +61,61 @@ static bool literalIndex(const Expr &var, double &out) {
   return true;
 }
 
+// #n: 1..33 the frame's locals, 0 always vacant (not assignable), else the global array.
 Value *Codegen::numberedPtr(const Expr &var, bool write) {
   double lit;
   if (literalIndex(var, lit)) {
-    int64_t slot;
-    switch (numberedSlot(lit, write, slot)) {
-    case VarSlot::Local: return B.CreateConstGEP1_64(dblTy, frameArg, slot);
-    case VarSlot::Global: return B.CreateConstGEP1_64(dblTy, numberedBase, slot);
-    case VarSlot::OutOfRange: failIf(B.getTrue(), var.loc, "parameter number out of range"); return scratch;
+    long n = std::lround(num(lit));
+    if (n >= 1 && n <= 33) return B.CreateConstGEP1_64(dblTy, frameArg, n);
+    if (n == 0 && write) {
+      fail(var.loc, "#0 is always vacant and cannot be assigned");
+      return scratch;
     }
+    if (n < 0 || n >= NCRT_NUMBERED) {
+      faultIf(B.getTrue(), var.loc, NCRT_FAULT_NUMBERED, "", ConstantFP::get(dblTy, num(lit)));
+      return scratch;
+    }
+    return B.CreateConstGEP1_64(dblTy, numberedBase, n);  // numbered[0] stays vacant
   }
-  if (var.args.empty()) {
-    badExpr(var, "numbered variable without an index");
-    return scratch;
-  }
-  Value *r = roundIndex(expr(*var.args[0]));
-  Value *ok = B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 0.0)),
-                          B.CreateFCmpOLT(r, ConstantFP::get(dblTy, (double)kNumberedVars)));
-  if (write) ok = B.CreateAnd(ok, B.CreateFCmpONE(r, ConstantFP::get(dblTy, 0.0)));
-  failIf(B.CreateNot(ok), var.loc, "parameter number out of range");
+  Value *x = numOf(expr(*var.args[0]));
+  Value *r = roundOf(x);
+  Value *inRange = B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 0.0)),
+                               B.CreateFCmpOLT(r, ConstantFP::get(dblTy, (double)NCRT_NUMBERED)));
+  Value *local = B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 1.0)),
+                             B.CreateFCmpOLE(r, ConstantFP::get(dblTy, 33.0)));
+  if (write) failIf(B.CreateFCmpOEQ(r, ConstantFP::get(dblTy, 0.0)), var.loc, "#0 is always vacant and cannot be assigned");
+  faultIf(B.CreateNot(B.CreateOr(local, inRange)), var.loc, NCRT_FAULT_NUMBERED, "", x);
   Value *slot = B.CreateFPToSI(r, i64Ty);
-  Value *local = B.CreateICmpULT(B.CreateSub(slot, B.getInt64(1)), B.getInt64(kFrameLocals));
   return B.CreateSelect(local, B.CreateGEP(dblTy, frameArg, slot), B.CreateGEP(dblTy, numberedBase, slot));
 }
 
-Value *Codegen::paramPtr(const Expr &var, Value *base, int64_t count) {
+// R and Q parameters: index rounded like #n (no index = 0).
+Value *Codegen::paramPtr(const Expr &var, Value *base, int64_t count, unsigned fault) {
+  if (var.args.empty()) return base;
   double lit;
   if (literalIndex(var, lit)) {
-    int64_t slot;
-    if (paramSlot(lit, count, slot)) return B.CreateConstGEP1_64(dblTy, base, slot);
-    failIf(B.getTrue(), var.loc, "parameter number out of range");
+    long n = std::lround(num(lit));
+    if (n >= 0 && n < count) return B.CreateConstGEP1_64(dblTy, base, n);
+    faultIf(B.getTrue(), var.loc, fault, "", ConstantFP::get(dblTy, num(lit)));
     return scratch;
   }
-  if (var.args.empty()) {
-    badExpr(var, "parameter without an index");
-    return scratch;
-  }
-  Value *r = roundIndex(expr(*var.args[0]));
+  Value *x = numOf(expr(*var.args[0]));
+  Value *r = roundOf(x);
   Value *ok = B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 0.0)),
                           B.CreateFCmpOLT(r, ConstantFP::get(dblTy, (double)count)));
-  failIf(B.CreateNot(ok), var.loc, "parameter number out of range");
+  faultIf(B.CreateNot(ok), var.loc, fault, "", x);
   return B.CreateGEP(dblTy, base, B.CreateFPToSI(r, i64Ty));
 }
 
 Value *Codegen::varPtr(const Expr &var, bool write) {
   switch (var.space) {
   case VarSpace::Numbered: return numberedPtr(var, write);
-  case VarSpace::RParam: return paramPtr(var, rBase, kRParams);
+  case VarSpace::RParam: return paramPtr(var, rBase, NCRT_RPARAMS, NCRT_FAULT_RPARAM);
   case VarSpace::QParam: {
-    Value *base = B.CreateConstGEP1_64(dblTy, qBase, (uint64_t)qSpaces_.at(var.str) * kQParams);
-    if (var.args.empty()) {
-      badExpr(var, "Q parameter without an index");
-      return scratch;
-    }
-    return paramPtr(var, base, kQParams);
+    Value *base = B.CreateConstGEP1_64(dblTy, qBase, (uint64_t)qSpaces_.at(var.str) * NCRT_QPARAMS);
+    return paramPtr(var, base, NCRT_QPARAMS, NCRT_FAULT_QPARAM);
   }
-  case VarSpace::Local: return B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + localNames_.at(var.str));
+  case VarSpace::Local: return B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + cur_->locals.at(var.str));
   case VarSpace::Global: return B.CreateConstGEP1_64(dblTy, namedBase, globalNames_.at(var.str));
   case VarSpace::System: break;
   }
@@ -135,7 +134,7 @@ Val Codegen::loadVar(const Expr &var) {
 
 void Codegen::storeVar(const Expr &var, Value *value) {
   if (var.space == VarSpace::System) {
-    faultIf(B.getTrue(), var.loc, NCRT_FAULT_SYSTEM_WRITE, var.str, nullptr);
+    fail(var.loc, fmt::format("system variable '{}' cannot be assigned", var.str));
     return;
   }
   B.CreateStore(value, varPtr(var, true));
@@ -147,14 +146,14 @@ Val Codegen::expr(const Expr &e) {
   case ExprKind::Bool: return {ConstantFP::get(dblTy, e.num), false};
   case ExprKind::Vacant: return {ConstantFP::get(dblTy, vacantValue()), true};
   case ExprKind::String:
-  case ExprKind::Symbol: badExpr(e, "'" + e.str + "' is not a number"); break;
+  case ExprKind::Symbol: fail(e.loc, "strings are not supported in numeric expressions yet"); break;
   case ExprKind::Var: return loadVar(e);
   case ExprKind::Unary: {
     if (e.args.size() != 1) break;
     Val a = expr(*e.args[0]);
     if (e.op == OpCode::Neg) return {B.CreateFNeg(numOf(a)), false};
     if (e.op == OpCode::Not) return {toDouble(B.CreateNot(truthy(a))), false};
-    badExpr(e, std::string("invalid unary operator ") + ir::opCodeName(e.op));
+    fail(e.loc, "bad unary operator");
     break;
   }
   case ExprKind::Binary:
@@ -162,7 +161,7 @@ Val Codegen::expr(const Expr &e) {
     break;
   case ExprKind::Call: return callBuiltin(e);
   }
-  if (!failed_) badExpr(e, "malformed expression");
+  fail(e.loc, "bad expression");
   return {ConstantFP::get(dblTy, 0.0), false};
 }
 
@@ -208,26 +207,29 @@ Val Codegen::binary(const Expr &e) {
   case OpCode::And: return {toDouble(B.CreateAnd(truthy(a), truthy(b))), false};
   case OpCode::Or: return {toDouble(B.CreateOr(truthy(a), truthy(b))), false};
   case OpCode::Xor: return {toDouble(B.CreateXor(truthy(a), truthy(b))), false};
-  default: badExpr(e, std::string("operator ") + ir::opCodeName(e.op) + " is not supported on numbers"); break;
+  default: fail(e.loc, fmt::format("operator '{}' is not supported on numbers", ir::opCodeName(e.op))); break;
   }
   return {ConstantFP::get(dblTy, 0.0), false};
 }
 
+// Builtins get num() arguments; a NaN result is the eval engine's domain error.
 Val Codegen::callBuiltin(const Expr &e) {
   const BuiltinInfo *bi = findBuiltin(e.str);
   if (!bi) {
-    badExpr(e, "unknown function '" + e.str + "'");
+    fail(e.loc, fmt::format("unknown function '{}'", e.str));
     return {ConstantFP::get(dblTy, 0.0), false};
   }
   if (e.args.size() != bi->arity) {
-    badExpr(e, std::string(bi->name) + " takes " + std::to_string(bi->arity) + " argument(s)");
+    fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", bi->name, bi->arity, e.args.size()));
     return {ConstantFP::get(dblTy, 0.0), false};
   }
   std::vector<Value *> vals;
-  for (auto &a : e.args) vals.push_back(expr(*a).v);  // raw: the builtin applies num()
+  for (auto &a : e.args) vals.push_back(numOf(expr(*a)));
   if (!argSlot) argSlot = allocaEntry(ArrayType::get(dblTy, 4), "args");
-  for (unsigned i = 0; i < vals.size(); ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
-  return {B.CreateCall(builtins_.at(bi->name), {argSlot}), false};
+  for (unsigned i = 0; i < vals.size() && i < 4; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
+  Value *r = B.CreateCall(builtins_.at(bi->name), {argSlot});
+  failIf(B.CreateFCmpUNO(r, r), e.loc, fmt::format("'{}' argument out of domain", bi->name));
+  return {r, false};
 }
 
 }  // namespace ncc::jit

@@ -1,9 +1,12 @@
 // Internal to backends/jit: the code generator's state, shared by Codegen.cpp (module,
-// functions, control flow), CodegenExpr.cpp (expressions, variables) and CodegenCmd.cpp
-// (machine commands and constant tables).
+// functions, frames), CodegenCtl.cpp (statements, control flow), CodegenExpr.cpp (expressions,
+// variables) and CodegenCmd.cpp (machine commands and constant tables).
+//
+// The generated code reproduces the eval engine (passes/Eval.cpp) exactly: same values, same
+// command stream, same run-time errors with the same texts, at the same points of execution.
 #pragma once
-#include "backends/jit/MachineOps.h"
 #include "ir/NCIR.h"
+#include "passes/CmdTemplate.h"
 
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Module.h>
@@ -22,6 +25,16 @@ struct Val {
   bool mayVacant;
 };
 
+// One NC function: its LLVM function, its frame layout and the errors the eval engine would
+// raise when it first compiles it (reported when the function is first called).
+struct FnInfo {
+  const ir::Function *fn = nullptr;
+  llvm::Function *F = nullptr;
+  std::map<std::string, unsigned> locals;  // named locals: frame slot 34 + index
+  unsigned frameSize = 34;                 // #0..#33 then the named locals
+  std::vector<std::pair<SourceLoc, std::string>> compileErrors;
+};
+
 class Codegen {
 public:
   Codegen(const ir::Module &src, llvm::LLVMContext &ctx, Diagnostics &diags);
@@ -30,24 +43,23 @@ public:
 private:
   // ------------------------------------------------ module level (Codegen.cpp)
   void declareRuntime();
-  void scanNames(const ir::Region &r);
-  void scanExprNames(const ir::Expr &e);
-  void emitFunction(const ir::Function &f, llvm::Function *F);
+  void scanNames(FnInfo &fi, const ir::Region &r);
+  void scanExprNames(FnInfo &fi, const ir::Expr &e);
+  void emitFunction(FnInfo &fi);
   void emitEntry();
-  void initFrame(llvm::Value *frame);
-  // ------------------------------------------------ control flow (Codegen.cpp)
+  void initFrame(llvm::Value *frame, unsigned size, unsigned from);
+  // ------------------------------------------------ control flow (CodegenCtl.cpp)
+  void validate(FnInfo &fi);
   void scanTargets(const ir::Region &r);
   void emitRegion(const ir::Region &r);
   void emitOp(const ir::Op &op);
   void emitIf(const ir::Op &op);
-  void emitWhile(const ir::Op &op);
   void emitLoop(const ir::Op &op);
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
-  const ir::Op *resolveTarget(unsigned from, const ir::Op &go, int64_t n, const std::string *label);
+  const ir::Op *resolveTarget(const ir::Op &go);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
-  void emitJump(const ir::Op &go, const ir::Op *target);
-  void emitIterationCheck(llvm::Value *counter, SourceLoc loc);
+  void emitTimeCheck(SourceLoc loc);
   // ------------------------------------------------ helpers (Codegen.cpp)
   llvm::BasicBlock *newBlock(const char *name);
   void startBlock(llvm::BasicBlock *bb);  // falls through from an open current block
@@ -55,6 +67,7 @@ private:
   llvm::Value *allocaEntry(llvm::Type *t, const char *name);
   void checkStatus(llvm::Value *status);  // returns the status when it is not NCRT_OK
   void failIf(llvm::Value *cond, SourceLoc loc, const std::string &msg);
+  void fail(SourceLoc loc, const std::string &msg);  // unconditional; continues in a dead block
   void faultIf(llvm::Value *cond, SourceLoc loc, unsigned kind, const std::string &name, llvm::Value *value);
   llvm::Constant *cstring(const std::string &s);
   std::vector<llvm::Value *> locArgs(SourceLoc loc);
@@ -66,18 +79,17 @@ private:
   llvm::Value *truthy(Val v);  // i1
   llvm::Value *isVacant(llvm::Value *v);
   llvm::Value *toDouble(llvm::Value *i1);
-  llvm::Value *roundIndex(Val v);  // llvm.round(num(v))
+  llvm::Value *roundOf(llvm::Value *v);  // llvm.round: half away from zero, like lround
   llvm::Value *varPtr(const ir::Expr &var, bool write);
   llvm::Value *numberedPtr(const ir::Expr &var, bool write);
-  llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count);
+  llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
   Val loadVar(const ir::Expr &var);
   void storeVar(const ir::Expr &var, llvm::Value *value);
-  void badExpr(const ir::Expr &e, const std::string &msg);
   // ------------------------------------------------ commands (CodegenCmd.cpp)
   void emitMachineOp(const ir::Op &op);
   void flushRun();
-  void emitDynamicCmd(const CmdSpec &s);
-  llvm::Constant *cmdConstant(const CmdSpec &s);
+  void emitDynamicCmd(const CmdTemplate &t);
+  llvm::Constant *cmdConstant(const MachineCmd &c);
 
   const ir::Module &src_;
   llvm::LLVMContext &C;
@@ -92,33 +104,29 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow;
   std::map<std::string, llvm::FunctionCallee> builtins_;
-  std::map<std::string, llvm::Function *> functions_;
+  std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
-
-  // Named variables get module-wide slots: locals index the frame after #0..#33, so a shared
-  // frame sees the caller's named locals; globals index storage->named.
-  std::map<std::string, unsigned> localNames_, globalNames_, qSpaces_;
-  unsigned frameSize_ = 34;
+  std::map<std::string, unsigned> globalNames_, qSpaces_;  // module-wide slots
 
   // ------------------------------------------------ per function
+  FnInfo *cur_ = nullptr;
   llvm::Function *F = nullptr;
   llvm::BasicBlock *entryBB = nullptr, *failBB = nullptr, *exitBB = nullptr;
   llvm::PHINode *exitPhi = nullptr;
   llvm::Value *ctxArg, *stArg, *frameArg;
   llvm::Value *numberedBase, *rBase, *qBase, *namedBase, *maxLoop, *depthPtr, *pollPtr;
-  llvm::Value *cmdSlot = nullptr, *argSlot = nullptr, *calleeFrame = nullptr, *gotoCounter = nullptr,
-              *scratch = nullptr;
+  llvm::Value *cmdSlot = nullptr, *argSlot = nullptr, *backJumps = nullptr, *scratch = nullptr;
   struct LoopTargets {
     llvm::BasicBlock *cont, *brk;
   };
   std::vector<LoopTargets> loops_;
-  // Jump targets: every op in pre-order (goto search order), block numbers and labels.
+  // Jump targets: every op in pre-order (the eval engine's instruction order), block numbers
+  // and labels (the last definition of a label wins, as in the eval engine).
   std::unordered_map<const ir::Op *, unsigned> order_;
   std::vector<std::pair<int64_t, const ir::Op *>> blocks_;
-  std::vector<std::pair<std::string, const ir::Op *>> labels_;
+  std::map<std::string, const ir::Op *> labels_;
   std::unordered_map<const ir::Op *, llvm::BasicBlock *> targetBBs_;
-  bool dynamicGoto_ = false;
-  std::vector<CmdSpec> run_;  // pending constant commands
+  std::vector<MachineCmd> run_;  // pending constant commands (text points into the IR)
 };
 
 }  // namespace ncc::jit

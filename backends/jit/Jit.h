@@ -10,7 +10,7 @@
 
 namespace ncc {
 class Executor;
-class CmdTarget;
+class CmdSink;
 }  // namespace ncc
 
 namespace ncc::jit {
@@ -22,10 +22,10 @@ struct JitOptions {
 
 // Compiles and runs the program; its commands go to the executor. Does not call
 // exec.finish() (the caller does, as for the eval engine). Returns false on a compile or
-// run-time error (diagnostics already reported).
+// run-time error (diagnostics already reported). An empty module runs nothing.
 bool runModule(const ir::Module &m, Executor &exec, Diagnostics &diags, const JitOptions &opts);
-// The same with any command target (tests record the command stream).
-bool runModule(const ir::Module &m, CmdTarget &target, Diagnostics &diags, const JitOptions &opts);
+// The same with any command sink (tests record the command stream).
+bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const JitOptions &opts);
 
 // Textual LLVM IR of the program, before optimisation (`ncc compile --emit=llvm`).
 bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags);

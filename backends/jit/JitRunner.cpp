@@ -4,6 +4,7 @@
 #include "backends/jit/Jit.h"
 
 #include "ir/Builtins.h"
+#include "passes/Eval.h"
 #include "runtime/Executor.h"
 #include "runtime/ncrt.h"
 
@@ -98,7 +99,7 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   return syms;
 }
 
-bool runModule(const ir::Module &m, CmdTarget &target, Diagnostics &diags, const JitOptions &opts) {
+bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const JitOptions &opts) {
   initLLVM();
   auto jtmb = orc::JITTargetMachineBuilder::detectHost();
   if (!jtmb) {
@@ -144,13 +145,17 @@ bool runModule(const ir::Module &m, CmdTarget &target, Diagnostics &diags, const
     return false;
   }
   auto *entry = sym->toPtr<int (*)(ncrt_ctx *)>();
-  ncrt_ctx rt(target, diags, opts.limits);
-  return entry(&rt) != NCRT_ERROR;
+  ncrt_ctx rt(sink, diags, opts.limits);
+  int status = entry(&rt);
+  // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
+  // error was reported.
+  if (status == NCRT_END) return !diags.hasErrors();
+  return status == NCRT_OK;
 }
 
 bool runModule(const ir::Module &m, Executor &exec, Diagnostics &diags, const JitOptions &opts) {
-  ExecutorTarget target(exec);
-  return runModule(m, target, diags, opts);
+  ExecutorSink sink(exec);
+  return runModule(m, sink, diags, opts);
 }
 
 bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags) {

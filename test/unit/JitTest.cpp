@@ -4,11 +4,13 @@
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
 #include "ir/Value.h"
+#include "passes/Eval.h"
 #include "runtime/ncrt.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -18,7 +20,7 @@ using namespace ncc::ir;
 
 namespace {
 
-struct Recorder : CmdTarget {
+struct Recorder : CmdSink {
   std::vector<MachineCmd> cmds;
   std::vector<std::string> texts;
   bool exec(const MachineCmd &c) override {
@@ -47,7 +49,7 @@ ExprPtr Bin(OpCode op, ExprPtr a, ExprPtr b, SourceLoc loc = L(1)) {
 ExprPtr Fn(const char *name, ExprPtr a) {
   std::vector<ExprPtr> args;
   args.push_back(std::move(a));
-  return Expr::call(name, std::move(args));
+  return Expr::call(name, std::move(args), L(1));
 }
 
 void addArgs(Op &) {}
@@ -104,9 +106,37 @@ struct Run {
   }
 };
 
+// Bitwise equality of what the executor reads from a command.
+std::string diffCmd(const MachineCmd &a, const std::string &ta, const MachineCmd &b, const std::string &tb) {
+  if (a.kind != b.kind || a.sub != b.sub || a.sub2 != b.sub2 || a.nmodes != b.nmodes || a.mask != b.mask ||
+      a.blockNumber != b.blockNumber || a.loc.file != b.loc.file || a.loc.line != b.loc.line ||
+      a.loc.col != b.loc.col || ta != tb)
+    return "header differs";
+  if (std::memcmp(a.modes, b.modes, a.nmodes)) return "modes differ";
+  for (int w = 0; w < kWords; ++w)
+    if ((a.mask & (1u << w)) && std::memcmp(&a.w[w], &b.w[w], sizeof(double)))
+      return std::string("word ") + kWordLetters[w] + " differs";
+  return "";
+}
+
+// Runs the module with the JIT and with the eval engine: both must give the same command
+// stream, the same result and the same diagnostics.
 std::unique_ptr<Run> run(const Module &m, jit::JitOptions opts = {}) {
   auto r = std::make_unique<Run>();
   r->ok = jit::runModule(m, r->rec, r->diags, opts);
+  Run ref;
+  Evaluator ev(ref.rec, ref.diags, opts.limits);
+  ref.ok = ev.run(m);
+  EXPECT_EQ(r->ok, ref.ok) << "eval: " << ref.errors() << "jit: " << r->errors();
+  EXPECT_EQ(r->errors(), ref.errors());
+  for (size_t i = 0; i < r->diags.collected().size() && i < ref.diags.collected().size(); ++i)
+    EXPECT_EQ(r->diags.collected()[i].loc.line, ref.diags.collected()[i].loc.line) << i;
+  EXPECT_EQ(r->rec.cmds.size(), ref.rec.cmds.size());
+  for (size_t i = 0; i < r->rec.cmds.size() && i < ref.rec.cmds.size(); ++i) {
+    std::string d = diffCmd(r->rec.cmds[i], r->rec.texts[i], ref.rec.cmds[i], ref.rec.texts[i]);
+    EXPECT_EQ(d, "") << "command " << i;
+    if (!d.empty()) break;
+  }
   return r;
 }
 
@@ -189,14 +219,22 @@ TEST(Jit, BackwardAndComputedGoto) {
                         mk(OpKind::Move, L(6), "X", Var(1)),
                         withBody(mk(OpKind::If, L(7), "cond", Bin(OpCode::Lt, Var(1), N(3))),
                                  reg(mk(OpKind::Goto, L(7), "n", N(5)))),
-                        mk(OpKind::Goto, L(8), "n", Bin(OpCode::Mul, Var(1), N(10))), block(20),
+                        mk(OpKind::Goto, L(8), "n", N(30)), block(20),
                         mk(OpKind::Move, L(9), "Y", N(20)), block(30), mk(OpKind::Move, L(10), "Y", N(30))));
   auto r = run(m);
   ASSERT_TRUE(r->ok) << r->errors();
   auto moves = r->rec.of(CmdKind::Move);
   ASSERT_EQ(moves.size(), 4u);
   EXPECT_EQ(moves[2].get(Word::X), 3);
-  EXPECT_EQ(moves[3].get(Word::Y), 30);  // GOTO #1*10 = GOTO 30 skipped N20
+  EXPECT_EQ(moves[3].get(Word::Y), 30);  // GOTO 30 skipped N20
+
+  // A computed goto is rejected when the function first runs, as by the eval engine.
+  Module bad = module(reg(mk(OpKind::Move, L(1), "X", N(1)), block(10),
+                          mk(OpKind::Goto, L(8), "n", Bin(OpCode::Mul, Var(1), N(10)))));
+  auto rb = run(bad);
+  EXPECT_FALSE(rb->ok);
+  EXPECT_TRUE(rb->rec.cmds.empty());
+  EXPECT_EQ(rb->errors(), "goto target must be a constant sequence number or a label\n");
 }
 
 // G65 P9010 L2 A7 B#1: a new frame per call, args in #1/#2, the caller's #1 untouched.
@@ -276,10 +314,15 @@ TEST(Jit, RuntimeErrors) {
   cases.push_back({module(reg(mk(OpKind::Move, L(3), "X", Bin(OpCode::Div, N(1), Var(1), L(3, 8))))),
                    "division by zero", 3});
   cases.push_back({module(reg(assign(1, N(-1)), mk(OpKind::Move, L(4), "X", VarAt(Var(1))))),
-                   "parameter number out of range", 1});
+                   "parameter number #-1 out of range", 1});
   cases.push_back({module(reg(mk(OpKind::Assign, L(2), "target", Var(0), "value", N(1)))),
-                   "parameter number out of range", 1});
-  cases.push_back({module(reg(mk(OpKind::Goto, L(5), "n", N(77)))), "goto target 77 not found", 5});
+                   "#0 is always vacant and cannot be assigned", 1});
+  cases.push_back({module(reg(mk(OpKind::Goto, L(5), "n", N(77)))), "jump to missing sequence number N77", 5});
+  cases.push_back({module(reg(mk(OpKind::Move, L(6), "X", Fn("SQRT", N(-1))))), "'SQRT' argument out of domain", 1});
+  cases.push_back({module(reg(mk(OpKind::Move, L(6), "X", Fn("NOPE", N(1))))), "unknown function 'NOPE'", 1});
+  cases.push_back({module(reg(mk(OpKind::Assign, L(2), "target", Expr::var(VarSpace::RParam, "", N(1000), L(4)),
+                                 "value", N(1)))),
+                   "R parameter index 1000 out of range", 4});
   for (auto &c : cases) {
     auto r = run(c.m);
     EXPECT_FALSE(r->ok) << c.msg;
@@ -305,7 +348,7 @@ TEST(Jit, LimitsProduceErrors) {
     Module m = module(reg(block(1), mk(OpKind::Goto, L(2), "n", N(1))));
     auto r = run(m, opts);
     EXPECT_FALSE(r->ok);
-    EXPECT_EQ(r->errors(), "loop did not terminate after 1000 iterations (limit --max-loop-iterations)\n");
+    EXPECT_EQ(r->errors(), "backward jump repeated more than 1000 times (limit --max-loop-iterations)\n");
     EXPECT_EQ(r->diags.collected().at(0).loc.line, 2u);
   }
   {
@@ -313,16 +356,20 @@ TEST(Jit, LimitsProduceErrors) {
     addFunction(m, "O1", reg(mk(OpKind::Call, L(9), "callee", Expr::string("O1"))));
     auto r = run(m);
     EXPECT_FALSE(r->ok);
-    EXPECT_EQ(r->errors(), "call depth limit 64 exceeded\n");
+    EXPECT_EQ(r->errors(), "call depth limit 64 exceeded (limit --max-call-depth)\n");
     EXPECT_EQ(r->diags.collected().at(0).loc.line, 9u);
   }
   {
     opts.limits.maxLoopIterations = 1ull << 40;
     opts.limits.maxSeconds = 0.05;
     Module m = module(reg(withBody(mk(OpKind::Loop, L(3)), reg(assign(1, Bin(OpCode::Add, Var(1), N(1)))))));
-    auto r = run(m, opts);
-    EXPECT_FALSE(r->ok);
-    EXPECT_EQ(r->errors(), "run time limit of 0.05 s exceeded\n");
+    SourceManager sm;
+    Diagnostics diags(sm);
+    diags.setCollect(true);
+    Recorder rec;
+    EXPECT_FALSE(jit::runModule(m, rec, diags, opts));  // (timing differs from eval: not compared)
+    ASSERT_EQ(diags.collected().size(), 1u);
+    EXPECT_EQ(diags.collected()[0].message, "run time limit of 0.05 s exceeded (limit --max-seconds)");
   }
 }
 
@@ -372,7 +419,7 @@ TEST(Jit, EmitObjectWritesEntrySymbol) {
 // Benchmark shape (macro_motion.nc): 1M iterations, one G1 each. Reports the time; the target
 // (well under 0.5 s without trace output) is checked by hand, not asserted.
 TEST(Jit, MacroMotionBenchmark) {
-  struct Counter : CmdTarget {
+  struct Counter : CmdSink {
     uint64_t n = 0;
     double sum = 0;
     bool exec(const MachineCmd &c) override {
