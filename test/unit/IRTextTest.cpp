@@ -523,3 +523,23 @@ TEST(IRTextFuzz, ParserNeverCrashes) {
   }
   EXPECT_GT(accepted, 50u);  // the mutations must also exercise the accepting paths
 }
+
+// A readable source path is loaded, so verifier diagnostics quote the original program line.
+TEST(IRText, ReadableSourcesAreLoaded) {
+  std::string path = ::testing::TempDir() + "irtext_src.nc";
+  {
+    std::FILE *f = std::fopen(path.c_str(), "wb");
+    ASSERT_TRUE(f);
+    std::fputs("N10 G1 X1\nN20 G1 QQ2\n", f);
+    std::fclose(f);
+  }
+  Ctx c;
+  Module m;
+  std::string text = "module \"x\" dialect=iso\nsource 1 \"" + path + "\"\nfunc @main {\n  move QQ=2.0 loc(1:2:8)\n}\n";
+  ASSERT_TRUE(c.parse(text, m)) << c.firstError();
+  EXPECT_FALSE(verifyModule(m, c.diags));
+  ASSERT_EQ(c.diags.collected().size(), 1u);
+  EXPECT_EQ(c.diags.render(c.diags.collected()[0]),
+            path + ":2:8: error: 'move' has unknown argument 'QQ'\nN20 G1 QQ2\n       ^\n");
+  std::remove(path.c_str());
+}
