@@ -401,6 +401,8 @@ TEST(IRVerifier, EnumeratedValuesAndVariables) {
   EXPECT_EQ(verify("declare var=%x type=float\n"),
             "'declare' argument 'type' must be one of: int real bool string symbol axis frame");
   EXPECT_EQ(verify("block n=#1\n"), "'block' argument 'n' must be a non-negative integer constant");
+  EXPECT_EQ(verify("declare var=#1 type=REAL\n"), "'declare' argument 'var' must be a named variable (%name or %%name)");
+  EXPECT_EQ(verify("declare var=%%g type=INT\n"), "");
 }
 
 TEST(IRVerifier, Expressions) {
@@ -437,6 +439,9 @@ TEST(IRVerifier, GotoTargets) {
   EXPECT_EQ(verify("label name=\"L1\"\ngoto label=\"L1\"\n"), "");
   EXPECT_EQ(verify("goto label=\"L2\"\n"), "'goto' target label 'L2' is not in this function");
   EXPECT_EQ(verify("goto\n"), "'goto' needs a target: n= or label=");
+  EXPECT_EQ(verify("label name=\"5\"\ngoto n=\"5\"\n"), "'goto' argument 'n' must be a number");
+  EXPECT_EQ(verify("block n=5\ngoto label=5\n"), "'goto' argument 'label' must be a string");
+  EXPECT_EQ(verify("goto label=(concat \"L\" R1)\n"), "");  // computed label (Sinumerik GOTOF "N"<<R10)
   EXPECT_EQ(verify("goto n=#1\n"), "");  // computed target: checked at run time
   EXPECT_EQ(verify("label name=\"A\"\nlabel name=\"A\"\n"), "label 'A' is defined twice in function '@main'");
   // A block of another function is not a target.
