@@ -231,6 +231,7 @@ void Codegen::emitFunction(FnInfo &fi) {
   targetBBs_.clear();
   loops_.clear();
   run_.clear();
+  packed_.clear();
   if (!fi.compileErrors.empty()) {
     // The eval engine rejects this function when it first runs it: so does the compiled code.
     for (auto &e : fi.compileErrors) {

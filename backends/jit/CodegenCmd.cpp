@@ -35,7 +35,7 @@ void Codegen::emitMachineOp(const ir::Op &op) {
   CmdTemplate t;
   if (!buildCmdTemplate(op, t, quiet)) return;
   if (t.slots.empty()) {
-    run_.push_back(t.base);
+    appendToRun(t.base);
     return;
   }
   flushRun();
@@ -43,11 +43,23 @@ void Codegen::emitMachineOp(const ir::Op &op) {
   emitDynamicCmd(t);
 }
 
+// Short runs stay MachineCmds; once a run is longer it is packed as it grows (a flat program
+// must not hold a 224-byte struct per command).
+void Codegen::appendToRun(const MachineCmd &c) {
+  if (packed_.empty() && run_.size() < kSmallRun) {
+    run_.push_back(c);
+    return;
+  }
+  for (auto &r : run_) ncrt::packCmd(r, hasText(r) ? r.text : nullptr, packed_);
+  run_.clear();
+  ncrt::packCmd(c, hasText(c) ? c.text : nullptr, packed_);
+}
+
 void Codegen::flushRun() {
-  if (run_.empty()) return;
+  if (run_.empty() && packed_.empty()) return;
   ensureOpen();
   Value *st;
-  if (run_.size() <= kSmallRun) {
+  if (packed_.empty()) {
     std::vector<Constant *> cmds;
     for (auto &c : run_) cmds.push_back(cmdConstant(c));
     auto *arrTy = ArrayType::get(cmdTy, cmds.size());
@@ -55,11 +67,10 @@ void Codegen::flushRun() {
                                   "nc.cmds");
     st = B.CreateCall(fExecTable, {ctxArg, gv, B.getInt64(cmds.size())});
   } else {
-    std::string bytes;
-    for (auto &c : run_) ncrt::packCmd(c, hasText(c) ? c.text : nullptr, bytes);
-    Constant *data = ConstantDataArray::getString(C, bytes, false);
+    Constant *data = ConstantDataArray::getString(C, packed_, false);
     auto *gv = new GlobalVariable(*M, data->getType(), true, GlobalValue::PrivateLinkage, data, "nc.table");
-    st = B.CreateCall(fExecPacked, {ctxArg, gv, B.getInt64(bytes.size())});
+    st = B.CreateCall(fExecPacked, {ctxArg, gv, B.getInt64(packed_.size())});
+    std::string().swap(packed_);
   }
   run_.clear();
   checkStatus(st);

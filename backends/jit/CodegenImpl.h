@@ -87,6 +87,7 @@ private:
   void storeVar(const ir::Expr &var, llvm::Value *value);
   // ------------------------------------------------ commands (CodegenCmd.cpp)
   void emitMachineOp(const ir::Op &op);
+  void appendToRun(const MachineCmd &c);
   void flushRun();
   void emitDynamicCmd(const CmdTemplate &t);
   llvm::Constant *cmdConstant(const MachineCmd &c);
@@ -127,6 +128,7 @@ private:
   std::map<std::string, const ir::Op *> labels_;
   std::unordered_map<const ir::Op *, llvm::BasicBlock *> targetBBs_;
   std::vector<MachineCmd> run_;  // pending constant commands (text points into the IR)
+  std::string packed_;           // or, for a long run, the packed encoding so far
 };
 
 }  // namespace ncc::jit
