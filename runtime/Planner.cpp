@@ -49,6 +49,13 @@ double dot(const AxisVec &a, const AxisVec &b) {
   return d;
 }
 
+// min(cap, maxReachableSpeed(v, len)) without solving when the cap is reachable (the common
+// case inside a run of moves at feed).
+double reachCapped(double v, double len, double cap, double a, double j) {
+  if (cap <= v || velocityChangeDistance(v, cap, a, j) <= len) return cap;
+  return std::min(cap, maxReachableSpeed(v, len, a, j));
+}
+
 AxisVec normalized(AxisVec v) {
   double l = std::sqrt(dot(v, v));
   if (l > 0)
@@ -76,14 +83,14 @@ double maxReachableSpeed(double v, double len, double a, double j) {
     double dvStar = a * a / j;  // smallest change that reaches full acceleration
     double dStar = (2 * v + dvStar) * a / j;
     if (len <= dStar) {
-      // dv = j s^2 with j s^3 + 2 v s = len: Newton from an upper bound converges downwards.
+      // dv = j s^2 where j s^3 + 2 v s = len (increasing, convex for s > 0): Newton from an
+      // upper bound converges monotonically, quadratically once close.
       double s = std::cbrt(len / j);
       if (v > 0) s = std::min(s, len / (2 * v));
-      for (int i = 0; i < 30; ++i) {
-        double f = j * s * s * s + 2 * v * s - len;
-        double step = f / (3 * j * s * s + 2 * v);
+      for (int i = 0; i < 40; ++i) {
+        double step = (j * s * s * s + 2 * v * s - len) / (3 * j * s * s + 2 * v);
         s -= step;
-        if (std::fabs(step) <= 1e-15 * s) break;
+        if (step <= 1e-13 * s) break;
       }
       return v + j * s * s;
     }
@@ -111,17 +118,23 @@ VelocityProfile planProfile(double len, double v0, double v1, double vmax, doubl
   };
   double vp = vmax;
   if (need(vmax) > len) {
-    // Peak below the cap: bisection on the monotonic distance needed.
     double lo = std::max(v0, v1), hi = vmax;
-    if (std::isinf(j)) {
-      vp = std::sqrt(std::max(0.0, (2 * a * len + v0 * v0 + v1 * v1) / 2));
-      vp = std::clamp(vp, lo, hi);
-    } else {
-      for (int i = 0; i < 60 && hi - lo > 1e-12 * hi; ++i) {
-        double mid = 0.5 * (lo + hi);
-        (need(mid) > len ? hi : lo) = mid;
+    // Peak of a trapezoid: exact without a jerk limit, an upper estimate with one.
+    vp = std::clamp(std::sqrt(std::max(0.0, a * len + 0.5 * (v0 * v0 + v1 * v1))), lo, hi);
+    if (!std::isinf(j)) {
+      // Safeguarded Newton on the (increasing) distance needed to reach the peak and come back.
+      auto slope = [&](double from, double to) {  // d/d(to) of velocityChangeDistance(from, to)
+        double dv = to - from, t = velocityChangeTime(dv, a, j);
+        double dt = dv >= a * a / j ? 1 / a : (dv > 0 ? 1 / std::sqrt(dv * j) : INFINITY);
+        return 0.5 * t + 0.5 * (from + to) * dt;
+      };
+      for (int i = 0; i < 60; ++i) {
+        double f = need(vp) - len;
+        if (std::fabs(f) <= 1e-13 * len || hi - lo <= 1e-13 * hi) break;
+        (f > 0 ? hi : lo) = vp;
+        double next = vp - f / (slope(v0, vp) + slope(v1, vp));
+        vp = next > lo && next < hi ? next : 0.5 * (lo + hi);
       }
-      vp = lo;
     }
   }
   p.vp = vp;
@@ -249,10 +262,10 @@ void Planner::push(const MotionRecord &r) {
   stats_.maxQueued = std::max(stats_.maxQueued, count_);
   // Backward pass: the new move must be able to stop at its end; raise earlier entry speeds
   // until one does not change (then none before it can).
-  p.vBack = std::min(p.vJunction, maxReachableSpeed(0, p.length, p.accel, p.jerk));
+  p.vBack = reachCapped(0, p.length, p.vJunction, p.accel, p.jerk);
   for (size_t i = count_ - 1; i-- > 0;) {
     Pending &q = at(i);
-    double v = std::min(q.vJunction, maxReachableSpeed(at(i + 1).vBack, q.length, q.accel, q.jerk));
+    double v = reachCapped(at(i + 1).vBack, q.length, q.vJunction, q.accel, q.jerk);
     if (v <= q.vBack) break;
     q.vBack = v;
   }
@@ -266,7 +279,7 @@ void Planner::emitFront() {
   Pending &p = at(0);
   double next = count_ > 1 ? at(1).vBack : 0;
   double v0 = std::min(entry_, p.vmax);
-  double v1 = std::min(next, maxReachableSpeed(v0, p.length, p.accel, p.jerk));
+  double v1 = reachCapped(v0, p.length, next, p.accel, p.jerk);
   if (p.length == 0) v1 = std::min(next, v0);
   p.seg.vmax = p.vmax;
   p.seg.profile = planProfile(p.length, v0, v1, p.vmax, p.accel, p.jerk);
