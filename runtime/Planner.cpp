@@ -233,6 +233,7 @@ void Planner::push(const MotionRecord &r) {
   p = Pending{};
   p.seg.record = r;
   p.seg.record.text.clear();
+  lastPos_ = r.end;
   if (r.kind == RecordKind::Arc) {
     p.seg.arc = arcGeometry(r);
     p.length = p.seg.arc.length;
@@ -323,7 +324,8 @@ void Planner::record(const MotionRecord &r) {
     flush();
     PlannedSegment s;
     s.record = r;
-    s.record.start = s.record.end = r.end;
+    // Dwell records need not carry a position: the machine waits where the last move ended.
+    s.record.start = s.record.end = lastPos_;
     s.profile.tCruise = std::isfinite(r.value) && r.value > 0 ? r.value : 0;
     emit(s);
     return;

@@ -105,6 +105,7 @@ private:
   int pathMode_ = 2;          // 0 exact path, 1 exact stop, 2 continuous
   double tolerance_;          // corner deviation budget, mm
   uint64_t nextIndex_ = 0;
+  AxisVec lastPos_{};         // end of the last move, where dwells happen
   bool finished_ = false;
   PlannerStats stats_;
 };
