@@ -245,6 +245,7 @@ void Planner::push(const MotionRecord &r) {
     p.length = linearLength(r.start, r.end);
     p.tIn = p.tOut = unitDirection(r.start, r.end, p.length);
   }
+  if (!std::isfinite(p.length)) p.length = 0;  // absurd coordinates: no time rather than inf/NaN
   p.stopAfter = r.exactStop || pathMode_ == 1;
   Pending *prev = count_ ? &at(count_ - 1) : nullptr;
   if (p.length < kMinLength) {
@@ -326,7 +327,7 @@ void Planner::record(const MotionRecord &r) {
     s.record = r;
     // Dwell records need not carry a position: the machine waits where the last move ended.
     s.record.start = s.record.end = lastPos_;
-    s.profile.tCruise = std::isfinite(r.value) && r.value > 0 ? r.value : 0;
+    s.profile.tCruise = std::isfinite(r.value) && r.value > 0 ? std::min(r.value, 1e9) : 0;
     emit(s);
     return;
   }

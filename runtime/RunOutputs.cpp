@@ -45,7 +45,11 @@ bool RunOutputs::finish(Diagnostics &diags) {
     if (!csvFile_->ok()) {
       diags.error(SourceLoc{}, "cannot write samples to '" + opt_.csvPath + "'");
       ok = false;
-    } else if (!csvFile_->commit(err)) {
+    } else if (csv_->truncated()) {
+      diags.warning(SourceLoc{}, "samples in '" + opt_.csvPath + "' stop after " + std::to_string(csv_->rows()) +
+                                     " rows (use a longer --sample-period)");
+    }
+    if (csvFile_->ok() && !csvFile_->commit(err)) {
       diags.error(SourceLoc{}, "cannot write samples to '" + opt_.csvPath + "': " + err);
       ok = false;
     }

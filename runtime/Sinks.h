@@ -65,16 +65,19 @@ std::string formatDuration(double seconds);
 // Rows at t = k * period for every k with t <= total time, and a last row at the total time.
 class CsvSampler : public PlanListener {
 public:
-  CsvSampler(std::FILE *out, double period);
+  // At most maxRows rows are written (a runaway dwell must not fill the disk).
+  CsvSampler(std::FILE *out, double period, uint64_t maxRows = 20000000);
   void segment(const PlannedSegment &s) override;
   void finished(double totalTime) override;
   uint64_t rows() const { return rows_; }
+  bool truncated() const { return truncated_; }
 
 private:
   void row(double t, const AxisVec &p, double v, const char *kind, uint32_t line);
   std::FILE *out_;
   double period_;
-  uint64_t k_ = 0, rows_ = 0;
+  uint64_t k_ = 0, rows_ = 0, maxRows_;
+  bool truncated_ = false;
   double lastT_ = -1;
   AxisVec lastPos_{};
   const char *lastKind_ = "idle";

@@ -7,12 +7,16 @@
 
 namespace ncc {
 
-CsvSampler::CsvSampler(std::FILE *out, double period)
-    : out_(out), period_(std::isfinite(period) && period > 0 ? period : 0.01) {
+CsvSampler::CsvSampler(std::FILE *out, double period, uint64_t maxRows)
+    : out_(out), period_(std::isfinite(period) && period > 0 ? period : 0.01), maxRows_(maxRows) {
   std::fputs("t,x,y,z,a,b,c,v_path,kind,line\n", out_);
 }
 
 void CsvSampler::row(double t, const AxisVec &p, double v, const char *kind, uint32_t line) {
+  if (rows_ >= maxRows_) {
+    truncated_ = true;
+    return;
+  }
   buf_.clear();
   fmt::format_to(std::back_inserter(buf_), "{:.6f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.3f},{},{}\n", t,
                  p[0] + 0.0, p[1] + 0.0, p[2] + 0.0, p[3] + 0.0, p[4] + 0.0, p[5] + 0.0, v * 60, kind, line);
@@ -26,7 +30,8 @@ void CsvSampler::segment(const PlannedSegment &s) {
   double d = s.duration(), end = s.t0 + d;
   // Sample times are k * period (no accumulated drift); a sample on a boundary belongs to the
   // segment that starts there.
-  for (double t = k_ * period_; t < end; t = ++k_ * period_) {
+  if (!std::isfinite(end)) end = s.t0;
+  for (double t = k_ * period_; t < end && !truncated_; t = ++k_ * period_) {
     double local = std::max(0.0, t - s.t0);
     double dist, v;
     s.profile.at(local, dist, v);
@@ -38,9 +43,10 @@ void CsvSampler::segment(const PlannedSegment &s) {
 }
 
 void CsvSampler::finished(double total) {
-  for (double t = k_ * period_; t <= total + 1e-9 * std::max(1.0, total); t = ++k_ * period_)
+  if (!std::isfinite(total)) total = lastT_ > 0 ? lastT_ : 0;
+  for (double t = k_ * period_; t <= total + 1e-9 * std::max(1.0, total) && !truncated_; t = ++k_ * period_)
     row(t, lastPos_, 0, lastKind_, lastLine_);
-  if (lastT_ < total - 1e-9) row(total, lastPos_, 0, lastKind_, lastLine_);
+  if (!truncated_ && lastT_ < total - 1e-9) row(total, lastPos_, 0, lastKind_, lastLine_);
   std::fflush(out_);
 }
 

@@ -291,3 +291,43 @@ TEST(JsonlTrace, OneObjectPerRecordFullPrecision) {
   EXPECT_NE(rows[2].find("\"plane\":\"zx\",\"turns\":-2"), std::string::npos) << rows[2];
   EXPECT_NE(rows[3].find("\"value\":null"), std::string::npos) << rows[3];
 }
+
+TEST(RunOutputs, AbsurdInputDoesNotHangOrCrash) {
+  Machine m = trapezoidMachine();
+  std::string path = ::testing::TempDir() + "ncc-absurd.csv";
+  RunOutputOptions opt;
+  opt.csvPath = path;
+  opt.svgPath = ::testing::TempDir() + "ncc-absurd.svg";
+  RunOutputs out(m, opt);
+  out.record(move(RecordKind::Linear, P(0, 0), P(NAN, 0), 1000));
+  out.record(move(RecordKind::Linear, P(0, 0), P(1e308, 1e308), 1000));
+  out.record(move(RecordKind::Rapid, P(0, 0), P(INFINITY, 0)));
+  MotionRecord arc = move(RecordKind::Arc, P(0, 0), P(0, 0), NAN);
+  arc.center = {NAN, 0, 0};
+  out.record(arc);
+  out.record(move(RecordKind::Linear, P(0, 0), P(1, 0), 1000));
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  EXPECT_TRUE(out.finish(d));
+  EXPECT_TRUE(std::isfinite(out.cycleTime()));
+  EXPECT_GT(out.cycleTime(), 0);
+  std::remove(path.c_str());
+  std::remove(opt.svgPath.c_str());
+}
+
+TEST(RunCsv, RowCapStopsRunawaySampling) {
+  Machine m = trapezoidMachine();
+  std::FILE *f = std::tmpfile();
+  ASSERT_TRUE(f);
+  Planner p(m);
+  CsvSampler csv(f, 0.01, 1000);
+  p.addListener(&csv);
+  p.record(event(RecordKind::Dwell, 0, 1e12, 1));  // clamped to 1e9 s, sampled up to the cap
+  SourceManager sm;
+  Diagnostics d(sm);
+  p.finish(d);
+  std::fclose(f);
+  EXPECT_EQ(csv.rows(), 1000u);
+  EXPECT_TRUE(csv.truncated());
+}
