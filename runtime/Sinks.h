@@ -99,6 +99,7 @@ public:
   void record(const MotionRecord &r) override;
   std::string render() const;
   size_t points() const { return points_; }
+  size_t plunges() const { return plunges_.size(); }
 
 private:
   struct Run {
@@ -109,6 +110,7 @@ private:
   void simplify();
   Options opt_;
   std::vector<Run> runs_;
+  std::vector<std::array<double, 2>> plunges_;  // feed moves straight down (holes), as markers
   size_t points_ = 0;
   double tol_ = 1e-3;  // mm: points closer than this to the last kept one are dropped
   double lo_[2] = {1e300, 1e300}, hi_[2] = {-1e300, -1e300};

@@ -65,6 +65,11 @@ void SvgPlot::record(const MotionRecord &r) {
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
+    // A plunge is invisible in XY: mark it (capped, consecutive duplicates dropped).
+    if (!rapid && r.end[2] < r.start[2] && std::hypot(r.end[0] - r.start[0], r.end[1] - r.start[1]) <= tol_ &&
+        plunges_.size() < opt_.maxPoints / 4 && std::isfinite(r.end[0]) && std::isfinite(r.end[1]) &&
+        (plunges_.empty() || std::hypot(plunges_.back()[0] - r.end[0], plunges_.back()[1] - r.end[1]) > tol_))
+      plunges_.push_back({r.end[0], r.end[1]});
     add(rapid, r.start[0], r.start[1], true);
     add(rapid, r.end[0], r.end[1], false);
     return;
@@ -148,6 +153,13 @@ std::string SvgPlot::render() const {
     else
       fmt::format_to(out, "<path class=\"feed\" fill=\"none\" stroke=\"#1565c0\" stroke-width=\"1.5\" "
                           "vector-effect=\"non-scaling-stroke\" d=\"{}\"/>\n", d);
+  }
+  if (!plunges_.empty()) {
+    s += "<g class=\"plunge\" fill=\"none\" stroke=\"#2e7d32\" stroke-width=\"1\" "
+         "vector-effect=\"non-scaling-stroke\">\n";
+    for (auto &p : plunges_)
+      fmt::format_to(out, "<circle cx=\"{:.3f}\" cy=\"{:.3f}\" r=\"{:.3f}\"/>\n", p[0] + 0.0, -p[1] + 0.0, size / 150);
+    s += "</g>\n";
   }
   double bar = niceLength(w);
   double bx = vx + margin / 2, by = vy + vh - margin / 2;

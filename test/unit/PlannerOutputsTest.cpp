@@ -202,10 +202,12 @@ TEST(RunSvg, WellFormedWithFeedAndRapidPaths) {
   arc.center = {60, 20, 0};
   arc.turns = 1;
   out.record(arc);
+  out.record(move(RecordKind::Linear, P(60, 30, 0), P(60, 30, -5), 100));  // plunge: a marker
   SourceManager sm;
   Diagnostics d(sm);
   ASSERT_TRUE(out.finish(d));
   std::string svg = slurp(path);
+  EXPECT_NE(svg.find("<circle cx=\"60.000\" cy=\"-30.000\""), std::string::npos);
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("class=\"feed\""), std::string::npos);
   EXPECT_NE(svg.find("class=\"rapid\""), std::string::npos);
