@@ -198,6 +198,7 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
   };
   while (std::getline(in, raw)) {
     ++lineNo;
+    if (lineNo == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);  // UTF-8 byte order mark
     std::string line = stripComment(raw);
     if (line.empty()) continue;
     if (line.front() == '[') {

@@ -83,14 +83,15 @@ double maxReachableSpeed(double v, double len, double a, double j) {
     double dvStar = a * a / j;  // smallest change that reaches full acceleration
     double dStar = (2 * v + dvStar) * a / j;
     if (len <= dStar) {
-      // dv = j s^2 where j s^3 + 2 v s = len (increasing, convex for s > 0): Newton from an
-      // upper bound converges monotonically, quadratically once close.
+      // dv = j s^2 where j s^3 + 2 v s = len (increasing, convex for s > 0): Halley steps from
+      // an upper bound (each term alone reaching len) converge cubically.
       double s = std::cbrt(len / j);
       if (v > 0) s = std::min(s, len / (2 * v));
       for (int i = 0; i < 40; ++i) {
-        double step = (j * s * s * s + 2 * v * s - len) / (3 * j * s * s + 2 * v);
+        double f = j * s * s * s + 2 * v * s - len, d1 = 3 * j * s * s + 2 * v, d2 = 6 * j * s;
+        double step = f * d1 / (d1 * d1 - 0.5 * f * d2);
         s -= step;
-        if (step <= 1e-13 * s) break;
+        if (std::fabs(step) <= 1e-13 * s) break;
       }
       return v + j * s * s;
     }
@@ -169,7 +170,12 @@ AxisVec PlannedSegment::positionAt(double t) const {
 }
 
 Planner::Planner(const Machine &machine)
-    : machine_(machine), ring_(std::max(1, machine.lookahead) + 1), tolerance_(machine.pathTolerance) {}
+    : machine_(machine), tolerance_(machine.pathTolerance) {
+  size_t n = 2;
+  while (n < (size_t)std::max(1, machine.lookahead) + 1) n *= 2;
+  ring_.resize(n);
+  mask_ = n - 1;
+}
 
 // Speed, acceleration and jerk caps of one move from the machine's per-axis limits.
 void Planner::limits(Pending &p) const {
@@ -217,7 +223,7 @@ void Planner::limits(Pending &p) const {
 double Planner::junctionSpeed(const Pending &prev, const Pending &next) const {
   double cap = std::min(prev.vmax, next.vmax);
   if (prev.stopAfter) return 0;
-  double c = dot(normalized(prev.tOut), normalized(next.tIn));
+  double c = dot(prev.nOut, next.nIn);
   if (c >= 1 - 1e-12) return cap;  // tangent
   double delta = pathMode_ == 2 ? tolerance_ : 0;
   double sinHalf = std::sqrt(std::max(0.0, 0.5 * (1 + c)));  // sin of half the inner angle
@@ -246,6 +252,8 @@ void Planner::push(const MotionRecord &r) {
     p.tIn = p.tOut = unitDirection(r.start, r.end, p.length);
   }
   if (!std::isfinite(p.length)) p.length = 0;  // absurd coordinates: no time rather than inf/NaN
+  p.nIn = normalized(p.tIn);
+  p.nOut = normalized(p.tOut);
   p.stopAfter = r.exactStop || pathMode_ == 1;
   Pending *prev = count_ ? &at(count_ - 1) : nullptr;
   if (p.length < kMinLength) {
@@ -254,7 +262,7 @@ void Planner::push(const MotionRecord &r) {
     p.vmax = prev ? prev->vmax : 0;
     p.accel = prev ? prev->accel : 1;
     p.jerk = prev ? prev->jerk : kInf;
-    if (prev) p.tIn = p.tOut = prev->tOut;
+    if (prev) p.tIn = p.tOut = prev->tOut, p.nIn = p.nOut = prev->nOut;
     p.vJunction = prev && !prev->stopAfter ? p.vmax : 0;
   } else {
     limits(p);
@@ -287,7 +295,7 @@ void Planner::emitFront() {
   p.seg.profile = planProfile(p.length, v0, v1, p.vmax, p.accel, p.jerk);
   entry_ = v1;
   emit(p.seg);
-  head_ = (head_ + 1) % ring_.size();
+  head_ = (head_ + 1) & mask_;
   --count_;
   if (count_ == 0) entry_ = 0;
 }

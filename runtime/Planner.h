@@ -85,7 +85,8 @@ private:
   struct Pending {
     PlannedSegment seg;
     double length = 0, vmax = 0, accel = 0, jerk = 0;
-    AxisVec tIn{}, tOut{};  // unit tangents (6 axes) at the start and the end
+    AxisVec tIn{}, tOut{};  // tangents (6 axes, per mm of length) at the start and the end
+    AxisVec nIn{}, nOut{};  // the same normalised, for corner angles
     double vJunction = 0;   // entry speed limit from the junction with the previous move
     double vBack = 0;       // backward pass: highest entry speed that can still stop in time
     bool stopAfter = false;
@@ -95,12 +96,12 @@ private:
   double junctionSpeed(const Pending &prev, const Pending &next) const;
   void emitFront();
   void emit(PlannedSegment &s);
-  Pending &at(size_t i) { return ring_[(head_ + i) % ring_.size()]; }
+  Pending &at(size_t i) { return ring_[(head_ + i) & mask_]; }
 
   const Machine &machine_;
   std::vector<PlanListener *> listeners_;
   std::vector<Pending> ring_;
-  size_t head_ = 0, count_ = 0;
+  size_t head_ = 0, count_ = 0, mask_ = 0;  // ring size is a power of two
   double entry_ = 0;          // committed entry speed of the front move
   int pathMode_ = 2;          // 0 exact path, 1 exact stop, 2 continuous
   double tolerance_;          // corner deviation budget, mm

@@ -119,6 +119,16 @@ anything = "quoted # kept"
   EXPECT_EQ(m.get("axis.X", "max_accel"), "3000");
 }
 
+TEST(Machine, ToleratesBomAndCrlf) {
+  Machine m;
+  std::string err;
+  ASSERT_TRUE(Machine::parse("\xEF\xBB\xBF[machine]\r\nname = crlf\r\n[axis.Z]\r\nmax_velocity = 1\r\nmax_accel = 2\r\n",
+                             "w.ini", m, err))
+      << err;
+  EXPECT_EQ(m.name, "crlf");
+  EXPECT_DOUBLE_EQ(m.axes[2].maxAccel, 2);
+}
+
 TEST(Machine, MissingKeysTakeDefaults) {
   Machine m;
   std::string err;

@@ -244,3 +244,30 @@ TEST(Planner, MillionMovesInConstantMemory) {
   EXPECT_GT(p.totalTime(), 0);
   std::printf("planner: %d moves in %.3f s (%.2f M moves/s)\n", n, secs, n / secs / 1e6);
 }
+
+// The S-curve evaluation is consistent: speed is the derivative of distance, and acceleration and
+// jerk stay within the limits the profile was planned with.
+TEST(Planner, ProfileRespectsAccelAndJerk) {
+  Machine m = testMachine(20000, 0.05);
+  Recorder rec;
+  std::vector<MotionRecord> recs = {line(P(0, 0), P(30, 0), 6000), line(P(30, 0), P(30, 0.7), 6000),
+                                    line(P(30, 0.7), P(0, 3), 6000), line(P(0, 3), P(0, 40), 9000, true)};
+  run(m, recs, &rec);
+  ASSERT_EQ(rec.segs.size(), recs.size());
+  for (const auto &seg : rec.segs) {
+    const VelocityProfile &p = seg.profile;
+    const double h = 1e-5;
+    double prevV = p.v0, prevA = 0;
+    for (double t = h; t < p.duration(); t += h) {
+      double s0, v0, s1, v1;
+      p.at(t - h, s0, v0);
+      p.at(t, s1, v1);
+      EXPECT_NEAR((s1 - s0) / h, 0.5 * (v0 + v1), 1e-3 * std::max(1.0, v1));
+      double acc = (v1 - prevV) / h;
+      EXPECT_LE(std::fabs(acc), p.accel * (1 + 1e-6) + 1e-6);
+      EXPECT_LE(std::fabs(acc - prevA) / h, p.jerk * 1.01 + 1e-3);
+      prevV = v1;
+      prevA = acc;
+    }
+  }
+}
