@@ -77,6 +77,10 @@ Value *Codegen::numberedPtr(const Expr &var, bool write) {
     }
     return B.CreateConstGEP1_64(dblTy, numberedBase, n);  // numbered[0] stays vacant
   }
+  if (var.args.empty()) {
+    fail(var.loc, "bad variable");
+    return scratch;
+  }
   Value *x = numOf(expr(*var.args[0]));
   Value *r = roundOf(x);
   Value *inRange = B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 0.0)),
