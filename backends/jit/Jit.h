@@ -27,6 +27,10 @@ bool runModule(const ir::Module &m, Executor &exec, Diagnostics &diags, const Ji
 // The same with any command sink (tests record the command stream).
 bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const JitOptions &opts);
 
+// Loads an object file written by emitObject into the JIT and runs it (checks AOT output
+// without a system linker).
+bool runObjectFile(const std::string &path, CmdSink &sink, Diagnostics &diags, const JitOptions &opts);
+
 // Textual LLVM IR of the program, before optimisation (`ncc compile --emit=llvm`).
 bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags);
 // Host object file (O2), written atomically (`ncc compile --emit=obj`).

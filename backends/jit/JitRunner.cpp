@@ -16,6 +16,7 @@
 #include <llvm/IR/Module.h>
 #include <llvm/MC/TargetRegistry.h>
 #include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/MemoryBuffer.h>
 #include <llvm/Support/TargetSelect.h>
 #include <llvm/Support/raw_ostream.h>
 #include <llvm/Target/TargetMachine.h>
@@ -99,6 +100,44 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   return syms;
 }
 
+// An LLJIT for the host whose main dylib resolves the runtime, the builtins and libc/libm
+// (memcpy, memset, round on CPUs without SSE4.1); null after reporting an error.
+static std::unique_ptr<orc::LLJIT> makeJit(orc::JITTargetMachineBuilder jtmb, Diagnostics &diags) {
+  auto jit = orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(jtmb)).create();
+  if (!jit) {
+    diags.error({}, "JIT: " + errorText(jit.takeError()));
+    return nullptr;
+  }
+  orc::JITDylib &jd = (*jit)->getMainJITDylib();
+  if (Error e = jd.define(orc::absoluteSymbols(runtimeSymbols(**jit)))) {
+    diags.error({}, "JIT: " + errorText(std::move(e)));
+    return nullptr;
+  }
+  auto process = orc::DynamicLibrarySearchGenerator::GetForCurrentProcess((*jit)->getDataLayout().getGlobalPrefix());
+  if (!process) {
+    diags.error({}, "JIT: " + errorText(process.takeError()));
+    return nullptr;
+  }
+  jd.addGenerator(std::move(*process));
+  return std::move(*jit);
+}
+
+// Looks up the entry and runs it against the sink.
+static bool runEntry(orc::LLJIT &jit, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits) {
+  auto sym = jit.lookup("ncc_program_main");
+  if (!sym) {
+    diags.error({}, "JIT: " + errorText(sym.takeError()));
+    return false;
+  }
+  auto *entry = sym->toPtr<int (*)(ncrt_ctx *)>();
+  ncrt_ctx rt(sink, diags, limits);
+  int status = entry(&rt);
+  // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
+  // error was reported.
+  if (status == NCRT_END) return !diags.hasErrors();
+  return status == NCRT_OK;
+}
+
 bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const JitOptions &opts) {
   initLLVM();
   auto jtmb = orc::JITTargetMachineBuilder::detectHost();
@@ -117,40 +156,34 @@ bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const Jit
   mod->setDataLayout((*tm)->createDataLayout());
   mod->setTargetTriple(jtmb->getTargetTriple().str());
   optimizeModule(*mod, tm->get(), opts.optLevel);
+  auto jit = makeJit(std::move(*jtmb), diags);
+  if (!jit) return false;
+  if (Error e = jit->addIRModule(orc::ThreadSafeModule(std::move(mod), std::move(ctx)))) {
+    diags.error({}, "JIT: " + errorText(std::move(e)));
+    return false;
+  }
+  return runEntry(*jit, sink, diags, opts.limits);
+}
 
-  auto jit = orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(*jtmb)).create();
-  if (!jit) {
-    diags.error({}, "JIT: " + errorText(jit.takeError()));
+bool runObjectFile(const std::string &path, CmdSink &sink, Diagnostics &diags, const JitOptions &opts) {
+  initLLVM();
+  auto buf = MemoryBuffer::getFile(path);
+  if (!buf) {
+    diags.error({}, "cannot read '" + path + "': " + buf.getError().message());
     return false;
   }
-  orc::JITDylib &jd = (*jit)->getMainJITDylib();
-  if (Error e = jd.define(orc::absoluteSymbols(runtimeSymbols(**jit)))) {
-    diags.error({}, "JIT: " + errorText(std::move(e)));
+  auto jtmb = orc::JITTargetMachineBuilder::detectHost();
+  if (!jtmb) {
+    diags.error({}, "JIT: " + errorText(jtmb.takeError()));
     return false;
   }
-  // libc/libm helpers LLVM may call (memcpy, memset, round on CPUs without SSE4.1).
-  auto process = orc::DynamicLibrarySearchGenerator::GetForCurrentProcess((*jit)->getDataLayout().getGlobalPrefix());
-  if (!process) {
-    diags.error({}, "JIT: " + errorText(process.takeError()));
+  auto jit = makeJit(std::move(*jtmb), diags);
+  if (!jit) return false;
+  if (Error e = jit->addObjectFile(std::move(*buf))) {
+    diags.error({}, "'" + path + "': " + errorText(std::move(e)));
     return false;
   }
-  jd.addGenerator(std::move(*process));
-  if (Error e = (*jit)->addIRModule(orc::ThreadSafeModule(std::move(mod), std::move(ctx)))) {
-    diags.error({}, "JIT: " + errorText(std::move(e)));
-    return false;
-  }
-  auto sym = (*jit)->lookup("ncc_program_main");
-  if (!sym) {
-    diags.error({}, "JIT: " + errorText(sym.takeError()));
-    return false;
-  }
-  auto *entry = sym->toPtr<int (*)(ncrt_ctx *)>();
-  ncrt_ctx rt(sink, diags, opts.limits);
-  int status = entry(&rt);
-  // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
-  // error was reported.
-  if (status == NCRT_END) return !diags.hasErrors();
-  return status == NCRT_OK;
+  return runEntry(*jit, sink, diags, opts.limits);
 }
 
 bool runModule(const ir::Module &m, Executor &exec, Diagnostics &diags, const JitOptions &opts) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <cstdio>
 #include <fstream>
@@ -413,6 +414,11 @@ TEST(Jit, EmitObjectWritesEntrySymbol) {
   EXPECT_EQ(obj.compare(0, 4, "\x7f" "ELF"), 0);
   EXPECT_NE(obj.find("ncc_program_main"), std::string::npos);
   EXPECT_NE(obj.find("ncc_builtin_sqrt"), std::string::npos);
+  // The object runs and gives the JIT's commands.
+  ::Run r;
+  ASSERT_TRUE(jit::runObjectFile(path, r.rec, r.diags, {})) << r.errors();
+  ASSERT_EQ(r.rec.cmds.size(), 1u);
+  EXPECT_EQ(r.rec.cmds[0].get(Word::X), std::sqrt(2.0));
   std::remove(path.c_str());
 }
 
@@ -447,4 +453,35 @@ TEST(Jit, MacroMotionBenchmark) {
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(counter.n, 1000002u);
   std::printf("macro_motion 1M iterations: %.3f s (compile + run)\n", secs);
+}
+
+// The packed table encoding round-trips every field the executor reads.
+TEST(Ncrt, PackedCommandsRoundTrip) {
+  std::vector<MachineCmd> in(4);
+  in[0].kind = CmdKind::Block;
+  in[0].blockNumber = -1;
+  in[0].loc = {3, 70000, 12};
+  in[1].kind = CmdKind::Mode;
+  in[1].nmodes = 2;
+  in[1].modes[0] = ModeValue::ArcCCW;
+  in[1].modes[1] = ModeValue::Inch;
+  in[2].kind = CmdKind::Move;
+  in[2].set(Word::X, -1.25);
+  in[2].set(Word::E, 1e-300);
+  in[2].set(Word::L, vacantValue());
+  in[3].kind = CmdKind::Comment;
+  in[3].text = "tool change (T1)";
+  in[3].sub = 7;
+  in[3].sub2 = 9;
+  std::string bytes;
+  for (auto &c : in) ncrt::packCmd(c, c.text, bytes);
+  ::Run r;
+  ncrt_ctx ctx(r.rec, r.diags, {});
+  ASSERT_EQ(ncrt_exec_packed(&ctx, (const uint8_t *)bytes.data(), bytes.size()), NCRT_OK);
+  ASSERT_EQ(r.rec.cmds.size(), in.size());
+  for (size_t i = 0; i < in.size(); ++i)
+    EXPECT_EQ(diffCmd(r.rec.cmds[i], r.rec.texts[i], in[i], in[i].text ? in[i].text : ""), "") << i;
+  // A truncated stream is an internal error, not a crash.
+  EXPECT_EQ(ncrt_exec_packed(&ctx, (const uint8_t *)bytes.data(), bytes.size() - 3), NCRT_ERROR);
+  EXPECT_EQ(r.errors(), "internal error: malformed packed command table\n");
 }
