@@ -149,6 +149,7 @@ bool MachineReader::next(Motion &m, std::string &err) {
       err = "line " + std::to_string(l.lineNo) + ": cannot read the arguments of " + std::string(nm);
       return false;
     };
+    bool state = true;
     if (nm == "USE_LENGTH_UNITS") {
       scale_ = l.args.find("INCH") != std::string_view::npos ? 25.4
                : l.args.find("CM") != std::string_view::npos ? 10.0 : 1.0;
@@ -166,7 +167,11 @@ bool MachineReader::next(Motion &m, std::string &err) {
       for (int i = 0; i < 6; ++i) tool_[i] = v[i];
     } else if (nm == "SELECT_PLANE") {
       plane_ = l.args.find("XZ") != std::string_view::npos ? 1 : l.args.find("YZ") != std::string_view::npos ? 2 : 0;
-    } else if (nm == "STRAIGHT_TRAVERSE" || nm == "STRAIGHT_FEED" || nm == "STRAIGHT_PROBE") {
+    } else {
+      state = false;
+    }
+    if (state) continue;
+    if (nm == "STRAIGHT_TRAVERSE" || nm == "STRAIGHT_FEED" || nm == "STRAIGHT_PROBE") {
       if (numbers(l.args, v, ok) < 6 || !ok) return bad();
       m = Motion();
       m.kind = nm == "STRAIGHT_TRAVERSE" ? MotionKind::Traverse

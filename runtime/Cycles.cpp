@@ -174,7 +174,7 @@ bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string 
     pos[ax.d] = r;
   }
   const double clear = in.retractToR ? r : std::max(il, r);
-  double level = std::max(pos[ax.d], clear);  // height of the move to the hole
+  double level = std::max(pos[ax.d], in.sameCycle ? clear : r);  // height of the move to the hole
   double a1 = in.incremental ? in.current[ax.a1] : in.target[ax.a1];
   double a2 = in.incremental ? in.current[ax.a2] : in.target[ax.a2];
   for (int k = 0; k < in.repeats; ++k) {

@@ -32,6 +32,9 @@ struct CycleInput {
   // Hole position: absolute X Y Z (G90) or the increments (G91); only the two plane axes are used.
   std::array<double, 3> target{};
   double initialLevel = 0;  // drilling-axis position when the cycle mode was entered
+  // The previous block ran the same cycle: rs274 then moves to the hole at the clear level (at
+  // least), after a change of cycle at the R level (at least).
+  bool sameCycle = false;
   double r = 0;             // R word (absolute level, or increment in G91)
   double z = 0;             // bottom (absolute, or increment from R in G91)
   double q = 0;             // peck depth (G73/G83), > 0

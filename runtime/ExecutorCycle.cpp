@@ -61,6 +61,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   in.incremental = inc;
   in.current = {st.position[0], st.position[1], st.position[2]};
   in.initialLevel = initialLevel;
+  in.sameCycle = !first;
   in.r = inc ? cycleR : cycleR + offset(d);
   in.z = inc ? cycleZ : cycleZ + offset(d);
   in.q = cycleQ;
