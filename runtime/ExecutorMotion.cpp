@@ -125,7 +125,7 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
       char buf[512];
       std::snprintf(buf, sizeof buf,
                     "Radius to end of arc differs from radius to start: start=(%c%.4f,%c%.4f) "
-                    "center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f abs_err=%g "
+                    "center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f abs_err=%.3g "
                     "rel_err=%.4f%%",
                     ax.l1, (s1 - p1) * k, ax.l2, (s2 - p2) * k, ax.l1, (c1 - p1) * k, ax.l2,
                     (c2 - p2) * k, ax.l1, (e1 - p1) * k, ax.l2, (e2 - p2) * k, r1 * k, r2 * k,
