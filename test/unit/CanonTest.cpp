@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <deque>
@@ -242,5 +243,229 @@ INSTANTIATE_TEST_SUITE_P(Oracle, OracleTest,
                                            "tool_length", "cycles_drill", "cycles_peck", "cycles_bore",
                                            "machine_misc", "cycles_levels", "cycles_inch", "cycles_g99",
                                            "home_offsets"));
+
+}  // namespace
+
+// --- trace writer ---------------------------------------------------------------------------
+
+namespace {
+
+std::string writeTrace(const std::vector<MotionRecord> &recs) {
+  std::FILE *f = std::tmpfile();
+  {
+    CanonTraceWriter w(f);
+    for (auto &r : recs) w.record(r);
+    SourceManager sm;
+    Diagnostics d(sm);
+    w.finish(d);
+  }
+  std::rewind(f);
+  std::string text;
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  std::fclose(f);
+  return text;
+}
+
+MotionRecord rec(RecordKind k, int64_t n = -1) {
+  MotionRecord r;
+  r.kind = k;
+  r.blockNumber = n;
+  return r;
+}
+
+TEST(CanonTrace, PreambleNColumnAndNumbers) {
+  MotionRecord a = rec(RecordKind::Rapid, 10);
+  a.end = {1, -0.00001, 2.5, 0, 0, 0};
+  MotionRecord b = rec(RecordKind::Linear, 123456);
+  b.end = {1.23456, 0, 0, 0, 0, 0};
+  MotionRecord c = rec(RecordKind::FeedRate);
+  c.value = 250;
+  std::string t = writeTrace({a, c, b});
+  EXPECT_EQ(t,
+            "    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+            "    2 N..... SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+            "    3 N..... SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+            "    4 N..... SET_XY_ROTATION(0.0000)\n"
+            "    5 N..... SET_FEED_REFERENCE(CANON_XYZ)\n"
+            "    6 N..... ON_RESET()\n"
+            "    7 N10    STRAIGHT_TRAVERSE(1.0000, -0.0000, 2.5000, 0.0000, 0.0000, 0.0000)\n"
+            "    8 N..... SET_FEED_RATE(250.0000)\n"
+            "    9 N123456STRAIGHT_FEED(1.2346, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+            "   10 N..... ON_RESET()\n"
+            "   11 N..... ON_RESET()\n");
+}
+
+TEST(CanonTrace, ArcArgumentOrderPerPlane) {
+  MotionRecord a = rec(RecordKind::Arc);
+  a.plane = Plane::ZX;
+  a.end = {10, 5, 20, 0, 0, 0};
+  a.center = {1, 2, 3};
+  a.turns = -1;
+  MotionRecord b = a;
+  b.plane = Plane::YZ;
+  b.turns = 2;
+  std::string t = writeTrace({a, b});
+  EXPECT_NE(t.find("ARC_FEED(20.0000, 10.0000, 3.0000, 1.0000, -1, 5.0000, 0.0000, 0.0000, 0.0000)"), std::string::npos) << t;
+  EXPECT_NE(t.find("ARC_FEED(5.0000, 20.0000, 2.0000, 3.0000, 2, 10.0000, 0.0000, 0.0000, 0.0000)"), std::string::npos) << t;
+}
+
+TEST(CanonTrace, MachineCommandsAndEpilogue) {
+  MotionRecord s = rec(RecordKind::SpindleSpeed);
+  s.value = 1200;
+  MotionRecord fl = rec(RecordKind::CoolantFlood);
+  fl.ivalue = 1;
+  MotionRecord d = rec(RecordKind::Dwell);
+  d.value = 1.5;
+  MotionRecord cm = rec(RecordKind::Comment);
+  cm.text = "hello";
+  MotionRecord pl = rec(RecordKind::Plane);
+  pl.ivalue = (int)Plane::ZX;
+  MotionRecord end = rec(RecordKind::ProgramEnd, 50);
+  end.ivalue = 30;
+  std::string t = writeTrace({cm, s, rec(RecordKind::SpindleCW), fl, d, pl, end});
+  const char *want =
+      "    7 N..... COMMENT(\"hello\")\n"
+      "    8 N..... SET_SPINDLE_SPEED(0, 1200.0000)\n"
+      "    9 N..... START_SPINDLE_CLOCKWISE(0)\n"
+      "   10 N..... FLOOD_ON()\n"
+      "   11 N..... DWELL(1.5000)\n"
+      "   12 N..... SELECT_PLANE(CANON_PLANE_XZ)\n"
+      "   13 N50    SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "   14 N50    SET_XY_ROTATION(0.0000)\n"
+      "   15 N50    SELECT_PLANE(CANON_PLANE_XY)\n"
+      "   16 N50    SET_FEED_MODE(0, 0)\n"
+      "   17 N50    SET_FEED_RATE(0.0000)\n"
+      "   18 N50    STOP_SPINDLE_TURNING(0)\n"
+      "   19 N50    SET_SPINDLE_MODE(0 0.0000)\n"
+      "   20 N50    FLOOD_OFF()\n"
+      "   21 N50    PALLET_SHUTTLE()\n"
+      "   22 N50    PROGRAM_END()\n";
+  EXPECT_NE(t.find(want), std::string::npos) << t;
+}
+
+TEST(CanonTrace, MillionLinesQuickly) {
+  std::FILE *f = std::fopen("/dev/null", "w");
+  ASSERT_NE(f, nullptr);
+  auto t0 = std::chrono::steady_clock::now();
+  {
+    CanonTraceWriter w(f);
+    MotionRecord r = rec(RecordKind::Linear, 100);
+    for (int i = 0; i < 1000000; ++i) {
+      r.end = {i * 0.001, -i * 0.002, 1.5, 0, 0, 0};
+      w.record(r);
+    }
+    SourceManager sm;
+    Diagnostics d(sm);
+    EXPECT_TRUE(w.finish(d));
+  }
+  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::fclose(f);
+  RecordProperty("seconds", std::to_string(s));
+  EXPECT_LT(s, 2.0);  // ~0.3 s on the 2-core build machine; generous for shared load
+}
+
+// --- canon-diff -----------------------------------------------------------------------------
+
+const char *kG54 =
+    "    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+    "    2 N..... SET_G5X_OFFSET(1, 25.4000, 50.8000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    3 N..... SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    4 N10    COMMENT(\"interpreter: distance mode changed to absolute\")\n"
+    "    5 N10    STRAIGHT_TRAVERSE(0.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    6 N20    STRAIGHT_FEED(1.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    7 N30    ARC_FEED(2.0000, 1.0000, 1.0000, 1.0000, 1, 5.0000, 0.0000, 0.0000, 0.0000)\n";
+const char *kMachine =  // the same path printed in machine coordinates, inch for the arc
+    "STRAIGHT_TRAVERSE(25.4000, 50.8000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "STRAIGHT_FEED(26.4000, 50.8000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "USE_LENGTH_UNITS(CANON_UNITS_INCHES)\n"
+    "ARC_FEED(1.0787, 2.0394, 1.0394, 2.0394, 1, 0.1969, 0.0000, 0.0000, 0.0000)\n";
+
+TEST(CanonDiff, MachineLevelReplaysOffsetsAndUnits) {
+  std::string report;
+  EXPECT_TRUE(canonDiff(kG54, kMachine, CanonDiffOptions(), report)) << report;
+  EXPECT_EQ(report, "machine level: traces match (3 motion commands)\n");
+}
+
+TEST(CanonDiff, ReportsFirstMismatchWithLines) {
+  std::string b = kG54;
+  b.replace(b.find("FEED(1.0000"), 11, "FEED(1.0100");
+  std::string report;
+  EXPECT_FALSE(canonDiff(kG54, b, CanonDiffOptions(), report));
+  EXPECT_EQ(report,
+            "machine level: motion #2 differs: X differs: 26.400000 vs 26.410000 mm\n"
+            "  A:6:     6 N20    STRAIGHT_FEED(1.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+            "  B:6:     6 N20    STRAIGHT_FEED(1.0100, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n");
+  // One trace shorter.
+  std::string shorter(kG54, std::string(kG54).find("    7 N30"));
+  EXPECT_FALSE(canonDiff(kG54, shorter, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("B ends after 2 motion commands"), std::string::npos) << report;
+  EXPECT_NE(report.find("A:7:"), std::string::npos) << report;
+  // Arc direction.
+  std::string cw = kG54;
+  cw.replace(cw.find(", 1, 5.0000"), 4, ", -1");
+  EXPECT_FALSE(canonDiff(kG54, cw, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("arc turns differ: 1 vs -1"), std::string::npos) << report;
+}
+
+TEST(CanonDiff, RotationAndToolOffset) {
+  const char *rotated =
+      "SET_XY_ROTATION(90.0000)\n"
+      "SET_G5X_OFFSET(1, 10.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 25.4000, 0.0000 0.0000 0.0000, 0.0000 0.0000 0.0000)\n"
+      "STRAIGHT_FEED(1.0000, 0.0000, 1.0000, 0.0000, 0.0000, 0.0000)\n";
+  const char *plain = "STRAIGHT_FEED(10.0000, 1.0000, 26.4000, 0.0000, 0.0000, 0.0000)\n";
+  std::string report;
+  EXPECT_TRUE(canonDiff(rotated, plain, CanonDiffOptions(), report)) << report;
+}
+
+TEST(CanonDiff, ProgramLevelIgnoresColumnsAndInterpreterComments) {
+  std::string a = kG54;
+  std::string b =
+      "USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+      "SET_G5X_OFFSET(1, 25.4000, 50.8000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "    9 N10    STRAIGHT_TRAVERSE(0.00004, -0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+      "STRAIGHT_FEED(1.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+      "ARC_FEED(2.0000, 1.0000, 1.0000, 1.0000, 1, 5.0000, 0.0000, 0.0000, 0.0000)\n";
+  CanonDiffOptions o;
+  o.level = CanonDiffOptions::Level::Program;
+  std::string report;
+  EXPECT_TRUE(canonDiff(a, b, o, report)) << report;
+  // The machine path of kMachine is the same, but not its program text.
+  EXPECT_FALSE(canonDiff(kG54, kMachine, o, report));
+  EXPECT_NE(report.find("line #1 differs"), std::string::npos) << report;
+}
+
+TEST(CanonDiff, RealRs274TraceAgainstItselfAndPerturbed) {
+  std::string t = readFile(oracleDir() + "/Inputs/cycles_peck.rs274");
+  ASSERT_FALSE(t.empty());
+  std::string report;
+  EXPECT_TRUE(canonDiff(t, t, CanonDiffOptions(), report)) << report;
+  std::string p = t;
+  size_t at = p.find("-1.7460");
+  ASSERT_NE(at, std::string::npos);
+  p.replace(at, 7, "-1.7462");
+  EXPECT_FALSE(canonDiff(t, p, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("Z differs: -1.746000 vs -1.746200 mm"), std::string::npos) << report;
+}
+
+TEST(CanonDiff, MillionLinesQuickly) {
+  std::string big;
+  big.reserve(70u << 20);
+  char line[160];
+  for (int i = 0; i < 1000000; ++i) {
+    int n = std::snprintf(line, sizeof line, "%5d N..... STRAIGHT_FEED(%.4f, %.4f, 1.0000, 0.0000, 0.0000, 0.0000)\n",
+                          i + 1, i * 0.001, i * -0.002);
+    big.append(line, (size_t)n);
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  std::string report;
+  EXPECT_TRUE(canonDiff(big, big, CanonDiffOptions(), report));
+  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  RecordProperty("seconds", std::to_string(s));
+  EXPECT_LT(s, 3.0);  // both sides parsed: ~0.6 s here
+}
 
 }  // namespace
