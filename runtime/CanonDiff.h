@@ -13,8 +13,10 @@
 
 namespace ncc {
 
+enum class CanonDiffLevel : unsigned char { Machine, Program };
+
 struct CanonDiffOptions {
-  enum class Level : unsigned char { Machine, Program };
+  using Level = CanonDiffLevel;
   Level level = Level::Machine;
   double tolerance = 1e-4;       // program units (machine level: x25.4 while in inch units)
   bool ignoreComments = false;   // program level: also drop every COMMENT and MESSAGE line
