@@ -91,8 +91,7 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   } else {
     auto it = machine.tools.find(h);
     if (it == machine.tools.end())
-      return error("Tool length offset H" + std::to_string(h) + " not found in the tool table",
-                   "unknown-tool");
+      return error("Requested tool " + std::to_string(h) + " not found in the tool table", "unknown-tool");
     toolLength = it->second.length;
   }
   st.toolLengthH = h;
@@ -184,6 +183,7 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::Block:
     x.blockNumber = c.blockNumber;
     x.blockLoc = c.loc;
+    x.feedInBlock = false;
     return true;
   case CmdKind::Comment:
   case CmdKind::Message: {
@@ -197,6 +197,7 @@ bool Executor::exec(const MachineCmd &c) {
     double f = c.get(Word::F);
     if (f < 0) return x.error("Negative feed rate", "bad-feed");
     x.st.feed = f;
+    x.feedInBlock = true;
     x.feedMM = x.st.feedMode == ModeValue::InverseTime ? f : f * x.scale();
     MotionRecord r = x.record(RecordKind::FeedRate);
     r.value = x.feedMM;

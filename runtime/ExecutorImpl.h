@@ -21,7 +21,8 @@ struct Executor::Impl {
   std::array<AxisVec, 9> g5x{};
   AxisVec g92{};
   double toolLength = 0;
-  double feedMM = 0;  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)
+  double feedMM = 0;
+  bool feedInBlock = false;  // an F word in the current block (inverse time needs one per move)  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)
 
   int64_t blockNumber = -1;
   SourceLoc loc;       // of the command being executed

@@ -45,6 +45,11 @@ double Executor::Impl::moveFeed(double lengthMM) const {
 }
 
 bool Executor::Impl::checkFeed(const char *code) {
+  if (st.feedMode == ModeValue::InverseTime) {
+    // Inverse time: every feed move carries its own F.
+    if (feedInBlock && feedMM > 0) return true;
+    return error(std::string("F word missing with inverse time ") + code + " move", "motion-without-feed");
+  }
   if (feedMM > 0) return true;
   return error(std::string("Cannot do ") + code + " with zero feed rate", "motion-without-feed");
 }
@@ -76,7 +81,7 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::ArcCCW: return arc(c, st.motion == ModeValue::ArcCW);
   case ModeValue::CycleOff:
     if (!(c.mask & kAxisMask)) return true;
-    return error("Cannot use axis values without a g code that uses them", "motion-mode-none");
+    return error("Cannot use axis values with G80", "motion-mode-none");
   default: return cycle(c);
   }
 }
@@ -90,6 +95,16 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   const bool inch = st.units == ModeValue::Inch;
   const double s1 = start[ax.a1], s2 = start[ax.a2], e1 = end[ax.a1], e2 = end[ax.a2];
   double c1, c2;
+  // The offset word of the axis normal to the plane (K in G17, J in G18, I in G19).
+  static const Word kNormalWord[] = {Word::K, Word::J, Word::I};
+  static const char *kPlaneNames[] = {"xy", "xz", "yz"};
+  Word normal = kNormalWord[(int)plane()];
+  if (c.has(normal))
+    return error(std::string(1, kWordLetters[(int)normal]) + " word given for arc in " + kPlaneNames[(int)plane()] +
+                     " plane",
+                 "arc-invalid");
+  if (!c.has(Word::R) && !c.has(ax.o1) && !c.has(ax.o2))
+    return error("R i j k words all missing for arc", "arc-invalid");
   if (c.has(Word::R)) {
     double rr = c.get(Word::R) * scale();
     double dx = e1 - s1, dy = e2 - s2, chord = std::hypot(dx, dy);
@@ -136,8 +151,9 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   int turns = 1;
   if (c.has(Word::P)) {
     double p = c.get(Word::P);
-    if (p != std::floor(p) || p < 1 || p > 1e6)
-      return error(std::string("P value must be a positive integer with ") + code, "arc-invalid");
+    if (p != std::floor(p)) return error("P value not an integer with G2 or G3", "arc-invalid");
+    if (p < 1) return error("P value should be 1 or greater with G2 or G3", "arc-invalid");
+    if (p > 1e6) return error("P value too large with G2 or G3", "arc-invalid");
     turns = (int)p;
   }
   MotionRecord r = record(RecordKind::Arc);

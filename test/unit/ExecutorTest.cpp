@@ -428,3 +428,36 @@ TEST(Cycles, ExecutorBracketsHolesAndKeepsModalData) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Executor, Rs274ArcAndFeedMessages) {
+  struct Case {
+    std::initializer_list<MachineCmd> cmds;
+    const char *message;
+  };
+  auto first = [](std::initializer_list<MachineCmd> cmds) {
+    ExecRun run;
+    EXPECT_FALSE(run(cmds));
+    return run.diags.collected().empty() ? std::string() : run.diags.collected()[0].message;
+  };
+  EXPECT_EQ(first({feed(100), mode({ModeValue::ArcCW}), move({{Word::X, 10}})}), "R i j k words all missing for arc");
+  EXPECT_EQ(first({feed(100), mode({ModeValue::ZX, ModeValue::ArcCW}), move({{Word::X, 10}, {Word::J, 5}})}),
+            "J word given for arc in xz plane");
+  EXPECT_EQ(first({feed(100), mode({ModeValue::ArcCW}), move({{Word::X, 10}, {Word::I, 5}, {Word::P, 1.5}})}),
+            "P value not an integer with G2 or G3");
+  EXPECT_EQ(first({feed(100), mode({ModeValue::ArcCW}), move({{Word::X, 10}, {Word::I, 5}, {Word::P, 0}})}),
+            "P value should be 1 or greater with G2 or G3");
+  EXPECT_EQ(first({feed(100), mode({ModeValue::CycleOff}), move({{Word::X, 5}})}), "Cannot use axis values with G80");
+  EXPECT_EQ(first({words(CmdKind::ToolLength, {{Word::H, 9}})}), "Requested tool 9 not found in the tool table");
+  // Inverse time: F in the block of each feed move.
+  EXPECT_EQ(first({feed(100), mode({ModeValue::InverseTime, ModeValue::Linear}), words(CmdKind::Block, {}),
+                   move({{Word::X, 10}})}),
+            "F word missing with inverse time G1 move");
+  ExecRun ok;
+  ASSERT_TRUE(ok({mode({ModeValue::InverseTime, ModeValue::Linear}), words(CmdKind::Block, {}), feed(2),
+                  move({{Word::X, 10}})}));
+  EXPECT_DOUBLE_EQ(ok.moves()[0].feed, 20);  // 10 mm in 1/2 min (rs274 prints 20.0000)
+}
+
+}  // namespace
