@@ -469,3 +469,44 @@ TEST(CanonDiff, MillionLinesQuickly) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CanonTrace, ExecutorToTraceMillionMovesQuickly) {
+  std::FILE *f = std::fopen("/dev/null", "w");
+  ASSERT_NE(f, nullptr);
+  Machine m;
+  SourceManager sm;
+  Diagnostics diags(sm);
+  auto t0 = std::chrono::steady_clock::now();
+  {
+    CanonTraceWriter w(f);
+    Executor ex(m, w, diags);
+    MachineCmd mc;
+    mc.kind = CmdKind::Mode;
+    mc.nmodes = 1;
+    mc.modes[0] = ModeValue::Linear;
+    ex.exec(mc);
+    MachineCmd fc;
+    fc.kind = CmdKind::Feed;
+    fc.set(Word::F, 1000);
+    ex.exec(fc);
+    MachineCmd blk, mv;
+    blk.kind = CmdKind::Block;
+    mv.kind = CmdKind::Move;
+    for (int i = 0; i < 1000000; ++i) {
+      blk.blockNumber = i;
+      mv.set(Word::X, (i % 1000) * 0.01);
+      mv.set(Word::Y, (i % 777) * 0.02);
+      ASSERT_TRUE(ex.exec(blk));
+      ASSERT_TRUE(ex.exec(mv));
+    }
+    EXPECT_TRUE(w.finish(diags));
+  }
+  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::fclose(f);
+  RecordProperty("seconds", std::to_string(s));
+  EXPECT_LT(s, 3.0);
+}
+
+}  // namespace
