@@ -2,6 +2,7 @@
 // resolves the words into the machine frame and turns the steps of expandCycle into records.
 #include "runtime/ExecutorImpl.h"
 
+#include <cctype>
 #include <cmath>
 
 namespace ncc {
@@ -11,6 +12,12 @@ namespace {
 constexpr Word kDrillWord[] = {Word::Z, Word::Y, Word::X};
 constexpr int kDrillAxis[] = {2, 1, 0};
 constexpr const char *kPlaneName[] = {"xy", "xz", "yz"};
+// rs274 spells the codes in lower case in its messages ("Q word missing with g83").
+std::string lower(const char *code) {
+  std::string s = code;
+  for (char &ch : s) ch = (char)std::tolower((unsigned char)ch);
+  return s;
+}
 }  // namespace
 
 bool Executor::Impl::cycle(const MachineCmd &c) {
@@ -27,6 +34,9 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
                      " plane canned cycle",
                  "cycle-missing-word");
   if (first && !c.has(Word::R)) return error("R clearance plane unspecified in cycle", "cycle-missing-word");
+  bool dwells = cyc == ModeValue::DrillDwell || cyc == ModeValue::BoreStop || cyc == ModeValue::BoreDwell;
+  if (first && dwells && !c.has(Word::P))
+    return error(std::string("Dwell time p word missing with ") + lower(code), "cycle-missing-word");
   if (c.has(zWord)) cycleZ = c.get(zWord) * scale();
   if (c.has(Word::R)) cycleR = c.get(Word::R) * scale();
   if (c.has(Word::Q)) {
@@ -35,7 +45,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   }
   if (c.has(Word::P)) cycleP = c.get(Word::P);
   bool peck = cyc == ModeValue::Peck || cyc == ModeValue::PeckChipBreak;
-  if (peck && !haveQ) return error(std::string("Q word missing with ") + code, "cycle-missing-word");
+  if (peck && !haveQ) return error(std::string("Q word missing with ") + lower(code), "cycle-missing-word");
   int repeats = 1;
   if (c.has(Word::L)) {
     double l = c.get(Word::L);

@@ -242,7 +242,7 @@ INSTANTIATE_TEST_SUITE_P(Oracle, OracleTest,
                          ::testing::Values("motion_basic", "arcs_planes", "incremental", "units", "offsets",
                                            "tool_length", "cycles_drill", "cycles_peck", "cycles_bore",
                                            "machine_misc", "cycles_levels", "cycles_inch", "cycles_g99",
-                                           "home_offsets"));
+                                           "home_offsets", "cycles_mixed"));
 
 }  // namespace
 

@@ -7,7 +7,7 @@
 # converted to inches, because the standalone rs274 reads tool tables in inches.
 set -eu
 prog=$1
-out=$2
+case $2 in /*) out=$2 ;; *) out=$(pwd)/$2 ;; esac
 here=$(cd "$(dirname "$0")" && pwd)
 tools=${3:-$here/../../test/lit/oracle/Inputs/tools.txt}
 tmp=$(mktemp -d)
