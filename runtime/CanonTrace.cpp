@@ -187,7 +187,8 @@ void CanonTraceWriter::record(const MotionRecord &r) {
       char tmp[96];
       std::snprintf(tmp, sizeof tmp, "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)", r.value);
       line(n, tmp);
-      line(n, "SET_NAIVECAM_TOLERANCE(0.0000)");
+      std::snprintf(tmp, sizeof tmp, "SET_NAIVECAM_TOLERANCE(%.4f)", r.value);
+      line(n, tmp);
     }
     break;
   case RecordKind::Plane:

@@ -83,9 +83,9 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
 }
 
 bool Executor::Impl::execToolLength(const MachineCmd &c) {
-  int h = c.has(Word::H) ? (int)std::lround(c.get(Word::H)) : st.toolInSpindle;
-  if (c.has(Word::H) && (c.get(Word::H) < 0 || c.get(Word::H) != h))
-    return error("H word must be a non-negative integer", "unknown-tool");
+  double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
+  if (hv < 0 || hv > 1e9 || hv != std::floor(hv)) return error("H word must be a non-negative integer", "unknown-tool");
+  int h = (int)hv;
   if (h == 0) {
     toolLength = 0;
   } else {
@@ -117,8 +117,8 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     return true;
   }
   double p = c.get(Word::P);
-  int n = (int)std::lround(p);
-  if (!c.has(Word::P) || p != n || n < 0 || n > 9)
+  int n = p >= 0 && p <= 9 ? (int)p : -1;
+  if (!c.has(Word::P) || p != n)
     return error("G10 needs a coordinate system number P0 to P9", "bad-offset-index");
   if (n == 0) n = st.workOffset;
   AxisVec &sys = g5x[n - 1];
@@ -174,6 +174,10 @@ const ModalState &Executor::state() const { return impl_->st; }
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
+  // Never let NaN or infinity reach positions: a diagnostic instead.
+  for (int i = 0; i < kWords; ++i)
+    if (c.has((Word)i) && !std::isfinite(c.w[i]))
+      return x.error(std::string("invalid number in ") + kWordLetters[i] + " word", "bad-number");
   bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
   if (motion && x.st.ended && !x.warnedAfterEnd) {
     x.warnedAfterEnd = true;
@@ -199,6 +203,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.st.feed = f;
     x.feedInBlock = true;
     x.feedMM = x.st.feedMode == ModeValue::InverseTime ? f : f * x.scale();
+    if (x.st.feedMode == ModeValue::InverseTime) return true;  // a rate record per move instead
     MotionRecord r = x.record(RecordKind::FeedRate);
     r.value = x.feedMM;
     x.emit(r);
@@ -215,7 +220,8 @@ bool Executor::exec(const MachineCmd &c) {
   }
   case CmdKind::ToolSelect: {
     double t = c.get(Word::T);
-    if (t < 0 || t != std::floor(t)) return x.error("T word must be a non-negative integer", "unknown-tool");
+    if (t < 0 || t != std::floor(t) || t > 1e9)
+      return x.error("T word must be a non-negative integer", "unknown-tool");
     x.st.toolSelected = (int)t;
     MotionRecord r = x.record(RecordKind::ToolSelect);
     r.ivalue = (int64_t)t;
@@ -269,7 +275,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.st.cutterComp = c.sub;
     if (c.sub != 0) {
       if (c.has(Word::D))
-        x.cutterD = (int)c.get(Word::D);
+        x.cutterD = std::fabs(c.get(Word::D)) < 1e9 ? (int)c.get(Word::D) : -1;
       else if (x.cutterD == 0)
         x.warning("cutter compensation without a D word: radius 0", "cutcomp-without-d");
       if (!x.warnedCutterComp) {
@@ -287,7 +293,9 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::Stop: return x.execStop(c);
   case CmdKind::Aux: {
     MotionRecord r = x.record(RecordKind::Aux);
-    r.ivalue = (int64_t)c.get(Word::P);
+    double p = c.get(Word::P);
+    if (std::fabs(p) > 1e15) return x.error("aux code out of range", "bad-number");
+    r.ivalue = (int64_t)p;
     r.text = std::string(1, c.sub ? (char)c.sub : 'M');
     x.emit(r);
     return true;

@@ -70,6 +70,8 @@ struct Executor::Impl {
   bool moveTo(RecordKind k, const AxisVec &to, bool exactStop = false);
   bool checkFeed(const char *code);
   double moveFeed(double lengthMM) const;
+  // In inverse time each feed move gets its own rate record (mm/min), as rs274 prints it.
+  void inverseTimeRate(double mmPerMin);
   bool arc(const MachineCmd &c, bool cw);
   bool cycle(const MachineCmd &c);
 };

@@ -44,6 +44,13 @@ double Executor::Impl::moveFeed(double lengthMM) const {
   }
 }
 
+void Executor::Impl::inverseTimeRate(double mmPerMin) {
+  if (st.feedMode != ModeValue::InverseTime) return;
+  MotionRecord f = record(RecordKind::FeedRate);
+  f.value = mmPerMin;
+  emit(f);
+}
+
 bool Executor::Impl::checkFeed(const char *code) {
   if (st.feedMode == ModeValue::InverseTime) {
     // Inverse time: every feed move carries its own F.
@@ -62,6 +69,7 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop) {
     double d2 = 0;
     for (int i = 0; i < 3; ++i) d2 += (to[i] - r.start[i]) * (to[i] - r.start[i]);
     r.feed = moveFeed(std::sqrt(d2));
+    inverseTimeRate(r.feed);
   }
   st.position = to;
   emit(r);
@@ -170,6 +178,7 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   sweep += 2 * M_PI * (turns - 1);
   double radius = std::hypot(s1 - c1, s2 - c2);
   r.feed = moveFeed(std::hypot(sweep * radius, end[ax.d] - start[ax.d]));
+  inverseTimeRate(r.feed);
   st.position = end;
   emit(r);
   return true;

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -129,8 +130,9 @@ std::vector<MachineCmd> blockCmds(const Block &b, std::deque<std::string> &pool)
   };
   cmd(CmdKind::Block).blockNumber = b.n;
   for (auto &t : b.comments) {
-    pool.push_back(t);
-    cmd(CmdKind::Comment).text = pool.back().c_str();
+    bool msg = t.compare(0, 4, "MSG,") == 0;
+    pool.push_back(msg ? t.substr(4) : t);
+    cmd(msg ? CmdKind::Message : CmdKind::Comment).text = pool.back().c_str();
   }
   if (b.has('F')) cmd(CmdKind::Feed).set(Word::F, b.get('F'));
   if (b.has('S')) cmd(CmdKind::Speed).set(Word::S, b.get('S'));
@@ -150,6 +152,7 @@ std::vector<MachineCmd> blockCmds(const Block &b, std::deque<std::string> &pool)
       modes.modes[modes.nmodes++] = mc.v;
       if (modeValueInfo(mc.v).group == ModeGroup::Motion) motionCode = true;
     }
+  if (b.hasG(64) && b.has('P')) modes.set(Word::P, b.get('P'));
   if (modes.nmodes) out.push_back(modes);
   if (b.hasG(40)) cmd(CmdKind::CutterComp).sub = 0;
   if (b.hasG(41) || b.hasG(42)) {
@@ -232,6 +235,8 @@ TEST_P(OracleTest, MatchesRs274AtMachineLevel) {
   Diagnostics diags(sm);
   diags.setCollect(true);
   std::string ours = runToCanon(src, oracleMachine(), diags);
+  if (const char *dump = std::getenv("NCC_ORACLE_DUMP"))  // debugging: keep ncc's traces
+    std::ofstream(std::string(dump) + "/" + name + ".ncc") << ours;
   EXPECT_EQ(diags.errorCount(), 0u);
   std::string report;
   bool same = canonDiff(expected, ours, CanonDiffOptions(), report);
@@ -242,7 +247,7 @@ INSTANTIATE_TEST_SUITE_P(Oracle, OracleTest,
                          ::testing::Values("motion_basic", "arcs_planes", "incremental", "units", "offsets",
                                            "tool_length", "cycles_drill", "cycles_peck", "cycles_bore",
                                            "machine_misc", "cycles_levels", "cycles_inch", "cycles_g99",
-                                           "home_offsets", "cycles_mixed"));
+                                           "home_offsets", "cycles_mixed", "modes_misc"));
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <initializer_list>
 #include <utility>
 
@@ -458,6 +459,22 @@ TEST(Executor, Rs274ArcAndFeedMessages) {
   ASSERT_TRUE(ok({mode({ModeValue::InverseTime, ModeValue::Linear}), words(CmdKind::Block, {}), feed(2),
                   move({{Word::X, 10}})}));
   EXPECT_DOUBLE_EQ(ok.moves()[0].feed, 20);  // 10 mm in 1/2 min (rs274 prints 20.0000)
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Executor, BadNumbersAreDiagnosed) {
+  ExecRun run;
+  EXPECT_FALSE(run({move({{Word::X, std::nan("")}})}));
+  EXPECT_TRUE(run.hasRule("bad-number"));
+  ExecRun big;
+  EXPECT_FALSE(big({words(CmdKind::ToolLength, {{Word::H, 1e300}})}));
+  EXPECT_FALSE(big({words(CmdKind::SetOffset, {{Word::P, 1e300}, {Word::X, 1}}, (uint8_t)SetOffsetKind::G10L2)}));
+  EXPECT_FALSE(big({words(CmdKind::Aux, {{Word::P, 1e300}}, 'M')}));
+  EXPECT_FALSE(big({feed(100), mode({ModeValue::Drill}), move({{Word::Z, -1}, {Word::R, 1}, {Word::L, 1e300}})}));
+  expectPos(big.ex.state().position, 0, 0, 0);
 }
 
 }  // namespace
