@@ -121,6 +121,8 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   if (!c.has(Word::P) || p != n)
     return error("G10 needs a coordinate system number P0 to P9", "bad-offset-index");
   if (n == 0) n = st.workOffset;
+  if (c.has(Word::R) && c.get(Word::R) != 0)
+    warning("coordinate system rotation (G10 R) is not supported: ignored", "unsupported-rotation");
   AxisVec &sys = g5x[n - 1];
   for (int i = 0; i < kAxes; ++i) {
     if (!c.has((Word)i)) continue;
