@@ -115,18 +115,20 @@ public:
   size_t lastLine() const { return last_; }
 
 private:
+  // Offsets are kept in mm as of the units in force when they were set: rs274 does not reprint
+  // them after USE_LENGTH_UNITS.
+  void setOffset(std::array<double, 6> &dst, const double *v) {
+    for (int i = 0; i < 6; ++i) dst[i] = i < 3 ? v[i] * scale_ : v[i];
+  }
   void toMachine(const std::array<double, 6> &p, std::array<double, 6> &out) const {
     std::array<double, 6> q;
-    for (int i = 0; i < 6; ++i) q[i] = p[i] + g92_[i];
+    for (int i = 0; i < 6; ++i) q[i] = (i < 3 ? p[i] * scale_ : p[i]) + g92_[i];
     if (rot_ != 0) {
       double r = rot_ * M_PI / 180, c = std::cos(r), s = std::sin(r);
       double x = q[0] * c - q[1] * s, y = q[0] * s + q[1] * c;
       q[0] = x, q[1] = y;
     }
-    for (int i = 0; i < 6; ++i) {
-      q[i] += g5x_[i] + tool_[i];
-      out[i] = i < 3 ? q[i] * scale_ : q[i];
-    }
+    for (int i = 0; i < 6; ++i) out[i] = q[i] + g5x_[i] + tool_[i];
   }
   LineReader lines_;
   size_t last_ = 0;
@@ -155,16 +157,16 @@ bool MachineReader::next(Motion &m, std::string &err) {
                : l.args.find("CM") != std::string_view::npos ? 10.0 : 1.0;
     } else if (nm == "SET_G5X_OFFSET") {
       if (numbers(l.args, v, ok) < 7 || !ok) return bad();
-      for (int i = 0; i < 6; ++i) g5x_[i] = v[i + 1];
+      setOffset(g5x_, &v[1]);
     } else if (nm == "SET_G92_OFFSET") {
       if (numbers(l.args, v, ok) < 6 || !ok) return bad();
-      for (int i = 0; i < 6; ++i) g92_[i] = v[i];
+      setOffset(g92_, &v[0]);
     } else if (nm == "SET_XY_ROTATION") {
       if (numbers(l.args, v, ok) < 1 || !ok) return bad();
       rot_ = v[0];
     } else if (nm == "USE_TOOL_LENGTH_OFFSET") {
       if (numbers(l.args, v, ok) < 6 || !ok) return bad();
-      for (int i = 0; i < 6; ++i) tool_[i] = v[i];
+      setOffset(tool_, &v[0]);
     } else if (nm == "SELECT_PLANE") {
       plane_ = l.args.find("XZ") != std::string_view::npos ? 1 : l.args.find("YZ") != std::string_view::npos ? 2 : 0;
     } else {

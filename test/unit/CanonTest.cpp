@@ -31,9 +31,9 @@ std::string readFile(const std::string &path) {
   return ss.str();
 }
 
-// Machine with the oracle tool table (test/lit/oracle/Inputs/tools.txt: T<n> length L radius R).
-Machine oracleMachine() {
-  Machine m;
+// Tools of test/lit/oracle/Inputs/tools.txt (T<n> length L radius R), the source record.sh uses.
+std::map<int, ToolData> toolsTxt() {
+  std::map<int, ToolData> out;
   std::istringstream in(readFile(oracleDir() + "/Inputs/tools.txt"));
   std::string line;
   while (std::getline(in, line)) {
@@ -44,9 +44,34 @@ Machine oracleMachine() {
     ls >> t;
     ToolData td;
     while (ls >> key >> v) (key == "length" ? td.length : td.radius) = v;
-    m.tools[std::stoi(t.substr(1))] = td;
+    out[std::stoi(t.substr(1))] = td;
   }
+  return out;
+}
+
+// The oracle machine (Inputs/oracle.machine) through the real machine-description parser.
+Machine oracleMachine() {
+  Machine m;
+  std::string err;
+  EXPECT_TRUE(Machine::load(oracleDir() + "/Inputs/oracle.machine", m, err)) << err;
   return m;
+}
+
+TEST(OracleMachine, ToolsMatchToolsTxt) {
+  Machine m = oracleMachine();
+  auto tools = toolsTxt();
+  ASSERT_EQ(tools.size(), 3u);
+  ASSERT_EQ(m.tools.size(), tools.size());
+  for (auto &[n, td] : tools) {
+    ASSERT_TRUE(m.tools.count(n)) << "T" << n;
+    EXPECT_DOUBLE_EQ(m.tools.at(n).length, td.length) << "T" << n;
+    EXPECT_DOUBLE_EQ(m.tools.at(n).radius, td.radius) << "T" << n;
+  }
+  for (int i = 0; i < kAxes; ++i) {
+    EXPECT_EQ(m.home1[i], 0);
+    EXPECT_EQ(m.home2[i], 0);
+    EXPECT_EQ(m.workOffsets[0][i], 0);
+  }
 }
 
 // --- a minimal reader of the oracle programs (plain ISO blocks, no expressions) -------------
@@ -247,7 +272,13 @@ INSTANTIATE_TEST_SUITE_P(Oracle, OracleTest,
                          ::testing::Values("motion_basic", "arcs_planes", "incremental", "units", "offsets",
                                            "tool_length", "cycles_drill", "cycles_peck", "cycles_bore",
                                            "machine_misc", "cycles_levels", "cycles_inch", "cycles_g99",
-                                           "home_offsets", "cycles_mixed", "modes_misc"));
+                                           "home_offsets", "cycles_mixed", "modes_misc", "inch_offsets"));
+
+TEST(OracleTest, EveryProgramIsListed) {
+  size_t n = 0;
+  for (auto &e : std::filesystem::directory_iterator(oracleDir())) n += e.path().extension() == ".ngc";
+  EXPECT_EQ(n, 17u);  // keep in step with the list above
+}
 
 }  // namespace
 
@@ -512,6 +543,22 @@ TEST(CanonTrace, ExecutorToTraceMillionMovesQuickly) {
   std::fclose(f);
   RecordProperty("seconds", std::to_string(s));
   EXPECT_LT(s, 3.0);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CanonDiff, OffsetsKeepTheUnitsTheyWereSetIn) {
+  // rs274 does not reprint offsets after USE_LENGTH_UNITS: an inch G54 stays 25.4 mm.
+  const char *a =
+      "USE_LENGTH_UNITS(CANON_UNITS_INCHES)\n"
+      "SET_G5X_OFFSET(1, 1.0000, 0.5000, -0.2000, 0.0000, 0.0000, 0.0000)\n"
+      "USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+      "STRAIGHT_TRAVERSE(10.0000, 10.0000, 50.8000, 0.0000, 0.0000, 0.0000)\n";
+  const char *b = "STRAIGHT_TRAVERSE(35.4000, 22.7000, 45.7200, 0.0000, 0.0000, 0.0000)\n";
+  std::string report;
+  EXPECT_TRUE(canonDiff(a, b, CanonDiffOptions(), report)) << report;
 }
 
 }  // namespace
