@@ -14,7 +14,10 @@ constexpr const char *kPlaneNames[] = {"CANON_PLANE_XY", "CANON_PLANE_XZ", "CANO
 
 CanonTraceWriter::CanonTraceWriter(std::FILE *out) : out_(out) { buf_.reserve(kFlushAt + 4096); }
 
-CanonTraceWriter::~CanonTraceWriter() { flush(); }
+// After finish() the stream may already be closed by its owner (AtomicFile::commit): no access.
+CanonTraceWriter::~CanonTraceWriter() {
+  if (!finished_) flush();
+}
 
 bool CanonTraceWriter::flush() {
   if (!buf_.empty() && out_) {
@@ -104,6 +107,7 @@ void CanonTraceWriter::epilogue(const MotionRecord &r) {
 }
 
 void CanonTraceWriter::record(const MotionRecord &r) {
+  if (finished_) return;
   if (!started_) preamble();
   const int64_t n = r.blockNumber;
   switch (r.kind) {

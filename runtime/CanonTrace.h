@@ -13,7 +13,8 @@ namespace ncc {
 
 class CanonTraceWriter : public MotionSink {
 public:
-  // Writes to `out` (not closed). Output is buffered; finish() (or the destructor) flushes.
+  // Writes to `out` (not closed). Output is buffered; finish() flushes (the destructor too when
+  // finish() was not called); records after finish() are ignored.
   explicit CanonTraceWriter(std::FILE *out);
   ~CanonTraceWriter() override;
   void record(const MotionRecord &r) override;
