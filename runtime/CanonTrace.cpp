@@ -1,5 +1,6 @@
 #include "runtime/CanonTrace.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 
@@ -60,12 +61,12 @@ void CanonTraceWriter::line(int64_t n, std::string_view text) {
 }
 
 void CanonTraceWriter::num(double v) {
-  char tmp[64];
+  char tmp[400];  // %.4f of the largest double takes 315 characters
   // to_chars with a precision rounds exactly like printf's %.4f (including "-0.0000").
   auto res = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::fixed, 4);
   if (res.ec != std::errc()) {
     int len = std::snprintf(tmp, sizeof tmp, "%.4f", v);
-    buf_.append(tmp, (size_t)len);
+    buf_.append(tmp, len < 0 ? 0 : std::min((size_t)len, sizeof tmp - 1));
     return;
   }
   buf_.append(tmp, (size_t)(res.ptr - tmp));

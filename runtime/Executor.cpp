@@ -118,7 +118,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   }
   double p = c.get(Word::P);
   int n = p >= 0 && p <= 9 ? (int)p : -1;
-  if (!c.has(Word::P) || p != n)
+  if (!c.has(Word::P) || n < 0 || p != n)
     return error("G10 needs a coordinate system number P0 to P9", "bad-offset-index");
   if (n == 0) n = st.workOffset;
   if (c.has(Word::R) && c.get(Word::R) != 0)

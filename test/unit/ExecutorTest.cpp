@@ -472,6 +472,7 @@ TEST(Executor, BadNumbersAreDiagnosed) {
   ExecRun big;
   EXPECT_FALSE(big({words(CmdKind::ToolLength, {{Word::H, 1e300}})}));
   EXPECT_FALSE(big({words(CmdKind::SetOffset, {{Word::P, 1e300}, {Word::X, 1}}, (uint8_t)SetOffsetKind::G10L2)}));
+  EXPECT_FALSE(big({words(CmdKind::SetOffset, {{Word::P, -1}, {Word::X, 1}}, (uint8_t)SetOffsetKind::G10L20)}));
   EXPECT_FALSE(big({words(CmdKind::Aux, {{Word::P, 1e300}}, 'M')}));
   EXPECT_FALSE(big({feed(100), mode({ModeValue::Drill}), move({{Word::Z, -1}, {Word::R, 1}, {Word::L, 1e300}})}));
   expectPos(big.ex.state().position, 0, 0, 0);
