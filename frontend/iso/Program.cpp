@@ -57,7 +57,7 @@ private:
   size_t fn_ = 0;                     // index of the function being filled
   std::vector<Pending> stack_;
   std::vector<std::pair<size_t, size_t>> subStack_;  // RS274 sub: (outer function, stack depth)
-  bool sectionContent_ = false, ended_ = false, warnedAfterEnd_ = false;
+  bool sectionContent_ = false, ended_ = false;  // section has code; closing '%' seen
 
   Region &region() {
     return stack_.size() <= baseDepth() ? module_.functions[fn_].body : stack_.back().op.regions.back();
@@ -325,7 +325,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
   fn_ = first ? (size_t)(first - module_.functions.data()) : startFunction(firstName, {fileId, 1, 1});
   stack_.clear();
   subStack_.clear();
-  sectionContent_ = ended_ = warnedAfterEnd_ = false;
+  sectionContent_ = ended_ = false;
 
   ParsedBlock b;
   const char *p = text.data(), *end = p + text.size();
@@ -350,7 +350,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
     }
     if (!b.content) continue;
     if (b.programNumber >= 0) {  // Fanuc O<number>: names the program or starts a subprogram
-      bool namesCurrent = !sectionContent_ && !ended_ && module_.functions[fn_].body.empty();
+      bool namesCurrent = !sectionContent_ && !ended_;
       if (!namesCurrent) {
         closeOpen(0);
         if (!subStack_.empty()) error(b.loc, "O-number program inside an o-word sub", "syntax");
@@ -365,12 +365,8 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
       }
       continue;
     }
-    if (ended_) {
-      if (!warnedAfterEnd_) diags_.warning(b.loc, "text after the end of the program ('%') is ignored", "after-end");
-      warnedAfterEnd_ = true;
-      continue;
-    }
-    sectionContent_ = true;
+    if (ended_) continue;  // text after the closing '%' is not part of the program
+    if (!b.words.empty() || !b.assigns.empty() || b.stmt != StmtKind::None) sectionContent_ = true;
     statement(b, lower);
   }
   closeOpen(0);

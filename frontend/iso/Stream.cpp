@@ -134,7 +134,7 @@ bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks) {
       s.fatal = true;
       break;
     }
-    s.content = true;
+    if (!b.words.empty() || !b.assigns.empty()) s.content = true;
     ++blocks;
     out.push_back(s.lower.blockOp(b));
     s.lower.lowerComments(b, out);
