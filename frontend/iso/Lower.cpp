@@ -83,24 +83,25 @@ struct GUse {
 }  // namespace
 
 bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
-  // Scale factor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1).
+  // Divisor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1). Dividing
+  // by a power of ten keeps X1234 in IS-B exactly 1.234.
   auto factor = [&](Scale s) -> double {
     if (decimal_ == 0) return 1.0;
     bool inch = units_ == ModeValue::Inch;
     switch (s) {
-    case Scale::Linear: return decimal_ == 1 ? (inch ? 1e-4 : 1e-3) : (inch ? 1e-5 : 1e-4);
-    case Scale::Rotary: return decimal_ == 1 ? 1e-3 : 1e-4;
-    case Scale::DwellX: return 1e-3;
+    case Scale::Linear: return decimal_ == 1 ? (inch ? 1e4 : 1e3) : (inch ? 1e5 : 1e4);
+    case Scale::Rotary: return decimal_ == 1 ? 1e3 : 1e4;
+    case Scale::DwellX: return 1e3;
     case Scale::Feed:
-      if (feedMode_ == ModeValue::PerRev) return inch ? 1e-4 : 1e-2;
-      if (feedMode_ == ModeValue::PerMinute) return inch ? 1e-2 : 1.0;
+      if (feedMode_ == ModeValue::PerRev) return inch ? 1e4 : 1e2;
+      if (feedMode_ == ModeValue::PerMinute) return inch ? 1e2 : 1.0;
       return 1.0;
     default: return 1.0;
     }
   };
   auto literal = [](const IsoWord &w, double f) -> ExprPtr {
     if (w.expr) return w.expr->clone();
-    if (!w.hasPoint && f != 1.0) return Expr::number(w.value * f, ir::Type::Real, w.loc);
+    if (!w.hasPoint && f != 1.0) return Expr::number(w.value / f, ir::Type::Real, w.loc);
     return Expr::number(w.value, w.hasPoint ? ir::Type::Real : ir::Type::Int, w.loc);
   };
 
