@@ -396,6 +396,35 @@ static std::vector<std::string> candidateFiles(const std::string &name) {
   return out;
 }
 
+// Goto targets must be blocks of the same program (Macro B searches only the current program).
+static void collectBlocks(const Region &r, std::set<double> &blocks, std::vector<const Op *> &gotos) {
+  for (auto &op : r) {
+    if (op.kind == OpKind::Block) {
+      if (auto *n = op.get("n")) blocks.insert(n->num);
+    } else if (op.kind == OpKind::Goto) {
+      gotos.push_back(&op);
+    }
+    for (auto &sub : op.regions) collectBlocks(sub, blocks, gotos);
+  }
+}
+
+static bool checkGotoTargets(const ir::Module &m, Diagnostics &diags) {
+  bool ok = true;
+  for (auto &f : m.functions) {
+    std::set<double> blocks;
+    std::vector<const Op *> gotos;
+    collectBlocks(f.body, blocks, gotos);
+    for (auto *g : gotos) {
+      const ir::Expr *n = g->get("n");
+      if (!n || n->kind != ir::ExprKind::Number || blocks.count(n->num)) continue;
+      diags.error(g->loc, fmt::format("GOTO {}: there is no block N{} in this program", n->num, n->num),
+                  "missing-block");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 }  // namespace
 
 bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts, Diagnostics &diags,
@@ -443,6 +472,7 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
     }
     if (!pp.parseFile(fid, c.callee)) ok = false;
   }
+  ok &= checkGotoTargets(out, diags);
   return ok && pp.ok();
 }
 
