@@ -105,6 +105,7 @@ void ProgramParser::closeOpen(size_t depth) {
 }
 
 void ProgramParser::statement(ParsedBlock &b, BlockLowerer &lower) {
+  if (b.stmt == StmtKind::OWord) return oword(b, lower);  // places its own block op
   Region &r = region();
   r.push_back(lower.blockOp(b));
   lower.lowerComments(b, r);
@@ -159,8 +160,6 @@ void ProgramParser::statement(ParsedBlock &b, BlockLowerer &lower) {
     return;
   }
   case StmtKind::OWord:
-    if (!lower.lowerActions(b, r)) ok_ = false;
-    oword(b, lower);
     return;
   }
 }
@@ -175,6 +174,11 @@ static std::string oFunctionName(const std::string &oname) {
 
 void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
   SourceLoc loc = b.stmtLoc;
+  // The line's block op goes where the line belongs: inside a new sub or else branch.
+  auto head = [&] {
+    region().push_back(lower.blockOp(b));
+    lower.lowerComments(b, region());
+  };
   auto top = [&](std::initializer_list<Pending::Kind> kinds) -> Pending * {
     if (stack_.size() <= baseDepth()) return nullptr;
     Pending &p = stack_.back();
@@ -200,6 +204,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     size_t outer = fn_;
     fn_ = startFunction(oFunctionName(b.oname), loc);
     subStack_.push_back({outer, stack_.size()});
+    head();
     return;
   }
   case OKeyword::EndSub: {
@@ -208,6 +213,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
       return;
     }
     closeOpen(subStack_.back().second);
+    head();
     Op r(OpKind::Return, loc);
     if (b.cond) r.set("value", std::move(b.cond));
     region().push_back(std::move(r));
@@ -216,6 +222,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     return;
   }
   case OKeyword::Call: {
+    head();
     std::string callee = oFunctionName(b.oname);
     lower.calls.push_back({callee, loc});
     Op op(OpKind::Call, loc);
@@ -226,12 +233,14 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     return;
   }
   case OKeyword::Return: {
+    head();
     Op r(OpKind::Return, loc);
     if (b.cond) r.set("value", std::move(b.cond));
     region().push_back(std::move(r));
     return;
   }
   case OKeyword::If: {
+    head();
     Op op(OpKind::If, loc);
     op.set("cond", std::move(b.cond));
     open(Pending::OIf, std::move(op));
@@ -245,6 +254,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
       return;
     }
     p->op.regions.emplace_back();
+    head();
     if (b.okw == OKeyword::ElseIf) {  // else { if cond { ... } } closed together by endif
       Op op(OpKind::If, loc);
       op.set("cond", std::move(b.cond));
@@ -254,6 +264,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     return;
   }
   case OKeyword::EndIf: {
+    head();
     if (!top({Pending::OIf})) {
       mismatch("endif");
       return;
@@ -263,6 +274,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     return;
   }
   case OKeyword::While: {
+    head();
     if (Pending *p = top({Pending::ODo})) {  // do ... while [c]: loop until !c
       Op brk(OpKind::If, loc);
       brk.set("cond", Expr::unary(ir::OpCode::Not, std::move(b.cond), loc));
@@ -278,27 +290,32 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     return;
   }
   case OKeyword::EndWhile:
+    head();
     if (!top({Pending::OWhile})) return mismatch("endwhile");
     pop();
     return;
   case OKeyword::Do: {
+    head();
     Op op(OpKind::While, loc);
     op.set("cond", Expr::boolean(true, loc));
     open(Pending::ODo, std::move(op));
     return;
   }
   case OKeyword::Repeat: {
+    head();
     Op op(OpKind::Loop, loc);
     op.set("count", std::move(b.cond));
     open(Pending::ORepeat, std::move(op));
     return;
   }
   case OKeyword::EndRepeat:
+    head();
     if (!top({Pending::ORepeat})) return mismatch("endrepeat");
     pop();
     return;
   case OKeyword::Break:
   case OKeyword::Continue: {
+    head();
     bool inLoop = false;
     for (size_t i = baseDepth(); i < stack_.size(); ++i)
       inLoop |= stack_[i].kind != Pending::OIf;
