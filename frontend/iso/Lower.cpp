@@ -65,13 +65,13 @@ namespace {
 // Per-block working state: which words are present, which were consumed.
 struct BlockWords {
   IsoWord *w[26] = {};
-  uint32_t used = 0;
+  uint32_t used = 0, present = 0;
   IsoWord *get(char c) { return w[c - 'A']; }
   bool has(char c) const { return w[c - 'A'] != nullptr; }
   bool hasAny(const char *letters) const {
-    for (; *letters; ++letters)
-      if (has(*letters)) return true;
-    return false;
+    uint32_t m = 0;
+    for (; *letters; ++letters) m |= 1u << (*letters - 'A');
+    return (present & m) != 0;
   }
 };
 
@@ -185,6 +185,7 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
       continue;
     }
     bw.w[w.letter - 'A'] = &w;
+    bw.present |= 1u << (w.letter - 'A');
   }
   if (!ok) return false;
 
@@ -203,9 +204,11 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     if (auto *gi = G(g); gi && gi->kind == GKind::Mode)
       emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(gi->mode).name, gloc(g)));
   };
+  // Keys are unique here, so args are appended directly (Op::set would search).
+  auto add = [](Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); };
   auto axisWords = [&](Op &op, const char *axes) {
     for (const char *a = axes; *a; ++a)
-      if (bw.has(*a)) op.set(std::string(1, *a), take(*a, scaleOf(*a)));
+      if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
   };
   auto findM = [&](MKind k) -> const MUse * {
     for (int i = 0; i < nm; ++i)
@@ -357,10 +360,11 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
       }
       SourceLoc loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
       Op op(OpKind::Move, loc);
+      op.args.reserve((size_t)__builtin_popcount(bw.present));
       axisWords(op, kAxes);
       for (char c : std::string_view("IJKR")) {
         if (!bw.has(c) || (c == 'K' && cycle) || (!arc && !cycle)) continue;
-        op.set(std::string(1, c), take(c, Scale::Linear));
+        add(op, c, take(c, Scale::Linear));
       }
       if (bw.has('P') && (arc || cycle)) {
         IsoWord *p = bw.get('P');
@@ -465,8 +469,8 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     op.set("value", std::move(a.value));
   }
 
-  for (int c = 0; c < 26; ++c)
-    if (bw.w[c] && !(bw.used & (1u << c)))
+  for (uint32_t unused = bw.present & ~bw.used; unused; unused &= unused - 1)
+    if (int c = __builtin_ctz(unused); bw.w[c])
       diags_.warning(bw.w[c]->loc, fmt::format("{} word is not used in this block", (char)('A' + c)), "unused-word");
   return true;
 }
