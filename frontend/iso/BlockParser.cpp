@@ -361,7 +361,7 @@ bool BlockParser::parseItems(ParsedBlock &out) {
       double v;
       bool pt, any;
       if (!readNumber(v, pt, any)) return failed_ ? false : fail(p_, "N needs a block number");
-      if (pt) return fail(at, "block number must be an integer");
+      if (pt || v > 1e15) return fail(at, "block number must be an integer below 10^15");
       if (out.n >= 0) return fail(at, "two N words in one block", "duplicate-word");
       out.n = (int64_t)v;
       continue;

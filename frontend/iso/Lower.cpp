@@ -125,11 +125,12 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
         ok = false;
         continue;
       }
-      double t = w.value * 10;
-      long long c10 = std::llround(t);
-      const GCodeInfo *gi = (w.value >= 0 && w.value < 100000 && std::fabs(t - (double)c10) < 1e-6)
-                                ? findGCode((int32_t)c10)
-                                : nullptr;
+      const GCodeInfo *gi = nullptr;
+      if (w.value >= 0 && w.value < 100000) {  // range first: llround of huge values is undefined
+        double t = w.value * 10;
+        long long c10 = std::llround(t);
+        if (std::fabs(t - (double)c10) < 1e-6) gi = findGCode((int32_t)c10);
+      }
       if (!gi) {
         diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
         ok = false;
@@ -305,7 +306,7 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     Op op(OpKind::SetOffset, loc);
     if (nonModal->arg == 0) {  // G10 L2 / L20 P<n>
       IsoWord *l = bw.get('L');
-      int lv = l && !l->expr ? (int)l->value : -1;
+      int lv = l && !l->expr && l->value >= 0 && l->value < 100 ? (int)l->value : -1;
       if (lv != 2 && lv != 20) {
         diags_.error(l ? l->loc : loc,
                      l ? fmt::format("G10 L{} is not supported (only L2 and L20)", l->value)

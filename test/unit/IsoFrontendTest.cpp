@@ -1,11 +1,13 @@
 // Unit tests of the ISO front end: block parser, Macro B expressions, lowering, program
 // structure, streaming, and a bounded fuzz loop (random bytes and mutated programs must give
 // diagnostics, never a crash or a hang).
+// FEATURES: ISO-LEX-01 ISO-LEX-02 ISO-LEX-03 ISO-LEX-04 ISO-LEX-05 ISO-LEX-06 ISO-LEX-09 ISO-MAC-08
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/iso/Syntax.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <random>
 
 using namespace ncc;
@@ -300,14 +302,17 @@ TEST(IsoStream, ControlFlowIsAFatalError) {
 // Random bytes and mutated valid programs: every input must finish with either success or
 // reported errors. Bounded so the test stays fast.
 TEST(IsoFuzz, RandomInputNeverCrashes) {
-  std::mt19937 rng(20261122);
+  // NCC_FUZZ_ITERS / NCC_FUZZ_SEED allow longer runs (e.g. under the sanitizer build).
+  const char *itersEnv = std::getenv("NCC_FUZZ_ITERS"), *seedEnv = std::getenv("NCC_FUZZ_SEED");
+  const int iters = itersEnv ? std::atoi(itersEnv) : 6000;
+  std::mt19937 rng(seedEnv ? (unsigned)std::atoi(seedEnv) : 20261122u);
   const std::string seeds[] = {
       "%\nO1\nN10 G1 X1. Y-2 F100 (c (n))\n#1=[#2+SIN[30]]*2\nIF [#1 GT 2] GOTO 10\n"
       "WHILE [#1 LT 5] DO1\n#1=#1+1\nEND1\nM98 P2\nG65 P2 A1\nM30\n%\nO2\nG81 X1 Z-1 R1 K2\nM99\n%\n",
       "o100 while [#<i> LT 3]\n#<i>=[#<i>+1]\no100 endwhile\no<s> sub\no<s> endsub\nM2\n",
   };
   const char alphabet[] = "GXYZMNOPQRIJK#[]()/;%=+-*. 0123456789\nIFGOTOWHILEDOENDabcSIN<>_,$\t";
-  for (int iter = 0; iter < 6000; ++iter) {
+  for (int iter = 0; iter < iters; ++iter) {
     std::string src;
     int mode = iter % 3;
     if (mode == 0) {
