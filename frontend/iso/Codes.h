@@ -18,6 +18,7 @@ enum class GKind : uint8_t {
   ToolLength,    // G43 (arg 1) / G49 (arg 0)
   WorkOffset,    // G54..G59.3 (arg: index)
   MacroCall,     // G65
+  SubCall,       // G05 P<program> L<count>: subprogram call (808D); G05 without P, P0, P01 ignored
   NoOp,          // cancels a function ncc does not model and is always off (G15, G50.1, G67, G69, G97, G291)
   Unsupported,   // known code that is not lowered yet: error with the description
 };

@@ -224,6 +224,10 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   const GCodeInfo *nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
 
+  if (nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S')) {
+    diags_.error(bw.get('S')->loc, "G92 S (spindle speed limit) is not supported", "unsupported-code");
+    return false;
+  }
   if (macroCall) {
     // G65 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
@@ -434,6 +438,22 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
       count = Expr::number(1, ir::Type::Int, loc);
     }
     callOp(loc, prog, std::move(count), "shared");
+  }
+  if (nonModal && nonModal->kind == GKind::SubCall) {
+    // 808D G05 P<program> L<count> calls like M98; without P, or with P0/P01, it is ignored.
+    SourceLoc loc = gloc(GGroup::NonModal);
+    IsoWord *p = bw.get('P');
+    if (p && !(p->expr == nullptr && p->value <= 1)) {
+      if (!allowCalls) {
+        diags_.error(loc, "G05 needs the whole program (not streamable)", "not-streamable");
+        return false;
+      }
+      long long prog;
+      if (!programNumber(loc, "G05", prog)) return false;
+      callOp(loc, prog, bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc), "shared");
+    } else {
+      bw.used |= (1u << ('P' - 'A')) | (1u << ('L' - 'A'));
+    }
   }
   if (macroCall) {
     SourceLoc loc = gloc(GGroup::NonModal);

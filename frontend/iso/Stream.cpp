@@ -72,7 +72,7 @@ bool isoIsStreamable(std::string_view text) {
       int digits = 0;
       while (r < le && *r >= '0' && *r <= '9' && digits < 9) v = v * 10 + (*r++ - '0'), ++digits;
       if (L == 'M' && (v == 98 || v == 99)) return false;
-      if (L == 'G' && (v == 65 || v == 66) && (r >= le || *r != '.')) return false;
+      if (L == 'G' && (v == 65 || v == 66 || v == 5) && (r >= le || *r != '.')) return false;
     }
     p = nl ? nl + 1 : end;
   }
