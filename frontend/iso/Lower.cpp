@@ -180,12 +180,13 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
       continue;
     }
     if (w.letter < 'A' || w.letter > 'Z') continue;
-    if (bw.w[w.letter - 'A']) {
+    bool argSetII = macroCall && (w.letter == 'I' || w.letter == 'J' || w.letter == 'K');
+    if (bw.w[w.letter - 'A'] && !argSetII) {
       diags_.error(w.loc, fmt::format("two {} words in one block", w.letter), "duplicate-word");
       ok = false;
       continue;
     }
-    bw.w[w.letter - 'A'] = &w;
+    if (!bw.w[w.letter - 'A']) bw.w[w.letter - 'A'] = &w;
     bw.present |= 1u << (w.letter - 'A');
   }
   if (!ok) return false;
@@ -465,15 +466,32 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     if (!programNumber(loc, "G65", prog)) return false;
     ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);
     Op &op = callOp(loc, prog, std::move(count), "new");
+    // Argument specification II when I, J or K repeats: up to 10 sets I J K -> #4+3s, #5+3s,
+    // #6+3s; a set ends when an address repeats or comes out of I-J-K order.
+    int ijkCount[3] = {0, 0, 0};
+    for (auto &w : b.words)
+      if (w.letter >= 'I' && w.letter <= 'K') ++ijkCount[w.letter - 'I'];
+    bool specII = ijkCount[0] > 1 || ijkCount[1] > 1 || ijkCount[2] > 1;
+    int set = 0, lastPos = -1;
     for (auto &w : b.words) {
       if (w.letter == 'G' || w.letter == 'P' || w.letter == 'L') continue;
       int local = kMacroArg[w.letter - 'A'];
+      if (specII && w.letter >= 'I' && w.letter <= 'K') {
+        int pos = w.letter - 'I';
+        if (pos <= lastPos) ++set;
+        lastPos = pos;
+        if (set > 9) {
+          diags_.error(w.loc, "more than 10 I/J/K argument sets", "syntax");
+          return false;
+        }
+        local = 4 + 3 * set + pos;
+      }
       if (!local) {
         diags_.error(w.loc, fmt::format("{} is not a macro argument", w.letter), "syntax");
         return false;
       }
       if (w.letter != 'M') bw.used |= 1u << (w.letter - 'A');
-      op.set(fmt::format("a.{}", local), literal(w, 1.0));
+      op.set(fmt::format("a.{}", local), literal(w, 1.0));  // later words win (D=#7 vs I2)
     }
   }
   if (auto *m = findM(MKind::Return)) {
