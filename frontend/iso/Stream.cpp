@@ -141,7 +141,6 @@ bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks) {
     s.lower.lowerActions(b, out);
     if (s.fatal) break;
   }
-  if (s.diags.hasErrors() && !s.lower.calls.empty()) s.fatal = true;
   return out.size() > before || (blocks > 0 && s.p < s.end && !s.fatal);
 }
 
