@@ -262,6 +262,7 @@ bool BlockParser::parseOWord(ParsedBlock &out, const char *at) {
     const char *b = ++p_;
     while (p_ < end_ && *p_ != '>') ++p_;
     if (p_ >= end_) return fail(b - 1, "unterminated O-word name: missing '>'");
+    if (p_ == b) return fail(b - 1, "empty O-word name");
     for (const char *q = b; q < p_; ++q)
       if (!isBlank(*q)) out.oname.push_back((char)std::tolower((unsigned char)*q));
     ++p_;
@@ -367,7 +368,8 @@ bool BlockParser::parseItems(ParsedBlock &out) {
       continue;
     }
     if (L == 'O') {
-      if (!nothingYet()) return fail(at, "O (program number) must start the block");
+      if (!out.words.empty() || !out.assigns.empty() || out.stmt != StmtKind::None)
+        return fail(at, "O (program number / o-word) must start the block");
       if (!parseOWord(out, at)) return false;
       if (out.stmt == StmtKind::OWord) stmtClosed = true;
       continue;

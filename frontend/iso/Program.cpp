@@ -56,13 +56,17 @@ private:
   // Per-file state.
   size_t fn_ = 0;                     // index of the function being filled
   std::vector<Pending> stack_;
-  std::vector<std::pair<size_t, size_t>> subStack_;  // RS274 sub: (outer function, stack depth)
+  struct OpenSub {
+    size_t outer, depth;  // function to return to, control stack depth at `sub`
+    std::string oname;
+  };
+  std::vector<OpenSub> subStack_;  // RS274 o-word subs being defined
   bool sectionContent_ = false, ended_ = false;  // section has code; closing '%' seen
 
   Region &region() {
     return stack_.size() <= baseDepth() ? module_.functions[fn_].body : stack_.back().op.regions.back();
   }
-  size_t baseDepth() const { return subStack_.empty() ? 0 : subStack_.back().second; }
+  size_t baseDepth() const { return subStack_.empty() ? 0 : subStack_.back().depth; }
   void error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
     diags_.error(loc, std::move(msg), rule);
     ok_ = false;
@@ -203,21 +207,21 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     }
     size_t outer = fn_;
     fn_ = startFunction(oFunctionName(b.oname), loc);
-    subStack_.push_back({outer, stack_.size()});
+    subStack_.push_back({outer, stack_.size(), b.oname});
     head();
     return;
   }
   case OKeyword::EndSub: {
-    if (subStack_.empty()) {
-      error(loc, fmt::format("o{} endsub without sub", b.oname), "loop-mismatch");
+    if (subStack_.empty() || subStack_.back().oname != b.oname) {
+      error(loc, fmt::format("o{} endsub without o{} sub", b.oname, b.oname), "loop-mismatch");
       return;
     }
-    closeOpen(subStack_.back().second);
+    closeOpen(subStack_.back().depth);
     head();
     Op r(OpKind::Return, loc);
     if (b.cond) r.set("value", std::move(b.cond));
     region().push_back(std::move(r));
-    fn_ = subStack_.back().first;
+    fn_ = subStack_.back().outer;
     subStack_.pop_back();
     return;
   }

@@ -340,7 +340,10 @@ TEST(IsoFuzz, RandomInputNeverCrashes) {
       SourceManager sm;
       Diagnostics d(sm);
       d.setCollect(true);
-      EXPECT_TRUE(ir::verifyModule(p.module, d)) << "invalid IR for input:\n" << src << "\n" << p.text;
+      bool valid = ir::verifyModule(p.module, d);
+      std::string why;
+      for (auto &x : d.collected()) why += x.message + "\n";
+      EXPECT_TRUE(valid) << why << "invalid IR for input:\n" << src << "\n" << p.text;
     }
     if (isoIsStreamable(src)) {
       bool ok;
