@@ -242,9 +242,15 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   if (!macroCall) {
     if (bw.has('F')) emit(OpKind::Feed, bw.get('F')->loc).set("value", take('F', Scale::Feed));
     if (bw.has('S')) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
-    if (bw.has('T')) emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
+    if (bw.has('T')) {
+      emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
+      selectedTool_ = literal(*bw.get('T'), 1.0);
+    }
   }
-  if (auto *m = findM(MKind::ToolChange)) emit(OpKind::ToolChange, m->word->loc);
+  if (auto *m = findM(MKind::ToolChange)) {
+    emit(OpKind::ToolChange, m->word->loc);
+    loadedTool_ = selectedTool_ ? selectedTool_->clone() : nullptr;
+  }
   if (auto *m = findM(MKind::Spindle)) {
     static const char *dirs[] = {"stop", "cw", "ccw"};
     emit(OpKind::Spindle, m->word->loc).set("dir", Expr::symbol(dirs[m->info.arg], m->word->loc));
@@ -286,12 +292,15 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   }
   if (auto *gi = G(GGroup::ToolLength)) {
     SourceLoc loc = gloc(GGroup::ToolLength);
-    if (gi->arg == 1 && !bw.has('H')) {
+    ExprPtr h;
+    if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
+    else if (bw.has('H')) h = take('H', Scale::None);
+    else if (flavour_ == Flavour::RS274 && loadedTool_) h = loadedTool_->clone();
+    if (!h) {
       diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
       return false;
     }
-    emit(OpKind::ToolLength, loc)
-        .set("h", gi->arg == 1 ? take('H', Scale::None) : Expr::number(0, ir::Type::Int, loc));
+    emit(OpKind::ToolLength, loc).set("h", std::move(h));
   }
   if (auto *gi = G(GGroup::WorkOffset))
     emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
