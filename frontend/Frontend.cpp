@@ -1,1 +1,95 @@
-// scaffold
+#include "frontend/Frontend.h"
+
+#include "frontend/iso/IsoFrontend.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace ncc {
+
+struct SourceKindInfo {
+  SourceKind kind;
+  const char *name;
+  const char *extensions;  // space-separated, lower case
+};
+static const SourceKindInfo kKinds[] = {
+    {SourceKind::ISO, "iso", ".nc .ngc .tap .cnc .iso .gcode .txt"},
+    {SourceKind::Sinumerik, "sinumerik", ".mpf .spf"},
+    {SourceKind::Heidenhain, "heidenhain", ".h"},
+    {SourceKind::CLData, "cldata", ".cls .cld .apt .aptsource"},
+    {SourceKind::NCIR, "ncir", ".ncir"},
+};
+
+const char *sourceKindName(SourceKind k) {
+  for (auto &i : kKinds)
+    if (i.kind == k) return i.name;
+  return "unknown";
+}
+
+bool sourceKindFromName(std::string_view s, SourceKind &out) {
+  for (auto &i : kKinds)
+    if (s == i.name) {
+      out = i.kind;
+      return true;
+    }
+  return false;
+}
+
+SourceKind detectSourceKind(const std::string &path, std::string_view text) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return (char)std::tolower(c); });
+  if (!ext.empty())
+    for (auto &i : kKinds) {
+      std::string_view exts = i.extensions;
+      size_t pos = exts.find(ext);
+      if (pos != std::string_view::npos && (pos + ext.size() == exts.size() || exts[pos + ext.size()] == ' '))
+        return i.kind;
+    }
+  std::string_view head = text.substr(0, 4096);
+  if (head.find("BEGIN PGM") != std::string_view::npos) return SourceKind::Heidenhain;
+  if (head.rfind("module \"", 0) == 0) return SourceKind::NCIR;
+  if (head.find("PROC ") != std::string_view::npos || head.find("DEF ") != std::string_view::npos)
+    return SourceKind::Sinumerik;
+  return SourceKind::ISO;
+}
+
+static iso::IsoOptions isoOptions(const FrontendOptions &o) {
+  iso::IsoOptions io;
+  io.decimalMode = o.decimalMode;
+  io.blockDeleteMask = o.blockDeleteMask;
+  io.searchDirs = o.searchDirs;
+  return io;
+}
+
+bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const FrontendOptions &opts,
+                  Diagnostics &diags, ir::Module &out) {
+  switch (kind) {
+  case SourceKind::ISO: return iso::parseIsoProgram(sm, file, isoOptions(opts), diags, out);
+  case SourceKind::NCIR: return ir::parseModule(sm.text(file), file, sm, diags, out);
+  default:
+    diags.error({}, fmt::format("{}: the {} front end is not implemented yet", sm.name(file), sourceKindName(kind)));
+    return false;
+  }
+}
+
+namespace {
+class IsoStream : public BlockStream {
+public:
+  IsoStream(SourceManager &sm, uint32_t file, const iso::IsoOptions &o, Diagnostics &d) : s_(sm, file, o, d) {}
+  bool next(ir::Region &out, size_t maxBlocks) override { return s_.next(out, maxBlocks); }
+
+private:
+  iso::IsoBlockStream s_;
+};
+}  // namespace
+
+std::unique_ptr<BlockStream> openBlockStream(SourceKind kind, SourceManager &sm, uint32_t file,
+                                             const FrontendOptions &opts, Diagnostics &diags) {
+  if (kind == SourceKind::ISO && iso::isoIsStreamable(sm.text(file)))
+    return std::make_unique<IsoStream>(sm, file, isoOptions(opts), diags);
+  return nullptr;
+}
+
+}  // namespace ncc

@@ -183,7 +183,10 @@ struct Module {
 
 // ---------------------------------------------------------------- text form
 std::string printExpr(const Expr &e);
+// Without a SourceManager the `source K "..."` lines cannot name the files (they print as
+// "file<id>"); drivers pass theirs so the text can be parsed back with the right paths.
 std::string printModule(const Module &m);
+std::string printModule(const Module &m, const SourceManager &sm);
 // Parses the text form. File ids in loc() refer to names registered in `sm` on demand.
 bool parseModule(std::string_view text, uint32_t fileId, SourceManager &sm, Diagnostics &diags,
                  Module &out);

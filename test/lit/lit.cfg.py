@@ -1,3 +1,4 @@
+# lit configuration for ncc. ctest runs each area folder with --param ncc_obj_root=<build dir>.
 import os
 import shutil
 import lit.formats
@@ -5,15 +6,20 @@ import lit.formats
 config.name = "ncc"
 config.test_format = lit.formats.ShTest(execute_external=False)
 config.suffixes = [".test", ".nc", ".ngc", ".ncir", ".mpf"]
-config.excludes = ["Inputs", "lit.cfg.py", "lit.site.cfg.py.in"]
+config.excludes = ["Inputs", "lit.cfg.py"]
 config.test_source_root = os.path.dirname(__file__)
-config.test_exec_root = os.path.join(config.ncc_obj_root, "test", "lit")
+
+obj_root = lit_config.params.get("ncc_obj_root") or os.environ.get("NCC_OBJ_ROOT") or \
+    os.path.join(os.path.dirname(__file__), "..", "..", "build")
+obj_root = os.path.abspath(obj_root)
+config.test_exec_root = os.path.join(obj_root, "test", "lit")
+tools = os.path.join(obj_root, "utils")
+src_root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 llvm_bin = "/usr/lib/llvm-19/bin"
-config.environment["PATH"] = os.pathsep.join(
-    [config.ncc_tools_dir, llvm_bin, config.environment.get("PATH", os.environ.get("PATH", ""))])
-config.substitutions.append(("%ncc", os.path.join(config.ncc_tools_dir, "ncc")))
-config.substitutions.append(("%src", config.ncc_src_root))
-config.substitutions.append(("%shared", os.path.normpath(os.path.join(config.ncc_src_root, "..", "shared"))))
+config.environment["PATH"] = os.pathsep.join([tools, llvm_bin, os.environ.get("PATH", "")])
+config.substitutions.append(("%ncc", os.path.join(tools, "ncc")))
+config.substitutions.append(("%srcroot", src_root))
+config.substitutions.append(("%shared", os.path.normpath(os.path.join(src_root, "..", "shared"))))
 if shutil.which("rs274"):
     config.available_features.add("rs274")

@@ -1,0 +1,40 @@
+// Front-end dispatch: picks the dialect of a source file and runs its front end. Every front
+// end produces NC IR (ir/NCIR.h); the textual IR (.ncir) is read by the IR parser.
+#pragma once
+#include "ir/NCIR.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ncc {
+
+struct FrontendOptions {
+  std::string decimalMode = "calculator";  // numbers without '.', see docs/MACHINE.md
+  unsigned blockDeleteMask = 0;            // active block-delete levels (bit n = /n)
+  std::vector<std::string> searchDirs;     // where called subprogram files are looked up
+};
+
+// What a file holds: a dialect, or textual NC IR.
+enum class SourceKind : uint8_t { ISO, Sinumerik, Heidenhain, CLData, NCIR, Unknown };
+const char *sourceKindName(SourceKind k);
+bool sourceKindFromName(std::string_view s, SourceKind &out);
+// From the extension first, then from the content.
+SourceKind detectSourceKind(const std::string &path, std::string_view text);
+
+// Parses a whole program (main file plus the subprogram files it calls).
+bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const FrontendOptions &opts,
+                  Diagnostics &diags, ir::Module &out);
+
+// Block-by-block parsing of huge flat programs, so memory stays bounded. Null when the program
+// needs whole-program parsing (control flow, subprograms) or the dialect has no streaming.
+class BlockStream {
+public:
+  virtual ~BlockStream() = default;
+  // Appends up to maxBlocks blocks' ops; false at end of input.
+  virtual bool next(ir::Region &out, size_t maxBlocks) = 0;
+};
+std::unique_ptr<BlockStream> openBlockStream(SourceKind kind, SourceManager &sm, uint32_t file,
+                                             const FrontendOptions &opts, Diagnostics &diags);
+
+}  // namespace ncc

@@ -1,0 +1,55 @@
+// ISO G-code front end (Fanuc-compatible, Sinumerik 808D ISO mode) with Fanuc Custom Macro B,
+// and the RS274NGC (LinuxCNC) flavour for files ending in .ngc. Lowers source text to NC IR.
+//
+// Conventions of the produced IR (see frontend/iso/README.md for the full list):
+//  - every source block with content starts with `block` (n= when it has an N word);
+//  - the ops of one block follow the LinuxCNC rs274 execution order;
+//  - dwell `seconds=` and the cycle dwell `P` of `move` are in seconds (Fanuc P without a decimal
+//    point is milliseconds; RS274NGC P is seconds);
+//  - the canned-cycle repeat count is always `L` (Fanuc writes K).
+#pragma once
+#include "ir/Diagnostics.h"
+#include "ir/NCIR.h"
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncc::iso {
+
+struct IsoOptions {
+  // How words written without a decimal point are read: "calculator" (X1000 = 1000 mm),
+  // "is-b" (x0.001) or "is-c" (x0.0001); see the spec 2.3 for the per-address factors.
+  std::string decimalMode = "calculator";
+  unsigned blockDeleteMask = 0;         // bit n set = skip level /n active (/ = /0)
+  std::vector<std::string> searchDirs;  // subprogram files; default: dir of the main file
+};
+
+// Parses the main program file (already in sm) plus the subprograms it calls (same file after
+// the main program, or separate files found in searchDirs) into `out`
+// (functions[0] = "main", others "O1234"). Returns false when an error was reported.
+bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts, Diagnostics &diags,
+                     ir::Module &out);
+
+// True when the text can be parsed block by block: no Macro B control flow (IF/WHILE/GOTO/DO/
+// END), no M98/M99/G65/G66, no RS274 O-words and no O-number program after the main program.
+bool isoIsStreamable(std::string_view text);
+
+class IsoBlockStream {
+public:
+  IsoBlockStream(SourceManager &sm, uint32_t fileId, const IsoOptions &opts, Diagnostics &diags);
+  ~IsoBlockStream();
+  IsoBlockStream(const IsoBlockStream &) = delete;
+  IsoBlockStream &operator=(const IsoBlockStream &) = delete;
+  // Parses at most maxBlocks source blocks and appends their ops to `out`. Returns false when
+  // nothing more was produced: end of file, or a fatal error (a construct that needs the whole
+  // program, reported as an error).
+  bool next(ir::Region &out, size_t maxBlocks);
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ncc::iso

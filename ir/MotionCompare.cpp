@@ -1,0 +1,61 @@
+#include "ir/MotionCompare.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace ncc {
+
+static bool isPath(const MotionRecord &r) {
+  return r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
+         r.kind == RecordKind::Dwell;
+}
+
+// Zero-length moves carry no path: translators may drop them.
+static bool isNullMove(const MotionRecord &r) {
+  if (r.kind != RecordKind::Rapid && r.kind != RecordKind::Linear) return false;
+  for (int i = 0; i < kAxes; ++i)
+    if (std::fabs(r.end[i] - r.start[i]) > 1e-9) return false;
+  return true;
+}
+
+static std::vector<const MotionRecord *> pathOf(const std::vector<MotionRecord> &v) {
+  std::vector<const MotionRecord *> out;
+  for (auto &r : v)
+    if (isPath(r) && !isNullMove(r)) out.push_back(&r);
+  return out;
+}
+
+bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRecord> &b,
+                  const PathCompareOptions &opts, std::string &report) {
+  auto pa = pathOf(a), pb = pathOf(b);
+  auto where = [](const MotionRecord &r) { return fmt::format("line {}: {}", r.loc.line, printMotionRecord(r)); };
+  size_t n = std::min(pa.size(), pb.size());
+  for (size_t i = 0; i < n; ++i) {
+    const MotionRecord &x = *pa[i], &y = *pb[i];
+    std::string why;
+    if (x.kind != y.kind) why = "kinds differ";
+    for (int k = 0; k < kAxes && why.empty(); ++k)
+      if (std::fabs(x.end[k] - y.end[k]) > opts.tolerance) why = fmt::format("end points differ in {}", "XYZABC"[k]);
+    if (why.empty() && x.kind == RecordKind::Arc) {
+      for (int k = 0; k < 3 && why.empty(); ++k)
+        if (std::fabs(x.center[k] - y.center[k]) > opts.tolerance) why = "arc centres differ";
+      if (why.empty() && (x.turns != y.turns || x.plane != y.plane)) why = "arc direction, turns or plane differ";
+    }
+    if (why.empty() && x.kind == RecordKind::Dwell && std::fabs(x.value - y.value) > 1e-6) why = "dwell times differ";
+    if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
+        std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
+      why = "feeds differ";
+    if (!why.empty()) {
+      report = fmt::format("paths differ at motion {}: {}\n  first:  {}\n  second: {}", i + 1, why, where(x), where(y));
+      return false;
+    }
+  }
+  if (pa.size() != pb.size()) {
+    report = fmt::format("paths differ in length: {} vs {} motions", pa.size(), pb.size());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc

@@ -1,0 +1,315 @@
+// Structural checks of NC IR, driven by the OpInfo table (keys, region counts) plus a few
+// small rule tables (enumerated symbol values, keys that must name a variable). Every problem is
+// one diagnostic at the op's loc; the verifier never stops early and never assumes a
+// well-formed module (null expressions, bad kinds are reported, not dereferenced).
+#include "ir/Builtins.h"
+#include "ir/ModeTable.h"
+#include "ir/NCIR.h"
+
+#include <fmt/format.h>
+
+#include <set>
+#include <string>
+
+namespace ncc::ir {
+
+namespace {
+
+// Keys whose value is a symbol from a fixed list.
+struct EnumRule {
+  OpKind kind;
+  const char *key;
+  const char *values;  // space-separated
+};
+const EnumRule kEnumRules[] = {
+    {OpKind::Spindle, "dir", "cw ccw stop"},
+    {OpKind::Coolant, "flood", "on off"},
+    {OpKind::Coolant, "mist", "on off"},
+    {OpKind::CutterComp, "side", "off left right"},
+    {OpKind::SetOffset, "kind", "g92 g92_1 g10l2 g10l20"},
+    {OpKind::Stop, "kind", "program optional end end_rewind"},
+    {OpKind::Goto, "dir", "forward backward any"},
+    {OpKind::Call, "frame", "new shared"},
+    {OpKind::Declare, "type", "int real bool string symbol axis frame"},
+};
+
+// Keys whose value must be a variable reference (something that can be assigned).
+struct VarRule {
+  OpKind kind;
+  const char *key;
+};
+const VarRule kVarRules[] = {{OpKind::Declare, "var"}, {OpKind::Assign, "target"}};
+
+// Keys whose value must be a non-negative integer constant (source block numbers).
+const VarRule kIntConstRules[] = {{OpKind::Block, "n"}, {OpKind::Block, "skip"}};
+
+// Keys of `call` besides the `a.<name>` arguments.
+const char *kCallKeys = "callee count frame";
+
+bool inList(std::string_view list, std::string_view word) {
+  size_t i = 0;
+  while (i < list.size()) {
+    size_t j = list.find(' ', i);
+    if (j == std::string_view::npos) j = list.size();
+    if (list.substr(i, j - i) == word) return true;
+    i = j + 1;
+  }
+  return false;
+}
+
+std::string lower(std::string_view s) {
+  std::string o(s);
+  for (char &c : o)
+    if (c >= 'A' && c <= 'Z') c = (char)(c - 'A' + 'a');
+  return o;
+}
+
+bool isIntConst(const Expr *e) {
+  return e && e->kind == ExprKind::Number && e->num >= 0 && e->num == (double)(long long)e->num;
+}
+
+// Block numbers and label names of one function, gathered before gotos are checked
+// (a goto may jump forward or into/out of nested regions).
+struct Targets {
+  std::set<double> blocks;
+  std::set<std::string> labels;
+};
+
+class Verifier {
+public:
+  Verifier(const Module &m, Diagnostics &d) : m_(m), d_(d) {}
+
+  bool run() {
+    if (m_.functions.empty()) error({}, "module has no functions (functions[0] is the entry)");
+    std::set<std::string> names;
+    for (auto &f : m_.functions) {
+      if (!names.insert(f.name).second) error(f.loc, fmt::format("function '@{}' is defined twice", f.name));
+      verifyFunction(f);
+    }
+    return errors_ == 0;
+  }
+
+private:
+  const Module &m_;
+  Diagnostics &d_;
+  unsigned errors_ = 0;
+  unsigned loopDepth_ = 0;
+  Targets targets_;
+  std::set<std::string> labelsSeen_;
+
+  void error(SourceLoc l, std::string msg) {
+    ++errors_;
+    d_.error(l, std::move(msg));
+  }
+
+  void verifyFunction(const Function &f) {
+    if (f.name.empty()) error(f.loc, "function has no name");
+    std::set<std::string> params;
+    for (auto &p : f.params) {
+      if (p.name.empty()) error(f.loc, fmt::format("function '@{}' has a parameter without a name", f.name));
+      else if (!params.insert(p.name).second)
+        error(f.loc, fmt::format("function '@{}' has parameter '{}' twice", f.name, p.name));
+      if (p.defaultValue)
+        verifyExpr(p.defaultValue.get(), f.loc, fmt::format("default of parameter '{}'", p.name));
+    }
+    targets_ = {};
+    labelsSeen_.clear();
+    collectTargets(f.body, f.name);
+    loopDepth_ = 0;
+    for (auto &op : f.body) verifyOp(op);
+  }
+
+  void collectTargets(const Region &r, const std::string &fn) {
+    for (auto &op : r) {
+      if (op.kind == OpKind::Block) {
+        const Expr *n = op.get("n");
+        if (n && n->kind == ExprKind::Number) targets_.blocks.insert(n->num);
+      } else if (op.kind == OpKind::Label) {
+        const Expr *n = op.get("name");
+        if (n && n->kind == ExprKind::String && !targets_.labels.insert(n->str).second)
+          error(op.loc, fmt::format("label '{}' is defined twice in function '@{}'", n->str, fn));
+      }
+      for (auto &sub : op.regions) collectTargets(sub, fn);
+    }
+  }
+
+  void verifyOp(const Op &op) {
+    if ((unsigned)op.kind >= (unsigned)OpKind::Count) {
+      error(op.loc, fmt::format("invalid op kind {}", (unsigned)op.kind));
+      return;
+    }
+    const OpInfo &info = opInfo(op.kind);
+    std::string name = info.name;
+    checkKeys(op, info);
+    size_t nr = op.regions.size();
+    if (nr < info.regionsMin || nr > info.regionsMax) {
+      std::string expect = info.regionsMin == info.regionsMax ? fmt::format("{}", info.regionsMin)
+                                                              : fmt::format("{} to {}", info.regionsMin, info.regionsMax);
+      error(op.loc, fmt::format("'{}' has {} region{}, expected {}", name, nr, nr == 1 ? "" : "s", expect));
+    }
+    for (auto &a : op.args) verifyExpr(a.value.get(), op.loc, fmt::format("'{}' argument '{}'", name, a.key));
+    checkValues(op, name);
+    checkControl(op, name);
+    bool loop = op.kind == OpKind::While || op.kind == OpKind::Loop;
+    if (loop) ++loopDepth_;
+    for (auto &r : op.regions)
+      for (auto &sub : r) verifyOp(sub);
+    if (loop) --loopDepth_;
+  }
+
+  void checkKeys(const Op &op, const OpInfo &info) {
+    std::set<std::string> seen;
+    for (auto &a : op.args) {
+      if (!seen.insert(a.key).second) error(op.loc, fmt::format("'{}' has argument '{}' twice", info.name, a.key));
+      bool ok;
+      if (op.kind == OpKind::Call) ok = inList(kCallKeys, a.key) || (a.key.size() > 2 && a.key.compare(0, 2, "a.") == 0);
+      else ok = std::string_view(info.allowed) == "*" || inList(info.required, a.key) || inList(info.allowed, a.key);
+      if (!ok) error(op.loc, fmt::format("'{}' has unknown argument '{}'", info.name, a.key));
+    }
+    std::string_view req = info.required;
+    size_t i = 0;
+    while (i < req.size()) {
+      size_t j = req.find(' ', i);
+      if (j == std::string_view::npos) j = req.size();
+      std::string key(req.substr(i, j - i));
+      if (!op.get(key)) error(op.loc, fmt::format("'{}' is missing required argument '{}'", info.name, key));
+      i = j + 1;
+    }
+  }
+
+  void checkValues(const Op &op, const std::string &name) {
+    for (auto &r : kEnumRules) {
+      if (r.kind != op.kind) continue;
+      const Expr *v = op.get(r.key);
+      if (!v) continue;
+      std::string word = v->kind == ExprKind::Symbol ? (op.kind == OpKind::Declare ? lower(v->str) : v->str) : "";
+      if (word.empty() || !inList(r.values, word))
+        error(op.loc, fmt::format("'{}' argument '{}' must be one of: {}", name, r.key, r.values));
+    }
+    for (auto &r : kVarRules) {
+      const Expr *v = op.kind == r.kind ? op.get(r.key) : nullptr;
+      if (v && v->kind != ExprKind::Var)
+        error(op.loc, fmt::format("'{}' argument '{}' must be a variable", name, r.key));
+    }
+    for (auto &r : kIntConstRules) {
+      const Expr *v = op.kind == r.kind ? op.get(r.key) : nullptr;
+      if (v && !isIntConst(v))
+        error(op.loc, fmt::format("'{}' argument '{}' must be a non-negative integer constant", name, r.key));
+    }
+    if (op.kind == OpKind::Mode) checkModes(op);
+  }
+
+  void checkModes(const Op &op) {
+    for (auto &a : op.args) {
+      ModeGroup g;
+      if (!modeGroupFromName(a.key, g)) continue;  // already reported as an unknown argument
+      const Expr *v = a.value.get();
+      ModeValue mv;
+      if (!v || v->kind != ExprKind::Symbol) {
+        error(op.loc, fmt::format("'mode' argument '{}' must be a mode name", a.key));
+      } else if (!modeValueFromName(v->str, mv)) {
+        error(op.loc, fmt::format("'mode' has unknown value '{}' for '{}'", v->str, a.key));
+      } else if (modeValueInfo(mv).group != g) {
+        error(op.loc, fmt::format("'mode' value '{}' belongs to group '{}', not '{}'", v->str,
+                                  modeGroupName(modeValueInfo(mv).group), a.key));
+      }
+    }
+  }
+
+  void checkControl(const Op &op, const std::string &name) {
+    switch (op.kind) {
+    case OpKind::Break:
+    case OpKind::Continue:
+      if (loopDepth_ == 0) error(op.loc, fmt::format("'{}' outside of a 'while' or 'loop'", name));
+      break;
+    case OpKind::Goto: {
+      const Expr *n = op.get("n"), *l = op.get("label");
+      if (!n && !l) error(op.loc, "'goto' needs a target: n= or label=");
+      if (n && l) error(op.loc, "'goto' has both n= and label=");
+      if (n && n->kind == ExprKind::Number && !targets_.blocks.count(n->num))
+        error(op.loc, fmt::format("'goto' target block N{} is not in this function", fmt::format("{}", n->num)));
+      if (l && l->kind == ExprKind::String && !targets_.labels.count(l->str))
+        error(op.loc, fmt::format("'goto' target label '{}' is not in this function", l->str));
+      break;
+    }
+    case OpKind::Call: {
+      const Expr *c = op.get("callee");
+      if (!c) break;
+      if (c->kind == ExprKind::String) {
+        if (!m_.find(c->str)) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", c->str));
+      } else if (c->kind != ExprKind::Var && c->kind != ExprKind::Binary && c->kind != ExprKind::Call) {
+        error(op.loc, "'call' argument 'callee' must be a string");
+      }
+      break;
+    }
+    default: break;
+    }
+  }
+
+  void verifyExpr(const Expr *e, SourceLoc l, const std::string &where) {
+    if (!e) {
+      error(l, where + ": missing expression");
+      return;
+    }
+    size_t n = e->args.size();
+    for (auto &a : e->args)
+      if (!a) {
+        error(l, where + ": missing operand");
+        return;
+      }
+    switch (e->kind) {
+    case ExprKind::Number:
+    case ExprKind::String:
+    case ExprKind::Bool:
+    case ExprKind::Symbol:
+    case ExprKind::Vacant:
+      if (n) error(l, where + ": a constant has operands");
+      return;
+    case ExprKind::Var: verifyVar(*e, l, where); break;
+    case ExprKind::Unary:
+      if (n != 1 || (e->op != OpCode::Neg && e->op != OpCode::Not))
+        error(l, fmt::format("{}: unary '{}' with {} operand(s)", where, opCodeName(e->op), n));
+      break;
+    case ExprKind::Binary:
+      if (n != 2 || e->op < OpCode::Add || e->op > OpCode::Concat)
+        error(l, fmt::format("{}: binary '{}' with {} operand(s)", where, opCodeName(e->op), n));
+      break;
+    case ExprKind::Call: {
+      const BuiltinInfo *b = findBuiltin(e->str);
+      if (!b) error(l, fmt::format("{}: unknown function '{}'", where, e->str));
+      else if (b->arity != n)
+        error(l, fmt::format("{}: function '{}' takes {} argument{}, found {}", where, b->name, b->arity,
+                             b->arity == 1 ? "" : "s", n));
+      break;
+    }
+    default: error(l, where + ": invalid expression kind"); return;
+    }
+    for (auto &a : e->args) verifyExpr(a.get(), l, where);
+  }
+
+  void verifyVar(const Expr &e, SourceLoc l, const std::string &where) {
+    if (e.args.size() > 1) error(l, where + ": a variable has more than one index");
+    switch (e.space) {
+    case VarSpace::QParam:
+      if (e.str != "Q" && e.str != "QL" && e.str != "QR" && e.str != "QS")
+        error(l, fmt::format("{}: Q parameter prefix '{}' is not Q, QL, QR or QS", where, e.str));
+      [[fallthrough]];
+    case VarSpace::Numbered:
+    case VarSpace::RParam:
+      if (e.args.empty()) error(l, where + ": numbered parameter without a number");
+      break;
+    case VarSpace::Local:
+    case VarSpace::Global:
+    case VarSpace::System:
+      if (e.str.empty()) error(l, where + ": variable without a name");
+      break;
+    default: error(l, where + ": invalid variable space");
+    }
+  }
+};
+
+}  // namespace
+
+bool verifyModule(const Module &m, Diagnostics &diags) { return Verifier(m, diags).run(); }
+
+}  // namespace ncc::ir

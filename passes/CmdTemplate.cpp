@@ -1,0 +1,264 @@
+#include "passes/CmdTemplate.h"
+
+#include <fmt/format.h>
+
+#include <cstring>
+
+namespace ncc {
+using namespace ir;
+
+bool isMachineOp(OpKind k) {
+  switch (k) {
+  case OpKind::Block: case OpKind::Comment: case OpKind::Message: case OpKind::Mode:
+  case OpKind::Feed: case OpKind::Speed: case OpKind::ToolSelect: case OpKind::ToolChange:
+  case OpKind::Spindle: case OpKind::Coolant: case OpKind::Dwell: case OpKind::Move:
+  case OpKind::Home: case OpKind::MachineMove: case OpKind::ToolLength: case OpKind::CutterComp:
+  case OpKind::WorkOffset: case OpKind::SetOffset: case OpKind::Stop: case OpKind::Aux:
+    return true;
+  default:
+    return false;
+  }
+}
+
+// Symbol-valued arguments and the sub code each value stands for.
+struct SymbolCode {
+  OpKind op;
+  const char *key;
+  const char *value;
+  uint8_t code;
+};
+static const SymbolCode kSymbols[] = {
+    {OpKind::Spindle, "dir", "stop", 0},         {OpKind::Spindle, "dir", "cw", 1},
+    {OpKind::Spindle, "dir", "ccw", 2},          {OpKind::CutterComp, "side", "off", 0},
+    {OpKind::CutterComp, "side", "left", 1},     {OpKind::CutterComp, "side", "right", 2},
+    {OpKind::Stop, "kind", "program", (uint8_t)StopKind::Program},
+    {OpKind::Stop, "kind", "optional", (uint8_t)StopKind::Optional},
+    {OpKind::Stop, "kind", "end", (uint8_t)StopKind::End},
+    {OpKind::Stop, "kind", "end_rewind", (uint8_t)StopKind::EndRewind},
+    {OpKind::SetOffset, "kind", "g92", (uint8_t)SetOffsetKind::G92},
+    {OpKind::SetOffset, "kind", "g92_1", (uint8_t)SetOffsetKind::G92Cancel},
+    {OpKind::SetOffset, "kind", "g10l2", (uint8_t)SetOffsetKind::G10L2},
+    {OpKind::SetOffset, "kind", "g10l20", (uint8_t)SetOffsetKind::G10L20},
+};
+
+static const char *symbolFor(OpKind op, const char *key, uint8_t code) {
+  for (auto &s : kSymbols)
+    if (s.op == op && !std::strcmp(s.key, key) && s.code == code) return s.value;
+  return "?";
+}
+
+// Which word a scalar argument key fills, per op kind.
+struct KeyWord {
+  OpKind op;
+  const char *key;
+  Word word;
+};
+static const KeyWord kKeyWords[] = {
+    {OpKind::Feed, "value", Word::F},       {OpKind::Speed, "value", Word::S},
+    {OpKind::ToolSelect, "value", Word::T}, {OpKind::Dwell, "seconds", Word::P},
+    {OpKind::ToolLength, "h", Word::H},     {OpKind::CutterComp, "d", Word::D},
+    {OpKind::SetOffset, "index", Word::P},  {OpKind::Aux, "m", Word::P},
+};
+
+static CmdKind cmdKindOf(OpKind k) {
+  switch (k) {
+  case OpKind::Block: return CmdKind::Block;
+  case OpKind::Comment: return CmdKind::Comment;
+  case OpKind::Message: return CmdKind::Message;
+  case OpKind::Mode: return CmdKind::Mode;
+  case OpKind::Feed: return CmdKind::Feed;
+  case OpKind::Speed: return CmdKind::Speed;
+  case OpKind::ToolSelect: return CmdKind::ToolSelect;
+  case OpKind::ToolChange: return CmdKind::ToolChange;
+  case OpKind::Spindle: return CmdKind::Spindle;
+  case OpKind::Coolant: return CmdKind::Coolant;
+  case OpKind::Dwell: return CmdKind::Dwell;
+  case OpKind::Move: return CmdKind::Move;
+  case OpKind::Home: return CmdKind::Home;
+  case OpKind::MachineMove: return CmdKind::MachineMove;
+  case OpKind::ToolLength: return CmdKind::ToolLength;
+  case OpKind::CutterComp: return CmdKind::CutterComp;
+  case OpKind::WorkOffset: return CmdKind::WorkOffset;
+  case OpKind::SetOffset: return CmdKind::SetOffset;
+  case OpKind::Stop: return CmdKind::Stop;
+  case OpKind::Aux: return CmdKind::Aux;
+  default: return CmdKind::Count;
+  }
+}
+
+static bool constNumber(const Expr *e, double &v) {
+  if (!e) return false;
+  if (e->kind == ExprKind::Number || e->kind == ExprKind::Bool) {
+    v = e->num;
+    return true;
+  }
+  return false;
+}
+
+bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
+  out = CmdTemplate{};
+  MachineCmd &c = out.base;
+  c.kind = cmdKindOf(op.kind);
+  c.loc = op.loc;
+  if (c.kind == CmdKind::Count) {
+    diags.error(op.loc, fmt::format("'{}' is not a machine operation", opInfo(op.kind).name));
+    return false;
+  }
+  auto addWord = [&](Word w, const Expr *e) {
+    double v;
+    if (constNumber(e, v)) c.set(w, v);
+    else if (e && e->kind == ExprKind::Vacant) return;  // a vacant word is not programmed
+    else out.slots.push_back({w, e});
+  };
+  auto symbolArg = [&](const char *key, uint8_t &dst) -> bool {
+    const Expr *e = op.get(key);
+    if (!e) return true;
+    std::string_view s = e->str;
+    for (auto &sc : kSymbols)
+      if (sc.op == op.kind && !std::strcmp(sc.key, key) && s == sc.value) {
+        dst = sc.code;
+        return true;
+      }
+    diags.error(op.loc, fmt::format("'{}' has an invalid value for '{}'", opInfo(op.kind).name, key));
+    return false;
+  };
+
+  switch (op.kind) {
+  case OpKind::Block: {
+    double n;
+    if (const Expr *e = op.get("n"); constNumber(e, n)) c.blockNumber = (int64_t)n;
+    return true;
+  }
+  case OpKind::Comment:
+  case OpKind::Message:
+    if (const Expr *e = op.get("text")) c.text = e->str.c_str();
+    return true;
+  case OpKind::Mode:
+    for (auto &a : op.args) {
+      ModeValue v;
+      ModeGroup g;
+      if (!a.value || !modeGroupFromName(a.key, g) || !modeValueFromName(a.value->str, v) ||
+          modeValueInfo(v).group != g) {
+        diags.error(op.loc, fmt::format("invalid mode '{}'", a.key));
+        return false;
+      }
+      if (c.nmodes < 6) c.modes[c.nmodes++] = v;
+    }
+    return true;
+  case OpKind::Spindle: return symbolArg("dir", c.sub);
+  case OpKind::CutterComp:
+    if (!symbolArg("side", c.sub)) return false;
+    break;
+  case OpKind::Stop: return symbolArg("kind", c.sub);
+  case OpKind::SetOffset:
+    if (!symbolArg("kind", c.sub)) return false;
+    break;
+  case OpKind::WorkOffset: {
+    double v = 1;
+    if (!constNumber(op.get("index"), v) || v < 1 || v > 9) {
+      diags.error(op.loc, "work offset index must be a constant 1..9");
+      return false;
+    }
+    c.sub = (uint8_t)v;
+    return true;
+  }
+  case OpKind::MachineMove: {
+    double v = 1;
+    constNumber(op.get("rapid"), v);
+    c.sub = v != 0 ? 0 : 1;
+    break;
+  }
+  case OpKind::Coolant:
+    for (const char *key : {"flood", "mist"}) {
+      const Expr *e = op.get(key);
+      if (!e) continue;
+      uint8_t bit = key[0] == 'f' ? 1 : 2;
+      c.sub2 |= bit;
+      if (e->str == "on") c.sub |= bit;
+    }
+    return true;
+  case OpKind::Aux:
+    c.sub = 'M';
+    break;
+  case OpKind::Home: {
+    double v = 1;
+    constNumber(op.get("ref"), v);
+    c.sub = v == 2 ? 2 : 1;
+    break;
+  }
+  default:
+    break;
+  }
+  // Scalar words: named keys per the table, axis/parameter letters for motion ops.
+  for (auto &a : op.args) {
+    bool done = false;
+    for (auto &kw : kKeyWords)
+      if (kw.op == op.kind && a.key == kw.key) {
+        addWord(kw.word, a.value.get());
+        done = true;
+      }
+    if (done) continue;
+    Word w;
+    if (a.key.size() == 1 && wordFromLetter(a.key[0], w) &&
+        (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
+         op.kind == OpKind::SetOffset))
+      addWord(w, a.value.get());
+  }
+  return true;
+}
+
+Op cmdToOp(const MachineCmd &c) {
+  static const OpKind kinds[] = {OpKind::Block, OpKind::Comment, OpKind::Message, OpKind::Mode,
+                                 OpKind::Feed, OpKind::Speed, OpKind::ToolSelect, OpKind::ToolChange,
+                                 OpKind::Spindle, OpKind::Coolant, OpKind::Dwell, OpKind::Move,
+                                 OpKind::Home, OpKind::MachineMove, OpKind::ToolLength, OpKind::CutterComp,
+                                 OpKind::WorkOffset, OpKind::SetOffset, OpKind::Stop, OpKind::Aux};
+  static_assert(sizeof(kinds) / sizeof(kinds[0]) == (size_t)CmdKind::Count);
+  Op op(kinds[(unsigned)c.kind], c.loc);
+  auto real = [](double v) { return Expr::number(v, Type::Real); };
+  switch (c.kind) {
+  case CmdKind::Block:
+    if (c.blockNumber >= 0) op.set("n", Expr::number((double)c.blockNumber, Type::Int));
+    return op;
+  case CmdKind::Comment:
+  case CmdKind::Message:
+    op.set("text", Expr::string(c.text ? c.text : ""));
+    return op;
+  case CmdKind::Mode:
+    for (unsigned i = 0; i < c.nmodes; ++i) {
+      auto &info = modeValueInfo(c.modes[i]);
+      op.set(modeGroupName(info.group), Expr::symbol(info.name));
+    }
+    return op;
+  case CmdKind::Spindle: op.set("dir", Expr::symbol(symbolFor(op.kind, "dir", c.sub))); return op;
+  case CmdKind::Stop: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); return op;
+  case CmdKind::CutterComp: op.set("side", Expr::symbol(symbolFor(op.kind, "side", c.sub))); break;
+  case CmdKind::SetOffset: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); break;
+  case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
+  case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;
+  case CmdKind::Home: op.set("ref", Expr::number(c.sub, Type::Int)); break;
+  case CmdKind::Coolant:
+    if (c.sub2 & 1) op.set("flood", Expr::symbol(c.sub & 1 ? "on" : "off"));
+    if (c.sub2 & 2) op.set("mist", Expr::symbol(c.sub & 2 ? "on" : "off"));
+    return op;
+  case CmdKind::ToolChange: return op;
+  default: break;
+  }
+  for (auto &kw : kKeyWords)
+    if (kw.op == op.kind && c.has(kw.word)) {
+      bool isInt = kw.word == Word::T || kw.word == Word::H || kw.word == Word::D ||
+                   (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux;
+      op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
+    }
+  if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
+      op.kind == OpKind::SetOffset)
+    for (int i = 0; i < kWords; ++i) {
+      Word w = (Word)i;
+      if (!c.has(w)) continue;
+      if (op.kind == OpKind::SetOffset && w == Word::P) continue;
+      op.set(std::string(1, kWordLetters[i]), real(c.get(w)));
+    }
+  return op;
+}
+
+}  // namespace ncc

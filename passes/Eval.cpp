@@ -1,0 +1,563 @@
+#include "passes/Eval.h"
+
+#include "ir/Arith.h"
+#include "ir/Builtins.h"
+#include "ir/Value.h"
+#include "passes/CmdTemplate.h"
+#include "passes/Operators.h"
+#include "runtime/Executor.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+namespace ncc {
+using namespace ir;
+
+bool ExecutorSink::exec(const MachineCmd &cmd) { return exec_.exec(cmd); }
+
+namespace {
+
+// A named local that was never assigned: reading it is an error (unlike Macro B's vacant).
+constexpr uint64_t kUnsetBits = 0x7ff8dead0000f00dull;
+double unsetValue() {
+  double d;
+  std::memcpy(&d, &kUnsetBits, sizeof d);
+  return d;
+}
+bool isUnset(double v) {
+  uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b == kUnsetBits;
+}
+
+struct EvalError {
+  SourceLoc loc;
+  std::string message;
+};
+struct ProgramEnd {};
+
+enum class IK : uint8_t {
+  Machine,      // tmpl
+  Assign,       // target, expr
+  Declare,      // target, expr (init, may be null)
+  JumpIfFalse,  // expr -> jump
+  Jump,         // -> jump; backward gotos count toward the loop limit
+  LoopEnter,    // slot: reset the iteration counter
+  LoopBack,     // slot: count an iteration, then jump
+  CountInit,    // slot: remaining = expr (null = endless)
+  CountTest,    // slot: if remaining == 0 -> jump, else remaining -= 1
+  Call,         // op
+  Return,
+};
+
+struct Instr {
+  IK kind;
+  bool backward = false;
+  uint32_t jump = 0;
+  uint32_t slot = 0;
+  const Op *op = nullptr;
+  const Expr *expr = nullptr;
+  const Expr *target = nullptr;
+};
+
+struct CompiledFn {
+  const Function *fn = nullptr;
+  std::vector<Instr> code;
+  std::vector<CmdTemplate> templates;
+  uint32_t slots = 0;
+  std::unordered_map<std::string, uint32_t> localNames;
+};
+
+struct Frame {
+  double locals[34];
+  std::vector<double> named;
+  std::vector<double> slots;
+  uint64_t backJumps = 0;
+};
+
+}  // namespace
+
+struct Evaluator::Impl {
+  CmdSink &sink;
+  Diagnostics &diags;
+  ExecLimits limits;
+  const Module *module = nullptr;
+  std::unordered_map<const Function *, std::unique_ptr<CompiledFn>> compiled;
+  std::unordered_map<std::string, uint32_t> globalNames;
+  std::vector<double> globalNamed;
+  std::vector<double> numbered = std::vector<double>(100000, vacantValue());
+  std::vector<double> rparams = std::vector<double>(1000, vacantValue());
+  std::unordered_map<std::string, std::vector<double>> qparams;
+  unsigned depth = 0;
+  uint64_t steps = 0;
+  bool ended = false;
+  std::chrono::steady_clock::time_point start;
+
+  Impl(CmdSink &s, Diagnostics &d, const ExecLimits &l) : sink(s), diags(d), limits(l) {}
+
+  [[noreturn]] void fail(SourceLoc loc, std::string msg) { throw EvalError{loc, std::move(msg)}; }
+
+  // ------------------------------------------------------------ linearisation
+  struct LoopCtx {
+    std::vector<uint32_t> breaks, continues;
+  };
+  struct Fixup {
+    uint32_t instr;
+    const Op *op;
+  };
+
+  void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops, std::vector<Fixup> &gotos,
+                     std::unordered_map<int64_t, std::vector<uint32_t>> &blocks,
+                     std::unordered_map<std::string, uint32_t> &labels) {
+    for (const Op &op : r) {
+      auto emit = [&](Instr in) {
+        cf.code.push_back(in);
+        return (uint32_t)cf.code.size() - 1;
+      };
+      if (isMachineOp(op.kind)) {
+        CmdTemplate t;
+        if (!buildCmdTemplate(op, t, diags)) fail(op.loc, "invalid machine operation");
+        if (op.kind == OpKind::Block && t.base.blockNumber >= 0)
+          blocks[t.base.blockNumber].push_back((uint32_t)cf.code.size());
+        Instr in{IK::Machine};
+        in.slot = (uint32_t)cf.templates.size();
+        in.op = &op;
+        cf.templates.push_back(std::move(t));
+        emit(in);
+        continue;
+      }
+      switch (op.kind) {
+      case OpKind::Assign:
+      case OpKind::Declare: {
+        Instr in{op.kind == OpKind::Assign ? IK::Assign : IK::Declare};
+        in.op = &op;
+        in.target = op.get(op.kind == OpKind::Assign ? "target" : "var");
+        in.expr = op.get(op.kind == OpKind::Assign ? "value" : "init");
+        if (!in.target || in.target->kind != ExprKind::Var) fail(op.loc, "assignment target is not a variable");
+        if (in.target->space == VarSpace::Local) localSlot(cf, in.target->str);
+        emit(in);
+        break;
+      }
+      case OpKind::If: {
+        Instr jf{IK::JumpIfFalse};
+        jf.expr = op.get("cond");
+        jf.op = &op;
+        uint32_t j = emit(jf);
+        compileRegion(cf, op.regions[0], loops, gotos, blocks, labels);
+        if (op.regions.size() > 1) {
+          uint32_t skip = emit(Instr{IK::Jump});
+          cf.code[j].jump = (uint32_t)cf.code.size();
+          compileRegion(cf, op.regions[1], loops, gotos, blocks, labels);
+          cf.code[skip].jump = (uint32_t)cf.code.size();
+        } else {
+          cf.code[j].jump = (uint32_t)cf.code.size();
+        }
+        break;
+      }
+      case OpKind::While:
+      case OpKind::Loop: {
+        uint32_t slot = cf.slots;
+        cf.slots += 2;
+        Instr enter{IK::LoopEnter};
+        enter.slot = slot;
+        enter.op = &op;
+        emit(enter);
+        uint32_t test;
+        if (op.kind == OpKind::While) {
+          Instr jf{IK::JumpIfFalse};
+          jf.expr = op.get("cond");
+          jf.op = &op;
+          Instr init{IK::CountInit};  // keeps slot layout uniform; unused for while
+          (void)init;
+          test = emit(jf);
+        } else {
+          Instr init{IK::CountInit};
+          init.slot = slot + 1;
+          init.expr = op.get("count");
+          init.op = &op;
+          emit(init);
+          Instr t{IK::CountTest};
+          t.slot = slot + 1;
+          t.op = &op;
+          test = emit(t);
+        }
+        uint32_t head = test;
+        loops.emplace_back();
+        compileRegion(cf, op.regions[0], loops, gotos, blocks, labels);
+        uint32_t back = (uint32_t)cf.code.size();
+        Instr lb{IK::LoopBack};
+        lb.slot = slot;
+        lb.jump = head;
+        lb.op = &op;
+        emit(lb);
+        uint32_t end = (uint32_t)cf.code.size();
+        cf.code[test].jump = end;
+        for (uint32_t b : loops.back().breaks) cf.code[b].jump = end;
+        for (uint32_t c : loops.back().continues) cf.code[c].jump = back;
+        loops.pop_back();
+        break;
+      }
+      case OpKind::Break:
+      case OpKind::Continue: {
+        if (loops.empty()) fail(op.loc, fmt::format("'{}' outside a loop", opInfo(op.kind).name));
+        uint32_t i = emit(Instr{IK::Jump});
+        (op.kind == OpKind::Break ? loops.back().breaks : loops.back().continues).push_back(i);
+        break;
+      }
+      case OpKind::Label:
+        if (const Expr *e = op.get("name")) labels[e->str] = (uint32_t)cf.code.size();
+        break;
+      case OpKind::Goto: {
+        Instr j{IK::Jump};
+        j.op = &op;
+        gotos.push_back({emit(j), &op});
+        break;
+      }
+      case OpKind::Call: {
+        Instr c{IK::Call};
+        c.op = &op;
+        emit(c);
+        break;
+      }
+      case OpKind::Return: {
+        Instr r{IK::Return};
+        r.op = &op;
+        emit(r);
+        break;
+      }
+      default:
+        fail(op.loc, fmt::format("the eval engine cannot execute '{}'", opInfo(op.kind).name));
+      }
+    }
+  }
+
+  uint32_t localSlot(CompiledFn &cf, const std::string &name) {
+    auto it = cf.localNames.find(name);
+    if (it != cf.localNames.end()) return it->second;
+    uint32_t s = (uint32_t)cf.localNames.size();
+    cf.localNames.emplace(name, s);
+    return s;
+  }
+
+  CompiledFn &compile(const Function &f) {
+    auto it = compiled.find(&f);
+    if (it != compiled.end()) return *it->second;
+    auto cf = std::make_unique<CompiledFn>();
+    cf->fn = &f;
+    std::vector<LoopCtx> loops;
+    std::vector<Fixup> gotos;
+    std::unordered_map<int64_t, std::vector<uint32_t>> blocks;
+    std::unordered_map<std::string, uint32_t> labels;
+    for (auto &p : f.params) localSlot(*cf, p.name);
+    compileRegion(*cf, f.body, loops, gotos, blocks, labels);
+    cf->code.push_back(Instr{IK::Return});
+    // Resolve gotos: a sequence number is searched forward from the goto, then from the start
+    // (Fanuc); dir=forward/backward restricts the search (Sinumerik GOTOF/GOTOB).
+    for (auto &g : gotos) {
+      const Expr *n = g.op->get("n");
+      const Expr *l = g.op->get("label");
+      const Expr *d = g.op->get("dir");
+      std::string dir = d ? d->str : "any";
+      std::vector<uint32_t> cands;
+      if (n && n->kind == ExprKind::Number) {
+        auto bit = blocks.find((int64_t)n->num);
+        if (bit != blocks.end()) cands = bit->second;
+      } else if (l) {
+        auto lit = labels.find(l->str);
+        if (lit != labels.end()) cands.push_back(lit->second);
+      } else {
+        fail(g.op->loc, "goto target must be a constant sequence number or a label");
+      }
+      int64_t pick = -1;
+      for (uint32_t c : cands)
+        if (c > g.instr && dir != "backward") {
+          pick = c;
+          break;
+        }
+      if (pick < 0 && dir != "forward")
+        for (uint32_t c : cands)
+          if (c <= g.instr) {
+            pick = c;
+            break;
+          }
+      if (pick < 0)
+        fail(g.op->loc, n ? fmt::format("jump to missing sequence number N{}", (int64_t)n->num)
+                          : fmt::format("jump to missing label '{}'", l->str));
+      cf->code[g.instr].jump = (uint32_t)pick;
+      cf->code[g.instr].backward = (uint32_t)pick <= g.instr;
+    }
+    auto &ref = *cf;
+    compiled.emplace(&f, std::move(cf));
+    return ref;
+  }
+
+  // ------------------------------------------------------------ values
+  double &numberedRef(Frame &fr, const Expr &v, bool write) {
+    double idx = num(ev(fr, *v.args[0]));
+    long n = std::lround(idx);
+    if (n >= 1 && n <= 33) return fr.locals[n];
+    if (n == 0) {
+      if (write) fail(v.loc, "#0 is always vacant and cannot be assigned");
+      static double vac;
+      vac = vacantValue();
+      return vac;
+    }
+    if (n < 0 || n >= (long)numbered.size()) fail(v.loc, fmt::format("parameter number #{} out of range", n));
+    return numbered[n];
+  }
+
+  double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, const char *what) {
+    long n = v.args.empty() ? 0 : std::lround(num(ev(fr, *v.args[0])));
+    if (n < 0 || n >= (long)arr.size()) fail(v.loc, fmt::format("{} index {} out of range", what, n));
+    return arr[n];
+  }
+
+  double &varRef(Frame &fr, CompiledFn &cf, const Expr &v, bool write) {
+    switch (v.space) {
+    case VarSpace::Numbered: return numberedRef(fr, v, write);
+    case VarSpace::RParam: return arrayRef(rparams, fr, v, "R parameter");
+    case VarSpace::QParam: {
+      auto &arr = qparams[v.str];
+      if (arr.empty()) arr.assign(2000, vacantValue());
+      return arrayRef(arr, fr, v, "Q parameter");
+    }
+    case VarSpace::Local: {
+      auto it = cf.localNames.find(v.str);
+      if (it == cf.localNames.end()) {
+        if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
+        it = cf.localNames.emplace(v.str, (uint32_t)cf.localNames.size()).first;
+      }
+      if (fr.named.size() <= it->second) fr.named.resize(cf.localNames.size(), unsetValue());
+      return fr.named[it->second];
+    }
+    case VarSpace::Global: {
+      auto it = globalNames.find(v.str);
+      if (it == globalNames.end()) {
+        if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
+        it = globalNames.emplace(v.str, (uint32_t)globalNames.size()).first;
+        globalNamed.push_back(unsetValue());
+      }
+      return globalNamed[it->second];
+    }
+    case VarSpace::System: {
+      if (write) fail(v.loc, fmt::format("system variable '{}' cannot be assigned", v.str));
+      static double vac;
+      vac = vacantValue();
+      return vac;
+    }
+    }
+    fail(v.loc, "bad variable");
+  }
+
+  CompiledFn *curFn = nullptr;
+
+  double ev(Frame &fr, const Expr &e) {
+    switch (e.kind) {
+    case ExprKind::Number:
+    case ExprKind::Bool: return e.num;
+    case ExprKind::Vacant: return vacantValue();
+    case ExprKind::String:
+    case ExprKind::Symbol: fail(e.loc, "strings are not supported in numeric expressions yet");
+    case ExprKind::Var: {
+      double v = varRef(fr, *curFn, e, false);
+      if (isUnset(v)) fail(e.loc, fmt::format("variable '{}' used before assignment", e.str));
+      return v;
+    }
+    case ExprKind::Unary: {
+      double r;
+      if (applyUnary(e.op, ev(fr, *e.args[0]), r) != OpStatus::Ok) fail(e.loc, "bad unary operator");
+      return r;
+    }
+    case ExprKind::Binary: {
+      // Both sides are always evaluated (no short-circuit in Macro B).
+      double a = ev(fr, *e.args[0]);
+      double b = ev(fr, *e.args[1]);
+      double r;
+      switch (applyBinary(e.op, a, b, r)) {
+      case OpStatus::Ok: return r;
+      case OpStatus::DivByZero: fail(e.loc, "division by zero");
+      case OpStatus::NotNumeric:
+        fail(e.loc, fmt::format("operator '{}' is not supported on numbers", opCodeName(e.op)));
+      }
+      return r;
+    }
+    case ExprKind::Call: {
+      const BuiltinInfo *b = findBuiltin(e.str);
+      if (!b) fail(e.loc, fmt::format("unknown function '{}'", e.str));
+      if (b->arity != e.args.size())
+        fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, b->arity, e.args.size()));
+      double args[4] = {0, 0, 0, 0};
+      for (size_t i = 0; i < e.args.size() && i < 4; ++i) args[i] = num(ev(fr, *e.args[i]));
+      double r = b->fn(args);
+      if (std::isnan(r)) fail(e.loc, fmt::format("'{}' argument out of domain", b->name));
+      return r;
+    }
+    }
+    fail(e.loc, "bad expression");
+  }
+
+  // ------------------------------------------------------------ execution
+  void checkTime(SourceLoc loc) {
+    if ((++steps & 0xffff) == 0 && limits.maxSeconds > 0) {
+      double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (s > limits.maxSeconds)
+        fail(loc, fmt::format("run time limit of {} s exceeded (limit --max-seconds)", limits.maxSeconds));
+    }
+  }
+
+  void runFunction(const Function &f, Frame &fr) {
+    CompiledFn &cf = compile(f);
+    CompiledFn *saved = curFn;
+    curFn = &cf;
+    fr.slots.assign(cf.slots, 0.0);
+    const auto &code = cf.code;
+    uint32_t pc = 0;
+    while (true) {
+      const Instr &in = code[pc];
+      switch (in.kind) {
+      case IK::Machine: {
+        const CmdTemplate &t = cf.templates[in.slot];
+        MachineCmd cmd = t.base;
+        for (const CmdSlot &s : t.slots) {
+          double v = ev(fr, *s.expr);
+          if (isVacant(v)) continue;
+          if (!std::isfinite(v)) fail(s.expr->loc, "value is not a finite number");
+          cmd.set(s.word, v);
+        }
+        if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
+        if (cmd.kind == CmdKind::Stop &&
+            (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
+          ended = true;
+          throw ProgramEnd{};
+        }
+        ++pc;
+        break;
+      }
+      case IK::Assign:
+      case IK::Declare: {
+        double v = in.expr ? ev(fr, *in.expr) : (in.kind == IK::Declare ? 0.0 : vacantValue());
+        if (isUnset(v)) v = vacantValue();
+        varRef(fr, cf, *in.target, true) = v;
+        ++pc;
+        break;
+      }
+      case IK::JumpIfFalse: pc = truthy(ev(fr, *in.expr)) ? pc + 1 : in.jump; break;
+      case IK::Jump:
+        if (in.backward) {
+          if (++fr.backJumps > limits.maxLoopIterations)
+            fail(in.op->loc, fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)",
+                                         limits.maxLoopIterations));
+          checkTime(in.op->loc);
+        }
+        pc = in.jump;
+        break;
+      case IK::LoopEnter: fr.slots[in.slot] = 0; ++pc; break;
+      case IK::LoopBack:
+        if (++fr.slots[in.slot] >= (double)limits.maxLoopIterations)
+          fail(in.op->loc, fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)",
+                                       limits.maxLoopIterations));
+        checkTime(in.op->loc);
+        pc = in.jump;
+        break;
+      case IK::CountInit:
+        fr.slots[in.slot] = in.expr ? std::round(num(ev(fr, *in.expr))) : -1.0;
+        ++pc;
+        break;
+      case IK::CountTest: {
+        double &rem = fr.slots[in.slot];
+        if (rem == 0) {
+          pc = in.jump;
+        } else {
+          if (rem > 0) rem -= 1;
+          ++pc;
+        }
+        break;
+      }
+      case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
+      case IK::Return: curFn = saved; return;
+      }
+    }
+  }
+
+  void call(const Op &op, Frame &fr) {
+    const Expr *callee = op.get("callee");
+    const Function *f = callee ? module->find(callee->str) : nullptr;
+    if (!f) fail(op.loc, fmt::format("call to unknown program '{}'", callee ? callee->str : "?"));
+    const Expr *countE = op.get("count");
+    double count = countE ? num(ev(fr, *countE)) : 1;
+    const Expr *frameE = op.get("frame");
+    bool newFrame = frameE && frameE->str == "new";
+    if (depth + 1 > limits.maxCallDepth)
+      fail(op.loc, fmt::format("call depth limit {} exceeded (limit --max-call-depth)", limits.maxCallDepth));
+    // Arguments are evaluated once, in the caller's frame.
+    std::vector<std::pair<long, double>> numberedArgs;
+    std::vector<std::pair<std::string, double>> namedArgs;
+    for (auto &a : op.args) {
+      if (a.key.rfind("a.", 0) != 0) continue;
+      std::string k = a.key.substr(2);
+      double v = ev(fr, *a.value);
+      if (!k.empty() && k[0] >= '0' && k[0] <= '9') numberedArgs.push_back({std::atol(k.c_str()), v});
+      else namedArgs.push_back({k, v});
+    }
+    ++depth;
+    for (long i = 0; i < (long)std::llround(count); ++i) {
+      if (newFrame) {
+        Frame nf;
+        for (double &l : nf.locals) l = vacantValue();
+        for (auto &[n, v] : numberedArgs)
+          if (n >= 1 && n <= 33) nf.locals[n] = v;
+        CompiledFn &cf = compile(*f);
+        nf.named.assign(cf.localNames.size(), unsetValue());
+        for (auto &[n, v] : namedArgs) {
+          auto it = cf.localNames.find(n);
+          if (it != cf.localNames.end()) nf.named[it->second] = v;
+        }
+        runFunction(*f, nf);
+      } else {
+        Frame shared;
+        std::memcpy(shared.locals, fr.locals, sizeof fr.locals);
+        runFunction(*f, shared);
+        std::memcpy(fr.locals, shared.locals, sizeof fr.locals);
+      }
+    }
+    --depth;
+  }
+
+  // The main program's frame outlives run() so a streamed program (run chunk by chunk) keeps
+  // its locals between chunks.
+  Frame mainFrame;
+  bool started = false;
+
+  bool run(const Module &m) {
+    module = &m;
+    compiled.clear();  // a new module (or chunk) may reuse addresses of the last one
+    if (m.functions.empty()) return true;
+    if (!started) {
+      start = std::chrono::steady_clock::now();
+      for (double &l : mainFrame.locals) l = vacantValue();
+      started = true;
+    }
+    if (ended) return true;
+    try {
+      runFunction(m.functions[0], mainFrame);
+    } catch (const EvalError &e) {
+      diags.error(e.loc, e.message);
+      return false;
+    } catch (const ProgramEnd &) {
+      return !diags.hasErrors();
+    }
+    return true;
+  }
+};
+
+Evaluator::Evaluator(CmdSink &sink, Diagnostics &diags, const ExecLimits &limits)
+    : impl_(std::make_unique<Impl>(sink, diags, limits)) {}
+Evaluator::~Evaluator() = default;
+bool Evaluator::run(const Module &m) { return impl_->run(m); }
+bool Evaluator::ended() const { return impl_->ended; }
+
+}  // namespace ncc

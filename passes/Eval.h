@@ -1,0 +1,48 @@
+// The eval engine: a reference interpreter of NC IR. It evaluates expressions and control flow
+// and hands every machine op, with its operands evaluated, to a CmdSink (normally the
+// Executor). The JIT must produce exactly the same command stream (tests assert it).
+// Functions are first linearised into a small instruction list (jumps for if/while/loop/goto),
+// so gotos out of nested loops need no special cases.
+#pragma once
+#include "ir/MachineCmd.h"
+#include "ir/NCIR.h"
+#include "passes/ExecLimits.h"
+
+#include <memory>
+
+namespace ncc {
+
+class Executor;
+
+class CmdSink {
+public:
+  virtual ~CmdSink() = default;
+  // Returns false to stop the program (the sink has reported why).
+  virtual bool exec(const MachineCmd &cmd) = 0;
+};
+
+// Forwards commands to an Executor.
+class ExecutorSink : public CmdSink {
+public:
+  explicit ExecutorSink(Executor &e) : exec_(e) {}
+  bool exec(const MachineCmd &cmd) override;
+
+private:
+  Executor &exec_;
+};
+
+class Evaluator {
+public:
+  Evaluator(CmdSink &sink, Diagnostics &diags, const ExecLimits &limits = {});
+  ~Evaluator();
+  // Runs the module's entry function (functions[0]). Returns false on error.
+  bool run(const ir::Module &m);
+  // True once the program reached M2/M30 (stop kind=end|end_rewind).
+  bool ended() const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ncc

@@ -1,0 +1,90 @@
+// Name resolution and type checking. Gives every expression a type (INT, REAL, BOOL, STRING)
+// and reports what no engine could run: unknown functions, wrong arity, strings in arithmetic,
+// calls to programs the module does not have.
+#include "ir/Builtins.h"
+#include "passes/Pass.h"
+
+#include <fmt/format.h>
+
+namespace ncc {
+using namespace ir;
+
+namespace {
+struct Sema {
+  const Module &m;
+  Diagnostics &diags;
+
+  static bool numeric(Type t) { return t == Type::Int || t == Type::Real || t == Type::Bool || t == Type::Unknown; }
+
+  Type expr(Expr &e) {
+    for (auto &a : e.args) expr(*a);
+    switch (e.kind) {
+    case ExprKind::Number: if (e.type == Type::Unknown) e.type = Type::Real; break;
+    case ExprKind::Bool: e.type = Type::Bool; break;
+    case ExprKind::String: e.type = Type::String; break;
+    case ExprKind::Symbol: e.type = Type::Symbol; break;
+    case ExprKind::Vacant: e.type = Type::Real; break;
+    case ExprKind::Var:
+      if (!e.args.empty() && !numeric(e.args[0]->type))
+        diags.error(e.loc, "variable index must be a number");
+      if (e.type == Type::Unknown) e.type = Type::Real;
+      break;
+    case ExprKind::Unary:
+      if (!numeric(e.args[0]->type)) diags.error(e.loc, fmt::format("operand of '{}' must be a number", opCodeName(e.op)));
+      e.type = e.op == OpCode::Not ? Type::Bool : e.args[0]->type == Type::Int ? Type::Int : Type::Real;
+      break;
+    case ExprKind::Binary: {
+      Type a = e.args[0]->type, b = e.args[1]->type;
+      if (e.op == OpCode::Concat) {
+        e.type = Type::String;
+        break;
+      }
+      bool cmp = e.op >= OpCode::Eq && e.op <= OpCode::Ge;
+      if (!(numeric(a) && numeric(b)) && !(cmp && a == Type::String && b == Type::String))
+        diags.error(e.loc, fmt::format("operands of '{}' must be numbers", opCodeName(e.op)));
+      if (cmp || e.op == OpCode::And || e.op == OpCode::Or || e.op == OpCode::Xor) e.type = Type::Bool;
+      else if (a == Type::Int && b == Type::Int && e.op != OpCode::Div && e.op != OpCode::Pow) e.type = Type::Int;
+      else e.type = Type::Real;
+      break;
+    }
+    case ExprKind::Call: {
+      const BuiltinInfo *b = findBuiltin(e.str);
+      if (!b) diags.error(e.loc, fmt::format("unknown function '{}'", e.str));
+      else if (b->arity != e.args.size())
+        diags.error(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, b->arity, e.args.size()));
+      for (auto &a : e.args)
+        if (!numeric(a->type)) diags.error(a->loc, "function argument must be a number");
+      e.type = Type::Real;
+      break;
+    }
+    }
+    return e.type;
+  }
+
+  void region(Region &r) {
+    for (Op &op : r) {
+      for (auto &a : op.args)
+        if (a.value) expr(*a.value);
+      if (op.kind == OpKind::Call) {
+        const Expr *c = op.get("callee");
+        if (!c || !m.find(c->str))
+          diags.error(op.loc, fmt::format("call to unknown program '{}'", c ? c->str : "?"));
+      }
+      if ((op.kind == OpKind::If || op.kind == OpKind::While)) {
+        const Expr *c = op.get("cond");
+        if (c && !numeric(c->type)) diags.error(c->loc, "condition must be a number or boolean");
+      }
+      for (auto &sub : op.regions) region(sub);
+    }
+  }
+};
+}  // namespace
+
+bool runSema(Module &m, Diagnostics &diags, PassContext &) {
+  unsigned before = diags.errorCount();
+  Sema s{m, diags};
+  for (auto &f : m.functions) s.region(f.body);
+  return diags.errorCount() == before;
+}
+
+}  // namespace ncc

@@ -1,0 +1,124 @@
+// ncc compile: stop after a stage and print it (NC IR, Motion IR, LLVM IR, object file);
+// ncc opt: run named passes on a program or on textual NC IR.
+#include "backends/jit/Jit.h"
+#include "passes/Pass.h"
+#include "utils/ncc/Driver.h"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+namespace ncc::driver {
+
+namespace {
+class StringMotionWriter : public MotionSink {
+public:
+  std::string text;
+  void record(const MotionRecord &r) override {
+    text += printMotionRecord(r);
+    text += '\n';
+  }
+};
+
+std::vector<std::string> splitList(const std::string &s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+}  // namespace
+
+int cmdCompile(int argc, char **argv) {
+  Session s;
+  std::string file, emit, out;
+  po::options_description desc("ncc compile options");
+  desc.add_options()
+      ("file", po::value(&file)->required(), "program to compile")
+      ("emit", po::value(&emit)->required(), "what to produce: ir|motion|llvm|obj")
+      ("output,o", po::value(&out), "output file (default: standard output; required for obj)");
+  addCommonOptions(desc, s.opts);
+  po::positional_options_description pos;
+  pos.add("file", 1);
+  po::variables_map vm;
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc compile FILE --emit=ir|motion|llvm|obj [-o OUT]");
+  if (rc >= 0) return rc;
+  if (emit != "ir" && emit != "motion" && emit != "llvm" && emit != "obj") {
+    std::fprintf(stderr, "ncc: error: unknown --emit '%s' (expected ir, motion, llvm or obj)\n", emit.c_str());
+    return kExitUsage;
+  }
+  if (emit == "obj" && (out.empty() || out == "-")) {
+    std::fprintf(stderr, "ncc: error: --emit=obj needs -o FILE\n");
+    return kExitUsage;
+  }
+  if (!s.setUp()) return kExitErrors;
+  uint32_t f = s.open(file);
+  if (!f) return kExitErrors;
+  ir::Module m;
+  if (!s.load(f, m)) return kExitErrors;
+  if (emit == "ir") {
+    writeOutput(s, out, ir::printModule(m));
+  } else if (emit == "motion") {
+    StringMotionWriter w;
+    if (!s.executeModule(m, w)) return kExitErrors;
+    writeOutput(s, out, w.text);
+  } else if (emit == "llvm") {
+    std::string text;
+    if (!jit::emitLLVM(m, text, s.diags)) return kExitErrors;
+    writeOutput(s, out, text);
+  } else {
+    if (!jit::emitObject(m, out, s.diags)) return kExitErrors;
+  }
+  return s.exitCode();
+}
+
+int cmdOpt(int argc, char **argv) {
+  Session s;
+  std::string file, passes, out;
+  bool list = false;
+  po::options_description desc("ncc opt options");
+  desc.add_options()
+      ("file", po::value(&file), "textual NC IR (.ncir) or a program in any dialect")
+      ("passes", po::value(&passes), "comma-separated pass names, run in order")
+      ("list-passes", po::bool_switch(&list), "list the available passes")
+      ("output,o", po::value(&out), "output file (default: standard output)");
+  addCommonOptions(desc, s.opts);
+  po::positional_options_description pos;
+  pos.add("file", 1);
+  po::variables_map vm;
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc opt FILE [--passes=a,b,c] [-o OUT]");
+  if (rc >= 0) return rc;
+  if (list) {
+    unsigned n;
+    const PassInfo *t = passTable(n);
+    for (unsigned i = 0; i < n; ++i) std::printf("  %-14s %s\n", t[i].name, t[i].description);
+    return kExitOk;
+  }
+  if (file.empty()) {
+    std::fprintf(stderr, "ncc: error: no input file\n");
+    return kExitUsage;
+  }
+  if (!s.setUp()) return kExitErrors;
+  uint32_t f = s.open(file);
+  if (!f) return kExitErrors;
+  ir::Module m;
+  if (!s.load(f, m)) return kExitErrors;
+  std::string motion;
+  PassContext ctx;
+  ctx.machine = &s.machine;
+  ctx.limits = s.opts.limits;
+  ctx.motionText = &motion;
+  auto names = splitList(passes);
+  for (auto &n : names)
+    if (!findPass(n)) {
+      std::fprintf(stderr, "ncc: error: unknown pass '%s' (see --list-passes)\n", n.c_str());
+      return kExitUsage;
+    }
+  if (!runPasses(m, names, s.diags, ctx)) return kExitErrors;
+  bool lowered = !names.empty() && names.back() == "lower-motion";
+  writeOutput(s, out, lowered ? motion : ir::printModule(m));
+  return s.exitCode();
+}
+
+}  // namespace ncc::driver

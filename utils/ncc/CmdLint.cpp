@@ -1,0 +1,78 @@
+// ncc lint: front-end, verifier and sema diagnostics, static lint rules, then a run through the
+// executor (discarding motion) for the rules that need modal state. Each rule fires once per
+// source location.
+#include "passes/Eval.h"
+#include "passes/Pass.h"
+#include "runtime/Executor.h"
+#include "utils/ncc/Driver.h"
+
+#include <fmt/format.h>
+
+namespace ncc::driver {
+
+namespace {
+class NullSink : public MotionSink {
+public:
+  void record(const MotionRecord &) override {}
+};
+}  // namespace
+
+int cmdLint(int argc, char **argv) {
+  Session s;
+  std::vector<std::string> files;
+  po::options_description desc("ncc lint options");
+  desc.add_options()("file", po::value(&files)->multitoken(), "programs to check");
+  addCommonOptions(desc, s.opts);
+  po::positional_options_description pos;
+  pos.add("file", -1);
+  po::variables_map vm;
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc lint FILE... [--diagnostics-format=text|json] [-Werror]");
+  if (rc >= 0) return rc;
+  if (files.empty()) {
+    std::fprintf(stderr, "ncc: error: no input files\n");
+    return kExitUsage;
+  }
+  s.diags.setCollect(true);
+  if (!s.setUp()) {
+    for (auto &d : s.diags.collected()) std::fprintf(stderr, "%s\n", s.diags.render(d).c_str());
+    return kExitErrors;
+  }
+  for (auto &path : files) {
+    uint32_t f = s.open(path);
+    if (!f) continue;
+    ir::Module m;
+    unsigned before = s.diags.errorCount();
+    if (!s.load(f, m) || s.diags.errorCount() != before) continue;
+    PassContext ctx;
+    ctx.machine = &s.machine;
+    ctx.limits = s.opts.limits;
+    runLint(m, s.diags, ctx);
+    NullSink sink;
+    Executor exec(s.machine, sink, s.diags);
+    ExecutorSink es(exec);
+    Evaluator ev(es, s.diags, s.opts.limits);
+    ev.run(m);
+    exec.finish();
+  }
+  // Print, dropping repeats of one rule at one location (a loop reports once).
+  std::vector<std::string> seen;
+  bool json = s.opts.diagnosticsFormat == "json";
+  if (json) std::printf("[");
+  bool first = true;
+  for (auto &d : s.diags.collected()) {
+    std::string key = fmt::format("{}:{}:{}:{}:{}", d.loc.file, d.loc.line, d.loc.col, d.rule, d.message);
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+    seen.push_back(key);
+    std::string text = s.diags.render(d);
+    if (json) {
+      std::printf("%s\n  %s", first ? "" : ",", text.c_str());
+      first = false;
+    } else {
+      std::fputs(text.c_str(), stderr);
+    }
+  }
+  if (json) std::printf("\n]\n");
+  return s.diags.hasErrors() ? kExitErrors : kExitOk;
+}
+
+}  // namespace ncc::driver

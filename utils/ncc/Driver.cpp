@@ -1,0 +1,160 @@
+#include "utils/ncc/Driver.h"
+
+#include "backends/jit/Jit.h"
+#include "passes/Eval.h"
+#include "passes/Pass.h"
+#include "runtime/Executor.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+
+namespace ncc::driver {
+
+void addCommonOptions(po::options_description &desc, CommonOptions &o) {
+  desc.add_options()
+      ("machine", po::value(&o.machine)->default_value("default"), "machine description: 'default' or a file")
+      ("dialect", po::value(&o.dialect), "source dialect: iso|sinumerik|heidenhain|cldata|ncir (default: from the file)")
+      ("engine", po::value(&o.engine)->default_value("eval"), "execution engine: eval|jit")
+      ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
+      ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
+      ("max-loop-iterations", po::value(&o.limits.maxLoopIterations)->default_value(o.limits.maxLoopIterations),
+       "stop a loop after this many iterations")
+      ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
+      ("max-seconds", po::value(&o.limits.maxSeconds)->default_value(o.limits.maxSeconds), "run-time limit in seconds")
+      ("diagnostics-format", po::value(&o.diagnosticsFormat)->default_value("text"), "text|json")
+      ("Werror", po::bool_switch(&o.werror), "treat warnings as errors");
+}
+
+int parseArgs(int argc, char **argv, po::options_description &desc, po::positional_options_description &pos,
+              po::variables_map &vm, const char *usage) {
+  desc.add_options()("help,h", "show this help");
+  try {
+    po::store(po::command_line_parser(argc, argv).options(desc).positional(pos).run(), vm);
+    if (vm.count("help")) {
+      std::cout << "usage: " << usage << "\n\n" << desc << "\n";
+      return kExitOk;
+    }
+    po::notify(vm);
+  } catch (const po::error &e) {
+    std::cerr << "ncc: error: " << e.what() << "\nusage: " << usage << "\n";
+    return kExitUsage;
+  }
+  return -1;
+}
+
+bool Session::setUp() {
+  diags.setFormat(opts.diagnosticsFormat == "json" ? Diagnostics::Format::Json : Diagnostics::Format::Text);
+  diags.setWarningsAsErrors(opts.werror);
+  std::string err;
+  if (!Machine::load(opts.machine, machine, err)) {
+    diags.error({}, fmt::format("cannot load machine '{}': {}", opts.machine, err));
+    return false;
+  }
+  if (opts.engine != "eval" && opts.engine != "jit") {
+    diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));
+    return false;
+  }
+  return true;
+}
+
+uint32_t Session::open(const std::string &path) {
+  uint32_t f = sm.addFile(path);
+  if (!f) diags.error({}, fmt::format("cannot read '{}'", path));
+  return f;
+}
+
+SourceKind Session::kindOf(uint32_t file) const {
+  SourceKind k;
+  if (!opts.dialect.empty() && sourceKindFromName(opts.dialect, k)) return k;
+  return detectSourceKind(sm.name(file), sm.text(file));
+}
+
+FrontendOptions Session::frontendOptions(uint32_t file) const {
+  FrontendOptions fo;
+  fo.decimalMode = opts.decimalMode.empty() ? machine.decimalMode : opts.decimalMode;
+  for (unsigned l : opts.blockDelete)
+    if (l <= 9) fo.blockDeleteMask |= 1u << l;
+  fo.searchDirs.push_back(std::filesystem::path(sm.name(file)).parent_path().string());
+  if (fo.searchDirs.back().empty()) fo.searchDirs.back() = ".";
+  return fo;
+}
+
+bool Session::load(uint32_t file, ir::Module &out) {
+  if (!opts.dialect.empty()) {
+    SourceKind k;
+    if (!sourceKindFromName(opts.dialect, k)) {
+      diags.error({}, fmt::format("unknown dialect '{}'", opts.dialect));
+      return false;
+    }
+  }
+  if (!parseProgram(kindOf(file), sm, file, frontendOptions(file), diags, out) || diags.hasErrors()) return false;
+  PassContext ctx;
+  ctx.machine = &machine;
+  ctx.limits = opts.limits;
+  return runPasses(out, {"verify", "sema"}, diags, ctx);
+}
+
+bool Session::executeModule(const ir::Module &m, MotionSink &sink) {
+  Executor exec(machine, sink, diags);
+  bool ok;
+  if (opts.engine == "jit") {
+    jit::JitOptions jo;
+    jo.limits = opts.limits;
+    ok = jit::runModule(m, exec, diags, jo);
+  } else {
+    ExecutorSink es(exec);
+    Evaluator ev(es, diags, opts.limits);
+    ok = ev.run(m);
+  }
+  ok &= exec.finish();
+  return ok && !diags.hasErrors();
+}
+
+bool Session::execute(uint32_t file, MotionSink &sink) {
+  SourceKind kind = kindOf(file);
+  if (opts.engine == "eval") {
+    if (auto stream = openBlockStream(kind, sm, file, frontendOptions(file), diags)) {
+      // Flat program: parse, check and run a chunk of blocks at a time.
+      Executor exec(machine, sink, diags);
+      ExecutorSink es(exec);
+      Evaluator ev(es, diags, opts.limits);
+      PassContext ctx;
+      ctx.machine = &machine;
+      ir::Module chunk;
+      chunk.name = sm.name(file);
+      chunk.functions.emplace_back();
+      chunk.functions[0].name = "main";
+      bool more = true;
+      while (more && !ev.ended()) {
+        chunk.functions[0].body.clear();
+        more = stream->next(chunk.functions[0].body, 4096);
+        if (diags.hasErrors()) return false;
+        if (!runPasses(chunk, {"verify", "sema"}, diags, ctx)) return false;
+        if (!ev.run(chunk)) return false;
+      }
+      bool ok = exec.finish();
+      return ok && !diags.hasErrors();
+    }
+    if (diags.hasErrors()) return false;
+  }
+  ir::Module m;
+  if (!load(file, m)) return false;
+  return executeModule(m, sink);
+}
+
+bool writeOutput(Session &s, const std::string &path, const std::string &text) {
+  if (path.empty() || path == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return true;
+  }
+  std::string err;
+  if (!writeFileAtomic(path, text, err)) {
+    s.diags.error({}, err);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc::driver

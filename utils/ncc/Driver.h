@@ -1,0 +1,78 @@
+// The ncc driver: one binary, subcommands (run, compile, opt, translate, lint, canon-diff,
+// machine). This header holds what the subcommands share: the session (sources, diagnostics,
+// machine) and the pipeline from a source file to a Motion IR sink.
+#pragma once
+#include "frontend/Frontend.h"
+#include "ir/Diagnostics.h"
+#include "ir/MotionIR.h"
+#include "ir/NCIR.h"
+#include "passes/ExecLimits.h"
+#include "runtime/Machine.h"
+
+#include <boost/program_options.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ncc::driver {
+
+namespace po = boost::program_options;
+
+// Exit codes (README "Exit codes").
+constexpr int kExitOk = 0, kExitErrors = 1, kExitUsage = 2;
+
+struct CommonOptions {
+  std::string machine = "default";
+  std::string dialect;  // empty = detect
+  std::string engine = "eval";
+  std::string decimalMode;  // empty = the machine's
+  std::vector<unsigned> blockDelete;
+  ExecLimits limits;
+  std::string diagnosticsFormat = "text";
+  bool werror = false;
+};
+
+// Adds the options every program-reading subcommand takes.
+void addCommonOptions(po::options_description &desc, CommonOptions &o);
+
+class Session {
+public:
+  Session() : diags(sm) {}
+  SourceManager sm;
+  Diagnostics diags;
+  Machine machine;
+  CommonOptions opts;
+
+  // Applies opts (machine, diagnostics format). Reports and returns false on failure.
+  bool setUp();
+  // Reads a source file; 0 after reporting when it cannot be read.
+  uint32_t open(const std::string &path);
+  SourceKind kindOf(uint32_t file) const;
+  FrontendOptions frontendOptions(uint32_t file) const;
+  // Front end + verifier + sema: the module every engine and backend starts from.
+  bool load(uint32_t file, ir::Module &out);
+  // Runs a program to a Motion IR sink with the chosen engine. Flat programs are streamed
+  // block by block (eval engine) so memory stays bounded.
+  bool execute(uint32_t file, MotionSink &sink);
+  // The same for an already-loaded module.
+  bool executeModule(const ir::Module &m, MotionSink &sink);
+
+  int exitCode() const { return diags.hasErrors() ? kExitErrors : kExitOk; }
+};
+
+// Output helper: writes `text` to `path` atomically, or to stdout for "" / "-".
+bool writeOutput(Session &s, const std::string &path, const std::string &text);
+
+// Parses argv for a subcommand; prints help/usage errors. Returns -1 to continue, else an exit code.
+int parseArgs(int argc, char **argv, po::options_description &desc, po::positional_options_description &pos,
+              po::variables_map &vm, const char *usage);
+
+int cmdRun(int argc, char **argv);
+int cmdCompile(int argc, char **argv);
+int cmdOpt(int argc, char **argv);
+int cmdTranslate(int argc, char **argv);
+int cmdLint(int argc, char **argv);
+int cmdCanonDiff(int argc, char **argv);
+int cmdMachine(int argc, char **argv);
+
+}  // namespace ncc::driver
