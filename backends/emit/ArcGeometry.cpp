@@ -47,6 +47,36 @@ static bool centerFromRadius(const double s[2], const double e[2], double r, boo
   return false;
 }
 
+static double radiusMismatch(const double s[2], const double e[2], const double off[2]) {
+  double c[2] = {s[0] + off[0], s[1] + off[1]};
+  return std::fabs(std::hypot(c[0] - s[0], c[1] - s[1]) - std::hypot(c[0] - e[0], c[1] - e[1]));
+}
+
+// Of the four output-grid points around the centre: the nearest whose radii to the rounded ends
+// agree within `limit`, else the one that agrees best (rounding alone can add 0.7 units of the
+// last digit to the mismatch).
+static void pickOffsets(const double s[2], const double e[2], const double cc[2], int decimals, double limit,
+                        double out[2]) {
+  double unit = std::pow(10.0, -decimals);
+  double fx = std::floor((cc[0] - s[0]) / unit), fy = std::floor((cc[1] - s[1]) / unit);
+  double bestMismatch = INFINITY, bestDist = INFINITY;
+  bool bestOk = false;
+  for (int i = 0; i < 4; ++i) {
+    double off[2] = {roundTo((fx + (i & 1)) * unit, decimals), roundTo((fy + (i >> 1)) * unit, decimals)};
+    double m = radiusMismatch(s, e, off);
+    double d = std::hypot(s[0] + off[0] - cc[0], s[1] + off[1] - cc[1]);
+    bool ok = m <= limit;
+    bool better = ok ? (!bestOk || d < bestDist) : (!bestOk && m < bestMismatch);
+    if (better) {
+      bestOk = ok;
+      bestMismatch = m;
+      bestDist = d;
+      out[0] = off[0];
+      out[1] = off[1];
+    }
+  }
+}
+
 ArcWords planArc(const double s[2], const double e[2], const double c[2], bool ccw, bool fullCircle,
                  bool preferRadius, const NumberFormat &centerFormat, double tolerance) {
   ArcWords w;
@@ -71,8 +101,12 @@ ArcWords planArc(const double s[2], const double e[2], const double c[2], bool c
       cc[1] = c[1] + k * (onBisector[1] - c[1]);
     }
   }
-  w.offset[0] = roundTo(cc[0] - s[0], centerFormat.decimals);
-  w.offset[1] = roundTo(cc[1] - s[1], centerFormat.decimals);
+  double limit = 0.9 * tolerance;
+  pickOffsets(s, e, cc, centerFormat.decimals, limit, w.offset);
+  if (!fullCircle && chord > 0 && radiusMismatch(s, e, w.offset) > limit) {
+    // Coarse centre format: only the centre on the bisector leaves room for its rounding.
+    pickOffsets(s, e, onBisector, centerFormat.decimals, limit, w.offset);
+  }
   if (!preferRadius || fullCircle || chord == 0) return w;
 
   // R form: the controller puts the centre on the bisector; use it only when that centre,
@@ -82,7 +116,7 @@ ArcWords planArc(const double s[2], const double e[2], const double c[2], bool c
   double rr = roundTo(r, centerFormat.decimals);
   double rebuilt[2];
   if (!centerFromRadius(s, e, rr, ccw, rebuilt)) return w;
-  if (std::hypot(rebuilt[0] - c[0], rebuilt[1] - c[1]) > tolerance / 2) return w;
+  if (std::hypot(rebuilt[0] - c[0], rebuilt[1] - c[1]) > tolerance / 4) return w;
   w.useRadius = true;
   w.radius = rr;
   return w;

@@ -23,10 +23,11 @@ struct ArcWords {
 };
 
 // s and e are the rounded start and end (in-plane), c the exact centre. The offsets keep the
-// exact centre (rounded) unless the two rounded ends then differ in radius by more than 3/4 of
+// exact centre unless the two rounded ends then differ in radius by more than 3/4 of
 // `tolerance` (the controller's arc check); then the centre moves towards the perpendicular
-// bisector of the rounded chord just enough. With preferRadius, the R form is used when the
-// centre a controller rebuilds from the rounded R is within tolerance/2 of the exact centre and
+// bisector of the rounded chord just enough. Of the output-grid points next to that centre the
+// one with the best radius agreement is written. With preferRadius, the R form is used when the
+// centre a controller rebuilds from the rounded R is within tolerance/4 of the exact centre and
 // the arc is not a full circle.
 ArcWords planArc(const double s[2], const double e[2], const double c[2], bool ccw, bool fullCircle,
                  bool preferRadius, const NumberFormat &centerFormat, double tolerance);

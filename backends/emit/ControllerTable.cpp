@@ -93,6 +93,21 @@ int choose(const std::string &v, std::initializer_list<const char *> names) {
   return -1;
 }
 
+// "a | b" -> {"a", "b"}; "none" or empty -> {}.
+std::vector<std::string> splitBlocks(const std::string &v) {
+  std::vector<std::string> out;
+  if (optText(v).empty()) return out;
+  size_t p = 0;
+  while (p <= v.size()) {
+    size_t q = v.find('|', p);
+    if (q == std::string::npos) q = v.size();
+    std::string blk = trim(v.substr(p, q - p));
+    if (!blk.empty()) out.push_back(blk);
+    p = q + 1;
+  }
+  return out;
+}
+
 using Setter = std::function<bool(const std::string &, ControllerStyle &)>;
 struct KeyDef {
   const char *key;
@@ -145,8 +160,19 @@ const std::vector<KeyDef> &keyTable() {
       {"comment_style", "paren or semicolon",
        enumSetter(&ControllerStyle::commentStyle, {"paren", "semicolon"})},
       {"message_style", "paren or msg", enumSetter(&ControllerStyle::messageStyle, {"paren", "msg"})},
-      {"block_numbers", "off, renumber or source",
-       enumSetter(&ControllerStyle::numbering, {"off", "renumber", "source"})},
+      {"block_numbers", "off, renumber or source (or yes/no)",
+       [](const std::string &v, ControllerStyle &s) {
+         bool b;
+         int k = choose(v, {"off", "renumber", "source"});
+         if (k < 0 && parseBool(v, b)) k = b ? 1 : 0;
+         return k >= 0 ? (s.numbering = (Numbering)k, true) : false;
+       }},
+      {"block_every", "1..1000", intSetter(1, 1000, [](ControllerStyle &s, int64_t x) { s.blockEvery = (int)x; })},
+      {"line_ending", "lf or crlf",
+       [](const std::string &v, ControllerStyle &s) {
+         int k = choose(v, {"lf", "crlf"});
+         return k >= 0 ? (s.lineEnding = k ? "\r\n" : "\n", true) : false;
+       }},
       {"block_start", "0..999999999",
        intSetter(0, 999999999, [](ControllerStyle &s, int64_t x) { s.blockStart = x; })},
       {"block_step", "1..100000", intSetter(1, 100000, [](ControllerStyle &s, int64_t x) { s.blockStep = x; })},
@@ -161,29 +187,16 @@ const std::vector<KeyDef> &keyTable() {
          int k = choose(v, {"none", "semicolon"});
          return k >= 0 ? (s.endOfBlock = k ? ";" : "", true) : false;
        }},
-      {"tape_delimiter", "percent or none",
-       [](const std::string &v, ControllerStyle &s) {
-         int k = choose(v, {"percent", "none"});
-         return k >= 0 ? (s.tapeDelimiter = k ? "" : "%", true) : false;
-       }},
+      {"program_header", "lines separated by |",
+       [](const std::string &v, ControllerStyle &s) { return s.programHeader = splitBlocks(v), true; }},
+      {"program_footer", "lines separated by |",
+       [](const std::string &v, ControllerStyle &s) { return s.programFooter = splitBlocks(v), true; }},
       {"program_number", "yes or no",
        [](const std::string &v, ControllerStyle &s) { return parseBool(v, s.programNumber); }},
       {"program_number_digits", "1..8",
        intSetter(1, 8, [](ControllerStyle &s, int64_t x) { s.programNumberDigits = (int)x; })},
-      {"header", "blocks separated by |",
-       [](const std::string &v, ControllerStyle &s) {
-         s.header.clear();
-         if (optText(v).empty()) return true;
-         size_t p = 0;
-         while (p <= v.size()) {
-           size_t q = v.find('|', p);
-           if (q == std::string::npos) q = v.size();
-           std::string blk = trim(v.substr(p, q - p));
-           if (!blk.empty()) s.header.push_back(blk);
-           p = q + 1;
-         }
-         return true;
-       }},
+      {"setup_blocks", "blocks separated by |",
+       [](const std::string &v, ControllerStyle &s) { return s.setup = splitBlocks(v), true; }},
   };
   return table;
 }
@@ -247,7 +260,7 @@ ControllerStyle defaultStyle(Target t) {
 
   if (iso) {
     s.arcStyle = ArcStyle::IJK;
-    s.helixTurns = HelixTurns::Split;
+    s.helixTurns = HelixTurns::Word;  // G2/G3 P<turns>: LinuxCNC and ncc read it; 808D may not
     s.radiusWord = "R";
     s.turnsWord = "P";
     s.turnsOffset = 0;
@@ -255,10 +268,11 @@ ControllerStyle defaultStyle(Target t) {
     s.commentStyle = CommentStyle::Paren;
     s.messageStyle = MessageStyle::ParenMsg;
     s.numbering = Numbering::Off;
-    s.tapeDelimiter = "%";
+    s.programHeader = {"%"};
+    s.programFooter = {"%"};
     s.programNumber = true;
     // 808D: G20/G21 must stand alone in their block (seed 001 §2.2).
-    s.header = {"G21", "G90 G17 G94 G54"};
+    s.setup = {"G21", "G90 G17 G94 G54"};
   } else {
     s.arcStyle = ArcStyle::IJK;
     s.helixTurns = HelixTurns::Word;
@@ -271,7 +285,7 @@ ControllerStyle defaultStyle(Target t) {
     s.messageStyle = MessageStyle::MsgCall;
     s.numbering = Numbering::Renumber;
     s.programNumber = false;
-    s.header = {"G71 G90 G17 G94 G500"};
+    s.setup = {"G71 G90 G17 G94 G500"};
   }
   return s;
 }
@@ -306,6 +320,21 @@ bool applyMachineSection(const Machine &m, ControllerStyle &style, Diagnostics &
           if (key.substr(5) == d.key) {
             known = true;
             style.codes[(size_t)d.code] = optText(value);
+          }
+      }
+      if (!known && key.rfind("format.", 0) == 0) {
+        // format.<LETTER> = decimals (the letter's word class; classes share one setting).
+        static const std::pair<const char *, WordClass> letters[] = {
+            {"x", WordClass::Axis},   {"y", WordClass::Axis},   {"z", WordClass::Axis},   {"a", WordClass::Rotary},
+            {"b", WordClass::Rotary}, {"c", WordClass::Rotary}, {"i", WordClass::Center}, {"j", WordClass::Center},
+            {"k", WordClass::Center}, {"r", WordClass::Center}, {"cr", WordClass::Center}, {"f", WordClass::Feed},
+            {"s", WordClass::Speed},  {"p", WordClass::Dwell}};
+        for (auto &[l, cls] : letters)
+          if (key.substr(7) == l) {
+            known = true;
+            int64_t n;
+            if (!parseInt(value, 0, 9, n)) bad(key, value, "decimals 0..9");
+            else style.formats[(size_t)cls].decimals = (int)n;
           }
       }
       if (!known && !applyFormatKey(key, value, style, known)) bad(key, value, "a number or yes/no");

@@ -55,14 +55,17 @@ struct ControllerStyle {
 
   Numbering numbering = Numbering::Off;
   int64_t blockStart = 10, blockStep = 10;
+  int blockEvery = 1;            // number every Nth block only
   int blockDigits = 0;
   std::string separator = " ";
   std::string endOfBlock;        // e.g. ";" (Fanuc EOB style)
+  std::string lineEnding = "\n";
 
-  std::string tapeDelimiter;     // "%" lines around an ISO program
+  std::vector<std::string> programHeader;  // verbatim first lines ("%")
+  std::vector<std::string> programFooter;  // verbatim last lines ("%")
   bool programNumber = false;    // O0001 line
   int programNumberDigits = 4;
-  std::vector<std::string> header;  // header blocks, each a list of words
+  std::vector<std::string> setup;  // set-up blocks after the header, each a list of words
 };
 
 // Defaults of a controller (before the machine description is applied).

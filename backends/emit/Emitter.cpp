@@ -21,13 +21,13 @@ class LineSink {
 public:
   explicit LineSink(std::string *s) : str_(s) {}
   explicit LineSink(std::FILE *f) : file_(f) {}
-  void line(const std::string &text) {
+  void line(const std::string &text, const std::string &eol) {
     if (str_) {
       *str_ += text;
-      *str_ += '\n';
+      *str_ += eol;
     } else if (file_) {
       std::fputs(text.c_str(), file_);
-      std::fputc('\n', file_);
+      std::fputs(eol.c_str(), file_);
     }
   }
   bool failed() const { return file_ && std::ferror(file_); }
@@ -64,7 +64,7 @@ private:
   }
   void writeBlock(const Words &words, int64_t sourceN);
   void writeLine(const std::string &text) {
-    out_.line(text);
+    out_.line(text, st_.lineEnding);
     ++blocks_;
   }
 
@@ -90,7 +90,7 @@ private:
   LineSink out_;
   Diagnostics &diags_;
   int64_t nextN_;
-  uint64_t blocks_ = 0;
+  uint64_t blocks_ = 0, numberedCount_ = 0;
   bool errors_ = false, ended_ = false, finished_ = false;
 
   Words pending_;
@@ -127,8 +127,10 @@ void Emitter::writeBlock(const Words &words, int64_t sourceN) {
   if (words.empty()) return;
   std::string line;
   if (st_.numbering == Numbering::Renumber) {
-    line = "N" + formatInteger(nextN_, st_.blockDigits);
-    nextN_ += st_.blockStep;
+    if (numberedCount_++ % st_.blockEvery == 0) {
+      line = "N" + formatInteger(nextN_, st_.blockDigits);
+      nextN_ += st_.blockStep;
+    }
   } else if (st_.numbering == Numbering::Source && sourceN >= 0) {
     line = "N" + formatInteger(sourceN, st_.blockDigits);
   }
@@ -141,18 +143,21 @@ void Emitter::writeBlock(const Words &words, int64_t sourceN) {
 }
 
 void Emitter::writeHeader() {
-  if (!st_.tapeDelimiter.empty()) writeLine(st_.tapeDelimiter);
-  const std::string &name = opts_.programName;
-  bool numeric = !name.empty() && name.size() <= 8;
-  for (char c : name) numeric &= std::isdigit((unsigned char)c) != 0;
+  for (const std::string &l : st_.programHeader) writeLine(l);
+  // The program is named after the file: "1234.nc" becomes O1234, other names a comment.
+  std::string name = opts_.programName;
+  if (size_t slash = name.find_last_of("/\\"); slash != std::string::npos) name = name.substr(slash + 1);
+  std::string stem = name.substr(0, name.find('.'));
+  bool numeric = !stem.empty() && stem.size() <= (size_t)st_.programNumberDigits;
+  for (char c : stem) numeric &= std::isdigit((unsigned char)c) != 0;
   if (st_.programNumber) {
-    std::string line = "O" + formatInteger(numeric ? std::stoll(name) : 1, st_.programNumberDigits);
+    std::string line = "O" + formatInteger(numeric ? std::stoll(stem) : 1, st_.programNumberDigits);
     if (!numeric && !name.empty()) line += " (" + sanitizeText(name, "()", "[]") + ")";
     writeLine(line);
   } else if (!name.empty()) {
     comment(name);
   }
-  for (const std::string &blk : st_.header) writeBlock({blk}, -1);
+  for (const std::string &blk : st_.setup) writeBlock({blk}, -1);
 }
 
 void Emitter::addPending(PendingGroup g, const std::string &word, const MotionRecord &r) {
@@ -443,9 +448,14 @@ bool Emitter::finish(Diagnostics &diags) {
   if (finished_) return !errors_;
   finished_ = true;
   flushPending();
-  // A program needs an end; the source stream had none (the executor warned about it).
-  if (!ended_) writeBlock({code(Code::EndM30)}, -1);
-  if (!st_.tapeDelimiter.empty()) writeLine(st_.tapeDelimiter);
+  // A footer line repeating the end code ("M30") is not written twice; a program without an
+  // end (the executor warned about it) gets one.
+  auto isEnd = [&](const std::string &l) { return l == code(Code::EndM30) || l == code(Code::EndM2); };
+  bool footerEnds = false;
+  for (const std::string &l : st_.programFooter) footerEnds |= isEnd(l);
+  if (!ended_ && !footerEnds) writeBlock({code(Code::EndM30)}, -1);
+  for (const std::string &l : st_.programFooter)
+    if (!(ended_ && isEnd(l))) writeLine(l);
   if (out_.failed()) {
     diags.error(SourceLoc{}, "error writing the emitted program", "emit");
     errors_ = true;
