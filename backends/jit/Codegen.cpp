@@ -118,9 +118,11 @@ void Codegen::ensureOpen() {
   if (B.GetInsertBlock()->getTerminator()) B.SetInsertPoint(newBlock("dead"));
 }
 
-Value *Codegen::allocaEntry(Type *t, const char *name) {
+Value *Codegen::allocaEntry(Type *t, const char *name, Constant *init) {
   IRBuilder<> tmp(entryBB, entryBB->begin());
-  return tmp.CreateAlloca(t, nullptr, name);
+  Value *a = tmp.CreateAlloca(t, nullptr, name);
+  if (init) tmp.CreateStore(init, a);
+  return a;
 }
 
 Constant *Codegen::cstring(const std::string &s) {

@@ -211,11 +211,11 @@ void Codegen::emitIf(const Op &op) {
 // The latch (also the target of continue) counts the iteration: reaching maxLoopIterations is
 // the error, as in the eval engine.
 void Codegen::emitLoop(const Op &op) {
-  Value *counter = allocaEntry(i64Ty, "loop.count");
+  Value *counter = allocaEntry(i64Ty, "loop.count", B.getInt64(0));
   B.CreateStore(B.getInt64(0), counter);
   Value *remaining = nullptr;
   if (op.kind == OpKind::Loop) {
-    remaining = allocaEntry(dblTy, "loop.remaining");
+    remaining = allocaEntry(dblTy, "loop.remaining", ConstantFP::get(dblTy, 0.0));
     const Expr *count = op.get("count");
     B.CreateStore(count ? roundOf(numOf(expr(*count))) : ConstantFP::get(dblTy, -1.0), remaining);
   }
@@ -307,6 +307,7 @@ void Codegen::emitCall(const Op &op) {
     B.CreateCondBr(B.CreateICmpSLT(i, limit), body, done);
     B.SetInsertPoint(body);
     B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
+    emitTimeCheck(op.loc);  // count=1e308 must not outlive --max-seconds
   }
   Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
   const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);

@@ -64,7 +64,9 @@ private:
   llvm::BasicBlock *newBlock(const char *name);
   void startBlock(llvm::BasicBlock *bb);  // falls through from an open current block
   void ensureOpen();                      // after a terminator: continue in a dead block
-  llvm::Value *allocaEntry(llvm::Type *t, const char *name);
+  // An entry-block slot; `init` is stored at function entry (loop state is 0 there, as in the
+  // eval engine, for gotos that jump into a loop body without entering the loop).
+  llvm::Value *allocaEntry(llvm::Type *t, const char *name, llvm::Constant *init = nullptr);
   void checkStatus(llvm::Value *status);  // returns the status when it is not NCRT_OK
   void failIf(llvm::Value *cond, SourceLoc loc, const std::string &msg);
   void fail(SourceLoc loc, const std::string &msg);  // unconditional; continues in a dead block

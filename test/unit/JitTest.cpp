@@ -132,7 +132,7 @@ std::unique_ptr<Run> run(const Module &m, jit::JitOptions opts = {}) {
   EXPECT_EQ(r->errors(), ref.errors());
   for (size_t i = 0; i < r->diags.collected().size() && i < ref.diags.collected().size(); ++i)
     EXPECT_EQ(r->diags.collected()[i].loc.line, ref.diags.collected()[i].loc.line) << i;
-  EXPECT_EQ(r->rec.cmds.size(), ref.rec.cmds.size());
+  EXPECT_EQ(r->rec.cmds.size(), ref.rec.cmds.size()) << "jit: " << r->errors() << "eval: " << ref.errors() << (r->rec.cmds.empty() ? -1 : (int)r->rec.cmds[0].kind);
   for (size_t i = 0; i < r->rec.cmds.size() && i < ref.rec.cmds.size(); ++i) {
     std::string d = diffCmd(r->rec.cmds[i], r->rec.texts[i], ref.rec.cmds[i], ref.rec.texts[i]);
     EXPECT_EQ(d, "") << "command " << i;
@@ -371,6 +371,14 @@ TEST(Jit, LimitsProduceErrors) {
     EXPECT_FALSE(jit::runModule(m, rec, diags, opts));  // (timing differs from eval: not compared)
     ASSERT_EQ(diags.collected().size(), 1u);
     EXPECT_EQ(diags.collected()[0].message, "run time limit of 0.05 s exceeded (limit --max-seconds)");
+    // Call repetitions are time-checked too (count=1e308 of a cheap subprogram).
+    Module c = module(reg(mk(OpKind::Call, L(4), "callee", Expr::string("O2"), "count", N(1e308))));
+    addFunction(c, "O2", reg(assign(1, N(1))));
+    Diagnostics d2(sm);
+    d2.setCollect(true);
+    EXPECT_FALSE(jit::runModule(c, rec, d2, opts));
+    ASSERT_EQ(d2.collected().size(), 1u);
+    EXPECT_EQ(d2.collected()[0].loc.line, 4u);
   }
 }
 
@@ -484,4 +492,96 @@ TEST(Ncrt, PackedCommandsRoundTrip) {
   // A truncated stream is an internal error, not a crash.
   EXPECT_EQ(ncrt_exec_packed(&ctx, (const uint8_t *)bytes.data(), bytes.size() - 3), NCRT_ERROR);
   EXPECT_EQ(r.errors(), "internal error: malformed packed command table\n");
+}
+
+// Random programs (expressions over vacant/zero/negative values, loops, ifs, gotos, calls):
+// both engines must agree on every command and every diagnostic.
+namespace {
+struct RandomProgram {
+  uint64_t state;
+  explicit RandomProgram(uint64_t seed) : state(seed * 0x9e3779b97f4a7c15ull + 1) {}
+  unsigned pick(unsigned n) {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return (unsigned)(state % n);
+  }
+  ExprPtr leaf() {
+    static const double kNums[] = {0, 1, -1, 2.5, -7, 3, 100, 0.36, 1e308};
+    static const int kVars[] = {1, 2, 3, 4, 33, 100, 500, 0};
+    switch (pick(4)) {
+    case 0: return N(kNums[pick(9)]);
+    case 1: return Expr::vacant(L(2));
+    default: return Var(kVars[pick(8)], L(3, pick(9)));
+    }
+  }
+  ExprPtr expr(int depth) {
+    if (depth <= 0 || pick(3) == 0) return leaf();
+    static const OpCode kOps[] = {OpCode::Add, OpCode::Sub, OpCode::Mul, OpCode::Div, OpCode::Mod, OpCode::Pow,
+                                  OpCode::Eq,  OpCode::Ne,  OpCode::Lt,  OpCode::Ge,  OpCode::And, OpCode::Or,
+                                  OpCode::Xor, OpCode::IDiv};
+    static const char *kFns[] = {"SIN", "COS", "SQRT", "ABS", "FIX", "FUP", "ROUND", "ATAN2", "LN"};
+    switch (pick(5)) {
+    case 0: return Expr::unary(pick(2) ? OpCode::Neg : OpCode::Not, expr(depth - 1), L(4));
+    case 1: {
+      const char *fn = kFns[pick(9)];
+      std::vector<ExprPtr> args;
+      args.push_back(expr(depth - 1));
+      if (!std::strcmp(fn, "ATAN2")) args.push_back(expr(depth - 1));
+      return Expr::call(fn, std::move(args), L(5));
+    }
+    case 2: return VarAt(expr(depth - 1));
+    default: return Bin(kOps[pick(14)], expr(depth - 1), expr(depth - 1), L(6, pick(50)));
+    }
+  }
+  Region body(int depth, int &blocks) {
+    Region r;
+    unsigned n = 2 + pick(5);
+    for (unsigned i = 0; i < n; ++i) {
+      switch (depth > 0 ? pick(8) : pick(4)) {
+      case 0: r.push_back(mk(OpKind::Assign, L(7), "target", Var((int)(1 + pick(4))), "value", expr(3))); break;
+      case 1: r.push_back(mk(OpKind::Move, L(8), "X", expr(2), "Y", expr(2), "Z", N(pick(5)))); break;
+      case 2: r.push_back(block(++blocks)); break;
+      case 3: r.push_back(mk(OpKind::Assign, L(9), "target", VarAt(expr(1)), "value", expr(2))); break;
+      case 4: {
+        Op w = mk(OpKind::Loop, L(10), "count", expr(1));
+        w.regions.push_back(body(depth - 1, blocks));
+        r.push_back(std::move(w));
+        break;
+      }
+      case 5: {
+        Op f = mk(OpKind::If, L(11), "cond", expr(2));
+        f.regions.push_back(body(depth - 1, blocks));
+        if (pick(2)) f.regions.push_back(body(depth - 1, blocks));
+        r.push_back(std::move(f));
+        break;
+      }
+      case 6:
+        if (blocks > 0) r.push_back(mk(OpKind::Goto, L(12), "n", N(1 + pick(blocks + 1))));
+        break;
+      default:
+        r.push_back(mk(OpKind::Call, L(13), "callee", Expr::string("O1"), "frame", Sym(pick(2) ? "new" : "shared"),
+                       "count", N(pick(3)), "a.1", expr(1), "a.2", expr(1)));  // huge counts never end
+        break;
+      }
+    }
+    return r;
+  }
+};
+}  // namespace
+
+TEST(Jit, RandomProgramsMatchEval) {
+  jit::JitOptions opts;
+  opts.limits.maxLoopIterations = 50;
+  opts.limits.maxCallDepth = 4;
+  for (uint64_t seed = 1; seed <= 150; ++seed) {
+    RandomProgram g(seed);
+    int blocks = 0;
+    Module m = module(g.body(2, blocks));
+    int subBlocks = 0;
+    addFunction(m, "O1", g.body(1, subBlocks));
+    SCOPED_TRACE("seed " + std::to_string(seed) + "\n" + printModule(m));
+    run(m, opts);  // compares both engines
+    if (::testing::Test::HasFailure()) break;
+  }
 }
