@@ -509,9 +509,11 @@ struct RandomProgram {
   ExprPtr leaf() {
     static const double kNums[] = {0, 1, -1, 2.5, -7, 3, 100, 0.36, 1e308};
     static const int kVars[] = {1, 2, 3, 4, 33, 100, 500, 0};
-    switch (pick(4)) {
+    switch (pick(6)) {
     case 0: return N(kNums[pick(9)]);
     case 1: return Expr::vacant(L(2));
+    case 2: return Named(pick(2) ? "a" : "b", pick(2) ? VarSpace::Local : VarSpace::Global);
+    case 3: return Expr::var(VarSpace::RParam, "", N(pick(3)), L(3));
     default: return Var(kVars[pick(8)], L(3, pick(9)));
     }
   }
@@ -538,7 +540,7 @@ struct RandomProgram {
     Region r;
     unsigned n = 2 + pick(5);
     for (unsigned i = 0; i < n; ++i) {
-      switch (depth > 0 ? pick(8) : pick(4)) {
+      switch (depth > 0 ? pick(11) : pick(4)) {
       case 0: r.push_back(mk(OpKind::Assign, L(7), "target", Var((int)(1 + pick(4))), "value", expr(3))); break;
       case 1: r.push_back(mk(OpKind::Move, L(8), "X", expr(2), "Y", expr(2), "Z", N(pick(5)))); break;
       case 2: r.push_back(block(++blocks)); break;
@@ -558,6 +560,20 @@ struct RandomProgram {
       }
       case 6:
         if (blocks > 0) r.push_back(mk(OpKind::Goto, L(12), "n", N(1 + pick(blocks + 1))));
+        break;
+      case 7: {
+        Op w = mk(OpKind::While, L(14), "cond", expr(2));
+        w.regions.push_back(body(depth - 1, blocks));
+        if (pick(2)) w.regions[0].push_back(Op(pick(2) ? OpKind::Break : OpKind::Continue, L(15)));
+        r.push_back(std::move(w));
+        break;
+      }
+      case 8:
+        r.push_back(mk(OpKind::Assign, L(16), "target", Named(pick(2) ? "a" : "b", pick(2) ? VarSpace::Local : VarSpace::Global),
+                       "value", expr(2)));
+        break;
+      case 9:
+        r.push_back(mk(OpKind::Assign, L(17), "target", Expr::var(VarSpace::RParam, "", expr(1), L(17)), "value", expr(2)));
         break;
       default:
         r.push_back(mk(OpKind::Call, L(13), "callee", Expr::string("O1"), "frame", Sym(pick(2) ? "new" : "shared"),
