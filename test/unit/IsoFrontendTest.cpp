@@ -102,6 +102,14 @@ TEST(IsoBlockParser, EmptyAndPercentLines) {
   EXPECT_EQ(b.programNumber, 1234);
 }
 
+TEST(IsoProgram, CrLfAndByteOrderMark) {
+  Parsed p("\xEF\xBB\xBFO100\r\nG1 X1 ; c\r\n(n)\r\nM30\r\n");
+  ASSERT_TRUE(p.ok) << p.firstError();
+  EXPECT_NE(p.text.find("comment text=\"c\" loc(1:2:7)"), std::string::npos) << p.text;
+  EXPECT_NE(p.text.find("comment text=\"n\" loc(1:3:1)"), std::string::npos) << p.text;
+  EXPECT_TRUE(isoIsStreamable("\xEF\xBB\xBFO100\r\nG1 X1\r\n"));
+}
+
 TEST(IsoBlockParser, BlockSkipLevels) {
   SourceManager sm;
   Diagnostics d(sm);
