@@ -136,6 +136,11 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
         ok = false;
         continue;
       }
+      if (gi->code10 == 760 && flavour_ == Flavour::RS274) {  // LinuxCNC G76 is threading
+        diags_.error(w.loc, "G76 (RS274NGC threading cycle) is not supported", "unsupported-code");
+        ok = false;
+        continue;
+      }
       if (gi->kind == GKind::Unsupported) {
         diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
                      "unsupported-code");
