@@ -245,7 +245,12 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
 
   modeOp(GGroup::FeedMode, "feed_mode");
   if (!macroCall) {
-    if (bw.has('F')) emit(OpKind::Feed, bw.get('F')->loc).set("value", take('F', Scale::Feed));
+    if (bw.has('F')) {
+      IsoWord *f = bw.get('F');
+      if (!f->expr && f->value <= 0 && flavour_ == Flavour::Fanuc)  // 808D alarm 14800
+        diags_.warning(f->loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
+      emit(OpKind::Feed, f->loc).set("value", take('F', Scale::Feed));
+    }
     if (bw.has('S')) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
     if (bw.has('T')) {
       emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
