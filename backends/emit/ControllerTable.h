@@ -1,0 +1,78 @@
+// The per-controller output table: everything that differs between ISO and Sinumerik output is
+// data here (defaults in ControllerTable.cpp), overridable by the machine description's
+// [emit.iso] / [emit.sinumerik] keys. docs/EMIT.md lists every key.
+#pragma once
+#include "backends/emit/Emitter.h"
+#include "backends/emit/WordFormat.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ncc::emit {
+
+// Numeric word classes sharing one format.
+enum class WordClass : uint8_t { Axis, Rotary, Center, Feed, Speed, Dwell, Count };
+
+// G/M codes the emitter writes, one per event.
+enum class Code : uint8_t {
+  Rapid, Linear, ArcCW, ArcCCW, Dwell, ExactStopOnce,
+  PlaneXY, PlaneZX, PlaneYZ,
+  PerMinute, PerRev, InverseTime,
+  ExactPath, ExactStop, Continuous,
+  SpindleCW, SpindleCCW, SpindleStop,
+  FloodOn, MistOn, CoolantOff,
+  ToolChange, ProgramStop, OptionalStop, EndM2, EndM30,
+  Count
+};
+
+enum class ArcStyle : uint8_t { IJK, R };
+enum class HelixTurns : uint8_t { Word, Split };
+enum class CommentStyle : uint8_t { Paren, Semicolon };
+enum class MessageStyle : uint8_t { ParenMsg, MsgCall };
+enum class Numbering : uint8_t { Off, Renumber, Source };
+
+struct ControllerStyle {
+  Target target = Target::ISO;
+  std::string section;  // "emit.iso"
+  std::array<NumberFormat, (size_t)WordClass::Count> formats{};
+  std::array<std::string, (size_t)Code::Count> codes{};
+
+  ArcStyle arcStyle = ArcStyle::IJK;
+  HelixTurns helixTurns = HelixTurns::Split;
+  std::string radiusWord = "R";  // R form radius address (Sinumerik "CR=")
+  std::string turnsWord = "P";   // multi-turn helix address (Sinumerik "TURN=")
+  int turnsOffset = 0;           // written value = full turns + 1 - turnsOffset (TURN= counts extra turns)
+
+  std::string dwellWord = "X";   // address of the dwell time
+  double dwellScale = 1;         // seconds -> written unit (1000 for milliseconds)
+
+  int toolDigits = 0;            // T01 when 2
+  std::string toolOffsetWord;    // written with the tool change (Sinumerik "D0")
+
+  CommentStyle commentStyle = CommentStyle::Paren;
+  MessageStyle messageStyle = MessageStyle::ParenMsg;
+
+  Numbering numbering = Numbering::Off;
+  int64_t blockStart = 10, blockStep = 10;
+  int blockEvery = 1;            // number every Nth block only
+  int blockDigits = 0;
+  std::string separator = " ";
+  std::string endOfBlock;        // e.g. ";" (Fanuc EOB style)
+  std::string lineEnding = "\n";
+
+  std::vector<std::string> programHeader;  // verbatim first lines ("%")
+  std::vector<std::string> programFooter;  // verbatim last lines ("%")
+  bool programNumber = false;    // O0001 line
+  int programNumberDigits = 4;
+  std::vector<std::string> setup;  // set-up blocks after the header, each a list of words
+};
+
+// Defaults of a controller (before the machine description is applied).
+ControllerStyle defaultStyle(Target t);
+
+// Applies the machine's [emit.<target>] section over the defaults. Unknown keys warn, bad values
+// are errors; returns false when an error was reported.
+bool applyMachineSection(const Machine &m, ControllerStyle &style, Diagnostics &diags);
+
+}  // namespace ncc::emit

@@ -1,0 +1,505 @@
+// The program emitter engine: one block buffer, modal memory and the record -> words mapping.
+// Everything controller-specific comes from ControllerStyle.
+#include "backends/emit/Emitter.h"
+
+#include "backends/emit/ArcGeometry.h"
+#include "backends/emit/ControllerTable.h"
+
+#include <cctype>
+#include <cmath>
+
+namespace ncc::emit {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const char kAxisLetters[] = "XYZABC";
+const char kCenterLetters[] = "IJK";
+
+// Where the text goes: a string (tests, translate) or a stream (bounded memory).
+class LineSink {
+public:
+  explicit LineSink(std::string *s) : str_(s) {}
+  explicit LineSink(std::FILE *f) : file_(f) {}
+  void line(const std::string &text, const std::string &eol) {
+    if (str_) {
+      *str_ += text;
+      *str_ += eol;
+    } else if (file_) {
+      std::fputs(text.c_str(), file_);
+      std::fputs(eol.c_str(), file_);
+    }
+  }
+  bool failed() const { return file_ && std::ferror(file_); }
+
+private:
+  std::string *str_ = nullptr;
+  std::FILE *file_ = nullptr;
+};
+
+// State words waiting for the next block. A second word of a group already waiting flushes the
+// buffer first (the passport's "alternative window" rule, seed 004 §3.5).
+enum class PendingGroup : uint8_t { Speed, Spindle, Coolant, Tool, ToolChange, Plane, FeedMode, PathMode };
+
+class Emitter final : public ProgramEmitter {
+public:
+  Emitter(const Machine &m, ControllerStyle style, const EmitOptions &opts, LineSink out, Diagnostics &diags)
+      : machine_(m), st_(std::move(style)), opts_(opts), out_(out), diags_(diags), nextN_(st_.blockStart) {}
+
+  void writeHeader();
+  void record(const MotionRecord &r) override;
+  bool finish(Diagnostics &diags) override;
+  uint64_t blocksWritten() const override { return blocks_; }
+
+private:
+  using Words = std::vector<std::string>;
+
+  const NumberFormat &fmt(WordClass c) const { return st_.formats[(size_t)c]; }
+  const std::string &code(Code c) const { return st_.codes[(size_t)c]; }
+  static WordClass axisClass(int axis) { return axis < 3 ? WordClass::Axis : WordClass::Rotary; }
+
+  bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
+  void push(Words &w, const std::string &word) {
+    if (!word.empty()) w.push_back(word);
+  }
+  void writeBlock(const Words &words, int64_t sourceN);
+  void writeLine(const std::string &text) {
+    out_.line(text, st_.lineEnding);
+    ++blocks_;
+  }
+
+  void addPending(PendingGroup g, const std::string &word, const MotionRecord &r);
+  void flushPending();
+
+  void ensurePosition(const MotionRecord &r);
+  void axisWords(const AxisVec &end, Words &w, const MotionRecord &r, int skipAxis = -1);
+  void feedWord(const MotionRecord &r, Words &w);
+  void motionCode(Code c, Words &w);
+  void move(const MotionRecord &r);
+  void arc(const MotionRecord &r);
+  void arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull);
+  void planeWord(Plane p, Words &w);
+  void dwell(const MotionRecord &r);
+  void comment(const std::string &text);
+  void message(const std::string &text, const MotionRecord &r);
+  void coolant(const MotionRecord &r, bool flood);
+
+  const Machine &machine_;
+  ControllerStyle st_;
+  EmitOptions opts_;
+  LineSink out_;
+  Diagnostics &diags_;
+  int64_t nextN_;
+  uint64_t blocks_ = 0, numberedCount_ = 0;
+  bool errors_ = false, ended_ = false, finished_ = false;
+
+  Words pending_;
+  uint32_t pendingGroups_ = 0;
+  int64_t pendingN_ = -1;
+
+  // Modal memory of the written program (what the controller will hold).
+  bool posKnown_ = false;
+  AxisVec pos_{};                           // rounded, as the controller reads it
+  std::array<std::string, kAxes> posText_;  // formatted, for the "unchanged" test
+  std::string motion_;                      // last motion G code written
+  Plane plane_ = Plane::XY;                 // the header selects G17
+  int64_t feedMode_ = 0;                    // the header selects G94
+  int64_t pathMode_ = 2;                    // continuous after reset
+  std::string feedText_;                    // last F value written
+  bool haveProgrammedFeed_ = false;
+  double programmedFeed_ = 0;
+  bool flood_ = false, mist_ = false;
+};
+
+bool Emitter::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
+  std::string digits;
+  if (!formatNumber(v, fmt(c), digits)) {
+    diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
+                            "] number format (not finite or too many digits)", "emit");
+    errors_ = true;
+    return false;
+  }
+  out = letter + digits;
+  return true;
+}
+
+void Emitter::writeBlock(const Words &words, int64_t sourceN) {
+  if (words.empty()) return;
+  std::string line;
+  if (st_.numbering == Numbering::Renumber) {
+    if (numberedCount_++ % st_.blockEvery == 0) {
+      line = "N" + formatInteger(nextN_, st_.blockDigits);
+      nextN_ += st_.blockStep;
+    }
+  } else if (st_.numbering == Numbering::Source && sourceN >= 0) {
+    line = "N" + formatInteger(sourceN, st_.blockDigits);
+  }
+  for (const std::string &w : words) {
+    if (!line.empty()) line += st_.separator;
+    line += w;
+  }
+  line += st_.endOfBlock;
+  writeLine(line);
+}
+
+void Emitter::writeHeader() {
+  for (const std::string &l : st_.programHeader) writeLine(l);
+  // The program is named after the file: "1234.nc" becomes O1234, other names a comment.
+  std::string name = opts_.programName;
+  if (size_t slash = name.find_last_of("/\\"); slash != std::string::npos) name = name.substr(slash + 1);
+  std::string stem = name.substr(0, name.find('.'));
+  bool numeric = !stem.empty() && stem.size() <= (size_t)st_.programNumberDigits;
+  for (char c : stem) numeric &= std::isdigit((unsigned char)c) != 0;
+  if (st_.programNumber) {
+    std::string line = "O" + formatInteger(numeric ? std::stoll(stem) : 1, st_.programNumberDigits);
+    if (!numeric && !name.empty()) line += " (" + sanitizeText(name, "()", "[]") + ")";
+    writeLine(line);
+  } else if (!name.empty()) {
+    comment(name);
+  }
+  for (const std::string &blk : st_.setup) writeBlock({blk}, -1);
+}
+
+void Emitter::addPending(PendingGroup g, const std::string &word, const MotionRecord &r) {
+  uint32_t bit = 1u << (unsigned)g;
+  if (pendingGroups_ & bit) flushPending();
+  if (pending_.empty()) pendingN_ = r.blockNumber;
+  pendingGroups_ |= bit;
+  push(pending_, word);
+}
+
+void Emitter::flushPending() {
+  writeBlock(pending_, pendingN_);
+  pending_.clear();
+  pendingGroups_ = 0;
+  pendingN_ = -1;
+}
+
+void Emitter::ensurePosition(const MotionRecord &r) {
+  if (posKnown_) return;
+  // The controller running the emitted program starts where the source program started.
+  for (int i = 0; i < kAxes; ++i) {
+    pos_[i] = roundTo(r.start[i], fmt(axisClass(i)).decimals);
+    formatNumber(pos_[i], fmt(axisClass(i)), posText_[i]);
+  }
+  posKnown_ = true;
+}
+
+void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r, int skipAxis) {
+  for (int i = 0; i < kAxes; ++i) {
+    std::string digits;
+    WordClass c = axisClass(i);
+    if (!formatNumber(end[i], fmt(c), digits)) {
+      std::string dummy;
+      number(end[i], c, std::string(1, kAxisLetters[i]), r, dummy);  // reports
+      continue;
+    }
+    if (digits == posText_[i]) continue;
+    posText_[i] = digits;
+    pos_[i] = roundTo(end[i], fmt(c).decimals);
+    w.push_back(std::string(1, kAxisLetters[i]) + digits);
+  }
+}
+
+void Emitter::motionCode(Code c, Words &w) {
+  const std::string &g = code(c);
+  if (g == motion_) return;
+  motion_ = g;
+  push(w, g);
+}
+
+void Emitter::feedWord(const MotionRecord &r, Words &w) {
+  // The programmed F (per minute, per revolution or inverse time) when the stream carried one;
+  // the move's effective feed otherwise.
+  double f = haveProgrammedFeed_ ? programmedFeed_ : r.feed;
+  std::string word;
+  if (!number(f, WordClass::Feed, "F", r, word)) return;
+  bool everyBlock = feedMode_ == 2;  // inverse time: F belongs to each block
+  if (!everyBlock && word == feedText_) return;
+  feedText_ = word;
+  w.push_back(word);
+}
+
+void Emitter::planeWord(Plane p, Words &w) {
+  if (p == plane_) return;
+  plane_ = p;
+  static const Code codes[] = {Code::PlaneXY, Code::PlaneZX, Code::PlaneYZ};
+  push(w, code(codes[(unsigned)p]));
+}
+
+void Emitter::move(const MotionRecord &r) {
+  flushPending();
+  ensurePosition(r);
+  Words w;
+  if (r.exactStop && pathMode_ == 2) push(w, code(Code::ExactStopOnce));
+  bool rapid = r.kind == RecordKind::Rapid;
+  motionCode(rapid ? Code::Rapid : Code::Linear, w);
+  size_t before = w.size();
+  axisWords(r.end, w, r);
+  if (w.size() == before) {
+    // A zero-length move still is a record: restate one coordinate so it is not lost.
+    int i = 0;
+    while (i < kAxes - 1 && !machine_.axes[i].present) ++i;
+    if (!machine_.axes[i].present) i = 0;
+    w.push_back(std::string(1, kAxisLetters[i]) + posText_[i]);
+  }
+  if (!rapid) feedWord(r, w);
+  writeBlock(w, r.blockNumber);
+}
+
+void Emitter::arc(const MotionRecord &r) {
+  flushPending();
+  ensurePosition(r);
+  int n = r.turns == 0 ? 1 : std::abs(r.turns);
+  PlaneAxes pa = planeAxes(r.plane);
+  double s[2] = {r.start[pa.a], r.start[pa.b]}, e[2] = {r.end[pa.a], r.end[pa.b]};
+  double c[2] = {r.center[pa.a], r.center[pa.b]};
+  bool sourceFull = std::hypot(e[0] - s[0], e[1] - s[1]) < 1e-9;
+  if (n == 1 || st_.helixTurns == HelixTurns::Word) {
+    arcBlock(r, r.end, n, sourceFull);
+    return;
+  }
+  // Split: n-1 full circles back to the start point, then the last arc. Axes off the plane move
+  // in proportion to the angle, as on the original helix.
+  double last = sourceFull ? 2 * kPi : sweepAngle(s, e, c, r.turns > 0);
+  double total = (n - 1) * 2 * kPi + last;
+  for (int k = 1; k < n; ++k) {
+    AxisVec mid = r.end;
+    double t = k * 2 * kPi / total;
+    for (int i = 0; i < kAxes; ++i) mid[i] = r.start[i] + (r.end[i] - r.start[i]) * t;
+    mid[pa.a] = r.start[pa.a];
+    mid[pa.b] = r.start[pa.b];
+    arcBlock(r, mid, 1, true);
+  }
+  arcBlock(r, r.end, 1, sourceFull);
+}
+
+void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull) {
+  PlaneAxes pa = planeAxes(r.plane);
+  const NumberFormat &af = fmt(WordClass::Axis);
+  double s[2] = {pos_[pa.a], pos_[pa.b]};
+  double e[2] = {roundTo(end[pa.a], af.decimals), roundTo(end[pa.b], af.decimals)};
+  double c[2] = {r.center[pa.a], r.center[pa.b]};
+  bool ccw = r.turns >= 0;
+  bool full = s[0] == e[0] && s[1] == e[1];
+  if (full && !sourceFull && turns == 1) {
+    // The arc is shorter than the output resolution: a full circle would be wrong, a line is
+    // within rounding of the original.
+    double os[2] = {r.start[pa.a], r.start[pa.b]}, oe[2] = {r.end[pa.a], r.end[pa.b]};
+    if (sweepAngle(os, oe, c, ccw) < kPi) {
+      MotionRecord line = r;
+      line.kind = RecordKind::Linear;
+      line.end = end;
+      move(line);
+      return;
+    }
+  }
+  Words w;
+  if (r.exactStop && pathMode_ == 2) push(w, code(Code::ExactStopOnce));
+  planeWord(r.plane, w);
+  motionCode(ccw ? Code::ArcCCW : Code::ArcCW, w);
+  axisWords(end, w, r);
+  bool preferR = st_.arcStyle == ArcStyle::R && turns == 1;
+  ArcWords aw = planArc(s, e, c, ccw, full, preferR, fmt(WordClass::Center), machine_.arcTolerance);
+  std::string word;
+  if (aw.useRadius) {
+    if (number(aw.radius, WordClass::Center, st_.radiusWord, r, word)) w.push_back(word);
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      if (i == pa.normal) continue;
+      double off = i == pa.a ? aw.offset[0] : aw.offset[1];
+      if (number(off, WordClass::Center, std::string(1, kCenterLetters[i]), r, word)) w.push_back(word);
+    }
+  }
+  if (turns > 1) w.push_back(st_.turnsWord + std::to_string(turns - st_.turnsOffset));
+  feedWord(r, w);
+  writeBlock(w, r.blockNumber);
+}
+
+void Emitter::dwell(const MotionRecord &r) {
+  flushPending();
+  NumberFormat f = fmt(WordClass::Dwell);
+  if (st_.dwellScale != 1) {  // milliseconds and the like: an integer count, never a point
+    f.decimals = 0;
+    f.pointOnInteger = false;
+  }
+  std::string digits;
+  if (!formatNumber(r.value * st_.dwellScale, f, digits)) {
+    std::string dummy;
+    number(INFINITY, WordClass::Dwell, st_.dwellWord, r, dummy);
+    return;
+  }
+  // Dwell stands alone in its block (seed 001 §2.10).
+  writeBlock({code(Code::Dwell), st_.dwellWord + digits}, r.blockNumber);
+}
+
+void Emitter::comment(const std::string &text) {
+  if (st_.commentStyle == CommentStyle::Paren)
+    writeLine("(" + sanitizeText(text, "()", "[]") + ")");
+  else
+    writeLine("; " + sanitizeText(text, "", ""));
+}
+
+void Emitter::message(const std::string &text, const MotionRecord &r) {
+  if (st_.messageStyle == MessageStyle::ParenMsg)
+    writeBlock({"(MSG, " + sanitizeText(text, "()", "[]") + ")"}, r.blockNumber);
+  else
+    writeBlock({"MSG(\"" + sanitizeText(text, "\"", "'") + "\")"}, r.blockNumber);
+}
+
+void Emitter::coolant(const MotionRecord &r, bool flood) {
+  bool on = r.ivalue != 0;
+  (flood ? flood_ : mist_) = on;
+  if (on) {
+    addPending(PendingGroup::Coolant, code(flood ? Code::FloodOn : Code::MistOn), r);
+    return;
+  }
+  // One "all coolant off" code: switch the other one back on when it should stay on.
+  addPending(PendingGroup::Coolant, code(Code::CoolantOff), r);
+  if (flood ? mist_ : flood_) push(pending_, code(flood ? Code::MistOn : Code::FloodOn));
+}
+
+void Emitter::record(const MotionRecord &r) {
+  if (finished_) return;
+  switch (r.kind) {
+  case RecordKind::Rapid:
+  case RecordKind::Linear: move(r); break;
+  case RecordKind::Arc: arc(r); break;
+  case RecordKind::Dwell: dwell(r); break;
+  case RecordKind::ToolSelect:
+    addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, st_.toolDigits), r);
+    break;
+  case RecordKind::ToolChange:
+    // The change is a block of its own, together with the T word that prepared it.
+    if (pendingGroups_ & ~(1u << (unsigned)PendingGroup::Tool)) flushPending();
+    addPending(PendingGroup::ToolChange, st_.toolOffsetWord, r);
+    push(pending_, code(Code::ToolChange));
+    flushPending();
+    break;
+  case RecordKind::ToolLength:
+    break;  // positions already include the offset: the program runs with length comp off
+  case RecordKind::SpindleSpeed: {
+    std::string w;
+    if (number(r.value, WordClass::Speed, "S", r, w)) addPending(PendingGroup::Speed, w, r);
+    break;
+  }
+  case RecordKind::SpindleCW: addPending(PendingGroup::Spindle, code(Code::SpindleCW), r); break;
+  case RecordKind::SpindleCCW: addPending(PendingGroup::Spindle, code(Code::SpindleCCW), r); break;
+  case RecordKind::SpindleStop: addPending(PendingGroup::Spindle, code(Code::SpindleStop), r); break;
+  case RecordKind::CoolantFlood: coolant(r, true); break;
+  case RecordKind::CoolantMist: coolant(r, false); break;
+  case RecordKind::FeedRate:
+    programmedFeed_ = r.value;
+    haveProgrammedFeed_ = true;
+    break;
+  case RecordKind::FeedMode: {
+    static const Code codes[] = {Code::PerMinute, Code::PerRev, Code::InverseTime};
+    if (r.ivalue < 0 || r.ivalue > 2 || r.ivalue == feedMode_) break;
+    feedMode_ = r.ivalue;
+    feedText_.clear();  // a new feed mode needs a new F
+    addPending(PendingGroup::FeedMode, code(codes[r.ivalue]), r);
+    break;
+  }
+  case RecordKind::PathMode: {
+    static const Code codes[] = {Code::ExactPath, Code::ExactStop, Code::Continuous};
+    if (r.ivalue < 0 || r.ivalue > 2 || r.ivalue == pathMode_) break;
+    pathMode_ = r.ivalue;
+    addPending(PendingGroup::PathMode, code(codes[r.ivalue]), r);
+    break;
+  }
+  case RecordKind::Plane: {
+    if (r.ivalue < 0 || r.ivalue > 2) break;
+    Words w;
+    planeWord((Plane)r.ivalue, w);
+    if (!w.empty()) addPending(PendingGroup::Plane, w[0], r);
+    break;
+  }
+  case RecordKind::Comment:
+    if (!opts_.comments) break;
+    flushPending();
+    comment(r.text);
+    break;
+  case RecordKind::Message:
+    flushPending();
+    message(r.text, r);
+    break;
+  case RecordKind::OptionalStop:
+    flushPending();
+    writeBlock({code(Code::OptionalStop)}, r.blockNumber);
+    break;
+  case RecordKind::ProgramStop:
+    flushPending();
+    writeBlock({code(Code::ProgramStop)}, r.blockNumber);
+    break;
+  case RecordKind::ProgramEnd:
+    flushPending();
+    writeBlock({code(r.ivalue == 2 ? Code::EndM2 : Code::EndM30)}, r.blockNumber);
+    ended_ = true;
+    break;
+  case RecordKind::Aux:
+    flushPending();
+    writeBlock({"M" + std::to_string(r.ivalue)}, r.blockNumber);
+    break;
+  case RecordKind::Count: break;
+  }
+}
+
+bool Emitter::finish(Diagnostics &diags) {
+  if (finished_) return !errors_;
+  finished_ = true;
+  flushPending();
+  // A footer line repeating the end code ("M30") is not written twice; a program without an
+  // end (the executor warned about it) gets one.
+  auto isEnd = [&](const std::string &l) { return l == code(Code::EndM30) || l == code(Code::EndM2); };
+  bool footerEnds = false;
+  for (const std::string &l : st_.programFooter) footerEnds |= isEnd(l);
+  if (!ended_ && !footerEnds) writeBlock({code(Code::EndM30)}, -1);
+  for (const std::string &l : st_.programFooter)
+    if (!(ended_ && isEnd(l))) writeLine(l);
+  if (out_.failed()) {
+    diags.error(SourceLoc{}, "error writing the emitted program", "emit");
+    errors_ = true;
+  }
+  return !errors_;
+}
+
+std::unique_ptr<ProgramEmitter> makeEmitter(const Machine &m, const EmitOptions &opts, LineSink out,
+                                            Diagnostics &diags) {
+  ControllerStyle style = defaultStyle(opts.target);
+  if (!applyMachineSection(m, style, diags)) return nullptr;
+  auto e = std::make_unique<Emitter>(m, std::move(style), opts, out, diags);
+  e->writeHeader();
+  return e;
+}
+
+}  // namespace
+
+bool targetFromName(std::string_view name, Target &out) {
+  std::string l;
+  for (char c : name) l += (char)std::tolower((unsigned char)c);
+  if (l == "iso" || l == "fanuc") return out = Target::ISO, true;
+  if (l == "sinumerik" || l == "siemens") return out = Target::Sinumerik, true;
+  return false;
+}
+
+const char *targetName(Target t) { return t == Target::ISO ? "iso" : "sinumerik"; }
+
+std::unique_ptr<ProgramEmitter> ProgramEmitter::create(const Machine &m, const EmitOptions &opts,
+                                                       std::string &out, Diagnostics &diags) {
+  return makeEmitter(m, opts, LineSink(&out), diags);
+}
+
+std::unique_ptr<ProgramEmitter> ProgramEmitter::create(const Machine &m, const EmitOptions &opts,
+                                                       std::FILE *out, Diagnostics &diags) {
+  return makeEmitter(m, opts, LineSink(out), diags);
+}
+
+bool emitProgram(const Machine &machine, const EmitOptions &opts, const std::vector<MotionRecord> &records,
+                 std::string &out, Diagnostics &diags) {
+  auto e = ProgramEmitter::create(machine, opts, out, diags);
+  if (!e) return false;
+  for (const MotionRecord &r : records) e->record(r);
+  return e->finish(diags);
+}
+
+}  // namespace ncc::emit

@@ -1,0 +1,53 @@
+// Program emitters: print a Motion IR stream (machine coordinates, mm) as an NC program for
+// another controller. The controller's word formats, codes, numbering and arc style come from a
+// table per target (ControllerTable.cpp) that the machine description's [emit.iso] /
+// [emit.sinumerik] sections override key by key (docs/EMIT.md), in the spirit of a
+// postprocessor passport: one engine, no per-controller code forks.
+#pragma once
+#include "ir/MotionIR.h"
+#include "runtime/Machine.h"
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace ncc::emit {
+
+enum class Target { ISO, Sinumerik };
+
+// Accepts "iso" / "fanuc" and "sinumerik" / "siemens" (any case). Returns false otherwise.
+bool targetFromName(std::string_view name, Target &out);
+const char *targetName(Target t);
+
+struct EmitOptions {
+  Target target = Target::ISO;
+  std::string programName;  // ISO: digits become the O number; otherwise a header comment
+  bool comments = true;     // copy Comment records
+};
+
+// A MotionSink that writes the program as records arrive: one block at a time, so memory stays
+// bounded whatever the program length (with the FILE* form). finish() writes the program end.
+class ProgramEmitter : public MotionSink {
+public:
+  ~ProgramEmitter() override = default;
+
+  // Returns nullptr (after reporting to diags) when the machine's [emit.*] section is invalid.
+  static std::unique_ptr<ProgramEmitter> create(const Machine &machine, const EmitOptions &opts,
+                                                std::string &out, Diagnostics &diags);
+  static std::unique_ptr<ProgramEmitter> create(const Machine &machine, const EmitOptions &opts,
+                                                std::FILE *out, Diagnostics &diags);
+
+  // Number of blocks (lines) written so far.
+  virtual uint64_t blocksWritten() const = 0;
+
+protected:
+  ProgramEmitter() = default;
+};
+
+// Convenience for tests and small programs: emits a whole record list into a string.
+// Returns false when errors were reported.
+bool emitProgram(const Machine &machine, const EmitOptions &opts,
+                 const std::vector<MotionRecord> &records, std::string &out, Diagnostics &diags);
+
+}  // namespace ncc::emit

@@ -1,0 +1,35 @@
+// Number and text formatting for NC words, after the window parameters of a postprocessor
+// passport (seed 004 §3.5): decimals, trailing zeros, point on integers, leading zero, plus sign,
+// integer-digit limit and left padding.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace ncc::emit {
+
+struct NumberFormat {
+  int decimals = 3;             // digits after the point; rounding half away from zero
+  bool trailingZeros = false;   // X12.500 (true) vs X12.5
+  bool pointOnInteger = false;  // X12. (true) vs X12
+  bool leadingZero = true;      // X0.5 (true) vs X.5
+  bool plusSign = false;        // X+12.5
+  int maxIntDigits = 0;         // integer digits allowed; 0 = unlimited
+  int padDigits = 0;            // left-pad the integer part with zeros (G01, T01)
+};
+
+// The value after rounding to fmt.decimals (what the controller will read back).
+double roundTo(double v, int decimals);
+
+// Formats v into out (number only, no letter). Returns false when v is not finite or its
+// integer part needs more than maxIntDigits digits.
+bool formatNumber(double v, const NumberFormat &fmt, std::string &out);
+
+// Formats an integer word value (T, M, N, O numbers) padded to `pad` digits.
+std::string formatInteger(int64_t v, int pad);
+
+// Text for a comment or message: control characters become spaces, `forbidden` characters are
+// replaced by the matching entry of `replacement` (same length), surrounding blanks trimmed.
+std::string sanitizeText(std::string_view text, std::string_view forbidden, std::string_view replacement);
+
+}  // namespace ncc::emit
