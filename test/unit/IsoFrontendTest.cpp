@@ -1,7 +1,7 @@
 // Unit tests of the ISO front end: block parser, Macro B expressions, lowering, program
 // structure, streaming, and a bounded fuzz loop (random bytes and mutated programs must give
 // diagnostics, never a crash or a hang).
-// FEATURES: ISO-LEX-01 ISO-LEX-02 ISO-LEX-03 ISO-LEX-04 ISO-LEX-05 ISO-LEX-06 ISO-LEX-09 ISO-MAC-08
+// FEATURES: ISO-LEX-01 ISO-LEX-02 ISO-LEX-03 ISO-LEX-04 ISO-LEX-05 ISO-LEX-06 ISO-MAC-08
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/iso/Syntax.h"
 
