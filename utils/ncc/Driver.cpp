@@ -32,7 +32,13 @@ int parseArgs(int argc, char **argv, po::options_description &desc, po::position
               po::variables_map &vm, const char *usage) {
   desc.add_options()("help,h", "show this help");
   try {
-    po::store(po::command_line_parser(argc, argv).options(desc).positional(pos).run(), vm);
+    // allow_long_disguise accepts -Werror as well as --Werror (compiler habit).
+    po::store(po::command_line_parser(argc, argv)
+                  .options(desc)
+                  .positional(pos)
+                  .style(po::command_line_style::default_style | po::command_line_style::allow_long_disguise)
+                  .run(),
+              vm);
     if (vm.count("help")) {
       std::cout << "usage: " << usage << "\n\n" << desc << "\n";
       return kExitOk;
