@@ -214,6 +214,25 @@ bool BlockLowerer::Block::classify() {
         continue;
       }
       GUse &slot = gs[(size_t)gi->group];
+      // Fanuc/808D keep the canned cycles in their own group (09), so `G80 G0` is legal there:
+      // the group-01 code ends the cycle anyway. A cycle with a group-01 code is not
+      // (ISO-CYM-15); RS274NGC has both in one group and rejects either pair.
+      if (slot.info && L.flavour_ != Flavour::RS274 && gi->group == GGroup::Motion) {
+        auto plainMotion = [](const GCodeInfo *g) { return !isCycleMotion(g->mode) && g->code10 != 800; };
+        if (slot.info->code10 == 800 && plainMotion(gi)) {
+          slot = {gi, &w};
+          continue;
+        }
+        if (gi->code10 == 800 && plainMotion(slot.info)) continue;
+        if (plainMotion(gi) != plainMotion(slot.info)) {
+          L.diags_.error(w.loc,
+                         fmt::format("{} cannot be programmed in a canned cycle block with {}", gName(gi->code10),
+                                     gName(slot.info->code10)),
+                         "modal-group-conflict");
+          ok = false;
+          continue;
+        }
+      }
       if (slot.info) {
         L.diags_.error(w.loc,
                      fmt::format("two G codes from the same modal group: {} and {}", gName(slot.info->code10),
