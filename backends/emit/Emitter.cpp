@@ -83,6 +83,7 @@ private:
   void comment(const std::string &text);
   void message(const std::string &text, const MotionRecord &r);
   void coolant(const MotionRecord &r, bool flood);
+  std::vector<std::string> coolantCodes();
 
   const Machine &machine_;
   ControllerStyle st_;
@@ -108,7 +109,8 @@ private:
   std::string feedText_;                    // last F value written
   bool haveProgrammedFeed_ = false;
   double programmedFeed_ = 0;
-  bool flood_ = false, mist_ = false;
+  bool flood_ = false, mist_ = false;            // written coolant state
+  bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
 };
 
 bool Emitter::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
@@ -169,6 +171,17 @@ void Emitter::addPending(PendingGroup g, const std::string &word, const MotionRe
 }
 
 void Emitter::flushPending() {
+  if (pendingGroups_ & (1u << (unsigned)PendingGroup::Coolant)) {
+    // Coolant codes share one modal group: the first joins the block, others get their own.
+    std::vector<std::string> codes = coolantCodes();
+    if (!codes.empty()) pending_.push_back(codes[0]);
+    writeBlock(pending_, pendingN_);
+    for (size_t i = 1; i < codes.size(); ++i) writeBlock({codes[i]}, pendingN_);
+    pending_.clear();
+    pendingGroups_ = 0;
+    pendingN_ = -1;
+    return;
+  }
   writeBlock(pending_, pendingN_);
   pending_.clear();
   pendingGroups_ = 0;
@@ -348,15 +361,25 @@ void Emitter::message(const std::string &text, const MotionRecord &r) {
 }
 
 void Emitter::coolant(const MotionRecord &r, bool flood) {
-  bool on = r.ivalue != 0;
-  (flood ? flood_ : mist_) = on;
-  if (on) {
-    addPending(PendingGroup::Coolant, code(flood ? Code::FloodOn : Code::MistOn), r);
-    return;
+  // Only the wanted state is noted here; flushPending() writes the codes, so the two "off"
+  // records a single M9 produces become one M9 again.
+  (flood ? floodWanted_ : mistWanted_) = r.ivalue != 0;
+  if (pending_.empty() && !pendingGroups_) pendingN_ = r.blockNumber;
+  pendingGroups_ |= 1u << (unsigned)PendingGroup::Coolant;
+}
+
+std::vector<std::string> Emitter::coolantCodes() {
+  std::vector<std::string> codes;
+  bool off = (flood_ && !floodWanted_) || (mist_ && !mistWanted_);
+  if (off) {
+    codes.push_back(code(Code::CoolantOff));  // one code turns both off
+    flood_ = mist_ = false;
   }
-  // One "all coolant off" code: switch the other one back on when it should stay on.
-  addPending(PendingGroup::Coolant, code(Code::CoolantOff), r);
-  if (flood ? mist_ : flood_) push(pending_, code(flood ? Code::MistOn : Code::FloodOn));
+  if (mistWanted_ && !mist_) codes.push_back(code(Code::MistOn));
+  if (floodWanted_ && !flood_) codes.push_back(code(Code::FloodOn));
+  flood_ = floodWanted_;
+  mist_ = mistWanted_;
+  return codes;
 }
 
 void Emitter::record(const MotionRecord &r) {

@@ -374,9 +374,11 @@ TEST(EmitBoth, ToolSpindleCoolant) {
   s.move(RecordKind::Rapid, 0, 0, 5);
   s.state(RecordKind::ToolSelect, 4);  // prepared, changed later
   s.state(RecordKind::CoolantMist, 1);
-  s.state(RecordKind::CoolantFlood, 0);  // M9 drops mist too: switch it back on
+  s.state(RecordKind::CoolantFlood, 0);  // M9 drops mist too: switch it back on, in a block of its own
   s.state(RecordKind::SpindleStop);
   s.state(RecordKind::ToolChange, 4);
+  s.state(RecordKind::CoolantFlood, 0);  // M9 = both off: one code
+  s.state(RecordKind::CoolantMist, 0);
   s.state(RecordKind::SpindleSpeed, 0, 800.5);
   s.state(RecordKind::SpindleCCW);
   Emit iso;
@@ -386,10 +388,10 @@ TEST(EmitBoth, ToolSpindleCoolant) {
             "T3 M6\n"
             "S1200 M3 M8\n"
             "G0 Z5.\n"
-            "T4 M7\n"
-            "M9 M7 M5\n"
+            "T4 M5 M9\n"
+            "M7\n"
             "M6\n"
-            "S800.5 M4\n"
+            "S800.5 M4 M9\n"
             "M30\n%\n");
   Emit sin;
   sin.set("emit.sinumerik", "setup_blocks", "none");
@@ -398,10 +400,10 @@ TEST(EmitBoth, ToolSpindleCoolant) {
             "T3 D0 M6\n"
             "S1200 M3 M8\n"
             "G0 Z5\n"
-            "T4 M7\n"
-            "M9 M7 M5\n"
+            "T4 M5 M9\n"
+            "M7\n"
             "D0 M6\n"
-            "S800.5 M4\n"
+            "S800.5 M4 M9\n"
             "M30\n");
 }
 
