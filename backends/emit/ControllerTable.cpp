@@ -257,6 +257,9 @@ ControllerStyle defaultStyle(Target t) {
   // 0.002 mm arc tolerance (see docs/EMIT.md, "Arcs").
   s.formats[(size_t)WordClass::Center].decimals = 4;
   s.formats[(size_t)WordClass::Speed].pointOnInteger = false;  // S1200: S is never scaled
+  // Feeds converted from inch or computed by the program keep their value to 1e-6 relative
+  // (what `translate --verify` compares) down to about 50 mm/min.
+  s.formats[(size_t)WordClass::Feed].decimals = 4;
 
   if (iso) {
     s.arcStyle = ArcStyle::IJK;
