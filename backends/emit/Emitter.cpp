@@ -347,9 +347,14 @@ void Emitter::dwell(const MotionRecord &r) {
 }
 
 void Emitter::comment(const std::string &text) {
-  if (st_.commentStyle == CommentStyle::Paren)
-    writeLine("(" + sanitizeText(text, "()", "[]") + ")");
-  else
+  if (st_.commentStyle == CommentStyle::Paren) {
+    std::string t = sanitizeText(text, "()", "[]");
+    // "(MSG, ...)" would be read back as a message.
+    if (t.size() >= 4 && std::toupper((unsigned char)t[0]) == 'M' && std::toupper((unsigned char)t[1]) == 'S' &&
+        std::toupper((unsigned char)t[2]) == 'G' && t[3] == ',')
+      t.insert(3, " ");
+    writeLine("(" + t + ")");
+  } else
     writeLine("; " + sanitizeText(text, "", ""));
 }
 

@@ -414,6 +414,9 @@ TEST(EmitBoth, CommentsAndMessages) {
   Emit iso;
   iso.set("emit.iso", "setup_blocks", "none");
   EXPECT_EQ(iso.run(Target::ISO, s), "%\nO0001\n(drill [deep] hole)\n(MSG, check \"tool\" [T3])\nM30\n%\n");
+  Stream msgLike;
+  msgLike.text(RecordKind::Comment, "msg,not a message");
+  EXPECT_EQ(iso.run(Target::ISO, msgLike), "%\nO0001\n(msg ,not a message)\nM30\n%\n");
   EXPECT_EQ(iso.run(Target::ISO, s, "", false), "%\nO0001\n(MSG, check \"tool\" [T3])\nM30\n%\n");
   Emit sin;
   sin.set("emit.sinumerik", "setup_blocks", "none");
