@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <deque>
 #include <cstdlib>
 #include <map>
 
@@ -37,42 +38,37 @@ class Lexer {
 public:
   explicit Lexer(std::string_view s) : s_(s) {}
 
-  std::vector<Token> run() {
-    std::vector<Token> out;
-    for (;;) {
-      bool ws = skipSpace();
-      Token t;
-      t.adjacent = !ws;
-      t.line = line_;
-      t.col = (uint32_t)(pos_ - lineStart_ + 1);
-      if (pos_ >= s_.size()) {
-        out.push_back(t);
-        return out;
-      }
-      char c = s_[pos_];
-      if (text::isIdentStart(c)) {
-        size_t b = pos_;
-        while (pos_ < s_.size() && text::isIdentChar(s_[pos_])) ++pos_;
-        t.kind = Tok::Ident;
-        t.text = std::string(s_.substr(b, pos_ - b));
-        if (t.text == "sym" && pos_ < s_.size() && s_[pos_] == '"') {
-          t.kind = Tok::QSymbol;
-          t.text = readString(t);
-        }
-      } else if (isDigit(c) || (c == '-' && pos_ + 1 < s_.size() && isDigit(s_[pos_ + 1]))) {
-        readNumber(t);
-      } else if (c == '"') {
-        t.kind = Tok::String;
+  // Returns the next token; at the end of input, End tokens forever.
+  Token next() {
+    bool ws = skipSpace();
+    Token t;
+    t.adjacent = !ws;
+    t.line = line_;
+    t.col = (uint32_t)(pos_ - lineStart_ + 1);
+    if (pos_ >= s_.size()) return t;
+    char c = s_[pos_];
+    if (text::isIdentStart(c)) {
+      size_t b = pos_;
+      while (pos_ < s_.size() && text::isIdentChar(s_[pos_])) ++pos_;
+      t.kind = Tok::Ident;
+      t.text = std::string(s_.substr(b, pos_ - b));
+      if (t.text == "sym" && pos_ < s_.size() && s_[pos_] == '"') {
+        t.kind = Tok::QSymbol;
         t.text = readString(t);
-      } else if (std::string_view("()[]{}=,@#%$:").find(c) != std::string_view::npos) {
-        t.kind = Tok::Punct;
-        t.text = std::string(1, c);
-        ++pos_;
-      } else {
-        throw ParseError{t.line, t.col, printableChar(c)};
       }
-      out.push_back(std::move(t));
+    } else if (isDigit(c) || (c == '-' && pos_ + 1 < s_.size() && isDigit(s_[pos_ + 1]))) {
+      readNumber(t);
+    } else if (c == '"') {
+      t.kind = Tok::String;
+      t.text = readString(t);
+    } else if (std::string_view("()[]{}=,@#%$:").find(c) != std::string_view::npos) {
+      t.kind = Tok::Punct;
+      t.text = std::string(1, c);
+      ++pos_;
+    } else {
+      throw ParseError{t.line, t.col, printableChar(c)};
     }
+    return t;
   }
 
 private:
@@ -190,7 +186,7 @@ const char *tokDescription(const Token &t) {
 
 class Parser {
 public:
-  Parser(std::vector<Token> toks, SourceManager &sm) : t_(std::move(toks)), sm_(sm) {}
+  Parser(std::string_view text, SourceManager &sm) : lx_(text), sm_(sm) {}
 
   void parseModule(Module &m) {
     expectIdent("module");
@@ -198,7 +194,7 @@ public:
     if (isIdent("dialect")) {
       next();
       expectPunct('=');
-      const Token &d = expectKind(Tok::Ident, "dialect name");
+      Token d = expectKind(Tok::Ident, "dialect name");
       if (d.text == "unknown") m.dialect = Dialect::Unknown;
       else if (!dialectFromName(d.text, m.dialect)) fail(d, fmt::format("unknown dialect '{}'", d.text));
     }
@@ -208,8 +204,10 @@ public:
   }
 
 private:
-  std::vector<Token> t_;
-  size_t p_ = 0;
+  // Tokens are lexed on demand with a small lookahead, so a large .ncir file is never held
+  // as a token array.
+  Lexer lx_;
+  std::deque<Token> la_;
   SourceManager &sm_;
   std::map<uint64_t, uint32_t> files_;  // K -> SourceManager id
   unsigned depth_ = 0;
@@ -222,13 +220,14 @@ private:
     ~DepthGuard() { --p.depth_; }
   };
 
-  const Token &peek(size_t ahead = 0) const {
-    size_t i = p_ + ahead;
-    return i < t_.size() ? t_[i] : t_.back();
+  const Token &peek(size_t ahead = 0) {
+    while (la_.size() <= ahead) la_.push_back(lx_.next());
+    return la_[ahead];
   }
-  const Token &next() {
-    const Token &t = peek();
-    if (p_ < t_.size() - 1) ++p_;
+  Token next() {
+    peek();
+    Token t = std::move(la_.front());
+    la_.pop_front();
     return t;
   }
   [[noreturn]] void fail(const Token &at, std::string msg) { throw ParseError{at.line, at.col, std::move(msg)}; }
@@ -239,11 +238,11 @@ private:
     return tokDescription(t);
   }
 
-  bool isPunct(char c, size_t ahead = 0) const {
+  bool isPunct(char c, size_t ahead = 0) {
     const Token &t = peek(ahead);
     return t.kind == Tok::Punct && t.text[0] == c;
   }
-  bool isIdent(std::string_view s) const { return peek().kind == Tok::Ident && peek().text == s; }
+  bool isIdent(std::string_view s) { return peek().kind == Tok::Ident && peek().text == s; }
 
   void expectPunct(char c) {
     if (!isPunct(c)) fail(peek(), fmt::format("expected '{}', found {}", c, describe(peek())));
@@ -253,28 +252,28 @@ private:
     if (!isIdent(s)) fail(peek(), fmt::format("expected '{}', found {}", s, describe(peek())));
     next();
   }
-  const Token &expectKind(Tok k, const char *what) {
+  Token expectKind(Tok k, const char *what) {
     if (peek().kind != k) fail(peek(), fmt::format("expected {}, found {}", what, describe(peek())));
     return next();
   }
   std::string expectString(const char *what) { return expectKind(Tok::String, what).text; }
 
   uint32_t expectUInt(const char *what) {
-    const Token &t = expectKind(Tok::Number, what);
+    Token t = expectKind(Tok::Number, what);
     if (!t.isInt || t.num < 0 || t.num > 4294967295.0) fail(t, fmt::format("{} must be a non-negative integer", what));
     return (uint32_t)t.num;
   }
 
   // A name: identifier or quoted string (for names that are not identifiers).
   std::string expectName(const char *what) {
-    const Token &t = peek();
+    Token t = peek();
     if (t.kind != Tok::Ident && t.kind != Tok::String) fail(t, fmt::format("expected {}, found {}", what, describe(t)));
     return next().text;
   }
 
   void parseSource() {
     next();
-    const Token &kt = peek();
+    Token kt = peek();
     uint32_t k = expectUInt("source index");
     if (k == 0) fail(kt, "source index must be at least 1");
     if (files_.count(k)) fail(kt, fmt::format("source {} is defined twice", k));
@@ -296,12 +295,12 @@ private:
     if (!(isIdent("loc") && isPunct('(', 1))) return l;
     next();
     next();
-    const Token &kt = peek();
+    Token kt = peek();
     uint32_t k = expectUInt("source index");
     auto it = files_.find(k);
     if (it == files_.end()) fail(kt, fmt::format("loc refers to undefined source {}", k));
     expectPunct(':');
-    const Token &lt = peek();
+    Token lt = peek();
     l.line = expectUInt("line");
     if (l.line == 0) fail(lt, "line must be at least 1");
     expectPunct(':');
@@ -326,7 +325,7 @@ private:
   Function parseFunction(const Module &m) {
     next();
     expectPunct('@');
-    const Token &nt = peek();
+    Token nt = peek();
     Function f;
     f.name = expectName("function name");
     if (m.find(f.name)) fail(nt, fmt::format("function '@{}' is defined twice", f.name));
@@ -350,7 +349,7 @@ private:
       next();
       p.byRef = true;
     }
-    const Token &tt = expectKind(Tok::Ident, "parameter type");
+    Token tt = expectKind(Tok::Ident, "parameter type");
     if (!typeFromText(tt.text, p.type)) fail(tt, fmt::format("unknown type '{}'", tt.text));
     p.name = expectName("parameter name");
     if (isPunct('=')) {
@@ -373,7 +372,7 @@ private:
   }
 
   Op parseOp() {
-    const Token &nt = peek();
+    Token nt = peek();
     if (nt.kind != Tok::Ident) fail(nt, fmt::format("expected an op name, found {}", describe(nt)));
     Op op;
     if (!opKindFromName(nt.text, op.kind)) fail(nt, fmt::format("unknown op '{}'", nt.text));
@@ -409,7 +408,7 @@ private:
 
   ExprPtr parseExpr() {
     DepthGuard g(*this, peek());
-    const Token &t = peek();
+    Token t = peek();
     switch (t.kind) {
     case Tok::Number: next(); return Expr::number(t.num, t.isInt ? Type::Int : Type::Real);
     case Tok::String: next(); return Expr::string(t.text);
@@ -423,7 +422,7 @@ private:
     if (c == '#') {
       next();
       if (isPunct('[')) return Expr::var(VarSpace::Numbered, "", parseIndexOpt());
-      const Token &n = expectKind(Tok::Number, "parameter number or '['");
+      Token n = expectKind(Tok::Number, "parameter number or '['");
       if (!n.isInt) fail(n, "parameter number must be an integer");
       return Expr::var(VarSpace::Numbered, "", intConst(n.num));
     }
@@ -447,7 +446,7 @@ private:
 
   // A bare word: keyword, parameter (R5, QL[..]) or symbol.
   ExprPtr parseWord() {
-    const Token &t = next();
+    Token t = next();
     const std::string &w = t.text;
     if (w == "true" || w == "false") return Expr::boolean(w == "true");
     if (w == "vacant") return Expr::vacant();
@@ -465,7 +464,7 @@ private:
   // (op a b) or (FUNC a ...)
   ExprPtr parseCompound() {
     next();
-    const Token &h = peek();
+    Token h = peek();
     if (h.kind != Tok::Ident && h.kind != Tok::String)
       fail(h, fmt::format("expected an operator or function name, found {}", describe(h)));
     next();
@@ -503,8 +502,7 @@ void setLocs(Region &r) {
 
 bool parseModule(std::string_view text, uint32_t fileId, SourceManager &sm, Diagnostics &diags, Module &out) {
   try {
-    Lexer lx(text);
-    Parser p(lx.run(), sm);
+    Parser p(text, sm);
     Module m;
     p.parseModule(m);
     for (auto &f : m.functions) {

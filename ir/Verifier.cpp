@@ -197,6 +197,10 @@ private:
         error(op.loc, fmt::format("'{}' argument '{}' must be a non-negative integer constant", name, r.key));
     }
     if (op.kind == OpKind::Mode) checkModes(op);
+    // DEF declares named variables; numbered parameters exist without a declaration.
+    if (const Expr *v = op.kind == OpKind::Declare ? op.get("var") : nullptr)
+      if (v->kind == ExprKind::Var && v->space != VarSpace::Local && v->space != VarSpace::Global)
+        error(op.loc, "'declare' argument 'var' must be a named variable (%name or %%name)");
   }
 
   void checkModes(const Op &op) {
@@ -226,8 +230,10 @@ private:
       const Expr *n = op.get("n"), *l = op.get("label");
       if (!n && !l) error(op.loc, "'goto' needs a target: n= or label=");
       if (n && l) error(op.loc, "'goto' has both n= and label=");
+      if (n && n->isConstant() && n->kind != ExprKind::Number) error(op.loc, "'goto' argument 'n' must be a number");
+      if (l && l->isConstant() && l->kind != ExprKind::String) error(op.loc, "'goto' argument 'label' must be a string");
       if (n && n->kind == ExprKind::Number && !targets_.blocks.count(n->num))
-        error(op.loc, fmt::format("'goto' target block N{} is not in this function", fmt::format("{}", n->num)));
+        error(op.loc, fmt::format("'goto' target block N{} is not in this function", n->num));
       if (l && l->kind == ExprKind::String && !targets_.labels.count(l->str))
         error(op.loc, fmt::format("'goto' target label '{}' is not in this function", l->str));
       break;

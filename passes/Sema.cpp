@@ -25,7 +25,9 @@ struct Sema {
     case ExprKind::Symbol: e.type = Type::Symbol; break;
     case ExprKind::Vacant: e.type = Type::Real; break;
     case ExprKind::Var:
-      if (!e.args.empty() && !numeric(e.args[0]->type))
+      // System variables may be indexed by axis name ($AA_IM[X]); others by number.
+      if (!e.args.empty() && !numeric(e.args[0]->type) &&
+          !(e.space == VarSpace::System && e.args[0]->kind == ExprKind::Symbol))
         diags.error(e.loc, "variable index must be a number");
       if (e.type == Type::Unknown) e.type = Type::Real;
       break;

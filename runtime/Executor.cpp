@@ -1,10 +1,315 @@
-// Scaffold: replaced by the executor implementation.
-#include "runtime/Executor.h"
+// Executor: command dispatch, modal state, offsets and program stops. Motion lives in
+// ExecutorMotion.cpp. The semantics follow LinuxCNC's rs274 at machine level (the oracle).
+#include "runtime/ExecutorImpl.h"
+
+#include <cmath>
+
 namespace ncc {
-struct Executor::Impl { ModalState st; };
-Executor::Executor(const Machine &, MotionSink &, Diagnostics &) : impl_(new Impl) {}
-Executor::~Executor() { delete impl_; }
-bool Executor::exec(const MachineCmd &) { return true; }
-bool Executor::finish() { return true; }
-const ModalState &Executor::state() const { return impl_->st; }
+
+Plane Executor::Impl::plane() const {
+  switch (st.plane) {
+  case ModeValue::ZX: return Plane::ZX;
+  case ModeValue::YZ: return Plane::YZ;
+  default: return Plane::XY;
+  }
 }
+
+MotionRecord Executor::Impl::record(RecordKind k) const {
+  MotionRecord r;
+  r.kind = k;
+  r.plane = plane();
+  r.blockNumber = blockNumber;
+  r.loc = loc;
+  r.start = r.end = st.position;
+  return r;
+}
+
+AxisVec Executor::Impl::target(const MachineCmd &c) const {
+  AxisVec t = st.position;
+  bool inc = st.distance == ModeValue::Incremental;
+  for (int i = 0; i < kAxes; ++i) {
+    Word w = (Word)i;  // X Y Z A B C are the first six words
+    if (!c.has(w)) continue;
+    double v = c.get(w) * axisScale(i);
+    double prog = inc ? programPos(i) + v : v;
+    t[i] = prog + offset(i);
+  }
+  return t;
+}
+
+bool Executor::Impl::execMode(const MachineCmd &c) {
+  for (unsigned i = 0; i < c.nmodes && i < 6; ++i) {
+    ModeValue v = c.modes[i];
+    switch (modeValueInfo(v).group) {
+    case ModeGroup::Motion:
+      st.motion = v;
+      if (!isCycleMotion(v)) {
+        // Leaving the cycles: the next cycle takes a new initial level.
+        initialLevelValid = false;
+        lastCycle = ModeValue::CycleOff;
+      }
+      break;
+    case ModeGroup::Plane: {
+      st.plane = v;
+      MotionRecord r = record(RecordKind::Plane);
+      r.ivalue = (int64_t)plane();
+      emit(r);
+      break;
+    }
+    case ModeGroup::Units: st.units = v; break;
+    case ModeGroup::Distance: st.distance = v; break;
+    case ModeGroup::ArcDistance: st.arcDistance = v; break;
+    case ModeGroup::Retract: st.retract = v; break;
+    case ModeGroup::FeedMode: {
+      st.feedMode = v;
+      MotionRecord r = record(RecordKind::FeedMode);
+      r.ivalue = v == ModeValue::PerRev ? 1 : v == ModeValue::InverseTime ? 2 : 0;
+      emit(r);
+      break;
+    }
+    case ModeGroup::PathMode: {
+      st.pathMode = v;
+      MotionRecord r = record(RecordKind::PathMode);
+      r.ivalue = v == ModeValue::ExactPath ? 0 : v == ModeValue::ExactStop ? 1 : 2;
+      if (v == ModeValue::Continuous) pathTolerance = c.has(Word::P) ? c.get(Word::P) * scale() : 0;
+      r.value = v == ModeValue::Continuous ? pathTolerance : 0;
+      emit(r);
+      break;
+    }
+    default: break;
+    }
+  }
+  return true;
+}
+
+bool Executor::Impl::execToolLength(const MachineCmd &c) {
+  double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
+  if (hv < 0 || hv > 1e9 || hv != std::floor(hv)) return error("H word must be a non-negative integer", "unknown-tool");
+  int h = (int)hv;
+  if (h == 0) {
+    toolLength = 0;
+  } else {
+    auto it = machine.tools.find(h);
+    if (it == machine.tools.end())
+      return error("Requested tool " + std::to_string(h) + " not found in the tool table", "unknown-tool");
+    toolLength = it->second.length;
+  }
+  st.toolLengthH = h;
+  MotionRecord r = record(RecordKind::ToolLength);
+  r.value = toolLength;
+  r.ivalue = h;
+  emit(r);
+  return true;
+}
+
+bool Executor::Impl::execSetOffset(const MachineCmd &c) {
+  auto kind = (SetOffsetKind)c.sub;
+  if (kind == SetOffsetKind::G92Cancel) {
+    g92 = {};
+    return true;
+  }
+  if (kind == SetOffsetKind::G92) {
+    // The current position becomes the programmed one: G92 absorbs the difference.
+    for (int i = 0; i < kAxes; ++i)
+      if (c.has((Word)i))
+        g92[i] = st.position[i] - g5x[st.workOffset - 1][i] - (i == 2 ? toolLength : 0.0) -
+                 c.get((Word)i) * axisScale(i);
+    return true;
+  }
+  double p = c.get(Word::P);
+  int n = p >= 0 && p <= 9 ? (int)p : -1;
+  if (!c.has(Word::P) || n < 0 || p != n)
+    return error("G10 needs a coordinate system number P0 to P9", "bad-offset-index");
+  if (n == 0) n = st.workOffset;
+  if (c.has(Word::R) && c.get(Word::R) != 0)
+    warning("coordinate system rotation (G10 R) is not supported: ignored", "unsupported-rotation");
+  AxisVec &sys = g5x[n - 1];
+  for (int i = 0; i < kAxes; ++i) {
+    if (!c.has((Word)i)) continue;
+    double v = c.get((Word)i) * axisScale(i);
+    if (kind == SetOffsetKind::G10L2)
+      sys[i] = v;  // the origin in machine coordinates
+    else            // L20: the current position gets program value v in that system
+      sys[i] = st.position[i] - g92[i] - (i == 2 ? toolLength : 0.0) - v;
+  }
+  return true;
+}
+
+bool Executor::Impl::execStop(const MachineCmd &c) {
+  switch ((StopKind)c.sub) {
+  case StopKind::Program: emit(record(RecordKind::ProgramStop)); break;
+  case StopKind::Optional: emit(record(RecordKind::OptionalStop)); break;
+  case StopKind::End:
+  case StopKind::EndRewind: {
+    MotionRecord r = record(RecordKind::ProgramEnd);
+    r.ivalue = (StopKind)c.sub == StopKind::EndRewind ? 30 : 2;
+    emit(r);
+    // What M2/M30 reset in rs274 (G92, units and tool length stay).
+    st.workOffset = 1;
+    st.plane = ModeValue::XY;
+    st.feedMode = ModeValue::PerMinute;
+    st.distance = ModeValue::Absolute;
+    st.motion = ModeValue::Linear;
+    st.feed = feedMM = 0;
+    st.spindle = 0;
+    st.flood = st.mist = false;
+    st.cutterComp = 0;
+    initialLevelValid = false;
+    lastCycle = ModeValue::CycleOff;
+    st.ended = true;
+    break;
+  }
+  }
+  return true;
+}
+
+Executor::Executor(const Machine &machine, MotionSink &sink, Diagnostics &diags)
+    : impl_(new Impl(machine, sink, diags)) {
+  // Program start: machine zero, whatever offsets the machine description holds.
+  impl_->st.position = {};
+}
+
+Executor::~Executor() { delete impl_; }
+
+const ModalState &Executor::state() const { return impl_->st; }
+
+bool Executor::exec(const MachineCmd &c) {
+  Impl &x = *impl_;
+  x.loc = c.loc.valid() ? c.loc : x.blockLoc;
+  // Never let NaN or infinity reach positions: a diagnostic instead.
+  for (int i = 0; i < kWords; ++i)
+    if (c.has((Word)i) && !std::isfinite(c.w[i]))
+      return x.error(std::string("invalid number in ") + kWordLetters[i] + " word", "bad-number");
+  bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
+  if (motion && x.st.ended && !x.warnedAfterEnd) {
+    x.warnedAfterEnd = true;
+    x.warning("motion after the end of the program (M2/M30)", "code-after-end");
+  }
+  switch (c.kind) {
+  case CmdKind::Block:
+    x.blockNumber = c.blockNumber;
+    x.blockLoc = c.loc;
+    x.feedInBlock = false;
+    return true;
+  case CmdKind::Comment:
+  case CmdKind::Message: {
+    MotionRecord r = x.record(c.kind == CmdKind::Comment ? RecordKind::Comment : RecordKind::Message);
+    if (c.text) r.text = c.text;
+    x.emit(r);
+    return true;
+  }
+  case CmdKind::Mode: return x.execMode(c);
+  case CmdKind::Feed: {
+    double f = c.get(Word::F);
+    if (f < 0) return x.error("Negative feed rate", "bad-feed");
+    x.st.feed = f;
+    x.feedInBlock = true;
+    x.feedMM = x.st.feedMode == ModeValue::InverseTime ? f : f * x.scale();
+    if (x.st.feedMode == ModeValue::InverseTime) return true;  // a rate record per move instead
+    MotionRecord r = x.record(RecordKind::FeedRate);
+    r.value = x.feedMM;
+    x.emit(r);
+    return true;
+  }
+  case CmdKind::Speed: {
+    double s = c.get(Word::S);
+    if (s < 0) return x.error("Negative spindle speed", "bad-speed");
+    x.st.speed = s;
+    MotionRecord r = x.record(RecordKind::SpindleSpeed);
+    r.value = s;
+    x.emit(r);
+    return true;
+  }
+  case CmdKind::ToolSelect: {
+    double t = c.get(Word::T);
+    if (t < 0 || t != std::floor(t) || t > 1e9)
+      return x.error("T word must be a non-negative integer", "unknown-tool");
+    x.st.toolSelected = (int)t;
+    MotionRecord r = x.record(RecordKind::ToolSelect);
+    r.ivalue = (int64_t)t;
+    x.emit(r);
+    return true;
+  }
+  case CmdKind::ToolChange: {
+    x.st.toolInSpindle = x.st.toolSelected;
+    x.st.spindle = 0;  // the change stops the spindle
+    MotionRecord r = x.record(RecordKind::ToolChange);
+    r.ivalue = x.st.toolInSpindle;
+    x.emit(r);
+    return true;
+  }
+  case CmdKind::Spindle: {
+    static const RecordKind kinds[] = {RecordKind::SpindleStop, RecordKind::SpindleCW, RecordKind::SpindleCCW};
+    if (c.sub > 2) return x.error("bad spindle command", "bad-command");
+    x.st.spindle = c.sub;
+    x.emit(x.record(kinds[c.sub]));
+    return true;
+  }
+  case CmdKind::Coolant: {
+    // rs274 order: mist before flood (M9 prints MIST_OFF then FLOOD_OFF).
+    if (c.sub2 & 2) {
+      x.st.mist = c.sub & 2;
+      MotionRecord r = x.record(RecordKind::CoolantMist);
+      r.ivalue = x.st.mist;
+      x.emit(r);
+    }
+    if (c.sub2 & 1) {
+      x.st.flood = c.sub & 1;
+      MotionRecord r = x.record(RecordKind::CoolantFlood);
+      r.ivalue = x.st.flood;
+      x.emit(r);
+    }
+    return true;
+  }
+  case CmdKind::Dwell: {
+    double p = c.get(Word::P);
+    if (p < 0) return x.error("Dwell time must not be negative", "bad-dwell");
+    MotionRecord r = x.record(RecordKind::Dwell);
+    r.value = p;
+    x.emit(r);
+    return true;
+  }
+  case CmdKind::Move: return x.execMove(c);
+  case CmdKind::Home: return x.execHome(c);
+  case CmdKind::MachineMove: return x.execMachineMove(c);
+  case CmdKind::ToolLength: return x.execToolLength(c);
+  case CmdKind::CutterComp:
+    x.st.cutterComp = c.sub;
+    if (c.sub != 0) {
+      if (c.has(Word::D))
+        x.cutterD = std::fabs(c.get(Word::D)) < 1e9 ? (int)c.get(Word::D) : -1;
+      else if (x.cutterD == 0)
+        x.warning("cutter compensation without a D word: radius 0", "cutcomp-without-d");
+      if (!x.warnedCutterComp) {
+        x.warnedCutterComp = true;
+        x.warning("cutter compensation is not applied yet: the programmed path is used",
+                  "cutcomp-unsupported");
+      }
+    }
+    return true;
+  case CmdKind::WorkOffset:
+    if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
+    x.st.workOffset = c.sub;
+    return true;
+  case CmdKind::SetOffset: return x.execSetOffset(c);
+  case CmdKind::Stop: return x.execStop(c);
+  case CmdKind::Aux: {
+    MotionRecord r = x.record(RecordKind::Aux);
+    double p = c.get(Word::P);
+    if (std::fabs(p) > 1e15) return x.error("aux code out of range", "bad-number");
+    r.ivalue = (int64_t)p;
+    r.text = std::string(1, c.sub ? (char)c.sub : 'M');
+    x.emit(r);
+    return true;
+  }
+  default: return x.error("unknown machine command", "bad-command");
+  }
+}
+
+bool Executor::finish() {
+  Impl &x = *impl_;
+  if (!x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");
+  return true;
+}
+
+}  // namespace ncc

@@ -401,6 +401,8 @@ TEST(IRVerifier, EnumeratedValuesAndVariables) {
   EXPECT_EQ(verify("declare var=%x type=float\n"),
             "'declare' argument 'type' must be one of: int real bool string symbol axis frame");
   EXPECT_EQ(verify("block n=#1\n"), "'block' argument 'n' must be a non-negative integer constant");
+  EXPECT_EQ(verify("declare var=#1 type=REAL\n"), "'declare' argument 'var' must be a named variable (%name or %%name)");
+  EXPECT_EQ(verify("declare var=%%g type=INT\n"), "");
 }
 
 TEST(IRVerifier, Expressions) {
@@ -437,6 +439,9 @@ TEST(IRVerifier, GotoTargets) {
   EXPECT_EQ(verify("label name=\"L1\"\ngoto label=\"L1\"\n"), "");
   EXPECT_EQ(verify("goto label=\"L2\"\n"), "'goto' target label 'L2' is not in this function");
   EXPECT_EQ(verify("goto\n"), "'goto' needs a target: n= or label=");
+  EXPECT_EQ(verify("label name=\"5\"\ngoto n=\"5\"\n"), "'goto' argument 'n' must be a number");
+  EXPECT_EQ(verify("block n=5\ngoto label=5\n"), "'goto' argument 'label' must be a string");
+  EXPECT_EQ(verify("goto label=(concat \"L\" R1)\n"), "");  // computed label (Sinumerik GOTOF "N"<<R10)
   EXPECT_EQ(verify("goto n=#1\n"), "");  // computed target: checked at run time
   EXPECT_EQ(verify("label name=\"A\"\nlabel name=\"A\"\n"), "label 'A' is defined twice in function '@main'");
   // A block of another function is not a target.
@@ -522,4 +527,24 @@ TEST(IRTextFuzz, ParserNeverCrashes) {
     ASSERT_EQ(roundTrip(printed, c), printed) << "input:\n" << text;
   }
   EXPECT_GT(accepted, 50u);  // the mutations must also exercise the accepting paths
+}
+
+// A readable source path is loaded, so verifier diagnostics quote the original program line.
+TEST(IRText, ReadableSourcesAreLoaded) {
+  std::string path = ::testing::TempDir() + "irtext_src.nc";
+  {
+    std::FILE *f = std::fopen(path.c_str(), "wb");
+    ASSERT_TRUE(f);
+    std::fputs("N10 G1 X1\nN20 G1 QQ2\n", f);
+    std::fclose(f);
+  }
+  Ctx c;
+  Module m;
+  std::string text = "module \"x\" dialect=iso\nsource 1 \"" + path + "\"\nfunc @main {\n  move QQ=2.0 loc(1:2:8)\n}\n";
+  ASSERT_TRUE(c.parse(text, m)) << c.firstError();
+  EXPECT_FALSE(verifyModule(m, c.diags));
+  ASSERT_EQ(c.diags.collected().size(), 1u);
+  EXPECT_EQ(c.diags.render(c.diags.collected()[0]),
+            path + ":2:8: error: 'move' has unknown argument 'QQ'\nN20 G1 QQ2\n       ^\n");
+  std::remove(path.c_str());
 }

@@ -58,7 +58,7 @@ int cmdCompile(int argc, char **argv) {
   ir::Module m;
   if (!s.load(f, m)) return kExitErrors;
   if (emit == "ir") {
-    writeOutput(s, out, ir::printModule(m));
+    writeOutput(s, out, ir::printModule(m, s.sm));
   } else if (emit == "motion") {
     StringMotionWriter w;
     if (!s.executeModule(m, w)) return kExitErrors;
@@ -117,7 +117,7 @@ int cmdOpt(int argc, char **argv) {
     }
   if (!runPasses(m, names, s.diags, ctx)) return kExitErrors;
   bool lowered = !names.empty() && names.back() == "lower-motion";
-  writeOutput(s, out, lowered ? motion : ir::printModule(m));
+  writeOutput(s, out, lowered ? motion : ir::printModule(m, s.sm));
   return s.exitCode();
 }
 

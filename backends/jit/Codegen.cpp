@@ -1,0 +1,305 @@
+// NC IR -> LLVM IR: module set-up, functions and control flow. Every NC function becomes
+//   internal i32 @"nc.<name>"(ptr ctx, ptr storage, ptr frame)
+// returning NCRT_OK / NCRT_END / NCRT_ERROR; `frame` holds #0..#33 and the named locals.
+#include "backends/jit/Codegen.h"
+#include "backends/jit/CodegenImpl.h"
+
+#include "ir/Value.h"
+#include "ir/Builtins.h"
+#include "runtime/ncrt.h"
+
+#include <llvm/IR/Verifier.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include <cmath>
+#include <cstddef>
+
+namespace ncc::jit {
+
+using namespace llvm;
+using ir::Expr;
+using ir::ExprKind;
+using ir::Op;
+using ir::OpKind;
+
+static constexpr unsigned kFrameLocals = 33;
+
+// The LLVM struct types below mirror these C++ layouts.
+static_assert(offsetof(MachineCmd, modes) == 4 && offsetof(MachineCmd, mask) == 12 &&
+              offsetof(MachineCmd, blockNumber) == 16 && offsetof(MachineCmd, loc) == 24 &&
+              offsetof(MachineCmd, text) == 40 && offsetof(MachineCmd, w) == 48 && sizeof(MachineCmd) == 224,
+              "MachineCmd layout changed: update cmdTy");
+static_assert(offsetof(ncrt_storage, max_loop) == 32 && offsetof(ncrt_storage, depth) == 44 &&
+              offsetof(ncrt_storage, poll) == 48 && sizeof(ncrt_storage) == 56,
+              "ncrt_storage layout changed: update storageTy");
+
+Codegen::Codegen(const ir::Module &src, LLVMContext &ctx, Diagnostics &diags)
+    : src_(src), C(ctx), diags_(diags), M(std::make_unique<Module>(src.name.empty() ? "nc" : src.name, ctx)),
+      B(ctx) {
+  dblTy = Type::getDoubleTy(C);
+  i8Ty = Type::getInt8Ty(C);
+  i32Ty = Type::getInt32Ty(C);
+  i64Ty = Type::getInt64Ty(C);
+  i1Ty = Type::getInt1Ty(C);
+  ptrTy = PointerType::getUnqual(C);
+  cmdTy = StructType::create(C,
+                             {i8Ty, i8Ty, i8Ty, i8Ty, ArrayType::get(i8Ty, 6), i32Ty, i64Ty,
+                              ArrayType::get(i32Ty, 3), ptrTy, ArrayType::get(dblTy, kWords)},
+                             "ncrt_cmd");
+  storageTy = StructType::create(C, {ptrTy, ptrTy, ptrTy, ptrTy, i64Ty, i32Ty, i32Ty, i64Ty}, "ncrt_storage");
+  ncFnTy = FunctionType::get(i32Ty, {ptrTy, ptrTy, ptrTy}, false);
+}
+
+void Codegen::declareRuntime() {
+  auto decl = [&](const char *name, Type *ret, ArrayRef<Type *> params) {
+    return M->getOrInsertFunction(name, FunctionType::get(ret, params, false));
+  };
+  Type *voidTy = Type::getVoidTy(C);
+  fBegin = decl("ncrt_begin", ptrTy, {ptrTy, i32Ty, i32Ty});
+  fExec = decl("ncrt_exec", i32Ty, {ptrTy, ptrTy});
+  fExecTable = decl("ncrt_exec_table", i32Ty, {ptrTy, ptrTy, i64Ty});
+  fExecPacked = decl("ncrt_exec_packed", i32Ty, {ptrTy, ptrTy, i64Ty});
+  fError = decl("ncrt_error", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy});
+  fFault = decl("ncrt_fault", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, i32Ty, ptrTy, dblTy});
+  fPoll = decl("ncrt_poll", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
+  fMod = decl("ncrt_mod", dblTy, {dblTy, dblTy});
+  fIDiv = decl("ncrt_idiv", dblTy, {dblTy, dblTy});
+  fPow = decl("ncrt_pow", dblTy, {dblTy, dblTy});
+  // Pure arithmetic helpers: lets LLVM keep variables in registers across them.
+  for (auto *fc : {&fMod, &fIDiv, &fPow}) {
+    auto *fn = cast<Function>(fc->getCallee());
+    fn->setDoesNotAccessMemory();
+    fn->setDoesNotThrow();
+    fn->addFnAttr(Attribute::WillReturn);
+  }
+  for (auto *fc : {&fError, &fFault}) cast<Function>(fc->getCallee())->addFnAttr(Attribute::Cold);
+  unsigned n = 0;
+  const BuiltinInfo *tab = builtinTable(n);
+  for (unsigned i = 0; i < n; ++i) {
+    auto fc = decl(tab[i].symbol, dblTy, {ptrTy});
+    auto *fn = cast<Function>(fc.getCallee());
+    fn->setMemoryEffects(MemoryEffects::argMemOnly(ModRefInfo::Ref));  // reads only its arguments
+    fn->setDoesNotThrow();
+    fn->addFnAttr(Attribute::WillReturn);
+    builtins_[tab[i].name] = fc;
+  }
+}
+
+// ---------------------------------------------------------------- name scan
+// Named locals get slots per function (a frame=shared call gets fresh named locals, as in the
+// eval engine); named globals and Q prefixes get module-wide slots.
+void Codegen::scanExprNames(FnInfo &fi, const Expr &e) {
+  if (e.kind == ExprKind::Var) {
+    if (e.space == ir::VarSpace::Local) fi.locals.emplace(e.str, (unsigned)fi.locals.size());
+    if (e.space == ir::VarSpace::Global) globalNames_.emplace(e.str, (unsigned)globalNames_.size());
+    if (e.space == ir::VarSpace::QParam) qSpaces_.emplace(e.str, (unsigned)qSpaces_.size());
+  }
+  for (auto &a : e.args)
+    if (a) scanExprNames(fi, *a);
+}
+
+void Codegen::scanNames(FnInfo &fi, const ir::Region &r) {
+  for (auto &op : r) {
+    for (auto &a : op.args)
+      if (a.value) scanExprNames(fi, *a.value);
+    for (auto &sub : op.regions) scanNames(fi, sub);
+  }
+}
+
+// ---------------------------------------------------------------- helpers
+BasicBlock *Codegen::newBlock(const char *name) { return BasicBlock::Create(C, name, F); }
+
+void Codegen::startBlock(BasicBlock *bb) {
+  if (!B.GetInsertBlock()->getTerminator()) B.CreateBr(bb);
+  B.SetInsertPoint(bb);
+}
+
+void Codegen::ensureOpen() {
+  if (B.GetInsertBlock()->getTerminator()) B.SetInsertPoint(newBlock("dead"));
+}
+
+Value *Codegen::allocaEntry(Type *t, const char *name) {
+  IRBuilder<> tmp(entryBB, entryBB->begin());
+  return tmp.CreateAlloca(t, nullptr, name);
+}
+
+Constant *Codegen::cstring(const std::string &s) {
+  auto it = strings_.find(s);
+  if (it != strings_.end()) return it->second;
+  Constant *c = B.CreateGlobalStringPtr(s, ".str", 0, M.get());
+  strings_[s] = c;
+  return c;
+}
+
+std::vector<Value *> Codegen::locArgs(SourceLoc loc) {
+  return {B.getInt32(loc.file), B.getInt32(loc.line), B.getInt32(loc.col)};
+}
+
+void Codegen::checkStatus(Value *status) {
+  BasicBlock *cont = newBlock("ok");
+  exitPhi->addIncoming(status, B.GetInsertBlock());
+  B.CreateCondBr(B.CreateICmpNE(status, B.getInt32(NCRT_OK)), exitBB, cont);
+  B.SetInsertPoint(cont);
+}
+
+void Codegen::failIf(Value *cond, SourceLoc loc, const std::string &msg) {
+  BasicBlock *err = newBlock("error"), *cont = newBlock("cont");
+  B.CreateCondBr(cond, err, cont);
+  B.SetInsertPoint(err);
+  auto args = locArgs(loc);
+  B.CreateCall(fError, {ctxArg, args[0], args[1], args[2], cstring(msg)});
+  B.CreateBr(failBB);
+  B.SetInsertPoint(cont);
+}
+
+void Codegen::fail(SourceLoc loc, const std::string &msg) {
+  auto args = locArgs(loc);
+  B.CreateCall(fError, {ctxArg, args[0], args[1], args[2], cstring(msg)});
+  B.CreateBr(failBB);
+  B.SetInsertPoint(newBlock("dead"));
+}
+
+void Codegen::faultIf(Value *cond, SourceLoc loc, unsigned kind, const std::string &name, Value *value) {
+  BasicBlock *err = newBlock("fault"), *cont = newBlock("cont");
+  B.CreateCondBr(cond, err, cont);
+  B.SetInsertPoint(err);
+  auto args = locArgs(loc);
+  B.CreateCall(fFault, {ctxArg, args[0], args[1], args[2], B.getInt32(kind), cstring(name),
+                        value ? value : ConstantFP::get(dblTy, 0.0)});
+  B.CreateBr(failBB);
+  B.SetInsertPoint(cont);
+}
+
+// Fresh frame slots: [from, 34) vacant (#n), [34, size) unset (named locals).
+void Codegen::initFrame(Value *frame, unsigned size, unsigned from) {
+  Constant *vac = ConstantFP::get(dblTy, vacantValue());
+  uint64_t unsetBits = NCRT_UNSET_BITS;
+  Constant *unset = ConstantExpr::getBitCast(ConstantInt::get(i64Ty, unsetBits), dblTy);
+  // Unrolled stores let SROA keep main's locals in registers.
+  for (unsigned i = from; i < size; ++i)
+    B.CreateStore(i <= kFrameLocals ? vac : unset, B.CreateConstGEP1_32(dblTy, frame, i));
+}
+
+// Every NCRT_POLL_INTERVAL loop iterations or backward jumps, the runtime checks the time limit.
+void Codegen::emitTimeCheck(SourceLoc loc) {
+  Value *p = B.CreateSub(B.CreateLoad(i64Ty, pollPtr), B.getInt64(1));
+  B.CreateStore(p, pollPtr);
+  BasicBlock *poll = newBlock("poll"), *cont = newBlock("cont");
+  B.CreateCondBr(B.CreateICmpSLT(p, B.getInt64(0)), poll, cont);
+  B.SetInsertPoint(poll);
+  auto args = locArgs(loc);
+  Value *st = B.CreateCall(fPoll, {ctxArg, args[0], args[1], args[2]});
+  B.CreateCondBr(B.CreateICmpNE(st, B.getInt32(NCRT_OK)), failBB, cont);
+  B.SetInsertPoint(cont);
+}
+
+// ---------------------------------------------------------------- functions
+void Codegen::emitFunction(FnInfo &fi) {
+  cur_ = &fi;
+  F = fi.F;
+  ctxArg = F->getArg(0);
+  stArg = F->getArg(1);
+  frameArg = F->getArg(2);
+  entryBB = newBlock("entry");
+  B.SetInsertPoint(entryBB);
+  auto field = [&](unsigned i) { return B.CreateStructGEP(storageTy, stArg, i); };
+  numberedBase = B.CreateLoad(ptrTy, field(0), "numbered");
+  rBase = B.CreateLoad(ptrTy, field(1), "rparam");
+  qBase = B.CreateLoad(ptrTy, field(2), "qparam");
+  namedBase = B.CreateLoad(ptrTy, field(3), "named");
+  maxLoop = B.CreateLoad(i64Ty, field(4), "max_loop");
+  depthPtr = field(6);
+  pollPtr = field(7);
+  cmdSlot = argSlot = nullptr;
+  backJumps = B.CreateAlloca(i64Ty, nullptr, "backjumps");
+  scratch = B.CreateAlloca(dblTy, nullptr, "scratch");
+  B.CreateStore(B.getInt64(0), backJumps);
+  failBB = newBlock("fail");
+  exitBB = newBlock("exit");
+  BasicBlock *body = newBlock("body");
+  B.CreateBr(body);
+  B.SetInsertPoint(failBB);
+  B.CreateRet(B.getInt32(NCRT_ERROR));
+  B.SetInsertPoint(exitBB);
+  exitPhi = B.CreatePHI(i32Ty, 4, "status");
+  B.CreateRet(exitPhi);
+  B.SetInsertPoint(body);
+
+  order_.clear();
+  blocks_.clear();
+  labels_.clear();
+  targetBBs_.clear();
+  loops_.clear();
+  run_.clear();
+  packed_.clear();
+  if (!fi.compileErrors.empty()) {
+    // The eval engine rejects this function when it first runs it: so does the compiled code.
+    for (auto &e : fi.compileErrors) {
+      auto args = locArgs(e.first);
+      B.CreateCall(fError, {ctxArg, args[0], args[1], args[2], cstring(e.second)});
+    }
+    B.CreateBr(failBB);
+  } else {
+    scanTargets(fi.fn->body);
+    emitRegion(fi.fn->body);
+    if (!B.GetInsertBlock()->getTerminator()) B.CreateRet(B.getInt32(NCRT_OK));
+  }
+  if (pred_empty(exitBB)) exitBB->eraseFromParent();
+}
+
+void Codegen::emitEntry() {
+  auto *main = Function::Create(FunctionType::get(i32Ty, {ptrTy}, false), GlobalValue::ExternalLinkage,
+                                "ncc_program_main", M.get());
+  F = main;
+  entryBB = newBlock("entry");
+  B.SetInsertPoint(entryBB);
+  Value *ctx = main->getArg(0);
+  Value *st = B.CreateCall(fBegin, {ctx, B.getInt32((uint32_t)globalNames_.size()),
+                                    B.getInt32((uint32_t)qSpaces_.size())});
+  FnInfo &fi = functions_.at(src_.functions[0].name);
+  Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
+  initFrame(frame, fi.frameSize, 0);
+  B.CreateRet(B.CreateCall(fi.F, {ctx, st, frame}));
+}
+
+std::unique_ptr<Module> Codegen::run() {
+  declareRuntime();
+  for (auto &fn : src_.functions) {
+    if (functions_.count(fn.name)) {
+      diags_.error(fn.loc, "function '" + fn.name + "' defined twice");
+      return nullptr;
+    }
+    FnInfo &fi = functions_[fn.name];
+    fi.fn = &fn;
+    for (auto &p : fn.params) fi.locals.emplace(p.name, (unsigned)fi.locals.size());
+    scanNames(fi, fn.body);
+    fi.frameSize = (unsigned)(kFrameLocals + 1 + fi.locals.size());
+    fi.F = Function::Create(ncFnTy, GlobalValue::InternalLinkage, "nc." + fn.name, M.get());
+    validate(fi);
+  }
+  if (src_.functions.empty()) {
+    // Nothing to run: an entry that succeeds at once (the eval engine does the same).
+    auto *main = Function::Create(FunctionType::get(i32Ty, {ptrTy}, false), GlobalValue::ExternalLinkage,
+                                  "ncc_program_main", M.get());
+    B.SetInsertPoint(BasicBlock::Create(C, "entry", main));
+    B.CreateRet(B.getInt32(NCRT_OK));
+  } else {
+    for (auto &fn : src_.functions) emitFunction(functions_.at(fn.name));
+    emitEntry();
+  }
+  if (failed_) return nullptr;
+  std::string err;
+  raw_string_ostream os(err);
+  if (verifyModule(*M, &os)) {
+    diags_.error({}, "internal error: invalid LLVM IR: " + os.str());
+    return nullptr;
+  }
+  return std::move(M);
+}
+
+std::unique_ptr<Module> buildModule(const ir::Module &m, LLVMContext &ctx, Diagnostics &diags) {
+  Codegen cg(m, ctx, diags);
+  return cg.run();
+}
+
+}  // namespace ncc::jit

@@ -1,0 +1,22 @@
+// Internal to backends/jit: NC IR -> LLVM IR.
+#pragma once
+#include "ir/NCIR.h"
+
+#include <memory>
+
+namespace llvm {
+class LLVMContext;
+class Module;
+class TargetMachine;
+}  // namespace llvm
+
+namespace ncc::jit {
+
+// Builds the LLVM module (entry `i32 ncc_program_main(ptr ctx)`); null after reporting errors.
+std::unique_ptr<llvm::Module> buildModule(const ir::Module &m, llvm::LLVMContext &ctx, Diagnostics &diags);
+// Runs the standard O1..O3 pipeline (level 0 does nothing).
+void optimizeModule(llvm::Module &mod, llvm::TargetMachine *tm, int level);
+// Host target machine (PIC, default CPU features); null after reporting an error.
+std::unique_ptr<llvm::TargetMachine> hostTargetMachine(Diagnostics &diags);
+
+}  // namespace ncc::jit

@@ -1,0 +1,99 @@
+// NC IR -> LLVM IR: machine commands. Runs of constant commands become one constant table and
+// one runtime call (a MachineCmd array for short runs, the packed encoding of runtime/ncrt.h for
+// long ones, so a million-line flat program is a few MB of data, not a million calls); commands
+// with computed operands are built in a stack slot and passed to ncrt_exec.
+#include "backends/jit/CodegenImpl.h"
+
+#include "runtime/ncrt.h"
+
+#include <llvm/IR/Intrinsics.h>
+
+namespace ncc::jit {
+
+using namespace llvm;
+
+// Runs up to this length are MachineCmd arrays (no decoding); longer runs are packed.
+static constexpr size_t kSmallRun = 16;
+
+static bool hasText(const MachineCmd &c) { return c.kind == CmdKind::Comment || c.kind == CmdKind::Message; }
+
+Constant *Codegen::cmdConstant(const MachineCmd &c) {
+  uint8_t modes[6];
+  for (int i = 0; i < 6; ++i) modes[i] = (uint8_t)c.modes[i];
+  uint32_t loc[3] = {c.loc.file, c.loc.line, c.loc.col};
+  Constant *text = hasText(c) && c.text ? cstring(c.text) : ConstantPointerNull::get(ptrTy);
+  return ConstantStruct::get(
+      cmdTy, {B.getInt8((uint8_t)c.kind), B.getInt8(c.sub), B.getInt8(c.sub2), B.getInt8(c.nmodes),
+              ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, 6)), B.getInt32(c.mask),
+              B.getInt64((uint64_t)c.blockNumber), ConstantDataArray::get(C, ArrayRef<uint32_t>(loc, 3)), text,
+              ConstantDataArray::get(C, ArrayRef<double>(c.w, kWords))});
+}
+
+void Codegen::emitMachineOp(const ir::Op &op) {
+  Diagnostics quiet(diags_.sources());  // validate() already reported template errors
+  quiet.setCollect(true);
+  CmdTemplate t;
+  if (!buildCmdTemplate(op, t, quiet)) return;
+  if (t.slots.empty()) {
+    appendToRun(t.base);
+    return;
+  }
+  flushRun();
+  ensureOpen();
+  emitDynamicCmd(t);
+}
+
+// Short runs stay MachineCmds; once a run is longer it is packed as it grows (a flat program
+// must not hold a 224-byte struct per command).
+void Codegen::appendToRun(const MachineCmd &c) {
+  if (packed_.empty() && run_.size() < kSmallRun) {
+    run_.push_back(c);
+    return;
+  }
+  for (auto &r : run_) ncrt::packCmd(r, hasText(r) ? r.text : nullptr, packed_);
+  run_.clear();
+  ncrt::packCmd(c, hasText(c) ? c.text : nullptr, packed_);
+}
+
+void Codegen::flushRun() {
+  if (run_.empty() && packed_.empty()) return;
+  ensureOpen();
+  Value *st;
+  if (packed_.empty()) {
+    std::vector<Constant *> cmds;
+    for (auto &c : run_) cmds.push_back(cmdConstant(c));
+    auto *arrTy = ArrayType::get(cmdTy, cmds.size());
+    auto *gv = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage, ConstantArray::get(arrTy, cmds),
+                                  "nc.cmds");
+    st = B.CreateCall(fExecTable, {ctxArg, gv, B.getInt64(cmds.size())});
+  } else {
+    Constant *data = ConstantDataArray::getString(C, packed_, false);
+    auto *gv = new GlobalVariable(*M, data->getType(), true, GlobalValue::PrivateLinkage, data, "nc.table");
+    st = B.CreateCall(fExecPacked, {ctxArg, gv, B.getInt64(packed_.size())});
+    std::string().swap(packed_);
+  }
+  run_.clear();
+  checkStatus(st);
+}
+
+// Operands in template order: a vacant value leaves its word out, a non-finite one is an error.
+void Codegen::emitDynamicCmd(const CmdTemplate &t) {
+  if (!cmdSlot) cmdSlot = allocaEntry(cmdTy, "cmd");
+  B.CreateStore(cmdConstant(t.base), cmdSlot);
+  Value *mask = B.getInt32(t.base.mask);
+  Constant *inf = ConstantFP::getInfinity(dblTy);
+  for (auto &slot : t.slots) {
+    Val v = expr(*slot.expr);
+    Value *finite = B.CreateFCmpOLT(B.CreateUnaryIntrinsic(Intrinsic::fabs, v.v), inf);
+    Value *vacant = v.mayVacant ? isVacant(v.v) : B.getFalse();
+    failIf(B.CreateAnd(B.CreateNot(vacant), B.CreateNot(finite)), slot.expr->loc, "value is not a finite number");
+    B.CreateStore(v.v, B.CreateInBoundsGEP(cmdTy, cmdSlot, {B.getInt32(0), B.getInt32(9), B.getInt32((unsigned)slot.word)}));
+    Value *bit = B.getInt32(wordBit(slot.word));
+    if (v.mayVacant) bit = B.CreateSelect(vacant, B.getInt32(0), bit);
+    mask = B.CreateOr(mask, bit);
+  }
+  B.CreateStore(mask, B.CreateStructGEP(cmdTy, cmdSlot, 5));
+  checkStatus(B.CreateCall(fExec, {ctxArg, cmdSlot}));
+}
+
+}  // namespace ncc::jit

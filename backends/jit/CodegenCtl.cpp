@@ -1,0 +1,330 @@
+// NC IR -> LLVM IR: statements and control flow (assign, if, while, loop, goto, call), with the
+// eval engine's semantics: loop limits counted at the back edge, backward jumps counted per
+// function activation, calls sharing or renewing the #1..#33 frame.
+#include "backends/jit/CodegenImpl.h"
+
+#include "ir/Value.h"
+#include "runtime/ncrt.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace ncc::jit {
+
+using namespace llvm;
+using ir::Expr;
+using ir::ExprKind;
+using ir::Op;
+using ir::OpKind;
+
+static constexpr int kFrameLocals = 33;
+
+// Numbers every op in pre-order (the eval engine's instruction order), records block numbers
+// and labels, and marks the ops gotos reach: they start a basic block (and end a constant run).
+void Codegen::scanTargets(const ir::Region &body) {
+  order_.clear();
+  blocks_.clear();
+  labels_.clear();
+  targetBBs_.clear();
+  std::vector<const Op *> gotos;
+  auto walk = [&](auto &self, const ir::Region &r) -> void {
+    for (auto &op : r) {
+      order_[&op] = (unsigned)order_.size();
+      if (op.kind == OpKind::Block)
+        if (const Expr *n = op.get("n"); n && (n->kind == ExprKind::Number || n->kind == ExprKind::Bool) &&
+                                         (int64_t)n->num >= 0)
+          blocks_.push_back({(int64_t)n->num, &op});
+      if (op.kind == OpKind::Label)
+        if (const Expr *l = op.get("name")) labels_[l->str] = &op;
+      if (op.kind == OpKind::Goto) gotos.push_back(&op);
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  walk(walk, body);
+  for (const Op *go : gotos)
+    if (const Op *t = resolveTarget(*go)) targetBBs_[t] = nullptr;
+}
+
+// Fanuc search order: forward from the goto, then from the start of the function;
+// dir=forward|backward restricts it (Sinumerik GOTOF/GOTOB).
+const Op *Codegen::resolveTarget(const Op &go) {
+  const Expr *n = go.get("n"), *l = go.get("label"), *d = go.get("dir");
+  std::string dir = d ? d->str : "any";
+  std::vector<const Op *> cands;
+  if (n && n->kind == ExprKind::Number) {
+    for (auto &b : blocks_)
+      if (b.first == (int64_t)n->num) cands.push_back(b.second);
+  } else if (l) {
+    if (auto it = labels_.find(l->str); it != labels_.end()) cands.push_back(it->second);
+  }
+  unsigned from = order_.at(&go);
+  if (dir != "backward")
+    for (const Op *c : cands)
+      if (order_[c] > from) return c;
+  if (dir != "forward")
+    for (const Op *c : cands)
+      if (order_[c] <= from) return c;
+  return nullptr;
+}
+
+// The errors the eval engine raises when it compiles a function (on its first call): invalid
+// machine ops, bad assignment targets, break outside loops, unsupported ops, unresolved gotos.
+void Codegen::validate(FnInfo &fi) {
+  Diagnostics tmp(diags_.sources());
+  tmp.setCollect(true);
+  auto &errs = fi.compileErrors;
+  std::vector<const Op *> gotos;
+  auto walk = [&](auto &self, const ir::Region &r, unsigned loopDepth) -> bool {
+    for (auto &op : r) {
+      if (isMachineOp(op.kind)) {
+        CmdTemplate t;
+        if (!buildCmdTemplate(op, t, tmp)) {
+          for (auto &d : tmp.collected()) errs.push_back({d.loc, d.message});
+          errs.push_back({op.loc, "invalid machine operation"});
+          return false;
+        }
+        continue;
+      }
+      switch (op.kind) {
+      case OpKind::Assign:
+      case OpKind::Declare: {
+        const Expr *t = op.get(op.kind == OpKind::Assign ? "target" : "var");
+        if (!t || t->kind != ExprKind::Var) {
+          errs.push_back({op.loc, "assignment target is not a variable"});
+          return false;
+        }
+        break;
+      }
+      case OpKind::If:
+      case OpKind::While:
+      case OpKind::Loop:
+        if (op.regions.empty() || ((op.kind != OpKind::Loop) && !op.get("cond"))) {
+          errs.push_back({op.loc, fmt::format("malformed '{}'", ir::opInfo(op.kind).name)});
+          return false;
+        }
+        for (auto &sub : op.regions)
+          if (!self(self, sub, loopDepth + (op.kind == OpKind::If ? 0 : 1))) return false;
+        break;
+      case OpKind::Break:
+      case OpKind::Continue:
+        if (!loopDepth) {
+          errs.push_back({op.loc, fmt::format("'{}' outside a loop", ir::opInfo(op.kind).name)});
+          return false;
+        }
+        break;
+      case OpKind::Goto: gotos.push_back(&op); break;
+      case OpKind::Label:
+      case OpKind::Call:
+      case OpKind::Return: break;
+      default:
+        errs.push_back({op.loc, fmt::format("the JIT cannot execute '{}'", ir::opInfo(op.kind).name)});
+        return false;
+      }
+    }
+    return true;
+  };
+  if (!walk(walk, fi.fn->body, 0)) return;
+  scanTargets(fi.fn->body);
+  for (const Op *go : gotos) {
+    const Expr *n = go->get("n"), *l = go->get("label");
+    if (!(n && n->kind == ExprKind::Number) && !l) {
+      errs.push_back({go->loc, "goto target must be a constant sequence number or a label"});
+      return;
+    }
+    if (!resolveTarget(*go)) {
+      errs.push_back({go->loc, n ? fmt::format("jump to missing sequence number N{}", (int64_t)n->num)
+                                 : fmt::format("jump to missing label '{}'", l->str)});
+      return;
+    }
+  }
+}
+
+BasicBlock *Codegen::targetBlock(const Op *op) {
+  BasicBlock *&bb = targetBBs_[op];
+  if (!bb) bb = newBlock(op->kind == OpKind::Label ? "label" : "block");
+  return bb;
+}
+
+void Codegen::emitRegion(const ir::Region &r) {
+  for (auto &op : r) {
+    if (targetBBs_.count(&op)) {
+      flushRun();
+      startBlock(targetBlock(&op));
+    }
+    if (op.kind == OpKind::Label) continue;
+    if (isMachineOp(op.kind)) {
+      emitMachineOp(op);
+      continue;
+    }
+    flushRun();
+    ensureOpen();
+    emitOp(op);
+  }
+  flushRun();
+}
+
+void Codegen::emitOp(const Op &op) {
+  switch (op.kind) {
+  case OpKind::Assign: {
+    const Expr *value = op.get("value");
+    Value *v = value ? expr(*value).v : ConstantFP::get(dblTy, vacantValue());
+    storeVar(*op.get("target"), v);
+    return;
+  }
+  case OpKind::Declare: {
+    const Expr *init = op.get("init");
+    storeVar(*op.get("var"), init ? expr(*init).v : ConstantFP::get(dblTy, 0.0));
+    return;
+  }
+  case OpKind::If: emitIf(op); return;
+  case OpKind::While:
+  case OpKind::Loop: emitLoop(op); return;
+  case OpKind::Break: B.CreateBr(loops_.back().brk); return;
+  case OpKind::Continue: B.CreateBr(loops_.back().cont); return;
+  case OpKind::Goto: emitGoto(op); return;
+  case OpKind::Call: emitCall(op); return;
+  case OpKind::Return: B.CreateRet(B.getInt32(NCRT_OK)); return;
+  default: return;  // rejected by validate()
+  }
+}
+
+void Codegen::emitIf(const Op &op) {
+  Value *c = truthy(expr(*op.get("cond")));
+  BasicBlock *thenBB = newBlock("then"), *elseBB = op.regions.size() > 1 ? newBlock("else") : nullptr,
+             *done = newBlock("endif");
+  B.CreateCondBr(c, thenBB, elseBB ? elseBB : done);
+  B.SetInsertPoint(thenBB);
+  emitRegion(op.regions[0]);
+  if (elseBB) {
+    startBlock(done);  // closes the then branch
+    B.SetInsertPoint(elseBB);
+    emitRegion(op.regions[1]);
+  }
+  startBlock(done);
+}
+
+// while: enter (counter = 0) -> head: cond -> body -> latch -> head.
+// loop:  enter, remaining = round(count) (-1 = endless) -> head: remaining == 0 ? exit :
+//        (remaining > 0 ? remaining - 1) -> body -> latch -> head.
+// The latch (also the target of continue) counts the iteration: reaching maxLoopIterations is
+// the error, as in the eval engine.
+void Codegen::emitLoop(const Op &op) {
+  Value *counter = allocaEntry(i64Ty, "loop.count");
+  B.CreateStore(B.getInt64(0), counter);
+  Value *remaining = nullptr;
+  if (op.kind == OpKind::Loop) {
+    remaining = allocaEntry(dblTy, "loop.remaining");
+    const Expr *count = op.get("count");
+    B.CreateStore(count ? roundOf(numOf(expr(*count))) : ConstantFP::get(dblTy, -1.0), remaining);
+  }
+  BasicBlock *head = newBlock("loop.head"), *body = newBlock("loop.body"), *latch = newBlock("loop.latch"),
+             *done = newBlock("loop.end");
+  startBlock(head);
+  if (remaining) {
+    Value *r = B.CreateLoad(dblTy, remaining);
+    BasicBlock *more = newBlock("loop.more");
+    B.CreateCondBr(B.CreateFCmpOEQ(r, ConstantFP::get(dblTy, 0.0)), done, more);
+    B.SetInsertPoint(more);
+    Value *dec = B.CreateFSub(r, ConstantFP::get(dblTy, 1.0));
+    B.CreateStore(B.CreateSelect(B.CreateFCmpOGT(r, ConstantFP::get(dblTy, 0.0)), dec, r), remaining);
+    B.CreateBr(body);
+  } else {
+    B.CreateCondBr(truthy(expr(*op.get("cond"))), body, done);
+  }
+  B.SetInsertPoint(body);
+  loops_.push_back({latch, done});
+  emitRegion(op.regions[0]);
+  loops_.pop_back();
+  startBlock(latch);
+  Value *n = B.CreateAdd(B.CreateLoad(i64Ty, counter), B.getInt64(1));
+  B.CreateStore(n, counter);
+  faultIf(B.CreateICmpUGE(n, maxLoop), op.loc, NCRT_FAULT_LOOP_LIMIT, "", nullptr);
+  emitTimeCheck(op.loc);
+  B.CreateBr(head);
+  B.SetInsertPoint(done);
+}
+
+void Codegen::emitGoto(const Op &go) {
+  const Op *target = resolveTarget(go);  // validate() guarantees one
+  if (order_[target] <= order_[&go]) {
+    Value *n = B.CreateAdd(B.CreateLoad(i64Ty, backJumps), B.getInt64(1));
+    B.CreateStore(n, backJumps);
+    faultIf(B.CreateICmpUGT(n, maxLoop), go.loc, NCRT_FAULT_BACKJUMP, "", nullptr);
+    emitTimeCheck(go.loc);
+  }
+  B.CreateBr(targetBlock(target));
+}
+
+// call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are
+// evaluated once in the caller; frame=new gives each repetition fresh #1..#33 holding the
+// numbered arguments (and the callee's named locals that are named arguments); otherwise
+// (shared, the default) the callee works on the caller's #1..#33. Named locals are per call.
+void Codegen::emitCall(const Op &op) {
+  const Expr *callee = op.get("callee");
+  const ir::Function *target = callee ? src_.find(callee->str) : nullptr;
+  if (!target) {
+    fail(op.loc, fmt::format("call to unknown program '{}'", callee ? callee->str : "?"));
+    return;
+  }
+  FnInfo &fi = functions_.at(target->name);
+  const Expr *countE = op.get("count");
+  Value *count = countE ? numOf(expr(*countE)) : nullptr;
+  const Expr *frameE = op.get("frame");
+  bool newFrame = frameE && frameE->str == "new";
+  Value *depth = B.CreateLoad(i32Ty, depthPtr);
+  Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
+  faultIf(B.CreateICmpUGE(depth, maxDepth), op.loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
+  std::vector<std::pair<unsigned, Value *>> args;  // callee frame slot, value
+  for (auto &a : op.args) {
+    if (a.key.rfind("a.", 0) != 0 || !a.value) continue;
+    std::string k = a.key.substr(2);
+    Value *v = expr(*a.value).v;
+    if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
+      long n = std::atol(k.c_str());
+      if (n >= 1 && n <= kFrameLocals) args.push_back({(unsigned)n, v});
+    } else if (auto it = fi.locals.find(k); it != fi.locals.end()) {
+      args.push_back({(unsigned)(kFrameLocals + 1 + it->second), v});
+    }
+  }
+  B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
+
+  Value *counter = nullptr, *limit = nullptr;
+  BasicBlock *head = nullptr, *done = nullptr;
+  if (count) {  // repetitions: llround(count); NaN and counts below 1 run none
+    Value *r = roundOf(count);
+    Value *c = B.CreateSelect(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 1.0)), r, ConstantFP::get(dblTy, 0.0));
+    c = B.CreateSelect(B.CreateFCmpOGT(c, ConstantFP::get(dblTy, 0x1p62)), ConstantFP::get(dblTy, 0x1p62), c);
+    limit = B.CreateFPToSI(c, i64Ty);
+    counter = allocaEntry(i64Ty, "call.count");
+    B.CreateStore(B.getInt64(0), counter);
+    head = newBlock("call.head");
+    done = newBlock("call.end");
+    BasicBlock *body = newBlock("call.body");
+    startBlock(head);
+    Value *i = B.CreateLoad(i64Ty, counter);
+    B.CreateCondBr(B.CreateICmpSLT(i, limit), body, done);
+    B.SetInsertPoint(body);
+    B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
+  }
+  Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
+  const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);
+  if (newFrame) {
+    initFrame(frame, fi.frameSize, 0);
+    for (auto &a : args) B.CreateStore(a.second, B.CreateConstGEP1_32(dblTy, frame, a.first));
+  } else {
+    B.CreateMemCpy(frame, MaybeAlign(8), frameArg, MaybeAlign(8), localsBytes);
+    initFrame(frame, fi.frameSize, kFrameLocals + 1);
+  }
+  Value *st = B.CreateCall(fi.F, {ctxArg, stArg, frame});
+  checkStatus(st);
+  if (!newFrame) B.CreateMemCpy(frameArg, MaybeAlign(8), frame, MaybeAlign(8), localsBytes);
+  if (count) {
+    B.CreateBr(head);
+    B.SetInsertPoint(done);
+  }
+  B.CreateStore(depth, depthPtr);
+}
+
+}  // namespace ncc::jit

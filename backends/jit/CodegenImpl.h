@@ -1,0 +1,134 @@
+// Internal to backends/jit: the code generator's state, shared by Codegen.cpp (module,
+// functions, frames), CodegenCtl.cpp (statements, control flow), CodegenExpr.cpp (expressions,
+// variables) and CodegenCmd.cpp (machine commands and constant tables).
+//
+// The generated code reproduces the eval engine (passes/Eval.cpp) exactly: same values, same
+// command stream, same run-time errors with the same texts, at the same points of execution.
+#pragma once
+#include "ir/NCIR.h"
+#include "passes/CmdTemplate.h"
+
+#include <llvm/IR/IRBuilder.h>
+#include <llvm/IR/Module.h>
+
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace ncc::jit {
+
+// A value of an expression and whether it can be vacant at run time (variable reads);
+// arithmetic results never are, so most vacant checks fold away at compile time.
+struct Val {
+  llvm::Value *v;
+  bool mayVacant;
+};
+
+// One NC function: its LLVM function, its frame layout and the errors the eval engine would
+// raise when it first compiles it (reported when the function is first called).
+struct FnInfo {
+  const ir::Function *fn = nullptr;
+  llvm::Function *F = nullptr;
+  std::map<std::string, unsigned> locals;  // named locals: frame slot 34 + index
+  unsigned frameSize = 34;                 // #0..#33 then the named locals
+  std::vector<std::pair<SourceLoc, std::string>> compileErrors;
+};
+
+class Codegen {
+public:
+  Codegen(const ir::Module &src, llvm::LLVMContext &ctx, Diagnostics &diags);
+  std::unique_ptr<llvm::Module> run();
+
+private:
+  // ------------------------------------------------ module level (Codegen.cpp)
+  void declareRuntime();
+  void scanNames(FnInfo &fi, const ir::Region &r);
+  void scanExprNames(FnInfo &fi, const ir::Expr &e);
+  void emitFunction(FnInfo &fi);
+  void emitEntry();
+  void initFrame(llvm::Value *frame, unsigned size, unsigned from);
+  // ------------------------------------------------ control flow (CodegenCtl.cpp)
+  void validate(FnInfo &fi);
+  void scanTargets(const ir::Region &r);
+  void emitRegion(const ir::Region &r);
+  void emitOp(const ir::Op &op);
+  void emitIf(const ir::Op &op);
+  void emitLoop(const ir::Op &op);
+  void emitGoto(const ir::Op &op);
+  void emitCall(const ir::Op &op);
+  const ir::Op *resolveTarget(const ir::Op &go);
+  llvm::BasicBlock *targetBlock(const ir::Op *op);
+  void emitTimeCheck(SourceLoc loc);
+  // ------------------------------------------------ helpers (Codegen.cpp)
+  llvm::BasicBlock *newBlock(const char *name);
+  void startBlock(llvm::BasicBlock *bb);  // falls through from an open current block
+  void ensureOpen();                      // after a terminator: continue in a dead block
+  llvm::Value *allocaEntry(llvm::Type *t, const char *name);
+  void checkStatus(llvm::Value *status);  // returns the status when it is not NCRT_OK
+  void failIf(llvm::Value *cond, SourceLoc loc, const std::string &msg);
+  void fail(SourceLoc loc, const std::string &msg);  // unconditional; continues in a dead block
+  void faultIf(llvm::Value *cond, SourceLoc loc, unsigned kind, const std::string &name, llvm::Value *value);
+  llvm::Constant *cstring(const std::string &s);
+  std::vector<llvm::Value *> locArgs(SourceLoc loc);
+  // ------------------------------------------------ expressions (CodegenExpr.cpp)
+  Val expr(const ir::Expr &e);
+  Val binary(const ir::Expr &e);
+  Val callBuiltin(const ir::Expr &e);
+  llvm::Value *numOf(Val v);
+  llvm::Value *truthy(Val v);  // i1
+  llvm::Value *isVacant(llvm::Value *v);
+  llvm::Value *toDouble(llvm::Value *i1);
+  llvm::Value *roundOf(llvm::Value *v);  // llvm.round: half away from zero, like lround
+  llvm::Value *varPtr(const ir::Expr &var, bool write);
+  llvm::Value *numberedPtr(const ir::Expr &var, bool write);
+  llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
+  Val loadVar(const ir::Expr &var);
+  void storeVar(const ir::Expr &var, llvm::Value *value);
+  // ------------------------------------------------ commands (CodegenCmd.cpp)
+  void emitMachineOp(const ir::Op &op);
+  void appendToRun(const MachineCmd &c);
+  void flushRun();
+  void emitDynamicCmd(const CmdTemplate &t);
+  llvm::Constant *cmdConstant(const MachineCmd &c);
+
+  const ir::Module &src_;
+  llvm::LLVMContext &C;
+  Diagnostics &diags_;
+  std::unique_ptr<llvm::Module> M;
+  llvm::IRBuilder<> B;
+  bool failed_ = false;
+
+  llvm::Type *dblTy, *i8Ty, *i32Ty, *i64Ty, *i1Ty;
+  llvm::PointerType *ptrTy;
+  llvm::StructType *cmdTy, *storageTy;
+  llvm::FunctionType *ncFnTy;
+  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow;
+  std::map<std::string, llvm::FunctionCallee> builtins_;
+  std::map<std::string, FnInfo> functions_;
+  std::map<std::string, llvm::Constant *> strings_;
+  std::map<std::string, unsigned> globalNames_, qSpaces_;  // module-wide slots
+
+  // ------------------------------------------------ per function
+  FnInfo *cur_ = nullptr;
+  llvm::Function *F = nullptr;
+  llvm::BasicBlock *entryBB = nullptr, *failBB = nullptr, *exitBB = nullptr;
+  llvm::PHINode *exitPhi = nullptr;
+  llvm::Value *ctxArg, *stArg, *frameArg;
+  llvm::Value *numberedBase, *rBase, *qBase, *namedBase, *maxLoop, *depthPtr, *pollPtr;
+  llvm::Value *cmdSlot = nullptr, *argSlot = nullptr, *backJumps = nullptr, *scratch = nullptr;
+  struct LoopTargets {
+    llvm::BasicBlock *cont, *brk;
+  };
+  std::vector<LoopTargets> loops_;
+  // Jump targets: every op in pre-order (the eval engine's instruction order), block numbers
+  // and labels (the last definition of a label wins, as in the eval engine).
+  std::unordered_map<const ir::Op *, unsigned> order_;
+  std::vector<std::pair<int64_t, const ir::Op *>> blocks_;
+  std::map<std::string, const ir::Op *> labels_;
+  std::unordered_map<const ir::Op *, llvm::BasicBlock *> targetBBs_;
+  std::vector<MachineCmd> run_;  // pending constant commands (text points into the IR)
+  std::string packed_;           // or, for a long run, the packed encoding so far
+};
+
+}  // namespace ncc::jit

@@ -1,0 +1,209 @@
+// Runs compiled NC programs in-process with ORC LLJIT; the runtime's C ABI and the builtin
+// functions are handed to the JIT as absolute symbols (the ncc binary does not export them).
+#include "backends/jit/Codegen.h"
+#include "backends/jit/Jit.h"
+
+#include "ir/Builtins.h"
+#include "passes/Eval.h"
+#include "runtime/Executor.h"
+#include "runtime/ncrt.h"
+
+#include <llvm/ExecutionEngine/Orc/ExecutionUtils.h>
+#include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
+#include <llvm/ExecutionEngine/Orc/LLJIT.h>
+#include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/Module.h>
+#include <llvm/MC/TargetRegistry.h>
+#include <llvm/Passes/PassBuilder.h>
+#include <llvm/Support/MemoryBuffer.h>
+#include <llvm/Support/TargetSelect.h>
+#include <llvm/Support/raw_ostream.h>
+#include <llvm/Target/TargetMachine.h>
+#include <llvm/TargetParser/Host.h>
+
+#include <mutex>
+
+namespace ncc::jit {
+
+using namespace llvm;
+
+static void initLLVM() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    InitializeNativeTarget();
+    InitializeNativeTargetAsmPrinter();
+  });
+}
+
+static std::string errorText(Error e) {
+  std::string s;
+  raw_string_ostream os(s);
+  logAllUnhandledErrors(std::move(e), os);
+  while (!s.empty() && s.back() == '\n') s.pop_back();
+  return s;
+}
+
+std::unique_ptr<TargetMachine> hostTargetMachine(Diagnostics &diags) {
+  initLLVM();
+  auto jtmb = orc::JITTargetMachineBuilder::detectHost();
+  if (!jtmb) {
+    diags.error({}, "cannot target the host: " + errorText(jtmb.takeError()));
+    return nullptr;
+  }
+  jtmb->setRelocationModel(Reloc::PIC_);
+  jtmb->setCodeGenOptLevel(CodeGenOptLevel::Default);
+  auto tm = jtmb->createTargetMachine();
+  if (!tm) {
+    diags.error({}, "cannot target the host: " + errorText(tm.takeError()));
+    return nullptr;
+  }
+  return std::move(*tm);
+}
+
+void optimizeModule(Module &mod, TargetMachine *tm, int level) {
+  if (level <= 0) return;
+  LoopAnalysisManager LAM;
+  FunctionAnalysisManager FAM;
+  CGSCCAnalysisManager CGAM;
+  ModuleAnalysisManager MAM;
+  PassBuilder PB(tm);
+  PB.registerModuleAnalyses(MAM);
+  PB.registerCGSCCAnalyses(CGAM);
+  PB.registerFunctionAnalyses(FAM);
+  PB.registerLoopAnalyses(LAM);
+  PB.crossRegisterProxies(LAM, FAM, CGAM, MAM);
+  OptimizationLevel lvl = level == 1 ? OptimizationLevel::O1 : level == 2 ? OptimizationLevel::O2 : OptimizationLevel::O3;
+  PB.buildPerModuleDefaultPipeline(lvl).run(mod, MAM);
+}
+
+// Every external symbol generated code may reference, with its address in this process.
+static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
+  orc::SymbolMap syms;
+  auto add = [&](const char *name, auto *fn) {
+    syms[jit.mangleAndIntern(name)] = {orc::ExecutorAddr::fromPtr(fn),
+                                       JITSymbolFlags::Exported | JITSymbolFlags::Callable};
+  };
+  add("ncrt_begin", &ncrt_begin);
+  add("ncrt_exec", &ncrt_exec);
+  add("ncrt_exec_table", &ncrt_exec_table);
+  add("ncrt_exec_packed", &ncrt_exec_packed);
+  add("ncrt_error", &ncrt_error);
+  add("ncrt_fault", &ncrt_fault);
+  add("ncrt_poll", &ncrt_poll);
+  add("ncrt_mod", &ncrt_mod);
+  add("ncrt_idiv", &ncrt_idiv);
+  add("ncrt_pow", &ncrt_pow);
+  unsigned n = 0;
+  const BuiltinInfo *tab = builtinTable(n);
+  for (unsigned i = 0; i < n; ++i) add(tab[i].symbol, tab[i].fn);
+  return syms;
+}
+
+// An LLJIT for the host whose main dylib resolves the runtime, the builtins and libc/libm
+// (memcpy, memset, round on CPUs without SSE4.1); null after reporting an error.
+static std::unique_ptr<orc::LLJIT> makeJit(orc::JITTargetMachineBuilder jtmb, Diagnostics &diags) {
+  auto jit = orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(jtmb)).create();
+  if (!jit) {
+    diags.error({}, "JIT: " + errorText(jit.takeError()));
+    return nullptr;
+  }
+  orc::JITDylib &jd = (*jit)->getMainJITDylib();
+  if (Error e = jd.define(orc::absoluteSymbols(runtimeSymbols(**jit)))) {
+    diags.error({}, "JIT: " + errorText(std::move(e)));
+    return nullptr;
+  }
+  auto process = orc::DynamicLibrarySearchGenerator::GetForCurrentProcess((*jit)->getDataLayout().getGlobalPrefix());
+  if (!process) {
+    diags.error({}, "JIT: " + errorText(process.takeError()));
+    return nullptr;
+  }
+  jd.addGenerator(std::move(*process));
+  return std::move(*jit);
+}
+
+// Looks up the entry and runs it against the sink.
+static bool runEntry(orc::LLJIT &jit, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits) {
+  auto sym = jit.lookup("ncc_program_main");
+  if (!sym) {
+    diags.error({}, "JIT: " + errorText(sym.takeError()));
+    return false;
+  }
+  auto *entry = sym->toPtr<int (*)(ncrt_ctx *)>();
+  ncrt_ctx rt(sink, diags, limits);
+  int status = entry(&rt);
+  // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
+  // error was reported.
+  if (status == NCRT_END) return !diags.hasErrors();
+  return status == NCRT_OK;
+}
+
+bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const JitOptions &opts) {
+  initLLVM();
+  auto jtmb = orc::JITTargetMachineBuilder::detectHost();
+  if (!jtmb) {
+    diags.error({}, "JIT: " + errorText(jtmb.takeError()));
+    return false;
+  }
+  auto tm = jtmb->createTargetMachine();
+  if (!tm) {
+    diags.error({}, "JIT: " + errorText(tm.takeError()));
+    return false;
+  }
+  auto ctx = std::make_unique<LLVMContext>();
+  std::unique_ptr<Module> mod = buildModule(m, *ctx, diags);
+  if (!mod) return false;
+  mod->setDataLayout((*tm)->createDataLayout());
+  mod->setTargetTriple(jtmb->getTargetTriple().str());
+  optimizeModule(*mod, tm->get(), opts.optLevel);
+  auto jit = makeJit(std::move(*jtmb), diags);
+  if (!jit) return false;
+  if (Error e = jit->addIRModule(orc::ThreadSafeModule(std::move(mod), std::move(ctx)))) {
+    diags.error({}, "JIT: " + errorText(std::move(e)));
+    return false;
+  }
+  return runEntry(*jit, sink, diags, opts.limits);
+}
+
+bool runObjectFile(const std::string &path, CmdSink &sink, Diagnostics &diags, const JitOptions &opts) {
+  initLLVM();
+  auto buf = MemoryBuffer::getFile(path);
+  if (!buf) {
+    diags.error({}, "cannot read '" + path + "': " + buf.getError().message());
+    return false;
+  }
+  auto jtmb = orc::JITTargetMachineBuilder::detectHost();
+  if (!jtmb) {
+    diags.error({}, "JIT: " + errorText(jtmb.takeError()));
+    return false;
+  }
+  auto jit = makeJit(std::move(*jtmb), diags);
+  if (!jit) return false;
+  if (Error e = jit->addObjectFile(std::move(*buf))) {
+    diags.error({}, "'" + path + "': " + errorText(std::move(e)));
+    return false;
+  }
+  return runEntry(*jit, sink, diags, opts.limits);
+}
+
+bool runModule(const ir::Module &m, Executor &exec, Diagnostics &diags, const JitOptions &opts) {
+  ExecutorSink sink(exec);
+  return runModule(m, sink, diags, opts);
+}
+
+bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags) {
+  auto tm = hostTargetMachine(diags);
+  if (!tm) return false;
+  LLVMContext ctx;
+  std::unique_ptr<Module> mod = buildModule(m, ctx, diags);
+  if (!mod) return false;
+  mod->setDataLayout(tm->createDataLayout());
+  mod->setTargetTriple(tm->getTargetTriple().str());
+  out.clear();
+  raw_string_ostream os(out);
+  mod->print(os, nullptr);
+  os.flush();
+  return true;
+}
+
+}  // namespace ncc::jit

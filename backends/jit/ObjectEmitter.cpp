@@ -1,0 +1,42 @@
+// AOT: the JIT's LLVM IR, optimised at O2 and compiled for the host into an object file whose
+// entry is `int ncc_program_main(ncrt_ctx *)`; link it with the ncc runtime (ncrt_*, builtins).
+#include "backends/jit/Codegen.h"
+#include "backends/jit/Jit.h"
+
+#include <llvm/IR/LLVMContext.h>
+#include <llvm/IR/LegacyPassManager.h>
+#include <llvm/IR/Module.h>
+#include <llvm/Support/raw_ostream.h>
+#include <llvm/Target/TargetMachine.h>
+
+namespace ncc::jit {
+
+using namespace llvm;
+
+bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags) {
+  auto tm = hostTargetMachine(diags);
+  if (!tm) return false;
+  LLVMContext ctx;
+  std::unique_ptr<Module> mod = buildModule(m, ctx, diags);
+  if (!mod) return false;
+  mod->setDataLayout(tm->createDataLayout());
+  mod->setTargetTriple(tm->getTargetTriple().str());
+  optimizeModule(*mod, tm.get(), 2);
+
+  SmallVector<char, 0> buf;
+  raw_svector_ostream os(buf);
+  legacy::PassManager pm;
+  if (tm->addPassesToEmitFile(pm, os, nullptr, CodeGenFileType::ObjectFile)) {
+    diags.error({}, "the host target cannot emit object files");
+    return false;
+  }
+  pm.run(*mod);
+  std::string err;
+  if (!writeFileAtomic(path, std::string_view(buf.data(), buf.size()), err)) {
+    diags.error({}, "cannot write '" + path + "': " + err);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc::jit

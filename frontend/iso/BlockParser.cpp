@@ -1,0 +1,666 @@
+// Lexing and parsing of one ISO block (= one line): words, nested comments, block skip, Macro B
+// statements and expressions. Works on the line's bytes in place; the only allocations are the
+// AST nodes themselves.
+#include "frontend/iso/Syntax.h"
+#include "ir/Builtins.h"
+
+#include <charconv>
+#include <cstring>
+
+namespace ncc::iso {
+
+using ir::Expr;
+using ir::ExprPtr;
+using ir::OpCode;
+
+static inline bool isDigit(char c) { return c >= '0' && c <= '9'; }
+static inline bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+static inline char upper(char c) { return (c >= 'a' && c <= 'z') ? (char)(c - 32) : c; }
+static inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+static bool equalsUpper(std::string_view s, const char *kw) {
+  size_t n = std::strlen(kw);
+  if (s.size() != n) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (upper(s[i]) != kw[i]) return false;
+  return true;
+}
+
+static std::string toUpper(std::string_view s) {
+  std::string r(s);
+  for (auto &c : r) c = upper(c);
+  return r;
+}
+
+// Printable form of a byte for messages.
+static std::string showChar(char c) {
+  unsigned char u = (unsigned char)c;
+  if (u >= 32 && u < 127) return std::string("'") + c + "'";
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "0x%02X", u);
+  return buf;
+}
+
+bool BlockParser::fail(const char *at, std::string msg, const char *rule) {
+  if (!failed_) diags_.error(locAt(at < end_ ? at : end_), std::move(msg), rule);
+  failed_ = true;
+  return false;
+}
+
+void BlockParser::skipBlanks() {
+  while (p_ < end_ && isBlank(*p_)) ++p_;
+}
+
+char BlockParser::peekUpper() const { return p_ < end_ ? upper(*p_) : '\0'; }
+
+std::string_view BlockParser::readLetters() {
+  const char *b = p_;
+  while (p_ < end_ && isLetter(*p_)) ++p_;
+  return std::string_view(b, (size_t)(p_ - b));
+}
+
+// Unsigned decimal literal: digits with at most one point ("12", "1.5", "5.", ".5").
+bool BlockParser::readNumber(double &v, bool &hasPoint, bool &any) {
+  const char *b = p_;
+  hasPoint = false;
+  any = false;
+  while (p_ < end_) {
+    if (isDigit(*p_)) {
+      any = true;
+      ++p_;
+    } else if (*p_ == '.' && !hasPoint) {
+      hasPoint = true;
+      ++p_;
+    } else {
+      break;
+    }
+  }
+  if (!any) {
+    p_ = b;
+    return false;
+  }
+  const char *e = p_;
+  if (e[-1] == '.') --e;  // "5." : from_chars needs a digit after the point
+  auto r = std::from_chars(b, e, v, std::chars_format::fixed);
+  if (r.ec != std::errc() || r.ptr != e) return fail(b, "number out of range");
+  return true;
+}
+
+bool BlockParser::parseComment(ParsedBlock &out) {
+  const char *open = p_;
+  int level = 0;
+  const char *q = p_;
+  for (; q < end_; ++q) {
+    if (*q == '(') ++level;
+    else if (*q == ')' && --level == 0) break;
+  }
+  if (q >= end_) return fail(open, "unterminated comment: missing ')'", "syntax");
+  std::string_view text(open + 1, (size_t)(q - open - 1));
+  p_ = q + 1;
+  IsoComment c;
+  c.loc = locAt(open);
+  size_t i = 0;
+  while (i < text.size() && isBlank(text[i])) ++i;
+  if (text.size() - i >= 4 && equalsUpper(text.substr(i, 3), "MSG") && text[i + 3] == ',') {
+    c.message = true;
+    i += 4;
+    while (i < text.size() && isBlank(text[i])) ++i;
+    c.text = std::string(text.substr(i));
+  } else {
+    c.text = std::string(text);
+  }
+  out.comments.push_back(std::move(c));
+  return true;
+}
+
+bool BlockParser::parseSemicolonComment(ParsedBlock &out) {
+  const char *at = p_++;
+  const char *b = p_, *e = end_;
+  while (b < e && isBlank(*b)) ++b;
+  while (e > b && isBlank(e[-1])) --e;
+  p_ = end_;
+  if (b == e) return true;  // a bare `;` is the Fanuc end of block
+  IsoComment c;
+  c.loc = locAt(at);
+  c.text = std::string(b, (size_t)(e - b));
+  out.comments.push_back(std::move(c));
+  return true;
+}
+
+bool BlockParser::parseWordValue(IsoWord &w) {
+  skipBlanks();
+  bool neg = false;
+  if (p_ < end_ && (*p_ == '-' || *p_ == '+')) {
+    neg = *p_ == '-';
+    ++p_;
+    skipBlanks();
+  }
+  if (p_ < end_ && (isDigit(*p_) || *p_ == '.')) {
+    bool any;
+    if (!readNumber(w.value, w.hasPoint, any)) {
+      if (!failed_) fail(p_, std::string("missing value after '") + w.letter + "'");
+      return false;
+    }
+    if (neg) w.value = -w.value;
+    return true;
+  }
+  bool func = p_ + 1 < end_ && isLetter(p_[0]) && isLetter(p_[1]);  // X SIN[30]
+  if (p_ < end_ && (*p_ == '#' || *p_ == '[' || func)) {
+    const char *at = p_;
+    ExprPtr e = parsePrimary();
+    if (!e) return false;
+    if (neg) e = Expr::unary(OpCode::Neg, std::move(e), locAt(at));
+    w.expr = std::move(e);
+    return true;
+  }
+  return fail(p_, std::string("missing value after '") + w.letter + "'");
+}
+
+static bool parseLoopId(BlockParser &, const char *&p, const char *end, int &id) {
+  while (p < end && isBlank(*p)) ++p;
+  if (p >= end || !isDigit(*p)) return false;
+  long v = 0;
+  while (p < end && isDigit(*p) && v < 1000000) v = v * 10 + (*p++ - '0');
+  id = (int)v;
+  return true;
+}
+
+bool BlockParser::parseStatement(std::string_view kw, const char *at, ParsedBlock &out) {
+  if (out.stmt != StmtKind::None) return fail(at, "only one macro statement is allowed per block");
+  out.stmtLoc = locAt(at);
+  auto gotoTarget = [&]() -> bool {
+    skipBlanks();
+    const char *t = p_;
+    if (p_ < end_ && isDigit(*p_)) {
+      double v;
+      bool pt, any;
+      if (!readNumber(v, pt, any)) return false;
+      if (pt) return fail(t, "GOTO needs a block number");
+      out.target = Expr::number(v, ir::Type::Int, locAt(t));
+      return true;
+    }
+    if (p_ < end_ && (*p_ == '#' || *p_ == '[')) {
+      out.target = parsePrimary();
+      return out.target != nullptr;
+    }
+    return fail(t, "GOTO needs a block number");
+  };
+  if (equalsUpper(kw, "IF")) {
+    skipBlanks();
+    if (p_ >= end_ || *p_ != '[') return fail(p_, "IF needs a condition in brackets: IF [...]");
+    out.cond = parseBracket();
+    if (!out.cond) return false;
+    skipBlanks();
+    const char *k = p_;
+    std::string_view next = readLetters();
+    if (equalsUpper(next, "GOTO")) {
+      out.stmt = StmtKind::IfGoto;
+      return gotoTarget();
+    }
+    if (equalsUpper(next, "THEN")) {
+      out.stmt = StmtKind::IfThen;
+      return true;
+    }
+    return fail(k, "expected GOTO or THEN after IF [...]");
+  }
+  if (equalsUpper(kw, "GOTO")) {
+    out.stmt = StmtKind::Goto;
+    return gotoTarget();
+  }
+  if (equalsUpper(kw, "WHILE")) {
+    skipBlanks();
+    if (p_ >= end_ || *p_ != '[') return fail(p_, "WHILE needs a condition in brackets: WHILE [...]");
+    out.cond = parseBracket();
+    if (!out.cond) return false;
+    skipBlanks();
+    const char *k = p_;
+    if (!equalsUpper(readLetters(), "DO")) return fail(k, "expected DO after WHILE [...]");
+    if (!parseLoopId(*this, p_, end_, out.loopId)) return fail(p_, "DO needs a loop number (DO1)");
+    out.stmt = StmtKind::While;
+    return true;
+  }
+  if (equalsUpper(kw, "DO") || equalsUpper(kw, "END")) {
+    if (!parseLoopId(*this, p_, end_, out.loopId))
+      return fail(p_, toUpper(kw) + " needs a loop number (" + toUpper(kw) + "1)");
+    out.stmt = equalsUpper(kw, "DO") ? StmtKind::Do : StmtKind::End;
+    return true;
+  }
+  return fail(at, "unknown word '" + std::string(kw) + "'", "unknown-code");
+}
+
+bool BlockParser::parseAssign(ParsedBlock &out) {
+  const char *at = p_;
+  IsoAssign a;
+  a.loc = locAt(at);
+  a.target = parseVariable();
+  if (!a.target) return false;
+  if (a.target->kind == ir::ExprKind::Vacant) return fail(at, "#0 is always vacant and cannot be assigned");
+  skipBlanks();
+  if (p_ >= end_ || *p_ != '=') return fail(p_, "expected '=' after the variable");
+  ++p_;
+  a.value = parseExpr(0);
+  if (!a.value) return false;
+  out.assigns.push_back(std::move(a));
+  return true;
+}
+
+static const struct {
+  const char *name;
+  OKeyword kw;
+} kOKeywords[] = {
+    {"SUB", OKeyword::Sub},         {"ENDSUB", OKeyword::EndSub},       {"CALL", OKeyword::Call},
+    {"RETURN", OKeyword::Return},   {"IF", OKeyword::If},               {"ELSEIF", OKeyword::ElseIf},
+    {"ELSE", OKeyword::Else},       {"ENDIF", OKeyword::EndIf},         {"WHILE", OKeyword::While},
+    {"ENDWHILE", OKeyword::EndWhile}, {"DO", OKeyword::Do},             {"BREAK", OKeyword::Break},
+    {"CONTINUE", OKeyword::Continue}, {"REPEAT", OKeyword::Repeat},     {"ENDREPEAT", OKeyword::EndRepeat},
+};
+
+bool BlockParser::parseOWord(ParsedBlock &out, const char *at) {
+  skipBlanks();
+  bool numeric = false;
+  if (p_ < end_ && *p_ == '<') {
+    const char *b = ++p_;
+    while (p_ < end_ && *p_ != '>') ++p_;
+    if (p_ >= end_) return fail(b - 1, "unterminated O-word name: missing '>'");
+    if (p_ == b) return fail(b - 1, "empty O-word name");
+    for (const char *q = b; q < p_; ++q)
+      if (!isBlank(*q)) out.oname.push_back((char)std::tolower((unsigned char)*q));
+    ++p_;
+  } else if (p_ < end_ && isDigit(*p_)) {
+    numeric = true;
+    while (p_ < end_ && isDigit(*p_)) out.oname.push_back(*p_++);
+    if (out.oname.size() > 12) return fail(at, "program number too long");
+  } else {
+    return fail(p_, "O needs a program number");
+  }
+  skipBlanks();
+  const char *k = p_;
+  std::string_view kw = readLetters();
+  if (kw.empty()) {
+    if (!numeric) return fail(p_, "O-word needs a keyword (sub, call, if, while, ...)");
+    out.programNumber = std::stoll(out.oname);
+    out.oname.clear();
+    return true;
+  }
+  bool found = false;
+  for (auto &e : kOKeywords)
+    if (equalsUpper(kw, e.name)) {
+      out.okw = e.kw;
+      found = true;
+    }
+  if (!found) return fail(k, "unknown O-word keyword '" + std::string(kw) + "'", "unknown-code");
+  out.stmt = StmtKind::OWord;
+  out.stmtLoc = locAt(at);
+  skipBlanks();
+  switch (out.okw) {
+  case OKeyword::If: case OKeyword::ElseIf: case OKeyword::While: case OKeyword::Repeat:
+    if (p_ >= end_ || *p_ != '[') return fail(p_, "expected a condition in brackets");
+    out.cond = parseBracket();
+    return out.cond != nullptr;
+  case OKeyword::Return: case OKeyword::EndSub:
+    if (p_ < end_ && *p_ == '[') {
+      out.cond = parseBracket();
+      return out.cond != nullptr;
+    }
+    return true;
+  case OKeyword::Call:
+    while (p_ < end_ && *p_ == '[') {
+      auto a = parseBracket();
+      if (!a) return false;
+      out.oargs.push_back(std::move(a));
+      skipBlanks();
+    }
+    return true;
+  default:
+    return true;
+  }
+}
+
+bool BlockParser::parseItems(ParsedBlock &out) {
+  bool stmtClosed = false;  // after GOTO/WHILE/DO/END only comments may follow
+  auto nothingYet = [&] {
+    return out.words.empty() && out.comments.empty() && out.assigns.empty() && out.n < 0 &&
+           out.stmt == StmtKind::None;
+  };
+  while (true) {
+    skipBlanks();
+    if (p_ >= end_) break;
+    char c = *p_;
+    if (c == '(') {
+      if (!parseComment(out)) return false;
+      continue;
+    }
+    if (c == ';') {
+      parseSemicolonComment(out);
+      break;
+    }
+    if (c == '/') {
+      const char *at = p_++;
+      int level = 0;
+      if (p_ < end_ && isDigit(*p_)) level = *p_++ - '0';
+      if (p_ < end_ && isDigit(*p_)) return fail(at, "invalid block skip level (0..9)", "syntax");
+      if (skipMask_ & (1u << level)) break;  // the rest of the block is not executed
+      if (nothingYet()) out.skip = level;
+      continue;
+    }
+    if (stmtClosed) return fail(p_, "unexpected text after the macro statement");
+    const char *at = p_;
+    if (c == '#') {
+      if (!parseAssign(out)) return false;
+      continue;
+    }
+    if (!isLetter(c)) return fail(p_, "unexpected character " + showChar(c), "syntax");
+    std::string_view letters = readLetters();
+    if (letters.size() >= 2) {
+      if (!parseStatement(letters, at, out)) return false;
+      if (out.stmt != StmtKind::IfThen) stmtClosed = true;
+      continue;
+    }
+    char L = upper(c);
+    if (L == 'N') {
+      skipBlanks();
+      double v;
+      bool pt, any;
+      if (!readNumber(v, pt, any)) return failed_ ? false : fail(p_, "N needs a block number");
+      if (pt || v > 1e15) return fail(at, "block number must be an integer below 10^15");
+      if (out.n >= 0) return fail(at, "two N words in one block", "duplicate-word");
+      out.n = (int64_t)v;
+      continue;
+    }
+    if (L == 'O') {
+      if (!out.words.empty() || !out.assigns.empty() || out.stmt != StmtKind::None)
+        return fail(at, "O (program number / o-word) must start the block");
+      if (!parseOWord(out, at)) return false;
+      if (out.stmt == StmtKind::OWord) stmtClosed = true;
+      continue;
+    }
+    IsoWord w;
+    w.letter = L;
+    w.loc = locAt(at);
+    if (!parseWordValue(w)) return false;
+    out.words.push_back(std::move(w));
+  }
+  out.content = !nothingYet() || out.programNumber >= 0;
+  return true;
+}
+
+bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out) {
+  out.clear();
+  begin_ = p_ = line.data();
+  end_ = begin_ + line.size();
+  file_ = file;
+  line_ = lineNo;
+  failed_ = false;
+  depth_ = 0;
+  skipBlanks();
+  if (p_ >= end_) return true;
+  out.loc = locAt(p_);
+  if (*p_ == '%') {
+    out.percent = true;
+    return true;
+  }
+  bool ok = parseItems(out);
+  return ok && !failed_;
+}
+
+// ---------------------------------------------------------------- expressions
+
+ExprPtr BlockParser::parseBracket() {
+  const char *open = p_;
+  if (p_ >= end_ || *p_ != '[') {
+    fail(p_, "expected '['");
+    return nullptr;
+  }
+  ++p_;
+  ExprPtr e = parseExpr(0);
+  if (!e) return nullptr;
+  skipBlanks();
+  if (p_ >= end_ || *p_ != ']') {
+    if (p_ < end_) fail(p_, "expected ']' (operator or bracket), found " + showChar(*p_));
+    else fail(open, "missing ']'");
+    return nullptr;
+  }
+  ++p_;
+  return e;
+}
+
+// Binary operator at the cursor (not consumed): precedence per flavour.
+bool BlockParser::binaryOp(int &prec, OpCode &op, const char *&after) {
+  skipBlanks();
+  if (p_ >= end_) return false;
+  const bool fanuc = flavour_ == Flavour::Fanuc;
+  const int cmpP = fanuc ? 1 : 2, addP = fanuc ? 2 : 3, mulP = fanuc ? 3 : 4, logAnd = fanuc ? 3 : 1,
+            logOr = fanuc ? 2 : 1;
+  char c = *p_;
+  after = p_ + 1;
+  switch (c) {
+  case '+': op = OpCode::Add; prec = addP; return true;
+  case '-': op = OpCode::Sub; prec = addP; return true;
+  case '/': op = OpCode::Div; prec = mulP; return true;
+  case '*':
+    if (p_ + 1 < end_ && p_[1] == '*') {
+      if (fanuc) return false;
+      op = OpCode::Pow;
+      prec = 5;
+      after = p_ + 2;
+      return true;
+    }
+    op = OpCode::Mul;
+    prec = mulP;
+    return true;
+  default: break;
+  }
+  if (!isLetter(c)) return false;
+  const char *q = p_;
+  while (q < end_ && isLetter(*q)) ++q;
+  std::string_view w(p_, (size_t)(q - p_));
+  static const struct {
+    const char *name;
+    OpCode op;
+    int kind;  // 0 compare, 1 and, 2 or/xor, 3 mod
+  } kWords[] = {{"EQ", OpCode::Eq, 0}, {"NE", OpCode::Ne, 0},   {"GT", OpCode::Gt, 0},  {"GE", OpCode::Ge, 0},
+                {"LT", OpCode::Lt, 0}, {"LE", OpCode::Le, 0},   {"AND", OpCode::And, 1}, {"OR", OpCode::Or, 2},
+                {"XOR", OpCode::Xor, 2}, {"MOD", OpCode::Mod, 3}};
+  for (auto &k : kWords)
+    if (equalsUpper(w, k.name)) {
+      op = k.op;
+      prec = k.kind == 0 ? cmpP : k.kind == 1 ? logAnd : k.kind == 2 ? logOr : mulP;
+      after = q;
+      return true;
+    }
+  return false;
+}
+
+ExprPtr BlockParser::parseExpr(int minPrec) {
+  if (++depth_ > 100) {
+    fail(p_, "expression nested too deeply");
+    --depth_;
+    return nullptr;
+  }
+  ExprPtr lhs = parseUnary();
+  while (lhs) {
+    int prec;
+    OpCode op;
+    const char *after;
+    const char *at = p_;
+    if (!binaryOp(prec, op, after) || prec < minPrec) break;
+    p_ = after;
+    ExprPtr rhs = parseExpr(op == OpCode::Pow ? prec : prec + 1);
+    if (!rhs) {
+      lhs.reset();
+      break;
+    }
+    lhs = Expr::binary(op, std::move(lhs), std::move(rhs), locAt(at));
+  }
+  --depth_;
+  return lhs;
+}
+
+ExprPtr BlockParser::parseUnary() {
+  skipBlanks();
+  if (p_ < end_ && (*p_ == '-' || *p_ == '+')) {
+    const char *at = p_;
+    bool neg = *p_++ == '-';
+    if (++depth_ > 100) {
+      fail(at, "expression nested too deeply");
+      return nullptr;
+    }
+    ExprPtr e = parseUnary();
+    --depth_;
+    if (!e || !neg) return e;
+    if (e->kind == ir::ExprKind::Number) {
+      e->num = -e->num;
+      e->loc = locAt(at);
+      return e;
+    }
+    return Expr::unary(OpCode::Neg, std::move(e), locAt(at));
+  }
+  return parsePrimary();
+}
+
+ExprPtr BlockParser::parsePrimary() {
+  skipBlanks();
+  if (p_ >= end_) {
+    fail(p_, "expected a value");
+    return nullptr;
+  }
+  const char *at = p_;
+  char c = *p_;
+  if (isDigit(c) || c == '.') {
+    double v;
+    bool pt, any;
+    if (!readNumber(v, pt, any)) {
+      fail(at, "expected a value");
+      return nullptr;
+    }
+    return Expr::number(v, pt ? ir::Type::Real : ir::Type::Int, locAt(at));
+  }
+  if (c == '#') return parseVariable();
+  if (c == '[') {
+    if (++depth_ > 100) {
+      fail(at, "expression nested too deeply");
+      return nullptr;
+    }
+    ExprPtr e = parseBracket();
+    --depth_;
+    return e;
+  }
+  if (isLetter(c)) {
+    std::string name = toUpper(readLetters());
+    return parseFunction(std::move(name), at);
+  }
+  fail(at, "expected a value, found " + showChar(c));
+  return nullptr;
+}
+
+ExprPtr BlockParser::parseVariable() {
+  const char *at = p_;
+  ++p_;  // '#'
+  skipBlanks();
+  if (p_ >= end_) {
+    fail(at, "'#' needs a variable number");
+    return nullptr;
+  }
+  if (isDigit(*p_)) {
+    const char *b = p_;
+    double v;
+    bool pt, any;
+    if (!readNumber(v, pt, any)) return nullptr;
+    if (pt) {
+      fail(b, "variable number must be an integer");
+      return nullptr;
+    }
+    if (v == 0) return Expr::vacant(locAt(at));
+    return Expr::var(ir::VarSpace::Numbered, "", Expr::number(v, ir::Type::Int, locAt(b)), locAt(at));
+  }
+  if (*p_ == '[' || *p_ == '#') {
+    if (++depth_ > 100) {
+      fail(at, "expression nested too deeply");
+      return nullptr;
+    }
+    ExprPtr idx = *p_ == '[' ? parseBracket() : parseVariable();
+    --depth_;
+    if (!idx) return nullptr;
+    return Expr::var(ir::VarSpace::Numbered, "", std::move(idx), locAt(at));
+  }
+  if (*p_ == '<' && flavour_ == Flavour::RS274) {
+    const char *b = ++p_;
+    std::string name;
+    while (p_ < end_ && *p_ != '>') {
+      if (!isBlank(*p_)) name.push_back((char)std::tolower((unsigned char)*p_));
+      ++p_;
+    }
+    if (p_ >= end_ || name.empty()) {
+      fail(b - 1, "unterminated parameter name: missing '>'");
+      return nullptr;
+    }
+    ++p_;
+    auto space = name[0] == '_' ? ir::VarSpace::Global : ir::VarSpace::Local;
+    return Expr::var(space, std::move(name), nullptr, locAt(at));
+  }
+  fail(p_, "'#' needs a variable number");
+  return nullptr;
+}
+
+ExprPtr BlockParser::parseFunction(std::string name, const char *at) {
+  static const char *kAllowed[] = {"SIN", "COS",  "TAN", "ASIN",  "ACOS", "ATAN", "SQRT",
+                                   "ABS", "ROUND", "FIX", "FUP",  "LN",   "EXP"};
+  bool ok = false;
+  for (auto *n : kAllowed) ok |= name == n;
+  if (!ok || !findBuiltin(name)) {
+    fail(at, "unknown function '" + name + "'", "unknown-code");
+    return nullptr;
+  }
+  skipBlanks();
+  if (p_ >= end_ || *p_ != '[') {
+    fail(p_, name + " needs its argument in brackets: " + name + "[...]");
+    return nullptr;
+  }
+  if (++depth_ > 100) {
+    fail(at, "expression nested too deeply");
+    return nullptr;
+  }
+  std::vector<ExprPtr> args;
+  ++p_;
+  ExprPtr a = parseExpr(0);
+  if (a) {
+    args.push_back(std::move(a));
+    skipBlanks();
+    if (name == "ATAN" && p_ < end_ && *p_ == ',') {  // ATAN[y, x]
+      ++p_;
+      ExprPtr b = parseExpr(0);
+      if (b) args.push_back(std::move(b));
+      else args.clear();
+      skipBlanks();
+    }
+    if (!args.empty() && (p_ >= end_ || *p_ != ']')) {
+      fail(p_ < end_ ? p_ : at, "expected ']' to close " + name + "[");
+      args.clear();
+    } else if (!args.empty()) {
+      ++p_;
+    }
+  }
+  --depth_;
+  if (args.empty()) return nullptr;
+  if (name == "ATAN" && args.size() == 1) {  // ATAN[y]/[x] is the two-argument arc tangent
+    const char *save = p_;
+    skipBlanks();
+    if (p_ < end_ && *p_ == '/') {
+      ++p_;
+      skipBlanks();
+      if (p_ < end_ && *p_ == '[') {
+        ExprPtr x = parseBracket();
+        if (!x) return nullptr;
+        args.push_back(std::move(x));
+      } else {
+        p_ = save;
+      }
+    } else {
+      p_ = save;
+    }
+  }
+  if (args.size() == 2) name = "ATAN2";
+  return Expr::call(std::move(name), std::move(args), locAt(at));
+}
+
+}  // namespace ncc::iso

@@ -1,0 +1,58 @@
+// The ISO G- and M-code tables: what each code means and which modal group it belongs to.
+// Lowering is driven by these tables, not by if-chains over code numbers.
+#pragma once
+#include "ir/ModeTable.h"
+
+#include <cstdint>
+
+namespace ncc::iso {
+
+// What lowering does with a G code.
+enum class GKind : uint8_t {
+  Mode,          // a mode op: group + value from the table
+  Dwell,         // G4
+  SetOffset,     // G92 / G92.1 / G10 (setKind)
+  Home,          // G28 (ref 1) / G30 (ref 2, or P)
+  MachineCoord,  // G53
+  CutterComp,    // G40 / G41 / G42 (arg: 0 off, 1 left, 2 right)
+  ToolLength,    // G43 (arg 1) / G49 (arg 0)
+  WorkOffset,    // G54..G59.3 (arg: index)
+  MacroCall,     // G65
+  SubCall,       // G05 P<program> L<count>: subprogram call (808D); G05 without P, P0, P01 ignored
+  NoOp,          // cancels a function ncc does not model and is always off (G15, G50.1, G67, G69, G97, G291)
+  Unsupported,   // known code that is not lowered yet: error with the description
+};
+
+// Conflict groups: two codes of one group in a block are an error.
+enum class GGroup : uint8_t {
+  NonModal, Motion, Plane, Distance, ArcDistance, FeedMode, Units, CutterComp, ToolLength, Retract,
+  WorkOffset, PathMode, Spindle, Polar, Scaling, Mirror, MacroModal, Rotation, Language, Count
+};
+const char *gGroupName(GGroup g);
+
+struct GCodeInfo {
+  int32_t code10;   // code times ten: G92.1 = 921
+  GKind kind;
+  GGroup group;
+  ModeValue mode;   // for GKind::Mode
+  int arg;          // kind specific (see GKind)
+  const char *what; // description (used in messages)
+};
+
+// Null when the code is unknown.
+const GCodeInfo *findGCode(int32_t code10);
+
+// M codes with a built-in meaning; every other integer M is an `aux`.
+enum class MKind : uint8_t { Stop, ToolChange, Spindle, Coolant, Call, Return, Aux };
+enum class MGroup : uint8_t { None, Stop, ToolChange, Spindle, Coolant, Sub };
+
+struct MCodeInfo {
+  int32_t code;
+  MKind kind;
+  MGroup group;
+  int arg;          // Stop: StopKind; Spindle: 0 stop 1 cw 2 ccw; Coolant: 7 mist 8 flood 9 off
+};
+// Returns the built-in meaning, or an Aux entry for any other code.
+MCodeInfo findMCode(int32_t code);
+
+}  // namespace ncc::iso

@@ -1,0 +1,153 @@
+// G-code and M-code tables of the ISO front end (milling codes of the Sinumerik 808D ISO dialect,
+// which follow Fanuc; LinuxCNC extensions G59.x, G61.1, G90.1/G91.1).
+#include "frontend/iso/Codes.h"
+#include "ir/MachineCmd.h"
+
+namespace ncc::iso {
+
+const char *gGroupName(GGroup g) {
+  static const char *names[] = {"non-modal", "motion", "plane", "distance", "arc distance", "feed mode",
+                                "units", "cutter compensation", "tool length", "return level",
+                                "work offset", "path mode", "spindle speed mode", "polar coordinates",
+                                "scaling", "mirror", "modal macro", "rotation", "language"};
+  static_assert(sizeof(names) / sizeof(names[0]) == (size_t)GGroup::Count);
+  return names[(unsigned)g];
+}
+
+using MV = ModeValue;
+#define MODE(c, grp, v, what) {c, GKind::Mode, GGroup::grp, MV::v, 0, what}
+#define SPECIAL(c, kind, grp, arg, what) {c, GKind::kind, GGroup::grp, MV::Count, arg, what}
+#define NOOP(c, grp, what) {c, GKind::NoOp, GGroup::grp, MV::Count, 0, what}
+#define UNSUP(c, grp, what) {c, GKind::Unsupported, GGroup::grp, MV::Count, 0, what}
+
+// Sorted by code10 (binary search).
+static const GCodeInfo kGCodes[] = {
+    MODE(0, Motion, Rapid, "rapid traverse"),
+    MODE(10, Motion, Linear, "linear interpolation"),
+    MODE(20, Motion, ArcCW, "circular interpolation CW"),
+    MODE(30, Motion, ArcCCW, "circular interpolation CCW"),
+    SPECIAL(40, Dwell, NonModal, 0, "dwell"),
+    SPECIAL(50, SubCall, NonModal, 0, "subprogram call"),
+    NOOP(51, NonModal, "high-speed cutting (ignored, spec ISO-SUB-02)"),
+    UNSUP(71, NonModal, "cylindrical interpolation"),
+    UNSUP(90, NonModal, "one-shot exact stop"),
+    SPECIAL(100, SetOffset, NonModal, 0, "data setting"),
+    UNSUP(121, Polar, "polar coordinate interpolation"),
+    NOOP(131, Polar, "polar coordinate interpolation off"),
+    NOOP(150, Polar, "polar coordinates off"),
+    UNSUP(160, Polar, "polar coordinates"),
+    MODE(170, Plane, XY, "XY plane"),
+    MODE(180, Plane, ZX, "ZX plane"),
+    MODE(190, Plane, YZ, "YZ plane"),
+    MODE(200, Units, Inch, "inch input"),
+    MODE(210, Units, MM, "metric input"),
+    UNSUP(270, NonModal, "reference position check"),
+    SPECIAL(280, Home, NonModal, 1, "reference point return"),
+    SPECIAL(300, Home, NonModal, 2, "2nd/3rd/4th reference point return"),
+    UNSUP(310, NonModal, "skip function"),
+    UNSUP(320, Motion, "thread cutting"),
+    UNSUP(330, Motion, "thread cutting"),
+    UNSUP(340, Motion, "variable-lead thread cutting"),
+    SPECIAL(400, CutterComp, CutterComp, 0, "cutter compensation off"),
+    SPECIAL(410, CutterComp, CutterComp, 1, "cutter compensation left"),
+    SPECIAL(420, CutterComp, CutterComp, 2, "cutter compensation right"),
+    SPECIAL(430, ToolLength, ToolLength, 1, "tool length compensation +"),
+    UNSUP(440, ToolLength, "negative tool length compensation"),
+    SPECIAL(490, ToolLength, ToolLength, 0, "tool length compensation off"),
+    UNSUP(500, Scaling, "scaling off / coordinate setting"),
+    NOOP(501, Mirror, "programmable mirror off"),
+    UNSUP(510, Scaling, "scaling"),
+    UNSUP(511, Mirror, "programmable mirror"),
+    UNSUP(520, NonModal, "local coordinate system"),
+    SPECIAL(530, MachineCoord, NonModal, 0, "machine coordinates"),
+    SPECIAL(540, WorkOffset, WorkOffset, 1, "work offset 1"),
+    SPECIAL(550, WorkOffset, WorkOffset, 2, "work offset 2"),
+    SPECIAL(560, WorkOffset, WorkOffset, 3, "work offset 3"),
+    SPECIAL(570, WorkOffset, WorkOffset, 4, "work offset 4"),
+    SPECIAL(580, WorkOffset, WorkOffset, 5, "work offset 5"),
+    SPECIAL(590, WorkOffset, WorkOffset, 6, "work offset 6"),
+    SPECIAL(591, WorkOffset, WorkOffset, 7, "work offset 7"),
+    SPECIAL(592, WorkOffset, WorkOffset, 8, "work offset 8"),
+    SPECIAL(593, WorkOffset, WorkOffset, 9, "work offset 9"),
+    UNSUP(600, NonModal, "unidirectional positioning"),
+    MODE(610, PathMode, ExactPath, "exact path mode"),
+    MODE(611, PathMode, ExactStop, "exact stop mode"),
+    UNSUP(630, PathMode, "tapping mode"),
+    MODE(640, PathMode, Continuous, "continuous path mode"),
+    SPECIAL(650, MacroCall, NonModal, 0, "macro call"),
+    UNSUP(660, MacroModal, "modal macro call"),
+    NOOP(670, MacroModal, "modal macro call cancel"),
+    UNSUP(680, Rotation, "coordinate rotation"),
+    NOOP(690, Rotation, "coordinate rotation off"),
+    UNSUP(700, NonModal, "finishing cycle"),
+    UNSUP(710, NonModal, "stock removal cycle"),
+    UNSUP(720, NonModal, "stock removal cycle"),
+    UNSUP(721, NonModal, "rotational contour copy"),
+    UNSUP(722, NonModal, "linear contour copy"),
+    MODE(730, Motion, PeckChipBreak, "high-speed peck drilling cycle"),
+    MODE(740, Motion, TapLeft, "left-hand tapping cycle"),
+    UNSUP(750, NonModal, "grooving cycle"),
+    MODE(760, Motion, BoreFine, "fine boring cycle"),
+    MODE(800, Motion, CycleOff, "canned cycle cancel"),
+    MODE(810, Motion, Drill, "drilling cycle"),
+    MODE(820, Motion, DrillDwell, "drilling cycle with dwell"),
+    MODE(830, Motion, Peck, "peck drilling cycle"),
+    MODE(840, Motion, Tap, "tapping cycle"),
+    MODE(850, Motion, BoreFeed, "boring cycle"),
+    MODE(860, Motion, BoreStop, "boring cycle, spindle stop"),
+    MODE(870, Motion, BoreBack, "back boring cycle"),
+    UNSUP(880, Motion, "boring cycle with manual retract"),
+    MODE(890, Motion, BoreDwell, "boring cycle with dwell"),
+    MODE(900, Distance, Absolute, "absolute programming"),
+    MODE(901, ArcDistance, ArcAbsolute, "absolute arc centre"),
+    MODE(910, Distance, Incremental, "incremental programming"),
+    MODE(911, ArcDistance, ArcIncremental, "incremental arc centre"),
+    SPECIAL(920, SetOffset, NonModal, 1, "coordinate system setting"),
+    SPECIAL(921, SetOffset, NonModal, 2, "coordinate system setting reset"),
+    UNSUP(922, NonModal, "coordinate system setting suspend"),
+    UNSUP(923, NonModal, "coordinate system setting restore"),
+    MODE(930, FeedMode, InverseTime, "inverse time feed"),
+    MODE(940, FeedMode, PerMinute, "feed per minute"),
+    MODE(950, FeedMode, PerRev, "feed per revolution"),
+    UNSUP(960, Spindle, "constant surface speed"),
+    NOOP(970, Spindle, "constant surface speed off"),
+    MODE(980, Retract, RetractInitial, "return to initial level"),
+    MODE(990, Retract, RetractR, "return to R level"),
+    UNSUP(2900, Language, "Siemens language mode"),
+    NOOP(2910, Language, "ISO language mode"),
+};
+
+const GCodeInfo *findGCode(int32_t code10) {
+  size_t lo = 0, hi = sizeof(kGCodes) / sizeof(kGCodes[0]);
+  while (lo < hi) {
+    size_t mid = (lo + hi) / 2;
+    if (kGCodes[mid].code10 < code10) lo = mid + 1;
+    else hi = mid;
+  }
+  if (lo < sizeof(kGCodes) / sizeof(kGCodes[0]) && kGCodes[lo].code10 == code10) return &kGCodes[lo];
+  return nullptr;
+}
+
+static const MCodeInfo kMCodes[] = {
+    {0, MKind::Stop, MGroup::Stop, (int)StopKind::Program},
+    {1, MKind::Stop, MGroup::Stop, (int)StopKind::Optional},
+    {2, MKind::Stop, MGroup::Stop, (int)StopKind::End},
+    {3, MKind::Spindle, MGroup::Spindle, 1},
+    {4, MKind::Spindle, MGroup::Spindle, 2},
+    {5, MKind::Spindle, MGroup::Spindle, 0},
+    {6, MKind::ToolChange, MGroup::ToolChange, 0},
+    {7, MKind::Coolant, MGroup::Coolant, 7},
+    {8, MKind::Coolant, MGroup::Coolant, 8},
+    {9, MKind::Coolant, MGroup::Coolant, 9},
+    {30, MKind::Stop, MGroup::Stop, (int)StopKind::EndRewind},
+    {98, MKind::Call, MGroup::Sub, 0},
+    {99, MKind::Return, MGroup::Sub, 0},
+};
+
+MCodeInfo findMCode(int32_t code) {
+  for (auto &m : kMCodes)
+    if (m.code == code) return m;
+  return {code, MKind::Aux, MGroup::None, 0};
+}
+
+}  // namespace ncc::iso

@@ -1,0 +1,526 @@
+#include "frontend/iso/Lower.h"
+#include "ir/MachineCmd.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace ncc::iso {
+
+using ir::Expr;
+using ir::ExprPtr;
+using ir::Op;
+using ir::OpKind;
+using ir::Region;
+
+// Fanuc argument specification I: G65 address -> local variable number (0 = not an argument).
+static const int kMacroArg[26] = {
+    /*A*/ 1, /*B*/ 2, /*C*/ 3, /*D*/ 7, /*E*/ 8, /*F*/ 9, /*G*/ 0, /*H*/ 11, /*I*/ 4, /*J*/ 5,
+    /*K*/ 6, /*L*/ 0, /*M*/ 13, /*N*/ 0, /*O*/ 0, /*P*/ 0, /*Q*/ 17, /*R*/ 18, /*S*/ 19, /*T*/ 20,
+    /*U*/ 21, /*V*/ 22, /*W*/ 23, /*X*/ 24, /*Y*/ 25, /*Z*/ 26};
+
+static const char kAxes[] = "XYZABCUVW";
+static const char kOffsetAxes[] = "XYZABC";
+
+enum class Scale : uint8_t { None, Linear, Rotary, Feed, DwellX };
+
+static Scale scaleOf(char letter) {
+  switch (letter) {
+  case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W': case 'I': case 'J': case 'K': case 'Q': case 'R':
+    return Scale::Linear;
+  case 'A': case 'B': case 'C': return Scale::Rotary;
+  case 'F': return Scale::Feed;
+  default: return Scale::None;
+  }
+}
+
+static std::string gName(int32_t code10) {
+  return code10 % 10 ? fmt::format("G{}.{}", code10 / 10, code10 % 10) : fmt::format("G{}", code10 / 10);
+}
+
+BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags)
+    : diags_(diags), flavour_(flavour) {
+  if (opts.decimalMode == "calculator") decimal_ = 0;
+  else if (opts.decimalMode == "is-b") decimal_ = 1;
+  else if (opts.decimalMode == "is-c") decimal_ = 2;
+  else decimal_ = -1;
+}
+
+Op BlockLowerer::blockOp(const ParsedBlock &b) const {
+  Op op(OpKind::Block, b.loc);
+  if (b.n >= 0) op.set("n", Expr::number((double)b.n, ir::Type::Int, b.loc));
+  if (b.skip >= 0) op.set("skip", Expr::number(b.skip, ir::Type::Int, b.loc));
+  return op;
+}
+
+void BlockLowerer::lowerComments(const ParsedBlock &b, Region &out) {
+  for (auto &c : b.comments) {
+    Op op(c.message ? OpKind::Message : OpKind::Comment, c.loc);
+    op.set("text", Expr::string(c.text, c.loc));
+    out.push_back(std::move(op));
+  }
+}
+
+namespace {
+
+// Per-block working state: which words are present, which were consumed.
+struct BlockWords {
+  IsoWord *w[26] = {};
+  uint32_t used = 0, present = 0;
+  IsoWord *get(char c) { return w[c - 'A']; }
+  bool has(char c) const { return w[c - 'A'] != nullptr; }
+  bool hasAny(const char *letters) const {
+    uint32_t m = 0;
+    for (; *letters; ++letters) m |= 1u << (*letters - 'A');
+    return (present & m) != 0;
+  }
+};
+
+struct GUse {
+  const GCodeInfo *info = nullptr;
+  const IsoWord *word = nullptr;
+};
+
+}  // namespace
+
+bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
+  // Divisor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1). Dividing
+  // by a power of ten keeps X1234 in IS-B exactly 1.234.
+  auto factor = [&](Scale s) -> double {
+    if (decimal_ == 0) return 1.0;
+    bool inch = units_ == ModeValue::Inch;
+    switch (s) {
+    case Scale::Linear: return decimal_ == 1 ? (inch ? 1e4 : 1e3) : (inch ? 1e5 : 1e4);
+    case Scale::Rotary: return decimal_ == 1 ? 1e3 : 1e4;
+    case Scale::DwellX: return 1e3;
+    case Scale::Feed:
+      if (feedMode_ == ModeValue::PerRev) return inch ? 1e4 : 1e2;
+      if (feedMode_ == ModeValue::PerMinute) return inch ? 1e2 : 1.0;
+      return 1.0;
+    default: return 1.0;
+    }
+  };
+  auto literal = [](const IsoWord &w, double f) -> ExprPtr {
+    if (w.expr) return w.expr->clone();
+    if (!w.hasPoint && f != 1.0) return Expr::number(w.value / f, ir::Type::Real, w.loc);
+    return Expr::number(w.value, w.hasPoint ? ir::Type::Real : ir::Type::Int, w.loc);
+  };
+
+  BlockWords bw;
+  GUse gs[(size_t)GGroup::Count];
+  struct MUse {
+    MCodeInfo info;
+    const IsoWord *word;
+  } ms[8];
+  int nm = 0;
+  bool ok = true;
+
+  bool macroCall = false;  // G65: every other address is an argument (M too)
+  for (auto &w : b.words)
+    if (w.letter == 'G' && !w.expr && w.value == 65) macroCall = true;
+
+  for (auto &w : b.words) {
+    if (w.letter == 'G') {
+      if (w.expr) {
+        diags_.error(w.loc, "a G code must be a number", "unknown-code");
+        ok = false;
+        continue;
+      }
+      const GCodeInfo *gi = nullptr;
+      if (w.value >= 0 && w.value < 100000) {  // range first: llround of huge values is undefined
+        double t = w.value * 10;
+        long long c10 = std::llround(t);
+        if (std::fabs(t - (double)c10) < 1e-6) gi = findGCode((int32_t)c10);
+      }
+      if (!gi) {
+        diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
+        ok = false;
+        continue;
+      }
+      if (gi->kind == GKind::Unsupported) {
+        diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
+                     "unsupported-code");
+        ok = false;
+        continue;
+      }
+      GUse &slot = gs[(size_t)gi->group];
+      if (slot.info) {
+        diags_.error(w.loc,
+                     fmt::format("two G codes from the same modal group: {} and {}", gName(slot.info->code10),
+                                 gName(gi->code10)),
+                     "modal-group-conflict");
+        ok = false;
+        continue;
+      }
+      slot = {gi, &w};
+      continue;
+    }
+    if (w.letter == 'M' && !macroCall) {
+      if (w.expr || w.value < 0 || w.value != std::floor(w.value) || w.value > 99999999) {
+        diags_.error(w.loc, "an M code must be an integer 0..99999999", "unknown-code");
+        ok = false;
+        continue;
+      }
+      MCodeInfo mi = findMCode((int32_t)w.value);
+      if (nm == 5) {
+        diags_.error(w.loc, "more than 5 M codes in one block", "too-many-m-codes");
+        ok = false;
+        continue;
+      }
+      for (int i = 0; i < nm; ++i) {
+        bool coolantPair = mi.group == MGroup::Coolant && ms[i].info.group == MGroup::Coolant &&
+                           mi.arg != 9 && ms[i].info.arg != 9 && mi.arg != ms[i].info.arg;  // M7 M8
+        if (mi.group != MGroup::None && ms[i].info.group == mi.group && !coolantPair) {
+          diags_.error(w.loc,
+                       fmt::format("two M codes from the same modal group: M{} and M{}", ms[i].info.code, mi.code),
+                       "modal-group-conflict");
+          ok = false;
+        }
+      }
+      ms[nm++] = {mi, &w};
+      continue;
+    }
+    if (w.letter < 'A' || w.letter > 'Z') continue;
+    bool argSetII = macroCall && (w.letter == 'I' || w.letter == 'J' || w.letter == 'K');
+    if (bw.w[w.letter - 'A'] && !argSetII) {
+      diags_.error(w.loc, fmt::format("two {} words in one block", w.letter), "duplicate-word");
+      ok = false;
+      continue;
+    }
+    if (!bw.w[w.letter - 'A']) bw.w[w.letter - 'A'] = &w;
+    bw.present |= 1u << (w.letter - 'A');
+  }
+  if (!ok) return false;
+
+  auto G = [&](GGroup g) -> const GCodeInfo * { return gs[(size_t)g].info; };
+  auto gloc = [&](GGroup g) { return gs[(size_t)g].word->loc; };
+  auto take = [&](char c, Scale s) -> ExprPtr {
+    IsoWord *w = bw.get(c);
+    bw.used |= 1u << (c - 'A');
+    return literal(*w, factor(s));
+  };
+  auto emit = [&](OpKind k, SourceLoc loc) -> Op & {
+    out.emplace_back(k, loc);
+    return out.back();
+  };
+  auto modeOp = [&](GGroup g, const char *key) {
+    if (auto *gi = G(g); gi && gi->kind == GKind::Mode)
+      emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(gi->mode).name, gloc(g)));
+  };
+  // Keys are unique here, so args are appended directly (Op::set would search).
+  auto add = [](Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); };
+  auto axisWords = [&](Op &op, const char *axes) {
+    for (const char *a = axes; *a; ++a)
+      if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
+  };
+  auto findM = [&](MKind k) -> const MUse * {
+    for (int i = 0; i < nm; ++i)
+      if (ms[i].info.kind == k) return &ms[i];
+    return nullptr;
+  };
+
+  // The block's own units and feed mode apply to its words.
+  if (auto *gi = G(GGroup::Units)) units_ = gi->mode;
+  if (auto *gi = G(GGroup::FeedMode)) feedMode_ = gi->mode;
+  if (auto *gi = G(GGroup::Motion)) motion_ = gi->mode;
+  const GCodeInfo *nonModal = G(GGroup::NonModal);
+  if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
+
+  if (nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S')) {
+    diags_.error(bw.get('S')->loc, "G92 S (spindle speed limit) is not supported", "unsupported-code");
+    return false;
+  }
+  if (macroCall) {
+    // G65 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
+    for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
+      if (gs[g].info && gs[g].info->kind != GKind::MacroCall) {
+        diags_.error(gs[g].word->loc, "G65 must not share its block with other G codes", "syntax");
+        return false;
+      }
+  }
+
+  modeOp(GGroup::FeedMode, "feed_mode");
+  if (!macroCall) {
+    if (bw.has('F')) emit(OpKind::Feed, bw.get('F')->loc).set("value", take('F', Scale::Feed));
+    if (bw.has('S')) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
+    if (bw.has('T')) {
+      emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
+      selectedTool_ = literal(*bw.get('T'), 1.0);
+    }
+  }
+  if (auto *m = findM(MKind::ToolChange)) {
+    emit(OpKind::ToolChange, m->word->loc);
+    loadedTool_ = selectedTool_ ? selectedTool_->clone() : nullptr;
+  }
+  if (auto *m = findM(MKind::Spindle)) {
+    static const char *dirs[] = {"stop", "cw", "ccw"};
+    emit(OpKind::Spindle, m->word->loc).set("dir", Expr::symbol(dirs[m->info.arg], m->word->loc));
+  }
+  if (auto *m = findM(MKind::Coolant)) {
+    Op &op = emit(OpKind::Coolant, m->word->loc);
+    for (int i = 0; i < nm; ++i) {
+      if (ms[i].info.kind != MKind::Coolant) continue;
+      int a = ms[i].info.arg;
+      if (a == 7 || a == 9) op.set("mist", Expr::symbol(a == 7 ? "on" : "off", ms[i].word->loc));
+      if (a == 8 || a == 9) op.set("flood", Expr::symbol(a == 8 ? "on" : "off", ms[i].word->loc));
+    }
+  }
+  if (nonModal && nonModal->kind == GKind::Dwell) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    ExprPtr secs;
+    if (bw.has('P')) {
+      // Fanuc: P is in milliseconds unless written with a point; RS274NGC: P is seconds.
+      IsoWord *p = bw.get('P');
+      bw.used |= 1u << ('P' - 'A');
+      if (flavour_ == Flavour::RS274 || (p->hasPoint && !p->expr)) secs = literal(*p, 1.0);
+      else if (p->expr) secs = Expr::binary(ir::OpCode::Div, p->expr->clone(), Expr::number(1000, ir::Type::Int, p->loc), p->loc);
+      else secs = Expr::number(p->value / 1000.0, ir::Type::Real, p->loc);
+    } else if (bw.has('X') || bw.has('U')) {
+      secs = take(bw.has('X') ? 'X' : 'U', Scale::DwellX);
+    } else {
+      diags_.error(loc, "G4 needs a dwell time: P (milliseconds) or X (seconds)", "missing-word");
+      return false;
+    }
+    emit(OpKind::Dwell, loc).set("seconds", std::move(secs));
+  }
+  modeOp(GGroup::Plane, "plane");
+  modeOp(GGroup::Units, "units");
+  if (auto *gi = G(GGroup::CutterComp)) {
+    static const char *sides[] = {"off", "left", "right"};
+    Op &op = emit(OpKind::CutterComp, gloc(GGroup::CutterComp));
+    op.set("side", Expr::symbol(sides[gi->arg], gloc(GGroup::CutterComp)));
+    if (gi->arg != 0 && bw.has('D')) op.set("d", take('D', Scale::None));
+  }
+  if (auto *gi = G(GGroup::ToolLength)) {
+    SourceLoc loc = gloc(GGroup::ToolLength);
+    ExprPtr h;
+    if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
+    else if (bw.has('H')) h = take('H', Scale::None);
+    else if (flavour_ == Flavour::RS274 && loadedTool_) h = loadedTool_->clone();
+    if (!h) {
+      diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
+      return false;
+    }
+    emit(OpKind::ToolLength, loc).set("h", std::move(h));
+  }
+  if (auto *gi = G(GGroup::WorkOffset))
+    emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
+        .set("index", Expr::number(gi->arg, ir::Type::Int, gloc(GGroup::WorkOffset)));
+  modeOp(GGroup::PathMode, "path_mode");
+  if (G(GGroup::PathMode) && G(GGroup::PathMode)->mode == ModeValue::Continuous) {
+    bw.used |= (1u << ('P' - 'A')) | (1u << ('Q' - 'A'));  // G64 P<tolerance> Q<tolerance>
+  }
+  modeOp(GGroup::Distance, "distance");
+  modeOp(GGroup::ArcDistance, "arc_distance");
+  modeOp(GGroup::Retract, "retract");
+
+  // Non-modal codes that take the axis words for themselves.
+  bool axesTaken = macroCall || (nonModal && nonModal->kind == GKind::Dwell);
+  if (nonModal && nonModal->kind == GKind::SetOffset) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    Op op(OpKind::SetOffset, loc);
+    if (nonModal->arg == 0) {  // G10 L2 / L20 P<n>
+      IsoWord *l = bw.get('L');
+      int lv = l && !l->expr && l->value >= 0 && l->value < 100 ? (int)l->value : -1;
+      if (lv != 2 && lv != 20) {
+        diags_.error(l ? l->loc : loc,
+                     l ? fmt::format("G10 L{} is not supported (only L2 and L20)", l->value)
+                       : std::string("G10 needs L2 or L20"),
+                     l ? "unsupported-code" : "missing-word");
+        return false;
+      }
+      if (!bw.has('P')) {
+        diags_.error(loc, "G10 needs a P word (work offset number)", "missing-word");
+        return false;
+      }
+      bw.used |= 1u << ('L' - 'A');
+      op.set("kind", Expr::symbol(lv == 2 ? "g10l2" : "g10l20", loc));
+      op.set("index", take('P', Scale::None));
+    } else {
+      op.set("kind", Expr::symbol(nonModal->arg == 1 ? "g92" : "g92_1", loc));
+    }
+    axisWords(op, kOffsetAxes);
+    out.push_back(std::move(op));
+    axesTaken = true;
+  }
+  if (nonModal && nonModal->kind == GKind::Home) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    Op op(OpKind::Home, loc);
+    ExprPtr ref = Expr::number(nonModal->arg, ir::Type::Int, loc);
+    if (nonModal->arg == 2 && bw.has('P')) ref = take('P', Scale::None);  // G30 P3
+    op.set("ref", std::move(ref));
+    axisWords(op, kOffsetAxes);
+    out.push_back(std::move(op));
+    axesTaken = true;
+  }
+  if (nonModal && nonModal->kind == GKind::MachineCoord) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    Op op(OpKind::MachineMove, loc);
+    op.set("rapid", Expr::boolean(motion_ == ModeValue::Rapid, loc));
+    axisWords(op, kOffsetAxes);
+    out.push_back(std::move(op));
+    axesTaken = true;
+  }
+
+  // Motion.
+  if (auto *gi = G(GGroup::Motion))
+    emit(OpKind::Mode, gloc(GGroup::Motion)).set("motion", Expr::symbol(modeValueInfo(gi->mode).name, gloc(GGroup::Motion)));
+  if (!axesTaken) {
+    bool cycle = isCycleMotion(motion_);
+    bool arc = motion_ == ModeValue::ArcCW || motion_ == ModeValue::ArcCCW;
+    bool moves = bw.hasAny(kAxes) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R'));
+    if (moves) {
+      if (cycle && bw.has('K') && bw.has('L')) {
+        diags_.error(bw.get('K')->loc, "K and L both give the cycle repeat count", "duplicate-word");
+        return false;
+      }
+      SourceLoc loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
+      Op op(OpKind::Move, loc);
+      op.args.reserve((size_t)__builtin_popcount(bw.present));
+      axisWords(op, kAxes);
+      for (char c : std::string_view("IJKR")) {
+        if (!bw.has(c) || (c == 'K' && cycle) || (!arc && !cycle)) continue;
+        add(op, c, take(c, Scale::Linear));
+      }
+      if (bw.has('P') && (arc || cycle)) {
+        IsoWord *p = bw.get('P');
+        bw.used |= 1u << ('P' - 'A');
+        // Cycle dwell: seconds (Fanuc P without a point is milliseconds); arc P = turns.
+        bool ms = cycle && flavour_ == Flavour::Fanuc && !p->hasPoint;
+        if (ms && p->expr)
+          op.set("P", Expr::binary(ir::OpCode::Div, p->expr->clone(), Expr::number(1000, ir::Type::Int, p->loc), p->loc));
+        else if (ms) op.set("P", Expr::number(p->value / 1000.0, ir::Type::Real, p->loc));
+        else op.set("P", literal(*p, 1.0));
+      }
+      if (cycle && bw.has('Q')) op.set("Q", take('Q', Scale::Linear));
+      if (cycle && (bw.has('K') || bw.has('L'))) op.set("L", take(bw.has('K') ? 'K' : 'L', Scale::None));
+      out.push_back(std::move(op));
+    }
+  }
+
+  // Stops and other M codes.
+  if (auto *m = findM(MKind::Stop)) {
+    static const char *kinds[] = {"program", "optional", "end", "end_rewind"};
+    emit(OpKind::Stop, m->word->loc).set("kind", Expr::symbol(kinds[m->info.arg], m->word->loc));
+  }
+  for (int i = 0; i < nm; ++i)
+    if (ms[i].info.kind == MKind::Aux)
+      emit(OpKind::Aux, ms[i].word->loc).set("m", Expr::number(ms[i].info.code, ir::Type::Int, ms[i].word->loc));
+
+  // Subprogram and macro calls.
+  auto programNumber = [&](SourceLoc at, const char *what, long long &prog) -> bool {
+    IsoWord *p = bw.get('P');
+    if (!p) {
+      diags_.error(at, fmt::format("{} needs a P word (program number)", what), "missing-word");
+      return false;
+    }
+    if (p->expr || p->value < 0 || p->value != std::floor(p->value) || p->value > 99999999) {
+      diags_.error(p->loc, fmt::format("{} P must be a constant program number", what), "syntax");
+      return false;
+    }
+    bw.used |= 1u << ('P' - 'A');
+    prog = (long long)p->value;
+    return true;
+  };
+  auto callOp = [&](SourceLoc loc, long long prog, ExprPtr count, const char *frame) -> Op & {
+    std::string callee = fmt::format("O{}", prog);
+    calls.push_back({callee, loc});
+    Op &op = emit(OpKind::Call, loc);
+    op.set("callee", Expr::string(callee, loc));
+    op.set("count", std::move(count));
+    op.set("frame", Expr::symbol(frame, loc));
+    return op;
+  };
+  if (auto *m = findM(MKind::Call)) {
+    SourceLoc loc = m->word->loc;
+    if (!allowCalls) {
+      diags_.error(loc, "M98 needs the whole program (not streamable)", "not-streamable");
+      return false;
+    }
+    long long prog;
+    if (!programNumber(loc, "M98", prog)) return false;
+    ExprPtr count;
+    if (bw.has('L')) {
+      count = take('L', Scale::None);
+    } else if (prog > 9999) {  // M98 P<count 4 digits><program 4 digits>
+      count = Expr::number((double)(prog / 10000), ir::Type::Int, bw.get('P')->loc);
+      prog %= 10000;
+    } else {
+      count = Expr::number(1, ir::Type::Int, loc);
+    }
+    callOp(loc, prog, std::move(count), "shared");
+  }
+  if (nonModal && nonModal->kind == GKind::SubCall) {
+    // 808D G05 P<program> L<count> calls like M98; without P, or with P0/P01, it is ignored.
+    SourceLoc loc = gloc(GGroup::NonModal);
+    IsoWord *p = bw.get('P');
+    if (p && !(p->expr == nullptr && p->value <= 1)) {
+      if (!allowCalls) {
+        diags_.error(loc, "G05 needs the whole program (not streamable)", "not-streamable");
+        return false;
+      }
+      long long prog;
+      if (!programNumber(loc, "G05", prog)) return false;
+      callOp(loc, prog, bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc), "shared");
+    } else {
+      bw.used |= (1u << ('P' - 'A')) | (1u << ('L' - 'A'));
+    }
+  }
+  if (macroCall) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    if (!allowCalls) {
+      diags_.error(loc, "G65 needs the whole program (not streamable)", "not-streamable");
+      return false;
+    }
+    long long prog;
+    if (!programNumber(loc, "G65", prog)) return false;
+    ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);
+    Op &op = callOp(loc, prog, std::move(count), "new");
+    // Argument specification II when I, J or K repeats: up to 10 sets I J K -> #4+3s, #5+3s,
+    // #6+3s; a set ends when an address repeats or comes out of I-J-K order.
+    int ijkCount[3] = {0, 0, 0};
+    for (auto &w : b.words)
+      if (w.letter >= 'I' && w.letter <= 'K') ++ijkCount[w.letter - 'I'];
+    bool specII = ijkCount[0] > 1 || ijkCount[1] > 1 || ijkCount[2] > 1;
+    int set = 0, lastPos = -1;
+    for (auto &w : b.words) {
+      if (w.letter == 'G' || w.letter == 'P' || w.letter == 'L') continue;
+      int local = kMacroArg[w.letter - 'A'];
+      if (specII && w.letter >= 'I' && w.letter <= 'K') {
+        int pos = w.letter - 'I';
+        if (pos <= lastPos) ++set;
+        lastPos = pos;
+        if (set > 9) {
+          diags_.error(w.loc, "more than 10 I/J/K argument sets", "syntax");
+          return false;
+        }
+        local = 4 + 3 * set + pos;
+      }
+      if (!local) {
+        diags_.error(w.loc, fmt::format("{} is not a macro argument", w.letter), "syntax");
+        return false;
+      }
+      if (w.letter != 'M') bw.used |= 1u << (w.letter - 'A');
+      op.set(fmt::format("a.{}", local), literal(w, 1.0));  // later words win (D=#7 vs I2)
+    }
+  }
+  if (auto *m = findM(MKind::Return)) {
+    if (bw.has('P')) {
+      diags_.error(bw.get('P')->loc, "M99 P<n> (return to a block number) is not supported", "unsupported-code");
+      return false;
+    }
+    emit(OpKind::Return, m->word->loc);
+  }
+
+  for (auto &a : b.assigns) {
+    Op &op = emit(OpKind::Assign, a.loc);
+    op.set("target", std::move(a.target));
+    op.set("value", std::move(a.value));
+  }
+
+  for (uint32_t unused = bw.present & ~bw.used; unused; unused &= unused - 1)
+    if (int c = __builtin_ctz(unused); bw.w[c])
+      diags_.warning(bw.w[c]->loc, fmt::format("{} word is not used in this block", (char)('A' + c)), "unused-word");
+  return true;
+}
+
+}  // namespace ncc::iso

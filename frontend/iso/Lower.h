@@ -1,0 +1,40 @@
+// Lowering of one parsed ISO block to NC IR ops, in the LinuxCNC rs274 execution order.
+// Keeps the little modal state the lowering itself needs (motion mode for cycle words and G53,
+// units and feed mode for the decimal-point rule), tracked in source order.
+#pragma once
+#include "frontend/iso/Codes.h"
+#include "frontend/iso/IsoFrontend.h"
+#include "frontend/iso/Syntax.h"
+
+namespace ncc::iso {
+
+struct CallRef {
+  std::string callee;
+  SourceLoc loc;
+};
+
+class BlockLowerer {
+public:
+  BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags);
+  bool optionsValid() const { return decimal_ >= 0; }
+
+  ir::Op blockOp(const ParsedBlock &b) const;
+  void lowerComments(const ParsedBlock &b, ir::Region &out);
+  // Words (G/M codes, addresses) and assignments. Returns false when an error was reported.
+  bool lowerActions(ParsedBlock &b, ir::Region &out);
+
+  std::vector<CallRef> calls;  // every callee referenced, for subprogram resolution
+  bool allowCalls = true;      // false when streaming: M98/G65 are then errors
+
+private:
+  Diagnostics &diags_;
+  Flavour flavour_;
+  int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
+  ModeValue motion_ = ModeValue::Rapid;
+  ModeValue feedMode_ = ModeValue::PerMinute;
+  ModeValue units_ = ModeValue::MM;
+  // RS274NGC `G43` without H uses the loaded tool: T of the last M6, tracked in source order.
+  ir::ExprPtr selectedTool_, loadedTool_;
+};
+
+}  // namespace ncc::iso

@@ -1,0 +1,138 @@
+// The ISO front end's dialect AST: one ParsedBlock per source line, produced by BlockParser and
+// consumed by BlockLowerer (NC IR ops) and the program parser (control structure, subprograms).
+#pragma once
+#include "ir/Diagnostics.h"
+#include "ir/NCIR.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncc::iso {
+
+// Fanuc Custom Macro B (default) or RS274NGC / LinuxCNC (.ngc files): they differ in operator
+// precedence, O-words, named parameters and the unit of dwell P.
+enum class Flavour : uint8_t { Fanuc, RS274 };
+
+// .ngc files are RS274NGC, everything else Fanuc.
+Flavour flavourForFile(std::string_view name);
+
+struct IsoWord {
+  char letter = 0;         // upper case
+  bool hasPoint = false;   // literal written with a decimal point
+  double value = 0;        // the literal (when expr is null)
+  ir::ExprPtr expr;        // a Macro B value: X#1, X-[#2+1]
+  SourceLoc loc;           // the letter
+};
+
+struct IsoComment {
+  std::string text;
+  SourceLoc loc;
+  bool message = false;    // (MSG, text)
+};
+
+struct IsoAssign {
+  ir::ExprPtr target, value;
+  SourceLoc loc;
+};
+
+// Macro B / O-word statement of a block.
+enum class StmtKind : uint8_t {
+  None,
+  IfGoto,    // IF [cond] GOTO target
+  IfThen,    // IF [cond] THEN <the block's assignments and words>
+  Goto,      // GOTO target
+  While,     // WHILE [cond] DO id
+  Do,        // DO id (endless loop)
+  End,       // END id
+  OWord,     // RS274 o<name> <keyword> ...
+};
+
+// RS274NGC O-word keywords.
+enum class OKeyword : uint8_t {
+  Sub, EndSub, Call, Return, If, ElseIf, Else, EndIf, While, EndWhile, Do, Break, Continue, Repeat,
+  EndRepeat
+};
+
+struct ParsedBlock {
+  SourceLoc loc;             // first non-blank character
+  bool content = false;      // anything but blanks and empty `;`
+  bool percent = false;      // a `%` line
+  int64_t n = -1;            // N word
+  int skip = -1;             // leading `/n` whose level is not active
+  int64_t programNumber = -1;  // a Fanuc `O1234` line
+  std::vector<IsoWord> words;
+  std::vector<IsoComment> comments;
+  std::vector<IsoAssign> assigns;
+  StmtKind stmt = StmtKind::None;
+  SourceLoc stmtLoc;
+  ir::ExprPtr cond;          // IF / WHILE / O-word if, while, repeat count, return value
+  ir::ExprPtr target;        // GOTO target
+  int loopId = 0;            // DO / END id
+  OKeyword okw = OKeyword::Sub;
+  std::string oname;         // O-word name: "100" or "name"
+  std::vector<ir::ExprPtr> oargs;  // o<n> call [a] [b]
+
+  void clear() {
+    loc = {};
+    content = percent = false;
+    n = -1;
+    skip = -1;
+    programNumber = -1;
+    words.clear();
+    comments.clear();
+    assigns.clear();
+    stmt = StmtKind::None;
+    stmtLoc = {};
+    cond.reset();
+    target.reset();
+    loopId = 0;
+    oname.clear();
+    oargs.clear();
+  }
+};
+
+// Turns one line into a ParsedBlock. Reports syntax errors and returns false (the block is then
+// dropped by the caller).
+class BlockParser {
+public:
+  BlockParser(Diagnostics &diags, Flavour flavour, unsigned blockDeleteMask)
+      : diags_(diags), flavour_(flavour), skipMask_(blockDeleteMask) {}
+  bool parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out);
+
+  // Expression entry points (also used by tests).
+  ir::ExprPtr parseExpr(int minPrec);
+
+private:
+  Diagnostics &diags_;
+  Flavour flavour_;
+  unsigned skipMask_;
+  const char *begin_ = nullptr, *p_ = nullptr, *end_ = nullptr;
+  uint32_t file_ = 0, line_ = 0;
+  bool failed_ = false;
+  int depth_ = 0;
+
+  SourceLoc locAt(const char *q) const { return {file_, line_, (uint32_t)(q - begin_ + 1)}; }
+  bool fail(const char *at, std::string msg, const char *rule = "syntax");
+  void skipBlanks();
+  bool atEnd() const { return p_ >= end_; }
+  char peekUpper() const;
+  std::string_view readLetters();
+  bool readNumber(double &v, bool &hasPoint, bool &any);
+  bool parseComment(ParsedBlock &out);
+  bool parseSemicolonComment(ParsedBlock &out);
+  bool parseWordValue(IsoWord &w);
+  bool parseStatement(std::string_view kw, const char *at, ParsedBlock &out);
+  bool parseAssign(ParsedBlock &out);
+  bool parseOWord(ParsedBlock &out, const char *at);
+  bool parseItems(ParsedBlock &out);
+  ir::ExprPtr parseBracket();   // [ expr ]
+  ir::ExprPtr parseUnary();
+  ir::ExprPtr parsePrimary();
+  ir::ExprPtr parseVariable();  // after '#'
+  ir::ExprPtr parseFunction(std::string name, const char *at);
+  bool binaryOp(int &prec, ir::OpCode &op, const char *&after);
+};
+
+}  // namespace ncc::iso

@@ -1,0 +1,222 @@
+#include "runtime/CanonTrace.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstring>
+
+namespace ncc {
+
+namespace {
+constexpr size_t kFlushAt = 1 << 16;
+// Arc argument order per plane: first and second plane axis, normal axis (rs274's ARC_FEED).
+constexpr int kArcAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
+constexpr const char *kPlaneNames[] = {"CANON_PLANE_XY", "CANON_PLANE_XZ", "CANON_PLANE_YZ"};
+}  // namespace
+
+CanonTraceWriter::CanonTraceWriter(std::FILE *out) : out_(out) { buf_.reserve(kFlushAt + 4096); }
+
+// After finish() the stream may already be closed by its owner (AtomicFile::commit): no access.
+CanonTraceWriter::~CanonTraceWriter() {
+  if (!finished_) flush();
+}
+
+bool CanonTraceWriter::flush() {
+  if (!buf_.empty() && out_) {
+    if (std::fwrite(buf_.data(), 1, buf_.size(), out_) != buf_.size()) ioError_ = true;
+    buf_.clear();
+  }
+  if (out_ && std::fflush(out_) != 0) ioError_ = true;
+  return !ioError_;
+}
+
+void CanonTraceWriter::begin(int64_t n) {
+  char tmp[48];
+  ++seq_;
+  // "%5d " then the N column: "N....." + blank, or N and the number left-aligned in 6 columns.
+  int len = std::snprintf(tmp, sizeof tmp, "%5lld ", (long long)seq_);
+  buf_.append(tmp, (size_t)len);
+  if (n < 0) {
+    buf_.append("N..... ");
+  } else {
+    buf_.push_back('N');
+    auto res = std::to_chars(tmp, tmp + sizeof tmp, (long long)n);
+    size_t digits = (size_t)(res.ptr - tmp);
+    buf_.append(tmp, digits);
+    if (digits < 6) buf_.append(6 - digits, ' ');
+  }
+}
+
+void CanonTraceWriter::end() {
+  buf_.push_back('\n');
+  if (buf_.size() >= kFlushAt && out_) {
+    if (std::fwrite(buf_.data(), 1, buf_.size(), out_) != buf_.size()) ioError_ = true;
+    buf_.clear();
+  }
+}
+
+void CanonTraceWriter::line(int64_t n, std::string_view text) {
+  begin(n);
+  buf_.append(text);
+  end();
+}
+
+void CanonTraceWriter::num(double v) {
+  char tmp[400];  // %.4f of the largest double takes 315 characters
+  // to_chars with a precision rounds exactly like printf's %.4f (including "-0.0000").
+  auto res = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::fixed, 4);
+  if (res.ec != std::errc()) {
+    int len = std::snprintf(tmp, sizeof tmp, "%.4f", v);
+    buf_.append(tmp, len < 0 ? 0 : std::min((size_t)len, sizeof tmp - 1));
+    return;
+  }
+  buf_.append(tmp, (size_t)(res.ptr - tmp));
+}
+
+void CanonTraceWriter::nums(const double *v, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i) buf_.append(", ");
+    num(v[i]);
+  }
+}
+
+void CanonTraceWriter::preamble() {
+  started_ = true;
+  line(-1, "USE_LENGTH_UNITS(CANON_UNITS_MM)");
+  line(-1, "SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  line(-1, "SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  line(-1, "SET_XY_ROTATION(0.0000)");
+  line(-1, "SET_FEED_REFERENCE(CANON_XYZ)");
+  line(-1, "ON_RESET()");
+}
+
+// What rs274 prints for M2/M30: its reset of the modal state, then PROGRAM_END.
+void CanonTraceWriter::epilogue(const MotionRecord &r) {
+  int64_t n = r.blockNumber;
+  line(n, "SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  line(n, "SET_XY_ROTATION(0.0000)");
+  if (plane_ != Plane::XY) line(n, "SELECT_PLANE(CANON_PLANE_XY)");
+  plane_ = Plane::XY;
+  line(n, "SET_FEED_MODE(0, 0)");
+  line(n, "SET_FEED_RATE(0.0000)");
+  line(n, "STOP_SPINDLE_TURNING(0)");
+  line(n, "SET_SPINDLE_MODE(0 0.0000)");
+  if (mist_) line(n, "MIST_OFF()");
+  if (flood_) line(n, "FLOOD_OFF()");
+  mist_ = flood_ = false;
+  if (r.ivalue == 30) line(n, "PALLET_SHUTTLE()");
+  line(n, "PROGRAM_END()");
+}
+
+void CanonTraceWriter::record(const MotionRecord &r) {
+  if (finished_) return;
+  if (!started_) preamble();
+  const int64_t n = r.blockNumber;
+  switch (r.kind) {
+  case RecordKind::Rapid:
+  case RecordKind::Linear:
+    begin(n);
+    buf_.append(r.kind == RecordKind::Rapid ? "STRAIGHT_TRAVERSE(" : "STRAIGHT_FEED(");
+    nums(r.end.data(), kAxes);
+    buf_.push_back(')');
+    end();
+    break;
+  case RecordKind::Arc: {
+    const int *ax = kArcAxes[(int)r.plane];
+    begin(n);
+    buf_.append("ARC_FEED(");
+    double v[4] = {r.end[ax[0]], r.end[ax[1]], r.center[ax[0]], r.center[ax[1]]};
+    nums(v, 4);
+    char tmp[24];
+    auto res = std::to_chars(tmp, tmp + sizeof tmp, r.turns);
+    buf_.append(", ");
+    buf_.append(tmp, (size_t)(res.ptr - tmp));
+    buf_.append(", ");
+    double w[4] = {r.end[ax[2]], r.end[3], r.end[4], r.end[5]};
+    nums(w, 4);
+    buf_.push_back(')');
+    end();
+    break;
+  }
+  case RecordKind::Dwell:
+    begin(n);
+    buf_.append("DWELL(");
+    num(r.value);
+    buf_.push_back(')');
+    end();
+    break;
+  case RecordKind::ToolSelect:
+    line(n, "SELECT_TOOL(" + std::to_string(r.ivalue) + ")");
+    break;
+  case RecordKind::ToolChange:
+    line(n, "START_CHANGE()");
+    line(n, "STOP_SPINDLE_TURNING(0)");
+    line(n, "CHANGE_TOOL(" + std::to_string(r.ivalue) + ")");
+    break;
+  case RecordKind::ToolLength:
+    // Already applied to the machine positions: printing it would apply it twice.
+    break;
+  case RecordKind::SpindleSpeed:
+    begin(n);
+    buf_.append("SET_SPINDLE_SPEED(0, ");
+    num(r.value);
+    buf_.push_back(')');
+    end();
+    break;
+  case RecordKind::SpindleCW: line(n, "START_SPINDLE_CLOCKWISE(0)"); break;
+  case RecordKind::SpindleCCW: line(n, "START_SPINDLE_COUNTERCLOCKWISE(0)"); break;
+  case RecordKind::SpindleStop: line(n, "STOP_SPINDLE_TURNING(0)"); break;
+  case RecordKind::CoolantFlood:
+    flood_ = r.ivalue != 0;
+    line(n, flood_ ? "FLOOD_ON()" : "FLOOD_OFF()");
+    break;
+  case RecordKind::CoolantMist:
+    mist_ = r.ivalue != 0;
+    line(n, mist_ ? "MIST_ON()" : "MIST_OFF()");
+    break;
+  case RecordKind::FeedRate:
+    begin(n);
+    buf_.append("SET_FEED_RATE(");
+    num(r.value);
+    buf_.push_back(')');
+    end();
+    break;
+  case RecordKind::FeedMode:
+    line(n, r.ivalue == 1 ? "SET_FEED_MODE(0, 1)" : "SET_FEED_MODE(0, 0)");
+    break;
+  case RecordKind::PathMode:
+    if (r.ivalue == 0) {
+      line(n, "SET_MOTION_CONTROL_MODE(CANON_EXACT_PATH)");
+    } else if (r.ivalue == 1) {
+      line(n, "SET_MOTION_CONTROL_MODE(CANON_EXACT_STOP)");
+    } else {
+      char tmp[96];
+      std::snprintf(tmp, sizeof tmp, "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)", r.value);
+      line(n, tmp);
+      std::snprintf(tmp, sizeof tmp, "SET_NAIVECAM_TOLERANCE(%.4f)", r.value);
+      line(n, tmp);
+    }
+    break;
+  case RecordKind::Plane:
+    plane_ = (Plane)r.ivalue;
+    line(n, std::string("SELECT_PLANE(") + kPlaneNames[(int)plane_ % 3] + ")");
+    break;
+  case RecordKind::Comment: line(n, "COMMENT(\"" + r.text + "\")"); break;
+  case RecordKind::Message: line(n, "MESSAGE(\"" + r.text + "\")"); break;
+  case RecordKind::OptionalStop: line(n, "OPTIONAL_PROGRAM_STOP()"); break;
+  case RecordKind::ProgramStop: line(n, "PROGRAM_STOP()"); break;
+  case RecordKind::ProgramEnd: epilogue(r); break;
+  case RecordKind::Aux:  // user M codes have no canonical command in rs274's standalone canon
+  case RecordKind::Count: break;
+  }
+}
+
+bool CanonTraceWriter::finish(Diagnostics &) {
+  if (finished_) return !ioError_;
+  finished_ = true;
+  if (!started_) preamble();
+  line(-1, "ON_RESET()");
+  line(-1, "ON_RESET()");
+  return flush();
+}
+
+}  // namespace ncc

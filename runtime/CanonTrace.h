@@ -1,0 +1,44 @@
+// Canonical trace writer: prints Motion IR in the text format of LinuxCNC's rs274 standalone
+// interpreter (`%5d N..... NAME(args)`, %.4f), so `ncc run --trace=canon` output can be compared
+// with rs274's (runtime/CanonDiff.h). Positions are machine coordinates in mm: the preamble
+// declares mm units and zero offsets, and offsets are never printed (they are already applied).
+#pragma once
+#include "ir/MotionIR.h"
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace ncc {
+
+class CanonTraceWriter : public MotionSink {
+public:
+  // Writes to `out` (not closed). Output is buffered; finish() flushes (the destructor too when
+  // finish() was not called); records after finish() are ignored.
+  explicit CanonTraceWriter(std::FILE *out);
+  ~CanonTraceWriter() override;
+  void record(const MotionRecord &r) override;
+  // Ends the trace like rs274's driver (two ON_RESET() lines) and flushes. Returns false when
+  // the stream reports a write error.
+  bool finish(Diagnostics &diags) override;
+  // Writes the buffered text to the stream.
+  bool flush();
+
+private:
+  void begin(int64_t blockNumber);     // "%5d N..... " prefix
+  void end();                          // newline, flush when the buffer is large
+  void line(int64_t blockNumber, std::string_view text);
+  void num(double v);                  // %.4f
+  void nums(const double *v, int n);   // ", "-separated %.4f values
+  void preamble();
+  void epilogue(const MotionRecord &r);
+
+  std::FILE *out_;
+  std::string buf_;
+  int64_t seq_ = 0;
+  bool started_ = false, finished_ = false, ioError_ = false;
+  Plane plane_ = Plane::XY;
+  bool flood_ = false, mist_ = false;
+};
+
+}  // namespace ncc

@@ -1,0 +1,54 @@
+// Canned drilling cycles (G73 G74 G81-G86 G89) expanded into elementary steps, the way LinuxCNC's
+// rs274 expands them (the reference the oracle tests compare against). A pure function: the
+// executor calls it with machine-frame values, a pass may call it to pre-expand cycles.
+#pragma once
+#include "ir/ModeTable.h"
+#include "ir/MotionIR.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ncc {
+
+enum class CycleStepKind : uint8_t { Rapid, Feed, Dwell, SpindleStop, SpindleCW, SpindleCCW };
+
+struct CycleStep {
+  CycleStepKind kind = CycleStepKind::Rapid;
+  std::array<double, 3> pos{};  // X Y Z target of Rapid/Feed
+  double seconds = 0;           // Dwell
+  // The move to the R level made before the holes when the initial level is below R: rs274
+  // makes it outside the exact-path bracket of the holes.
+  bool preMove = false;
+};
+
+struct CycleInput {
+  ModeValue cycle = ModeValue::Drill;  // Drill .. BoreDwell (not BoreBack/BoreFine)
+  Plane plane = Plane::XY;             // drilling axis: XY -> Z, ZX -> Y, YZ -> X
+  bool retractToR = false;             // G99 (else G98: back to max(initial level, R))
+  bool incremental = false;            // G91: target = increments, R from the initial level,
+                                       // Z (bottom) from the R level
+  std::array<double, 3> current{};     // position before the block, X Y Z
+  // Hole position: absolute X Y Z (G90) or the increments (G91); only the two plane axes are used.
+  std::array<double, 3> target{};
+  double initialLevel = 0;  // drilling-axis position when the cycle mode was entered
+  // The previous block ran the same cycle: rs274 then moves to the hole at the clear level (at
+  // least), after a change of cycle at the R level (at least).
+  bool sameCycle = false;
+  double r = 0;             // R word (absolute level, or increment in G91)
+  double z = 0;             // bottom (absolute, or increment from R in G91)
+  double q = 0;             // peck depth (G73/G83), > 0
+  double p = 0;             // dwell seconds (G82 G84 G86 G89)
+  int repeats = 1;          // L (Fanuc K)
+  int spindle = 1;          // spindle direction before the cycle: 1 cw, 2 ccw (G86 restart)
+  double peckClearance = 0.254;  // G83 stop short / G73 retract (0.010 inch), same unit as positions
+};
+
+// Appends the steps of one cycle block to `out`. Returns false with an rs274-like message in
+// `err` on invalid parameters (R below the bottom, Q <= 0, repeats < 1).
+bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string &err);
+
+// "G81" etc. for messages.
+const char *cycleCodeName(ModeValue cycle);
+
+}  // namespace ncc

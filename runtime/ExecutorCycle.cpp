@@ -1,0 +1,127 @@
+// Executor: canned-cycle blocks. Keeps the cycle's modal data (R, Z, Q, P, the initial level),
+// resolves the words into the machine frame and turns the steps of expandCycle into records.
+#include "runtime/ExecutorImpl.h"
+
+#include <cctype>
+#include <cmath>
+
+namespace ncc {
+
+namespace {
+// Drilling-axis word and index per plane (XY -> Z, ZX -> Y, YZ -> X).
+constexpr Word kDrillWord[] = {Word::Z, Word::Y, Word::X};
+constexpr int kDrillAxis[] = {2, 1, 0};
+constexpr const char *kPlaneName[] = {"xy", "xz", "yz"};
+// rs274 spells the codes in lower case in its messages ("Q word missing with g83").
+std::string lower(const char *code) {
+  std::string s = code;
+  for (char &ch : s) ch = (char)std::tolower((unsigned char)ch);
+  return s;
+}
+}  // namespace
+
+bool Executor::Impl::cycle(const MachineCmd &c) {
+  const ModeValue cyc = st.motion;
+  const char *code = cycleCodeName(cyc);
+  const int pl = (int)plane();
+  const int d = kDrillAxis[pl];
+  const Word zWord = kDrillWord[pl];
+  const bool first = lastCycle != cyc;
+  const bool inc = st.distance == ModeValue::Incremental;
+
+  if (first && !c.has(zWord))
+    return error(std::string(1, kWordLetters[(int)zWord]) + " value unspecified in " + kPlaneName[pl] +
+                     " plane canned cycle",
+                 "cycle-missing-word");
+  if (first && !c.has(Word::R)) return error("R clearance plane unspecified in cycle", "cycle-missing-word");
+  bool dwells = cyc == ModeValue::DrillDwell || cyc == ModeValue::BoreStop || cyc == ModeValue::BoreDwell;
+  if (first && dwells && !c.has(Word::P))
+    return error(std::string("Dwell time p word missing with ") + lower(code), "cycle-missing-word");
+  if (c.has(zWord)) cycleZ = c.get(zWord) * scale();
+  if (c.has(Word::R)) cycleR = c.get(Word::R) * scale();
+  if (c.has(Word::Q)) {
+    cycleQ = c.get(Word::Q) * scale();
+    haveQ = true;
+  }
+  if (c.has(Word::P)) cycleP = c.get(Word::P);
+  bool peck = cyc == ModeValue::Peck || cyc == ModeValue::PeckChipBreak;
+  if (peck && !haveQ) return error(std::string("Q word missing with ") + lower(code), "cycle-missing-word");
+  int repeats = 1;
+  if (c.has(Word::L)) {
+    double l = c.get(Word::L);
+    if (l != std::floor(l) || std::fabs(l) > 1e6) return error("Non integer value for integer", "cycle-bad-repeat");
+    repeats = (int)l;
+  }
+  // Spindle conditions rs274 checks before tapping and boring.
+  if (cyc == ModeValue::Tap && st.spindle != 1)
+    return error("Spindle not turning clockwise in G84", "cycle-spindle");
+  if (cyc == ModeValue::TapLeft && st.spindle != 2)
+    return error("Spindle not turning counterclockwise in G74", "cycle-spindle");
+  if (cyc == ModeValue::BoreStop && st.spindle == 0) return error("Spindle not turning in G86", "cycle-spindle");
+  if (!checkFeed(code)) return false;
+
+  if (!initialLevelValid) {
+    initialLevel = st.position[d];
+    initialLevelValid = true;
+  }
+  CycleInput in;
+  in.cycle = cyc;
+  in.plane = plane();
+  in.retractToR = st.retract == ModeValue::RetractR;
+  in.incremental = inc;
+  in.current = {st.position[0], st.position[1], st.position[2]};
+  in.initialLevel = initialLevel;
+  in.sameCycle = !first;
+  in.r = inc ? cycleR : cycleR + offset(d);
+  in.z = inc ? cycleZ : cycleZ + offset(d);
+  in.q = cycleQ;
+  in.p = cycleP;
+  in.repeats = repeats;
+  in.spindle = st.spindle;
+  for (int i = 0; i < 3; ++i) {
+    if (i == d) continue;
+    bool has = c.has((Word)i);
+    double v = c.get((Word)i) * scale();
+    in.target[i] = inc ? (has ? v : 0.0) : (has ? v + offset(i) : st.position[i]);
+  }
+  steps.clear();
+  std::string err;
+  if (!expandCycle(in, steps, err)) return error(err, "cycle-invalid");
+  lastCycle = cyc;
+
+  // rs274 runs the holes of a block in exact-path mode and restores the path mode after.
+  bool bracketOpen = false;
+  auto openBracket = [&] {
+    MotionRecord r = record(RecordKind::PathMode);
+    r.ivalue = 0;
+    emit(r);
+    bracketOpen = true;
+  };
+  for (const CycleStep &s : steps) {
+    if (!s.preMove && !bracketOpen) openBracket();
+    AxisVec to = st.position;
+    to[0] = s.pos[0], to[1] = s.pos[1], to[2] = s.pos[2];
+    switch (s.kind) {
+    case CycleStepKind::Rapid: moveTo(RecordKind::Rapid, to, !s.preMove); break;
+    case CycleStepKind::Feed: moveTo(RecordKind::Linear, to, true); break;
+    case CycleStepKind::Dwell: {
+      MotionRecord r = record(RecordKind::Dwell);
+      r.value = s.seconds;
+      emit(r);
+      break;
+    }
+    case CycleStepKind::SpindleStop: emit(record(RecordKind::SpindleStop)); break;
+    case CycleStepKind::SpindleCW: emit(record(RecordKind::SpindleCW)); break;
+    case CycleStepKind::SpindleCCW: emit(record(RecordKind::SpindleCCW)); break;
+    }
+  }
+  if (bracketOpen) {
+    MotionRecord r = record(RecordKind::PathMode);
+    r.ivalue = st.pathMode == ModeValue::ExactPath ? 0 : st.pathMode == ModeValue::ExactStop ? 1 : 2;
+    r.value = st.pathMode == ModeValue::Continuous ? pathTolerance : 0;
+    emit(r);
+  }
+  return true;
+}
+
+}  // namespace ncc

@@ -1,0 +1,79 @@
+// Private state of the executor, shared by its implementation files (Executor.cpp: dispatch,
+// modes and offsets; ExecutorMotion.cpp: moves, arcs and canned cycles).
+#pragma once
+#include "runtime/Cycles.h"
+#include "runtime/Executor.h"
+
+#include <vector>
+
+namespace ncc {
+
+struct Executor::Impl {
+  Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d) {
+    g5x = m.workOffsets;
+  }
+  const Machine &machine;
+  MotionSink &sink;
+  Diagnostics &diags;
+  ModalState st;
+
+  // Frame: machine = program + G92 + G5x (+ tool length on Z), all mm.
+  std::array<AxisVec, 9> g5x{};
+  AxisVec g92{};
+  double toolLength = 0;
+  double feedMM = 0;
+  bool feedInBlock = false;  // an F word in the current block (inverse time needs one per move)  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)
+
+  int64_t blockNumber = -1;
+  SourceLoc loc;       // of the command being executed
+  SourceLoc blockLoc;  // of the current block
+
+  // Canned cycle modal data (mm, as programmed: absolute or incremental).
+  bool initialLevelValid = false;
+  double initialLevel = 0;  // drilling-axis machine position when the cycle mode was entered
+  ModeValue lastCycle = ModeValue::CycleOff;
+  double cycleR = 0, cycleZ = 0, cycleQ = 0, cycleP = 0;
+  bool haveQ = false;
+  std::vector<CycleStep> steps;
+
+  int cutterD = 0;
+  bool warnedAfterEnd = false, warnedCutterComp = false;
+  double pathTolerance = 0;  // G64 P
+
+  // --- helpers (Executor.cpp) ---
+  double scale() const { return st.units == ModeValue::Inch ? 25.4 : 1.0; }
+  double axisScale(int axis) const { return axis < 3 ? scale() : 1.0; }
+  double offset(int axis) const {
+    return g5x[st.workOffset - 1][axis] + g92[axis] + (axis == 2 ? toolLength : 0.0);
+  }
+  double programPos(int axis) const { return st.position[axis] - offset(axis); }
+  Plane plane() const;
+  MotionRecord record(RecordKind k) const;
+  void emit(const MotionRecord &r) { sink.record(r); }
+  bool error(std::string msg, std::string rule) {
+    diags.error(loc, std::move(msg), std::move(rule));
+    return false;
+  }
+  void warning(std::string msg, std::string rule) { diags.warning(loc, std::move(msg), std::move(rule)); }
+  // Machine-frame target of the axis words of `c` (absent axes keep their position).
+  AxisVec target(const MachineCmd &c) const;
+
+  bool execMode(const MachineCmd &c);
+  bool execToolLength(const MachineCmd &c);
+  bool execSetOffset(const MachineCmd &c);
+  bool execStop(const MachineCmd &c);
+
+  // --- motion (ExecutorMotion.cpp) ---
+  bool execMove(const MachineCmd &c);
+  bool execHome(const MachineCmd &c);
+  bool execMachineMove(const MachineCmd &c);
+  bool moveTo(RecordKind k, const AxisVec &to, bool exactStop = false);
+  bool checkFeed(const char *code);
+  double moveFeed(double lengthMM) const;
+  // In inverse time each feed move gets its own rate record (mm/min), as rs274 prints it.
+  void inverseTimeRate(double mmPerMin);
+  bool arc(const MachineCmd &c, bool cw);
+  bool cycle(const MachineCmd &c);
+};
+
+}  // namespace ncc

@@ -1,0 +1,210 @@
+// Executor motion: straight moves, arcs (centre and radius forms, helices, turns), G28/G30, G53
+// and canned cycles. Positions are computed in the machine frame (mm); words are converted with
+// the unit scale and the current offsets (ExecutorImpl.h).
+#include "runtime/ExecutorImpl.h"
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+
+namespace ncc {
+
+namespace {
+
+// Plane axes of arcs: first, second, normal axis; the centre-offset words of the two plane axes.
+struct ArcAxes {
+  int a1, a2, d;
+  Word o1, o2;
+  char l1, l2;
+};
+constexpr ArcAxes kArcAxes[] = {
+    {0, 1, 2, Word::I, Word::J, 'X', 'Y'},
+    {2, 0, 1, Word::K, Word::I, 'Z', 'X'},
+    {1, 2, 0, Word::J, Word::K, 'Y', 'Z'},
+};
+
+// rs274 2.9 accepts an IJK arc unless both the radius difference and the relative difference
+// (0.1 %) are exceeded; the absolute limit measured on it lies between 0.028 and 0.0284 mm for
+// mm programs and between 0.0028 and 0.003 inch for inch programs.
+constexpr double kArcRelTolerance = 0.001;
+constexpr double kArcAbsTolMM = 0.0282, kArcAbsTolInch = 0.0029;
+// R-form arcs whose radius is shorter than half the chord by less than this pass as half circles
+// (rs274: 0.001 mm passes, 0.002 mm fails; 0.0001 inch fails).
+constexpr double kRadiusTolMM = 0.0015, kRadiusTolInch = 0.00005;
+
+constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // X Y Z A B C words
+
+}  // namespace
+
+double Executor::Impl::moveFeed(double lengthMM) const {
+  switch (st.feedMode) {
+  case ModeValue::PerRev: return feedMM * st.speed;
+  case ModeValue::InverseTime: return lengthMM * feedMM;
+  default: return feedMM;
+  }
+}
+
+void Executor::Impl::inverseTimeRate(double mmPerMin) {
+  if (st.feedMode != ModeValue::InverseTime) return;
+  MotionRecord f = record(RecordKind::FeedRate);
+  f.value = mmPerMin;
+  emit(f);
+}
+
+bool Executor::Impl::checkFeed(const char *code) {
+  if (st.feedMode == ModeValue::InverseTime) {
+    // Inverse time: every feed move carries its own F.
+    if (feedInBlock && feedMM > 0) return true;
+    return error(std::string("F word missing with inverse time ") + code + " move", "motion-without-feed");
+  }
+  if (feedMM > 0) return true;
+  return error(std::string("Cannot do ") + code + " with zero feed rate", "motion-without-feed");
+}
+
+bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop) {
+  MotionRecord r = record(k);
+  r.end = to;
+  r.exactStop = exactStop || st.pathMode == ModeValue::ExactStop;
+  if (k == RecordKind::Linear) {
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) d2 += (to[i] - r.start[i]) * (to[i] - r.start[i]);
+    r.feed = moveFeed(std::sqrt(d2));
+    inverseTimeRate(r.feed);
+  }
+  st.position = to;
+  emit(r);
+  return true;
+}
+
+bool Executor::Impl::execMove(const MachineCmd &c) {
+  switch (st.motion) {
+  case ModeValue::Rapid:
+    if (!(c.mask & kAxisMask)) return true;
+    return moveTo(RecordKind::Rapid, target(c));
+  case ModeValue::Linear:
+    if (!(c.mask & kAxisMask)) return true;
+    if (!checkFeed("G1")) return false;
+    return moveTo(RecordKind::Linear, target(c));
+  case ModeValue::ArcCW:
+  case ModeValue::ArcCCW: return arc(c, st.motion == ModeValue::ArcCW);
+  case ModeValue::CycleOff:
+    if (!(c.mask & kAxisMask)) return true;
+    return error("Cannot use axis values with G80", "motion-mode-none");
+  default: return cycle(c);
+  }
+}
+
+bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
+  const ArcAxes &ax = kArcAxes[(int)plane()];
+  const char *code = cw ? "G2" : "G3";
+  if (!checkFeed(code)) return false;
+  const AxisVec start = st.position;
+  const AxisVec end = target(c);
+  const bool inch = st.units == ModeValue::Inch;
+  const double s1 = start[ax.a1], s2 = start[ax.a2], e1 = end[ax.a1], e2 = end[ax.a2];
+  double c1, c2;
+  // The offset word of the axis normal to the plane (K in G17, J in G18, I in G19).
+  static const Word kNormalWord[] = {Word::K, Word::J, Word::I};
+  static const char *kPlaneNames[] = {"xy", "xz", "yz"};
+  Word normal = kNormalWord[(int)plane()];
+  if (c.has(normal))
+    return error(std::string(1, kWordLetters[(int)normal]) + " word given for arc in " + kPlaneNames[(int)plane()] +
+                     " plane",
+                 "arc-invalid");
+  if (!c.has(Word::R) && !c.has(ax.o1) && !c.has(ax.o2))
+    return error("R i j k words all missing for arc", "arc-invalid");
+  if (c.has(Word::R)) {
+    double rr = c.get(Word::R) * scale();
+    double dx = e1 - s1, dy = e2 - s2, chord = std::hypot(dx, dy);
+    if (chord == 0) return error("Current point same as end point of arc", "arc-invalid");
+    double half = chord / 2, h = 0;
+    if (std::fabs(rr) < half) {
+      if (half - std::fabs(rr) > (inch ? kRadiusTolInch * 25.4 : kRadiusTolMM))
+        return error("Arc radius too small to reach end point", "arc-radius-too-small");
+    } else {
+      h = std::sqrt(rr * rr - half * half);
+    }
+    // Centre left of the chord for a short CCW arc, right for CW; a negative R takes the long way.
+    double side = (cw ? -1.0 : 1.0) * (rr < 0 ? -1.0 : 1.0);
+    c1 = (s1 + e1) / 2 - side * h * dy / chord;
+    c2 = (s2 + e2) / 2 + side * h * dx / chord;
+  } else {
+    double o1 = c.get(ax.o1) * scale(), o2 = c.get(ax.o2) * scale();
+    if (st.arcDistance == ModeValue::ArcAbsolute) {
+      c1 = o1 + offset(ax.a1);
+      c2 = o2 + offset(ax.a2);
+    } else {
+      c1 = s1 + o1;
+      c2 = s2 + o2;
+    }
+    double r1 = std::hypot(s1 - c1, s2 - c2), r2 = std::hypot(e1 - c1, e2 - c2);
+    if (r1 == 0) return error("Zero-radius arc", "arc-invalid");
+    double absErr = std::fabs(r1 - r2), relErr = absErr / r1;
+    double tol = std::max(machine.arcTolerance, inch ? kArcAbsTolInch * 25.4 : kArcAbsTolMM);
+    if (absErr > tol && relErr > kArcRelTolerance) {
+      // rs274's message, in program units.
+      double k = 1 / scale();
+      double p1 = offset(ax.a1), p2 = offset(ax.a2);
+      char buf[512];
+      std::snprintf(buf, sizeof buf,
+                    "Radius to end of arc differs from radius to start: start=(%c%.4f,%c%.4f) "
+                    "center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f abs_err=%.3g "
+                    "rel_err=%.4f%%",
+                    ax.l1, (s1 - p1) * k, ax.l2, (s2 - p2) * k, ax.l1, (c1 - p1) * k, ax.l2,
+                    (c2 - p2) * k, ax.l1, (e1 - p1) * k, ax.l2, (e2 - p2) * k, r1 * k, r2 * k,
+                    absErr * k, relErr * 100);
+      return error(buf, "arc-radius-mismatch");
+    }
+  }
+  int turns = 1;
+  if (c.has(Word::P)) {
+    double p = c.get(Word::P);
+    if (p != std::floor(p)) return error("P value not an integer with G2 or G3", "arc-invalid");
+    if (p < 1) return error("P value should be 1 or greater with G2 or G3", "arc-invalid");
+    if (p > 1e6) return error("P value too large with G2 or G3", "arc-invalid");
+    turns = (int)p;
+  }
+  MotionRecord r = record(RecordKind::Arc);
+  r.end = end;
+  r.center[ax.a1] = c1;
+  r.center[ax.a2] = c2;
+  r.center[ax.d] = start[ax.d];
+  r.turns = cw ? -turns : turns;
+  r.exactStop = st.pathMode == ModeValue::ExactStop;
+  // Path length (for inverse-time feed): swept angle times radius, with the helix.
+  double a0 = std::atan2(s2 - c2, s1 - c1), a1 = std::atan2(e2 - c2, e1 - c1);
+  double sweep = cw ? a0 - a1 : a1 - a0;
+  if (sweep <= 1e-12) sweep += 2 * M_PI;
+  sweep += 2 * M_PI * (turns - 1);
+  double radius = std::hypot(s1 - c1, s2 - c2);
+  r.feed = moveFeed(std::hypot(sweep * radius, end[ax.d] - start[ax.d]));
+  inverseTimeRate(r.feed);
+  st.position = end;
+  emit(r);
+  return true;
+}
+
+bool Executor::Impl::execHome(const MachineCmd &c) {
+  // Rapid through the intermediate point (program coordinates), then the named axes (all when
+  // none is named) to the stored reference position (machine coordinates).
+  if (!moveTo(RecordKind::Rapid, target(c))) return false;
+  const AxisVec &home = c.sub == 2 ? machine.home2 : machine.home1;
+  bool any = c.mask & kAxisMask;
+  AxisVec t = st.position;
+  for (int i = 0; i < kAxes; ++i)
+    if (!any || c.has((Word)i)) t[i] = home[i];
+  return moveTo(RecordKind::Rapid, t);
+}
+
+bool Executor::Impl::execMachineMove(const MachineCmd &c) {
+  AxisVec t = st.position;
+  for (int i = 0; i < kAxes; ++i)
+    if (c.has((Word)i)) t[i] = c.get((Word)i) * axisScale(i);
+  if (c.sub == 1) {
+    if (!checkFeed("G1")) return false;
+    return moveTo(RecordKind::Linear, t);
+  }
+  return moveTo(RecordKind::Rapid, t);
+}
+
+}  // namespace ncc

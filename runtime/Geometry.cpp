@@ -1,0 +1,122 @@
+#include "runtime/Geometry.h"
+
+#include <cmath>
+
+namespace ncc {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kFullCircleChord = 1e-9;  // mm: end this close to start means a full circle
+}  // namespace
+
+PlaneAxes planeAxes(Plane p) {
+  static const PlaneAxes table[] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};  // XY, ZX, YZ
+  return table[(unsigned)p];
+}
+
+ArcGeometry arcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, Plane plane,
+                        int turns) {
+  ArcGeometry g;
+  g.ax = planeAxes(plane);
+  g.cu = center[g.ax.u];
+  g.cv = center[g.ax.v];
+  double su = start[g.ax.u] - g.cu, sv = start[g.ax.v] - g.cv;
+  double eu = end[g.ax.u] - g.cu, ev = end[g.ax.v] - g.cv;
+  g.r0 = std::hypot(su, sv);
+  g.r1 = std::hypot(eu, ev);
+  g.startAngle = std::atan2(sv, su);
+  bool ccw = turns >= 0;
+  double d;
+  if (std::hypot(eu - su, ev - sv) < kFullCircleChord) {
+    d = ccw ? kTwoPi : -kTwoPi;
+  } else {
+    // Angle from the start to the end vector, robust for tiny arcs (no difference of atan2s).
+    d = std::atan2(su * ev - sv * eu, su * eu + sv * ev);
+    if (ccw && d <= 0) d += kTwoPi;
+    if (!ccw && d >= 0) d -= kTwoPi;
+  }
+  int extra = std::abs(turns) > 1 ? std::abs(turns) - 1 : 0;
+  g.sweep = d + (ccw ? 1 : -1) * extra * kTwoPi;
+  g.helix = end[g.ax.n] - start[g.ax.n];
+  double planar = 0.5 * (g.r0 + g.r1) * std::fabs(g.sweep);
+  g.length = std::hypot(planar, g.helix);
+  return g;
+}
+
+ArcGeometry arcGeometry(const MotionRecord &r) {
+  return arcGeometry(r.start, r.end, r.center, r.plane, r.turns);
+}
+
+double linearLength(const AxisVec &a, const AxisVec &b) {
+  double l = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                       (b[2] - a[2]) * (b[2] - a[2]));
+  if (l > 1e-12) return l;
+  return std::sqrt((b[3] - a[3]) * (b[3] - a[3]) + (b[4] - a[4]) * (b[4] - a[4]) +
+                   (b[5] - a[5]) * (b[5] - a[5]));
+}
+
+AxisVec unitDirection(const AxisVec &start, const AxisVec &end, double length) {
+  AxisVec u{};
+  if (length <= 0) return u;
+  for (int i = 0; i < kAxes; ++i) u[i] = (end[i] - start[i]) / length;
+  return u;
+}
+
+AxisVec arcPoint(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, double s) {
+  if (s <= 0) return start;
+  if (s >= 1) return end;
+  AxisVec p;
+  for (int i = 0; i < kAxes; ++i) p[i] = start[i] + (end[i] - start[i]) * s;
+  double a = g.startAngle + g.sweep * s;
+  double r = g.r0 + (g.r1 - g.r0) * s;
+  p[g.ax.u] = g.cu + r * std::cos(a);
+  p[g.ax.v] = g.cv + r * std::sin(a);
+  return p;
+}
+
+Vec3 arcTangent(const ArcGeometry &g, double s) {
+  double a = g.startAngle + g.sweep * s;
+  double r = g.r0 + (g.r1 - g.r0) * s;
+  double c = std::cos(a), sn = std::sin(a);
+  double dr = g.r1 - g.r0;
+  Vec3 t{};
+  t[g.ax.u] = dr * c - r * sn * g.sweep;
+  t[g.ax.v] = dr * sn + r * c * g.sweep;
+  t[g.ax.n] = g.helix;
+  double l = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+  if (l <= 0) return Vec3{};
+  for (double &x : t) x /= l;
+  return t;
+}
+
+double arcCurvature(const ArcGeometry &g) {
+  double rm = 0.5 * (g.r0 + g.r1);
+  if (rm <= 0 || g.sweep == 0) return 0;
+  double c = g.helix / g.sweep;
+  return rm / (rm * rm + c * c);
+}
+
+void arcBounds(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, Vec3 &lo, Vec3 &hi) {
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = std::fmin(start[i], end[i]);
+    hi[i] = std::fmax(start[i], end[i]);
+  }
+  double span = std::fabs(g.sweep);
+  for (int k = 0; k < 4; ++k) {
+    double a = k * (kTwoPi / 4);
+    // Angular distance from the start to this extreme, in the direction of travel.
+    double delta = g.sweep >= 0 ? a - g.startAngle : g.startAngle - a;
+    delta = std::fmod(delta, kTwoPi);
+    if (delta < 0) delta += kTwoPi;
+    if (delta > span) continue;
+    double s = span > 0 ? delta / span : 0;
+    double r = g.r0 + (g.r1 - g.r0) * s;
+    double pu = g.cu + r * std::cos(a), pv = g.cv + r * std::sin(a);
+    lo[g.ax.u] = std::fmin(lo[g.ax.u], pu);
+    hi[g.ax.u] = std::fmax(hi[g.ax.u], pu);
+    lo[g.ax.v] = std::fmin(lo[g.ax.v], pv);
+    hi[g.ax.v] = std::fmax(hi[g.ax.v], pv);
+  }
+}
+
+}  // namespace ncc

@@ -1,0 +1,56 @@
+// Move geometry shared by the planner, the samplers and the plot: lengths, arc sweep, points
+// and tangents along a move. Arcs are circular in their plane (G17 XY, G18 ZX, G19 YZ) with an
+// optional linear (helical) component along the plane normal; rotary axes and any other axis
+// move linearly with the arc parameter. A start/end radius mismatch (within arc_tolerance) is
+// absorbed by letting the radius vary linearly along the sweep (a short spiral).
+#pragma once
+#include "ir/MotionIR.h"
+
+#include <array>
+
+namespace ncc {
+
+using Vec3 = std::array<double, 3>;
+
+// Indices of the plane's first axis, second axis and normal (helix) axis, chosen so that a
+// positive angle is counter-clockwise seen from the positive normal (right-handed):
+// XY -> (X, Y, Z), ZX -> (Z, X, Y), YZ -> (Y, Z, X).
+struct PlaneAxes {
+  int u, v, n;
+};
+PlaneAxes planeAxes(Plane p);
+
+struct ArcGeometry {
+  PlaneAxes ax{0, 1, 2};
+  double cu = 0, cv = 0;       // centre in plane coordinates
+  double r0 = 0, r1 = 0;       // start and end radius
+  double startAngle = 0;       // radians, atan2(v - cv, u - cu) at the start
+  double sweep = 0;            // signed radians, + counter-clockwise, includes full turns
+  double helix = 0;            // travel along the normal axis
+  double length = 0;           // path length in mm (linear axes XYZ)
+};
+
+// Sweep from start/end/centre/turns: turns > 0 counter-clockwise, < 0 clockwise, |turns| - 1
+// extra full turns (0 is read as 1). Start == end gives a full circle.
+ArcGeometry arcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, Plane plane,
+                        int turns);
+ArcGeometry arcGeometry(const MotionRecord &r);
+
+// Length of a straight move: the XYZ distance, or, for a rotary-only move, the rotary distance
+// (degrees) so that feed-rate timing stays meaningful.
+double linearLength(const AxisVec &start, const AxisVec &end);
+
+// Point at parameter s in [0, 1] (fraction of the sweep, which is also the fraction of length).
+AxisVec arcPoint(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, double s);
+// Unit tangent (XYZ) in the direction of travel at parameter s.
+Vec3 arcTangent(const ArcGeometry &g, double s);
+// Curvature (1/mm) of the helix, using the mean radius: r / (r^2 + c^2), c = helix / sweep.
+double arcCurvature(const ArcGeometry &g);
+// Axis-aligned bounds of the arc (XYZ), exact for circular arcs (quadrant crossings included).
+void arcBounds(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, Vec3 &lo, Vec3 &hi);
+
+// Unit direction of a straight move in the 6-axis space the planner limits (XYZ in mm, rotary
+// in degrees, scaled by the move length); zero for zero-length moves.
+AxisVec unitDirection(const AxisVec &start, const AxisVec &end, double length);
+
+}  // namespace ncc

@@ -1,0 +1,114 @@
+// Trajectory core v1: turns the Motion IR stream into a time-parameterised path.
+//
+// Each move gets a speed cap (programmed feed or rapid_feed, per-axis max_velocity projected on
+// the move direction, centripetal limits on arcs) and path acceleration/jerk limits (per-axis
+// limits projected on the direction). Junctions between moves get a speed limit from a
+// junction-deviation model with path_tolerance as the corner budget; exact stop and stopping
+// records force zero. A streaming look-ahead window (Machine::lookahead moves) runs the
+// backward pass incrementally and the forward pass as moves leave the window, so memory is
+// bounded by the window. Velocity changes are jerk-limited S-curves that start and end at zero
+// acceleration within each move (see docs/PLANNER.md for the approximations).
+#pragma once
+#include "ir/MotionIR.h"
+#include "runtime/Geometry.h"
+#include "runtime/Machine.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace ncc {
+
+// Velocity over one move: S-curve change v0 -> vp, cruise at vp, S-curve change vp -> v1.
+// Speeds in mm/s (deg/s for rotary-only moves), jerk = +inf means a trapezoid.
+struct VelocityProfile {
+  double length = 0;
+  double v0 = 0, vp = 0, v1 = 0;
+  double accel = 0, jerk = 0;
+  double tAcc = 0, tCruise = 0, tDec = 0;
+  double duration() const { return tAcc + tCruise + tDec; }
+  // Distance travelled and speed at time t (clamped to [0, duration]).
+  void at(double t, double &s, double &v) const;
+};
+
+// Closed forms of a symmetric jerk-limited velocity change (|dv| >= a^2/j reaches a, otherwise a
+// triangular acceleration); exposed for the tests.
+double velocityChangeTime(double dv, double accel, double jerk);
+double velocityChangeDistance(double v0, double v1, double accel, double jerk);
+// Highest speed reachable from v (accelerating, or by symmetry the highest entry speed that can
+// still slow down to v) within distance len.
+double maxReachableSpeed(double v, double len, double accel, double jerk);
+// Profile for a move of length len entered at v0 and left at v1 (both must be <= vmax and
+// reachable from each other within len; the planner guarantees it).
+VelocityProfile planProfile(double len, double v0, double v1, double vmax, double accel, double jerk);
+
+// One planned move (or dwell), handed to listeners in time order.
+struct PlannedSegment {
+  MotionRecord record;    // Rapid, Linear, Arc or Dwell
+  ArcGeometry arc;        // valid for arcs
+  uint64_t index = 0;     // 0-based count of segments
+  double t0 = 0;          // start time, s
+  double vmax = 0;        // speed cap of the move, mm/s
+  VelocityProfile profile;
+  double duration() const { return profile.duration(); }
+  double length() const { return profile.length; }
+  // Machine position at time t after the segment start.
+  AxisVec positionAt(double t) const;
+};
+
+class PlanListener {
+public:
+  virtual ~PlanListener() = default;
+  virtual void segment(const PlannedSegment &s) = 0;
+  virtual void finished(double totalTime) {}
+};
+
+struct PlannerStats {
+  uint64_t moves = 0, dwells = 0, stops = 0;
+  uint64_t unfedMoves = 0;        // feed moves with no feed (planned at max_feed)
+  double totalTime = 0;           // s
+  double rapidTime = 0, feedTime = 0, dwellTime = 0;
+  size_t maxQueued = 0;           // high-water mark of the look-ahead window
+};
+
+class Planner : public MotionSink {
+public:
+  explicit Planner(const Machine &machine);
+  void addListener(PlanListener *l) { listeners_.push_back(l); }
+  void record(const MotionRecord &r) override;
+  // Plans the rest of the window (stopping at the end) and tells listeners the total time.
+  bool finish(Diagnostics &diags) override;
+  void flush();
+  double totalTime() const { return stats_.totalTime; }
+  const PlannerStats &stats() const { return stats_; }
+
+private:
+  struct Pending {
+    PlannedSegment seg;
+    double length = 0, vmax = 0, accel = 0, jerk = 0;
+    AxisVec tIn{}, tOut{};  // tangents (6 axes, per mm of length) at the start and the end
+    AxisVec nIn{}, nOut{};  // the same normalised, for corner angles
+    double vJunction = 0;   // entry speed limit from the junction with the previous move
+    double vBack = 0;       // backward pass: highest entry speed that can still stop in time
+    bool stopAfter = false;
+  };
+  void push(const MotionRecord &r);
+  void limits(Pending &p) const;
+  double junctionSpeed(const Pending &prev, const Pending &next) const;
+  void emitFront();
+  void emit(PlannedSegment &s);
+  Pending &at(size_t i) { return ring_[(head_ + i) & mask_]; }
+
+  const Machine &machine_;
+  std::vector<PlanListener *> listeners_;
+  std::vector<Pending> ring_;
+  size_t head_ = 0, count_ = 0, mask_ = 0;  // ring size is a power of two
+  double entry_ = 0;          // committed entry speed of the front move
+  int pathMode_ = 2;          // 0 exact path, 1 exact stop, 2 continuous
+  double tolerance_;          // corner deviation budget, mm
+  uint64_t nextIndex_ = 0;
+  AxisVec lastPos_{};         // end of the last move, where dwells happen
+  bool finished_ = false;
+  PlannerStats stats_;
+};
+
+}  // namespace ncc

@@ -1,0 +1,104 @@
+// JSONL trace of the Motion IR: one object per record, full precision.
+#include "runtime/Sinks.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace ncc {
+
+namespace {
+
+void num(std::string &s, double d) {
+  if (std::isfinite(d)) fmt::format_to(std::back_inserter(s), "{}", d);
+  else s += "null";
+}
+
+void vec(std::string &s, const double *v, int n) {
+  s += '[';
+  for (int i = 0; i < n; ++i) {
+    if (i) s += ',';
+    num(s, v[i]);
+  }
+  s += ']';
+}
+
+void str(std::string &s, const std::string &t) {
+  s += '"';
+  for (unsigned char c : t) {
+    switch (c) {
+    case '"': s += "\\\""; break;
+    case '\\': s += "\\\\"; break;
+    case '\n': s += "\\n"; break;
+    case '\r': s += "\\r"; break;
+    case '\t': s += "\\t"; break;
+    default:
+      if (c < 0x20) fmt::format_to(std::back_inserter(s), "\\u{:04x}", c);
+      else s += (char)c;
+    }
+  }
+  s += '"';
+}
+
+const char *planeName(Plane p) {
+  static const char *names[] = {"xy", "zx", "yz"};
+  return names[(unsigned)p];
+}
+
+}  // namespace
+
+std::string motionRecordJson(const MotionRecord &r) {
+  std::string s = "{\"kind\":\"";
+  s += recordKindName(r.kind);
+  s += '"';
+  if (r.loc.file) fmt::format_to(std::back_inserter(s), ",\"file\":{}", r.loc.file);
+  fmt::format_to(std::back_inserter(s), ",\"line\":{},\"col\":{}", r.loc.line, r.loc.col);
+  if (r.blockNumber >= 0) fmt::format_to(std::back_inserter(s), ",\"n\":{}", r.blockNumber);
+  switch (r.kind) {
+  case RecordKind::Rapid:
+  case RecordKind::Linear:
+  case RecordKind::Arc:
+    s += ",\"start\":";
+    vec(s, r.start.data(), kAxes);
+    s += ",\"end\":";
+    vec(s, r.end.data(), kAxes);
+    if (r.kind != RecordKind::Rapid) {
+      s += ",\"feed\":";
+      num(s, r.feed);
+    }
+    if (r.kind == RecordKind::Arc) {
+      s += ",\"center\":";
+      vec(s, r.center.data(), 3);
+      fmt::format_to(std::back_inserter(s), ",\"plane\":\"{}\",\"turns\":{}", planeName(r.plane), r.turns);
+    }
+    break;
+  case RecordKind::Comment:
+  case RecordKind::Message:
+    s += ",\"text\":";
+    str(s, r.text);
+    break;
+  default:
+    s += ",\"value\":";
+    num(s, r.value);
+    fmt::format_to(std::back_inserter(s), ",\"ivalue\":{}", r.ivalue);
+    break;
+  }
+  if (r.exactStop) s += ",\"exact_stop\":true";
+  s += '}';
+  return s;
+}
+
+void JsonlTraceWriter::record(const MotionRecord &r) {
+  line_ = motionRecordJson(r);
+  line_ += '\n';
+  std::fwrite(line_.data(), 1, line_.size(), out_);
+}
+
+bool JsonlTraceWriter::finish(Diagnostics &diags) {
+  if (std::fflush(out_) != 0 || std::ferror(out_)) {
+    diags.error(SourceLoc{}, "cannot write the JSONL trace");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc

@@ -1,0 +1,197 @@
+// The ncrt C ABI: storage, command execution and run-time errors for compiled NC programs.
+#include "runtime/ncrt.h"
+
+#include "ir/Arith.h"
+#include "ir/Diagnostics.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstring>
+
+using namespace ncc;
+
+ncrt_ctx::ncrt_ctx(CmdSink &t, Diagnostics &d, const ExecLimits &l)
+    : sink(t), diags(d), limits(l), start(std::chrono::steady_clock::now()) {}
+
+static double unsetValue() {
+  uint64_t bits = NCRT_UNSET_BITS;
+  double d;
+  std::memcpy(&d, &bits, sizeof d);
+  return d;
+}
+
+static bool endsProgram(const MachineCmd &c) {
+  return c.kind == CmdKind::Stop &&
+         (c.sub == (uint8_t)StopKind::End || c.sub == (uint8_t)StopKind::EndRewind);
+}
+
+// One command through the target; the status generated code acts on.
+static int execOne(ncrt_ctx *ctx, const MachineCmd &c) {
+  if (!ctx->sink.exec(c)) return NCRT_ERROR;
+  if (endsProgram(c)) {
+    ctx->ended = true;
+    return NCRT_END;
+  }
+  return NCRT_OK;
+}
+
+// ---------------------------------------------------------------- packed stream
+static void putVarint(uint64_t v, std::string &out) {
+  do {
+    uint8_t b = v & 0x7f;
+    v >>= 7;
+    out.push_back((char)(v ? b | 0x80 : b));
+  } while (v);
+}
+
+static bool getVarint(const uint8_t *&p, const uint8_t *end, uint64_t &v) {
+  v = 0;
+  for (unsigned shift = 0; p < end && shift < 64; shift += 7) {
+    uint8_t b = *p++;
+    v |= (uint64_t)(b & 0x7f) << shift;
+    if (!(b & 0x80)) return true;
+  }
+  return false;
+}
+
+namespace ncc::ncrt {
+void packCmd(const MachineCmd &c, const char *text, std::string &out) {
+  out.push_back((char)c.kind);
+  out.push_back((char)c.sub);
+  out.push_back((char)c.sub2);
+  out.push_back((char)c.nmodes);
+  for (unsigned i = 0; i < c.nmodes; ++i) out.push_back((char)c.modes[i]);
+  putVarint(c.mask, out);
+  if (c.kind == CmdKind::Block) putVarint((uint64_t)(c.blockNumber + 1), out);
+  putVarint(c.loc.file, out);
+  putVarint(c.loc.line, out);
+  putVarint(c.loc.col, out);
+  for (int w = 0; w < kWords; ++w)
+    if (c.mask & (1u << w)) out.append((const char *)&c.w[w], sizeof(double));
+  if (c.kind == CmdKind::Comment || c.kind == CmdKind::Message) {
+    size_t n = text ? std::strlen(text) : 0;
+    putVarint(n, out);
+    out.append(text ? text : "", n);
+    out.push_back('\0');
+  }
+}
+}  // namespace ncc::ncrt
+
+// Decodes one command; false on a malformed stream (a compiler bug, reported as such).
+static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
+  if (end - p < 4) return false;
+  c = MachineCmd();
+  c.kind = (CmdKind)p[0];
+  c.sub = p[1];
+  c.sub2 = p[2];
+  c.nmodes = p[3];
+  p += 4;
+  if (c.kind >= CmdKind::Count || c.nmodes > 6 || end - p < c.nmodes) return false;
+  for (unsigned i = 0; i < c.nmodes; ++i) c.modes[i] = (ModeValue)*p++;
+  uint64_t v;
+  if (!getVarint(p, end, v)) return false;
+  c.mask = (uint32_t)v;
+  if (c.kind == CmdKind::Block) {
+    if (!getVarint(p, end, v)) return false;
+    c.blockNumber = (int64_t)v - 1;
+  }
+  uint64_t f, l, col;
+  if (!getVarint(p, end, f) || !getVarint(p, end, l) || !getVarint(p, end, col)) return false;
+  c.loc = {(uint32_t)f, (uint32_t)l, (uint32_t)col};
+  for (int w = 0; w < kWords; ++w)
+    if (c.mask & (1u << w)) {
+      if (end - p < 8) return false;
+      std::memcpy(&c.w[w], p, sizeof(double));
+      p += 8;
+    }
+  if (c.kind == CmdKind::Comment || c.kind == CmdKind::Message) {
+    if (!getVarint(p, end, v) || (uint64_t)(end - p) < v + 1) return false;
+    c.text = (const char *)p;
+    p += v + 1;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------- C ABI
+extern "C" {
+
+ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t namedGlobals, uint32_t qSpaces) {
+  ctx->numbered.assign(NCRT_NUMBERED, vacantValue());
+  ctx->rparam.assign(NCRT_RPARAMS, vacantValue());
+  ctx->qparam.assign((size_t)NCRT_QPARAMS * qSpaces, vacantValue());
+  ctx->named.assign(namedGlobals, unsetValue());
+  ncrt_storage &s = ctx->storage;
+  s.numbered = ctx->numbered.data();
+  s.rparam = ctx->rparam.data();
+  s.qparam = ctx->qparam.data();
+  s.named = ctx->named.data();
+  s.max_loop = ctx->limits.maxLoopIterations;
+  s.max_depth = ctx->limits.maxCallDepth;
+  s.depth = 0;
+  s.poll = NCRT_POLL_INTERVAL;
+  return &s;
+}
+
+int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd) { return execOne(ctx, *cmd); }
+
+int ncrt_exec_table(ncrt_ctx *ctx, const ncrt_cmd *cmds, uint64_t n) {
+  for (uint64_t i = 0; i < n; ++i)
+    if (int st = execOne(ctx, cmds[i])) return st;
+  return NCRT_OK;
+}
+
+int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes) {
+  const uint8_t *p = data, *end = data + nbytes;
+  MachineCmd c;
+  while (p < end) {
+    if (!unpackCmd(p, end, c)) {
+      ctx->diags.error({}, "internal error: malformed packed command table");
+      return NCRT_ERROR;
+    }
+    if (int st = execOne(ctx, c)) return st;
+  }
+  return NCRT_OK;
+}
+
+void ncrt_error(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const char *msg) {
+  ctx->diags.error({file, line, col}, msg);
+}
+
+void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint32_t kind,
+                const char *name, double value) {
+  std::string msg;
+  const ExecLimits &l = ctx->limits;
+  switch (kind) {
+  case NCRT_FAULT_LOOP_LIMIT:
+    msg = fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)", l.maxLoopIterations);
+    break;
+  case NCRT_FAULT_BACKJUMP:
+    msg = fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)", l.maxLoopIterations);
+    break;
+  case NCRT_FAULT_CALL_DEPTH:
+    msg = fmt::format("call depth limit {} exceeded (limit --max-call-depth)", l.maxCallDepth);
+    break;
+  case NCRT_FAULT_UNSET_VAR: msg = fmt::format("variable '{}' used before assignment", name); break;
+  case NCRT_FAULT_NUMBERED: msg = fmt::format("parameter number #{} out of range", std::lround(value)); break;
+  case NCRT_FAULT_RPARAM: msg = fmt::format("R parameter index {} out of range", std::lround(value)); break;
+  case NCRT_FAULT_QPARAM: msg = fmt::format("Q parameter index {} out of range", std::lround(value)); break;
+  default: msg = "internal error: unknown run-time fault"; break;
+  }
+  ctx->diags.error({file, line, col}, msg);
+}
+
+int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  ctx->storage.poll = NCRT_POLL_INTERVAL;
+  double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx->start).count();
+  if (ctx->limits.maxSeconds <= 0 || secs <= ctx->limits.maxSeconds) return NCRT_OK;
+  ctx->diags.error({file, line, col},
+                   fmt::format("run time limit of {} s exceeded (limit --max-seconds)", ctx->limits.maxSeconds));
+  return NCRT_ERROR;
+}
+
+double ncrt_mod(double a, double b) { return arithMod(a, b); }
+double ncrt_idiv(double a, double b) { return arithIDiv(a, b); }
+double ncrt_pow(double a, double b) { return arithPow(a, b); }
+
+}  // extern "C"

@@ -1,0 +1,114 @@
+/* ncrt: the C ABI between compiled NC programs (JIT or AOT object files from backends/jit) and
+ * the runtime. Generated code owns no state of its own: variable storage, limits and the command
+ * target live in an ncrt_ctx, which wraps a command target (normally the Executor) and the
+ * Diagnostics of the run.
+ *
+ * Calling convention of generated code (see docs/JIT.md):
+ *   int ncc_program_main(ncrt_ctx *ctx);   returns NCRT_OK, NCRT_END or NCRT_ERROR
+ * Every ncrt_exec* returns NCRT_OK, NCRT_END (a stop kind=end|end_rewind was executed: the
+ * program ends) or NCRT_ERROR (already reported); generated code returns the status at once.
+ */
+#ifndef NCC_RUNTIME_NCRT_H
+#define NCC_RUNTIME_NCRT_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+#include "ir/MachineCmd.h"
+#include "passes/Eval.h"  // CmdSink: where commands go (the Executor, or a recorder in tests)
+#include "passes/ExecLimits.h"
+
+#include <chrono>
+#include <string>
+#include <vector>
+extern "C" {
+typedef ncc::MachineCmd ncrt_cmd;
+#else
+typedef struct ncrt_cmd ncrt_cmd; /* ncc::MachineCmd, ir/MachineCmd.h */
+#endif
+
+typedef struct ncrt_ctx ncrt_ctx;
+
+enum { NCRT_OK = 0, NCRT_END = 1, NCRT_ERROR = 2 };
+
+/* Run-time faults whose message the runtime formats (it knows the limits); the texts are the
+ * eval engine's (passes/Eval.cpp), so both engines report the same errors. */
+enum {
+  NCRT_FAULT_LOOP_LIMIT = 1,    /* loop did not terminate after N iterations (...) */
+  NCRT_FAULT_BACKJUMP = 2,      /* backward jump repeated more than N times (...) */
+  NCRT_FAULT_CALL_DEPTH = 3,    /* call depth limit N exceeded (...) */
+  NCRT_FAULT_UNSET_VAR = 4,     /* variable 'name' used before assignment */
+  NCRT_FAULT_NUMBERED = 5,      /* parameter number #lround(value) out of range */
+  NCRT_FAULT_RPARAM = 6,        /* R parameter index lround(value) out of range */
+  NCRT_FAULT_QPARAM = 7         /* Q parameter index lround(value) out of range */
+};
+
+/* Variable storage and limits, laid out for direct access from generated code. Every numbered
+ * and parameter slot starts vacant; named globals start unset (NCRT_UNSET_BITS). */
+typedef struct ncrt_storage {
+  double *numbered;   /* #0 .. #(NCRT_NUMBERED-1); #1..#33 are never used here (frame locals) */
+  double *rparam;     /* R0 .. R(NCRT_RPARAMS-1) */
+  double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, one per Q prefix */
+  double *named;      /* named globals (%%name) */
+  uint64_t max_loop;  /* ExecLimits::maxLoopIterations */
+  uint32_t max_depth; /* ExecLimits::maxCallDepth */
+  uint32_t depth;     /* current call depth; main = 0 */
+  int64_t poll;       /* loop iterations left until the next run-time check */
+} ncrt_storage;
+
+/* Bit pattern of an unset named variable (a NaN distinct from vacant, never produced by
+ * arithmetic). */
+#define NCRT_UNSET_BITS 0x7ff8dead0000f00dull
+/* Array sizes (the eval engine's). */
+#define NCRT_NUMBERED 100000
+#define NCRT_RPARAMS 1000
+#define NCRT_QPARAMS 2000
+/* Loop iterations between two run-time limit checks. */
+#define NCRT_POLL_INTERVAL 65536
+
+/* Allocates the storage for a program with the given number of named globals and Q prefixes. */
+ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t named_globals, uint32_t q_spaces);
+/* Executes one command. */
+int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd);
+/* Executes n commands of a constant table. */
+int ncrt_exec_table(ncrt_ctx *ctx, const ncrt_cmd *cmds, uint64_t n);
+/* Executes a packed command stream (ncc::ncrt::packCmd encoding) of nbytes bytes. */
+int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes);
+/* Reports a run-time error at a source location. */
+void ncrt_error(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const char *msg);
+/* Reports one of the NCRT_FAULT_* errors; name/value complete the message. */
+void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint32_t kind,
+                const char *name, double value);
+/* Called when storage->poll runs out: resets it and checks the run-time limit. Returns
+ * NCRT_ERROR (reported at the given loc) when the limit is exceeded, else NCRT_OK. */
+int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
+/* Arithmetic of ir/Arith.h on num() operands (the divisor is checked by the caller). */
+double ncrt_mod(double a, double b);
+double ncrt_idiv(double a, double b);
+double ncrt_pow(double a, double b);
+
+#ifdef __cplusplus
+}  // extern "C"
+
+namespace ncc {
+namespace ncrt {
+// Appends one command to a packed stream: kind sub sub2 nmodes modes[nmodes] (bytes), then
+// LEB128 mask, blockNumber+1 (Block only), file, line, col, then the doubles of the mask words
+// (8 bytes each, in word order), then for Comment/Message LEB128 length + text + NUL.
+void packCmd(const MachineCmd &cmd, const char *text, std::string &out);
+}  // namespace ncrt
+}  // namespace ncc
+
+struct ncrt_ctx {
+  ncrt_ctx(ncc::CmdSink &sink, ncc::Diagnostics &diags, const ncc::ExecLimits &limits);
+  ncc::CmdSink &sink;
+  ncc::Diagnostics &diags;
+  ncc::ExecLimits limits;
+  std::chrono::steady_clock::time_point start;
+  ncrt_storage storage{};
+  std::vector<double> numbered, rparam, qparam, named;
+  bool ended = false;  // a stop kind=end|end_rewind was executed
+};
+#endif
+
+#endif /* NCC_RUNTIME_NCRT_H */

@@ -1,0 +1,564 @@
+// Canonical trace tests: the oracle programs of test/lit/oracle replayed through a minimal block
+// reader (this file) and the executor, compared with rs274's recorded traces; writer format; canon-diff.
+#include "runtime/CanonDiff.h"
+#include "runtime/CanonTrace.h"
+#include "runtime/Executor.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace ncc;
+
+namespace {
+
+std::string oracleDir() {
+  return (std::filesystem::path(__FILE__).parent_path() / ".." / "lit" / "oracle").lexically_normal().string();
+}
+
+std::string readFile(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Tools of test/lit/oracle/Inputs/tools.txt (T<n> length L radius R), the source record.sh uses.
+std::map<int, ToolData> toolsTxt() {
+  std::map<int, ToolData> out;
+  std::istringstream in(readFile(oracleDir() + "/Inputs/tools.txt"));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::string t, key;
+    double v;
+    ls >> t;
+    ToolData td;
+    while (ls >> key >> v) (key == "length" ? td.length : td.radius) = v;
+    out[std::stoi(t.substr(1))] = td;
+  }
+  return out;
+}
+
+// The oracle machine (Inputs/oracle.machine) through the real machine-description parser.
+Machine oracleMachine() {
+  Machine m;
+  std::string err;
+  EXPECT_TRUE(Machine::load(oracleDir() + "/Inputs/oracle.machine", m, err)) << err;
+  return m;
+}
+
+TEST(OracleMachine, ToolsMatchToolsTxt) {
+  Machine m = oracleMachine();
+  auto tools = toolsTxt();
+  ASSERT_EQ(tools.size(), 3u);
+  ASSERT_EQ(m.tools.size(), tools.size());
+  for (auto &[n, td] : tools) {
+    ASSERT_TRUE(m.tools.count(n)) << "T" << n;
+    EXPECT_DOUBLE_EQ(m.tools.at(n).length, td.length) << "T" << n;
+    EXPECT_DOUBLE_EQ(m.tools.at(n).radius, td.radius) << "T" << n;
+  }
+  for (int i = 0; i < kAxes; ++i) {
+    EXPECT_EQ(m.home1[i], 0);
+    EXPECT_EQ(m.home2[i], 0);
+    EXPECT_EQ(m.workOffsets[0][i], 0);
+  }
+}
+
+// --- a minimal reader of the oracle programs (plain ISO blocks, no expressions) -------------
+// It emits the commands of each block in rs274's execution order, the way a front end does.
+struct Block {
+  std::multimap<char, double> words;
+  std::vector<std::string> comments;
+  int64_t n = -1;
+  bool hasG(double g) const {
+    auto r = words.equal_range('G');
+    for (auto it = r.first; it != r.second; ++it)
+      if (std::fabs(it->second - g) < 1e-6) return true;
+    return false;
+  }
+  bool hasM(int m) const {
+    auto r = words.equal_range('M');
+    for (auto it = r.first; it != r.second; ++it)
+      if ((int)it->second == m) return true;
+    return false;
+  }
+  bool has(char c) const { return words.count(c) > 0; }
+  double get(char c) const { return words.find(c)->second; }
+};
+
+Block readBlock(const std::string &line) {
+  Block b;
+  size_t i = 0;
+  while (i < line.size()) {
+    char c = line[i];
+    if (c == '(') {
+      size_t e = line.find(')', i);
+      b.comments.push_back(line.substr(i + 1, e - i - 1));
+      i = e + 1;
+    } else if (isalpha((unsigned char)c)) {
+      char L = (char)toupper(c);
+      size_t used = 0;
+      double v = std::stod(line.substr(i + 1), &used);
+      if (L == 'N')
+        b.n = (int64_t)v;
+      else
+        b.words.insert({L, v});
+      i += 1 + used;
+    } else {
+      ++i;
+    }
+  }
+  return b;
+}
+
+struct ModeCode {
+  double g;
+  ModeValue v;
+};
+const ModeCode kModes[] = {
+    {17, ModeValue::XY},          {18, ModeValue::ZX},           {19, ModeValue::YZ},
+    {20, ModeValue::Inch},        {21, ModeValue::MM},           {90, ModeValue::Absolute},
+    {91, ModeValue::Incremental}, {90.1, ModeValue::ArcAbsolute}, {91.1, ModeValue::ArcIncremental},
+    {93, ModeValue::InverseTime}, {94, ModeValue::PerMinute},    {98, ModeValue::RetractInitial},
+    {99, ModeValue::RetractR},    {61, ModeValue::ExactPath},    {64, ModeValue::Continuous},
+    {0, ModeValue::Rapid},        {1, ModeValue::Linear},        {2, ModeValue::ArcCW},
+    {3, ModeValue::ArcCCW},       {80, ModeValue::CycleOff},     {81, ModeValue::Drill},
+    {82, ModeValue::DrillDwell},  {83, ModeValue::Peck},         {73, ModeValue::PeckChipBreak},
+    {84, ModeValue::Tap},         {85, ModeValue::BoreFeed},     {86, ModeValue::BoreStop},
+    {89, ModeValue::BoreDwell},
+};
+
+std::vector<MachineCmd> blockCmds(const Block &b, std::deque<std::string> &pool) {
+  std::vector<MachineCmd> out;
+  auto cmd = [&](CmdKind k) -> MachineCmd & {
+    out.emplace_back();
+    out.back().kind = k;
+    return out.back();
+  };
+  auto copyWords = [&](MachineCmd &c, const char *letters) {
+    for (const char *p = letters; *p; ++p)
+      if (b.has(*p)) {
+        Word w;
+        wordFromLetter(*p, w);
+        c.set(w, b.get(*p));
+      }
+  };
+  cmd(CmdKind::Block).blockNumber = b.n;
+  for (auto &t : b.comments) {
+    bool msg = t.compare(0, 4, "MSG,") == 0;
+    pool.push_back(msg ? t.substr(4) : t);
+    cmd(msg ? CmdKind::Message : CmdKind::Comment).text = pool.back().c_str();
+  }
+  if (b.has('F')) cmd(CmdKind::Feed).set(Word::F, b.get('F'));
+  if (b.has('S')) cmd(CmdKind::Speed).set(Word::S, b.get('S'));
+  if (b.has('T')) cmd(CmdKind::ToolSelect).set(Word::T, b.get('T'));
+  if (b.hasM(6)) cmd(CmdKind::ToolChange);
+  for (int m = 3; m <= 5; ++m)
+    if (b.hasM(m)) cmd(CmdKind::Spindle).sub = m == 5 ? 0 : m == 3 ? 1 : 2;
+  if (b.hasM(7)) cmd(CmdKind::Coolant) = [] { MachineCmd c; c.kind = CmdKind::Coolant; c.sub = 2; c.sub2 = 2; return c; }();
+  if (b.hasM(8)) cmd(CmdKind::Coolant) = [] { MachineCmd c; c.kind = CmdKind::Coolant; c.sub = 1; c.sub2 = 1; return c; }();
+  if (b.hasM(9)) cmd(CmdKind::Coolant).sub2 = 3;
+  if (b.hasG(4)) cmd(CmdKind::Dwell).set(Word::P, b.get('P'));
+  MachineCmd modes;
+  modes.kind = CmdKind::Mode;
+  bool motionCode = false;
+  for (auto &mc : kModes)
+    if (b.hasG(mc.g)) {
+      modes.modes[modes.nmodes++] = mc.v;
+      if (modeValueInfo(mc.v).group == ModeGroup::Motion) motionCode = true;
+    }
+  if (b.hasG(64) && b.has('P')) modes.set(Word::P, b.get('P'));
+  if (modes.nmodes) out.push_back(modes);
+  if (b.hasG(40)) cmd(CmdKind::CutterComp).sub = 0;
+  if (b.hasG(41) || b.hasG(42)) {
+    MachineCmd &c = cmd(CmdKind::CutterComp);
+    c.sub = b.hasG(41) ? 1 : 2;
+    copyWords(c, "D");
+  }
+  if (b.hasG(43)) copyWords(cmd(CmdKind::ToolLength), "H");
+  if (b.hasG(49)) cmd(CmdKind::ToolLength).set(Word::H, 0);
+  for (int g = 54; g <= 59; ++g)
+    if (b.hasG(g)) cmd(CmdKind::WorkOffset).sub = (uint8_t)(g - 53);
+  bool consumed = false;
+  if (b.hasG(10)) {
+    MachineCmd &c = cmd(CmdKind::SetOffset);
+    c.sub = (uint8_t)(b.get('L') == 20 ? SetOffsetKind::G10L20 : SetOffsetKind::G10L2);
+    copyWords(c, "XYZABCP");
+    consumed = true;
+  } else if (b.hasG(92.1)) {
+    cmd(CmdKind::SetOffset).sub = (uint8_t)SetOffsetKind::G92Cancel;
+  } else if (b.hasG(92)) {
+    MachineCmd &c = cmd(CmdKind::SetOffset);
+    c.sub = (uint8_t)SetOffsetKind::G92;
+    copyWords(c, "XYZABC");
+    consumed = true;
+  } else if (b.hasG(28) || b.hasG(30)) {
+    MachineCmd &c = cmd(CmdKind::Home);
+    c.sub = b.hasG(28) ? 1 : 2;
+    copyWords(c, "XYZABC");
+    consumed = true;
+  } else if (b.hasG(53)) {
+    MachineCmd &c = cmd(CmdKind::MachineMove);
+    c.sub = b.hasG(1) ? 1 : 0;
+    copyWords(c, "XYZABC");
+    consumed = true;
+  }
+  bool axes = b.has('X') || b.has('Y') || b.has('Z') || b.has('A') || b.has('B') || b.has('C');
+  bool arcWords = b.has('I') || b.has('J') || b.has('K') || b.has('R');
+  if (!consumed && (axes || (motionCode && arcWords))) copyWords(cmd(CmdKind::Move), "XYZABCIJKRPQL");
+  if (b.hasM(0)) cmd(CmdKind::Stop).sub = (uint8_t)StopKind::Program;
+  if (b.hasM(1)) cmd(CmdKind::Stop).sub = (uint8_t)StopKind::Optional;
+  if (b.hasM(2)) cmd(CmdKind::Stop).sub = (uint8_t)StopKind::End;
+  if (b.hasM(30)) cmd(CmdKind::Stop).sub = (uint8_t)StopKind::EndRewind;
+  return out;
+}
+
+// Runs a program through the executor into a canonical trace (text).
+std::string runToCanon(const std::string &src, const Machine &m, Diagnostics &diags) {
+  std::FILE *f = std::tmpfile();
+  {
+    CanonTraceWriter w(f);
+    Executor ex(m, w, diags);
+    std::deque<std::string> pool;
+    std::istringstream in(src);
+    std::string line;
+    bool ok = true;
+    while (ok && std::getline(in, line))
+      for (auto &c : blockCmds(readBlock(line), pool))
+        if (!(ok = ex.exec(c))) break;
+    ex.finish();
+    w.finish(diags);
+  }
+  std::rewind(f);
+  std::string text;
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  std::fclose(f);
+  return text;
+}
+
+class OracleTest : public ::testing::TestWithParam<const char *> {};
+
+TEST_P(OracleTest, MatchesRs274AtMachineLevel) {
+  std::string name = GetParam();
+  std::string src = readFile(oracleDir() + "/" + name + ".ngc");
+  std::string expected = readFile(oracleDir() + "/Inputs/" + name + ".rs274");
+  ASSERT_FALSE(src.empty());
+  ASSERT_FALSE(expected.empty());
+  SourceManager sm;
+  Diagnostics diags(sm);
+  diags.setCollect(true);
+  std::string ours = runToCanon(src, oracleMachine(), diags);
+  if (const char *dump = std::getenv("NCC_ORACLE_DUMP"))  // debugging: keep ncc's traces
+    std::ofstream(std::string(dump) + "/" + name + ".ncc") << ours;
+  EXPECT_EQ(diags.errorCount(), 0u);
+  std::string report;
+  bool same = canonDiff(expected, ours, CanonDiffOptions(), report);
+  EXPECT_TRUE(same) << report << "\n--- ncc trace ---\n" << ours;
+}
+
+INSTANTIATE_TEST_SUITE_P(Oracle, OracleTest,
+                         ::testing::Values("motion_basic", "arcs_planes", "incremental", "units", "offsets",
+                                           "tool_length", "cycles_drill", "cycles_peck", "cycles_bore",
+                                           "machine_misc", "cycles_levels", "cycles_inch", "cycles_g99",
+                                           "home_offsets", "cycles_mixed", "modes_misc", "inch_offsets", "home_axes"));
+
+TEST(OracleTest, EveryProgramIsListed) {
+  size_t n = 0;
+  for (auto &e : std::filesystem::directory_iterator(oracleDir())) n += e.path().extension() == ".ngc";
+  EXPECT_EQ(n, 18u);  // keep in step with the list above
+}
+
+}  // namespace
+
+// --- trace writer ---------------------------------------------------------------------------
+
+namespace {
+
+std::string writeTrace(const std::vector<MotionRecord> &recs) {
+  std::FILE *f = std::tmpfile();
+  {
+    CanonTraceWriter w(f);
+    for (auto &r : recs) w.record(r);
+    SourceManager sm;
+    Diagnostics d(sm);
+    w.finish(d);
+  }
+  std::rewind(f);
+  std::string text;
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) text.append(buf, n);
+  std::fclose(f);
+  return text;
+}
+
+MotionRecord rec(RecordKind k, int64_t n = -1) {
+  MotionRecord r;
+  r.kind = k;
+  r.blockNumber = n;
+  return r;
+}
+
+TEST(CanonTrace, PreambleNColumnAndNumbers) {
+  MotionRecord a = rec(RecordKind::Rapid, 10);
+  a.end = {1, -0.00001, 2.5, 0, 0, 0};
+  MotionRecord b = rec(RecordKind::Linear, 123456);
+  b.end = {1.23456, 0, 0, 0, 0, 0};
+  MotionRecord c = rec(RecordKind::FeedRate);
+  c.value = 250;
+  std::string t = writeTrace({a, c, b});
+  EXPECT_EQ(t,
+            "    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+            "    2 N..... SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+            "    3 N..... SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+            "    4 N..... SET_XY_ROTATION(0.0000)\n"
+            "    5 N..... SET_FEED_REFERENCE(CANON_XYZ)\n"
+            "    6 N..... ON_RESET()\n"
+            "    7 N10    STRAIGHT_TRAVERSE(1.0000, -0.0000, 2.5000, 0.0000, 0.0000, 0.0000)\n"
+            "    8 N..... SET_FEED_RATE(250.0000)\n"
+            "    9 N123456STRAIGHT_FEED(1.2346, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+            "   10 N..... ON_RESET()\n"
+            "   11 N..... ON_RESET()\n");
+}
+
+TEST(CanonTrace, ArcArgumentOrderPerPlane) {
+  MotionRecord a = rec(RecordKind::Arc);
+  a.plane = Plane::ZX;
+  a.end = {10, 5, 20, 0, 0, 0};
+  a.center = {1, 2, 3};
+  a.turns = -1;
+  MotionRecord b = a;
+  b.plane = Plane::YZ;
+  b.turns = 2;
+  std::string t = writeTrace({a, b});
+  EXPECT_NE(t.find("ARC_FEED(20.0000, 10.0000, 3.0000, 1.0000, -1, 5.0000, 0.0000, 0.0000, 0.0000)"), std::string::npos) << t;
+  EXPECT_NE(t.find("ARC_FEED(5.0000, 20.0000, 2.0000, 3.0000, 2, 10.0000, 0.0000, 0.0000, 0.0000)"), std::string::npos) << t;
+}
+
+TEST(CanonTrace, MachineCommandsAndEpilogue) {
+  MotionRecord s = rec(RecordKind::SpindleSpeed);
+  s.value = 1200;
+  MotionRecord fl = rec(RecordKind::CoolantFlood);
+  fl.ivalue = 1;
+  MotionRecord d = rec(RecordKind::Dwell);
+  d.value = 1.5;
+  MotionRecord cm = rec(RecordKind::Comment);
+  cm.text = "hello";
+  MotionRecord pl = rec(RecordKind::Plane);
+  pl.ivalue = (int)Plane::ZX;
+  MotionRecord end = rec(RecordKind::ProgramEnd, 50);
+  end.ivalue = 30;
+  std::string t = writeTrace({cm, s, rec(RecordKind::SpindleCW), fl, d, pl, end});
+  const char *want =
+      "    7 N..... COMMENT(\"hello\")\n"
+      "    8 N..... SET_SPINDLE_SPEED(0, 1200.0000)\n"
+      "    9 N..... START_SPINDLE_CLOCKWISE(0)\n"
+      "   10 N..... FLOOD_ON()\n"
+      "   11 N..... DWELL(1.5000)\n"
+      "   12 N..... SELECT_PLANE(CANON_PLANE_XZ)\n"
+      "   13 N50    SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "   14 N50    SET_XY_ROTATION(0.0000)\n"
+      "   15 N50    SELECT_PLANE(CANON_PLANE_XY)\n"
+      "   16 N50    SET_FEED_MODE(0, 0)\n"
+      "   17 N50    SET_FEED_RATE(0.0000)\n"
+      "   18 N50    STOP_SPINDLE_TURNING(0)\n"
+      "   19 N50    SET_SPINDLE_MODE(0 0.0000)\n"
+      "   20 N50    FLOOD_OFF()\n"
+      "   21 N50    PALLET_SHUTTLE()\n"
+      "   22 N50    PROGRAM_END()\n";
+  EXPECT_NE(t.find(want), std::string::npos) << t;
+}
+
+TEST(CanonTrace, MillionLinesQuickly) {
+  std::FILE *f = std::fopen("/dev/null", "w");
+  ASSERT_NE(f, nullptr);
+  auto t0 = std::chrono::steady_clock::now();
+  {
+    CanonTraceWriter w(f);
+    MotionRecord r = rec(RecordKind::Linear, 100);
+    for (int i = 0; i < 1000000; ++i) {
+      r.end = {i * 0.001, -i * 0.002, 1.5, 0, 0, 0};
+      w.record(r);
+    }
+    SourceManager sm;
+    Diagnostics d(sm);
+    EXPECT_TRUE(w.finish(d));
+  }
+  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::fclose(f);
+  RecordProperty("seconds", std::to_string(s));
+  EXPECT_LT(s, 2.0);  // ~0.3 s on the 2-core build machine; generous for shared load
+}
+
+// --- canon-diff -----------------------------------------------------------------------------
+
+const char *kG54 =
+    "    1 N..... USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+    "    2 N..... SET_G5X_OFFSET(1, 25.4000, 50.8000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    3 N..... SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    4 N10    COMMENT(\"interpreter: distance mode changed to absolute\")\n"
+    "    5 N10    STRAIGHT_TRAVERSE(0.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    6 N20    STRAIGHT_FEED(1.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "    7 N30    ARC_FEED(2.0000, 1.0000, 1.0000, 1.0000, 1, 5.0000, 0.0000, 0.0000, 0.0000)\n";
+const char *kMachine =  // the same path printed in machine coordinates, inch for the arc
+    "STRAIGHT_TRAVERSE(25.4000, 50.8000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "STRAIGHT_FEED(26.4000, 50.8000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+    "USE_LENGTH_UNITS(CANON_UNITS_INCHES)\n"
+    "ARC_FEED(1.0787, 2.0394, 1.0394, 2.0394, 1, 0.1969, 0.0000, 0.0000, 0.0000)\n";
+
+TEST(CanonDiff, MachineLevelReplaysOffsetsAndUnits) {
+  std::string report;
+  EXPECT_TRUE(canonDiff(kG54, kMachine, CanonDiffOptions(), report)) << report;
+  EXPECT_EQ(report, "machine level: traces match (3 motion commands)\n");
+}
+
+TEST(CanonDiff, ReportsFirstMismatchWithLines) {
+  std::string b = kG54;
+  b.replace(b.find("FEED(1.0000"), 11, "FEED(1.0100");
+  std::string report;
+  EXPECT_FALSE(canonDiff(kG54, b, CanonDiffOptions(), report));
+  EXPECT_EQ(report,
+            "machine level: motion #2 differs: X differs: 26.400000 vs 26.410000 mm\n"
+            "  A:6:     6 N20    STRAIGHT_FEED(1.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+            "  B:6:     6 N20    STRAIGHT_FEED(1.0100, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n");
+  // One trace shorter.
+  std::string shorter(kG54, std::string(kG54).find("    7 N30"));
+  EXPECT_FALSE(canonDiff(kG54, shorter, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("B ends after 2 motion commands"), std::string::npos) << report;
+  EXPECT_NE(report.find("A:7:"), std::string::npos) << report;
+  // Arc direction.
+  std::string cw = kG54;
+  cw.replace(cw.find(", 1, 5.0000"), 4, ", -1");
+  EXPECT_FALSE(canonDiff(kG54, cw, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("arc turns differ: 1 vs -1"), std::string::npos) << report;
+}
+
+TEST(CanonDiff, RotationAndToolOffset) {
+  const char *rotated =
+      "SET_XY_ROTATION(90.0000)\n"
+      "SET_G5X_OFFSET(1, 10.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "USE_TOOL_LENGTH_OFFSET(0.0000 0.0000 25.4000, 0.0000 0.0000 0.0000, 0.0000 0.0000 0.0000)\n"
+      "STRAIGHT_FEED(1.0000, 0.0000, 1.0000, 0.0000, 0.0000, 0.0000)\n";
+  const char *plain = "STRAIGHT_FEED(10.0000, 1.0000, 26.4000, 0.0000, 0.0000, 0.0000)\n";
+  std::string report;
+  EXPECT_TRUE(canonDiff(rotated, plain, CanonDiffOptions(), report)) << report;
+}
+
+TEST(CanonDiff, ProgramLevelIgnoresColumnsAndInterpreterComments) {
+  std::string a = kG54;
+  std::string b =
+      "USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+      "SET_G5X_OFFSET(1, 25.4000, 50.8000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "    9 N10    STRAIGHT_TRAVERSE(0.00004, -0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+      "STRAIGHT_FEED(1.0000, 0.0000, 5.0000, 0.0000, 0.0000, 0.0000)\n"
+      "ARC_FEED(2.0000, 1.0000, 1.0000, 1.0000, 1, 5.0000, 0.0000, 0.0000, 0.0000)\n";
+  CanonDiffOptions o;
+  o.level = CanonDiffOptions::Level::Program;
+  std::string report;
+  EXPECT_TRUE(canonDiff(a, b, o, report)) << report;
+  // The machine path of kMachine is the same, but not its program text.
+  EXPECT_FALSE(canonDiff(kG54, kMachine, o, report));
+  EXPECT_NE(report.find("line #1 differs"), std::string::npos) << report;
+}
+
+TEST(CanonDiff, RealRs274TraceAgainstItselfAndPerturbed) {
+  std::string t = readFile(oracleDir() + "/Inputs/cycles_peck.rs274");
+  ASSERT_FALSE(t.empty());
+  std::string report;
+  EXPECT_TRUE(canonDiff(t, t, CanonDiffOptions(), report)) << report;
+  std::string p = t;
+  size_t at = p.find("-1.7460");
+  ASSERT_NE(at, std::string::npos);
+  p.replace(at, 7, "-1.7462");
+  EXPECT_FALSE(canonDiff(t, p, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("Z differs: -1.746000 vs -1.746200 mm"), std::string::npos) << report;
+}
+
+TEST(CanonDiff, MillionLinesQuickly) {
+  std::string big;
+  big.reserve(70u << 20);
+  char line[160];
+  for (int i = 0; i < 1000000; ++i) {
+    int n = std::snprintf(line, sizeof line, "%5d N..... STRAIGHT_FEED(%.4f, %.4f, 1.0000, 0.0000, 0.0000, 0.0000)\n",
+                          i + 1, i * 0.001, i * -0.002);
+    big.append(line, (size_t)n);
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  std::string report;
+  EXPECT_TRUE(canonDiff(big, big, CanonDiffOptions(), report));
+  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  RecordProperty("seconds", std::to_string(s));
+  EXPECT_LT(s, 3.0);  // both sides parsed: ~0.6 s here
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CanonTrace, ExecutorToTraceMillionMovesQuickly) {
+  std::FILE *f = std::fopen("/dev/null", "w");
+  ASSERT_NE(f, nullptr);
+  Machine m;
+  SourceManager sm;
+  Diagnostics diags(sm);
+  auto t0 = std::chrono::steady_clock::now();
+  {
+    CanonTraceWriter w(f);
+    Executor ex(m, w, diags);
+    MachineCmd mc;
+    mc.kind = CmdKind::Mode;
+    mc.nmodes = 1;
+    mc.modes[0] = ModeValue::Linear;
+    ex.exec(mc);
+    MachineCmd fc;
+    fc.kind = CmdKind::Feed;
+    fc.set(Word::F, 1000);
+    ex.exec(fc);
+    MachineCmd blk, mv;
+    blk.kind = CmdKind::Block;
+    mv.kind = CmdKind::Move;
+    for (int i = 0; i < 1000000; ++i) {
+      blk.blockNumber = i;
+      mv.set(Word::X, (i % 1000) * 0.01);
+      mv.set(Word::Y, (i % 777) * 0.02);
+      ASSERT_TRUE(ex.exec(blk));
+      ASSERT_TRUE(ex.exec(mv));
+    }
+    EXPECT_TRUE(w.finish(diags));
+  }
+  double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::fclose(f);
+  RecordProperty("seconds", std::to_string(s));
+  EXPECT_LT(s, 3.0);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CanonDiff, OffsetsKeepTheUnitsTheyWereSetIn) {
+  // rs274 does not reprint offsets after USE_LENGTH_UNITS: an inch G54 stays 25.4 mm.
+  const char *a =
+      "USE_LENGTH_UNITS(CANON_UNITS_INCHES)\n"
+      "SET_G5X_OFFSET(1, 1.0000, 0.5000, -0.2000, 0.0000, 0.0000, 0.0000)\n"
+      "USE_LENGTH_UNITS(CANON_UNITS_MM)\n"
+      "STRAIGHT_TRAVERSE(10.0000, 10.0000, 50.8000, 0.0000, 0.0000, 0.0000)\n";
+  const char *b = "STRAIGHT_TRAVERSE(35.4000, 22.7000, 45.7200, 0.0000, 0.0000, 0.0000)\n";
+  std::string report;
+  EXPECT_TRUE(canonDiff(a, b, CanonDiffOptions(), report)) << report;
+}
+
+}  // namespace

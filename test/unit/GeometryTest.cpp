@@ -1,0 +1,127 @@
+#include "runtime/Geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace ncc;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+AxisVec P(double x, double y, double z) { return AxisVec{x, y, z, 0, 0, 0}; }
+}  // namespace
+
+TEST(Geometry, QuarterCircleCcwAndCw) {
+  // G17 G3 from (10,0) to (0,10) around the origin: a quarter circle.
+  ArcGeometry g = arcGeometry(P(10, 0, 0), P(0, 10, 0), {0, 0, 0}, Plane::XY, 1);
+  EXPECT_NEAR(g.sweep, kPi / 2, 1e-12);
+  EXPECT_NEAR(g.length, 10 * kPi / 2, 1e-12);
+  EXPECT_NEAR(arcCurvature(g), 0.1, 1e-12);
+  AxisVec mid = arcPoint(g, P(10, 0, 0), P(0, 10, 0), 0.5);
+  EXPECT_NEAR(mid[0], 10 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(mid[1], 10 / std::sqrt(2.0), 1e-12);
+  Vec3 t0 = arcTangent(g, 0), t1 = arcTangent(g, 1);
+  EXPECT_NEAR(t0[0], 0, 1e-12);
+  EXPECT_NEAR(t0[1], 1, 1e-12);
+  EXPECT_NEAR(t1[0], -1, 1e-12);
+  EXPECT_NEAR(t1[1], 0, 1e-12);
+  // G2 the same way round is the long way: three quarters, clockwise.
+  ArcGeometry c = arcGeometry(P(10, 0, 0), P(0, 10, 0), {0, 0, 0}, Plane::XY, -1);
+  EXPECT_NEAR(c.sweep, -3 * kPi / 2, 1e-12);
+  EXPECT_NEAR(c.length, 10 * 3 * kPi / 2, 1e-12);
+  AxisVec q = arcPoint(c, P(10, 0, 0), P(0, 10, 0), 1.0 / 3);
+  EXPECT_NEAR(q[0], 0, 1e-12);
+  EXPECT_NEAR(q[1], -10, 1e-12);
+}
+
+TEST(Geometry, FullCirclesAndExtraTurns) {
+  ArcGeometry g = arcGeometry(P(5, 0, 0), P(5, 0, 0), {0, 0, 0}, Plane::XY, 1);
+  EXPECT_NEAR(g.sweep, 2 * kPi, 1e-12);
+  EXPECT_NEAR(g.length, 10 * kPi, 1e-12);
+  ArcGeometry cw = arcGeometry(P(5, 0, 0), P(5, 0, 0), {0, 0, 0}, Plane::XY, -1);
+  EXPECT_NEAR(cw.sweep, -2 * kPi, 1e-12);
+  // turns = 3: the partial arc plus two full turns.
+  ArcGeometry t = arcGeometry(P(5, 0, 0), P(0, 5, 0), {0, 0, 0}, Plane::XY, 3);
+  EXPECT_NEAR(t.sweep, kPi / 2 + 4 * kPi, 1e-12);
+  // turns = 0 is read as one counter-clockwise pass.
+  EXPECT_NEAR(arcGeometry(P(5, 0, 0), P(0, 5, 0), {0, 0, 0}, Plane::XY, 0).sweep, kPi / 2, 1e-12);
+}
+
+TEST(Geometry, HelixLengthAndCurvature) {
+  // One full turn of radius 10 rising 5 mm.
+  ArcGeometry g = arcGeometry(P(10, 0, 0), P(10, 0, 5), {0, 0, 0}, Plane::XY, 1);
+  EXPECT_NEAR(g.helix, 5, 1e-12);
+  EXPECT_NEAR(g.length, std::hypot(20 * kPi, 5), 1e-9);
+  double c = 5 / (2 * kPi);
+  EXPECT_NEAR(arcCurvature(g), 10 / (100 + c * c), 1e-12);
+  AxisVec half = arcPoint(g, P(10, 0, 0), P(10, 0, 5), 0.5);
+  EXPECT_NEAR(half[0], -10, 1e-12);
+  EXPECT_NEAR(half[2], 2.5, 1e-12);
+  Vec3 t = arcTangent(g, 0);
+  EXPECT_NEAR(t[2], 5 / g.length, 1e-12);
+}
+
+TEST(Geometry, EachPlaneIsRightHanded) {
+  // G18 (ZX): counter-clockwise seen from +Y turns Z towards X.
+  ArcGeometry zx = arcGeometry(P(0, 0, 10), P(10, 0, 0), {0, 0, 0}, Plane::ZX, 1);
+  EXPECT_NEAR(zx.sweep, kPi / 2, 1e-12);
+  EXPECT_EQ(zx.ax.n, 1);
+  // G19 (YZ): counter-clockwise seen from +X turns Y towards Z.
+  ArcGeometry yz = arcGeometry(P(0, 10, 0), P(0, 0, 10), {0, 0, 0}, Plane::YZ, 1);
+  EXPECT_NEAR(yz.sweep, kPi / 2, 1e-12);
+  EXPECT_EQ(yz.ax.n, 0);
+  AxisVec m = arcPoint(yz, P(0, 10, 0), P(0, 0, 10), 0.5);
+  EXPECT_NEAR(m[1], 10 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(m[2], 10 / std::sqrt(2.0), 1e-12);
+  // Helix along Y in G18.
+  ArcGeometry h = arcGeometry(P(0, 0, 10), P(10, 3, 0), {0, 0, 0}, Plane::ZX, 1);
+  EXPECT_NEAR(h.helix, 3, 1e-12);
+}
+
+TEST(Geometry, TinyArcIsNotAFullCircle) {
+  double a = 1e-6;  // radians
+  AxisVec s = P(100, 0, 0), e = P(100 * std::cos(a), 100 * std::sin(a), 0);
+  ArcGeometry g = arcGeometry(s, e, {0, 0, 0}, Plane::XY, 1);
+  EXPECT_NEAR(g.sweep, a, 1e-15);
+  EXPECT_NEAR(g.length, 100 * a, 1e-12);
+  ArcGeometry cw = arcGeometry(s, e, {0, 0, 0}, Plane::XY, -1);
+  EXPECT_NEAR(cw.sweep, a - 2 * kPi, 1e-12);
+}
+
+TEST(Geometry, RadiusMismatchSpirals) {
+  ArcGeometry g = arcGeometry(P(10, 0, 0), P(-10.002, 0, 0), {0, 0, 0}, Plane::XY, 1);
+  EXPECT_NEAR(g.r0, 10, 1e-12);
+  EXPECT_NEAR(g.r1, 10.002, 1e-12);
+  AxisVec e = arcPoint(g, P(10, 0, 0), P(-10.002, 0, 0), 1);
+  EXPECT_DOUBLE_EQ(e[0], -10.002);
+  AxisVec m = arcPoint(g, P(10, 0, 0), P(-10.002, 0, 0), 0.5);
+  EXPECT_NEAR(m[1], 10.001, 1e-12);
+}
+
+TEST(Geometry, ArcBoundsIncludeQuadrantCrossings) {
+  Vec3 lo, hi;
+  // Quarter from (10,0) ccw to (0,10): no crossing inside, the bounds are the endpoints.
+  ArcGeometry q = arcGeometry(P(10, 0, 0), P(0, 10, 0), {0, 0, 0}, Plane::XY, 1);
+  arcBounds(q, P(10, 0, 0), P(0, 10, 0), lo, hi);
+  EXPECT_NEAR(lo[0], 0, 1e-12);
+  EXPECT_NEAR(hi[1], 10, 1e-12);
+  // Half circle from (0,10) ccw to (0,-10) passes x = -10.
+  ArcGeometry h = arcGeometry(P(0, 10, 0), P(0, -10, 0), {0, 0, 0}, Plane::XY, 1);
+  arcBounds(h, P(0, 10, 0), P(0, -10, 0), lo, hi);
+  EXPECT_NEAR(lo[0], -10, 1e-12);
+  EXPECT_NEAR(hi[0], 0, 1e-12);
+  // Clockwise the same endpoints pass x = +10.
+  ArcGeometry c = arcGeometry(P(0, 10, 0), P(0, -10, 0), {0, 0, 0}, Plane::XY, -1);
+  arcBounds(c, P(0, 10, 0), P(0, -10, 0), lo, hi);
+  EXPECT_NEAR(hi[0], 10, 1e-12);
+  EXPECT_NEAR(lo[0], 0, 1e-12);
+}
+
+TEST(Geometry, LinearLengthFallsBackToRotary) {
+  EXPECT_DOUBLE_EQ(linearLength(P(0, 0, 0), P(3, 4, 0)), 5);
+  AxisVec a{0, 0, 0, 0, 0, 0}, b{0, 0, 0, 90, 0, 0};
+  EXPECT_DOUBLE_EQ(linearLength(a, b), 90);
+  AxisVec u = unitDirection(P(0, 0, 0), P(3, 4, 0), 5);
+  EXPECT_DOUBLE_EQ(u[0], 0.6);
+  EXPECT_DOUBLE_EQ(u[1], 0.8);
+}

@@ -1,0 +1,353 @@
+// Unit tests of the ISO front end: block parser, Macro B expressions, lowering, program
+// structure, streaming, and a bounded fuzz loop (random bytes and mutated programs must give
+// diagnostics, never a crash or a hang).
+// FEATURES: ISO-LEX-01 ISO-LEX-02 ISO-LEX-03 ISO-LEX-04 ISO-LEX-05 ISO-LEX-06 ISO-LEX-09 ISO-MAC-08
+#include "frontend/iso/IsoFrontend.h"
+#include "frontend/iso/Syntax.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <random>
+
+using namespace ncc;
+using namespace ncc::iso;
+
+namespace {
+
+struct Parsed {
+  SourceManager sm;
+  Diagnostics diags{sm};
+  ir::Module module;
+  bool ok = false;
+  std::string text;  // printed IR
+  Parsed(const std::string &src, const char *name = "t.nc", IsoOptions opts = {}) {
+    diags.setCollect(true);
+    uint32_t f = sm.addBuffer(name, src);
+    ok = parseIsoProgram(sm, f, opts, diags, module);
+    text = ir::printModule(module);
+  }
+  std::string firstError() const {
+    for (auto &d : diags.collected())
+      if (d.severity == Severity::Error) return d.message + " [" + d.rule + "]";
+    return {};
+  }
+};
+
+std::string streamText(const std::string &src, size_t chunk, bool &ok, IsoOptions opts = {}) {
+  SourceManager sm;
+  Diagnostics diags(sm);
+  diags.setCollect(true);
+  uint32_t f = sm.addBuffer("t.nc", src);
+  IsoBlockStream s(sm, f, opts, diags);
+  ir::Module m;
+  m.name = "t.nc";
+  m.functions.emplace_back();
+  m.functions[0].name = "main";
+  m.functions[0].loc = {f, 1, 1};
+  ir::Region r;
+  size_t calls = 0;
+  while (s.next(r, chunk)) {
+    ++calls;
+    for (auto &op : r) m.functions[0].body.push_back(std::move(op));
+    r.clear();
+    if (calls > 100000) break;
+  }
+  for (auto &op : r) m.functions[0].body.push_back(std::move(op));
+  ok = !diags.hasErrors();
+  return ir::printModule(m);
+}
+
+}  // namespace
+
+TEST(IsoBlockParser, WordsCommentsAndBlockNumber) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser p(d, Flavour::Fanuc, 0);
+  ParsedBlock b;
+  ASSERT_TRUE(p.parse("  n0010 g1x-1.5 Y.25 (a (nested) c) Z#3 ;tail", 1, 7, b));
+  EXPECT_TRUE(b.content);
+  EXPECT_EQ(b.n, 10);
+  EXPECT_EQ(b.loc.line, 7u);
+  EXPECT_EQ(b.loc.col, 3u);
+  ASSERT_EQ(b.words.size(), 4u);
+  EXPECT_EQ(b.words[0].letter, 'G');
+  EXPECT_EQ(b.words[0].value, 1);
+  EXPECT_EQ(b.words[1].letter, 'X');
+  EXPECT_EQ(b.words[1].value, -1.5);
+  EXPECT_TRUE(b.words[1].hasPoint);
+  EXPECT_EQ(b.words[1].loc.col, 11u);
+  EXPECT_EQ(b.words[2].value, 0.25);
+  ASSERT_TRUE(b.words[3].expr);
+  EXPECT_EQ(ir::printExpr(*b.words[3].expr), "#3");
+  ASSERT_EQ(b.comments.size(), 2u);
+  EXPECT_EQ(b.comments[0].text, "a (nested) c");
+  EXPECT_EQ(b.comments[1].text, "tail");
+  EXPECT_FALSE(d.hasErrors());
+}
+
+TEST(IsoBlockParser, EmptyAndPercentLines) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  BlockParser p(d, Flavour::Fanuc, 0);
+  ParsedBlock b;
+  ASSERT_TRUE(p.parse("   \r", 1, 1, b));
+  EXPECT_FALSE(b.content);
+  ASSERT_TRUE(p.parse(";", 1, 1, b));
+  EXPECT_FALSE(b.content);
+  ASSERT_TRUE(p.parse("%", 1, 1, b));
+  EXPECT_TRUE(b.percent);
+  ASSERT_TRUE(p.parse("O1234 (NAME)", 1, 1, b));
+  EXPECT_EQ(b.programNumber, 1234);
+}
+
+TEST(IsoBlockParser, BlockSkipLevels) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser off(d, Flavour::Fanuc, 0), on3(d, Flavour::Fanuc, 1u << 3);
+  ParsedBlock b;
+  ASSERT_TRUE(off.parse("/3 X1 /2 Y2", 1, 1, b));
+  EXPECT_EQ(b.skip, 3);
+  EXPECT_EQ(b.words.size(), 2u);
+  ASSERT_TRUE(on3.parse("X1 /3 Y2", 1, 1, b));
+  EXPECT_EQ(b.words.size(), 1u);
+  ASSERT_TRUE(on3.parse("/3 X1", 1, 1, b));
+  EXPECT_FALSE(b.content);
+  ASSERT_TRUE(on3.parse("X1 (/3) Y2", 1, 1, b));
+  EXPECT_EQ(b.words.size(), 2u);
+  EXPECT_FALSE(d.hasErrors());
+}
+
+TEST(IsoBlockParser, SyntaxErrorsPointAtTheWord) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser p(d, Flavour::Fanuc, 0);
+  ParsedBlock b;
+  EXPECT_FALSE(p.parse("G1 X", 1, 1, b));
+  EXPECT_FALSE(p.parse("G1 X1 ?", 1, 2, b));
+  EXPECT_FALSE(p.parse("G1 (unclosed", 1, 3, b));
+  EXPECT_FALSE(p.parse("XY10", 1, 4, b));
+  ASSERT_EQ(d.collected().size(), 4u);
+  EXPECT_EQ(d.collected()[1].loc.col, 7u);
+  EXPECT_EQ(d.collected()[1].message, "unexpected character '?'");
+  EXPECT_EQ(d.collected()[2].loc.col, 4u);
+  EXPECT_EQ(d.collected()[3].rule, "unknown-code");
+}
+
+static std::string exprOf(const char *src, Flavour fl = Flavour::Fanuc) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser p(d, fl, 0);
+  ParsedBlock b;
+  std::string line = std::string("#1=") + src;
+  if (!p.parse(line, 1, 1, b) || b.assigns.empty()) return "<error>";
+  return ir::printExpr(*b.assigns[0].value);
+}
+
+TEST(IsoExpr, FanucPrecedence) {
+  EXPECT_EQ(exprOf("1+2*3"), "(add 1 (mul 2 3))");
+  EXPECT_EQ(exprOf("1-2-3"), "(sub (sub 1 2) 3)");
+  EXPECT_EQ(exprOf("#1 AND #2 OR #3"), "(or (and #1 #2) #3)");
+  EXPECT_EQ(exprOf("#1 + 1 GT #2 * 2"), "(gt (add #1 1) (mul #2 2))");
+  EXPECT_EQ(exprOf("7 MOD 3"), "(mod 7 3)");
+  EXPECT_EQ(exprOf("-[#1]"), "(neg #1)");
+  EXPECT_EQ(exprOf("-2"), "-2");
+  EXPECT_EQ(exprOf("#0"), "vacant");
+  EXPECT_EQ(exprOf("ATAN[1]/[2]"), "(ATAN2 1 2)");
+  EXPECT_EQ(exprOf("atan[1]/2"), "(div (ATAN 1) 2)");
+  EXPECT_EQ(exprOf("2**3"), "<error>");  // no power operator in Macro B
+}
+
+TEST(IsoExpr, RS274Precedence) {
+  EXPECT_EQ(exprOf("#1 LT 2 AND #2 GT 3", Flavour::RS274), "(and (lt #1 2) (gt #2 3))");
+  EXPECT_EQ(exprOf("2 ** 3 ** 2", Flavour::RS274), "(pow 2 (pow 3 2))");
+  EXPECT_EQ(exprOf("1 + 2 * 3 MOD 4", Flavour::RS274), "(add 1 (mod (mul 2 3) 4))");
+  EXPECT_EQ(exprOf("#<_Global> + #<lo cal>", Flavour::RS274), "(add %%_global %local)");
+}
+
+TEST(IsoExpr, DeepNestingIsAnErrorNotACrash) {
+  std::string deep(5000, '[');
+  EXPECT_EQ(exprOf(deep.c_str()), "<error>");
+  std::string minus(5000, '-');
+  EXPECT_EQ(exprOf((minus + "1").c_str()), "<error>");
+  std::string vars(5000, '#');
+  EXPECT_EQ(exprOf((vars + "1").c_str()), "<error>");
+}
+
+TEST(IsoLower, ExecutionOrderOfOneBlock) {
+  Parsed p("N5 M8 G1 G17 G21 G90 G94 G54 G43 H2 G41 D3 X1 F100 S200 T4 M6 M3 M5000\n");
+  ASSERT_TRUE(p.ok) << p.firstError();
+  const auto &body = p.module.functions[0].body;
+  std::vector<std::string> kinds;
+  for (auto &op : body) kinds.push_back(ir::opInfo(op.kind).name);
+  std::vector<std::string> want = {"block", "mode",        "feed",        "speed",       "tool_select",
+                                   "tool_change", "spindle", "coolant",   "mode",        "mode",
+                                   "cutter_comp", "tool_length", "work_offset", "mode", "mode",
+                                   "move",  "aux"};
+  EXPECT_EQ(kinds, want);
+  EXPECT_EQ(ir::printExpr(*body[1].get("feed_mode")), "per_minute");
+  EXPECT_EQ(ir::printExpr(*body[13].get("distance")), "absolute");
+  EXPECT_EQ(ir::printExpr(*body[14].get("motion")), "linear");
+}
+
+TEST(IsoLower, DecimalModeScalesOnlyWordsWithoutPoint) {
+  IsoOptions o;
+  o.decimalMode = "is-b";
+  Parsed p("G1 X1234 Y5. Z#1 F100\n", "t.nc", o);
+  ASSERT_TRUE(p.ok) << p.firstError();
+  const ir::Op &move = p.module.functions[0].body.back();
+  EXPECT_EQ(move.get("X")->num, 1.234);
+  EXPECT_EQ(move.get("Y")->num, 5.0);
+  EXPECT_EQ(ir::printExpr(*move.get("Z")), "#1");
+  o.decimalMode = "bogus";
+  Parsed bad("G1 X1\n", "t.nc", o);
+  EXPECT_FALSE(bad.ok);
+}
+
+TEST(IsoLower, ModalGroupConflictAndUnknownCode) {
+  Parsed p("G90 G91 X10\n");
+  EXPECT_FALSE(p.ok);
+  EXPECT_EQ(p.firstError(), "two G codes from the same modal group: G90 and G91 [modal-group-conflict]");
+  Parsed u("G7 X1\n");
+  EXPECT_EQ(u.firstError(), "unknown G code G7 [unknown-code]");
+  Parsed m("M3 M8 M10 M11 M12 M13\n");
+  EXPECT_EQ(m.firstError(), "more than 5 M codes in one block [too-many-m-codes]");
+}
+
+TEST(IsoProgram, SubprogramsInTheSameFile) {
+  Parsed p("%\nO100\nM98 P0200\nG65 P300 A1 X2\nM30\n%\nO0200\nG1 X1\nM99\n%\nO300\n#100=#1+#24\nM99\n%\n");
+  ASSERT_TRUE(p.ok) << p.firstError();
+  ASSERT_EQ(p.module.functions.size(), 3u);
+  EXPECT_EQ(p.module.functions[0].name, "main");
+  EXPECT_EQ(p.module.functions[1].name, "O200");
+  EXPECT_EQ(p.module.functions[2].name, "O300");
+  EXPECT_NE(p.text.find("call callee=\"O300\" count=1 frame=new a.1=1 a.24=2"), std::string::npos) << p.text;
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  EXPECT_TRUE(ir::verifyModule(p.module, d));
+}
+
+TEST(IsoProgram, MissingSubprogramIsReportedAtTheCall) {
+  Parsed p("G1 X1\nM98 P9999\n", "/nonexistent-dir/t.nc");
+  EXPECT_FALSE(p.ok);
+  ASSERT_FALSE(p.diags.collected().empty());
+  EXPECT_EQ(p.diags.collected()[0].loc.line, 2u);
+  EXPECT_EQ(p.diags.collected()[0].rule, "missing-subprogram");
+}
+
+TEST(IsoProgram, LoopNestingChecked) {
+  Parsed ok("WHILE [#1 LT 2] DO1\nDO2\nEND2\nEND1\n");
+  EXPECT_TRUE(ok.ok) << ok.firstError();
+  Parsed bad("WHILE [#1 LT 2] DO1\nEND2\n");
+  EXPECT_FALSE(bad.ok);
+  EXPECT_EQ(bad.firstError(), "END2 does not match DO1 [loop-mismatch]");
+  Parsed stray("END1\n");
+  EXPECT_EQ(stray.firstError(), "END1 without WHILE ... DO1 [loop-mismatch]");
+}
+
+TEST(IsoProgram, RS274OWords) {
+  Parsed p("o<sq> sub\n#<r> = [#1 ** 2]\no<sq> endsub\n#<i>=0\no100 while [#<i> LT 3]\n"
+           "o101 if [#<i> EQ 1]\nG1 X1\no101 elseif [#<i> EQ 2]\nG1 X2\no101 else\nG1 X3\no101 endif\n"
+           "o<sq> call [#<i>]\n#<i>=[#<i>+1]\no100 endwhile\no102 do\no102 while [0]\no103 repeat [2]\no103 endrepeat\nM2\n",
+           "t.ngc");
+  ASSERT_TRUE(p.ok) << p.firstError() << p.text;
+  ASSERT_EQ(p.module.functions.size(), 2u);
+  EXPECT_EQ(p.module.functions[1].name, "sq");
+  EXPECT_NE(p.text.find("call callee=\"sq\" frame=new a.1=%i"), std::string::npos) << p.text;
+  EXPECT_NE(p.text.find("loop count=2"), std::string::npos) << p.text;
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  EXPECT_TRUE(ir::verifyModule(p.module, d));
+}
+
+TEST(IsoStream, Streamability) {
+  EXPECT_TRUE(isoIsStreamable("%\nO1000 (X)\nG1 X1\n#1=2 (IF in a comment)\nG2 X1 I1 ; WHILE\nM30\n%\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1\nIF [#1 GT 1] GOTO 5\n"));
+  EXPECT_FALSE(isoIsStreamable("WHILE [1] DO1\nEND1\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1\nGOTO 5\n"));
+  EXPECT_FALSE(isoIsStreamable("M98 P1000\n"));
+  EXPECT_FALSE(isoIsStreamable("m99\n"));
+  EXPECT_FALSE(isoIsStreamable("G65 P1 A1\n"));
+  EXPECT_FALSE(isoIsStreamable("G66 P1\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1\nM30\nO2000\nM99\n"));
+  EXPECT_FALSE(isoIsStreamable("o100 while [1]\no100 endwhile\n"));
+  EXPECT_TRUE(isoIsStreamable("G1 X[SIN[30]] Y#<_a>\n"));
+}
+
+TEST(IsoStream, SameOpsAsWholeProgramParse) {
+  std::string src = "(head)\nG21 G90 G17 G94\nG0 X0 Y0 Z1\nF1500\n";
+  for (int i = 0; i < 50; ++i) src += "G1 X" + std::to_string(i) + ".5 Y-" + std::to_string(i) + "\n";
+  src += "G2 X1 Y1 I1 J0\nM2\n";
+  Parsed whole(src);
+  ASSERT_TRUE(whole.ok);
+  for (size_t chunk : {1, 7, 4096}) {
+    bool ok;
+    EXPECT_EQ(streamText(src, chunk, ok), whole.text) << "chunk " << chunk;
+    EXPECT_TRUE(ok);
+  }
+}
+
+TEST(IsoStream, ControlFlowIsAFatalError) {
+  bool ok;
+  std::string t = streamText("G1 X1\nWHILE [1] DO1\nEND1\n", 100, ok);
+  EXPECT_FALSE(ok);
+}
+
+// Random bytes and mutated valid programs: every input must finish with either success or
+// reported errors. Bounded so the test stays fast.
+TEST(IsoFuzz, RandomInputNeverCrashes) {
+  // NCC_FUZZ_ITERS / NCC_FUZZ_SEED allow longer runs (e.g. under the sanitizer build).
+  const char *itersEnv = std::getenv("NCC_FUZZ_ITERS"), *seedEnv = std::getenv("NCC_FUZZ_SEED");
+  const int iters = itersEnv ? std::atoi(itersEnv) : 6000;
+  std::mt19937 rng(seedEnv ? (unsigned)std::atoi(seedEnv) : 20261122u);
+  const std::string seeds[] = {
+      "%\nO1\nN10 G1 X1. Y-2 F100 (c (n))\n#1=[#2+SIN[30]]*2\nIF [#1 GT 2] GOTO 10\n"
+      "WHILE [#1 LT 5] DO1\n#1=#1+1\nEND1\nM98 P2\nG65 P2 A1\nM30\n%\nO2\nG81 X1 Z-1 R1 K2\nM99\n%\n",
+      "o100 while [#<i> LT 3]\n#<i>=[#<i>+1]\no100 endwhile\no<s> sub\no<s> endsub\nM2\n",
+  };
+  const char alphabet[] = "GXYZMNOPQRIJK#[]()/;%=+-*. 0123456789\nIFGOTOWHILEDOENDabcSIN<>_,$\t";
+  for (int iter = 0; iter < iters; ++iter) {
+    std::string src;
+    int mode = iter % 3;
+    if (mode == 0) {
+      size_t n = rng() % 200;
+      for (size_t i = 0; i < n; ++i) src.push_back((char)(rng() & 0xff));
+    } else if (mode == 1) {
+      size_t n = rng() % 300;
+      for (size_t i = 0; i < n; ++i) src.push_back(alphabet[rng() % (sizeof(alphabet) - 1)]);
+    } else {
+      src = seeds[rng() % 2];
+      for (int k = 0; k < 1 + (int)(rng() % 6); ++k) {
+        size_t pos = rng() % (src.size() + 1);
+        switch (rng() % 3) {
+        case 0: src.insert(pos, 1, alphabet[rng() % (sizeof(alphabet) - 1)]); break;
+        case 1: if (pos < src.size()) src.erase(pos, 1); break;
+        default: if (pos < src.size()) src[pos] = (char)(rng() & 0xff); break;
+        }
+      }
+    }
+    const char *name = (iter & 4) ? "f.ngc" : "/nonexistent-dir/f.nc";
+    Parsed p(src, name);
+    if (!p.ok) {
+      EXPECT_TRUE(p.diags.hasErrors()) << "failure without a diagnostic for input:\n" << src;
+    } else {
+      SourceManager sm;
+      Diagnostics d(sm);
+      d.setCollect(true);
+      bool valid = ir::verifyModule(p.module, d);
+      std::string why;
+      for (auto &x : d.collected()) why += x.message + "\n";
+      EXPECT_TRUE(valid) << why << "invalid IR for input:\n" << src << "\n" << p.text;
+    }
+    if (isoIsStreamable(src)) {
+      bool ok;
+      streamText(src, 3, ok);
+    }
+  }
+}
