@@ -73,7 +73,7 @@ private:
 
   void ensurePosition(const MotionRecord &r);
   void axisWords(const AxisVec &end, Words &w, const MotionRecord &r, int skipAxis = -1);
-  void feedWord(const MotionRecord &r, Words &w);
+  void feedWord(const MotionRecord &r, Words &w, double lengthMM);
   void motionCode(Code c, Words &w);
   void move(const MotionRecord &r);
   void arc(const MotionRecord &r);
@@ -221,10 +221,12 @@ void Emitter::motionCode(Code c, Words &w) {
   push(w, g);
 }
 
-void Emitter::feedWord(const MotionRecord &r, Words &w) {
-  // The programmed F (per minute, per revolution or inverse time) when the stream carried one;
-  // the move's effective feed otherwise.
+void Emitter::feedWord(const MotionRecord &r, Words &w, double lengthMM) {
+  // The programmed F (per minute or per revolution) when the stream carried one, the move's
+  // effective feed otherwise. Inverse time: the stream's rates are mm/min, so F = 1/minutes is
+  // rebuilt from the move's length the way the executor measures it.
   double f = haveProgrammedFeed_ ? programmedFeed_ : r.feed;
+  if (feedMode_ == 2) f = lengthMM > 1e-9 ? r.feed / lengthMM : 1;
   std::string word;
   if (!number(f, WordClass::Feed, "F", r, word)) return;
   bool everyBlock = feedMode_ == 2;  // inverse time: F belongs to each block
@@ -244,7 +246,7 @@ void Emitter::move(const MotionRecord &r) {
   flushPending();
   ensurePosition(r);
   Words w;
-  if (r.exactStop && pathMode_ == 2) push(w, code(Code::ExactStopOnce));
+  if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   bool rapid = r.kind == RecordKind::Rapid;
   motionCode(rapid ? Code::Rapid : Code::Linear, w);
   size_t before = w.size();
@@ -256,7 +258,11 @@ void Emitter::move(const MotionRecord &r) {
     if (!machine_.axes[i].present) i = 0;
     w.push_back(std::string(1, kAxisLetters[i]) + posText_[i]);
   }
-  if (!rapid) feedWord(r, w);
+  if (!rapid) {
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) d2 += (r.end[i] - r.start[i]) * (r.end[i] - r.start[i]);
+    feedWord(r, w, std::sqrt(d2));
+  }
   writeBlock(w, r.blockNumber);
 }
 
@@ -308,7 +314,8 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
     }
   }
   Words w;
-  if (r.exactStop && pathMode_ == 2) push(w, code(Code::ExactStopOnce));
+  double startNormal = pos_[pa.normal];
+  if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   planeWord(r.plane, w);
   motionCode(ccw ? Code::ArcCCW : Code::ArcCW, w);
   axisWords(end, w, r);
@@ -325,7 +332,12 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
     }
   }
   if (turns > 1) w.push_back(st_.turnsWord + std::to_string(turns - st_.turnsOffset));
-  feedWord(r, w);
+  // Length of this piece for inverse time: every piece starts at the source arc's start.
+  double os[2] = {r.start[pa.a], r.start[pa.b]}, oe[2] = {end[pa.a], end[pa.b]};
+  bool pieceFull = os[0] == oe[0] && os[1] == oe[1];
+  double sweep = (turns - 1) * 2 * kPi + (pieceFull ? 2 * kPi : sweepAngle(os, oe, c, ccw));
+  double radius = std::hypot(os[0] - c[0], os[1] - c[1]);
+  feedWord(r, w, std::hypot(sweep * radius, end[pa.normal] - startNormal));
   writeBlock(w, r.blockNumber);
 }
 

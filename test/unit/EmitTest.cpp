@@ -429,19 +429,23 @@ TEST(EmitBoth, FeedModesStopsAuxExactStop) {
   s.state(RecordKind::FeedRate, 0, 0.15);
   s.move(RecordKind::Linear, 5, 0, 0, 150);
   s.move(RecordKind::Linear, 6, 0, 0, 150).exactStop = true;
-  s.state(RecordKind::FeedMode, 2);
+  s.state(RecordKind::FeedMode, 2);  // inverse time: the executor's rates are mm/min
   s.state(RecordKind::FeedRate, 0, 2);
-  s.move(RecordKind::Linear, 7, 0, 0, 10);
-  s.move(RecordKind::Linear, 8, 0, 0, 10);
+  s.move(RecordKind::Linear, 7, 0, 0, 2);  // 1 mm at 2 mm/min: half a minute, F2
+  s.state(RecordKind::FeedRate, 0, 4);
+  s.move(RecordKind::Linear, 8, 0, 0, 4);
+  s.arc(18, 10, 0, 8, 10, 0, 1, Plane::XY, 10 * 3.14159265358979323846 / 2 * 3);  // quarter, r 10: F3
+  s.arc(18, 10, -4, 8, 10, 0, 2, Plane::XY, std::hypot(10 * 3.14159265358979323846 * 4, 4) * 0.5);  // two turns: F0.5
   s.state(RecordKind::FeedMode, 0);
   s.state(RecordKind::PathMode, 1);
   s.state(RecordKind::FeedRate, 0, 300);
-  s.move(RecordKind::Linear, 8, 0, 0, 300).exactStop = true;  // zero length: still written
+  s.move(RecordKind::Linear, 18, 10, -4, 300).exactStop = true;  // zero length: still written
   s.state(RecordKind::OptionalStop);
   s.state(RecordKind::ProgramStop);
   s.state(RecordKind::Aux, 123);
   Emit e;
   e.set("emit.iso", "setup_blocks", "none");
+  e.set("emit.iso", "code_exact_stop_once", "G9");
   EXPECT_EQ(e.run(Target::ISO, s),
             "%\nO0001\n"
             "G95\n"
@@ -449,9 +453,11 @@ TEST(EmitBoth, FeedModesStopsAuxExactStop) {
             "G9 X6.\n"
             "G93\n"
             "X7. F2.\n"
-            "X8. F2.\n"
+            "X8. F4.\n"
+            "G3 X18. Y10. I0. J10. F3.\n"
+            "Z-4. I-10. J0. P2 F0.5\n"
             "G94 G61\n"
-            "X8. F300.\n"
+            "G1 X18. F300.\n"
             "M1\nM0\nM123\nM30\n%\n");
 }
 
