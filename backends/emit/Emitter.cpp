@@ -59,6 +59,7 @@ private:
   static WordClass axisClass(int axis) { return axis < 3 ? WordClass::Axis : WordClass::Rotary; }
 
   bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
+  void badNumber(double v, const std::string &letter, const MotionRecord &r);
   void push(Words &w, const std::string &word) {
     if (!word.empty()) w.push_back(word);
   }
@@ -72,7 +73,7 @@ private:
   void flushPending();
 
   void ensurePosition(const MotionRecord &r);
-  void axisWords(const AxisVec &end, Words &w, const MotionRecord &r, int skipAxis = -1);
+  void axisWords(const AxisVec &end, Words &w, const MotionRecord &r);
   void feedWord(const MotionRecord &r, Words &w, double lengthMM);
   void motionCode(Code c, Words &w);
   void move(const MotionRecord &r);
@@ -113,12 +114,16 @@ private:
   bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
 };
 
+void Emitter::badNumber(double v, const std::string &letter, const MotionRecord &r) {
+  diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
+                          "] number format (not finite or too many digits)", "emit");
+  errors_ = true;
+}
+
 bool Emitter::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
   std::string digits;
   if (!formatNumber(v, fmt(c), digits)) {
-    diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
-                            "] number format (not finite or too many digits)", "emit");
-    errors_ = true;
+    badNumber(v, letter, r);
     return false;
   }
   out = letter + digits;
@@ -198,13 +203,12 @@ void Emitter::ensurePosition(const MotionRecord &r) {
   posKnown_ = true;
 }
 
-void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r, int skipAxis) {
+void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r) {
   for (int i = 0; i < kAxes; ++i) {
     std::string digits;
     WordClass c = axisClass(i);
     if (!formatNumber(end[i], fmt(c), digits)) {
-      std::string dummy;
-      number(end[i], c, std::string(1, kAxisLetters[i]), r, dummy);  // reports
+      badNumber(end[i], std::string(1, kAxisLetters[i]), r);
       continue;
     }
     if (digits == posText_[i]) continue;
@@ -350,8 +354,7 @@ void Emitter::dwell(const MotionRecord &r) {
   }
   std::string digits;
   if (!formatNumber(r.value * st_.dwellScale, f, digits)) {
-    std::string dummy;
-    number(INFINITY, WordClass::Dwell, st_.dwellWord, r, dummy);
+    badNumber(r.value, st_.dwellWord, r);
     return;
   }
   // Dwell stands alone in its block (seed 001 §2.10).

@@ -480,6 +480,14 @@ TEST(EmitBoth, BadValuesAreDiagnosed) {
   ASSERT_GE(e.diags.collected().size(), 1u);
   EXPECT_NE(e.diags.collected()[0].message.find("cannot write X"), std::string::npos);
 
+  Stream dw;
+  dw.state(RecordKind::Dwell, 0, NAN);
+  Emit d0;
+  d0.run(Target::Sinumerik, dw);
+  EXPECT_FALSE(d0.ok);
+  ASSERT_GE(d0.diags.collected().size(), 1u);
+  EXPECT_NE(d0.diags.collected()[0].message.find("cannot write F"), std::string::npos);
+
   Stream big;
   big.move(RecordKind::Rapid, 123456, 0, 0);
   Emit d;
