@@ -7,7 +7,8 @@ M3 M8 M9
 G1 X1 X2
 G0 G43 G44 Z1 H1
 %
-; FEATURES: ISO-LEX-09 ISO-M-05 ISO-CYM-15
+; FEATURES: ISO-M-05 ISO-CYM-15
+; (ISO-LEX-09 "last wins" is deliberately not followed: see below)
 ; Two codes of one modal group in a block. The 808D manual says the last one wins (L6492);
 ; ncc follows LinuxCNC and reports an error, so the ambiguity is visible (documented choice).
 ; A group-01 code and a cycle code share the motion group.
