@@ -69,7 +69,10 @@ struct CompiledFn {
   std::vector<Instr> code;
   std::vector<CmdTemplate> templates;
   uint32_t slots = 0;
-  std::unordered_map<std::string, uint32_t> localNames;
+  std::unordered_map<std::string, uint32_t> ownNames;
+  // Slots of named locals: the function's own, or for the main program one map that outlives
+  // the module, so a streamed program keeps its named locals from chunk to chunk.
+  std::unordered_map<std::string, uint32_t> *names = &ownNames;
 };
 
 struct Frame {
@@ -88,6 +91,7 @@ struct Evaluator::Impl {
   const Module *module = nullptr;
   std::unordered_map<const Function *, std::unique_ptr<CompiledFn>> compiled;
   std::unordered_map<std::string, uint32_t> globalNames;
+  std::unordered_map<std::string, uint32_t> mainLocalNames;
   std::vector<double> globalNamed;
   std::vector<double> numbered = std::vector<double>(100000, vacantValue());
   std::vector<double> rparams = std::vector<double>(1000, vacantValue());
@@ -236,10 +240,10 @@ struct Evaluator::Impl {
   }
 
   uint32_t localSlot(CompiledFn &cf, const std::string &name) {
-    auto it = cf.localNames.find(name);
-    if (it != cf.localNames.end()) return it->second;
-    uint32_t s = (uint32_t)cf.localNames.size();
-    cf.localNames.emplace(name, s);
+    auto it = (*cf.names).find(name);
+    if (it != (*cf.names).end()) return it->second;
+    uint32_t s = (uint32_t)(*cf.names).size();
+    (*cf.names).emplace(name, s);
     return s;
   }
 
@@ -248,6 +252,7 @@ struct Evaluator::Impl {
     if (it != compiled.end()) return *it->second;
     auto cf = std::make_unique<CompiledFn>();
     cf->fn = &f;
+    if (!module->functions.empty() && &f == &module->functions[0]) cf->names = &mainLocalNames;
     std::vector<LoopCtx> loops;
     std::vector<Fixup> gotos;
     std::unordered_map<int64_t, std::vector<uint32_t>> blocks;
@@ -326,12 +331,12 @@ struct Evaluator::Impl {
       return arrayRef(arr, fr, v, "Q parameter");
     }
     case VarSpace::Local: {
-      auto it = cf.localNames.find(v.str);
-      if (it == cf.localNames.end()) {
+      auto it = (*cf.names).find(v.str);
+      if (it == (*cf.names).end()) {
         if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
-        it = cf.localNames.emplace(v.str, (uint32_t)cf.localNames.size()).first;
+        it = (*cf.names).emplace(v.str, (uint32_t)(*cf.names).size()).first;
       }
-      if (fr.named.size() <= it->second) fr.named.resize(cf.localNames.size(), unsetValue());
+      if (fr.named.size() <= it->second) fr.named.resize((*cf.names).size(), unsetValue());
       return fr.named[it->second];
     }
     case VarSpace::Global: {
@@ -511,10 +516,10 @@ struct Evaluator::Impl {
         for (auto &[n, v] : numberedArgs)
           if (n >= 1 && n <= 33) nf.locals[n] = v;
         CompiledFn &cf = compile(*f);
-        nf.named.assign(cf.localNames.size(), unsetValue());
+        nf.named.assign((*cf.names).size(), unsetValue());
         for (auto &[n, v] : namedArgs) {
-          auto it = cf.localNames.find(n);
-          if (it != cf.localNames.end()) nf.named[it->second] = v;
+          auto it = (*cf.names).find(n);
+          if (it != (*cf.names).end()) nf.named[it->second] = v;
         }
         runFunction(*f, nf);
       } else {
