@@ -414,6 +414,56 @@ struct Evaluator::Impl {
     }
   }
 
+  void execMachine(const CmdTemplate &t, Frame &fr) {
+    MachineCmd cmd = t.base;
+    for (const CmdSlot &s : t.slots) {
+      double v = ev(fr, *s.expr);
+      if (isVacant(v)) continue;
+      if (!std::isfinite(v)) fail(s.expr->loc, "value is not a finite number");
+      cmd.set(s.word, v);
+    }
+    if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
+    if (cmd.kind == CmdKind::Stop &&
+        (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
+      ended = true;
+      throw ProgramEnd{};
+    }
+  }
+
+  void execAssign(const Expr *target, const Expr *value, bool declare, Frame &fr, CompiledFn &cf) {
+    double v = value ? ev(fr, *value) : (declare ? 0.0 : vacantValue());
+    if (isUnset(v)) v = vacantValue();
+    varRef(fr, cf, *target, true) = v;
+  }
+
+  // Straight-line code (a streamed chunk, a flat program) runs op by op without linearising:
+  // one reused template instead of one per op.
+  static bool isStraightLine(const Region &r) {
+    for (const Op &op : r)
+      if (!isMachineOp(op.kind) && op.kind != OpKind::Assign && op.kind != OpKind::Declare) return false;
+    return true;
+  }
+
+  void runStraightLine(const Function &f, Frame &fr) {
+    CompiledFn cf;
+    cf.fn = &f;
+    cf.names = &mainLocalNames;
+    curFn = &cf;
+    CmdTemplate t;
+    for (const Op &op : f.body) {
+      if (isMachineOp(op.kind)) {
+        if (!buildCmdTemplate(op, t, diags)) fail(op.loc, "invalid machine operation");
+        execMachine(t, fr);
+      } else {
+        bool assign = op.kind == OpKind::Assign;
+        const Expr *target = op.get(assign ? "target" : "var");
+        if (!target || target->kind != ExprKind::Var) fail(op.loc, "assignment target is not a variable");
+        execAssign(target, op.get(assign ? "value" : "init"), !assign, fr, cf);
+      }
+    }
+    curFn = nullptr;
+  }
+
   void runFunction(const Function &f, Frame &fr) {
     CompiledFn &cf = compile(f);
     CompiledFn *saved = curFn;
@@ -424,32 +474,15 @@ struct Evaluator::Impl {
     while (true) {
       const Instr &in = code[pc];
       switch (in.kind) {
-      case IK::Machine: {
-        const CmdTemplate &t = cf.templates[in.slot];
-        MachineCmd cmd = t.base;
-        for (const CmdSlot &s : t.slots) {
-          double v = ev(fr, *s.expr);
-          if (isVacant(v)) continue;
-          if (!std::isfinite(v)) fail(s.expr->loc, "value is not a finite number");
-          cmd.set(s.word, v);
-        }
-        if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
-        if (cmd.kind == CmdKind::Stop &&
-            (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
-          ended = true;
-          throw ProgramEnd{};
-        }
+      case IK::Machine:
+        execMachine(cf.templates[in.slot], fr);
         ++pc;
         break;
-      }
       case IK::Assign:
-      case IK::Declare: {
-        double v = in.expr ? ev(fr, *in.expr) : (in.kind == IK::Declare ? 0.0 : vacantValue());
-        if (isUnset(v)) v = vacantValue();
-        varRef(fr, cf, *in.target, true) = v;
+      case IK::Declare:
+        execAssign(in.target, in.expr, in.kind == IK::Declare, fr, cf);
         ++pc;
         break;
-      }
       case IK::JumpIfFalse: pc = truthy(ev(fr, *in.expr)) ? pc + 1 : in.jump; break;
       case IK::Jump:
         if (in.backward) {
@@ -548,7 +581,10 @@ struct Evaluator::Impl {
     }
     if (ended) return true;
     try {
-      runFunction(m.functions[0], mainFrame);
+      if (m.functions.size() == 1 && isStraightLine(m.functions[0].body))
+        runStraightLine(m.functions[0], mainFrame);
+      else
+        runFunction(m.functions[0], mainFrame);
     } catch (const EvalError &e) {
       diags.error(e.loc, e.message);
       return false;
