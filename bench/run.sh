@@ -44,12 +44,15 @@ measure() {
 
 : >"$dir/results.txt"
 echo "ncc: $("$ncc" --version); programs in $dir; median of $runs runs"
-measure ncc-flat-canon        "$ncc" run "$dir/flat_moves.ngc" --trace=canon -o "$dir/flat.ncc.canon"
-measure ncc-flat-summary      "$ncc" run "$dir/flat_moves.ngc"
-measure ncc-macro-motion-jit  "$ncc" run "$dir/macro_motion.nc" --engine=jit --trace=canon -o "$dir/macro.ncc.canon"
-measure ncc-macro-motion-eval "$ncc" run "$dir/macro_motion.nc" --engine=eval --trace=canon -o "$dir/macro.ncc.eval.canon"
-measure ncc-macro-compute-jit "$ncc" run "$dir/macro_compute.nc" --engine=jit
-measure ncc-macro-compute-eval "$ncc" run "$dir/macro_compute.nc" --engine=eval
+# Like rs274, these interpret to canonical commands only (-q: no trajectory planning).
+measure ncc-flat-canon        "$ncc" run "$dir/flat_moves.ngc" --trace=canon -o "$dir/flat.ncc.canon" -q
+measure ncc-macro-motion-jit  "$ncc" run "$dir/macro_motion.nc" --engine=jit --trace=canon -o "$dir/macro.ncc.canon" -q
+measure ncc-macro-motion-eval "$ncc" run "$dir/macro_motion.nc" --engine=eval --trace=canon -o "$dir/macro.ncc.eval.canon" -q
+measure ncc-macro-compute-jit "$ncc" run "$dir/macro_compute.nc" --engine=jit -q
+measure ncc-macro-compute-eval "$ncc" run "$dir/macro_compute.nc" --engine=eval -q
+# The full run: trajectory planning for the summary (cycle time), no trace. rs274 does no planning.
+measure ncc-flat-planned      "$ncc" run "$dir/flat_moves.ngc"
+measure ncc-macro-planned-jit "$ncc" run "$dir/macro_motion.nc" --engine=jit
 if [ $have_rs274 = 1 ]; then
   measure rs274-flat          rs274 -g "$dir/flat_moves.ngc" "$dir/flat.rs274.canon"
   measure rs274-macro-motion  rs274 -g "$dir/macro_motion.ngc" "$dir/macro.rs274.canon"

@@ -66,14 +66,20 @@ bool modeValueFromName(std::string_view s, ModeValue &out) {
   return false;
 }
 
+// Letter -> word slot, built once from kWordLetters (on the hot path of every move).
+static const struct LetterTable {
+  int8_t slot[26];
+  LetterTable() {
+    for (auto &s : slot) s = -1;
+    for (int i = 0; i < kWords; ++i) slot[kWordLetters[i] - 'A'] = (int8_t)i;
+  }
+} kLetters;
+
 bool wordFromLetter(char c, Word &out) {
   if (c >= 'a' && c <= 'z') c = (char)(c - 'a' + 'A');
-  for (int i = 0; i < kWords; ++i)
-    if (kWordLetters[i] == c) {
-      out = (Word)i;
-      return true;
-    }
-  return false;
+  if (c < 'A' || c > 'Z' || kLetters.slot[c - 'A'] < 0) return false;
+  out = (Word)kLetters.slot[c - 'A'];
+  return true;
 }
 
 }  // namespace ncc

@@ -96,7 +96,8 @@ static bool constNumber(const Expr *e, double &v) {
 }
 
 bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
-  out = CmdTemplate{};
+  out.base = MachineCmd{};
+  out.slots.clear();  // keeps its capacity: templates are rebuilt per op on the streaming path
   MachineCmd &c = out.base;
   c.kind = cmdKindOf(op.kind);
   c.loc = op.loc;
@@ -190,19 +191,21 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     break;
   }
   // Scalar words: named keys per the table, axis/parameter letters for motion ops.
+  bool letters = op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
+                 op.kind == OpKind::SetOffset;
   for (auto &a : op.args) {
+    Word w;
+    if (letters && a.key.size() == 1 && wordFromLetter(a.key[0], w)) {
+      addWord(w, a.value.get());
+      continue;
+    }
     bool done = false;
     for (auto &kw : kKeyWords)
       if (kw.op == op.kind && a.key == kw.key) {
         addWord(kw.word, a.value.get());
         done = true;
       }
-    if (done) continue;
-    Word w;
-    if (a.key.size() == 1 && wordFromLetter(a.key[0], w) &&
-        (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-         op.kind == OpKind::SetOffset))
-      addWord(w, a.value.get());
+    (void)done;
   }
   return true;
 }

@@ -69,7 +69,10 @@ struct CompiledFn {
   std::vector<Instr> code;
   std::vector<CmdTemplate> templates;
   uint32_t slots = 0;
-  std::unordered_map<std::string, uint32_t> localNames;
+  std::unordered_map<std::string, uint32_t> ownNames;
+  // Slots of named locals: the function's own, or for the main program one map that outlives
+  // the module, so a streamed program keeps its named locals from chunk to chunk.
+  std::unordered_map<std::string, uint32_t> *names = &ownNames;
 };
 
 struct Frame {
@@ -88,6 +91,7 @@ struct Evaluator::Impl {
   const Module *module = nullptr;
   std::unordered_map<const Function *, std::unique_ptr<CompiledFn>> compiled;
   std::unordered_map<std::string, uint32_t> globalNames;
+  std::unordered_map<std::string, uint32_t> mainLocalNames;
   std::vector<double> globalNamed;
   std::vector<double> numbered = std::vector<double>(100000, vacantValue());
   std::vector<double> rparams = std::vector<double>(1000, vacantValue());
@@ -236,10 +240,10 @@ struct Evaluator::Impl {
   }
 
   uint32_t localSlot(CompiledFn &cf, const std::string &name) {
-    auto it = cf.localNames.find(name);
-    if (it != cf.localNames.end()) return it->second;
-    uint32_t s = (uint32_t)cf.localNames.size();
-    cf.localNames.emplace(name, s);
+    auto it = (*cf.names).find(name);
+    if (it != (*cf.names).end()) return it->second;
+    uint32_t s = (uint32_t)(*cf.names).size();
+    (*cf.names).emplace(name, s);
     return s;
   }
 
@@ -248,6 +252,7 @@ struct Evaluator::Impl {
     if (it != compiled.end()) return *it->second;
     auto cf = std::make_unique<CompiledFn>();
     cf->fn = &f;
+    if (!module->functions.empty() && &f == &module->functions[0]) cf->names = &mainLocalNames;
     std::vector<LoopCtx> loops;
     std::vector<Fixup> gotos;
     std::unordered_map<int64_t, std::vector<uint32_t>> blocks;
@@ -326,12 +331,12 @@ struct Evaluator::Impl {
       return arrayRef(arr, fr, v, "Q parameter");
     }
     case VarSpace::Local: {
-      auto it = cf.localNames.find(v.str);
-      if (it == cf.localNames.end()) {
+      auto it = (*cf.names).find(v.str);
+      if (it == (*cf.names).end()) {
         if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
-        it = cf.localNames.emplace(v.str, (uint32_t)cf.localNames.size()).first;
+        it = (*cf.names).emplace(v.str, (uint32_t)(*cf.names).size()).first;
       }
-      if (fr.named.size() <= it->second) fr.named.resize(cf.localNames.size(), unsetValue());
+      if (fr.named.size() <= it->second) fr.named.resize((*cf.names).size(), unsetValue());
       return fr.named[it->second];
     }
     case VarSpace::Global: {
@@ -409,6 +414,56 @@ struct Evaluator::Impl {
     }
   }
 
+  void execMachine(const CmdTemplate &t, Frame &fr) {
+    MachineCmd cmd = t.base;
+    for (const CmdSlot &s : t.slots) {
+      double v = ev(fr, *s.expr);
+      if (isVacant(v)) continue;
+      if (!std::isfinite(v)) fail(s.expr->loc, "value is not a finite number");
+      cmd.set(s.word, v);
+    }
+    if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
+    if (cmd.kind == CmdKind::Stop &&
+        (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
+      ended = true;
+      throw ProgramEnd{};
+    }
+  }
+
+  void execAssign(const Expr *target, const Expr *value, bool declare, Frame &fr, CompiledFn &cf) {
+    double v = value ? ev(fr, *value) : (declare ? 0.0 : vacantValue());
+    if (isUnset(v)) v = vacantValue();
+    varRef(fr, cf, *target, true) = v;
+  }
+
+  // Straight-line code (a streamed chunk, a flat program) runs op by op without linearising:
+  // one reused template instead of one per op.
+  static bool isStraightLine(const Region &r) {
+    for (const Op &op : r)
+      if (!isMachineOp(op.kind) && op.kind != OpKind::Assign && op.kind != OpKind::Declare) return false;
+    return true;
+  }
+
+  void runStraightLine(const Function &f, Frame &fr) {
+    CompiledFn cf;
+    cf.fn = &f;
+    cf.names = &mainLocalNames;
+    curFn = &cf;
+    CmdTemplate t;
+    for (const Op &op : f.body) {
+      if (isMachineOp(op.kind)) {
+        if (!buildCmdTemplate(op, t, diags)) fail(op.loc, "invalid machine operation");
+        execMachine(t, fr);
+      } else {
+        bool assign = op.kind == OpKind::Assign;
+        const Expr *target = op.get(assign ? "target" : "var");
+        if (!target || target->kind != ExprKind::Var) fail(op.loc, "assignment target is not a variable");
+        execAssign(target, op.get(assign ? "value" : "init"), !assign, fr, cf);
+      }
+    }
+    curFn = nullptr;
+  }
+
   void runFunction(const Function &f, Frame &fr) {
     CompiledFn &cf = compile(f);
     CompiledFn *saved = curFn;
@@ -419,32 +474,15 @@ struct Evaluator::Impl {
     while (true) {
       const Instr &in = code[pc];
       switch (in.kind) {
-      case IK::Machine: {
-        const CmdTemplate &t = cf.templates[in.slot];
-        MachineCmd cmd = t.base;
-        for (const CmdSlot &s : t.slots) {
-          double v = ev(fr, *s.expr);
-          if (isVacant(v)) continue;
-          if (!std::isfinite(v)) fail(s.expr->loc, "value is not a finite number");
-          cmd.set(s.word, v);
-        }
-        if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
-        if (cmd.kind == CmdKind::Stop &&
-            (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
-          ended = true;
-          throw ProgramEnd{};
-        }
+      case IK::Machine:
+        execMachine(cf.templates[in.slot], fr);
         ++pc;
         break;
-      }
       case IK::Assign:
-      case IK::Declare: {
-        double v = in.expr ? ev(fr, *in.expr) : (in.kind == IK::Declare ? 0.0 : vacantValue());
-        if (isUnset(v)) v = vacantValue();
-        varRef(fr, cf, *in.target, true) = v;
+      case IK::Declare:
+        execAssign(in.target, in.expr, in.kind == IK::Declare, fr, cf);
         ++pc;
         break;
-      }
       case IK::JumpIfFalse: pc = truthy(ev(fr, *in.expr)) ? pc + 1 : in.jump; break;
       case IK::Jump:
         if (in.backward) {
@@ -511,10 +549,10 @@ struct Evaluator::Impl {
         for (auto &[n, v] : numberedArgs)
           if (n >= 1 && n <= 33) nf.locals[n] = v;
         CompiledFn &cf = compile(*f);
-        nf.named.assign(cf.localNames.size(), unsetValue());
+        nf.named.assign((*cf.names).size(), unsetValue());
         for (auto &[n, v] : namedArgs) {
-          auto it = cf.localNames.find(n);
-          if (it != cf.localNames.end()) nf.named[it->second] = v;
+          auto it = (*cf.names).find(n);
+          if (it != (*cf.names).end()) nf.named[it->second] = v;
         }
         runFunction(*f, nf);
       } else {
@@ -543,7 +581,10 @@ struct Evaluator::Impl {
     }
     if (ended) return true;
     try {
-      runFunction(m.functions[0], mainFrame);
+      if (m.functions.size() == 1 && isStraightLine(m.functions[0].body))
+        runStraightLine(m.functions[0], mainFrame);
+      else
+        runFunction(m.functions[0], mainFrame);
     } catch (const EvalError &e) {
       diags.error(e.loc, e.message);
       return false;

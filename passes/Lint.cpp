@@ -42,16 +42,18 @@ bool endsProgram(const Op &op) {
 void lintRegion(const Region &r, const Targets &t, bool isMain, Diagnostics &diags) {
   // After an unconditional transfer, code up to the next jump target never runs.
   const char *dead = nullptr;
+  bool reported = false;  // report the first block of each dead stretch only
   for (const Op &op : r) {
     if (dead && isTarget(op, t)) dead = nullptr;
-    if (dead && op.kind == OpKind::Block) {
+    if (dead && !reported && op.kind == OpKind::Block) {
       if (std::string_view(dead) == "code-after-end")
         diags.warning(op.loc, "code after the end of the program (M2/M30) is never executed", dead);
       else
         diags.warning(op.loc, "block is unreachable", dead);
-      dead = "";  // report the first block of each dead stretch only
+      reported = true;
     }
     if (!dead) {
+      reported = false;
       if (op.kind == OpKind::Goto || op.kind == OpKind::Return) dead = "unreachable-block";
       else if (isMain && endsProgram(op)) dead = "code-after-end";
     }

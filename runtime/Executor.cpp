@@ -171,6 +171,8 @@ Executor::Executor(const Machine &machine, MotionSink &sink, Diagnostics &diags)
 
 Executor::~Executor() { delete impl_; }
 
+uint64_t Executor::blockCount() const { return impl_->blocks; }
+
 const ModalState &Executor::state() const { return impl_->st; }
 
 bool Executor::exec(const MachineCmd &c) {
@@ -187,6 +189,7 @@ bool Executor::exec(const MachineCmd &c) {
   }
   switch (c.kind) {
   case CmdKind::Block:
+    ++x.blocks;
     x.blockNumber = c.blockNumber;
     x.blockLoc = c.loc;
     x.feedInBlock = false;

@@ -40,6 +40,8 @@ public:
   // Flushes pending state at program end (no M2 seen: warns); returns false on error.
   bool finish();
   const ModalState &state() const;
+  // Source blocks executed so far (a block in a loop counts each time it runs).
+  uint64_t blockCount() const;
 
 private:
   struct Impl;

@@ -25,6 +25,7 @@ struct Executor::Impl {
   bool feedInBlock = false;  // an F word in the current block (inverse time needs one per move)  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)
 
   int64_t blockNumber = -1;
+  uint64_t blocks = 0;  // source blocks executed (summary)
   SourceLoc loc;       // of the command being executed
   SourceLoc blockLoc;  // of the current block
 

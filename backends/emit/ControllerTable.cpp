@@ -23,7 +23,9 @@ const CodeDef kCodes[] = {
     {Code::ArcCW, "arc_cw", "G2", "G2"},
     {Code::ArcCCW, "arc_ccw", "G3", "G3"},
     {Code::Dwell, "dwell", "G4", "G4"},
-    {Code::ExactStopOnce, "exact_stop_once", "G9", "G9"},
+    // ISO G09 exists (seed 001 §2.9) but ncc's ISO front end does not read it yet, so the
+    // translated program would not run back: off by default (code_exact_stop_once = G9).
+    {Code::ExactStopOnce, "exact_stop_once", "", "G9"},
     {Code::PlaneXY, "plane_xy", "G17", "G17"},
     {Code::PlaneZX, "plane_zx", "G18", "G18"},
     {Code::PlaneYZ, "plane_yz", "G19", "G19"},
@@ -257,6 +259,9 @@ ControllerStyle defaultStyle(Target t) {
   // 0.002 mm arc tolerance (see docs/EMIT.md, "Arcs").
   s.formats[(size_t)WordClass::Center].decimals = 4;
   s.formats[(size_t)WordClass::Speed].pointOnInteger = false;  // S1200: S is never scaled
+  // Feeds converted from inch or computed by the program keep their value to 1e-6 relative
+  // (what `translate --verify` compares) down to about 50 mm/min.
+  s.formats[(size_t)WordClass::Feed].decimals = 4;
 
   if (iso) {
     s.arcStyle = ArcStyle::IJK;

@@ -59,6 +59,7 @@ private:
   static WordClass axisClass(int axis) { return axis < 3 ? WordClass::Axis : WordClass::Rotary; }
 
   bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
+  void badNumber(double v, const std::string &letter, const MotionRecord &r);
   void push(Words &w, const std::string &word) {
     if (!word.empty()) w.push_back(word);
   }
@@ -72,8 +73,8 @@ private:
   void flushPending();
 
   void ensurePosition(const MotionRecord &r);
-  void axisWords(const AxisVec &end, Words &w, const MotionRecord &r, int skipAxis = -1);
-  void feedWord(const MotionRecord &r, Words &w);
+  void axisWords(const AxisVec &end, Words &w, const MotionRecord &r);
+  void feedWord(const MotionRecord &r, Words &w, double lengthMM);
   void motionCode(Code c, Words &w);
   void move(const MotionRecord &r);
   void arc(const MotionRecord &r);
@@ -83,6 +84,7 @@ private:
   void comment(const std::string &text);
   void message(const std::string &text, const MotionRecord &r);
   void coolant(const MotionRecord &r, bool flood);
+  std::vector<std::string> coolantCodes();
 
   const Machine &machine_;
   ControllerStyle st_;
@@ -108,15 +110,20 @@ private:
   std::string feedText_;                    // last F value written
   bool haveProgrammedFeed_ = false;
   double programmedFeed_ = 0;
-  bool flood_ = false, mist_ = false;
+  bool flood_ = false, mist_ = false;            // written coolant state
+  bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
 };
+
+void Emitter::badNumber(double v, const std::string &letter, const MotionRecord &r) {
+  diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
+                          "] number format (not finite or too many digits)", "emit");
+  errors_ = true;
+}
 
 bool Emitter::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
   std::string digits;
   if (!formatNumber(v, fmt(c), digits)) {
-    diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
-                            "] number format (not finite or too many digits)", "emit");
-    errors_ = true;
+    badNumber(v, letter, r);
     return false;
   }
   out = letter + digits;
@@ -169,6 +176,17 @@ void Emitter::addPending(PendingGroup g, const std::string &word, const MotionRe
 }
 
 void Emitter::flushPending() {
+  if (pendingGroups_ & (1u << (unsigned)PendingGroup::Coolant)) {
+    // Coolant codes share one modal group: the first joins the block, others get their own.
+    std::vector<std::string> codes = coolantCodes();
+    if (!codes.empty()) pending_.push_back(codes[0]);
+    writeBlock(pending_, pendingN_);
+    for (size_t i = 1; i < codes.size(); ++i) writeBlock({codes[i]}, pendingN_);
+    pending_.clear();
+    pendingGroups_ = 0;
+    pendingN_ = -1;
+    return;
+  }
   writeBlock(pending_, pendingN_);
   pending_.clear();
   pendingGroups_ = 0;
@@ -185,13 +203,12 @@ void Emitter::ensurePosition(const MotionRecord &r) {
   posKnown_ = true;
 }
 
-void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r, int skipAxis) {
+void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r) {
   for (int i = 0; i < kAxes; ++i) {
     std::string digits;
     WordClass c = axisClass(i);
     if (!formatNumber(end[i], fmt(c), digits)) {
-      std::string dummy;
-      number(end[i], c, std::string(1, kAxisLetters[i]), r, dummy);  // reports
+      badNumber(end[i], std::string(1, kAxisLetters[i]), r);
       continue;
     }
     if (digits == posText_[i]) continue;
@@ -208,10 +225,12 @@ void Emitter::motionCode(Code c, Words &w) {
   push(w, g);
 }
 
-void Emitter::feedWord(const MotionRecord &r, Words &w) {
-  // The programmed F (per minute, per revolution or inverse time) when the stream carried one;
-  // the move's effective feed otherwise.
+void Emitter::feedWord(const MotionRecord &r, Words &w, double lengthMM) {
+  // The programmed F (per minute or per revolution) when the stream carried one, the move's
+  // effective feed otherwise. Inverse time: the stream's rates are mm/min, so F = 1/minutes is
+  // rebuilt from the move's length the way the executor measures it.
   double f = haveProgrammedFeed_ ? programmedFeed_ : r.feed;
+  if (feedMode_ == 2) f = lengthMM > 1e-9 ? r.feed / lengthMM : 1;
   std::string word;
   if (!number(f, WordClass::Feed, "F", r, word)) return;
   bool everyBlock = feedMode_ == 2;  // inverse time: F belongs to each block
@@ -231,7 +250,7 @@ void Emitter::move(const MotionRecord &r) {
   flushPending();
   ensurePosition(r);
   Words w;
-  if (r.exactStop && pathMode_ == 2) push(w, code(Code::ExactStopOnce));
+  if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   bool rapid = r.kind == RecordKind::Rapid;
   motionCode(rapid ? Code::Rapid : Code::Linear, w);
   size_t before = w.size();
@@ -243,7 +262,11 @@ void Emitter::move(const MotionRecord &r) {
     if (!machine_.axes[i].present) i = 0;
     w.push_back(std::string(1, kAxisLetters[i]) + posText_[i]);
   }
-  if (!rapid) feedWord(r, w);
+  if (!rapid) {
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) d2 += (r.end[i] - r.start[i]) * (r.end[i] - r.start[i]);
+    feedWord(r, w, std::sqrt(d2));
+  }
   writeBlock(w, r.blockNumber);
 }
 
@@ -295,7 +318,8 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
     }
   }
   Words w;
-  if (r.exactStop && pathMode_ == 2) push(w, code(Code::ExactStopOnce));
+  double startNormal = pos_[pa.normal];
+  if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   planeWord(r.plane, w);
   motionCode(ccw ? Code::ArcCCW : Code::ArcCW, w);
   axisWords(end, w, r);
@@ -312,7 +336,12 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
     }
   }
   if (turns > 1) w.push_back(st_.turnsWord + std::to_string(turns - st_.turnsOffset));
-  feedWord(r, w);
+  // Length of this piece for inverse time: every piece starts at the source arc's start.
+  double os[2] = {r.start[pa.a], r.start[pa.b]}, oe[2] = {end[pa.a], end[pa.b]};
+  bool pieceFull = os[0] == oe[0] && os[1] == oe[1];
+  double sweep = (turns - 1) * 2 * kPi + (pieceFull ? 2 * kPi : sweepAngle(os, oe, c, ccw));
+  double radius = std::hypot(os[0] - c[0], os[1] - c[1]);
+  feedWord(r, w, std::hypot(sweep * radius, end[pa.normal] - startNormal));
   writeBlock(w, r.blockNumber);
 }
 
@@ -325,8 +354,7 @@ void Emitter::dwell(const MotionRecord &r) {
   }
   std::string digits;
   if (!formatNumber(r.value * st_.dwellScale, f, digits)) {
-    std::string dummy;
-    number(INFINITY, WordClass::Dwell, st_.dwellWord, r, dummy);
+    badNumber(r.value, st_.dwellWord, r);
     return;
   }
   // Dwell stands alone in its block (seed 001 §2.10).
@@ -334,9 +362,14 @@ void Emitter::dwell(const MotionRecord &r) {
 }
 
 void Emitter::comment(const std::string &text) {
-  if (st_.commentStyle == CommentStyle::Paren)
-    writeLine("(" + sanitizeText(text, "()", "[]") + ")");
-  else
+  if (st_.commentStyle == CommentStyle::Paren) {
+    std::string t = sanitizeText(text, "()", "[]");
+    // "(MSG, ...)" would be read back as a message.
+    if (t.size() >= 4 && std::toupper((unsigned char)t[0]) == 'M' && std::toupper((unsigned char)t[1]) == 'S' &&
+        std::toupper((unsigned char)t[2]) == 'G' && t[3] == ',')
+      t.insert(3, " ");
+    writeLine("(" + t + ")");
+  } else
     writeLine("; " + sanitizeText(text, "", ""));
 }
 
@@ -348,15 +381,25 @@ void Emitter::message(const std::string &text, const MotionRecord &r) {
 }
 
 void Emitter::coolant(const MotionRecord &r, bool flood) {
-  bool on = r.ivalue != 0;
-  (flood ? flood_ : mist_) = on;
-  if (on) {
-    addPending(PendingGroup::Coolant, code(flood ? Code::FloodOn : Code::MistOn), r);
-    return;
+  // Only the wanted state is noted here; flushPending() writes the codes, so the two "off"
+  // records a single M9 produces become one M9 again.
+  (flood ? floodWanted_ : mistWanted_) = r.ivalue != 0;
+  if (pending_.empty() && !pendingGroups_) pendingN_ = r.blockNumber;
+  pendingGroups_ |= 1u << (unsigned)PendingGroup::Coolant;
+}
+
+std::vector<std::string> Emitter::coolantCodes() {
+  std::vector<std::string> codes;
+  bool off = (flood_ && !floodWanted_) || (mist_ && !mistWanted_);
+  if (off) {
+    codes.push_back(code(Code::CoolantOff));  // one code turns both off
+    flood_ = mist_ = false;
   }
-  // One "all coolant off" code: switch the other one back on when it should stay on.
-  addPending(PendingGroup::Coolant, code(Code::CoolantOff), r);
-  if (flood ? mist_ : flood_) push(pending_, code(flood ? Code::MistOn : Code::FloodOn));
+  if (mistWanted_ && !mist_) codes.push_back(code(Code::MistOn));
+  if (floodWanted_ && !flood_) codes.push_back(code(Code::FloodOn));
+  flood_ = floodWanted_;
+  mist_ = mistWanted_;
+  return codes;
 }
 
 void Emitter::record(const MotionRecord &r) {

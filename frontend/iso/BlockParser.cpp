@@ -392,6 +392,7 @@ bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, P
   line_ = lineNo;
   failed_ = false;
   depth_ = 0;
+  if (lineNo == 1 && line.size() >= 3 && std::memcmp(p_, "\xEF\xBB\xBF", 3) == 0) p_ += 3;  // UTF-8 BOM
   skipBlanks();
   if (p_ >= end_) return true;
   out.loc = locAt(p_);

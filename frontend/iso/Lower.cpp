@@ -60,68 +60,134 @@ void BlockLowerer::lowerComments(const ParsedBlock &b, Region &out) {
   }
 }
 
-namespace {
-
-// Per-block working state: which words are present, which were consumed.
-struct BlockWords {
-  IsoWord *w[26] = {};
-  uint32_t used = 0, present = 0;
-  IsoWord *get(char c) { return w[c - 'A']; }
-  bool has(char c) const { return w[c - 'A'] != nullptr; }
-  bool hasAny(const char *letters) const {
-    uint32_t m = 0;
-    for (; *letters; ++letters) m |= 1u << (*letters - 'A');
-    return (present & m) != 0;
-  }
-};
-
-struct GUse {
-  const GCodeInfo *info = nullptr;
-  const IsoWord *word = nullptr;
-};
-
-}  // namespace
-
-bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
-  // Divisor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1). Dividing
-  // by a power of ten keeps X1234 in IS-B exactly 1.234.
-  auto factor = [&](Scale s) -> double {
-    if (decimal_ == 0) return 1.0;
-    bool inch = units_ == ModeValue::Inch;
-    switch (s) {
-    case Scale::Linear: return decimal_ == 1 ? (inch ? 1e4 : 1e3) : (inch ? 1e5 : 1e4);
-    case Scale::Rotary: return decimal_ == 1 ? 1e3 : 1e4;
-    case Scale::DwellX: return 1e3;
-    case Scale::Feed:
-      if (feedMode_ == ModeValue::PerRev) return inch ? 1e4 : 1e2;
-      if (feedMode_ == ModeValue::PerMinute) return inch ? 1e2 : 1.0;
-      return 1.0;
-    default: return 1.0;
-    }
+// One block being lowered: its words by letter, the G and M codes found, the phases that emit
+// ops in execution order. Members of BlockLowerer (modal tracking, diagnostics) are reached via L.
+struct BlockLowerer::Block {
+  struct GUse {
+    const GCodeInfo *info = nullptr;
+    const IsoWord *word = nullptr;
   };
-  auto literal = [](const IsoWord &w, double f) -> ExprPtr {
-    if (w.expr) return w.expr->clone();
-    if (!w.hasPoint && f != 1.0) return Expr::number(w.value / f, ir::Type::Real, w.loc);
-    return Expr::number(w.value, w.hasPoint ? ir::Type::Real : ir::Type::Int, w.loc);
-  };
-
-  BlockWords bw;
-  GUse gs[(size_t)GGroup::Count];
   struct MUse {
     MCodeInfo info;
     const IsoWord *word;
-  } ms[8];
-  int nm = 0;
-  bool ok = true;
+  };
+  // Which words are present, which were consumed.
+  struct Words {
+    IsoWord *w[26] = {};
+    uint32_t used = 0, present = 0;
+    IsoWord *get(char c) { return w[c - 'A']; }
+    bool has(char c) const { return w[c - 'A'] != nullptr; }
+    bool hasAny(const char *letters) const {
+      uint32_t m = 0;
+      for (; *letters; ++letters) m |= 1u << (*letters - 'A');
+      return (present & m) != 0;
+    }
+  };
 
+  BlockLowerer &L;
+  ParsedBlock &b;
+  Region &out;
+  Words bw;
+  GUse gs[(size_t)GGroup::Count];
+  MUse ms[8];
+  int nm = 0;
   bool macroCall = false;  // G65: every other address is an argument (M too)
+  bool axesTaken = false;  // a non-modal code took the axis words
+  const GCodeInfo *nonModal = nullptr;
+
+  Block(BlockLowerer &l, ParsedBlock &blk, Region &o) : L(l), b(blk), out(o) {}
+
+  // Divisor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1). Dividing
+  // by a power of ten keeps X1234 in IS-B exactly 1.234.
+  double factor(Scale s) const {
+    if (L.decimal_ == 0) return 1.0;
+    bool inch = L.units_ == ModeValue::Inch;
+    switch (s) {
+    case Scale::Linear: return L.decimal_ == 1 ? (inch ? 1e4 : 1e3) : (inch ? 1e5 : 1e4);
+    case Scale::Rotary: return L.decimal_ == 1 ? 1e3 : 1e4;
+    case Scale::DwellX: return 1e3;
+    case Scale::Feed:
+      if (L.feedMode_ == ModeValue::PerRev) return inch ? 1e4 : 1e2;
+      if (L.feedMode_ == ModeValue::PerMinute) return inch ? 1e2 : 1.0;
+      return 1.0;
+    default: return 1.0;
+    }
+  }
+  static ExprPtr literal(const IsoWord &w, double f) {
+    if (w.expr) return w.expr->clone();
+    if (!w.hasPoint && f != 1.0) return Expr::number(w.value / f, ir::Type::Real, w.loc);
+    return Expr::number(w.value, w.hasPoint ? ir::Type::Real : ir::Type::Int, w.loc);
+  }
+  const GCodeInfo *G(GGroup g) const { return gs[(size_t)g].info; }
+  SourceLoc gloc(GGroup g) const { return gs[(size_t)g].word->loc; }
+  ExprPtr take(char c, Scale s) {
+    IsoWord *w = bw.get(c);
+    bw.used |= 1u << (c - 'A');
+    return literal(*w, factor(s));
+  }
+  Op &emit(OpKind k, SourceLoc loc) {
+    out.emplace_back(k, loc);
+    return out.back();
+  }
+  void modeOp(GGroup g, const char *key) {
+    if (auto *gi = G(g); gi && gi->kind == GKind::Mode)
+      emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(gi->mode).name, gloc(g)));
+  }
+  // Keys are unique here, so args are appended directly (Op::set would search).
+  static void add(Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); }
+  void axisWords(Op &op, const char *axes) {
+    for (const char *a = axes; *a; ++a)
+      if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
+  }
+  const MUse *findM(MKind k) const {
+    for (int i = 0; i < nm; ++i)
+      if (ms[i].info.kind == k) return &ms[i];
+    return nullptr;
+  }
+  bool programNumber(SourceLoc at, const char *what, long long &prog) {
+    IsoWord *p = bw.get('P');
+    if (!p) {
+      L.diags_.error(at, fmt::format("{} needs a P word (program number)", what), "missing-word");
+      return false;
+    }
+    if (p->expr || p->value < 0 || p->value != std::floor(p->value) || p->value > 99999999) {
+      L.diags_.error(p->loc, fmt::format("{} P must be a constant program number", what), "syntax");
+      return false;
+    }
+    bw.used |= 1u << ('P' - 'A');
+    prog = (long long)p->value;
+    return true;
+  }
+  Op &callOp(SourceLoc loc, long long prog, ExprPtr count, const char *frame) {
+    std::string callee = fmt::format("O{}", prog);
+    L.calls.push_back({callee, loc});
+    Op &op = emit(OpKind::Call, loc);
+    op.set("callee", Expr::string(callee, loc));
+    op.set("count", std::move(count));
+    op.set("frame", Expr::symbol(frame, loc));
+    return op;
+  }
+
+  bool classify();       // G and M codes through the tables; conflicts and duplicates
+  bool setup();          // feed mode ... return level
+  bool coordinateOps();  // G10/G92, G28/G30, G53
+  bool motion();
+  bool stops();
+  bool callsAndReturn();
+  bool finish();         // assignments, unused words
+};
+
+// G and M codes through the tables; group conflicts, duplicate words.
+bool BlockLowerer::Block::classify() {
+  bool ok = true;
+  macroCall = false;  // G65: every other address is an argument (M too)
   for (auto &w : b.words)
     if (w.letter == 'G' && !w.expr && w.value == 65) macroCall = true;
 
   for (auto &w : b.words) {
     if (w.letter == 'G') {
       if (w.expr) {
-        diags_.error(w.loc, "a G code must be a number", "unknown-code");
+        L.diags_.error(w.loc, "a G code must be a number", "unknown-code");
         ok = false;
         continue;
       }
@@ -132,19 +198,43 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
         if (std::fabs(t - (double)c10) < 1e-6) gi = findGCode((int32_t)c10);
       }
       if (!gi) {
-        diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
+        L.diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
+        ok = false;
+        continue;
+      }
+      if (gi->code10 == 760 && L.flavour_ == Flavour::RS274) {  // LinuxCNC G76 is threading
+        L.diags_.error(w.loc, "G76 (RS274NGC threading cycle) is not supported", "unsupported-code");
         ok = false;
         continue;
       }
       if (gi->kind == GKind::Unsupported) {
-        diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
+        L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
                      "unsupported-code");
         ok = false;
         continue;
       }
       GUse &slot = gs[(size_t)gi->group];
+      // Fanuc/808D keep the canned cycles in their own group (09), so `G80 G0` is legal there:
+      // the group-01 code ends the cycle anyway. A cycle with a group-01 code is not
+      // (ISO-CYM-15); RS274NGC has both in one group and rejects either pair.
+      if (slot.info && L.flavour_ != Flavour::RS274 && gi->group == GGroup::Motion) {
+        auto plainMotion = [](const GCodeInfo *g) { return !isCycleMotion(g->mode) && g->code10 != 800; };
+        if (slot.info->code10 == 800 && plainMotion(gi)) {
+          slot = {gi, &w};
+          continue;
+        }
+        if (gi->code10 == 800 && plainMotion(slot.info)) continue;
+        if (plainMotion(gi) != plainMotion(slot.info)) {
+          L.diags_.error(w.loc,
+                         fmt::format("{} cannot be programmed in a canned cycle block with {}", gName(gi->code10),
+                                     gName(slot.info->code10)),
+                         "modal-group-conflict");
+          ok = false;
+          continue;
+        }
+      }
       if (slot.info) {
-        diags_.error(w.loc,
+        L.diags_.error(w.loc,
                      fmt::format("two G codes from the same modal group: {} and {}", gName(slot.info->code10),
                                  gName(gi->code10)),
                      "modal-group-conflict");
@@ -156,13 +246,13 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     }
     if (w.letter == 'M' && !macroCall) {
       if (w.expr || w.value < 0 || w.value != std::floor(w.value) || w.value > 99999999) {
-        diags_.error(w.loc, "an M code must be an integer 0..99999999", "unknown-code");
+        L.diags_.error(w.loc, "an M code must be an integer 0..99999999", "unknown-code");
         ok = false;
         continue;
       }
       MCodeInfo mi = findMCode((int32_t)w.value);
       if (nm == 5) {
-        diags_.error(w.loc, "more than 5 M codes in one block", "too-many-m-codes");
+        L.diags_.error(w.loc, "more than 5 M codes in one block", "too-many-m-codes");
         ok = false;
         continue;
       }
@@ -170,7 +260,7 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
         bool coolantPair = mi.group == MGroup::Coolant && ms[i].info.group == MGroup::Coolant &&
                            mi.arg != 9 && ms[i].info.arg != 9 && mi.arg != ms[i].info.arg;  // M7 M8
         if (mi.group != MGroup::None && ms[i].info.group == mi.group && !coolantPair) {
-          diags_.error(w.loc,
+          L.diags_.error(w.loc,
                        fmt::format("two M codes from the same modal group: M{} and M{}", ms[i].info.code, mi.code),
                        "modal-group-conflict");
           ok = false;
@@ -182,74 +272,56 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     if (w.letter < 'A' || w.letter > 'Z') continue;
     bool argSetII = macroCall && (w.letter == 'I' || w.letter == 'J' || w.letter == 'K');
     if (bw.w[w.letter - 'A'] && !argSetII) {
-      diags_.error(w.loc, fmt::format("two {} words in one block", w.letter), "duplicate-word");
+      L.diags_.error(w.loc, fmt::format("two {} words in one block", w.letter), "duplicate-word");
       ok = false;
       continue;
     }
     if (!bw.w[w.letter - 'A']) bw.w[w.letter - 'A'] = &w;
     bw.present |= 1u << (w.letter - 'A');
   }
-  if (!ok) return false;
+  return ok;
+}
 
-  auto G = [&](GGroup g) -> const GCodeInfo * { return gs[(size_t)g].info; };
-  auto gloc = [&](GGroup g) { return gs[(size_t)g].word->loc; };
-  auto take = [&](char c, Scale s) -> ExprPtr {
-    IsoWord *w = bw.get(c);
-    bw.used |= 1u << (c - 'A');
-    return literal(*w, factor(s));
-  };
-  auto emit = [&](OpKind k, SourceLoc loc) -> Op & {
-    out.emplace_back(k, loc);
-    return out.back();
-  };
-  auto modeOp = [&](GGroup g, const char *key) {
-    if (auto *gi = G(g); gi && gi->kind == GKind::Mode)
-      emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(gi->mode).name, gloc(g)));
-  };
-  // Keys are unique here, so args are appended directly (Op::set would search).
-  auto add = [](Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); };
-  auto axisWords = [&](Op &op, const char *axes) {
-    for (const char *a = axes; *a; ++a)
-      if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
-  };
-  auto findM = [&](MKind k) -> const MUse * {
-    for (int i = 0; i < nm; ++i)
-      if (ms[i].info.kind == k) return &ms[i];
-    return nullptr;
-  };
-
+// Feed mode, F, S, T, M6, spindle, coolant, dwell, plane, units, compensation, work offset,
+// path mode, distance, return level (the first part of the rs274 order).
+bool BlockLowerer::Block::setup() {
   // The block's own units and feed mode apply to its words.
-  if (auto *gi = G(GGroup::Units)) units_ = gi->mode;
-  if (auto *gi = G(GGroup::FeedMode)) feedMode_ = gi->mode;
-  if (auto *gi = G(GGroup::Motion)) motion_ = gi->mode;
-  const GCodeInfo *nonModal = G(GGroup::NonModal);
+  if (auto *gi = G(GGroup::Units)) L.units_ = gi->mode;
+  if (auto *gi = G(GGroup::FeedMode)) L.feedMode_ = gi->mode;
+  if (auto *gi = G(GGroup::Motion)) L.motion_ = gi->mode;
+  nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
 
   if (nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S')) {
-    diags_.error(bw.get('S')->loc, "G92 S (spindle speed limit) is not supported", "unsupported-code");
+    L.diags_.error(bw.get('S')->loc, "G92 S (spindle speed limit) is not supported", "unsupported-code");
     return false;
   }
   if (macroCall) {
     // G65 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
       if (gs[g].info && gs[g].info->kind != GKind::MacroCall) {
-        diags_.error(gs[g].word->loc, "G65 must not share its block with other G codes", "syntax");
+        L.diags_.error(gs[g].word->loc, "G65 must not share its block with other G codes", "syntax");
         return false;
       }
   }
 
   modeOp(GGroup::FeedMode, "feed_mode");
   if (!macroCall) {
-    if (bw.has('F')) emit(OpKind::Feed, bw.get('F')->loc).set("value", take('F', Scale::Feed));
+    if (bw.has('F')) {
+      IsoWord *f = bw.get('F');
+      if (!f->expr && f->value <= 0 && L.flavour_ == Flavour::Fanuc)  // 808D alarm 14800
+        L.diags_.warning(f->loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
+      emit(OpKind::Feed, f->loc).set("value", take('F', Scale::Feed));
+    }
     if (bw.has('S')) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
     if (bw.has('T')) {
       emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
-      selectedTool_ = literal(*bw.get('T'), 1.0);
+      L.selectedTool_ = literal(*bw.get('T'), 1.0);
     }
   }
   if (auto *m = findM(MKind::ToolChange)) {
     emit(OpKind::ToolChange, m->word->loc);
-    loadedTool_ = selectedTool_ ? selectedTool_->clone() : nullptr;
+    L.loadedTool_ = L.selectedTool_ ? L.selectedTool_->clone() : nullptr;
   }
   if (auto *m = findM(MKind::Spindle)) {
     static const char *dirs[] = {"stop", "cw", "ccw"};
@@ -271,13 +343,13 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
       // Fanuc: P is in milliseconds unless written with a point; RS274NGC: P is seconds.
       IsoWord *p = bw.get('P');
       bw.used |= 1u << ('P' - 'A');
-      if (flavour_ == Flavour::RS274 || (p->hasPoint && !p->expr)) secs = literal(*p, 1.0);
+      if (L.flavour_ == Flavour::RS274 || (p->hasPoint && !p->expr)) secs = literal(*p, 1.0);
       else if (p->expr) secs = Expr::binary(ir::OpCode::Div, p->expr->clone(), Expr::number(1000, ir::Type::Int, p->loc), p->loc);
       else secs = Expr::number(p->value / 1000.0, ir::Type::Real, p->loc);
     } else if (bw.has('X') || bw.has('U')) {
       secs = take(bw.has('X') ? 'X' : 'U', Scale::DwellX);
     } else {
-      diags_.error(loc, "G4 needs a dwell time: P (milliseconds) or X (seconds)", "missing-word");
+      L.diags_.error(loc, "G4 needs a dwell time: P (milliseconds) or X (seconds)", "missing-word");
       return false;
     }
     emit(OpKind::Dwell, loc).set("seconds", std::move(secs));
@@ -295,9 +367,9 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     ExprPtr h;
     if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
     else if (bw.has('H')) h = take('H', Scale::None);
-    else if (flavour_ == Flavour::RS274 && loadedTool_) h = loadedTool_->clone();
+    else if (L.flavour_ == Flavour::RS274 && L.loadedTool_) h = L.loadedTool_->clone();
     if (!h) {
-      diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
+      L.diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
       return false;
     }
     emit(OpKind::ToolLength, loc).set("h", std::move(h));
@@ -312,9 +384,12 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   modeOp(GGroup::Distance, "distance");
   modeOp(GGroup::ArcDistance, "arc_distance");
   modeOp(GGroup::Retract, "retract");
+  return true;
+}
 
-  // Non-modal codes that take the axis words for themselves.
-  bool axesTaken = macroCall || (nonModal && nonModal->kind == GKind::Dwell);
+// Non-modal codes that take the axis words for themselves: G10/G92, G28/G30, G53.
+bool BlockLowerer::Block::coordinateOps() {
+  axesTaken = macroCall || (nonModal && nonModal->kind == GKind::Dwell);
   if (nonModal && nonModal->kind == GKind::SetOffset) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::SetOffset, loc);
@@ -322,14 +397,14 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
       IsoWord *l = bw.get('L');
       int lv = l && !l->expr && l->value >= 0 && l->value < 100 ? (int)l->value : -1;
       if (lv != 2 && lv != 20) {
-        diags_.error(l ? l->loc : loc,
+        L.diags_.error(l ? l->loc : loc,
                      l ? fmt::format("G10 L{} is not supported (only L2 and L20)", l->value)
                        : std::string("G10 needs L2 or L20"),
                      l ? "unsupported-code" : "missing-word");
         return false;
       }
       if (!bw.has('P')) {
-        diags_.error(loc, "G10 needs a P word (work offset number)", "missing-word");
+        L.diags_.error(loc, "G10 needs a P word (work offset number)", "missing-word");
         return false;
       }
       bw.used |= 1u << ('L' - 'A');
@@ -355,22 +430,25 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   if (nonModal && nonModal->kind == GKind::MachineCoord) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::MachineMove, loc);
-    op.set("rapid", Expr::boolean(motion_ == ModeValue::Rapid, loc));
+    op.set("rapid", Expr::boolean(L.motion_ == ModeValue::Rapid, loc));
     axisWords(op, kOffsetAxes);
     out.push_back(std::move(op));
     axesTaken = true;
   }
+  return true;
+}
 
-  // Motion.
+// The motion mode and the move (axis words, arc or cycle words).
+bool BlockLowerer::Block::motion() {
   if (auto *gi = G(GGroup::Motion))
     emit(OpKind::Mode, gloc(GGroup::Motion)).set("motion", Expr::symbol(modeValueInfo(gi->mode).name, gloc(GGroup::Motion)));
   if (!axesTaken) {
-    bool cycle = isCycleMotion(motion_);
-    bool arc = motion_ == ModeValue::ArcCW || motion_ == ModeValue::ArcCCW;
+    bool cycle = isCycleMotion(L.motion_);
+    bool arc = L.motion_ == ModeValue::ArcCW || L.motion_ == ModeValue::ArcCCW;
     bool moves = bw.hasAny(kAxes) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R'));
     if (moves) {
       if (cycle && bw.has('K') && bw.has('L')) {
-        diags_.error(bw.get('K')->loc, "K and L both give the cycle repeat count", "duplicate-word");
+        L.diags_.error(bw.get('K')->loc, "K and L both give the cycle repeat count", "duplicate-word");
         return false;
       }
       SourceLoc loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
@@ -385,7 +463,7 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
         IsoWord *p = bw.get('P');
         bw.used |= 1u << ('P' - 'A');
         // Cycle dwell: seconds (Fanuc P without a point is milliseconds); arc P = turns.
-        bool ms = cycle && flavour_ == Flavour::Fanuc && !p->hasPoint;
+        bool ms = cycle && L.flavour_ == Flavour::Fanuc && !p->hasPoint;
         if (ms && p->expr)
           op.set("P", Expr::binary(ir::OpCode::Div, p->expr->clone(), Expr::number(1000, ir::Type::Int, p->loc), p->loc));
         else if (ms) op.set("P", Expr::number(p->value / 1000.0, ir::Type::Real, p->loc));
@@ -396,8 +474,11 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
       out.push_back(std::move(op));
     }
   }
+  return true;
+}
 
-  // Stops and other M codes.
+// Stops and other M codes.
+bool BlockLowerer::Block::stops() {
   if (auto *m = findM(MKind::Stop)) {
     static const char *kinds[] = {"program", "optional", "end", "end_rewind"};
     emit(OpKind::Stop, m->word->loc).set("kind", Expr::symbol(kinds[m->info.arg], m->word->loc));
@@ -405,35 +486,15 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   for (int i = 0; i < nm; ++i)
     if (ms[i].info.kind == MKind::Aux)
       emit(OpKind::Aux, ms[i].word->loc).set("m", Expr::number(ms[i].info.code, ir::Type::Int, ms[i].word->loc));
+  return true;
+}
 
-  // Subprogram and macro calls.
-  auto programNumber = [&](SourceLoc at, const char *what, long long &prog) -> bool {
-    IsoWord *p = bw.get('P');
-    if (!p) {
-      diags_.error(at, fmt::format("{} needs a P word (program number)", what), "missing-word");
-      return false;
-    }
-    if (p->expr || p->value < 0 || p->value != std::floor(p->value) || p->value > 99999999) {
-      diags_.error(p->loc, fmt::format("{} P must be a constant program number", what), "syntax");
-      return false;
-    }
-    bw.used |= 1u << ('P' - 'A');
-    prog = (long long)p->value;
-    return true;
-  };
-  auto callOp = [&](SourceLoc loc, long long prog, ExprPtr count, const char *frame) -> Op & {
-    std::string callee = fmt::format("O{}", prog);
-    calls.push_back({callee, loc});
-    Op &op = emit(OpKind::Call, loc);
-    op.set("callee", Expr::string(callee, loc));
-    op.set("count", std::move(count));
-    op.set("frame", Expr::symbol(frame, loc));
-    return op;
-  };
+// Subprogram and macro calls, M99.
+bool BlockLowerer::Block::callsAndReturn() {
   if (auto *m = findM(MKind::Call)) {
     SourceLoc loc = m->word->loc;
-    if (!allowCalls) {
-      diags_.error(loc, "M98 needs the whole program (not streamable)", "not-streamable");
+    if (!L.allowCalls) {
+      L.diags_.error(loc, "M98 needs the whole program (not streamable)", "not-streamable");
       return false;
     }
     long long prog;
@@ -454,8 +515,8 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
     SourceLoc loc = gloc(GGroup::NonModal);
     IsoWord *p = bw.get('P');
     if (p && !(p->expr == nullptr && p->value <= 1)) {
-      if (!allowCalls) {
-        diags_.error(loc, "G05 needs the whole program (not streamable)", "not-streamable");
+      if (!L.allowCalls) {
+        L.diags_.error(loc, "G05 needs the whole program (not streamable)", "not-streamable");
         return false;
       }
       long long prog;
@@ -467,8 +528,8 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   }
   if (macroCall) {
     SourceLoc loc = gloc(GGroup::NonModal);
-    if (!allowCalls) {
-      diags_.error(loc, "G65 needs the whole program (not streamable)", "not-streamable");
+    if (!L.allowCalls) {
+      L.diags_.error(loc, "G65 needs the whole program (not streamable)", "not-streamable");
       return false;
     }
     long long prog;
@@ -490,13 +551,13 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
         if (pos <= lastPos) ++set;
         lastPos = pos;
         if (set > 9) {
-          diags_.error(w.loc, "more than 10 I/J/K argument sets", "syntax");
+          L.diags_.error(w.loc, "more than 10 I/J/K argument sets", "syntax");
           return false;
         }
         local = 4 + 3 * set + pos;
       }
       if (!local) {
-        diags_.error(w.loc, fmt::format("{} is not a macro argument", w.letter), "syntax");
+        L.diags_.error(w.loc, fmt::format("{} is not a macro argument", w.letter), "syntax");
         return false;
       }
       if (w.letter != 'M') bw.used |= 1u << (w.letter - 'A');
@@ -505,12 +566,15 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   }
   if (auto *m = findM(MKind::Return)) {
     if (bw.has('P')) {
-      diags_.error(bw.get('P')->loc, "M99 P<n> (return to a block number) is not supported", "unsupported-code");
+      L.diags_.error(bw.get('P')->loc, "M99 P<n> (return to a block number) is not supported", "unsupported-code");
       return false;
     }
     emit(OpKind::Return, m->word->loc);
   }
+  return true;
+}
 
+bool BlockLowerer::Block::finish() {
   for (auto &a : b.assigns) {
     Op &op = emit(OpKind::Assign, a.loc);
     op.set("target", std::move(a.target));
@@ -519,8 +583,14 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
 
   for (uint32_t unused = bw.present & ~bw.used; unused; unused &= unused - 1)
     if (int c = __builtin_ctz(unused); bw.w[c])
-      diags_.warning(bw.w[c]->loc, fmt::format("{} word is not used in this block", (char)('A' + c)), "unused-word");
+      L.diags_.warning(bw.w[c]->loc, fmt::format("{} word is not used in this block", (char)('A' + c)), "unused-word");
   return true;
+}
+
+bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
+  Block blk(*this, b, out);
+  return blk.classify() && blk.setup() && blk.coordinateOps() && blk.motion() && blk.stops() &&
+         blk.callsAndReturn() && blk.finish();
 }
 
 }  // namespace ncc::iso

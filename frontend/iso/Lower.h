@@ -27,6 +27,7 @@ public:
   bool allowCalls = true;      // false when streaming: M98/G65 are then errors
 
 private:
+  struct Block;  // one block being lowered (Lower.cpp)
   Diagnostics &diags_;
   Flavour flavour_;
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid

@@ -12,6 +12,7 @@ static inline bool letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' &
 
 bool isoIsStreamable(std::string_view text) {
   const char *p = text.data(), *end = p + text.size();
+  if (text.size() >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;  // UTF-8 BOM
   bool seenContent = false;  // a block before: a later O line is a subprogram
   while (p < end) {
     // One line.

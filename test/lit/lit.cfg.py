@@ -21,5 +21,7 @@ config.environment["PATH"] = os.pathsep.join([tools, llvm_bin, os.environ.get("P
 config.substitutions.append(("%ncc", os.path.join(tools, "ncc")))
 config.substitutions.append(("%srcroot", src_root))
 config.substitutions.append(("%shared", os.path.normpath(os.path.join(src_root, "..", "shared"))))
+if os.path.isdir(os.path.join(src_root, "..", "shared", "spec")):
+    config.available_features.add("shared")
 if shutil.which("rs274"):
     config.available_features.add("rs274")

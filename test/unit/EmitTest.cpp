@@ -330,14 +330,18 @@ TEST(EmitISO, ArcCentreIsConsistentAfterRounding) {
       double rs = std::hypot(s[0] - cc[0], s[1] - cc[1]), re = std::hypot(e[0] - cc[0], e[1] - cc[1]);
       ASSERT_LT(std::fabs(rs - re), 0.002) << i;
       double sweep = sweepAngle(s, e, cc, ccw), a = std::atan2(s[1] - cc[1], s[0] - cc[0]);
-      if (w.useRadius) ASSERT_EQ(w.radius < 0, sweep > 3.14159265358979323846) << i;
+      if (w.useRadius) {
+        ASSERT_EQ(w.radius < 0, sweep > 3.14159265358979323846) << i;
+      }
       for (int k = 0; k <= 16; ++k) {
         double t = a + (ccw ? 1 : -1) * sweep * k / 16, rho = rs + (re - rs) * k / 16;
         double p[2] = {cc[0] + rho * std::cos(t), cc[1] + rho * std::sin(t)};
         double dev = std::fabs(std::hypot(p[0] - c[0], p[1] - c[1]) - (r + (r1 - r) * k / 16));
         // A source arc already near the tolerance may need its centre moved (docs/EMIT.md), so
         // only exact arcs are held to the path bound.
-        if (r1 == r) ASSERT_LT(dev, 0.002) << i << " k=" << k << " r=" << r << " sweep=" << sweep;
+        if (r1 == r) {
+          ASSERT_LT(dev, 0.002) << i << " k=" << k << " r=" << r << " sweep=" << sweep;
+        }
       }
     }
   }
@@ -374,9 +378,11 @@ TEST(EmitBoth, ToolSpindleCoolant) {
   s.move(RecordKind::Rapid, 0, 0, 5);
   s.state(RecordKind::ToolSelect, 4);  // prepared, changed later
   s.state(RecordKind::CoolantMist, 1);
-  s.state(RecordKind::CoolantFlood, 0);  // M9 drops mist too: switch it back on
+  s.state(RecordKind::CoolantFlood, 0);  // M9 drops mist too: switch it back on, in a block of its own
   s.state(RecordKind::SpindleStop);
   s.state(RecordKind::ToolChange, 4);
+  s.state(RecordKind::CoolantFlood, 0);  // M9 = both off: one code
+  s.state(RecordKind::CoolantMist, 0);
   s.state(RecordKind::SpindleSpeed, 0, 800.5);
   s.state(RecordKind::SpindleCCW);
   Emit iso;
@@ -386,10 +392,10 @@ TEST(EmitBoth, ToolSpindleCoolant) {
             "T3 M6\n"
             "S1200 M3 M8\n"
             "G0 Z5.\n"
-            "T4 M7\n"
-            "M9 M7 M5\n"
+            "T4 M5 M9\n"
+            "M7\n"
             "M6\n"
-            "S800.5 M4\n"
+            "S800.5 M4 M9\n"
             "M30\n%\n");
   Emit sin;
   sin.set("emit.sinumerik", "setup_blocks", "none");
@@ -398,10 +404,10 @@ TEST(EmitBoth, ToolSpindleCoolant) {
             "T3 D0 M6\n"
             "S1200 M3 M8\n"
             "G0 Z5\n"
-            "T4 M7\n"
-            "M9 M7 M5\n"
+            "T4 M5 M9\n"
+            "M7\n"
             "D0 M6\n"
-            "S800.5 M4\n"
+            "S800.5 M4 M9\n"
             "M30\n");
 }
 
@@ -412,6 +418,9 @@ TEST(EmitBoth, CommentsAndMessages) {
   Emit iso;
   iso.set("emit.iso", "setup_blocks", "none");
   EXPECT_EQ(iso.run(Target::ISO, s), "%\nO0001\n(drill [deep] hole)\n(MSG, check \"tool\" [T3])\nM30\n%\n");
+  Stream msgLike;
+  msgLike.text(RecordKind::Comment, "msg,not a message");
+  EXPECT_EQ(iso.run(Target::ISO, msgLike), "%\nO0001\n(msg ,not a message)\nM30\n%\n");
   EXPECT_EQ(iso.run(Target::ISO, s, "", false), "%\nO0001\n(MSG, check \"tool\" [T3])\nM30\n%\n");
   Emit sin;
   sin.set("emit.sinumerik", "setup_blocks", "none");
@@ -424,19 +433,23 @@ TEST(EmitBoth, FeedModesStopsAuxExactStop) {
   s.state(RecordKind::FeedRate, 0, 0.15);
   s.move(RecordKind::Linear, 5, 0, 0, 150);
   s.move(RecordKind::Linear, 6, 0, 0, 150).exactStop = true;
-  s.state(RecordKind::FeedMode, 2);
+  s.state(RecordKind::FeedMode, 2);  // inverse time: the executor's rates are mm/min
   s.state(RecordKind::FeedRate, 0, 2);
-  s.move(RecordKind::Linear, 7, 0, 0, 10);
-  s.move(RecordKind::Linear, 8, 0, 0, 10);
+  s.move(RecordKind::Linear, 7, 0, 0, 2);  // 1 mm at 2 mm/min: half a minute, F2
+  s.state(RecordKind::FeedRate, 0, 4);
+  s.move(RecordKind::Linear, 8, 0, 0, 4);
+  s.arc(18, 10, 0, 8, 10, 0, 1, Plane::XY, 10 * 3.14159265358979323846 / 2 * 3);  // quarter, r 10: F3
+  s.arc(18, 10, -4, 8, 10, 0, 2, Plane::XY, std::hypot(10 * 3.14159265358979323846 * 4, 4) * 0.5);  // two turns: F0.5
   s.state(RecordKind::FeedMode, 0);
   s.state(RecordKind::PathMode, 1);
   s.state(RecordKind::FeedRate, 0, 300);
-  s.move(RecordKind::Linear, 8, 0, 0, 300).exactStop = true;  // zero length: still written
+  s.move(RecordKind::Linear, 18, 10, -4, 300).exactStop = true;  // zero length: still written
   s.state(RecordKind::OptionalStop);
   s.state(RecordKind::ProgramStop);
   s.state(RecordKind::Aux, 123);
   Emit e;
   e.set("emit.iso", "setup_blocks", "none");
+  e.set("emit.iso", "code_exact_stop_once", "G9");
   EXPECT_EQ(e.run(Target::ISO, s),
             "%\nO0001\n"
             "G95\n"
@@ -444,9 +457,11 @@ TEST(EmitBoth, FeedModesStopsAuxExactStop) {
             "G9 X6.\n"
             "G93\n"
             "X7. F2.\n"
-            "X8. F2.\n"
+            "X8. F4.\n"
+            "G3 X18. Y10. I0. J10. F3.\n"
+            "Z-4. I-10. J0. P2 F0.5\n"
             "G94 G61\n"
-            "X8. F300.\n"
+            "G1 X18. F300.\n"
             "M1\nM0\nM123\nM30\n%\n");
 }
 
@@ -468,6 +483,14 @@ TEST(EmitBoth, BadValuesAreDiagnosed) {
   EXPECT_FALSE(e.ok);
   ASSERT_GE(e.diags.collected().size(), 1u);
   EXPECT_NE(e.diags.collected()[0].message.find("cannot write X"), std::string::npos);
+
+  Stream dw;
+  dw.state(RecordKind::Dwell, 0, NAN);
+  Emit d0;
+  d0.run(Target::Sinumerik, dw);
+  EXPECT_FALSE(d0.ok);
+  ASSERT_GE(d0.diags.collected().size(), 1u);
+  EXPECT_NE(d0.diags.collected()[0].message.find("cannot write F"), std::string::npos);
 
   Stream big;
   big.move(RecordKind::Rapid, 123456, 0, 0);

@@ -8,12 +8,27 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace ncc::driver {
 
 namespace {
 class NullSink : public MotionSink {
 public:
   void record(const MotionRecord &) override {}
+};
+
+// Lint keeps running after an executor error so one run reports every rule it can.
+class KeepGoingSink : public CmdSink {
+public:
+  explicit KeepGoingSink(Executor &e) : exec_(e) {}
+  bool exec(const MachineCmd &c) override {
+    exec_.exec(c);
+    return true;
+  }
+
+private:
+  Executor &exec_;
 };
 }  // namespace
 
@@ -49,17 +64,24 @@ int cmdLint(int argc, char **argv) {
     runLint(m, s.diags, ctx);
     NullSink sink;
     Executor exec(s.machine, sink, s.diags);
-    ExecutorSink es(exec);
+    KeepGoingSink es(exec);
     Evaluator ev(es, s.diags, s.opts.limits);
     ev.run(m);
     exec.finish();
   }
   // Print, dropping repeats of one rule at one location (a loop reports once).
+  // In source order, whichever stage found them.
+  std::vector<Diagnostic> all = s.diags.collected();
+  std::stable_sort(all.begin(), all.end(), [](const Diagnostic &a, const Diagnostic &b) {
+    if (a.loc.file != b.loc.file) return a.loc.file < b.loc.file;
+    if (a.loc.line != b.loc.line) return a.loc.line < b.loc.line;
+    return a.loc.col < b.loc.col;
+  });
   std::vector<std::string> seen;
   bool json = s.opts.diagnosticsFormat == "json";
   if (json) std::printf("[");
   bool first = true;
-  for (auto &d : s.diags.collected()) {
+  for (auto &d : all) {
     std::string key = fmt::format("{}:{}:{}:{}:{}", d.loc.file, d.loc.line, d.loc.col, d.rule, d.message);
     if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
     seen.push_back(key);

@@ -23,7 +23,7 @@ int cmdRun(int argc, char **argv) {
       ("plot", po::value(&plot), "write an SVG plot of the toolpath")
       ("samples", po::value(&samples), "write CSV samples of the planned motion")
       ("sample-period", po::value(&period)->default_value(0.01), "sample period in seconds")
-      ("quiet,q", po::bool_switch(&quiet), "do not print the summary");
+      ("quiet,q", po::bool_switch(&quiet), "do not print the summary (and skip planning unless --plot/--samples)");
   addCommonOptions(desc, s.opts);
   po::positional_options_description pos;
   pos.add("file", 1);
@@ -45,7 +45,9 @@ int cmdRun(int argc, char **argv) {
   ro.programName = file;
   RunOutputs outputs(s.machine, ro);
   MotionTee tee;
-  tee.add(&outputs);
+  // The planner runs for the summary, the plot and the samples; a quiet trace-only run skips it.
+  bool plan = !quiet || !plot.empty() || !samples.empty();
+  if (plan) tee.add(&outputs);
 
   // The trace goes to a temporary file renamed on success, or to stdout.
   std::unique_ptr<AtomicFile> traceFile;
@@ -63,7 +65,9 @@ int cmdRun(int argc, char **argv) {
   else if (trace == "jsonl") traceSink = std::make_unique<JsonlTraceWriter>(traceStream);
   if (traceSink) tee.add(traceSink.get());
 
-  bool ok = s.execute(f, tee);
+  uint64_t blocks = 0;
+  bool ok = s.execute(f, tee, &blocks);
+  outputs.setBlockCount(blocks);
   ok &= tee.finish(s.diags);
   std::fflush(stdout);
   if (ok && traceFile) {

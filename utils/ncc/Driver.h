@@ -53,9 +53,10 @@ public:
   bool load(uint32_t file, ir::Module &out);
   // Runs a program to a Motion IR sink with the chosen engine. Flat programs are streamed
   // block by block (eval engine) so memory stays bounded.
-  bool execute(uint32_t file, MotionSink &sink);
+  // `blocks` receives the number of source blocks executed.
+  bool execute(uint32_t file, MotionSink &sink, uint64_t *blocks = nullptr);
   // The same for an already-loaded module.
-  bool executeModule(const ir::Module &m, MotionSink &sink);
+  bool executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blocks = nullptr);
 
   int exitCode() const { return diags.hasErrors() ? kExitErrors : kExitOk; }
 };

@@ -1,6 +1,6 @@
 G92 S1500
 %
-; FEATURES: ISO-CS-04 ISO-SPD-03
+; FEATURES: ISO-CS-04
 ; G92 S is the turning spindle speed limit, not a speed: reported as not supported rather than
 ; misread as `speed`.
 ; RUN: not %ncc compile %s --emit=ir 2>&1 | FileCheck %s

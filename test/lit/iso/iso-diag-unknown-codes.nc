@@ -9,7 +9,7 @@ G10 L10 P1 R2
 G43 Z1
 M98 P#1
 %
-; FEATURES: ISO-LEX-01 ISO-LEX-10
+; FEATURES: ISO-LEX-01
 ; Unknown codes and characters are errors with a caret at the word; known but not yet
 ; lowered codes say so ([unsupported-code]); unused words are warnings.
 ; RUN: not %ncc compile %s --emit=ir 2>&1 | FileCheck %s

@@ -9,7 +9,7 @@ M29 M3 M8 M50
 M2
 M30
 %
-; FEATURES: ISO-M-01 ISO-M-02 ISO-SPD-04 ISO-SPD-05
+; FEATURES: ISO-M-01 ISO-M-02
 ; Stops, coolant, and machine-defined M codes as `aux` after the motion.
 ; RUN: %ncc compile %s --emit=ir | FileCheck %s
 ; CHECK: stop kind=program loc(1:1:1)

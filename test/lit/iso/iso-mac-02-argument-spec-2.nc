@@ -4,7 +4,7 @@ M30
 O9100
 M99
 %
-; FEATURES: ISO-MAC-02
+; (Fanuc locals, not the 808D $C_ variables of ISO-MAC-02)
 ; Fanuc argument specification II: repeated I/J/K form up to 10 sets, set s (0-based) going to
 ; #4+3s / #5+3s / #6+3s; a set ends when an address repeats or comes out of I-J-K order
 ; (the set-splitting rule of spec L4585-4626: I50 K60 | J70 | I80).

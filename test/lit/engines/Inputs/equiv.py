@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""Runs every test program of the suite (and the examples) through both engines and checks they
+give identical Motion IR, or fail with the same exit code and the same first error.
+
+usage: equiv.py NCC SRC_ROOT
+"""
+import glob
+import os
+import subprocess
+import sys
+
+ncc, root = sys.argv[1], sys.argv[2]
+patterns = ["test/lit/**/*.nc", "test/lit/**/*.ngc", "test/lit/**/*.ncir", "examples/*.nc"]
+programs = sorted({p for pat in patterns for p in glob.glob(os.path.join(root, pat), recursive=True)})
+
+
+def run(prog, engine):
+    args = [ncc, "compile", prog, "--emit=motion", "--engine=" + engine, "--max-seconds=20"]
+    oracle = os.path.join(os.path.dirname(prog), "Inputs", "oracle.machine")
+    if os.path.exists(oracle):
+        args.append("--machine=" + oracle)
+    p = subprocess.run(args, capture_output=True, text=True, timeout=120)
+    first_error = next((l for l in p.stderr.splitlines() if ": error: " in l), "")
+    return p.returncode, p.stdout, first_error
+
+
+failures = 0
+compared = 0
+for prog in programs:
+    e = run(prog, "eval")
+    j = run(prog, "jit")
+    compared += 1
+    rel = os.path.relpath(prog, root)
+    if e[0] != j[0]:
+        print("MISMATCH exit code %s: eval %d, jit %d\n  eval: %s\n  jit:  %s" % (rel, e[0], j[0], e[2], j[2]))
+        failures += 1
+    elif e[1] != j[1]:
+        el, jl = e[1].splitlines(), j[1].splitlines()
+        i = next((k for k in range(min(len(el), len(jl))) if el[k] != jl[k]), min(len(el), len(jl)))
+        print("MISMATCH motion %s at record %d:\n  eval: %s\n  jit:  %s" %
+              (rel, i + 1, el[i] if i < len(el) else "<end>", jl[i] if i < len(jl) else "<end>"))
+        failures += 1
+    elif e[2] != j[2]:
+        print("MISMATCH first error %s:\n  eval: %s\n  jit:  %s" % (rel, e[2], j[2]))
+        failures += 1
+print("engines compared on %d programs, %d mismatches" % (compared, failures))
+sys.exit(1 if failures else 0)
