@@ -543,6 +543,7 @@ struct Evaluator::Impl {
     }
     ++depth;
     for (long i = 0; i < (long)std::llround(count); ++i) {
+      checkTime(op.loc);  // a huge repeat count must still stop at the run-time limit
       if (newFrame) {
         Frame nf;
         for (double &l : nf.locals) l = vacantValue();
