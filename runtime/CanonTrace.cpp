@@ -33,8 +33,11 @@ void CanonTraceWriter::begin(int64_t n) {
   char tmp[48];
   ++seq_;
   // "%5d " then the N column: "N....." + blank, or N and the number left-aligned in 6 columns.
-  int len = std::snprintf(tmp, sizeof tmp, "%5lld ", (long long)seq_);
-  buf_.append(tmp, (size_t)len);
+  auto seq = std::to_chars(tmp, tmp + sizeof tmp, (long long)seq_);
+  size_t width = (size_t)(seq.ptr - tmp);
+  if (width < 5) buf_.append(5 - width, ' ');
+  buf_.append(tmp, width);
+  buf_.push_back(' ');
   if (n < 0) {
     buf_.append("N..... ");
   } else {

@@ -179,9 +179,11 @@ bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
   // Never let NaN or infinity reach positions: a diagnostic instead.
-  for (int i = 0; i < kWords; ++i)
-    if (c.has((Word)i) && !std::isfinite(c.w[i]))
+  for (uint32_t m = c.mask; m; m &= m - 1) {  // only the words present
+    int i = __builtin_ctz(m);
+    if (i < kWords && !std::isfinite(c.w[i]))
       return x.error(std::string("invalid number in ") + kWordLetters[i] + " word", "bad-number");
+  }
   bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
   if (motion && x.st.ended && !x.warnedAfterEnd) {
     x.warnedAfterEnd = true;
