@@ -50,6 +50,8 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
       }
       break;
     case ModeGroup::Plane: {
+      if (comp.active() && v != st.plane)
+        return error("Cannot change planes with cutter radius compensation on", "cutcomp-conflict");
       st.plane = v;
       MotionRecord r = record(RecordKind::Plane);
       r.ivalue = (int64_t)plane();
@@ -135,12 +137,47 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   return true;
 }
 
+bool Executor::Impl::execCutterComp(const MachineCmd &c) {
+  if (c.sub == 0) {  // G40: the pending move ends normal to its end point; the next one exits
+    if (comp.active()) {
+      comp.stop();
+      compExit = true;
+    }
+    st.cutterComp = 0;
+    return true;
+  }
+  if (st.cutterComp != 0) return error("Cannot turn cutter radius comp on when on", "cutcomp-already-on");
+  if (c.has(Word::D)) {
+    double d = c.get(Word::D);
+    if (d < 0 || d != std::floor(d) || d > 1e9)
+      return error(std::string(c.sub == 1 ? "G41" : "G42") + " requires D word to be a whole number", "unknown-tool");
+    cutterD = (int)d;
+  } else if (cutterD == 0) {
+    warning("cutter compensation without a D word: radius 0", "cutcomp-without-d");
+  }
+  double radius = 0;
+  if (cutterD != 0) {
+    auto it = machine.tools.find(cutterD);
+    if (it == machine.tools.end())
+      return error("Requested tool " + std::to_string(cutterD) + " not found in the tool table", "unknown-tool");
+    radius = it->second.radius;
+  }
+  if (radius > 0 && plane() != Plane::XY)
+    return error("cutter radius compensation is only supported in the XY plane (G17)", "cutcomp-plane");
+  st.cutterComp = c.sub;
+  compExit = false;
+  if (radius > 0) comp.start(c.sub == 1 ? 1 : -1, radius, st.position);
+  return true;
+}
+
 bool Executor::Impl::execStop(const MachineCmd &c) {
   switch ((StopKind)c.sub) {
   case StopKind::Program: emit(record(RecordKind::ProgramStop)); break;
   case StopKind::Optional: emit(record(RecordKind::OptionalStop)); break;
   case StopKind::End:
   case StopKind::EndRewind: {
+    comp.stop();  // flush the pending compensated move
+    compExit = false;
     MotionRecord r = record(RecordKind::ProgramEnd);
     r.ivalue = (StopKind)c.sub == StopKind::EndRewind ? 30 : 2;
     emit(r);
@@ -278,20 +315,7 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::Home: return x.execHome(c);
   case CmdKind::MachineMove: return x.execMachineMove(c);
   case CmdKind::ToolLength: return x.execToolLength(c);
-  case CmdKind::CutterComp:
-    x.st.cutterComp = c.sub;
-    if (c.sub != 0) {
-      if (c.has(Word::D))
-        x.cutterD = std::fabs(c.get(Word::D)) < 1e9 ? (int)c.get(Word::D) : -1;
-      else if (x.cutterD == 0)
-        x.warning("cutter compensation without a D word: radius 0", "cutcomp-without-d");
-      if (!x.warnedCutterComp) {
-        x.warnedCutterComp = true;
-        x.warning("cutter compensation is not applied yet: the programmed path is used",
-                  "cutcomp-unsupported");
-      }
-    }
-    return true;
+  case CmdKind::CutterComp: return x.execCutterComp(c);
   case CmdKind::WorkOffset:
     if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
     x.st.workOffset = c.sub;
@@ -313,6 +337,7 @@ bool Executor::exec(const MachineCmd &c) {
 
 bool Executor::finish() {
   Impl &x = *impl_;
+  x.comp.stop();
   if (!x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");
   return true;
 }

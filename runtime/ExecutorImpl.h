@@ -1,6 +1,7 @@
 // Private state of the executor, shared by its implementation files (Executor.cpp: dispatch,
 // modes and offsets; ExecutorMotion.cpp: moves, arcs and canned cycles).
 #pragma once
+#include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Executor.h"
 
@@ -9,7 +10,7 @@
 namespace ncc {
 
 struct Executor::Impl {
-  Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d) {
+  Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), comp(s) {
     g5x = m.workOffsets;
   }
   const Machine &machine;
@@ -38,7 +39,11 @@ struct Executor::Impl {
   std::vector<CycleStep> steps;
 
   int cutterD = 0;
-  bool warnedAfterEnd = false, warnedCutterComp = false;
+  // Cutter radius compensation: moves go through `comp` while it is active (radius > 0);
+  // compExit marks the move after G40, which starts from the compensated position.
+  CutterComp comp;
+  bool compExit = false;
+  bool warnedAfterEnd = false;
   double pathTolerance = 0;  // G64 P
 
   // --- helpers (Executor.cpp) ---
@@ -51,6 +56,8 @@ struct Executor::Impl {
   Plane plane() const;
   MotionRecord record(RecordKind k) const;
   void emit(const MotionRecord &r) { sink.record(r); }
+  // Emits a programmed motion record, through cutter compensation when it is on.
+  bool emitMove(const MotionRecord &r);
   bool error(std::string msg, std::string rule) {
     diags.error(loc, std::move(msg), std::move(rule));
     return false;
@@ -63,6 +70,9 @@ struct Executor::Impl {
   bool execToolLength(const MachineCmd &c);
   bool execSetOffset(const MachineCmd &c);
   bool execStop(const MachineCmd &c);
+  bool execCutterComp(const MachineCmd &c);
+  // rs274 refuses some motion while compensation is on (G28/G30, G53, canned cycles).
+  bool compForbids(const char *msg) { return comp.active() ? error(msg, "cutcomp-conflict") : true; }
 
   // --- motion (ExecutorMotion.cpp) ---
   bool execMove(const MachineCmd &c);

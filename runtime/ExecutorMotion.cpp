@@ -72,6 +72,21 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop) {
     inverseTimeRate(r.feed);
   }
   st.position = to;
+  return emitMove(r);
+}
+
+bool Executor::Impl::emitMove(const MotionRecord &r) {
+  if (comp.active()) return comp.add(r) || error(comp.error(), comp.rule());
+  if (compExit) {
+    compExit = false;
+    if (r.kind == RecordKind::Arc)
+      return error("The move just after exiting cutter compensation mode must be straight, not an arc",
+                   "cutcomp-exit-arc");
+    MotionRecord x = r;
+    x.start = comp.toolPosition();
+    emit(x);
+    return true;
+  }
   emit(r);
   return true;
 }
@@ -90,7 +105,9 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::CycleOff:
     if (!(c.mask & kAxisMask)) return true;
     return error("Cannot use axis values with G80", "motion-mode-none");
-  default: return cycle(c);
+  default:
+    if (!compForbids("Cannot use canned cycles with cutter compensation on")) return false;
+    return cycle(c);
   }
 }
 
@@ -180,13 +197,13 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   r.feed = moveFeed(std::hypot(sweep * radius, end[ax.d] - start[ax.d]));
   inverseTimeRate(r.feed);
   st.position = end;
-  emit(r);
-  return true;
+  return emitMove(r);
 }
 
 bool Executor::Impl::execHome(const MachineCmd &c) {
   // Rapid through the intermediate point (program coordinates), then the named axes (all when
   // none is named) to the stored reference position (machine coordinates).
+  if (!compForbids("Cannot use g28 or g30 with cutter radius comp")) return false;
   if (!moveTo(RecordKind::Rapid, target(c))) return false;
   const AxisVec &home = c.sub == 2 ? machine.home2 : machine.home1;
   bool any = c.mask & kAxisMask;
@@ -197,6 +214,7 @@ bool Executor::Impl::execHome(const MachineCmd &c) {
 }
 
 bool Executor::Impl::execMachineMove(const MachineCmd &c) {
+  if (!compForbids("Cannot use g53 with cutter radius comp")) return false;
   AxisVec t = st.position;
   for (int i = 0; i < kAxes; ++i)
     if (c.has((Word)i)) t[i] = c.get((Word)i) * axisScale(i);

@@ -1,0 +1,83 @@
+// Cutter radius compensation (G41/G42, G40) in the XY plane, as LinuxCNC's rs274 computes it:
+// each programmed line or arc is offset by the tool radius to the left (G41) or right (G42) of
+// the direction of travel; a convex corner gets an arc of the tool radius around the programmed
+// corner, a concave corner is cut at the intersection of the two offset paths, and a turn of
+// at most kSmoothTurn radians counts as smooth (no arc, no trimming). The first move after
+// G41/G42 (entry) starts at the uncompensated tool position; the move after G40 (exit) is
+// straight from the compensated position to the programmed point.
+// Output lags one move: a move is emitted once the next one tells how its end is cut. Memory is
+// bounded (one pending move), so the executor stays streaming.
+#pragma once
+#include "ir/MotionIR.h"
+
+#include <string>
+
+namespace ncc {
+
+struct Point2 {
+  double x = 0, y = 0;
+};
+
+// One programmed XY path element: a line, or a circular arc around `center` (dir +1 counter-
+// clockwise, -1 clockwise).
+struct PathElem {
+  bool arc = false;
+  Point2 start, end, center;
+  int dir = 0;
+};
+
+// Side of the tool: +1 left (G41), -1 right (G42).
+Point2 startTangent(const PathElem &e);  // unit direction of travel at the start
+Point2 endTangent(const PathElem &e);    // ... at the end
+// Radius of the offset arc (may be <= 0: the tool does not fit inside the arc).
+double offsetRadius(const PathElem &e, int side, double r);
+// The point at distance r to `side` of the start (end) of `e`, normal to its direction.
+Point2 offsetStart(const PathElem &e, int side, double r);
+Point2 offsetEnd(const PathElem &e, int side, double r);
+// Signed turn from direction t0 to t1 in (-pi, pi]: positive = left (counter-clockwise).
+double turnAngle(Point2 t0, Point2 t1);
+enum class CornerKind { Smooth, Convex, Concave };
+constexpr double kSmoothTurn = 0.05;  // radians; measured on rs274 (0.0499 smooth, 0.0501 not)
+// Convex: the tool goes round the outside of the corner (a left-side tool turning right, or a
+// reversal); concave: the offset paths cross.
+CornerKind cornerKind(double turn, int side);
+// Where the offset of `a` (near its end) meets the offset of `b` (near its start); the
+// intersection nearest to the offset corner points. False when they do not meet.
+bool offsetIntersection(const PathElem &a, const PathElem &b, int side, double r, Point2 &out);
+
+class CutterComp {
+public:
+  explicit CutterComp(MotionSink &out) : out_(out) {}
+  bool active() const { return side_ != 0; }
+  // G41/G42 with radius r > 0 (mm); `tool` = the current (uncompensated) position.
+  void start(int side, double r, const AxisVec &tool);
+  // A programmed motion record (Rapid, Linear or Arc in the XY plane; start = programmed start).
+  // Returns false on an error (message and rule in error()/rule()); nothing is emitted then.
+  bool add(const MotionRecord &programmed);
+  // G40 (or program end): emits the pending move ending normal to its end point and stops.
+  // The next move (exit) then starts from toolPosition().
+  void stop();
+  // Where the tool really is after stop(); the exit move starts there.
+  const AxisVec &toolPosition() const { return tool_; }
+  const std::string &error() const { return errMsg_; }
+  const std::string &rule() const { return errRule_; }
+
+private:
+  bool fail(const char *msg, const char *rule);
+  void emitPending(Point2 end, bool entryArc);
+  void emitCornerArc(const PathElem &next, const MotionRecord &nextRec);
+
+  MotionSink &out_;
+  int side_ = 0;
+  double r_ = 0;
+  AxisVec tool_{};      // compensated tool position (end of what was emitted)
+  bool entry_ = false;  // the next XY move is the entry move
+  bool havePending_ = false;
+  bool pendingEntry_ = false;  // the pending move is the entry move
+  double feed_ = 0;             // of the last feed move (corner arcs are feed moves)
+  MotionRecord pending_;
+  PathElem pendingElem_;
+  std::string errMsg_, errRule_;
+};
+
+}  // namespace ncc
