@@ -96,7 +96,10 @@ bool Session::load(uint32_t file, ir::Module &out) {
       return false;
     }
   }
-  if (!parseProgram(kindOf(file), sm, file, frontendOptions(file), diags, out) || diags.hasErrors()) return false;
+  // Count this file's errors only: lint reads several files with one Diagnostics.
+  unsigned before = diags.errorCount();
+  if (!parseProgram(kindOf(file), sm, file, frontendOptions(file), diags, out) || diags.errorCount() != before)
+    return false;
   PassContext ctx;
   ctx.machine = &machine;
   ctx.limits = opts.limits;
