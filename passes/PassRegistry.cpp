@@ -28,13 +28,14 @@ const PassInfo *findPass(std::string_view name) {
 }
 
 bool runPasses(ir::Module &m, const std::vector<std::string> &names, Diagnostics &diags, PassContext &ctx) {
+  unsigned before = diags.errorCount();
   for (auto &n : names) {
     const PassInfo *p = findPass(n);
     if (!p) {
       diags.error({}, fmt::format("unknown pass '{}'", n));
       return false;
     }
-    if (!p->run(m, diags, ctx) || diags.hasErrors()) return false;
+    if (!p->run(m, diags, ctx) || diags.errorCount() != before) return false;
   }
   return true;
 }

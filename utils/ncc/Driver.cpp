@@ -96,7 +96,10 @@ bool Session::load(uint32_t file, ir::Module &out) {
       return false;
     }
   }
-  if (!parseProgram(kindOf(file), sm, file, frontendOptions(file), diags, out) || diags.hasErrors()) return false;
+  // Count this file's errors only: lint reads several files with one Diagnostics.
+  unsigned before = diags.errorCount();
+  if (!parseProgram(kindOf(file), sm, file, frontendOptions(file), diags, out) || diags.errorCount() != before)
+    return false;
   PassContext ctx;
   ctx.machine = &machine;
   ctx.limits = opts.limits;
@@ -121,34 +124,10 @@ bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blo
 }
 
 bool Session::execute(uint32_t file, MotionSink &sink, uint64_t *blocks) {
-  SourceKind kind = kindOf(file);
   if (opts.engine == "eval") {
-    if (auto stream = openBlockStream(kind, sm, file, frontendOptions(file), diags)) {
-      // Flat program: parse, check and run a chunk of blocks at a time.
-      bool verifyChunks = std::getenv("NCC_VERIFY_CHUNKS") != nullptr;
-      Executor exec(machine, sink, diags);
-      ExecutorSink es(exec);
-      Evaluator ev(es, diags, opts.limits);
-      PassContext ctx;
-      ctx.machine = &machine;
-      ir::Module chunk;
-      chunk.name = sm.name(file);
-      chunk.functions.emplace_back();
-      chunk.functions[0].name = "main";
-      bool more = true;
-      while (more && !ev.ended()) {
-        chunk.functions[0].body.clear();
-        more = stream->next(chunk.functions[0].body, 4096);
-        if (diags.hasErrors()) return false;
-        // Front-end output is verified by the test suite; per-chunk checks cost ~15% here.
-        if (verifyChunks && !runPasses(chunk, {"verify", "sema"}, diags, ctx)) return false;
-        if (!ev.run(chunk)) return false;
-      }
-      bool ok = exec.finish();
-      if (blocks) *blocks = exec.blockCount();
-      return ok && !diags.hasErrors();
-    }
-    if (diags.hasErrors()) return false;
+    bool streamed = false;
+    bool ok = executeStreamed(file, sink, blocks, streamed);
+    if (streamed || !ok) return ok;
   }
   ir::Module m;
   if (!load(file, m)) return false;
