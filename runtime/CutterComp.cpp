@@ -74,6 +74,30 @@ int intersect(const OffsetCurve &a, const OffsetCurve &b, Point2 out[2]) {
   return 2;
 }
 
+// rs274's messages for a concave corner whose offset paths do not meet.
+const char *noCrossing(const PathElem &a, const PathElem &b) {
+  if (!a.arc) return "Arc move in concave corner cannot be reached by the tool without gouging";
+  return b.arc ? "Arc to arc motion makes a corner the compensated tool can't fit in without gouging"
+               : "Arc to straight motion makes a corner the compensated tool can't fit in without gouging";
+}
+
+// Counter-clockwise angle from a to b in [0, 2 pi).
+double ccwAngle(Point2 a, Point2 b) {
+  double t = std::atan2(cross(a, b), dot(a, b));
+  return t < 0 ? t + 2 * M_PI : t;
+}
+
+// True when cutting the move `e` (which the tool starts at `from`) at `cut` would make it run
+// backwards: the tool cannot reach the corner without gouging.
+bool cutsBehindStart(const PathElem &e, Point2 from, Point2 cut, int side, double r) {
+  if (!e.arc) return dot(sub(cut, from), endTangent(e)) < 0;
+  Point2 c = e.center, s = sub(from, c), n = sub(offsetEnd(e, side, r), c), x = sub(cut, c);
+  auto sweep = [&](Point2 to) { return e.dir > 0 ? ccwAngle(s, to) : ccwAngle(to, s); };
+  double full = sweep(n);
+  if (full < 1e-9) full = 2 * M_PI;  // a full circle
+  return sweep(x) > full + 1e-9;
+}
+
 }  // namespace
 
 Point2 startTangent(const PathElem &e) { return e.arc ? arcTangent(e, e.start) : unit(sub(e.end, e.start)); }
@@ -93,10 +117,12 @@ Point2 offsetEnd(const PathElem &e, int side, double r) {
 
 double turnAngle(Point2 t0, Point2 t1) { return std::atan2(cross(t0, t1), dot(t0, t1)); }
 
-CornerKind cornerKind(double turn, int side) {
+CornerKind cornerKind(double turn, int side, bool lines) {
   if (std::fabs(turn) <= kSmoothTurn) return CornerKind::Smooth;
-  // A reversal has no crossing: the tool goes round the corner point.
-  if (side * turn > 0 && std::fabs(turn) < M_PI - 1e-9) return CornerKind::Concave;
+  // A reversal has no usable crossing: the tool goes round the corner. Between two lines rs274
+  // counts turns within kSmoothTurn of a reversal as one; with an arc it still cuts them.
+  double reversal = lines ? M_PI - kSmoothTurn : M_PI - 1e-9;
+  if (side * turn > 0 && std::fabs(turn) < reversal) return CornerKind::Concave;
   return CornerKind::Convex;
 }
 
@@ -193,13 +219,16 @@ bool CutterComp::add(const MotionRecord &rec) {
     pendingEntry_ = entry_;
     entry_ = false;
   } else {
-    CornerKind k = cornerKind(turnAngle(endTangent(pendingElem_), startTangent(e)), side_);
-    Point2 cut;
+    CornerKind k = cornerKind(turnAngle(endTangent(pendingElem_), startTangent(e)), side_, !pendingElem_.arc && !e.arc);
+    Point2 cut = offsetEnd(pendingElem_, side_, r_);
     if (k == CornerKind::Concave && !offsetIntersection(pendingElem_, e, side_, r_, cut))
-      return fail(e.arc ? "Arc move in concave corner cannot be reached by the tool without gouging"
-                        : "Line move in concave corner cannot be reached by the tool without gouging",
+      return fail(noCrossing(pendingElem_, e), "cutcomp-gouge");
+    // The pending move may run backwards: cut before its start here, or started past its end
+    // by the previous concave corner.
+    if ((k == CornerKind::Concave || (!pendingElem_.arc && !e.arc)) && cutsBehindStart(pendingElem_, xy(tool_), cut, side_, r_))
+      return fail(pendingElem_.arc ? "Arc move in concave corner cannot be reached by the tool without gouging"
+                                   : "Straight feed in concave corner cannot be reached by the tool without gouging",
                   "cutcomp-gouge");
-    if (k != CornerKind::Concave) cut = offsetEnd(pendingElem_, side_, r_);
     emitPending(cut, pendingEntry_);
     if (k == CornerKind::Convex) emitCornerArc(e, rec);
     pendingEntry_ = false;
@@ -210,10 +239,17 @@ bool CutterComp::add(const MotionRecord &rec) {
   return true;
 }
 
-void CutterComp::stop() {
-  if (havePending_) emitPending(offsetEnd(pendingElem_, side_, r_), pendingEntry_);
+bool CutterComp::stop(bool check) {
+  if (havePending_) {
+    Point2 end = offsetEnd(pendingElem_, side_, r_);
+    // rs274 refuses a G40 after a straight move that a concave corner made run backwards.
+    if (check && !pendingElem_.arc && cutsBehindStart(pendingElem_, xy(tool_), end, side_, r_))
+      return fail("Straight feed in concave corner cannot be reached by the tool without gouging", "cutcomp-gouge");
+    emitPending(end, pendingEntry_);
+  }
   side_ = 0;
   entry_ = false;
+  return true;
 }
 
 }  // namespace ncc

@@ -39,8 +39,9 @@ double turnAngle(Point2 t0, Point2 t1);
 enum class CornerKind { Smooth, Convex, Concave };
 constexpr double kSmoothTurn = 0.05;  // radians; measured on rs274 (0.0499 smooth, 0.0501 not)
 // Convex: the tool goes round the outside of the corner (a left-side tool turning right, or a
-// reversal); concave: the offset paths cross.
-CornerKind cornerKind(double turn, int side);
+// reversal); concave: the offset paths cross. `lines`: both moves are straight (rs274 treats a
+// line-line turn within kSmoothTurn of a reversal as a reversal).
+CornerKind cornerKind(double turn, int side, bool lines);
 // Where the offset of `a` (near its end) meets the offset of `b` (near its start); the
 // intersection nearest to the offset corner points. False when they do not meet.
 bool offsetIntersection(const PathElem &a, const PathElem &b, int side, double r, Point2 &out);
@@ -55,8 +56,9 @@ public:
   // Returns false on an error (message and rule in error()/rule()); nothing is emitted then.
   bool add(const MotionRecord &programmed);
   // G40 (or program end): emits the pending move ending normal to its end point and stops.
-  // The next move (exit) then starts from toolPosition().
-  void stop();
+  // The next move (exit) then starts from toolPosition(). With `check` (G40) a pending straight
+  // move that runs backwards is an error (false, nothing emitted), as in rs274.
+  bool stop(bool check = false);
   // Where the tool really is after stop(); the exit move starts there.
   const AxisVec &toolPosition() const { return tool_; }
   const std::string &error() const { return errMsg_; }

@@ -140,7 +140,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
 bool Executor::Impl::execCutterComp(const MachineCmd &c) {
   if (c.sub == 0) {  // G40: the pending move ends normal to its end point; the next one exits
     if (comp.active()) {
-      comp.stop();
+      if (!comp.stop(true)) return error(comp.error(), comp.rule());
       compExit = true;
     }
     st.cutterComp = 0;

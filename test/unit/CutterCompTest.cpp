@@ -78,17 +78,22 @@ TEST(CutterCompGeometry, CornerKinds) {
   double right = turnAngle({1, 0}, {0, -1}), left = turnAngle({1, 0}, {0, 1});
   EXPECT_NEAR(right, -M_PI / 2, 1e-12);
   EXPECT_NEAR(left, M_PI / 2, 1e-12);
-  EXPECT_EQ(cornerKind(right, 1), CornerKind::Convex);   // left tool, right turn: outside
-  EXPECT_EQ(cornerKind(left, 1), CornerKind::Concave);
-  EXPECT_EQ(cornerKind(right, -1), CornerKind::Concave);
-  EXPECT_EQ(cornerKind(left, -1), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(right, 1, true), CornerKind::Convex);   // left tool, right turn: outside
+  EXPECT_EQ(cornerKind(left, 1, true), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(right, -1, true), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(left, -1, true), CornerKind::Convex);
   // rs274's smooth limit: 0.0499 rad no corner treatment, 0.0501 a corner.
-  EXPECT_EQ(cornerKind(-0.0499, 1), CornerKind::Smooth);
-  EXPECT_EQ(cornerKind(-0.0501, 1), CornerKind::Convex);
-  EXPECT_EQ(cornerKind(0.0501, 1), CornerKind::Concave);
-  // A reversal goes round the corner whichever side the tool is on.
-  EXPECT_EQ(cornerKind(turnAngle({1, 0}, {-1, 0}), 1), CornerKind::Convex);
-  EXPECT_EQ(cornerKind(turnAngle({1, 0}, {-1, 0}), -1), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(-0.0499, 1, true), CornerKind::Smooth);
+  EXPECT_EQ(cornerKind(-0.0501, 1, true), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(0.0501, 1, true), CornerKind::Concave);
+  // A reversal goes round the corner whichever side the tool is on; between two lines so does
+  // a turn within 0.05 rad of one (rs274: 177.1 degrees left with G41 gouges, 177.2 goes round).
+  EXPECT_EQ(cornerKind(turnAngle({1, 0}, {-1, 0}), 1, false), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(turnAngle({1, 0}, {-1, 0}), -1, false), CornerKind::Convex);
+  double nearReversal = 177.2 * M_PI / 180;
+  EXPECT_EQ(cornerKind(nearReversal, 1, true), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(nearReversal, 1, false), CornerKind::Concave);  // rs274 cuts line-arc ones
+  EXPECT_EQ(cornerKind(177.1 * M_PI / 180, 1, true), CornerKind::Concave);
 }
 
 TEST(CutterCompGeometry, OffsetIntersections) {
@@ -165,6 +170,11 @@ TEST(CutterCompStage, Errors) {
   EXPECT_FALSE(comp.add(arcRec(10, 0, 0, 0, 5, 0, 1)));
   EXPECT_EQ(comp.rule(), "cutcomp-gouge");
   EXPECT_TRUE(out.records.empty());  // nothing emitted by the failed moves
+  // A 170 degree left turn: the cut lies behind the start of the line (rs274 refuses it).
+  double a = 170 * M_PI / 180;
+  EXPECT_FALSE(comp.add(lineRec(10, 0, 10 + 10 * std::cos(a), 10 * std::sin(a))));
+  EXPECT_EQ(comp.error(), "Straight feed in concave corner cannot be reached by the tool without gouging");
+  EXPECT_TRUE(out.records.empty());
 }
 
 // --- through the executor ---
