@@ -117,13 +117,14 @@ Point2 offsetEnd(const PathElem &e, int side, double r) {
 
 double turnAngle(Point2 t0, Point2 t1) { return std::atan2(cross(t0, t1), dot(t0, t1)); }
 
-CornerKind cornerKind(double turn, int side, bool lines) {
+CornerKind cornerKind(double turn, int side, bool outsideArc) {
   if (std::fabs(turn) <= kSmoothTurn) return CornerKind::Smooth;
-  // A reversal has no usable crossing: the tool goes round the corner. Between two lines rs274
-  // counts turns within kSmoothTurn of a reversal as one; with an arc it still cuts them.
-  double reversal = lines ? M_PI - kSmoothTurn : M_PI - 1e-9;
-  if (side * turn > 0 && std::fabs(turn) < reversal) return CornerKind::Concave;
-  return CornerKind::Convex;
+  double u = side * turn;  // > 0: towards the tool side
+  // Near a reversal rs274 goes round the corner, unless the deciding arc has the tool outside:
+  // then the concave range runs kSmoothTurn past the reversal.
+  double limit = M_PI - kSmoothTurn;
+  bool concave = outsideArc ? (u > kSmoothTurn || u < -limit) : (u > kSmoothTurn && u < limit);
+  return concave ? CornerKind::Concave : CornerKind::Convex;
 }
 
 bool offsetIntersection(const PathElem &a, const PathElem &b, int side, double r, Point2 &out) {
@@ -133,6 +134,14 @@ bool offsetIntersection(const PathElem &a, const PathElem &b, int side, double r
   Point2 near = mul(plus(offsetEnd(a, side, r), offsetStart(b, side, r)), 0.5);
   out = pts[0];
   if (n == 2 && dist(pts[1], near) < dist(pts[0], near)) out = pts[1];
+  // A line meeting the outside of an arc: rs274 takes where the line enters the circle (line
+  // then arc) or leaves it (arc then line), even when the other crossing is nearer (which
+  // happens past a reversal). pts[0] is the crossing earlier along the line.
+  const PathElem &arcElem = a.arc ? a : b;
+  if (n == 2 && a.arc != b.arc && side * arcElem.dir < 0) out = a.arc ? pts[1] : pts[0];
+  // Two arcs with the tool outside both: the crossing on the tool side of the line from the
+  // first centre to the second (pts[0] is left of it).
+  if (n == 2 && a.arc && b.arc && side * a.dir < 0 && side * b.dir < 0) out = side > 0 ? pts[0] : pts[1];
   return true;
 }
 
@@ -219,7 +228,10 @@ bool CutterComp::add(const MotionRecord &rec) {
     pendingEntry_ = entry_;
     entry_ = false;
   } else {
-    CornerKind k = cornerKind(turnAngle(endTangent(pendingElem_), startTangent(e)), side_, !pendingElem_.arc && !e.arc);
+    // The next move decides when it is an arc, else the pending one (measured on rs274).
+    const PathElem &decides = e.arc ? e : pendingElem_;
+    bool outside = decides.arc && side_ * decides.dir < 0;
+    CornerKind k = cornerKind(turnAngle(endTangent(pendingElem_), startTangent(e)), side_, outside);
     Point2 cut = offsetEnd(pendingElem_, side_, r_);
     if (k == CornerKind::Concave && !offsetIntersection(pendingElem_, e, side_, r_, cut))
       return fail(noCrossing(pendingElem_, e), "cutcomp-gouge");

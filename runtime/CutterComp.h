@@ -38,10 +38,11 @@ Point2 offsetEnd(const PathElem &e, int side, double r);
 double turnAngle(Point2 t0, Point2 t1);
 enum class CornerKind { Smooth, Convex, Concave };
 constexpr double kSmoothTurn = 0.05;  // radians; measured on rs274 (0.0499 smooth, 0.0501 not)
-// Convex: the tool goes round the outside of the corner (a left-side tool turning right, or a
-// reversal); concave: the offset paths cross. `lines`: both moves are straight (rs274 treats a
-// line-line turn within kSmoothTurn of a reversal as a reversal).
-CornerKind cornerKind(double turn, int side, bool lines);
+// Convex: the tool goes round the outside of the corner (a left-side tool turning right);
+// concave: the offset paths cross. Near a reversal (within kSmoothTurn) rs274 goes round, except
+// when the deciding arc (the next move if it is an arc, else the pending one) has the tool on
+// its outside (`outsideArc`): then turns up to kSmoothTurn past the reversal are concave.
+CornerKind cornerKind(double turn, int side, bool outsideArc);
 // Where the offset of `a` (near its end) meets the offset of `b` (near its start); the
 // intersection nearest to the offset corner points. False when they do not meet.
 bool offsetIntersection(const PathElem &a, const PathElem &b, int side, double r, Point2 &out);

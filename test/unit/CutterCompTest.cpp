@@ -78,22 +78,26 @@ TEST(CutterCompGeometry, CornerKinds) {
   double right = turnAngle({1, 0}, {0, -1}), left = turnAngle({1, 0}, {0, 1});
   EXPECT_NEAR(right, -M_PI / 2, 1e-12);
   EXPECT_NEAR(left, M_PI / 2, 1e-12);
-  EXPECT_EQ(cornerKind(right, 1, true), CornerKind::Convex);   // left tool, right turn: outside
-  EXPECT_EQ(cornerKind(left, 1, true), CornerKind::Concave);
-  EXPECT_EQ(cornerKind(right, -1, true), CornerKind::Concave);
-  EXPECT_EQ(cornerKind(left, -1, true), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(right, 1, false), CornerKind::Convex);   // left tool, right turn: outside
+  EXPECT_EQ(cornerKind(left, 1, false), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(right, -1, false), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(left, -1, false), CornerKind::Convex);
   // rs274's smooth limit: 0.0499 rad no corner treatment, 0.0501 a corner.
-  EXPECT_EQ(cornerKind(-0.0499, 1, true), CornerKind::Smooth);
-  EXPECT_EQ(cornerKind(-0.0501, 1, true), CornerKind::Convex);
-  EXPECT_EQ(cornerKind(0.0501, 1, true), CornerKind::Concave);
-  // A reversal goes round the corner whichever side the tool is on; between two lines so does
-  // a turn within 0.05 rad of one (rs274: 177.1 degrees left with G41 gouges, 177.2 goes round).
+  EXPECT_EQ(cornerKind(-0.0499, 1, false), CornerKind::Smooth);
+  EXPECT_EQ(cornerKind(-0.0501, 1, false), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(0.0501, 1, false), CornerKind::Concave);
+  // Near a reversal rs274 goes round the corner (177.1 degrees left with G41 is a cut, 177.2
+  // goes round) unless the deciding arc has the tool outside: then the cut range runs 0.05 rad
+  // past the reversal (177.2 right is a cut, 177 right goes round).
+  double d177_1 = 177.1 * M_PI / 180, d177_2 = 177.2 * M_PI / 180, d177 = 177 * M_PI / 180;
   EXPECT_EQ(cornerKind(turnAngle({1, 0}, {-1, 0}), 1, false), CornerKind::Convex);
   EXPECT_EQ(cornerKind(turnAngle({1, 0}, {-1, 0}), -1, false), CornerKind::Convex);
-  double nearReversal = 177.2 * M_PI / 180;
-  EXPECT_EQ(cornerKind(nearReversal, 1, true), CornerKind::Convex);
-  EXPECT_EQ(cornerKind(nearReversal, 1, false), CornerKind::Concave);  // rs274 cuts line-arc ones
-  EXPECT_EQ(cornerKind(177.1 * M_PI / 180, 1, true), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(d177_1, 1, false), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(d177_2, 1, false), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(d177_2, 1, true), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(-d177_2, 1, true), CornerKind::Concave);
+  EXPECT_EQ(cornerKind(-d177, 1, true), CornerKind::Convex);
+  EXPECT_EQ(cornerKind(d177_2, -1, true), CornerKind::Concave);  // mirrored for a right tool
 }
 
 TEST(CutterCompGeometry, OffsetIntersections) {
