@@ -89,13 +89,21 @@ double ccwAngle(Point2 a, Point2 b) {
 
 // True when cutting the move `e` (which the tool starts at `from`) at `cut` would make it run
 // backwards: the tool cannot reach the corner without gouging.
-bool cutsBehindStart(const PathElem &e, Point2 from, Point2 cut, int side, double r) {
+bool cutsBehindStart(const PathElem &e, Point2 from, Point2 cut) {
   if (!e.arc) return dot(sub(cut, from), endTangent(e)) < 0;
-  Point2 c = e.center, s = sub(from, c), n = sub(offsetEnd(e, side, r), c), x = sub(cut, c);
-  auto sweep = [&](Point2 to) { return e.dir > 0 ? ccwAngle(s, to) : ccwAngle(to, s); };
-  double full = sweep(n);
-  if (full < 1e-9) full = 2 * M_PI;  // a full circle
-  return sweep(x) > full + 1e-9;
+  // Angles along the arc's direction from its programmed start, in a window centred on the
+  // middle of the programmed sweep, so that points cut a little before or after either end
+  // keep their order.
+  Point2 s0 = sub(e.start, e.center);
+  auto along = [&](Point2 p) {
+    Point2 v = sub(p, e.center);
+    return e.dir > 0 ? ccwAngle(s0, v) : ccwAngle(v, s0);
+  };
+  double sweep = along(e.end);
+  if (sweep < 1e-9) sweep = 2 * M_PI;  // a full circle
+  double lo = sweep / 2 - M_PI;
+  auto inWindow = [&](double t) { return t >= lo + 2 * M_PI ? t - 2 * M_PI : t; };
+  return inWindow(along(cut)) < inWindow(along(from));
 }
 
 }  // namespace
@@ -236,8 +244,9 @@ bool CutterComp::add(const MotionRecord &rec) {
     if (k == CornerKind::Concave && !offsetIntersection(pendingElem_, e, side_, r_, cut))
       return fail(noCrossing(pendingElem_, e), "cutcomp-gouge");
     // The pending move may run backwards: cut before its start here, or started past its end
-    // by the previous concave corner.
-    if ((k == CornerKind::Concave || (!pendingElem_.arc && !e.arc)) && cutsBehindStart(pendingElem_, xy(tool_), cut, side_, r_))
+    // by the previous concave corner. rs274 lets the entry move run backwards.
+    if (!pendingEntry_ && (k == CornerKind::Concave || (!pendingElem_.arc && !e.arc)) &&
+        cutsBehindStart(pendingElem_, xy(tool_), cut))
       return fail(pendingElem_.arc ? "Arc move in concave corner cannot be reached by the tool without gouging"
                                    : "Straight feed in concave corner cannot be reached by the tool without gouging",
                   "cutcomp-gouge");
@@ -255,7 +264,7 @@ bool CutterComp::stop(bool check) {
   if (havePending_) {
     Point2 end = offsetEnd(pendingElem_, side_, r_);
     // rs274 refuses a G40 after a straight move that a concave corner made run backwards.
-    if (check && !pendingElem_.arc && cutsBehindStart(pendingElem_, xy(tool_), end, side_, r_))
+    if (check && !pendingElem_.arc && cutsBehindStart(pendingElem_, xy(tool_), end))
       return fail("Straight feed in concave corner cannot be reached by the tool without gouging", "cutcomp-gouge");
     emitPending(end, pendingEntry_);
   }

@@ -174,11 +174,14 @@ TEST(CutterCompStage, Errors) {
   EXPECT_FALSE(comp.add(arcRec(10, 0, 0, 0, 5, 0, 1)));
   EXPECT_EQ(comp.rule(), "cutcomp-gouge");
   EXPECT_TRUE(out.records.empty());  // nothing emitted by the failed moves
-  // A 170 degree left turn: the cut lies behind the start of the line (rs274 refuses it).
+  // A 170 degree left turn: the cut lies behind the start of the line (rs274 refuses it; it
+  // lets the entry move run backwards, so this needs a second line).
+  ASSERT_TRUE(comp.add(lineRec(10, 0, 20, 0)));
+  size_t emitted = out.records.size();
   double a = 170 * M_PI / 180;
-  EXPECT_FALSE(comp.add(lineRec(10, 0, 10 + 10 * std::cos(a), 10 * std::sin(a))));
+  EXPECT_FALSE(comp.add(lineRec(20, 0, 20 + 10 * std::cos(a), 10 * std::sin(a))));
   EXPECT_EQ(comp.error(), "Straight feed in concave corner cannot be reached by the tool without gouging");
-  EXPECT_TRUE(out.records.empty());
+  EXPECT_EQ(out.records.size(), emitted);
 }
 
 // --- through the executor ---
