@@ -81,6 +81,15 @@ const char *noCrossing(const PathElem &a, const PathElem &b) {
                : "Arc to straight motion makes a corner the compensated tool can't fit in without gouging";
 }
 
+// rs274's messages for a move that a concave corner makes run backwards.
+const char *backwards(RecordKind k) {
+  switch (k) {
+  case RecordKind::Arc: return "Arc move in concave corner cannot be reached by the tool without gouging";
+  case RecordKind::Rapid: return "Straight traverse in concave corner cannot be reached by the tool without gouging";
+  default: return "Straight feed in concave corner cannot be reached by the tool without gouging";
+  }
+}
+
 // Counter-clockwise angle from a to b in [0, 2 pi).
 double ccwAngle(Point2 a, Point2 b) {
   double t = std::atan2(cross(a, b), dot(a, b));
@@ -161,6 +170,8 @@ void CutterComp::start(int side, double r, const AxisVec &tool) {
   tool_ = tool;
   entry_ = true;
   havePending_ = false;
+  afterZ_ = false;
+  held_.clear();
 }
 
 bool CutterComp::fail(const char *msg, const char *rule) {
@@ -188,22 +199,41 @@ void CutterComp::emitPending(Point2 end, bool entryArc) {
   out_.record(o);
   tool_ = o.end;
   havePending_ = false;
+  for (MotionRecord &z : held_) emitAtTool(z);
+  held_.clear();
+}
+
+void CutterComp::emitAtTool(MotionRecord o) {
+  o.start = tool_;
+  o.end[0] = tool_[0];
+  o.end[1] = tool_[1];
+  out_.record(o);
+  tool_ = o.end;
 }
 
 void CutterComp::emitCornerArc(const PathElem &next, const MotionRecord &nextRec) {
   MotionRecord a = nextRec;
-  a.kind = RecordKind::Arc;
-  a.plane = Plane::XY;
   a.exactStop = false;
   a.start = a.end = tool_;
   Point2 to = offsetStart(next, side_, r_);
   a.end[0] = to.x;
   a.end[1] = to.y;
-  a.center = {next.start.x, next.start.y, tool_[2]};
-  a.turns = -side_;  // round a left-side corner clockwise
-  a.feed = feed_;
+  if (nextRec.kind != RecordKind::Rapid) {
+    a.kind = RecordKind::Arc;
+    a.plane = Plane::XY;
+    a.center = {next.start.x, next.start.y, tool_[2]};
+    a.turns = -side_;  // round a left-side corner clockwise
+    a.feed = feed_;
+  }  // before a rapid rs274 traverses straight round the corner
   out_.record(a);
   tool_ = a.end;
+}
+
+CornerKind CutterComp::corner(const PathElem &a, const PathElem &b) const {
+  // The next move decides when it is an arc, else the previous one (measured on rs274).
+  const PathElem &decides = b.arc ? b : a;
+  bool outside = decides.arc && side_ * decides.dir < 0;
+  return cornerKind(turnAngle(endTangent(a), startTangent(b)), side_, outside);
 }
 
 bool CutterComp::add(const MotionRecord &rec) {
@@ -218,28 +248,32 @@ bool CutterComp::add(const MotionRecord &rec) {
   }
   if (rec.kind != RecordKind::Rapid) feed_ = rec.feed;
   if (!e.arc && dist(e.start, e.end) < 1e-12) {
-    // No XY motion (a Z move): the pending move ends normal to its end point, the tool keeps
-    // its compensated XY.
-    if (havePending_) emitPending(offsetEnd(pendingElem_, side_, r_), pendingEntry_);
-    MotionRecord o = rec;
-    o.start = tool_;
-    o.end[0] = tool_[0];
-    o.end[1] = tool_[1];
-    out_.record(o);
-    tool_ = o.end;
+    // No XY motion (a Z move): rs274 holds it with the pending move, which still ends where the
+    // next XY move says; the tool keeps its compensated XY. A long run of them is let go (and
+    // the pending move ends normal to its end point) to keep memory bounded.
+    if (havePending_ && held_.size() < kMaxHeld) {
+      held_.push_back(rec);
+      return true;
+    }
+    if (havePending_) {
+      emitPending(offsetEnd(pendingElem_, side_, r_), pendingEntry_);
+      lastElem_ = pendingElem_;
+      afterZ_ = true;
+    }
+    emitAtTool(rec);
     return true;
   }
   if (!havePending_) {
     if (entry_ && dist(xy(tool_), e.end) <= r_)
       return fail("Length of cutter compensation entry move is not greater than the tool radius",
                   "cutcomp-entry-too-short");
+    // After a Z move rs274 still goes round a convex corner with the move before it.
+    if (afterZ_ && corner(lastElem_, e) == CornerKind::Convex) emitCornerArc(e, rec);
+    afterZ_ = false;
     pendingEntry_ = entry_;
     entry_ = false;
   } else {
-    // The next move decides when it is an arc, else the pending one (measured on rs274).
-    const PathElem &decides = e.arc ? e : pendingElem_;
-    bool outside = decides.arc && side_ * decides.dir < 0;
-    CornerKind k = cornerKind(turnAngle(endTangent(pendingElem_), startTangent(e)), side_, outside);
+    CornerKind k = corner(pendingElem_, e);
     Point2 cut = offsetEnd(pendingElem_, side_, r_);
     if (k == CornerKind::Concave && !offsetIntersection(pendingElem_, e, side_, r_, cut))
       return fail(noCrossing(pendingElem_, e), "cutcomp-gouge");
@@ -247,9 +281,7 @@ bool CutterComp::add(const MotionRecord &rec) {
     // by the previous concave corner. rs274 lets the entry move run backwards.
     if (!pendingEntry_ && (k == CornerKind::Concave || (!pendingElem_.arc && !e.arc)) &&
         cutsBehindStart(pendingElem_, xy(tool_), cut))
-      return fail(pendingElem_.arc ? "Arc move in concave corner cannot be reached by the tool without gouging"
-                                   : "Straight feed in concave corner cannot be reached by the tool without gouging",
-                  "cutcomp-gouge");
+      return fail(backwards(pending_.kind), "cutcomp-gouge");
     emitPending(cut, pendingEntry_);
     if (k == CornerKind::Convex) emitCornerArc(e, rec);
     pendingEntry_ = false;
@@ -265,7 +297,7 @@ bool CutterComp::stop(bool check) {
     Point2 end = offsetEnd(pendingElem_, side_, r_);
     // rs274 refuses a G40 after a straight move that a concave corner made run backwards.
     if (check && !pendingElem_.arc && cutsBehindStart(pendingElem_, xy(tool_), end))
-      return fail("Straight feed in concave corner cannot be reached by the tool without gouging", "cutcomp-gouge");
+      return fail(backwards(pending_.kind), "cutcomp-gouge");
     emitPending(end, pendingEntry_);
   }
   side_ = 0;

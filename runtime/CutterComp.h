@@ -11,6 +11,7 @@
 #include "ir/MotionIR.h"
 
 #include <string>
+#include <vector>
 
 namespace ncc {
 
@@ -69,6 +70,8 @@ private:
   bool fail(const char *msg, const char *rule);
   void emitPending(Point2 end, bool entryArc);
   void emitCornerArc(const PathElem &next, const MotionRecord &nextRec);
+  CornerKind corner(const PathElem &a, const PathElem &b) const;
+  void emitAtTool(MotionRecord o);  // a Z move at the tool's compensated XY
 
   MotionSink &out_;
   int side_ = 0;
@@ -80,6 +83,10 @@ private:
   double feed_ = 0;             // of the last feed move (corner arcs are feed moves)
   MotionRecord pending_;
   PathElem pendingElem_;
+  static constexpr size_t kMaxHeld = 64;
+  std::vector<MotionRecord> held_;  // Z moves after the pending move, emitted after it
+  bool afterZ_ = false;  // a Z move came after lastElem_, the last XY move emitted
+  PathElem lastElem_;
   std::string errMsg_, errRule_;
 };
 

@@ -274,12 +274,13 @@ INSTANTIATE_TEST_SUITE_P(Oracle, OracleTest,
                                            "machine_misc", "cycles_levels", "cycles_inch", "cycles_g99",
                                            "home_offsets", "cycles_mixed", "modes_misc", "inch_offsets", "home_axes",
                                            "comp_outside", "comp_pocket", "comp_arcs", "comp_arcs2", "comp_exit",
-                                           "comp_random1", "comp_random2", "comp_reversal", "comp_nearrev", "comp_random3"));
+                                           "comp_random1", "comp_random2", "comp_reversal", "comp_nearrev", "comp_random3",
+                                           "comp_random4", "comp_random5"));
 
 TEST(OracleTest, EveryProgramIsListed) {
   size_t n = 0;
   for (auto &e : std::filesystem::directory_iterator(oracleDir())) n += e.path().extension() == ".ngc";
-  EXPECT_EQ(n, 28u);  // keep in step with the list above
+  EXPECT_EQ(n, 30u);  // keep in step with the list above
 }
 
 }  // namespace

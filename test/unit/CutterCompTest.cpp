@@ -150,16 +150,38 @@ TEST(CutterCompStage, ConvexCornerArcAndLag) {
   EXPECT_NEAR(comp.toolPosition()[1], kR, 1e-9);
 }
 
-TEST(CutterCompStage, ZMoveKeepsCompensatedXY) {
+TEST(CutterCompStage, ZMovesWaitWithThePendingMove) {
   MotionBuffer out;
   CutterComp comp(out);
-  comp.start(-1, kR, {0, -20, 0, 0, 0, 0});
-  ASSERT_TRUE(comp.add(lineRec(0, -20, 0, 0)));
-  ASSERT_TRUE(comp.add(lineRec(0, 0, 0, 0, -5)));  // plunge: flushes the pending line
+  comp.start(-1, kR, {-20, -20, 0, 0, 0, 0});
+  ASSERT_TRUE(comp.add(lineRec(-20, -20, 0, 0)));  // entry
+  ASSERT_TRUE(comp.add(lineRec(0, 0, 0, 0, -5)));   // plunge: held with the entry
+  EXPECT_TRUE(out.records.empty());
+  // The next XY move turns right: concave for a right-side tool, so the entry is cut at the
+  // crossing and the plunge happens there (rs274: both wait for this move).
+  ASSERT_TRUE(comp.add(lineRec(0, 0, 0, -30, -5)));
   ASSERT_EQ(out.records.size(), 2u);
-  EXPECT_NEAR(out.records[1].end[0], kR, 1e-9);  // right of +Y is +X
-  EXPECT_NEAR(out.records[1].end[1], 0, 1e-9);
+  Point2 cut;
+  ASSERT_TRUE(offsetIntersection(line(-20, -20, 0, 0), line(0, 0, 0, -30), -1, kR, cut));
+  EXPECT_NEAR(out.records[0].end[0], cut.x, 1e-9);
+  EXPECT_NEAR(out.records[0].end[1], cut.y, 1e-9);
+  EXPECT_NEAR(out.records[1].end[0], cut.x, 1e-9);
+  EXPECT_NEAR(out.records[1].end[1], cut.y, 1e-9);
   EXPECT_NEAR(out.records[1].end[2], -5, 1e-9);
+}
+
+TEST(CutterCompStage, CornerBeforeARapidIsStraight) {
+  MotionBuffer out;
+  CutterComp comp(out);
+  comp.start(1, kR, {0, -20, 0, 0, 0, 0});
+  ASSERT_TRUE(comp.add(lineRec(0, -20, 0, 0)));
+  MotionRecord rapid = lineRec(0, 0, 10, 0);
+  rapid.kind = RecordKind::Rapid;
+  ASSERT_TRUE(comp.add(rapid));  // convex corner: rs274 traverses straight round it
+  ASSERT_EQ(out.records.size(), 2u);
+  EXPECT_EQ(out.records[1].kind, RecordKind::Rapid);
+  EXPECT_NEAR(out.records[1].end[0], 0, 1e-9);
+  EXPECT_NEAR(out.records[1].end[1], kR, 1e-9);
 }
 
 TEST(CutterCompStage, Errors) {
