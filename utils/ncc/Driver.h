@@ -55,8 +55,7 @@ public:
   // block by block (eval engine) so memory stays bounded.
   // `blocks` receives the number of source blocks executed.
   bool execute(uint32_t file, MotionSink &sink, uint64_t *blocks = nullptr);
-  // Flat programs with the eval engine: parsing on a second thread, a chunk of blocks at a time,
-  // so memory stays bounded. `streamed` is false when the program needs whole-program parsing.
+  // Flat programs with the eval engine, a chunk of blocks at a time, so memory stays bounded. `streamed` is false when the program needs whole-program parsing.
   bool executeStreamed(uint32_t file, MotionSink &sink, uint64_t *blocks, bool &streamed);
   // The same for an already-loaded module.
   bool executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blocks = nullptr);
