@@ -229,6 +229,19 @@ void CutterComp::emitCornerArc(const PathElem &next, const MotionRecord &nextRec
   tool_ = a.end;
 }
 
+bool CutterComp::hold(const MotionRecord &r) {
+  if (!havePending_) return false;
+  if (held_.size() < kMaxHeld) {
+    held_.push_back(r);
+    return true;
+  }
+  // A long run is let go (the pending move ends normal to its end point): memory stays bounded.
+  emitPending(offsetEnd(pendingElem_, side_, r_), pendingEntry_);
+  lastElem_ = pendingElem_;
+  afterZ_ = true;
+  return false;
+}
+
 CornerKind CutterComp::corner(const PathElem &a, const PathElem &b) const {
   // The next move decides when it is an arc, else the previous one (measured on rs274).
   const PathElem &decides = b.arc ? b : a;
@@ -249,18 +262,8 @@ bool CutterComp::add(const MotionRecord &rec) {
   if (rec.kind != RecordKind::Rapid) feed_ = rec.feed;
   if (!e.arc && dist(e.start, e.end) < 1e-12) {
     // No XY motion (a Z move): rs274 holds it with the pending move, which still ends where the
-    // next XY move says; the tool keeps its compensated XY. A long run of them is let go (and
-    // the pending move ends normal to its end point) to keep memory bounded.
-    if (havePending_ && held_.size() < kMaxHeld) {
-      held_.push_back(rec);
-      return true;
-    }
-    if (havePending_) {
-      emitPending(offsetEnd(pendingElem_, side_, r_), pendingEntry_);
-      lastElem_ = pendingElem_;
-      afterZ_ = true;
-    }
-    emitAtTool(rec);
+    // next XY move says; the tool keeps its compensated XY.
+    if (!hold(rec)) emitAtTool(rec);
     return true;
   }
   if (!havePending_) {

@@ -63,6 +63,9 @@ public:
   bool stop(bool check = false);
   // Where the tool really is after stop(); the exit move starts there.
   const AxisVec &toolPosition() const { return tool_; }
+  // A record that rs274 emits after the pending move (a dwell): held until then, placed at the
+  // tool's compensated XY. False when nothing is pending (the caller emits it itself).
+  bool hold(const MotionRecord &r);
   const std::string &error() const { return errMsg_; }
   const std::string &rule() const { return errRule_; }
 
@@ -84,7 +87,7 @@ private:
   MotionRecord pending_;
   PathElem pendingElem_;
   static constexpr size_t kMaxHeld = 64;
-  std::vector<MotionRecord> held_;  // Z moves after the pending move, emitted after it
+  std::vector<MotionRecord> held_;  // Z moves and dwells after the pending move
   bool afterZ_ = false;  // a Z move came after lastElem_, the last XY move emitted
   PathElem lastElem_;
   std::string errMsg_, errRule_;

@@ -308,7 +308,7 @@ bool Executor::exec(const MachineCmd &c) {
     if (p < 0) return x.error("Dwell time must not be negative", "bad-dwell");
     MotionRecord r = x.record(RecordKind::Dwell);
     r.value = p;
-    x.emit(r);
+    if (!x.comp.hold(r)) x.emit(r);  // with compensation on it waits for the pending move
     return true;
   }
   case CmdKind::Move: return x.execMove(c);
