@@ -1,5 +1,7 @@
 #include "runtime/CanonTrace.h"
 
+#include <cmath>
+
 #include <algorithm>
 #include <charconv>
 #include <cstring>
@@ -64,6 +66,30 @@ void CanonTraceWriter::line(int64_t n, std::string_view text) {
 }
 
 void CanonTraceWriter::num(double v) {
+  // Fast path: |v| < 1e9 and not near a rounding tie: the scaled value rounds to the same
+  // integer as the exact decimal expansion, so printing that integer equals printf's %.4f.
+  double scaled = v * 1e4;
+  if (std::fabs(v) < 1e9) {
+    double r = std::nearbyint(scaled);
+    double frac = std::fabs(scaled - r);
+    if (frac < 0.4999) {
+      long long q = (long long)r;
+      char tmp[32];
+      char *p = tmp;
+      if (q < 0 || (q == 0 && std::signbit(v))) *p++ = '-';  // "-0.0000" like printf
+      unsigned long long a = q < 0 ? (unsigned long long)(-q) : (unsigned long long)q;
+      auto res = std::to_chars(p, tmp + sizeof tmp, a / 10000);
+      p = res.ptr;
+      *p++ = '.';
+      unsigned f = (unsigned)(a % 10000);
+      p[0] = (char)('0' + f / 1000);
+      p[1] = (char)('0' + f / 100 % 10);
+      p[2] = (char)('0' + f / 10 % 10);
+      p[3] = (char)('0' + f % 10);
+      buf_.append(tmp, (size_t)(p + 4 - tmp));
+      return;
+    }
+  }
   char tmp[400];  // %.4f of the largest double takes 315 characters
   // to_chars with a precision rounds exactly like printf's %.4f (including "-0.0000").
   auto res = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::fixed, 4);
