@@ -18,5 +18,8 @@ std::unique_ptr<llvm::Module> buildModule(const ir::Module &m, llvm::LLVMContext
 void optimizeModule(llvm::Module &mod, llvm::TargetMachine *tm, int level);
 // Host target machine (PIC, default CPU features); null after reporting an error.
 std::unique_ptr<llvm::TargetMachine> hostTargetMachine(Diagnostics &diags);
+// buildModule with the host's data layout and triple (for --emit=llvm and --emit=obj).
+std::unique_ptr<llvm::Module> buildHostModule(const ir::Module &m, llvm::LLVMContext &ctx,
+                                              llvm::TargetMachine &tm, Diagnostics &diags);
 
 }  // namespace ncc::jit

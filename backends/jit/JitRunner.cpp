@@ -61,6 +61,15 @@ std::unique_ptr<TargetMachine> hostTargetMachine(Diagnostics &diags) {
   return std::move(*tm);
 }
 
+std::unique_ptr<Module> buildHostModule(const ir::Module &m, LLVMContext &ctx, TargetMachine &tm,
+                                        Diagnostics &diags) {
+  std::unique_ptr<Module> mod = buildModule(m, ctx, diags);
+  if (!mod) return nullptr;
+  mod->setDataLayout(tm.createDataLayout());
+  mod->setTargetTriple(tm.getTargetTriple().str());
+  return mod;
+}
+
 void optimizeModule(Module &mod, TargetMachine *tm, int level) {
   if (level <= 0) return;
   LoopAnalysisManager LAM;
@@ -195,10 +204,8 @@ bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags) {
   auto tm = hostTargetMachine(diags);
   if (!tm) return false;
   LLVMContext ctx;
-  std::unique_ptr<Module> mod = buildModule(m, ctx, diags);
+  std::unique_ptr<Module> mod = buildHostModule(m, ctx, *tm, diags);
   if (!mod) return false;
-  mod->setDataLayout(tm->createDataLayout());
-  mod->setTargetTriple(tm->getTargetTriple().str());
   out.clear();
   raw_string_ostream os(out);
   mod->print(os, nullptr);

@@ -17,10 +17,8 @@ bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags
   auto tm = hostTargetMachine(diags);
   if (!tm) return false;
   LLVMContext ctx;
-  std::unique_ptr<Module> mod = buildModule(m, ctx, diags);
+  std::unique_ptr<Module> mod = buildHostModule(m, ctx, *tm, diags);
   if (!mod) return false;
-  mod->setDataLayout(tm->createDataLayout());
-  mod->setTargetTriple(tm->getTargetTriple().str());
   optimizeModule(*mod, tm.get(), 2);
 
   SmallVector<char, 0> buf;
