@@ -469,6 +469,11 @@ bool BlockLowerer::Block::motion() {
         else if (ms) op.set("P", Expr::number(p->value / 1000.0, ir::Type::Real, p->loc));
         else op.set("P", literal(*p, 1.0));
       }
+      // Fanuc/808D G86 has no dwell word (spec table 2-22: G86 X Y Z R F K); the executor
+      // follows rs274, whose G86 needs P, so the dialect's "no dwell" is written out here.
+      if (L.motion_ == ModeValue::BoreStop && L.flavour_ == Flavour::Fanuc && !bw.has('P') &&
+          G(GGroup::Motion))
+        op.set("P", Expr::number(0.0, ir::Type::Real, loc));
       if (cycle && bw.has('Q')) op.set("Q", take('Q', Scale::Linear));
       if (cycle && (bw.has('K') || bw.has('L'))) op.set("L", take(bw.has('K') ? 'K' : 'L', Scale::None));
       out.push_back(std::move(op));
