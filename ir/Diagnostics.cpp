@@ -68,8 +68,7 @@ static const char *severityName(Severity s) {
   return "error";
 }
 
-static std::string jsonEscape(std::string_view s) {
-  std::string o;
+void appendJsonEscaped(std::string &o, std::string_view s) {
   for (unsigned char c : s) {
     switch (c) {
     case '"': o += "\\\""; break;
@@ -82,6 +81,11 @@ static std::string jsonEscape(std::string_view s) {
       else o += (char)c;
     }
   }
+}
+
+static std::string jsonEscape(std::string_view s) {
+  std::string o;
+  appendJsonEscaped(o, s);
   return o;
 }
 

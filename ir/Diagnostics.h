@@ -90,6 +90,10 @@ private:
   std::vector<Diagnostic> collected_;
 };
 
+// Appends `s` to `out` as the body of a JSON string (quotes, backslashes, control characters
+// escaped). Shared by the JSON diagnostics and the JSONL trace.
+void appendJsonEscaped(std::string &out, std::string_view s);
+
 // Writes a file atomically: the text goes to a temporary file next to the target which is then
 // renamed over it, so a failed run never leaves a half-written output. Returns false and sets
 // err on failure.

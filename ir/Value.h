@@ -17,6 +17,9 @@
 
 namespace ncc {
 
+// Macro B call locals #1..#33 (a new frame per G65 call); other numbers are commons/system.
+constexpr int kMacroLocals = 33;
+
 constexpr uint64_t kVacantBits = 0x7ff8dead0000beefull;
 
 inline double vacantValue() {

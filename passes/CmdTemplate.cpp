@@ -199,13 +199,8 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
       addWord(w, a.value.get());
       continue;
     }
-    bool done = false;
     for (auto &kw : kKeyWords)
-      if (kw.op == op.kind && a.key == kw.key) {
-        addWord(kw.word, a.value.get());
-        done = true;
-      }
-    (void)done;
+      if (kw.op == op.kind && a.key == kw.key) addWord(kw.word, a.value.get());
   }
   return true;
 }

@@ -76,7 +76,7 @@ struct CompiledFn {
 };
 
 struct Frame {
-  double locals[34];
+  double locals[kMacroLocals + 1];  // [0] unused: #0 is always vacant
   std::vector<double> named;
   std::vector<double> slots;
   uint64_t backJumps = 0;
@@ -175,8 +175,6 @@ struct Evaluator::Impl {
           Instr jf{IK::JumpIfFalse};
           jf.expr = op.get("cond");
           jf.op = &op;
-          Instr init{IK::CountInit};  // keeps slot layout uniform; unused for while
-          (void)init;
           test = emit(jf);
         } else {
           Instr init{IK::CountInit};
@@ -304,7 +302,7 @@ struct Evaluator::Impl {
   double &numberedRef(Frame &fr, const Expr &v, bool write) {
     double idx = num(ev(fr, *v.args[0]));
     long n = std::lround(idx);
-    if (n >= 1 && n <= 33) return fr.locals[n];
+    if (n >= 1 && n <= kMacroLocals) return fr.locals[n];
     if (n == 0) {
       if (write) fail(v.loc, "#0 is always vacant and cannot be assigned");
       static double vac;
@@ -548,7 +546,7 @@ struct Evaluator::Impl {
         Frame nf;
         for (double &l : nf.locals) l = vacantValue();
         for (auto &[n, v] : numberedArgs)
-          if (n >= 1 && n <= 33) nf.locals[n] = v;
+          if (n >= 1 && n <= kMacroLocals) nf.locals[n] = v;
         CompiledFn &cf = compile(*f);
         nf.named.assign((*cf.names).size(), unsetValue());
         for (auto &[n, v] : namedArgs) {

@@ -21,8 +21,8 @@ private:
 }  // namespace
 
 bool runLowerMotion(ir::Module &m, Diagnostics &diags, PassContext &ctx) {
-  static std::string scratch;
-  std::string &out = ctx.motionText ? *ctx.motionText : scratch;
+  std::string local;
+  std::string &out = ctx.motionText ? *ctx.motionText : local;
   out.clear();
   TextSink sink(out);
   Executor exec(ctx.machine ? *ctx.machine : Machine::builtinDefault(), sink, diags);

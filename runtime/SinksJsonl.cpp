@@ -24,18 +24,7 @@ void vec(std::string &s, const double *v, int n) {
 
 void str(std::string &s, const std::string &t) {
   s += '"';
-  for (unsigned char c : t) {
-    switch (c) {
-    case '"': s += "\\\""; break;
-    case '\\': s += "\\\\"; break;
-    case '\n': s += "\\n"; break;
-    case '\r': s += "\\r"; break;
-    case '\t': s += "\\t"; break;
-    default:
-      if (c < 0x20) fmt::format_to(std::back_inserter(s), "\\u{:04x}", c);
-      else s += (char)c;
-    }
-  }
+  appendJsonEscaped(s, t);
   s += '"';
 }
 

@@ -22,7 +22,6 @@ using ir::ExprKind;
 using ir::Op;
 using ir::OpKind;
 
-static constexpr unsigned kFrameLocals = 33;
 
 // The LLVM struct types below mirror these C++ layouts.
 static_assert(offsetof(MachineCmd, modes) == 4 && offsetof(MachineCmd, mask) == 12 &&

@@ -19,7 +19,6 @@ using ir::ExprKind;
 using ir::Op;
 using ir::OpKind;
 
-static constexpr int kFrameLocals = 33;
 
 // Numbers every op in pre-order (the eval engine's instruction order), records block numbers
 // and labels, and marks the ops gotos reach: they start a basic block (and end a constant run).

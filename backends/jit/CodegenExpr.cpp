@@ -21,7 +21,6 @@ using ir::ExprKind;
 using ir::OpCode;
 using ir::VarSpace;
 
-static constexpr int kFrameLocals = 33;
 
 Value *Codegen::isVacant(Value *v) {
   return B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, kVacantBits));

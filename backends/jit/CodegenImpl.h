@@ -5,6 +5,7 @@
 // The generated code reproduces the eval engine (passes/Eval.cpp) exactly: same values, same
 // command stream, same run-time errors with the same texts, at the same points of execution.
 #pragma once
+#include "ir/Value.h"
 #include "ir/NCIR.h"
 #include "passes/CmdTemplate.h"
 
@@ -17,6 +18,9 @@
 #include <vector>
 
 namespace ncc::jit {
+
+// Frame layout: slot 0 unused, #1..#33 Macro B locals, then named locals.
+constexpr int kFrameLocals = kMacroLocals;
 
 // A value of an expression and whether it can be vacant at run time (variable reads);
 // arithmetic results never are, so most vacant checks fold away at compile time.

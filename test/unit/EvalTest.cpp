@@ -280,3 +280,21 @@ TEST(Passes, SemaRejectsUnknownFunctionAndCallee) {
   EXPECT_FALSE(runPasses(f.m, {"sema"}, f.diags, ctx));
   EXPECT_NE(f.firstError().find("unknown program 'O77'"), std::string::npos);
 }
+
+TEST(Eval, LocalsEndAtThirtyThree) {
+  Fixture f;
+  ASSERT_TRUE(f.parse(R"(func @main {
+  assign target=#33 value=1
+  assign target=#34 value=1
+  call callee="O1" frame=new
+  move X=#33 Y=#34
+}
+func @O1 {
+  assign target=#33 value=5
+  assign target=#34 value=5
+}
+)"));
+  ASSERT_TRUE(f.run()) << f.firstError();
+  EXPECT_EQ(f.rec.moves()[0].get(Word::X), 1.0);  // #33: the callee had its own
+  EXPECT_EQ(f.rec.moves()[0].get(Word::Y), 5.0);  // #34: shared
+}

@@ -1,5 +1,6 @@
 #include "ir/NCIR.h"
 #include "ir/ModeTable.h"
+#include "ir/Diagnostics.h"
 #include <gtest/gtest.h>
 
 using namespace ncc;
@@ -18,4 +19,10 @@ TEST(ModeTable, ValueNamesRoundTrip) {
     ASSERT_TRUE(modeValueFromName(modeValueInfo((ModeValue)v).name, out));
     EXPECT_EQ((unsigned)out, v);
   }
+}
+
+TEST(Json, EscapesQuotesBackslashesAndControls) {
+  std::string s;
+  appendJsonEscaped(s, "a\"b\\c\nd\x01");
+  EXPECT_EQ(s, "a\\\"b\\\\c\\nd\\u0001");
 }

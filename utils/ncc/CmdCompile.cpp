@@ -52,8 +52,7 @@ int cmdCompile(int argc, char **argv) {
     std::fprintf(stderr, "ncc: error: --emit=obj needs -o FILE\n");
     return kExitUsage;
   }
-  if (!s.setUp()) return kExitErrors;
-  uint32_t f = s.open(file);
+  uint32_t f = s.start(file);
   if (!f) return kExitErrors;
   ir::Module m;
   if (!s.load(f, m)) return kExitErrors;
@@ -99,8 +98,7 @@ int cmdOpt(int argc, char **argv) {
     std::fprintf(stderr, "ncc: error: no input file\n");
     return kExitUsage;
   }
-  if (!s.setUp()) return kExitErrors;
-  uint32_t f = s.open(file);
+  uint32_t f = s.start(file);
   if (!f) return kExitErrors;
   ir::Module m;
   if (!s.load(f, m)) return kExitErrors;

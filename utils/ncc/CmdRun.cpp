@@ -34,8 +34,7 @@ int cmdRun(int argc, char **argv) {
     std::fprintf(stderr, "ncc: error: unknown trace format '%s' (expected canon or jsonl)\n", trace.c_str());
     return kExitUsage;
   }
-  if (!s.setUp()) return kExitErrors;
-  uint32_t f = s.open(file);
+  uint32_t f = s.start(file);
   if (!f) return kExitErrors;
 
   RunOutputOptions ro;

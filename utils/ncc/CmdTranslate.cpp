@@ -34,8 +34,7 @@ int cmdTranslate(int argc, char **argv) {
   }
   eo.comments = !noComments;
   eo.programName = file;
-  if (!s.setUp()) return kExitErrors;
-  uint32_t f = s.open(file);
+  uint32_t f = s.start(file);
   if (!f) return kExitErrors;
 
   MotionBuffer source;

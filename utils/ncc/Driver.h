@@ -47,6 +47,8 @@ public:
   bool setUp();
   // Reads a source file; 0 after reporting when it cannot be read.
   uint32_t open(const std::string &path);
+  // setUp() then open(path): what every single-program subcommand starts with.
+  uint32_t start(const std::string &path) { return setUp() ? open(path) : 0; }
   SourceKind kindOf(uint32_t file) const;
   FrontendOptions frontendOptions(uint32_t file) const;
   // Front end + verifier + sema: the module every engine and backend starts from.
