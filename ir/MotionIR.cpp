@@ -44,6 +44,7 @@ std::string printMotionRecord(const MotionRecord &r) {
     break;
   case RecordKind::PathMode:
     s += fmt::format(" {} {}", r.ivalue, r.value);
+    if (r.ivalue == 2) s += fmt::format(" {}", r.value2);
     break;
   default:
     s += fmt::format(" {}", r.ivalue);

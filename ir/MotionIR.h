@@ -60,6 +60,7 @@ struct MotionRecord {
   std::array<double, 3> center{};  // arc centre, machine X Y Z
   double feed = 0;          // mm/min effective for this move (0 = rapid)
   double value = 0;
+  double value2 = 0;        // PathMode continuous: naive-CAM tolerance (G64 Q), mm
   std::string text;
 };
 

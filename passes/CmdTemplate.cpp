@@ -39,6 +39,8 @@ static const SymbolCode kSymbols[] = {
     {OpKind::SetOffset, "kind", "g92_1", (uint8_t)SetOffsetKind::G92Cancel},
     {OpKind::SetOffset, "kind", "g10l2", (uint8_t)SetOffsetKind::G10L2},
     {OpKind::SetOffset, "kind", "g10l20", (uint8_t)SetOffsetKind::G10L20},
+    {OpKind::CutterComp, "d_default", "modal", 0},  // sub2: the radius without a D word
+    {OpKind::CutterComp, "d_default", "tool", 1},
 };
 
 static const char *symbolFor(OpKind op, const char *key, uint8_t code) {
@@ -58,6 +60,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::ToolSelect, "value", Word::T}, {OpKind::Dwell, "seconds", Word::P},
     {OpKind::ToolLength, "h", Word::H},     {OpKind::CutterComp, "d", Word::D},
     {OpKind::SetOffset, "index", Word::P},  {OpKind::Aux, "m", Word::P},
+    {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -136,6 +139,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     return true;
   case OpKind::Mode:
     for (auto &a : op.args) {
+      if (a.key == "tolerance" || a.key == "naive_tolerance") continue;  // words, below
       ModeValue v;
       ModeGroup g;
       if (!a.value || !modeGroupFromName(a.key, g) || !modeValueFromName(a.value->str, v) ||
@@ -145,10 +149,10 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
       }
       if (c.nmodes < 6) c.modes[c.nmodes++] = v;
     }
-    return true;
+    break;
   case OpKind::Spindle: return symbolArg("dir", c.sub);
   case OpKind::CutterComp:
-    if (!symbolArg("side", c.sub)) return false;
+    if (!symbolArg("side", c.sub) || !symbolArg("d_default", c.sub2)) return false;
     break;
   case OpKind::Stop: return symbolArg("kind", c.sub);
   case OpKind::SetOffset:
@@ -227,10 +231,13 @@ Op cmdToOp(const MachineCmd &c) {
       auto &info = modeValueInfo(c.modes[i]);
       op.set(modeGroupName(info.group), Expr::symbol(info.name));
     }
-    return op;
+    break;  // G64 tolerances below
   case CmdKind::Spindle: op.set("dir", Expr::symbol(symbolFor(op.kind, "dir", c.sub))); return op;
   case CmdKind::Stop: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); return op;
-  case CmdKind::CutterComp: op.set("side", Expr::symbol(symbolFor(op.kind, "side", c.sub))); break;
+  case CmdKind::CutterComp:
+    op.set("side", Expr::symbol(symbolFor(op.kind, "side", c.sub)));
+    if (c.sub2) op.set("d_default", Expr::symbol(symbolFor(op.kind, "d_default", c.sub2)));
+    break;
   case CmdKind::SetOffset: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;

@@ -221,7 +221,7 @@ void CanonTraceWriter::record(const MotionRecord &r) {
       char tmp[96];
       std::snprintf(tmp, sizeof tmp, "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, %f)", r.value);
       line(n, tmp);
-      std::snprintf(tmp, sizeof tmp, "SET_NAIVECAM_TOLERANCE(%.4f)", r.value);
+      std::snprintf(tmp, sizeof tmp, "SET_NAIVECAM_TOLERANCE(%.4f)", r.value2);
       line(n, tmp);
     }
     break;

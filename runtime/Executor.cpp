@@ -24,17 +24,77 @@ MotionRecord Executor::Impl::record(RecordKind k) const {
   return r;
 }
 
+static void rotateXY(AxisVec &p, double degrees) {
+  double r = degrees * M_PI / 180, c = std::cos(r), s = std::sin(r);
+  double x = p[0] * c - p[1] * s, y = p[0] * s + p[1] * c;
+  p[0] = x, p[1] = y;
+}
+
+AxisVec Executor::Impl::frameIn(const AxisVec &m) const {
+  if (!rotated()) return m;
+  AxisVec f;
+  const AxisVec &o = g5x[st.workOffset - 1];
+  for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - (i == 2 ? toolLength : 0.0);
+  rotateXY(f, -rotation());
+  return f;
+}
+
+AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
+  if (!rotated()) return f;
+  AxisVec m = f;
+  rotateXY(m, rotation());
+  const AxisVec &o = g5x[st.workOffset - 1];
+  for (int i = 0; i < kAxes; ++i) m[i] += o[i] + (i == 2 ? toolLength : 0.0);
+  return m;
+}
+
 AxisVec Executor::Impl::target(const MachineCmd &c) const {
-  AxisVec t = st.position;
+  // Axes without a word keep their program position (under a rotation that moves X and Y).
+  AxisVec t = frameIn(st.position);
   bool inc = st.distance == ModeValue::Incremental;
   for (int i = 0; i < kAxes; ++i) {
     Word w = (Word)i;  // X Y Z A B C are the first six words
     if (!c.has(w)) continue;
     double v = c.get(w) * axisScale(i);
-    double prog = inc ? programPos(i) + v : v;
-    t[i] = prog + offset(i);
+    double prog = inc ? t[i] - frameOffset(i) + v : v;
+    t[i] = prog + frameOffset(i);
+  }
+  return frameOut(t);
+}
+
+const ToolData *Executor::Impl::tool(double n, const char *word) {
+  const ToolData *t = n >= 0 && n <= 1e9 && n == std::floor(n) ? machine.findTool((int)n) : nullptr;
+  if (!t) {
+    if (n < 0 || n > 1e9 || n != std::floor(n))
+      error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
+    else
+      error("Requested tool " + std::to_string((long long)n) + " not found in the tool table", "unknown-tool");
   }
   return t;
+}
+
+bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
+  // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
+  bool described = machine.axes[0].present || machine.axes[1].present || machine.axes[2].present;
+  for (int i = 0; i < kAxes && described; ++i)
+    if (c.has((Word)i) && !machine.axes[i].present)
+      return error(std::string(1, kWordLetters[i]) + " word used, but the machine has no " + kWordLetters[i] +
+                       " axis",
+                   "unknown-axis");
+  for (Word w : {Word::U, Word::V, Word::W})
+    if (c.has(w))
+      return error(std::string(1, kWordLetters[(int)w]) + " axis words are not supported", "unsupported-code");
+  return true;
+}
+
+MotionRecord Executor::Impl::pathModeRecord() const {
+  MotionRecord r = record(RecordKind::PathMode);
+  r.ivalue = st.pathMode == ModeValue::ExactPath ? 0 : st.pathMode == ModeValue::ExactStop ? 1 : 2;
+  if (st.pathMode == ModeValue::Continuous) {
+    r.value = pathTolerance;
+    r.value2 = naiveTolerance;
+  }
+  return r;
 }
 
 bool Executor::Impl::execMode(const MachineCmd &c) {
@@ -71,11 +131,14 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
     }
     case ModeGroup::PathMode: {
       st.pathMode = v;
-      MotionRecord r = record(RecordKind::PathMode);
-      r.ivalue = v == ModeValue::ExactPath ? 0 : v == ModeValue::ExactStop ? 1 : 2;
-      if (v == ModeValue::Continuous) pathTolerance = c.has(Word::P) ? c.get(Word::P) * scale() : 0;
-      r.value = v == ModeValue::Continuous ? pathTolerance : 0;
-      emit(r);
+      if (v == ModeValue::Continuous) {
+        // G64 P<path tolerance> Q<naive-CAM tolerance>; Q defaults to P (rs274).
+        double p = c.has(Word::P) ? c.get(Word::P) : 0, q = c.has(Word::Q) ? c.get(Word::Q) : p;
+        if (p < 0 || q < 0) return error("G64 tolerances must not be negative", "bad-number");
+        pathTolerance = p * scale();
+        naiveTolerance = q * scale();
+      }
+      emit(pathModeRecord());
       break;
     }
     default: break;
@@ -85,17 +148,12 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
 }
 
 bool Executor::Impl::execToolLength(const MachineCmd &c) {
+  // Without H (rs274 G43): the tool in the spindle.
   double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
-  if (hv < 0 || hv > 1e9 || hv != std::floor(hv)) return error("H word must be a non-negative integer", "unknown-tool");
+  const ToolData *t = tool(hv, "H");
+  if (!t) return false;
   int h = (int)hv;
-  if (h == 0) {
-    toolLength = 0;
-  } else {
-    auto it = machine.tools.find(h);
-    if (it == machine.tools.end())
-      return error("Requested tool " + std::to_string(h) + " not found in the tool table", "unknown-tool");
-    toolLength = it->second.length;
-  }
+  toolLength = h == 0 ? 0 : t->length;
   st.toolLengthH = h;
   MotionRecord r = record(RecordKind::ToolLength);
   r.value = toolLength;
@@ -112,10 +170,12 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   }
   if (kind == SetOffsetKind::G92) {
     // The current position becomes the programmed one: G92 absorbs the difference.
+    AxisVec f = frameIn(st.position);
     for (int i = 0; i < kAxes; ++i)
-      if (c.has((Word)i))
-        g92[i] = st.position[i] - g5x[st.workOffset - 1][i] - (i == 2 ? toolLength : 0.0) -
-                 c.get((Word)i) * axisScale(i);
+      if (c.has((Word)i)) {
+        double before = rotated() ? f[i] : st.position[i] - g5x[st.workOffset - 1][i] - (i == 2 ? toolLength : 0.0);
+        g92[i] = before - c.get((Word)i) * axisScale(i);
+      }
     return true;
   }
   double p = c.get(Word::P);
@@ -123,17 +183,30 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   if (!c.has(Word::P) || n < 0 || p != n)
     return error("G10 needs a coordinate system number P0 to P9", "bad-offset-index");
   if (n == 0) n = st.workOffset;
-  if (c.has(Word::R) && c.get(Word::R) != 0)
-    warning("coordinate system rotation (G10 R) is not supported: ignored", "unsupported-rotation");
   AxisVec &sys = g5x[n - 1];
-  for (int i = 0; i < kAxes; ++i) {
-    if (!c.has((Word)i)) continue;
-    double v = c.get((Word)i) * axisScale(i);
-    if (kind == SetOffsetKind::G10L2)
-      sys[i] = v;  // the origin in machine coordinates
-    else            // L20: the current position gets program value v in that system
-      sys[i] = st.position[i] - g92[i] - (i == 2 ? toolLength : 0.0) - v;
+  if (kind == SetOffsetKind::G10L2) {
+    for (int i = 0; i < kAxes; ++i)
+      if (c.has((Word)i)) sys[i] = c.get((Word)i) * axisScale(i);  // the origin in machine coordinates
+    if (c.has(Word::R)) g5xRotation[n - 1] = c.get(Word::R);      // the system's XY rotation
+    return true;
   }
+  // L20: the current position gets program value v in system n; the other axes keep their
+  // program position there (under the system's rotation, an X word moves the origin in Y too).
+  double rot = g5xRotation[n - 1];
+  if (rot == 0) {
+    for (int i = 0; i < kAxes; ++i)
+      if (c.has((Word)i))
+        sys[i] = st.position[i] - g92[i] - (i == 2 ? toolLength : 0.0) - c.get((Word)i) * axisScale(i);
+    return true;
+  }
+  AxisVec rel;  // machine position less tool length and the system's origin
+  for (int i = 0; i < kAxes; ++i) rel[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - sys[i];
+  AxisVec q = rel;
+  rotateXY(q, -rot);  // program + G92 in system n
+  for (int i = 0; i < kAxes; ++i)
+    if (c.has((Word)i)) q[i] = c.get((Word)i) * axisScale(i) + g92[i];
+  rotateXY(q, rot);
+  for (int i = 0; i < kAxes; ++i) sys[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - q[i];
   return true;
 }
 
@@ -152,16 +225,16 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     if (d < 0 || d != std::floor(d) || d > 1e9)
       return error(std::string(c.sub == 1 ? "G41" : "G42") + " requires D word to be a whole number", "unknown-tool");
     cutterD = (int)d;
-  } else if (cutterD == 0) {
-    warning("cutter compensation without a D word: radius 0", "cutcomp-without-d");
+  } else if (c.sub2 == 1) {
+    cutterD = st.toolInSpindle;  // rs274: without D, the radius of the tool in the spindle
   }
-  double radius = 0;
-  if (cutterD != 0) {
-    auto it = machine.tools.find(cutterD);
-    if (it == machine.tools.end())
-      return error("Requested tool " + std::to_string(cutterD) + " not found in the tool table", "unknown-tool");
-    radius = it->second.radius;
-  }
+  if (!c.has(Word::D) && cutterD == 0)
+    warning(c.sub2 == 1 ? "cutter compensation without a D word and no tool in the spindle: radius 0"
+                        : "cutter compensation without a D word: radius 0",
+            "cutcomp-without-d");
+  const ToolData *t = tool(cutterD, "D");
+  if (!t) return false;
+  double radius = cutterD == 0 ? 0 : t->radius;
   if (radius > 0 && plane() != Plane::XY)
     return error("cutter radius compensation is only supported in the XY plane (G17)", "cutcomp-plane");
   st.cutterComp = c.sub;
@@ -222,6 +295,7 @@ bool Executor::exec(const MachineCmd &c) {
       return x.error(std::string("invalid number in ") + kWordLetters[i] + " word", "bad-number");
   }
   bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
+  if ((motion || c.kind == CmdKind::SetOffset) && !x.checkAxisWords(c)) return false;
   if (motion && x.st.ended && !x.warnedAfterEnd) {
     x.warnedAfterEnd = true;
     x.warning("motion after the end of the program (M2/M30)", "code-after-end");
@@ -264,8 +338,7 @@ bool Executor::exec(const MachineCmd &c) {
   }
   case CmdKind::ToolSelect: {
     double t = c.get(Word::T);
-    if (t < 0 || t != std::floor(t) || t > 1e9)
-      return x.error("T word must be a non-negative integer", "unknown-tool");
+    if (!x.tool(t, "T")) return false;
     x.st.toolSelected = (int)t;
     MotionRecord r = x.record(RecordKind::ToolSelect);
     r.ivalue = (int64_t)t;

@@ -44,6 +44,14 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     haveQ = true;
   }
   if (c.has(Word::P)) cycleP = c.get(Word::P);
+  for (int i = 3; i < kAxes; ++i)  // rs274: "Cannot put an a in canned cycle"
+    if (c.has((Word)i))
+      return error(std::string("Cannot put ") + (i == 3 ? "an " : "a ") + (char)std::tolower(kWordLetters[i]) +
+                       " in canned cycle",
+                   "cycle-invalid");
+  if (rotated() && pl != 0)
+    return error("canned cycles outside the XY plane with a rotated coordinate system are not supported",
+                 "unsupported-code");
   bool peck = cyc == ModeValue::Peck || cyc == ModeValue::PeckChipBreak;
   if (peck && !haveQ) return error(std::string("Q word missing with ") + lower(code), "cycle-missing-word");
   int repeats = 1;
@@ -61,19 +69,23 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   if (!checkFeed(code)) return false;
 
   if (!initialLevelValid) {
-    initialLevel = st.position[d];
+    initialLevel = st.position[d];  // machine frame
     initialLevelValid = true;
   }
+  // The cycle is computed in the offset frame (ExecutorImpl.h) and mapped back per step.
+  const AxisVec here = frameIn(st.position);
+  AxisVec level = st.position;
+  level[d] = initialLevel;
   CycleInput in;
   in.cycle = cyc;
   in.plane = plane();
   in.retractToR = st.retract == ModeValue::RetractR;
   in.incremental = inc;
-  in.current = {st.position[0], st.position[1], st.position[2]};
-  in.initialLevel = initialLevel;
+  in.current = {here[0], here[1], here[2]};
+  in.initialLevel = frameIn(level)[d];
   in.sameCycle = !first;
-  in.r = inc ? cycleR : cycleR + offset(d);
-  in.z = inc ? cycleZ : cycleZ + offset(d);
+  in.r = inc ? cycleR : cycleR + frameOffset(d);
+  in.z = inc ? cycleZ : cycleZ + frameOffset(d);
   in.q = cycleQ;
   in.p = cycleP;
   in.repeats = repeats;
@@ -82,7 +94,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     if (i == d) continue;
     bool has = c.has((Word)i);
     double v = c.get((Word)i) * scale();
-    in.target[i] = inc ? (has ? v : 0.0) : (has ? v + offset(i) : st.position[i]);
+    in.target[i] = inc ? (has ? v : 0.0) : (has ? v + frameOffset(i) : here[i]);
   }
   steps.clear();
   std::string err;
@@ -99,8 +111,9 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   };
   for (const CycleStep &s : steps) {
     if (!s.preMove && !bracketOpen) openBracket();
-    AxisVec to = st.position;
+    AxisVec to = frameIn(st.position);
     to[0] = s.pos[0], to[1] = s.pos[1], to[2] = s.pos[2];
+    to = frameOut(to);
     switch (s.kind) {
     case CycleStepKind::Rapid: moveTo(RecordKind::Rapid, to, !s.preMove); break;
     case CycleStepKind::Feed: moveTo(RecordKind::Linear, to, true); break;
@@ -115,12 +128,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     case CycleStepKind::SpindleCCW: emit(record(RecordKind::SpindleCCW)); break;
     }
   }
-  if (bracketOpen) {
-    MotionRecord r = record(RecordKind::PathMode);
-    r.ivalue = st.pathMode == ModeValue::ExactPath ? 0 : st.pathMode == ModeValue::ExactStop ? 1 : 2;
-    r.value = st.pathMode == ModeValue::Continuous ? pathTolerance : 0;
-    emit(r);
-  }
+  if (bracketOpen) emit(pathModeRecord());
   return true;
 }
 

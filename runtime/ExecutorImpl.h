@@ -18,8 +18,10 @@ struct Executor::Impl {
   Diagnostics &diags;
   ModalState st;
 
-  // Frame: machine = program + G92 + G5x (+ tool length on Z), all mm.
+  // Frame (rs274's order): machine = Rz(program + G92) + G5x (+ tool length on Z), all mm,
+  // where Rz is the XY rotation of the active coordinate system (G10 L2 R).
   std::array<AxisVec, 9> g5x{};
+  std::array<double, 9> g5xRotation{};  // degrees
   AxisVec g92{};
   double toolLength = 0;
   double feedMM = 0;
@@ -44,7 +46,8 @@ struct Executor::Impl {
   CutterComp comp;
   bool compExit = false;
   bool warnedAfterEnd = false;
-  double pathTolerance = 0;  // G64 P
+  double pathTolerance = 0;   // G64 P (mm)
+  double naiveTolerance = 0;  // G64 Q (mm)
 
   // --- helpers (Executor.cpp) ---
   double scale() const { return st.units == ModeValue::Inch ? 25.4 : 1.0; }
@@ -53,6 +56,15 @@ struct Executor::Impl {
     return g5x[st.workOffset - 1][axis] + g92[axis] + (axis == 2 ? toolLength : 0.0);
   }
   double programPos(int axis) const { return st.position[axis] - offset(axis); }
+  double rotation() const { return g5xRotation[st.workOffset - 1]; }
+  // The "offset frame": program coordinates plus G92. Without rotation it is the machine frame
+  // (frameOffset = every offset), so unrotated programs compute exactly as before; with a
+  // rotation it is the frame before Rz, where only G92 offsets. Targets, arc centres and
+  // cycles are computed in it and mapped to the machine with frameOut.
+  bool rotated() const { return rotation() != 0; }
+  double frameOffset(int axis) const { return rotated() ? g92[axis] : offset(axis); }
+  AxisVec frameIn(const AxisVec &machinePos) const;
+  AxisVec frameOut(const AxisVec &framePos) const;
   Plane plane() const;
   MotionRecord record(RecordKind k) const;
   void emit(const MotionRecord &r) { sink.record(r); }
@@ -71,6 +83,11 @@ struct Executor::Impl {
   bool execSetOffset(const MachineCmd &c);
   bool execStop(const MachineCmd &c);
   bool execCutterComp(const MachineCmd &c);
+  // Tool data of a T/H/D number; an error naming it when the machine has no such tool.
+  const ToolData *tool(double n, const char *word);
+  // Words of axes the machine lacks, and U V W, which the executor has no axes for.
+  bool checkAxisWords(const MachineCmd &c);
+  MotionRecord pathModeRecord() const;
   // rs274 refuses some motion while compensation is on (G28/G30, G53, canned cycles).
   bool compForbids(const char *msg) { return comp.active() ? error(msg, "cutcomp-conflict") : true; }
 

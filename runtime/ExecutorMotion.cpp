@@ -23,11 +23,12 @@ constexpr ArcAxes kArcAxes[] = {
     {1, 2, 0, Word::J, Word::K, 'Y', 'Z'},
 };
 
-// rs274 2.9 accepts an IJK arc unless both the radius difference and the relative difference
-// (0.1 %) are exceeded; the absolute limit measured on it lies between 0.028 and 0.0284 mm for
-// mm programs and between 0.0028 and 0.003 inch for inch programs.
+// rs274's rule for centre-form arcs: an error when the start and end radii differ by more than
+// 100 x the absolute tolerance, or by more than the absolute tolerance AND by more than 0.1 %
+// of the larger radius. The absolute tolerance is 0.01 x 2 x sqrt(2) mm in mm programs and
+// 0.001 x 2 x sqrt(2) inch in inch programs (rs274ngc CENTER_ARC_RADIUS_TOLERANCE_*).
 constexpr double kArcRelTolerance = 0.001;
-constexpr double kArcAbsTolMM = 0.0282, kArcAbsTolInch = 0.0029;
+constexpr double kArcAbsTolMM = 0.02 * M_SQRT2, kArcAbsTolInch = 0.002 * M_SQRT2;
 // R-form arcs whose radius is shorter than half the chord by less than this pass as half circles
 // (rs274: 0.001 mm passes, 0.002 mm fails; 0.0001 inch fails).
 constexpr double kRadiusTolMM = 0.0015, kRadiusTolInch = 0.00005;
@@ -115,10 +116,14 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   const ArcAxes &ax = kArcAxes[(int)plane()];
   const char *code = cw ? "G2" : "G3";
   if (!checkFeed(code)) return false;
-  const AxisVec start = st.position;
+  if (rotated() && plane() != Plane::XY)
+    return error("arcs outside the XY plane with a rotated coordinate system are not supported",
+                 "unsupported-code");
   const AxisVec end = target(c);
+  // Computed in the offset frame (ExecutorImpl.h): I J K and R are program values.
+  const AxisVec start = frameIn(st.position), fend = frameIn(end);
   const bool inch = st.units == ModeValue::Inch;
-  const double s1 = start[ax.a1], s2 = start[ax.a2], e1 = end[ax.a1], e2 = end[ax.a2];
+  const double s1 = start[ax.a1], s2 = start[ax.a2], e1 = fend[ax.a1], e2 = fend[ax.a2];
   double c1, c2;
   // The offset word of the axis normal to the plane (K in G17, J in G18, I in G19).
   static const Word kNormalWord[] = {Word::K, Word::J, Word::I};
@@ -148,24 +153,24 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   } else {
     double o1 = c.get(ax.o1) * scale(), o2 = c.get(ax.o2) * scale();
     if (st.arcDistance == ModeValue::ArcAbsolute) {
-      c1 = o1 + offset(ax.a1);
-      c2 = o2 + offset(ax.a2);
+      c1 = o1 + frameOffset(ax.a1);
+      c2 = o2 + frameOffset(ax.a2);
     } else {
       c1 = s1 + o1;
       c2 = s2 + o2;
     }
     double r1 = std::hypot(s1 - c1, s2 - c2), r2 = std::hypot(e1 - c1, e2 - c2);
     if (r1 == 0) return error("Zero-radius arc", "arc-invalid");
-    double absErr = std::fabs(r1 - r2), relErr = absErr / r1;
+    double absErr = std::fabs(r1 - r2), relErr = absErr / std::max(r1, r2);
     double tol = std::max(machine.arcTolerance, inch ? kArcAbsTolInch * 25.4 : kArcAbsTolMM);
-    if (absErr > tol && relErr > kArcRelTolerance) {
+    if (absErr > 100 * tol || (absErr > tol && relErr > kArcRelTolerance)) {
       // rs274's message, in program units.
       double k = 1 / scale();
-      double p1 = offset(ax.a1), p2 = offset(ax.a2);
+      double p1 = frameOffset(ax.a1), p2 = frameOffset(ax.a2);
       char buf[512];
       std::snprintf(buf, sizeof buf,
                     "Radius to end of arc differs from radius to start: start=(%c%.4f,%c%.4f) "
-                    "center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f abs_err=%.3g "
+                    "center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f abs_err=%.4g "
                     "rel_err=%.4f%%",
                     ax.l1, (s1 - p1) * k, ax.l2, (s2 - p2) * k, ax.l1, (c1 - p1) * k, ax.l2,
                     (c2 - p2) * k, ax.l1, (e1 - p1) * k, ax.l2, (e2 - p2) * k, r1 * k, r2 * k,
@@ -183,9 +188,11 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   }
   MotionRecord r = record(RecordKind::Arc);
   r.end = end;
-  r.center[ax.a1] = c1;
-  r.center[ax.a2] = c2;
-  r.center[ax.d] = start[ax.d];
+  AxisVec centre = start;
+  centre[ax.a1] = c1;
+  centre[ax.a2] = c2;
+  centre = frameOut(centre);
+  r.center = {centre[0], centre[1], centre[2]};
   r.turns = cw ? -turns : turns;
   r.exactStop = st.pathMode == ModeValue::ExactStop;
   // Path length (for inverse-time feed): swept angle times radius, with the helix.
@@ -205,12 +212,14 @@ bool Executor::Impl::execHome(const MachineCmd &c) {
   // none is named) to the stored reference position (machine coordinates).
   if (!compForbids("Cannot use g28 or g30 with cutter radius comp")) return false;
   if (!moveTo(RecordKind::Rapid, target(c))) return false;
-  const AxisVec &home = c.sub == 2 ? machine.home2 : machine.home1;
+  // rs274 replaces the named axes' program coordinates by the reference point's: under a
+  // rotated coordinate system G28 X moves along the program X axis (frameIn/frameOut).
+  const AxisVec home = frameIn(c.sub == 2 ? machine.home2 : machine.home1);
   bool any = c.mask & kAxisMask;
-  AxisVec t = st.position;
+  AxisVec t = frameIn(st.position);
   for (int i = 0; i < kAxes; ++i)
     if (!any || c.has((Word)i)) t[i] = home[i];
-  return moveTo(RecordKind::Rapid, t);
+  return moveTo(RecordKind::Rapid, frameOut(t));
 }
 
 bool Executor::Impl::execMachineMove(const MachineCmd &c) {

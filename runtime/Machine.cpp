@@ -105,6 +105,12 @@ const KeyDef<Machine> kMachineKeys[] = {
     {"max_feed", NCC_NUM(maxFeed, d > 0, "> 0")},
     {"arc_tolerance", NCC_NUM(arcTolerance, d > 0, "> 0")},
     {"path_tolerance", NCC_NUM(pathTolerance, d >= 0, ">= 0")},
+    {"free_tools", [](Machine &m, const std::string &v) -> std::string {
+       long long n;
+       if (!parseInt(v, n) || n < 0 || n > 99999) return "expected an integer 0..99999, got '" + v + "'";
+       m.freeTools = (int)n;
+       return {};
+     }},
     {"lookahead", [](Machine &m, const std::string &v) -> std::string {
        long long n;
        if (!parseInt(v, n)) return "expected an integer, got '" + v + "'";
@@ -300,6 +306,13 @@ const Machine &Machine::builtinDefault() {
     return r;
   }();
   return m;
+}
+
+const ToolData *Machine::findTool(int n) const {
+  static const ToolData kNone{};
+  if (auto it = tools.find(n); it != tools.end()) return &it->second;
+  // A machine without a tool table restricts nothing.
+  return n == 0 || tools.empty() || (n > 0 && n <= freeTools) ? &kNone : nullptr;
 }
 
 }  // namespace ncc

@@ -38,6 +38,12 @@ struct Machine {
   std::array<AxisVec, 9> workOffsets{};  // G54..G59.3, machine mm
   AxisVec home1{}, home2{};              // G28 / G30 reference positions, machine mm
   std::map<int, ToolData> tools;
+  // Tool numbers 1..freeTools are valid even when the table lacks them (zero length and
+  // radius), as in rs274's stand-alone set-up; any other number must be in the table (when
+  // the machine has one).
+  int freeTools = 0;
+  // The tool data of number n (0 = no tool: zero data), or null when n is not a valid tool.
+  const ToolData *findTool(int n) const;
   // Every section and key of the file as written, for consumers with their own settings
   // (emitters read [emit.iso], [emit.sinumerik]).
   std::map<std::string, std::map<std::string, std::string>> sections;

@@ -43,7 +43,7 @@ struct GCodeInfo {
 const GCodeInfo *findGCode(int32_t code10);
 
 // M codes with a built-in meaning; every other integer M is an `aux`.
-enum class MKind : uint8_t { Stop, ToolChange, Spindle, Coolant, Call, Return, Aux };
+enum class MKind : uint8_t { Stop, ToolChange, Spindle, Coolant, Call, Return, Aux, Unsupported };
 enum class MGroup : uint8_t { None, Stop, ToolChange, Spindle, Coolant, Sub };
 
 struct MCodeInfo {
@@ -51,8 +51,10 @@ struct MCodeInfo {
   MKind kind;
   MGroup group;
   int arg;          // Stop: StopKind; Spindle: 0 stop 1 cw 2 ccw; Coolant: 7 mist 8 flood 9 off
+  const char *what = nullptr;  // Unsupported: what the code does (for the message)
+  bool rs274Only = false;      // the meaning is LinuxCNC's; elsewhere the code is an aux code
 };
 // Returns the built-in meaning, or an Aux entry for any other code.
-MCodeInfo findMCode(int32_t code);
+MCodeInfo findMCode(int32_t code, bool rs274);
 
 }  // namespace ncc::iso

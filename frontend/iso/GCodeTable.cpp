@@ -29,6 +29,8 @@ static const GCodeInfo kGCodes[] = {
     SPECIAL(40, Dwell, NonModal, 0, "dwell"),
     SPECIAL(50, SubCall, NonModal, 0, "subprogram call"),
     NOOP(51, NonModal, "high-speed cutting (ignored, spec ISO-SUB-02)"),
+    UNSUP(52, NonModal, "NURBS block"),
+    UNSUP(53, NonModal, "NURBS block end"),
     UNSUP(71, NonModal, "cylindrical interpolation"),
     UNSUP(90, NonModal, "one-shot exact stop"),
     SPECIAL(100, SetOffset, NonModal, 0, "data setting"),
@@ -142,11 +144,22 @@ static const MCodeInfo kMCodes[] = {
     {30, MKind::Stop, MGroup::Stop, (int)StopKind::EndRewind},
     {98, MKind::Call, MGroup::Sub, 0},
     {99, MKind::Return, MGroup::Sub, 0},
+    // Codes that move the machine or change what it does, not modelled yet: an error, never
+    // an aux code whose words are quietly dropped.
+    {19, MKind::Unsupported, MGroup::None, 0, "spindle orientation"},
+    {61, MKind::Unsupported, MGroup::None, 0, "set the current tool number", true},
+    {62, MKind::Unsupported, MGroup::None, 0, "digital output on, synchronized with motion", true},
+    {63, MKind::Unsupported, MGroup::None, 0, "digital output off, synchronized with motion", true},
+    {64, MKind::Unsupported, MGroup::None, 0, "digital output on, immediate", true},
+    {65, MKind::Unsupported, MGroup::None, 0, "digital output off, immediate", true},
+    {66, MKind::Unsupported, MGroup::None, 0, "wait on an input", true},
+    {67, MKind::Unsupported, MGroup::None, 0, "analog output, synchronized with motion", true},
+    {68, MKind::Unsupported, MGroup::None, 0, "analog output, immediate", true},
 };
 
-MCodeInfo findMCode(int32_t code) {
+MCodeInfo findMCode(int32_t code, bool rs274) {
   for (auto &m : kMCodes)
-    if (m.code == code) return m;
+    if (m.code == code && (rs274 || !m.rs274Only)) return m;
   return {code, MKind::Aux, MGroup::None, 0};
 }
 

@@ -33,6 +33,16 @@ static Scale scaleOf(char letter) {
   }
 }
 
+// G codes that mean something else in RS274NGC than in the Fanuc table and are not lowered yet.
+static const char *rs274Meaning(int32_t code10) {
+  switch (code10) {
+  case 50: return "RS274NGC cubic spline";
+  case 51: return "RS274NGC quadratic spline";
+  case 760: return "RS274NGC threading cycle";
+  default: return nullptr;
+  }
+}
+
 static std::string gName(int32_t code10) {
   return code10 % 10 ? fmt::format("G{}.{}", code10 / 10, code10 % 10) : fmt::format("G{}", code10 / 10);
 }
@@ -93,6 +103,7 @@ struct BlockLowerer::Block {
   int nm = 0;
   bool macroCall = false;  // G65: every other address is an argument (M too)
   bool axesTaken = false;  // a non-modal code took the axis words
+  bool dwellTookAxis = false;  // Fanuc G4 X<seconds>
   const GCodeInfo *nonModal = nullptr;
 
   Block(BlockLowerer &l, ParsedBlock &blk, Region &o) : L(l), b(blk), out(o) {}
@@ -202,8 +213,10 @@ bool BlockLowerer::Block::classify() {
         ok = false;
         continue;
       }
-      if (gi->code10 == 760 && L.flavour_ == Flavour::RS274) {  // LinuxCNC G76 is threading
-        L.diags_.error(w.loc, "G76 (RS274NGC threading cycle) is not supported", "unsupported-code");
+      // Codes whose LinuxCNC meaning differs from Fanuc's: G76 threading, G5/G5.1 splines.
+      if (const char *what = L.flavour_ == Flavour::RS274 ? rs274Meaning(gi->code10) : nullptr) {
+        L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), what),
+                       "unsupported-code");
         ok = false;
         continue;
       }
@@ -250,7 +263,12 @@ bool BlockLowerer::Block::classify() {
         ok = false;
         continue;
       }
-      MCodeInfo mi = findMCode((int32_t)w.value);
+      MCodeInfo mi = findMCode((int32_t)w.value, L.flavour_ == Flavour::RS274);
+      if (mi.kind == MKind::Unsupported) {
+        L.diags_.error(w.loc, fmt::format("M{} ({}) is not supported", mi.code, mi.what), "unsupported-code");
+        ok = false;
+        continue;
+      }
       if (nm == 5) {
         L.diags_.error(w.loc, "more than 5 M codes in one block", "too-many-m-codes");
         ok = false;
@@ -316,12 +334,10 @@ bool BlockLowerer::Block::setup() {
     if (bw.has('S')) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
     if (bw.has('T')) {
       emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
-      L.selectedTool_ = literal(*bw.get('T'), 1.0);
     }
   }
   if (auto *m = findM(MKind::ToolChange)) {
     emit(OpKind::ToolChange, m->word->loc);
-    L.loadedTool_ = L.selectedTool_ ? L.selectedTool_->clone() : nullptr;
   }
   if (auto *m = findM(MKind::Spindle)) {
     static const char *dirs[] = {"stop", "cw", "ccw"};
@@ -346,10 +362,21 @@ bool BlockLowerer::Block::setup() {
       if (L.flavour_ == Flavour::RS274 || (p->hasPoint && !p->expr)) secs = literal(*p, 1.0);
       else if (p->expr) secs = Expr::binary(ir::OpCode::Div, p->expr->clone(), Expr::number(1000, ir::Type::Int, p->loc), p->loc);
       else secs = Expr::number(p->value / 1000.0, ir::Type::Real, p->loc);
-    } else if (bw.has('X') || bw.has('U')) {
+    } else if (L.flavour_ == Flavour::Fanuc && (bw.has('X') || bw.has('U'))) {
+      // Fanuc G4 X<seconds>: the word is the dwell time, not an axis.
       secs = take(bw.has('X') ? 'X' : 'U', Scale::DwellX);
+      dwellTookAxis = true;
     } else {
       L.diags_.error(loc, "G4 needs a dwell time: P (milliseconds) or X (seconds)", "missing-word");
+      return false;
+    }
+    // 808D ISO (spec ISO-LEX-11, manual L2111): a dwell is programmed in a block of its own.
+    // rs274 runs a dwell and the block's motion, the dwell first.
+    uint32_t axisBits = 0;
+    for (char a : std::string_view("XYZABCUVW")) axisBits |= 1u << (a - 'A');
+    if (L.flavour_ == Flavour::Fanuc && (G(GGroup::Motion) || (bw.present & ~bw.used & axisBits))) {
+      L.diags_.error(loc, "G4 must be programmed in a block of its own (no motion in a dwell block)",
+                     "dwell-with-motion");
       return false;
     }
     emit(OpKind::Dwell, loc).set("seconds", std::move(secs));
@@ -361,25 +388,30 @@ bool BlockLowerer::Block::setup() {
     Op &op = emit(OpKind::CutterComp, gloc(GGroup::CutterComp));
     op.set("side", Expr::symbol(sides[gi->arg], gloc(GGroup::CutterComp)));
     if (gi->arg != 0 && bw.has('D')) op.set("d", take('D', Scale::None));
+    else if (gi->arg != 0 && L.flavour_ == Flavour::RS274)  // rs274: the loaded tool's radius
+      op.set("d_default", Expr::symbol("tool", gloc(GGroup::CutterComp)));
   }
   if (auto *gi = G(GGroup::ToolLength)) {
     SourceLoc loc = gloc(GGroup::ToolLength);
     ExprPtr h;
     if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
     else if (bw.has('H')) h = take('H', Scale::None);
-    else if (L.flavour_ == Flavour::RS274 && L.loadedTool_) h = L.loadedTool_->clone();
-    if (!h) {
+    if (!h && L.flavour_ != Flavour::RS274) {
       L.diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
       return false;
     }
-    emit(OpKind::ToolLength, loc).set("h", std::move(h));
+    Op &op = emit(OpKind::ToolLength, loc);
+    if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
   }
   if (auto *gi = G(GGroup::WorkOffset))
     emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
         .set("index", Expr::number(gi->arg, ir::Type::Int, gloc(GGroup::WorkOffset)));
   modeOp(GGroup::PathMode, "path_mode");
   if (G(GGroup::PathMode) && G(GGroup::PathMode)->mode == ModeValue::Continuous) {
-    bw.used |= (1u << ('P' - 'A')) | (1u << ('Q' - 'A'));  // G64 P<tolerance> Q<tolerance>
+    // G64 P<path tolerance> Q<naive-CAM tolerance>; rs274: Q defaults to P.
+    Op &op = out.back();
+    if (bw.has('P')) op.set("tolerance", take('P', Scale::Linear));
+    if (bw.has('Q')) op.set("naive_tolerance", take('Q', Scale::Linear));
   }
   modeOp(GGroup::Distance, "distance");
   modeOp(GGroup::ArcDistance, "arc_distance");
@@ -389,7 +421,9 @@ bool BlockLowerer::Block::setup() {
 
 // Non-modal codes that take the axis words for themselves: G10/G92, G28/G30, G53.
 bool BlockLowerer::Block::coordinateOps() {
-  axesTaken = macroCall || (nonModal && nonModal->kind == GKind::Dwell);
+  // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
+  // unless Fanuc's G4 X took X as the time.
+  axesTaken = macroCall || dwellTookAxis;
   if (nonModal && nonModal->kind == GKind::SetOffset) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::SetOffset, loc);
@@ -410,6 +444,14 @@ bool BlockLowerer::Block::coordinateOps() {
       bw.used |= 1u << ('L' - 'A');
       op.set("kind", Expr::symbol(lv == 2 ? "g10l2" : "g10l20", loc));
       op.set("index", take('P', Scale::None));
+      // RS274NGC G10 L2 R<degrees>: the system's rotation about the Z axis (Fanuc has none).
+      if (L.flavour_ == Flavour::RS274 && bw.has('R')) {
+        if (lv == 20) {
+          L.diags_.error(bw.get('R')->loc, "R not allowed in G10 L20", "syntax");
+          return false;
+        }
+        op.set("R", take('R', Scale::None));
+      }
     } else {
       op.set("kind", Expr::symbol(nonModal->arg == 1 ? "g92" : "g92_1", loc));
     }
@@ -565,7 +607,7 @@ bool BlockLowerer::Block::callsAndReturn() {
         L.diags_.error(w.loc, fmt::format("{} is not a macro argument", w.letter), "syntax");
         return false;
       }
-      if (w.letter != 'M') bw.used |= 1u << (w.letter - 'A');
+      bw.used |= 1u << (w.letter - 'A');
       op.set(fmt::format("a.{}", local), literal(w, 1.0));  // later words win (D=#7 vs I2)
     }
   }
@@ -586,10 +628,16 @@ bool BlockLowerer::Block::finish() {
     op.set("value", std::move(a.value));
   }
 
+  // A word no code of the block uses is an error, as in rs274: it usually means a code ncc
+  // does not model (or a typo), and running without it would be silently wrong.
+  bool ok = true;
   for (uint32_t unused = bw.present & ~bw.used; unused; unused &= unused - 1)
-    if (int c = __builtin_ctz(unused); bw.w[c])
-      L.diags_.warning(bw.w[c]->loc, fmt::format("{} word is not used in this block", (char)('A' + c)), "unused-word");
-  return true;
+    if (int c = __builtin_ctz(unused); bw.w[c]) {
+      L.diags_.error(bw.w[c]->loc, fmt::format("{} word is not used by any code of this block", (char)('A' + c)),
+                     "unused-word");
+      ok = false;
+    }
+  return ok;
 }
 
 bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {

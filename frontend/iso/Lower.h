@@ -34,8 +34,6 @@ private:
   ModeValue motion_ = ModeValue::Rapid;
   ModeValue feedMode_ = ModeValue::PerMinute;
   ModeValue units_ = ModeValue::MM;
-  // RS274NGC `G43` without H uses the loaded tool: T of the last M6, tracked in source order.
-  ir::ExprPtr selectedTool_, loadedTool_;
 };
 
 }  // namespace ncc::iso

@@ -450,7 +450,23 @@ TEST(Executor, Rs274ArcAndFeedMessages) {
   EXPECT_EQ(first({feed(100), mode({ModeValue::ArcCW}), move({{Word::X, 10}, {Word::I, 5}, {Word::P, 0}})}),
             "P value should be 1 or greater with G2 or G3");
   EXPECT_EQ(first({feed(100), mode({ModeValue::CycleOff}), move({{Word::X, 5}})}), "Cannot use axis values with G80");
-  EXPECT_EQ(first({words(CmdKind::ToolLength, {{Word::H, 9}})}), "Requested tool 9 not found in the tool table");
+  {
+    // With a tool table, a number outside it (and outside free_tools) is an error; without
+    // one, every number is a tool of zero length.
+    Machine m;
+    m.tools[1] = {10, 1};
+    ExecRun table(m);
+    EXPECT_FALSE(table({words(CmdKind::ToolLength, {{Word::H, 9}})}));
+    EXPECT_EQ(table.diags.collected()[0].message, "Requested tool 9 not found in the tool table");
+    ExecRun tsel(m);
+    EXPECT_FALSE(tsel({words(CmdKind::ToolSelect, {{Word::T, 2}})}));
+    EXPECT_EQ(tsel.diags.collected()[0].message, "Requested tool 2 not found in the tool table");
+    m.freeTools = 9;
+    ExecRun freeTools(m);
+    EXPECT_TRUE(freeTools({words(CmdKind::ToolLength, {{Word::H, 9}})}));
+    ExecRun noTable;
+    EXPECT_TRUE(noTable({words(CmdKind::ToolLength, {{Word::H, 9}})}));
+  }
   // Inverse time: F in the block of each feed move.
   EXPECT_EQ(first({feed(100), mode({ModeValue::InverseTime, ModeValue::Linear}), words(CmdKind::Block, {}),
                    move({{Word::X, 10}})}),

@@ -183,9 +183,7 @@ TEST(Machine, LoadFileAndMissingFile) {
 
 TEST(Machine, SampleMachinesParse) {
   for (const char *name : {"examples/machines/five-axis-trunnion.ini"}) {
-    // The source tree, found from this file's path (test/unit/MachineTest.cpp).
-    std::string self = __FILE__;
-    std::string path = self.substr(0, self.rfind("test/unit/")) + name;
+    std::string path = std::string(NCC_SOURCE_DIR) + "/" + name;
     Machine m;
     std::string err;
     ASSERT_TRUE(Machine::load(path, m, err)) << err;

@@ -20,4 +20,4 @@ G64 P0.01
 ; CHECK-NEXT: feed value=0.3
 ; CHECK: mode path_mode=exact_path loc(1:4:1)
 ; CHECK: mode path_mode=exact_stop loc(1:5:1)
-; CHECK: mode path_mode=continuous loc(1:6:1)
+; CHECK: mode path_mode=continuous tolerance=0.01 loc(1:6:1)

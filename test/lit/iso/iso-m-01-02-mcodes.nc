@@ -4,7 +4,6 @@ M8
 M7
 M9
 M7 M8
-M19
 M29 M3 M8 M50
 M2
 M30
@@ -18,11 +17,10 @@ M30
 ; CHECK: coolant mist=on loc(1:4:1)
 ; CHECK: coolant mist=off flood=off loc(1:5:1)
 ; CHECK: coolant mist=on flood=on loc(1:6:1)
-; CHECK: aux m=19 loc(1:7:1)
-; CHECK: block loc(1:8:1)
+; CHECK: block loc(1:7:1)
 ; CHECK-NEXT: spindle dir=cw
 ; CHECK-NEXT: coolant flood=on
 ; CHECK-NEXT: aux m=29
 ; CHECK-NEXT: aux m=50
-; CHECK: stop kind=end loc(1:9:1)
-; CHECK: stop kind=end_rewind loc(1:10:1)
+; CHECK: stop kind=end loc(1:8:1)
+; CHECK: stop kind=end_rewind loc(1:9:1)
