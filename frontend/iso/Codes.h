@@ -42,6 +42,10 @@ struct GCodeInfo {
 // Null when the code is unknown.
 const GCodeInfo *findGCode(int32_t code10);
 
+// The parameter words a canned cycle reads besides X Y Z R F and the repeat count (K/L):
+// e.g. "P" or "PQ". A word the cycle does not read is an unused word (an error).
+const char *cycleParamWords(ModeValue cycle, bool rs274);
+
 // M codes with a built-in meaning; every other integer M is an `aux`.
 enum class MKind : uint8_t { Stop, ToolChange, Spindle, Coolant, Call, Return, Aux, Unsupported };
 enum class MGroup : uint8_t { None, Stop, ToolChange, Spindle, Coolant, Sub };

@@ -130,6 +130,25 @@ const GCodeInfo *findGCode(int32_t code10) {
   return nullptr;
 }
 
+// Fanuc / 808D word lists (spec tables 2-14 .. 2-25) and LinuxCNC rs274's, which rejects P and
+// Q where its cycle does not read them.
+struct CycleWords {
+  ModeValue cycle;
+  const char *fanuc, *rs274;
+};
+static const CycleWords kCycleWords[] = {
+    {MV::PeckChipBreak, "Q", "Q"}, {MV::TapLeft, "P", ""},  {MV::BoreFine, "PQ", ""},
+    {MV::Drill, "", ""},           {MV::DrillDwell, "P", "P"}, {MV::Peck, "Q", "Q"},
+    {MV::Tap, "P", ""},            {MV::BoreFeed, "", ""},  {MV::BoreStop, "", "P"},
+    {MV::BoreBack, "PQ", ""},      {MV::BoreDwell, "P", "P"},
+};
+
+const char *cycleParamWords(ModeValue cycle, bool rs274) {
+  for (auto &c : kCycleWords)
+    if (c.cycle == cycle) return rs274 ? c.rs274 : c.fanuc;
+  return "";
+}
+
 static const MCodeInfo kMCodes[] = {
     {0, MKind::Stop, MGroup::Stop, (int)StopKind::Program},
     {1, MKind::Stop, MGroup::Stop, (int)StopKind::Optional},

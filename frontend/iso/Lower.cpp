@@ -489,6 +489,8 @@ bool BlockLowerer::Block::motion() {
     bool arc = L.motion_ == ModeValue::ArcCW || L.motion_ == ModeValue::ArcCCW;
     bool moves = bw.hasAny(kAxes) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R'));
     if (moves) {
+      const bool rs274 = L.flavour_ == Flavour::RS274;
+      std::string_view params = cycle ? cycleParamWords(L.motion_, rs274) : "";
       if (cycle && bw.has('K') && bw.has('L')) {
         L.diags_.error(bw.get('K')->loc, "K and L both give the cycle repeat count", "duplicate-word");
         return false;
@@ -497,11 +499,12 @@ bool BlockLowerer::Block::motion() {
       Op op(OpKind::Move, loc);
       op.args.reserve((size_t)__builtin_popcount(bw.present));
       axisWords(op, kAxes);
-      for (char c : std::string_view("IJKR")) {
-        if (!bw.has(c) || (c == 'K' && cycle) || (!arc && !cycle)) continue;
+      // Arcs read I J K R; cycles read R (the clearance plane) only.
+      for (char c : std::string_view(arc ? "IJKR" : cycle ? "R" : "")) {
+        if (!bw.has(c)) continue;
         add(op, c, take(c, Scale::Linear));
       }
-      if (bw.has('P') && (arc || cycle)) {
+      if (bw.has('P') && (arc || params.find('P') != std::string_view::npos)) {
         IsoWord *p = bw.get('P');
         bw.used |= 1u << ('P' - 'A');
         // Cycle dwell: seconds (Fanuc P without a point is milliseconds); arc P = turns.
@@ -516,8 +519,9 @@ bool BlockLowerer::Block::motion() {
       if (L.motion_ == ModeValue::BoreStop && L.flavour_ == Flavour::Fanuc && !bw.has('P') &&
           G(GGroup::Motion))
         op.set("P", Expr::number(0.0, ir::Type::Real, loc));
-      if (cycle && bw.has('Q')) op.set("Q", take('Q', Scale::Linear));
-      if (cycle && (bw.has('K') || bw.has('L'))) op.set("L", take(bw.has('K') ? 'K' : 'L', Scale::None));
+      if (bw.has('Q') && params.find('Q') != std::string_view::npos) op.set("Q", take('Q', Scale::Linear));
+      // The repeat count: K (Fanuc/808D) or L; rs274 has L only.
+      if (cycle && (bw.has('L') || (bw.has('K') && !rs274))) op.set("L", take(bw.has('L') ? 'L' : 'K', Scale::None));
       out.push_back(std::move(op));
     }
   }
