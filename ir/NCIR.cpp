@@ -1,4 +1,5 @@
 #include "ir/NCIR.h"
+#include "ir/MachineCmd.h"
 
 #include <cstring>
 
@@ -102,12 +103,21 @@ ExprPtr Expr::clone() const {
   return e;
 }
 
+// The keys of `mode` are the mode groups; MachineCmd::modes has one slot per key.
+static constexpr char kModeKeys[] = "motion plane units distance arc_distance feed_mode retract path_mode";
+static constexpr size_t countWords(std::string_view s) {
+  size_t n = 0;
+  for (size_t i = 0; i < s.size(); ++i) n += s[i] != ' ' && (i == 0 || s[i - 1] == ' ');
+  return n;
+}
+static_assert(countWords(kModeKeys) == kMaxModes, "MachineCmd::modes must hold every key of 'mode'");
+
 // The op table: textual name, region counts, required and allowed argument keys.
 static const OpInfo kOps[] = {
     {OpKind::Block, "block", 0, 0, "", "n skip"},
     {OpKind::Comment, "comment", 0, 0, "text", ""},
     {OpKind::Message, "message", 0, 0, "text", ""},
-    {OpKind::Mode, "mode", 0, 0, "", "motion plane units distance arc_distance feed_mode retract path_mode"},
+    {OpKind::Mode, "mode", 0, 0, "", kModeKeys},
     {OpKind::Feed, "feed", 0, 0, "value", ""},
     {OpKind::Speed, "speed", 0, 0, "value", ""},
     {OpKind::ToolSelect, "tool_select", 0, 0, "value", ""},

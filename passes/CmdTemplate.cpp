@@ -143,7 +143,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
         diags.error(op.loc, fmt::format("invalid mode '{}'", a.key));
         return false;
       }
-      if (c.nmodes < 6) c.modes[c.nmodes++] = v;
+      c.modes[c.nmodes++] = v;  // keys are distinct groups: at most kMaxModes
     }
     return true;
   case OpKind::Spindle: return symbolArg("dir", c.sub);

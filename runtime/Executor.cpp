@@ -38,7 +38,7 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
 }
 
 bool Executor::Impl::execMode(const MachineCmd &c) {
-  for (unsigned i = 0; i < c.nmodes && i < 6; ++i) {
+  for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
     case ModeGroup::Motion:

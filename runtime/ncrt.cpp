@@ -87,7 +87,7 @@ static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
   c.sub2 = p[2];
   c.nmodes = p[3];
   p += 4;
-  if (c.kind >= CmdKind::Count || c.nmodes > 6 || end - p < c.nmodes) return false;
+  if (c.kind >= CmdKind::Count || c.nmodes > kMaxModes || end - p < c.nmodes) return false;
   for (unsigned i = 0; i < c.nmodes; ++i) c.modes[i] = (ModeValue)*p++;
   uint64_t v;
   if (!getVarint(p, end, v)) return false;

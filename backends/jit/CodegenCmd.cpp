@@ -18,13 +18,13 @@ static constexpr size_t kSmallRun = 16;
 static bool hasText(const MachineCmd &c) { return c.kind == CmdKind::Comment || c.kind == CmdKind::Message; }
 
 Constant *Codegen::cmdConstant(const MachineCmd &c) {
-  uint8_t modes[6];
-  for (int i = 0; i < 6; ++i) modes[i] = (uint8_t)c.modes[i];
+  uint8_t modes[kMaxModes];
+  for (int i = 0; i < kMaxModes; ++i) modes[i] = (uint8_t)c.modes[i];
   uint32_t loc[3] = {c.loc.file, c.loc.line, c.loc.col};
   Constant *text = hasText(c) && c.text ? cstring(c.text) : ConstantPointerNull::get(ptrTy);
   return ConstantStruct::get(
       cmdTy, {B.getInt8((uint8_t)c.kind), B.getInt8(c.sub), B.getInt8(c.sub2), B.getInt8(c.nmodes),
-              ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, 6)), B.getInt32(c.mask),
+              ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, kMaxModes)), B.getInt32(c.mask),
               B.getInt64((uint64_t)c.blockNumber), ConstantDataArray::get(C, ArrayRef<uint32_t>(loc, 3)), text,
               ConstantDataArray::get(C, ArrayRef<double>(c.w, kWords))});
 }
