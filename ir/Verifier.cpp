@@ -197,6 +197,9 @@ private:
         error(op.loc, fmt::format("'{}' argument '{}' must be a non-negative integer constant", name, r.key));
     }
     if (op.kind == OpKind::Mode) checkModes(op);
+    // One aux op is one auxiliary function: its letter is the key.
+    if (op.kind == OpKind::Aux && !!op.get("m") + !!op.get("b") + !!op.get("h") != 1)
+      error(op.loc, "'aux' needs exactly one of m=, b=, h=");
     // DEF declares named variables; numbered parameters exist without a declaration.
     if (const Expr *v = op.kind == OpKind::Declare ? op.get("var") : nullptr)
       if (v->kind == ExprKind::Var && v->space != VarSpace::Local && v->space != VarSpace::Global)

@@ -58,6 +58,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::ToolSelect, "value", Word::T}, {OpKind::Dwell, "seconds", Word::P},
     {OpKind::ToolLength, "h", Word::H},     {OpKind::CutterComp, "d", Word::D},
     {OpKind::SetOffset, "index", Word::P},  {OpKind::Aux, "m", Word::P},
+    {OpKind::Aux, "b", Word::P},            {OpKind::Aux, "h", Word::P},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -179,7 +180,10 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     }
     return true;
   case OpKind::Aux:
+    // The letter is the key (m, b or h; the verifier requires exactly one); its value goes to P.
     c.sub = 'M';
+    for (const char *key : {"b", "h"})
+      if (op.get(key)) c.sub = (uint8_t)(key[0] - 'a' + 'A');
     break;
   case OpKind::Home: {
     double v = 1;
@@ -243,7 +247,8 @@ Op cmdToOp(const MachineCmd &c) {
   default: break;
   }
   for (auto &kw : kKeyWords)
-    if (kw.op == op.kind && c.has(kw.word)) {
+    if (kw.op == op.kind && c.has(kw.word) &&
+        (op.kind != OpKind::Aux || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
       bool isInt = kw.word == Word::T || kw.word == Word::H || kw.word == Word::D ||
                    (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux;
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));

@@ -326,6 +326,7 @@ bool Executor::exec(const MachineCmd &c) {
     MotionRecord r = x.record(RecordKind::Aux);
     double p = c.get(Word::P);
     if (std::fabs(p) > 1e15) return x.error("aux code out of range", "bad-number");
+    if (p != std::trunc(p)) return x.error("aux code must be an integer", "bad-number");
     r.ivalue = (int64_t)p;
     r.text = std::string(1, c.sub ? (char)c.sub : 'M');
     x.emit(r);

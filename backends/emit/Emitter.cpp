@@ -481,7 +481,7 @@ void Emitter::record(const MotionRecord &r) {
     break;
   case RecordKind::Aux:
     flushPending();
-    writeBlock({"M" + std::to_string(r.ivalue)}, r.blockNumber);
+    writeBlock({(r.text.empty() ? "M" : r.text) + std::to_string(r.ivalue)}, r.blockNumber);
     break;
   case RecordKind::Count: break;
   }
