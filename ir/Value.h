@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string_view>
 
 namespace ncc {
 
@@ -35,6 +36,19 @@ inline bool isVacant(double v) {
 // The value used in arithmetic.
 inline double num(double v) { return isVacant(v) ? 0.0 : v; }
 inline bool truthy(double v) { return !isVacant(v) && v != 0.0; }
+
+// Parameter arrays that exist before the program runs. Sinumerik R and Heidenhain Q/QL/QR
+// parameters start at 0 (only Macro B `#n` starts vacant). QS holds strings, which variables
+// cannot hold yet: it stays vacant. Q prefixes have fixed array numbers in both engines.
+constexpr std::string_view kQPrefixes[] = {"Q", "QL", "QR", "QS"};
+constexpr int kQSpaces = 4;
+inline int qPrefixIndex(std::string_view prefix) {
+  for (int i = 0; i < kQSpaces; ++i)
+    if (kQPrefixes[i] == prefix) return i;
+  return -1;
+}
+inline double rParamStart() { return 0.0; }
+inline double qParamStart(int prefixIndex) { return kQPrefixes[prefixIndex] == "QS" ? vacantValue() : 0.0; }
 
 inline double valueEq(double a, double b) {
   bool va = isVacant(a), vb = isVacant(b);

@@ -94,8 +94,8 @@ struct Evaluator::Impl {
   std::unordered_map<std::string, uint32_t> mainLocalNames;
   std::vector<double> globalNamed;
   std::vector<double> numbered = std::vector<double>(100000, vacantValue());
-  std::vector<double> rparams = std::vector<double>(1000, vacantValue());
-  std::unordered_map<std::string, std::vector<double>> qparams;
+  std::vector<double> rparams = std::vector<double>(1000, rParamStart());
+  std::vector<double> qparams[kQSpaces];  // by qPrefixIndex, allocated on first use
   unsigned depth = 0;
   uint64_t steps = 0;
   bool ended = false;
@@ -324,8 +324,10 @@ struct Evaluator::Impl {
     case VarSpace::Numbered: return numberedRef(fr, v, write);
     case VarSpace::RParam: return arrayRef(rparams, fr, v, "R parameter");
     case VarSpace::QParam: {
-      auto &arr = qparams[v.str];
-      if (arr.empty()) arr.assign(2000, vacantValue());
+      int q = qPrefixIndex(v.str);
+      if (q < 0) fail(v.loc, fmt::format("unknown Q parameter prefix '{}'", v.str));
+      auto &arr = qparams[q];
+      if (arr.empty()) arr.assign(2000, qParamStart(q));
       return arrayRef(arr, fr, v, "Q parameter");
     }
     case VarSpace::Local: {

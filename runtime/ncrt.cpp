@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -118,8 +119,10 @@ extern "C" {
 
 ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t namedGlobals, uint32_t qSpaces) {
   ctx->numbered.assign(NCRT_NUMBERED, vacantValue());
-  ctx->rparam.assign(NCRT_RPARAMS, vacantValue());
-  ctx->qparam.assign((size_t)NCRT_QPARAMS * qSpaces, vacantValue());
+  ctx->rparam.assign(NCRT_RPARAMS, rParamStart());
+  ctx->qparam.resize((size_t)NCRT_QPARAMS * qSpaces);
+  for (uint32_t q = 0; q < qSpaces && q < (uint32_t)kQSpaces; ++q)
+    std::fill_n(ctx->qparam.begin() + (size_t)q * NCRT_QPARAMS, NCRT_QPARAMS, qParamStart((int)q));
   ctx->named.assign(namedGlobals, unsetValue());
   ncrt_storage &s = ctx->storage;
   s.numbered = ctx->numbered.data();

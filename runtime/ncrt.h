@@ -43,12 +43,13 @@ enum {
   NCRT_FAULT_QPARAM = 7         /* Q parameter index lround(value) out of range */
 };
 
-/* Variable storage and limits, laid out for direct access from generated code. Every numbered
- * and parameter slot starts vacant; named globals start unset (NCRT_UNSET_BITS). */
+/* Variable storage and limits, laid out for direct access from generated code. Numbered slots
+ * start vacant, R and Q parameters as ir/Value.h says (0; QS vacant); named globals start unset
+ * (NCRT_UNSET_BITS). */
 typedef struct ncrt_storage {
   double *numbered;   /* #0 .. #(NCRT_NUMBERED-1); #1..#33 are never used here (frame locals) */
   double *rparam;     /* R0 .. R(NCRT_RPARAMS-1) */
-  double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, one per Q prefix */
+  double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, array i for Q prefix i (qPrefixIndex) */
   double *named;      /* named globals (%%name) */
   uint64_t max_loop;  /* ExecLimits::maxLoopIterations */
   uint32_t max_depth; /* ExecLimits::maxCallDepth */
@@ -66,7 +67,8 @@ typedef struct ncrt_storage {
 /* Loop iterations between two run-time limit checks. */
 #define NCRT_POLL_INTERVAL 65536
 
-/* Allocates the storage for a program with the given number of named globals and Q prefixes. */
+/* Allocates the storage for a program with the given number of named globals and Q prefix
+ * arrays (1 + the highest qPrefixIndex it uses; 0 for none). */
 ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t named_globals, uint32_t q_spaces);
 /* Executes one command. */
 int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd);

@@ -11,6 +11,7 @@
 #include <llvm/IR/Verifier.h>
 #include <llvm/Support/raw_ostream.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -91,7 +92,7 @@ void Codegen::scanExprNames(FnInfo &fi, const Expr &e) {
   if (e.kind == ExprKind::Var) {
     if (e.space == ir::VarSpace::Local) fi.locals.emplace(e.str, (unsigned)fi.locals.size());
     if (e.space == ir::VarSpace::Global) globalNames_.emplace(e.str, (unsigned)globalNames_.size());
-    if (e.space == ir::VarSpace::QParam) qSpaces_.emplace(e.str, (unsigned)qSpaces_.size());
+    if (e.space == ir::VarSpace::QParam) qSpaces_ = std::max(qSpaces_, (unsigned)(qPrefixIndex(e.str) + 1));
   }
   for (auto &a : e.args)
     if (a) scanExprNames(fi, *a);
@@ -256,7 +257,7 @@ void Codegen::emitEntry() {
   B.SetInsertPoint(entryBB);
   Value *ctx = main->getArg(0);
   Value *st = B.CreateCall(fBegin, {ctx, B.getInt32((uint32_t)globalNames_.size()),
-                                    B.getInt32((uint32_t)qSpaces_.size())});
+                                    B.getInt32(qSpaces_)});
   FnInfo &fi = functions_.at(src_.functions[0].name);
   Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
   initFrame(frame, fi.frameSize, 0);

@@ -115,7 +115,12 @@ Value *Codegen::varPtr(const Expr &var, bool write) {
   case VarSpace::Numbered: return numberedPtr(var, write);
   case VarSpace::RParam: return paramPtr(var, rBase, NCRT_RPARAMS, NCRT_FAULT_RPARAM);
   case VarSpace::QParam: {
-    Value *base = B.CreateConstGEP1_64(dblTy, qBase, (uint64_t)qSpaces_.at(var.str) * NCRT_QPARAMS);
+    int q = qPrefixIndex(var.str);
+    if (q < 0) {
+      fail(var.loc, fmt::format("unknown Q parameter prefix '{}'", var.str));
+      return scratch;
+    }
+    Value *base = B.CreateConstGEP1_64(dblTy, qBase, (uint64_t)q * NCRT_QPARAMS);
     return paramPtr(var, base, NCRT_QPARAMS, NCRT_FAULT_QPARAM);
   }
   case VarSpace::Local: return B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + cur_->locals.at(var.str));

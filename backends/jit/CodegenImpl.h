@@ -113,7 +113,8 @@ private:
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
-  std::map<std::string, unsigned> globalNames_, qSpaces_;  // module-wide slots
+  std::map<std::string, unsigned> globalNames_;  // module-wide slots
+  unsigned qSpaces_ = 0;                          // Q prefix arrays: 1 + highest qPrefixIndex used
 
   // ------------------------------------------------ per function
   FnInfo *cur_ = nullptr;
