@@ -1,5 +1,6 @@
 #include "ir/NCIR.h"
 #include "ir/MachineCmd.h"
+#include "ir/Value.h"
 
 #include <cstring>
 
@@ -101,6 +102,14 @@ ExprPtr Expr::clone() const {
   e->str = str;
   for (auto &a : args) e->args.push_back(a->clone());
   return e;
+}
+
+bool constantCallee(const Expr &callee, std::string &name) {
+  if (callee.kind == ExprKind::String) {
+    name = callee.str;
+    return true;
+  }
+  return callee.kind == ExprKind::Number && programName(callee.num, name);
 }
 
 // The keys of `mode` are the mode groups; MachineCmd::modes has one slot per key.

@@ -77,6 +77,8 @@ struct Expr {
 
   ExprPtr clone() const;
   bool isConstant() const { return kind == ExprKind::Number || kind == ExprKind::Bool || kind == ExprKind::String; }
+  // A string-valued expression: a string constant or a concat (whose operands may be numbers).
+  bool isStringExpr() const { return kind == ExprKind::String || (kind == ExprKind::Binary && op == OpCode::Concat); }
 };
 
 // ---------------------------------------------------------------- ops
@@ -180,6 +182,10 @@ struct Module {
   Function *find(std::string_view name);
   const Function *find(std::string_view name) const;
 };
+
+// The function a constant `call callee=` names: a string names it, a number n the program
+// "O<n>". False for computed callees and for constants that name no function (2.5, a symbol).
+bool constantCallee(const Expr &callee, std::string &name);
 
 // ---------------------------------------------------------------- text form
 std::string printExpr(const Expr &e);

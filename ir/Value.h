@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <string_view>
 
 namespace ncc {
@@ -55,5 +56,17 @@ inline double valueEq(double a, double b) {
   if (va || vb) return (va && vb) ? 1.0 : 0.0;
   return a == b ? 1.0 : 0.0;
 }
+
+// Strings are built at run time only by string expressions (a string constant or `concat`, see
+// Expr::isStringExpr) for message texts and computed callees; their numeric operands become
+// text here: vacant is empty, integral values print without a decimal point (5, -12), others
+// with the shortest digits that read back as the same double (0.1, 2.5, 1e-07).
+std::string numberText(double v);
+// A numeric callee is an ISO program number: n names the function "O<n>". False unless n is a
+// non-negative integer.
+bool programName(double v, std::string &out);
+// Run-time errors of computed calls, the same in both engines.
+std::string unknownProgramMessage(std::string_view name);
+std::string badProgramNumberMessage(double v);
 
 }  // namespace ncc

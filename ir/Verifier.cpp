@@ -244,10 +244,14 @@ private:
     case OpKind::Call: {
       const Expr *c = op.get("callee");
       if (!c) break;
-      if (c->kind == ExprKind::String) {
-        if (!m_.find(c->str)) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", c->str));
-      } else if (c->kind != ExprKind::Var && c->kind != ExprKind::Binary && c->kind != ExprKind::Call) {
-        error(op.loc, "'call' argument 'callee' must be a string");
+      // A string names the function, a number n the program O<n>; computed ones are looked up
+      // at run time.
+      std::string name;
+      if (constantCallee(*c, name)) {
+        if (!m_.find(name)) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", name));
+      } else if (c->kind != ExprKind::Var && c->kind != ExprKind::Unary && c->kind != ExprKind::Binary &&
+                 c->kind != ExprKind::Call) {
+        error(op.loc, "'call' argument 'callee' must be a string or a program number");
       }
       break;
     }

@@ -99,6 +99,7 @@ static bool constNumber(const Expr *e, double &v) {
 bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   out.base = MachineCmd{};
   out.slots.clear();  // keeps its capacity: templates are rebuilt per op on the streaming path
+  out.text = nullptr;
   MachineCmd &c = out.base;
   c.kind = cmdKindOf(op.kind);
   c.loc = op.loc;
@@ -133,7 +134,10 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   case OpKind::Comment:
   case OpKind::Message:
-    if (const Expr *e = op.get("text")) c.text = e->str.c_str();
+    if (const Expr *e = op.get("text")) {
+      if (e->kind == ExprKind::String) c.text = e->str.c_str();
+      else out.text = e;  // evaluated at run time (the verifier allows this for messages only)
+    }
     return true;
   case OpKind::Mode:
     for (auto &a : op.args) {

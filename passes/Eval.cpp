@@ -405,6 +405,25 @@ struct Evaluator::Impl {
     fail(e.loc, "bad expression");
   }
 
+  // A string expression's text; numeric operands as numberText (ir/Value.h).
+  void appendStr(Frame &fr, const Expr &e, std::string &out) {
+    if (e.kind == ExprKind::String) out += e.str;
+    else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
+      appendStr(fr, *e.args[0], out);
+      appendStr(fr, *e.args[1], out);
+    } else out += numberText(ev(fr, e));
+  }
+
+  // The function a callee expression names: a string, or a number meaning the program O<n>.
+  const Function &callee(Frame &fr, const Expr &e, SourceLoc loc) {
+    std::string name;
+    if (e.isStringExpr()) appendStr(fr, e, name);
+    else if (double v = ev(fr, e); !programName(v, name)) fail(loc, badProgramNumberMessage(v));
+    const Function *f = module->find(name);
+    if (!f) fail(loc, unknownProgramMessage(name));
+    return *f;
+  }
+
   // ------------------------------------------------------------ execution
   void checkTime(SourceLoc loc) {
     if ((++steps & 0xffff) == 0 && limits.maxSeconds > 0) {
@@ -414,8 +433,15 @@ struct Evaluator::Impl {
     }
   }
 
+  std::string text;  // the last message text built at run time (the sink copies it)
+
   void execMachine(const CmdTemplate &t, Frame &fr) {
     MachineCmd cmd = t.base;
+    if (t.text) {
+      text.clear();
+      appendStr(fr, *t.text, text);
+      cmd.text = text.c_str();
+    }
     for (const CmdSlot &s : t.slots) {
       double v = ev(fr, *s.expr);
       if (isVacant(v)) continue;
@@ -522,9 +548,9 @@ struct Evaluator::Impl {
   }
 
   void call(const Op &op, Frame &fr) {
-    const Expr *callee = op.get("callee");
-    const Function *f = callee ? module->find(callee->str) : nullptr;
-    if (!f) fail(op.loc, fmt::format("call to unknown program '{}'", callee ? callee->str : "?"));
+    const Expr *calleeE = op.get("callee");
+    if (!calleeE) fail(op.loc, unknownProgramMessage("?"));
+    const Function *f = &callee(fr, *calleeE, op.loc);
     const Expr *countE = op.get("count");
     double count = countE ? num(ev(fr, *countE)) : 1;
     const Expr *frameE = op.get("frame");

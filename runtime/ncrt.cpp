@@ -193,6 +193,23 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   return NCRT_ERROR;
 }
 
+void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }
+void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
+void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += numberText(v); }
+const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
+
+int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
+                    uint32_t file, uint32_t line, uint32_t col) {
+  if (numeric && !programName(value, ctx->text)) {
+    ctx->diags.error({file, line, col}, badProgramNumberMessage(value));
+    return -1;
+  }
+  for (uint64_t i = 0; i < n; ++i)
+    if (ctx->text == names[i]) return (int64_t)i;
+  ctx->diags.error({file, line, col}, unknownProgramMessage(ctx->text));
+  return -1;
+}
+
 double ncrt_mod(double a, double b) { return arithMod(a, b); }
 double ncrt_idiv(double a, double b) { return arithIDiv(a, b); }
 double ncrt_pow(double a, double b) { return arithPow(a, b); }

@@ -84,6 +84,18 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 /* Called when storage->poll runs out: resets it and checks the run-time limit. Returns
  * NCRT_ERROR (reported at the given loc) when the limit is exceeded, else NCRT_OK. */
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
+/* Run-time strings (message texts, computed callees): generated code clears the context's text
+ * buffer, appends the leaves of a string expression in order, then reads it. Numbers are
+ * appended as ncc::numberText (ir/Value.h). */
+void ncrt_str_clear(ncrt_ctx *ctx);
+void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
+void ncrt_str_num(ncrt_ctx *ctx, double v);
+const char *ncrt_str(ncrt_ctx *ctx);
+/* A computed callee: the index in names[0..n) of the function named by the text buffer, or when
+ * `numeric` by the program number `value` (O<n>). Reports the error at the loc and returns -1
+ * when there is no such function. */
+int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
+                    uint32_t file, uint32_t line, uint32_t col);
 /* Arithmetic of ir/Arith.h on num() operands (the divisor is checked by the caller). */
 double ncrt_mod(double a, double b);
 double ncrt_idiv(double a, double b);
@@ -110,6 +122,7 @@ struct ncrt_ctx {
   ncrt_storage storage{};
   std::vector<double> numbered, rparam, qparam, named;
   bool ended = false;  // a stop kind=end|end_rewind was executed
+  std::string text;    // the run-time string being built (ncrt_str_*)
 };
 #endif
 

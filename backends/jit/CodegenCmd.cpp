@@ -34,7 +34,7 @@ void Codegen::emitMachineOp(const ir::Op &op) {
   quiet.setCollect(true);
   CmdTemplate t;
   if (!buildCmdTemplate(op, t, quiet)) return;
-  if (t.slots.empty()) {
+  if (t.slots.empty() && !t.text) {
     appendToRun(t.base);
     return;
   }
@@ -93,6 +93,7 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
     mask = B.CreateOr(mask, bit);
   }
   B.CreateStore(mask, B.CreateStructGEP(cmdTy, cmdSlot, 5));
+  if (t.text) B.CreateStore(stringValue(*t.text), B.CreateStructGEP(cmdTy, cmdSlot, 8));
   checkStatus(B.CreateCall(fExec, {ctxArg, cmdSlot}));
 }
 

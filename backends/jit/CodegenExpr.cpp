@@ -148,6 +148,21 @@ void Codegen::storeVar(const Expr &var, Value *value) {
   B.CreateStore(value, varPtr(var, true));
 }
 
+// String expressions (ir/Value.h): the leaves are appended to the runtime's text buffer.
+void Codegen::appendString(const Expr &e) {
+  if (e.kind == ExprKind::String) B.CreateCall(fStrCat, {ctxArg, cstring(e.str)});
+  else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
+    appendString(*e.args[0]);
+    appendString(*e.args[1]);
+  } else B.CreateCall(fStrNum, {ctxArg, expr(e).v});
+}
+
+Value *Codegen::stringValue(const Expr &e) {
+  B.CreateCall(fStrClear, {ctxArg});
+  appendString(e);
+  return B.CreateCall(fStr, {ctxArg});
+}
+
 Val Codegen::expr(const Expr &e) {
   switch (e.kind) {
   case ExprKind::Number:

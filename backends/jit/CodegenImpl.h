@@ -61,6 +61,7 @@ private:
   void emitLoop(const ir::Op &op);
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
+  void emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
   const ir::Op *resolveTarget(const ir::Op &go);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
   void emitTimeCheck(SourceLoc loc);
@@ -90,6 +91,8 @@ private:
   llvm::Value *numberedPtr(const ir::Expr &var, bool write);
   llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
   Val loadVar(const ir::Expr &var);
+  llvm::Value *stringValue(const ir::Expr &e);  // builds a string expression; ptr to its text
+  void appendString(const ir::Expr &e);
   void storeVar(const ir::Expr &var, llvm::Value *value);
   // ------------------------------------------------ commands (CodegenCmd.cpp)
   void emitMachineOp(const ir::Op &op);
@@ -110,9 +113,11 @@ private:
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow;
+  llvm::FunctionCallee fStrClear, fStrCat, fStrNum, fStr, fCallee;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
+  llvm::GlobalVariable *calleeNames = nullptr;  // names of the module's functions, for ncrt_callee
   std::map<std::string, unsigned> globalNames_;  // module-wide slots
   unsigned qSpaces_ = 0;                          // Q prefix arrays: 1 + highest qPrefixIndex used
 
