@@ -24,4 +24,11 @@ std::string badProgramNumberMessage(double v) {
   return fmt::format("call target {} is not a program number (a non-negative integer)", numberText(v));
 }
 
+std::string arrayIndexMessage(std::string_view name, double index) {
+  return fmt::format("index {} of array '{}' is not an integer in 0..{}", numberText(index), name, kArrayElements - 1);
+}
+std::string unsetElementMessage(std::string_view name, double index) {
+  return fmt::format("array element '{}[{}]' used before assignment", name, numberText(index));
+}
+
 }  // namespace ncc

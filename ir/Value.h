@@ -51,6 +51,17 @@ inline int qPrefixIndex(std::string_view prefix) {
 inline double rParamStart() { return 0.0; }
 inline double qParamStart(int prefixIndex) { return kQPrefixes[prefixIndex] == "QS" ? vacantValue() : 0.0; }
 
+// Named arrays: an indexed named variable (%A[i], %%A[i]) is element i of the array A, apart
+// from the scalar %A. Indices are integers 0..kArrayElements-1 (vacant counts as 0); anything
+// else is a run-time error. Elements start unset, like named scalars.
+constexpr uint32_t kArrayElements = 1000;
+inline bool arrayIndex(double v, uint32_t &out) {
+  double x = num(v);
+  if (!(x >= 0 && x < kArrayElements) || x != std::trunc(x)) return false;
+  out = (uint32_t)x;
+  return true;
+}
+
 inline double valueEq(double a, double b) {
   bool va = isVacant(a), vb = isVacant(b);
   if (va || vb) return (va && vb) ? 1.0 : 0.0;
@@ -68,5 +79,8 @@ bool programName(double v, std::string &out);
 // Run-time errors of computed calls, the same in both engines.
 std::string unknownProgramMessage(std::string_view name);
 std::string badProgramNumberMessage(double v);
+// Run-time errors of named arrays, the same in both engines.
+std::string arrayIndexMessage(std::string_view name, double index);
+std::string unsetElementMessage(std::string_view name, double index);
 
 }  // namespace ncc

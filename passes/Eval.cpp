@@ -78,6 +78,7 @@ struct CompiledFn {
 struct Frame {
   double locals[kMacroLocals + 1];  // [0] unused: #0 is always vacant
   std::vector<double> named;
+  std::unordered_map<std::string, std::vector<double>> arrays;  // named local arrays
   std::vector<double> slots;
   uint64_t backJumps = 0;
 };
@@ -93,6 +94,8 @@ struct Evaluator::Impl {
   std::unordered_map<std::string, uint32_t> globalNames;
   std::unordered_map<std::string, uint32_t> mainLocalNames;
   std::vector<double> globalNamed;
+  std::unordered_map<std::string, std::vector<double>> globalArrays;
+  double lastIndex = 0;  // index of the last array element referenced (for the unset error)
   std::vector<double> numbered = std::vector<double>(100000, vacantValue());
   std::vector<double> rparams = std::vector<double>(1000, rParamStart());
   std::vector<double> qparams[kQSpaces];  // by qPrefixIndex, allocated on first use
@@ -142,7 +145,7 @@ struct Evaluator::Impl {
         in.target = op.get(op.kind == OpKind::Assign ? "target" : "var");
         in.expr = op.get(op.kind == OpKind::Assign ? "value" : "init");
         if (!in.target || in.target->kind != ExprKind::Var) fail(op.loc, "assignment target is not a variable");
-        if (in.target->space == VarSpace::Local) localSlot(cf, in.target->str);
+        if (in.target->space == VarSpace::Local && in.target->args.empty()) localSlot(cf, in.target->str);
         emit(in);
         break;
       }
@@ -319,7 +322,18 @@ struct Evaluator::Impl {
     return arr[n];
   }
 
+  double &elemRef(std::unordered_map<std::string, std::vector<double>> &arrays, Frame &fr, const Expr &v) {
+    lastIndex = ev(fr, *v.args[0]);
+    uint32_t i;
+    if (!arrayIndex(lastIndex, i)) fail(v.loc, arrayIndexMessage(v.str, lastIndex));
+    auto &a = arrays[v.str];
+    if (a.empty()) a.assign(kArrayElements, unsetValue());
+    return a[i];
+  }
+
   double &varRef(Frame &fr, CompiledFn &cf, const Expr &v, bool write) {
+    if (!v.args.empty() && v.space == VarSpace::Local) return elemRef(fr.arrays, fr, v);
+    if (!v.args.empty() && v.space == VarSpace::Global) return elemRef(globalArrays, fr, v);
     switch (v.space) {
     case VarSpace::Numbered: return numberedRef(fr, v, write);
     case VarSpace::RParam: return arrayRef(rparams, fr, v, "R parameter");
@@ -369,7 +383,9 @@ struct Evaluator::Impl {
     case ExprKind::Symbol: fail(e.loc, "strings are not supported in numeric expressions yet");
     case ExprKind::Var: {
       double v = varRef(fr, *curFn, e, false);
-      if (isUnset(v)) fail(e.loc, fmt::format("variable '{}' used before assignment", e.str));
+      if (isUnset(v))
+        fail(e.loc, e.args.empty() ? fmt::format("variable '{}' used before assignment", e.str)
+                                   : unsetElementMessage(e.str, lastIndex));
       return v;
     }
     case ExprKind::Unary: {

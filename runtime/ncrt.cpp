@@ -136,6 +136,8 @@ ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t namedGlobals, uint32_t qSpaces)
   return &s;
 }
 
+void ncrt_unset(double *p, uint64_t n) { std::fill_n(p, n, unsetValue()); }
+
 int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd) { return execOne(ctx, *cmd); }
 
 int ncrt_exec_table(ncrt_ctx *ctx, const ncrt_cmd *cmds, uint64_t n) {
@@ -178,6 +180,8 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
   case NCRT_FAULT_UNSET_VAR: msg = fmt::format("variable '{}' used before assignment", name); break;
   case NCRT_FAULT_NUMBERED: msg = fmt::format("parameter number #{} out of range", std::lround(value)); break;
   case NCRT_FAULT_RPARAM: msg = fmt::format("R parameter index {} out of range", std::lround(value)); break;
+  case NCRT_FAULT_INDEX: msg = arrayIndexMessage(name, value); break;
+  case NCRT_FAULT_UNSET_ELEM: msg = unsetElementMessage(name, value); break;
   case NCRT_FAULT_QPARAM: msg = fmt::format("Q parameter index {} out of range", std::lround(value)); break;
   default: msg = "internal error: unknown run-time fault"; break;
   }

@@ -40,7 +40,9 @@ enum {
   NCRT_FAULT_UNSET_VAR = 4,     /* variable 'name' used before assignment */
   NCRT_FAULT_NUMBERED = 5,      /* parameter number #lround(value) out of range */
   NCRT_FAULT_RPARAM = 6,        /* R parameter index lround(value) out of range */
-  NCRT_FAULT_QPARAM = 7         /* Q parameter index lround(value) out of range */
+  NCRT_FAULT_QPARAM = 7,        /* Q parameter index lround(value) out of range */
+  NCRT_FAULT_INDEX = 8,         /* index value of array 'name' is not an integer in 0..N */
+  NCRT_FAULT_UNSET_ELEM = 9     /* array element 'name[value]' used before assignment */
 };
 
 /* Variable storage and limits, laid out for direct access from generated code. Numbered slots
@@ -50,7 +52,7 @@ typedef struct ncrt_storage {
   double *numbered;   /* #0 .. #(NCRT_NUMBERED-1); #1..#33 are never used here (frame locals) */
   double *rparam;     /* R0 .. R(NCRT_RPARAMS-1) */
   double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, array i for Q prefix i (qPrefixIndex) */
-  double *named;      /* named globals (%%name) */
+  double *named;      /* named globals (%%name), then the global arrays (kArrayElements each) */
   uint64_t max_loop;  /* ExecLimits::maxLoopIterations */
   uint32_t max_depth; /* ExecLimits::maxCallDepth */
   uint32_t depth;     /* current call depth; main = 0 */
@@ -70,6 +72,8 @@ typedef struct ncrt_storage {
 /* Allocates the storage for a program with the given number of named globals and Q prefix
  * arrays (1 + the highest qPrefixIndex it uses; 0 for none). */
 ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t named_globals, uint32_t q_spaces);
+/* Sets n doubles to the unset pattern (a function's named local arrays). */
+void ncrt_unset(double *p, uint64_t n);
 /* Executes one command. */
 int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd);
 /* Executes n commands of a constant table. */
