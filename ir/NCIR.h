@@ -198,5 +198,10 @@ bool parseModule(std::string_view text, uint32_t fileId, SourceManager &sm, Diag
                  Module &out);
 // Checks structure: op keys, region counts, expression shapes, goto targets, call targets.
 bool verifyModule(const Module &m, Diagnostics &diags);
+// Checks that the engines can run a verified module: what the IR expresses but neither the eval
+// engine nor the JIT implements yet (strings outside messages and call targets, system and QS
+// variables, computed gotos, by-reference parameters, …) is an error here, not a wrong result.
+// Both engines call it before running (docs/IR.md §7).
+bool verifyRunnable(const Module &m, Diagnostics &diags);
 
 }  // namespace ncc::ir

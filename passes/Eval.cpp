@@ -617,6 +617,7 @@ struct Evaluator::Impl {
     module = &m;
     compiled.clear();  // a new module (or chunk) may reuse addresses of the last one
     if (m.functions.empty()) return true;
+    if (!verifyRunnable(m, diags)) return false;
     if (!started) {
       start = std::chrono::steady_clock::now();
       for (double &l : mainFrame.locals) l = vacantValue();

@@ -281,6 +281,7 @@ void Codegen::emitEntry() {
 }
 
 std::unique_ptr<Module> Codegen::run() {
+  if (!ir::verifyRunnable(src_, diags_)) return nullptr;
   declareRuntime();
   for (auto &fn : src_.functions) {
     if (functions_.count(fn.name)) {
