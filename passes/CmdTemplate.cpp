@@ -144,11 +144,11 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
       ModeValue v;
       ModeGroup g;
       if (!a.value || !modeGroupFromName(a.key, g) || !modeValueFromName(a.value->str, v) ||
-          modeValueInfo(v).group != g) {
+          modeValueInfo(v).group != g || c.nmodes == kMaxModes) {
         diags.error(op.loc, fmt::format("invalid mode '{}'", a.key));
         return false;
       }
-      c.modes[c.nmodes++] = v;  // keys are distinct groups: at most kMaxModes
+      c.modes[c.nmodes++] = v;
     }
     return true;
   case OpKind::Spindle: return symbolArg("dir", c.sub);
