@@ -46,12 +46,16 @@ enum class CmdKind : uint8_t {
 enum class StopKind : uint8_t { Program, Optional, End, EndRewind };
 enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20 };
 
+// One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a
+// key given twice), so every key of the op fits.
+constexpr int kMaxModes = (int)ModeGroup::Count;
+
 struct MachineCmd {
   CmdKind kind = CmdKind::Block;
   uint8_t sub = 0;
   uint8_t sub2 = 0;
   uint8_t nmodes = 0;
-  ModeValue modes[6] = {};
+  ModeValue modes[kMaxModes] = {};
   uint32_t mask = 0;        // wordBit(...) of the words present
   int64_t blockNumber = -1; // for Block: the N word, -1 when none
   SourceLoc loc;

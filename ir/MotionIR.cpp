@@ -42,6 +42,9 @@ std::string printMotionRecord(const MotionRecord &r) {
   case RecordKind::ToolLength:
     s += fmt::format(" {}", r.value);
     break;
+  case RecordKind::Aux:
+    s += fmt::format(" {}{}", r.text.empty() ? "M" : r.text, r.ivalue);
+    break;
   case RecordKind::PathMode:
     s += fmt::format(" {} {}", r.ivalue, r.value);
     if (r.ivalue == 2) s += fmt::format(" {}", r.value2);

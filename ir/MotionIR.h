@@ -41,7 +41,7 @@ enum class RecordKind : uint8_t {
   OptionalStop,  // M1
   ProgramStop,   // M0
   ProgramEnd,    // M2/M30 (ivalue 30 for M30)
-  Aux,           // other M code: ivalue
+  Aux,           // other M code, B or H auxiliary function: text the letter, ivalue the number
   Count
 };
 

@@ -1,4 +1,6 @@
 #include "ir/NCIR.h"
+#include "ir/MachineCmd.h"
+#include "ir/Value.h"
 
 #include <cstring>
 
@@ -102,12 +104,32 @@ ExprPtr Expr::clone() const {
   return e;
 }
 
+bool constantCallee(const Expr &callee, std::string &name) {
+  if (callee.kind == ExprKind::String) {
+    name = callee.str;
+    return true;
+  }
+  return callee.kind == ExprKind::Number && programName(callee.num, name);
+}
+
+// The keys of `mode` are the mode groups (MachineCmd::modes has one slot per group) and the
+// G64 tolerances, which are words (P, Q).
+static constexpr char kModeKeys[] = "motion plane units distance arc_distance feed_mode retract path_mode";
+static constexpr char kModeOpKeys[] =
+    "motion plane units distance arc_distance feed_mode retract path_mode tolerance naive_tolerance";
+static constexpr size_t countWords(std::string_view s) {
+  size_t n = 0;
+  for (size_t i = 0; i < s.size(); ++i) n += s[i] != ' ' && (i == 0 || s[i - 1] == ' ');
+  return n;
+}
+static_assert(countWords(kModeKeys) == kMaxModes, "MachineCmd::modes must hold every key of 'mode'");
+
 // The op table: textual name, region counts, required and allowed argument keys.
 static const OpInfo kOps[] = {
     {OpKind::Block, "block", 0, 0, "", "n skip"},
     {OpKind::Comment, "comment", 0, 0, "text", ""},
     {OpKind::Message, "message", 0, 0, "text", ""},
-    {OpKind::Mode, "mode", 0, 0, "", "motion plane units distance arc_distance feed_mode retract path_mode tolerance naive_tolerance"},
+    {OpKind::Mode, "mode", 0, 0, "", kModeOpKeys},
     {OpKind::Feed, "feed", 0, 0, "value", ""},
     {OpKind::Speed, "speed", 0, 0, "value", ""},
     {OpKind::ToolSelect, "tool_select", 0, 0, "value", ""},

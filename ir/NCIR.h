@@ -77,6 +77,8 @@ struct Expr {
 
   ExprPtr clone() const;
   bool isConstant() const { return kind == ExprKind::Number || kind == ExprKind::Bool || kind == ExprKind::String; }
+  // A string-valued expression: a string constant or a concat (whose operands may be numbers).
+  bool isStringExpr() const { return kind == ExprKind::String || (kind == ExprKind::Binary && op == OpCode::Concat); }
 };
 
 // ---------------------------------------------------------------- ops
@@ -181,6 +183,10 @@ struct Module {
   const Function *find(std::string_view name) const;
 };
 
+// The function a constant `call callee=` names: a string names it, a number n the program
+// "O<n>". False for computed callees and for constants that name no function (2.5, a symbol).
+bool constantCallee(const Expr &callee, std::string &name);
+
 // ---------------------------------------------------------------- text form
 std::string printExpr(const Expr &e);
 // Without a SourceManager the `source K "..."` lines cannot name the files (they print as
@@ -192,5 +198,10 @@ bool parseModule(std::string_view text, uint32_t fileId, SourceManager &sm, Diag
                  Module &out);
 // Checks structure: op keys, region counts, expression shapes, goto targets, call targets.
 bool verifyModule(const Module &m, Diagnostics &diags);
+// Checks that the engines can run a verified module: what the IR expresses but neither the eval
+// engine nor the JIT implements yet (strings outside messages and call targets, system and QS
+// variables, computed gotos, by-reference parameters, …) is an error here, not a wrong result.
+// Both engines call it before running (docs/IR.md §7).
+bool verifyRunnable(const Module &m, Diagnostics &diags);
 
 }  // namespace ncc::ir

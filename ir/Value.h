@@ -14,6 +14,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
+#include <string_view>
 
 namespace ncc {
 
@@ -36,10 +38,49 @@ inline bool isVacant(double v) {
 inline double num(double v) { return isVacant(v) ? 0.0 : v; }
 inline bool truthy(double v) { return !isVacant(v) && v != 0.0; }
 
+// Parameter arrays that exist before the program runs. Sinumerik R and Heidenhain Q/QL/QR
+// parameters start at 0 (only Macro B `#n` starts vacant). QS holds strings, which variables
+// cannot hold yet: it stays vacant. Q prefixes have fixed array numbers in both engines.
+constexpr std::string_view kQPrefixes[] = {"Q", "QL", "QR", "QS"};
+constexpr int kQSpaces = 4;
+inline int qPrefixIndex(std::string_view prefix) {
+  for (int i = 0; i < kQSpaces; ++i)
+    if (kQPrefixes[i] == prefix) return i;
+  return -1;
+}
+inline double rParamStart() { return 0.0; }
+inline double qParamStart(int prefixIndex) { return kQPrefixes[prefixIndex] == "QS" ? vacantValue() : 0.0; }
+
+// Named arrays: an indexed named variable (%A[i], %%A[i]) is element i of the array A, apart
+// from the scalar %A. Indices are integers 0..kArrayElements-1 (vacant counts as 0); anything
+// else is a run-time error. Elements start unset, like named scalars.
+constexpr uint32_t kArrayElements = 1000;
+inline bool arrayIndex(double v, uint32_t &out) {
+  double x = num(v);
+  if (!(x >= 0 && x < kArrayElements) || x != std::trunc(x)) return false;
+  out = (uint32_t)x;
+  return true;
+}
+
 inline double valueEq(double a, double b) {
   bool va = isVacant(a), vb = isVacant(b);
   if (va || vb) return (va && vb) ? 1.0 : 0.0;
   return a == b ? 1.0 : 0.0;
 }
+
+// Strings are built at run time only by string expressions (a string constant or `concat`, see
+// Expr::isStringExpr) for message texts and computed callees; their numeric operands become
+// text here: vacant is empty, integral values print without a decimal point (5, -12), others
+// with the shortest digits that read back as the same double (0.1, 2.5, 1e-07).
+std::string numberText(double v);
+// A numeric callee is an ISO program number: n names the function "O<n>". False unless n is a
+// non-negative integer.
+bool programName(double v, std::string &out);
+// Run-time errors of computed calls, the same in both engines.
+std::string unknownProgramMessage(std::string_view name);
+std::string badProgramNumberMessage(double v);
+// Run-time errors of named arrays, the same in both engines.
+std::string arrayIndexMessage(std::string_view name, double index);
+std::string unsetElementMessage(std::string_view name, double index);
 
 }  // namespace ncc

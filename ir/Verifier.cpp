@@ -5,6 +5,7 @@
 #include "ir/Builtins.h"
 #include "ir/ModeTable.h"
 #include "ir/NCIR.h"
+#include "ir/Value.h"
 
 #include <fmt/format.h>
 
@@ -197,6 +198,9 @@ private:
         error(op.loc, fmt::format("'{}' argument '{}' must be a non-negative integer constant", name, r.key));
     }
     if (op.kind == OpKind::Mode) checkModes(op);
+    // One aux op is one auxiliary function: its letter is the key.
+    if (op.kind == OpKind::Aux && !!op.get("m") + !!op.get("b") + !!op.get("h") != 1)
+      error(op.loc, "'aux' needs exactly one of m=, b=, h=");
     // DEF declares named variables; numbered parameters exist without a declaration.
     if (const Expr *v = op.kind == OpKind::Declare ? op.get("var") : nullptr)
       if (v->kind == ExprKind::Var && v->space != VarSpace::Local && v->space != VarSpace::Global)
@@ -241,15 +245,165 @@ private:
     case OpKind::Call: {
       const Expr *c = op.get("callee");
       if (!c) break;
-      if (c->kind == ExprKind::String) {
-        if (!m_.find(c->str)) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", c->str));
-      } else if (c->kind != ExprKind::Var && c->kind != ExprKind::Binary && c->kind != ExprKind::Call) {
-        error(op.loc, "'call' argument 'callee' must be a string");
+      // A string names the function, a number n the program O<n>; computed ones are looked up
+      // at run time.
+      std::string name;
+      if (constantCallee(*c, name)) {
+        if (!m_.find(name)) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", name));
+      } else if (c->kind != ExprKind::Var && c->kind != ExprKind::Unary && c->kind != ExprKind::Binary &&
+                 c->kind != ExprKind::Call) {
+        error(op.loc, "'call' argument 'callee' must be a string or a program number");
       }
       break;
     }
     default: break;
     }
+  }
+
+  // ---------------------------------------------------------------- what the engines run
+  // The IR can express more than the eval engine and the JIT execute; until they do, these are
+  // errors before running instead of wrong results (docs/IR.md §7, "What the engines run").
+  // Assumes a module that passed run().
+public:
+  bool runnable() {
+    for (auto &f : m_.functions) {
+      for (auto &p : f.params) {  // neither engine passes by reference, applies defaults or converts types
+        if (p.byRef) error(f.loc, fmt::format("function '@{}': VAR (by-reference) parameter '{}' is not supported yet", f.name, p.name));
+        if (p.defaultValue) error(f.loc, fmt::format("function '@{}': default of parameter '{}' is not supported yet", f.name, p.name));
+        if (p.type != Type::Real && p.type != Type::Bool)
+          error(f.loc, fmt::format("function '@{}': parameter '{}' of type {} is not supported yet (REAL, BOOL)", f.name,
+                                   p.name, typeName(p.type)));
+      }
+      walk(f.body);
+    }
+    return errors_ == 0;
+  }
+
+private:
+  void walk(const Region &r) {
+    for (auto &op : r) {
+      if ((unsigned)op.kind < (unsigned)OpKind::Count) checkSupported(op, opInfo(op.kind).name);
+      for (auto &sub : op.regions) walk(sub);
+    }
+  }
+
+  void checkSupported(const Op &op, const std::string &name) {
+    for (auto &a : op.args) {
+      const Expr *v = a.value.get();
+      if (!v) continue;
+      std::string where = fmt::format("'{}' argument '{}'", name, a.key);
+      switch (argContext(op, a.key)) {
+      case Ctx::Number: numericExpr(*v, op.loc, where); break;
+      case Ctx::Text: stringExpr(*v, op.loc, where); break;
+      case Ctx::Callee:
+        if (v->isStringExpr()) stringExpr(*v, op.loc, where);
+        else if (v->kind != ExprKind::Symbol) numericExpr(*v, op.loc, where);  // symbols: checkControl
+        break;
+      case Ctx::Constant:
+        if (v->kind != ExprKind::String) error(op.loc, where + " must be a string constant");
+        break;
+      case Ctx::Var:
+        if (v->kind != ExprKind::Var) break;  // reported by kVarRules
+        if (variable(*v, op.loc, where) && !v->args.empty() && v->args[0]) numericExpr(*v->args[0], op.loc, where);
+        break;
+      case Ctx::Symbol: break;  // checked by kEnumRules / checkModes
+      }
+    }
+    switch (op.kind) {
+    case OpKind::Declare: {
+      const Expr *v = op.get("var"), *t = op.get("type");
+      if (v && !v->args.empty()) error(op.loc, "'declare' of an array element: array declarations are not supported yet");
+      if (t && t->kind == ExprKind::Symbol && lower(t->str) != "real" && lower(t->str) != "bool")
+        error(op.loc, fmt::format("'declare' type '{}' is not supported yet (real, bool)", t->str));
+      break;
+    }
+    case OpKind::Return:
+      if (op.get("value")) error(op.loc, "'return' with a value is not supported yet");
+      break;
+    case OpKind::Goto:  // a computed label= is reported as not a string constant (argContext)
+      if (const Expr *v = op.get("n"); v && !v->isConstant())
+        error(op.loc, "'goto' argument 'n' must be a constant: computed jumps are not supported yet");
+      break;
+    case OpKind::Call: {
+      const Expr *f = op.get("frame");
+      bool shared = !f || f->str != "new";
+      for (auto &a : op.args) {
+        if (a.key.rfind("a.", 0) != 0) continue;
+        std::string k = a.key.substr(2);
+        if (shared) error(op.loc, fmt::format("'call' argument '{}' needs frame=new (a shared frame takes no arguments)", a.key));
+        else if (k[0] >= '0' && k[0] <= '9') {  // a Macro B local of the new frame
+          char *end;
+          long n = std::strtol(k.c_str(), &end, 10);
+          if (*end || n < 1 || n > kMacroLocals)
+            error(op.loc, fmt::format("'call' argument '{}' must name a local #1..#{}", a.key, kMacroLocals));
+        }
+      }
+      break;
+    }
+    case OpKind::Move:
+      for (const char *k : {"U", "V", "W"})
+        if (op.get(k)) error(op.loc, fmt::format("'move' axis '{}' is not supported by the machine model yet", k));
+      break;
+    case OpKind::Home: {
+      const Expr *r = op.get("ref");
+      if (r && !(r->kind == ExprKind::Number && (r->num == 1 || r->num == 2)))
+        error(op.loc, "'home' argument 'ref' must be the constant 1 or 2");
+      break;
+    }
+    case OpKind::MachineMove:
+      if (const Expr *r = op.get("rapid"); r && r->kind != ExprKind::Bool)
+        error(op.loc, "'machine_move' argument 'rapid' must be true or false");
+      break;
+    case OpKind::WorkOffset:
+      if (const Expr *i = op.get("index"); i && !(isIntConst(i) && i->num >= 1 && i->num <= 9))
+        error(op.loc, "'work_offset' argument 'index' must be a constant 1..9");
+      break;
+    default: break;
+    }
+  }
+
+  // Where an argument's value is used: a number (the default), a run-time string, a call
+  // target, a string constant, a variable to assign, or a symbol.
+  enum class Ctx { Number, Text, Callee, Constant, Var, Symbol };
+  static Ctx argContext(const Op &op, const std::string &key) {
+    if (op.kind == OpKind::Message && key == "text") return Ctx::Text;
+    if (op.kind == OpKind::Call && key == "callee") return Ctx::Callee;
+    if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||
+        (op.kind == OpKind::Goto && key == "label"))
+      return Ctx::Constant;
+    for (auto &r : kVarRules)
+      if (r.kind == op.kind && key == r.key) return Ctx::Var;
+    for (auto &r : kEnumRules)
+      if (r.kind == op.kind && key == r.key) return Ctx::Symbol;
+    if (op.kind == OpKind::Mode) return Ctx::Symbol;
+    return Ctx::Number;
+  }
+
+  // A string expression: string constants and concat; other operands are numbers.
+  bool stringExpr(const Expr &e, SourceLoc l, const std::string &where) {
+    if (e.kind == ExprKind::String) return true;
+    if (e.kind == ExprKind::Binary && e.op == OpCode::Concat && e.args.size() == 2 && e.args[0] && e.args[1])
+      return stringExpr(*e.args[0], l, where) && stringExpr(*e.args[1], l, where);
+    return numericExpr(e, l, where);
+  }
+
+  // Reports the first problem of the expression only.
+  bool numericExpr(const Expr &e, SourceLoc l, const std::string &where) {
+    if (e.kind == ExprKind::String || e.kind == ExprKind::Symbol || (e.kind == ExprKind::Binary && e.op == OpCode::Concat)) {
+      error(l, where + ": strings are supported only in message texts and call targets yet");
+      return false;
+    }
+    if (e.kind == ExprKind::Var && !variable(e, l, where)) return false;
+    for (auto &a : e.args)
+      if (a && !numericExpr(*a, l, where)) return false;
+    return true;
+  }
+
+  bool variable(const Expr &e, SourceLoc l, const std::string &where) {
+    if (e.space == VarSpace::System) error(l, fmt::format("{}: system variable '${}' is not supported yet", where, e.str));
+    else if (e.space == VarSpace::QParam && e.str == "QS") error(l, where + ": QS string parameters are not supported yet");
+    else return true;
+    return false;
   }
 
   void verifyExpr(const Expr *e, SourceLoc l, const std::string &where) {
@@ -317,5 +471,6 @@ private:
 }  // namespace
 
 bool verifyModule(const Module &m, Diagnostics &diags) { return Verifier(m, diags).run(); }
+bool verifyRunnable(const Module &m, Diagnostics &diags) { return Verifier(m, diags).runnable(); }
 
 }  // namespace ncc::ir

@@ -60,6 +60,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::ToolSelect, "value", Word::T}, {OpKind::Dwell, "seconds", Word::P},
     {OpKind::ToolLength, "h", Word::H},     {OpKind::CutterComp, "d", Word::D},
     {OpKind::SetOffset, "index", Word::P},  {OpKind::Aux, "m", Word::P},
+    {OpKind::Aux, "b", Word::P},            {OpKind::Aux, "h", Word::P},
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
 };
 
@@ -101,6 +102,7 @@ static bool constNumber(const Expr *e, double &v) {
 bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   out.base = MachineCmd{};
   out.slots.clear();  // keeps its capacity: templates are rebuilt per op on the streaming path
+  out.text = nullptr;
   MachineCmd &c = out.base;
   c.kind = cmdKindOf(op.kind);
   c.loc = op.loc;
@@ -135,7 +137,10 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   case OpKind::Comment:
   case OpKind::Message:
-    if (const Expr *e = op.get("text")) c.text = e->str.c_str();
+    if (const Expr *e = op.get("text")) {
+      if (e->kind == ExprKind::String) c.text = e->str.c_str();
+      else out.text = e;  // evaluated at run time (the verifier allows this for messages only)
+    }
     return true;
   case OpKind::Mode:
     for (auto &a : op.args) {
@@ -143,11 +148,11 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
       ModeValue v;
       ModeGroup g;
       if (!a.value || !modeGroupFromName(a.key, g) || !modeValueFromName(a.value->str, v) ||
-          modeValueInfo(v).group != g) {
+          modeValueInfo(v).group != g || c.nmodes == kMaxModes) {
         diags.error(op.loc, fmt::format("invalid mode '{}'", a.key));
         return false;
       }
-      if (c.nmodes < 6) c.modes[c.nmodes++] = v;
+      c.modes[c.nmodes++] = v;
     }
     break;
   case OpKind::Spindle: return symbolArg("dir", c.sub);
@@ -183,7 +188,10 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     }
     return true;
   case OpKind::Aux:
+    // The letter is the key (m, b or h; the verifier requires exactly one); its value goes to P.
     c.sub = 'M';
+    for (const char *key : {"b", "h"})
+      if (op.get(key)) c.sub = (uint8_t)(key[0] - 'a' + 'A');
     break;
   case OpKind::Home: {
     double v = 1;
@@ -250,7 +258,8 @@ Op cmdToOp(const MachineCmd &c) {
   default: break;
   }
   for (auto &kw : kKeyWords)
-    if (kw.op == op.kind && c.has(kw.word)) {
+    if (kw.op == op.kind && c.has(kw.word) &&
+        (op.kind != OpKind::Aux || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
       bool isInt = kw.word == Word::T || kw.word == Word::H || kw.word == Word::D ||
                    (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux;
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));

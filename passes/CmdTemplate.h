@@ -17,6 +17,7 @@ struct CmdSlot {
 struct CmdTemplate {
   MachineCmd base;             // kind, sub, modes, text, loc and the constant words
   std::vector<CmdSlot> slots;  // words whose value is computed at run time
+  const ir::Expr *text = nullptr;  // a message text built at run time (concat), else base.text
 };
 
 // True for ops that become a MachineCmd.

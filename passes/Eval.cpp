@@ -78,6 +78,7 @@ struct CompiledFn {
 struct Frame {
   double locals[kMacroLocals + 1];  // [0] unused: #0 is always vacant
   std::vector<double> named;
+  std::unordered_map<std::string, std::vector<double>> arrays;  // named local arrays
   std::vector<double> slots;
   uint64_t backJumps = 0;
 };
@@ -93,9 +94,11 @@ struct Evaluator::Impl {
   std::unordered_map<std::string, uint32_t> globalNames;
   std::unordered_map<std::string, uint32_t> mainLocalNames;
   std::vector<double> globalNamed;
+  std::unordered_map<std::string, std::vector<double>> globalArrays;
+  double lastIndex = 0;  // index of the last array element referenced (for the unset error)
   std::vector<double> numbered = std::vector<double>(100000, vacantValue());
-  std::vector<double> rparams = std::vector<double>(1000, vacantValue());
-  std::unordered_map<std::string, std::vector<double>> qparams;
+  std::vector<double> rparams = std::vector<double>(1000, rParamStart());
+  std::vector<double> qparams[kQSpaces];  // by qPrefixIndex, allocated on first use
   unsigned depth = 0;
   uint64_t steps = 0;
   bool ended = false;
@@ -142,7 +145,7 @@ struct Evaluator::Impl {
         in.target = op.get(op.kind == OpKind::Assign ? "target" : "var");
         in.expr = op.get(op.kind == OpKind::Assign ? "value" : "init");
         if (!in.target || in.target->kind != ExprKind::Var) fail(op.loc, "assignment target is not a variable");
-        if (in.target->space == VarSpace::Local) localSlot(cf, in.target->str);
+        if (in.target->space == VarSpace::Local && in.target->args.empty()) localSlot(cf, in.target->str);
         emit(in);
         break;
       }
@@ -319,13 +322,26 @@ struct Evaluator::Impl {
     return arr[n];
   }
 
+  double &elemRef(std::unordered_map<std::string, std::vector<double>> &arrays, Frame &fr, const Expr &v) {
+    lastIndex = ev(fr, *v.args[0]);
+    uint32_t i;
+    if (!arrayIndex(lastIndex, i)) fail(v.loc, arrayIndexMessage(v.str, lastIndex));
+    auto &a = arrays[v.str];
+    if (a.empty()) a.assign(kArrayElements, unsetValue());
+    return a[i];
+  }
+
   double &varRef(Frame &fr, CompiledFn &cf, const Expr &v, bool write) {
+    if (!v.args.empty() && v.space == VarSpace::Local) return elemRef(fr.arrays, fr, v);
+    if (!v.args.empty() && v.space == VarSpace::Global) return elemRef(globalArrays, fr, v);
     switch (v.space) {
     case VarSpace::Numbered: return numberedRef(fr, v, write);
     case VarSpace::RParam: return arrayRef(rparams, fr, v, "R parameter");
     case VarSpace::QParam: {
-      auto &arr = qparams[v.str];
-      if (arr.empty()) arr.assign(2000, vacantValue());
+      int q = qPrefixIndex(v.str);
+      if (q < 0) fail(v.loc, fmt::format("unknown Q parameter prefix '{}'", v.str));
+      auto &arr = qparams[q];
+      if (arr.empty()) arr.assign(2000, qParamStart(q));
       return arrayRef(arr, fr, v, "Q parameter");
     }
     case VarSpace::Local: {
@@ -367,7 +383,9 @@ struct Evaluator::Impl {
     case ExprKind::Symbol: fail(e.loc, "strings are not supported in numeric expressions yet");
     case ExprKind::Var: {
       double v = varRef(fr, *curFn, e, false);
-      if (isUnset(v)) fail(e.loc, fmt::format("variable '{}' used before assignment", e.str));
+      if (isUnset(v))
+        fail(e.loc, e.args.empty() ? fmt::format("variable '{}' used before assignment", e.str)
+                                   : unsetElementMessage(e.str, lastIndex));
       return v;
     }
     case ExprKind::Unary: {
@@ -403,6 +421,25 @@ struct Evaluator::Impl {
     fail(e.loc, "bad expression");
   }
 
+  // A string expression's text; numeric operands as numberText (ir/Value.h).
+  void appendStr(Frame &fr, const Expr &e, std::string &out) {
+    if (e.kind == ExprKind::String) out += e.str;
+    else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
+      appendStr(fr, *e.args[0], out);
+      appendStr(fr, *e.args[1], out);
+    } else out += numberText(ev(fr, e));
+  }
+
+  // The function a callee expression names: a string, or a number meaning the program O<n>.
+  const Function &callee(Frame &fr, const Expr &e, SourceLoc loc) {
+    std::string name;
+    if (e.isStringExpr()) appendStr(fr, e, name);
+    else if (double v = ev(fr, e); !programName(v, name)) fail(loc, badProgramNumberMessage(v));
+    const Function *f = module->find(name);
+    if (!f) fail(loc, unknownProgramMessage(name));
+    return *f;
+  }
+
   // ------------------------------------------------------------ execution
   void checkTime(SourceLoc loc) {
     if ((++steps & 0xffff) == 0 && limits.maxSeconds > 0) {
@@ -412,8 +449,15 @@ struct Evaluator::Impl {
     }
   }
 
+  std::string text;  // the last message text built at run time (the sink copies it)
+
   void execMachine(const CmdTemplate &t, Frame &fr) {
     MachineCmd cmd = t.base;
+    if (t.text) {
+      text.clear();
+      appendStr(fr, *t.text, text);
+      cmd.text = text.c_str();
+    }
     for (const CmdSlot &s : t.slots) {
       double v = ev(fr, *s.expr);
       if (isVacant(v)) continue;
@@ -520,9 +564,9 @@ struct Evaluator::Impl {
   }
 
   void call(const Op &op, Frame &fr) {
-    const Expr *callee = op.get("callee");
-    const Function *f = callee ? module->find(callee->str) : nullptr;
-    if (!f) fail(op.loc, fmt::format("call to unknown program '{}'", callee ? callee->str : "?"));
+    const Expr *calleeE = op.get("callee");
+    if (!calleeE) fail(op.loc, unknownProgramMessage("?"));
+    const Function *f = &callee(fr, *calleeE, op.loc);
     const Expr *countE = op.get("count");
     double count = countE ? num(ev(fr, *countE)) : 1;
     const Expr *frameE = op.get("frame");
@@ -573,6 +617,7 @@ struct Evaluator::Impl {
     module = &m;
     compiled.clear();  // a new module (or chunk) may reuse addresses of the last one
     if (m.functions.empty()) return true;
+    if (!verifyRunnable(m, diags)) return false;
     if (!started) {
       start = std::chrono::steady_clock::now();
       for (double &l : mainFrame.locals) l = vacantValue();

@@ -5,9 +5,14 @@
 namespace ncc {
 
 static bool runVerify(ir::Module &m, Diagnostics &diags, PassContext &) { return ir::verifyModule(m, diags); }
+static bool runVerifyRunnable(ir::Module &m, Diagnostics &diags, PassContext &) {
+  return ir::verifyModule(m, diags) && ir::verifyRunnable(m, diags);
+}
 
 static const PassInfo kPasses[] = {
     {"verify", "check the module's structure (ops, keys, regions, jump and call targets)", runVerify},
+    {"verify-runnable", "verify, then reject what the engines cannot run yet (both engines check this)",
+     runVerifyRunnable},
     {"sema", "name resolution and type checking of expressions", runSema},
     {"fold", "fold constant expressions", runFold},
     {"eval", "evaluate everything static: run the program and keep the machine ops it executes (flat IR)",

@@ -69,8 +69,10 @@ struct Sema {
         if (a.value) expr(*a.value);
       if (op.kind == OpKind::Call) {
         const Expr *c = op.get("callee");
-        if (!c || !m.find(c->str))
-          diags.error(op.loc, fmt::format("call to unknown program '{}'", c ? c->str : "?"));
+        std::string name = "?";
+        bool computed = c && !c->isConstant();  // looked up at run time
+        if (!computed && (!c || !constantCallee(*c, name) || !m.find(name)))
+          diags.error(op.loc, fmt::format("call to unknown program '{}'", name));
       }
       if ((op.kind == OpKind::If || op.kind == OpKind::While)) {
         const Expr *c = op.get("cond");

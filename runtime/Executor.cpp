@@ -98,7 +98,7 @@ MotionRecord Executor::Impl::pathModeRecord() const {
 }
 
 bool Executor::Impl::execMode(const MachineCmd &c) {
-  for (unsigned i = 0; i < c.nmodes && i < 6; ++i) {
+  for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
     case ModeGroup::Motion:
@@ -399,6 +399,7 @@ bool Executor::exec(const MachineCmd &c) {
     MotionRecord r = x.record(RecordKind::Aux);
     double p = c.get(Word::P);
     if (std::fabs(p) > 1e15) return x.error("aux code out of range", "bad-number");
+    if (p != std::trunc(p)) return x.error("aux code must be an integer", "bad-number");
     r.ivalue = (int64_t)p;
     r.text = std::string(1, c.sub ? (char)c.sub : 'M');
     x.emit(r);

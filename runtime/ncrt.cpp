@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -87,7 +88,7 @@ static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
   c.sub2 = p[2];
   c.nmodes = p[3];
   p += 4;
-  if (c.kind >= CmdKind::Count || c.nmodes > 6 || end - p < c.nmodes) return false;
+  if (c.kind >= CmdKind::Count || c.nmodes > kMaxModes || end - p < c.nmodes) return false;
   for (unsigned i = 0; i < c.nmodes; ++i) c.modes[i] = (ModeValue)*p++;
   uint64_t v;
   if (!getVarint(p, end, v)) return false;
@@ -118,8 +119,10 @@ extern "C" {
 
 ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t namedGlobals, uint32_t qSpaces) {
   ctx->numbered.assign(NCRT_NUMBERED, vacantValue());
-  ctx->rparam.assign(NCRT_RPARAMS, vacantValue());
-  ctx->qparam.assign((size_t)NCRT_QPARAMS * qSpaces, vacantValue());
+  ctx->rparam.assign(NCRT_RPARAMS, rParamStart());
+  ctx->qparam.resize((size_t)NCRT_QPARAMS * qSpaces);
+  for (uint32_t q = 0; q < qSpaces && q < (uint32_t)kQSpaces; ++q)
+    std::fill_n(ctx->qparam.begin() + (size_t)q * NCRT_QPARAMS, NCRT_QPARAMS, qParamStart((int)q));
   ctx->named.assign(namedGlobals, unsetValue());
   ncrt_storage &s = ctx->storage;
   s.numbered = ctx->numbered.data();
@@ -132,6 +135,8 @@ ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t namedGlobals, uint32_t qSpaces)
   s.poll = NCRT_POLL_INTERVAL;
   return &s;
 }
+
+void ncrt_unset(double *p, uint64_t n) { std::fill_n(p, n, unsetValue()); }
 
 int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd) { return execOne(ctx, *cmd); }
 
@@ -175,6 +180,8 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
   case NCRT_FAULT_UNSET_VAR: msg = fmt::format("variable '{}' used before assignment", name); break;
   case NCRT_FAULT_NUMBERED: msg = fmt::format("parameter number #{} out of range", std::lround(value)); break;
   case NCRT_FAULT_RPARAM: msg = fmt::format("R parameter index {} out of range", std::lround(value)); break;
+  case NCRT_FAULT_INDEX: msg = arrayIndexMessage(name, value); break;
+  case NCRT_FAULT_UNSET_ELEM: msg = unsetElementMessage(name, value); break;
   case NCRT_FAULT_QPARAM: msg = fmt::format("Q parameter index {} out of range", std::lround(value)); break;
   default: msg = "internal error: unknown run-time fault"; break;
   }
@@ -188,6 +195,23 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   ctx->diags.error({file, line, col},
                    fmt::format("run time limit of {} s exceeded (limit --max-seconds)", ctx->limits.maxSeconds));
   return NCRT_ERROR;
+}
+
+void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }
+void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
+void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += numberText(v); }
+const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
+
+int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
+                    uint32_t file, uint32_t line, uint32_t col) {
+  if (numeric && !programName(value, ctx->text)) {
+    ctx->diags.error({file, line, col}, badProgramNumberMessage(value));
+    return -1;
+  }
+  for (uint64_t i = 0; i < n; ++i)
+    if (ctx->text == names[i]) return (int64_t)i;
+  ctx->diags.error({file, line, col}, unknownProgramMessage(ctx->text));
+  return -1;
 }
 
 double ncrt_mod(double a, double b) { return arithMod(a, b); }

@@ -40,16 +40,19 @@ enum {
   NCRT_FAULT_UNSET_VAR = 4,     /* variable 'name' used before assignment */
   NCRT_FAULT_NUMBERED = 5,      /* parameter number #lround(value) out of range */
   NCRT_FAULT_RPARAM = 6,        /* R parameter index lround(value) out of range */
-  NCRT_FAULT_QPARAM = 7         /* Q parameter index lround(value) out of range */
+  NCRT_FAULT_QPARAM = 7,        /* Q parameter index lround(value) out of range */
+  NCRT_FAULT_INDEX = 8,         /* index value of array 'name' is not an integer in 0..N */
+  NCRT_FAULT_UNSET_ELEM = 9     /* array element 'name[value]' used before assignment */
 };
 
-/* Variable storage and limits, laid out for direct access from generated code. Every numbered
- * and parameter slot starts vacant; named globals start unset (NCRT_UNSET_BITS). */
+/* Variable storage and limits, laid out for direct access from generated code. Numbered slots
+ * start vacant, R and Q parameters as ir/Value.h says (0; QS vacant); named globals start unset
+ * (NCRT_UNSET_BITS). */
 typedef struct ncrt_storage {
   double *numbered;   /* #0 .. #(NCRT_NUMBERED-1); #1..#33 are never used here (frame locals) */
   double *rparam;     /* R0 .. R(NCRT_RPARAMS-1) */
-  double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, one per Q prefix */
-  double *named;      /* named globals (%%name) */
+  double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, array i for Q prefix i (qPrefixIndex) */
+  double *named;      /* named globals (%%name), then the global arrays (kArrayElements each) */
   uint64_t max_loop;  /* ExecLimits::maxLoopIterations */
   uint32_t max_depth; /* ExecLimits::maxCallDepth */
   uint32_t depth;     /* current call depth; main = 0 */
@@ -66,8 +69,11 @@ typedef struct ncrt_storage {
 /* Loop iterations between two run-time limit checks. */
 #define NCRT_POLL_INTERVAL 65536
 
-/* Allocates the storage for a program with the given number of named globals and Q prefixes. */
+/* Allocates the storage for a program with the given number of named globals and Q prefix
+ * arrays (1 + the highest qPrefixIndex it uses; 0 for none). */
 ncrt_storage *ncrt_begin(ncrt_ctx *ctx, uint32_t named_globals, uint32_t q_spaces);
+/* Sets n doubles to the unset pattern (a function's named local arrays). */
+void ncrt_unset(double *p, uint64_t n);
 /* Executes one command. */
 int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd);
 /* Executes n commands of a constant table. */
@@ -82,6 +88,18 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 /* Called when storage->poll runs out: resets it and checks the run-time limit. Returns
  * NCRT_ERROR (reported at the given loc) when the limit is exceeded, else NCRT_OK. */
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
+/* Run-time strings (message texts, computed callees): generated code clears the context's text
+ * buffer, appends the leaves of a string expression in order, then reads it. Numbers are
+ * appended as ncc::numberText (ir/Value.h). */
+void ncrt_str_clear(ncrt_ctx *ctx);
+void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
+void ncrt_str_num(ncrt_ctx *ctx, double v);
+const char *ncrt_str(ncrt_ctx *ctx);
+/* A computed callee: the index in names[0..n) of the function named by the text buffer, or when
+ * `numeric` by the program number `value` (O<n>). Reports the error at the loc and returns -1
+ * when there is no such function. */
+int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
+                    uint32_t file, uint32_t line, uint32_t col);
 /* Arithmetic of ir/Arith.h on num() operands (the divisor is checked by the caller). */
 double ncrt_mod(double a, double b);
 double ncrt_idiv(double a, double b);
@@ -108,6 +126,7 @@ struct ncrt_ctx {
   ncrt_storage storage{};
   std::vector<double> numbered, rparam, qparam, named;
   bool ended = false;  // a stop kind=end|end_rewind was executed
+  std::string text;    // the run-time string being built (ncrt_str_*)
 };
 #endif
 

@@ -479,10 +479,19 @@ void Emitter::record(const MotionRecord &r) {
     writeBlock({code(r.ivalue == 2 ? Code::EndM2 : Code::EndM30)}, r.blockNumber);
     ended_ = true;
     break;
-  case RecordKind::Aux:
+  case RecordKind::Aux: {
     flushPending();
-    writeBlock({"M" + std::to_string(r.ivalue)}, r.blockNumber);
+    std::string letter = r.text.empty() ? "M" : r.text;
+    // B is also an axis address: on a machine with a B axis the word would move it.
+    if (letter == "B" && machine_.axes[(int)Axis::B].present) {
+      diags_.error(r.loc, "cannot write the auxiliary function B" + std::to_string(r.ivalue) +
+                              ": B is an axis of this machine", "emit");
+      errors_ = true;
+      break;
+    }
+    writeBlock({letter + std::to_string(r.ivalue)}, r.blockNumber);
     break;
+  }
   case RecordKind::Count: break;
   }
 }

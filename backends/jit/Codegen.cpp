@@ -11,6 +11,7 @@
 #include <llvm/IR/Verifier.h>
 #include <llvm/Support/raw_ostream.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -42,7 +43,7 @@ Codegen::Codegen(const ir::Module &src, LLVMContext &ctx, Diagnostics &diags)
   i1Ty = Type::getInt1Ty(C);
   ptrTy = PointerType::getUnqual(C);
   cmdTy = StructType::create(C,
-                             {i8Ty, i8Ty, i8Ty, i8Ty, ArrayType::get(i8Ty, 6), i32Ty, i64Ty,
+                             {i8Ty, i8Ty, i8Ty, i8Ty, ArrayType::get(i8Ty, kMaxModes), i32Ty, i64Ty,
                               ArrayType::get(i32Ty, 3), ptrTy, ArrayType::get(dblTy, kWords)},
                              "ncrt_cmd");
   storageTy = StructType::create(C, {ptrTy, ptrTy, ptrTy, ptrTy, i64Ty, i32Ty, i32Ty, i64Ty}, "ncrt_storage");
@@ -64,6 +65,12 @@ void Codegen::declareRuntime() {
   fMod = decl("ncrt_mod", dblTy, {dblTy, dblTy});
   fIDiv = decl("ncrt_idiv", dblTy, {dblTy, dblTy});
   fPow = decl("ncrt_pow", dblTy, {dblTy, dblTy});
+  fUnset = decl("ncrt_unset", voidTy, {ptrTy, i64Ty});
+  fStrClear = decl("ncrt_str_clear", voidTy, {ptrTy});
+  fStrCat = decl("ncrt_str_cat", voidTy, {ptrTy, ptrTy});
+  fStrNum = decl("ncrt_str_num", voidTy, {ptrTy, dblTy});
+  fStr = decl("ncrt_str", ptrTy, {ptrTy});
+  fCallee = decl("ncrt_callee", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty});
   // Pure arithmetic helpers: lets LLVM keep variables in registers across them.
   for (auto *fc : {&fMod, &fIDiv, &fPow}) {
     auto *fn = cast<Function>(fc->getCallee());
@@ -89,9 +96,12 @@ void Codegen::declareRuntime() {
 // eval engine); named globals and Q prefixes get module-wide slots.
 void Codegen::scanExprNames(FnInfo &fi, const Expr &e) {
   if (e.kind == ExprKind::Var) {
-    if (e.space == ir::VarSpace::Local) fi.locals.emplace(e.str, (unsigned)fi.locals.size());
-    if (e.space == ir::VarSpace::Global) globalNames_.emplace(e.str, (unsigned)globalNames_.size());
-    if (e.space == ir::VarSpace::QParam) qSpaces_.emplace(e.str, (unsigned)qSpaces_.size());
+    bool indexed = !e.args.empty();
+    if (e.space == ir::VarSpace::Local && indexed) fi.arrays.emplace(e.str, (unsigned)fi.arrays.size());
+    if (e.space == ir::VarSpace::Local && !indexed) fi.locals.emplace(e.str, (unsigned)fi.locals.size());
+    if (e.space == ir::VarSpace::Global && indexed) globalArrays_.emplace(e.str, (unsigned)globalArrays_.size());
+    if (e.space == ir::VarSpace::Global && !indexed) globalNames_.emplace(e.str, (unsigned)globalNames_.size());
+    if (e.space == ir::VarSpace::QParam) qSpaces_ = std::max(qSpaces_, (unsigned)(qPrefixIndex(e.str) + 1));
   }
   for (auto &a : e.args)
     if (a) scanExprNames(fi, *a);
@@ -215,6 +225,12 @@ void Codegen::emitFunction(FnInfo &fi) {
   backJumps = B.CreateAlloca(i64Ty, nullptr, "backjumps");
   scratch = B.CreateAlloca(dblTy, nullptr, "scratch");
   B.CreateStore(B.getInt64(0), backJumps);
+  localArrays = nullptr;
+  if (!fi.arrays.empty()) {  // fresh, unset arrays per activation
+    uint64_t n = (uint64_t)fi.arrays.size() * kArrayElements;
+    localArrays = B.CreateAlloca(ArrayType::get(dblTy, n), nullptr, "arrays");
+    B.CreateCall(fUnset, {localArrays, B.getInt64(n)});
+  }
   failBB = newBlock("fail");
   exitBB = newBlock("exit");
   BasicBlock *body = newBlock("body");
@@ -255,8 +271,9 @@ void Codegen::emitEntry() {
   entryBB = newBlock("entry");
   B.SetInsertPoint(entryBB);
   Value *ctx = main->getArg(0);
-  Value *st = B.CreateCall(fBegin, {ctx, B.getInt32((uint32_t)globalNames_.size()),
-                                    B.getInt32((uint32_t)qSpaces_.size())});
+  uint64_t named = globalNames_.size() + (uint64_t)globalArrays_.size() * kArrayElements;
+  Value *st = B.CreateCall(fBegin, {ctx, B.getInt32((uint32_t)named),
+                                    B.getInt32(qSpaces_)});
   FnInfo &fi = functions_.at(src_.functions[0].name);
   Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
   initFrame(frame, fi.frameSize, 0);
@@ -264,6 +281,7 @@ void Codegen::emitEntry() {
 }
 
 std::unique_ptr<Module> Codegen::run() {
+  if (!ir::verifyRunnable(src_, diags_)) return nullptr;
   declareRuntime();
   for (auto &fn : src_.functions) {
     if (functions_.count(fn.name)) {

@@ -18,13 +18,13 @@ static constexpr size_t kSmallRun = 16;
 static bool hasText(const MachineCmd &c) { return c.kind == CmdKind::Comment || c.kind == CmdKind::Message; }
 
 Constant *Codegen::cmdConstant(const MachineCmd &c) {
-  uint8_t modes[6];
-  for (int i = 0; i < 6; ++i) modes[i] = (uint8_t)c.modes[i];
+  uint8_t modes[kMaxModes];
+  for (int i = 0; i < kMaxModes; ++i) modes[i] = (uint8_t)c.modes[i];
   uint32_t loc[3] = {c.loc.file, c.loc.line, c.loc.col};
   Constant *text = hasText(c) && c.text ? cstring(c.text) : ConstantPointerNull::get(ptrTy);
   return ConstantStruct::get(
       cmdTy, {B.getInt8((uint8_t)c.kind), B.getInt8(c.sub), B.getInt8(c.sub2), B.getInt8(c.nmodes),
-              ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, 6)), B.getInt32(c.mask),
+              ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, kMaxModes)), B.getInt32(c.mask),
               B.getInt64((uint64_t)c.blockNumber), ConstantDataArray::get(C, ArrayRef<uint32_t>(loc, 3)), text,
               ConstantDataArray::get(C, ArrayRef<double>(c.w, kWords))});
 }
@@ -34,7 +34,7 @@ void Codegen::emitMachineOp(const ir::Op &op) {
   quiet.setCollect(true);
   CmdTemplate t;
   if (!buildCmdTemplate(op, t, quiet)) return;
-  if (t.slots.empty()) {
+  if (t.slots.empty() && !t.text) {
     appendToRun(t.base);
     return;
   }
@@ -93,6 +93,7 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
     mask = B.CreateOr(mask, bit);
   }
   B.CreateStore(mask, B.CreateStructGEP(cmdTy, cmdSlot, 5));
+  if (t.text) B.CreateStore(stringValue(*t.text), B.CreateStructGEP(cmdTy, cmdSlot, 8));
   checkStatus(B.CreateCall(fExec, {ctxArg, cmdSlot}));
 }
 

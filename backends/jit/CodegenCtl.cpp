@@ -260,14 +260,39 @@ void Codegen::emitGoto(const Op &go) {
 // evaluated once in the caller; frame=new gives each repetition fresh #1..#33 holding the
 // numbered arguments (and the callee's named locals that are named arguments); otherwise
 // (shared, the default) the callee works on the caller's #1..#33. Named locals are per call.
+// A computed callee (a string expression, or a number meaning O<n>) is looked up at run time
+// by ncrt_callee and dispatched by a switch over the module's functions.
 void Codegen::emitCall(const Op &op) {
   const Expr *callee = op.get("callee");
-  const ir::Function *target = callee ? src_.find(callee->str) : nullptr;
-  if (!target) {
-    fail(op.loc, fmt::format("call to unknown program '{}'", callee ? callee->str : "?"));
+  FnInfo *fixed = nullptr;
+  Value *index = nullptr;
+  if (callee && callee->kind == ExprKind::String) {
+    const ir::Function *target = src_.find(callee->str);
+    if (!target) {
+      fail(op.loc, unknownProgramMessage(callee->str));
+      return;
+    }
+    fixed = &functions_.at(target->name);
+  } else if (callee) {
+    bool numeric = !callee->isStringExpr();
+    Value *v = numeric ? expr(*callee).v : (stringValue(*callee), ConstantFP::get(dblTy, 0.0));
+    if (!calleeNames) {
+      std::vector<Constant *> names;
+      for (auto &fn : src_.functions) names.push_back(cstring(fn.name));
+      auto *arrTy = ArrayType::get(ptrTy, names.size());
+      calleeNames = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage, ConstantArray::get(arrTy, names),
+                                       "nc.functions");
+    }
+    auto loc = locArgs(op.loc);
+    index = B.CreateCall(fCallee, {ctxArg, B.getInt32(numeric), v, calleeNames, B.getInt64(src_.functions.size()),
+                                   loc[0], loc[1], loc[2]});
+    BasicBlock *found = newBlock("callee.found");
+    B.CreateCondBr(B.CreateICmpSLT(index, B.getInt64(0)), failBB, found);
+    B.SetInsertPoint(found);
+  } else {
+    fail(op.loc, unknownProgramMessage("?"));
     return;
   }
-  FnInfo &fi = functions_.at(target->name);
   const Expr *countE = op.get("count");
   Value *count = countE ? numOf(expr(*countE)) : nullptr;
   const Expr *frameE = op.get("frame");
@@ -275,18 +300,9 @@ void Codegen::emitCall(const Op &op) {
   Value *depth = B.CreateLoad(i32Ty, depthPtr);
   Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
   faultIf(B.CreateICmpUGE(depth, maxDepth), op.loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
-  std::vector<std::pair<unsigned, Value *>> args;  // callee frame slot, value
-  for (auto &a : op.args) {
-    if (a.key.rfind("a.", 0) != 0 || !a.value) continue;
-    std::string k = a.key.substr(2);
-    Value *v = expr(*a.value).v;
-    if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
-      long n = std::atol(k.c_str());
-      if (n >= 1 && n <= kFrameLocals) args.push_back({(unsigned)n, v});
-    } else if (auto it = fi.locals.find(k); it != fi.locals.end()) {
-      args.push_back({(unsigned)(kFrameLocals + 1 + it->second), v});
-    }
-  }
+  std::vector<std::pair<std::string, Value *>> args;  // key after "a.", value
+  for (auto &a : op.args)
+    if (a.key.rfind("a.", 0) == 0 && a.value) args.push_back({a.key.substr(2), expr(*a.value).v});
   B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
 
   Value *counter = nullptr, *limit = nullptr;
@@ -308,11 +324,43 @@ void Codegen::emitCall(const Op &op) {
     B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
     emitTimeCheck(op.loc);  // count=1e308 must not outlive --max-seconds
   }
+  if (fixed) {
+    emitInvoke(*fixed, args, newFrame);
+  } else {
+    BasicBlock *joined = newBlock("call.joined");
+    SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)src_.functions.size());
+    for (size_t i = 0; i < src_.functions.size(); ++i) {
+      BasicBlock *bb = newBlock("call.case");
+      sw->addCase(B.getInt64(i), bb);
+      B.SetInsertPoint(bb);
+      emitInvoke(functions_.at(src_.functions[i].name), args, newFrame);
+      B.CreateBr(joined);
+    }
+    B.SetInsertPoint(joined);
+  }
+  if (count) {
+    B.CreateBr(head);
+    B.SetInsertPoint(done);
+  }
+  B.CreateStore(depth, depthPtr);
+}
+
+// One activation of `fi` with the caller's evaluated arguments.
+void Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame) {
   Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
   const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);
   if (newFrame) {
     initFrame(frame, fi.frameSize, 0);
-    for (auto &a : args) B.CreateStore(a.second, B.CreateConstGEP1_32(dblTy, frame, a.first));
+    for (auto &[k, v] : args) {
+      unsigned slot = 0;
+      if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
+        long n = std::atol(k.c_str());
+        if (n >= 1 && n <= kFrameLocals) slot = (unsigned)n;
+      } else if (auto it = fi.locals.find(k); it != fi.locals.end()) {
+        slot = (unsigned)(kFrameLocals + 1 + it->second);
+      }
+      if (slot) B.CreateStore(v, B.CreateConstGEP1_32(dblTy, frame, slot));
+    }
   } else {
     B.CreateMemCpy(frame, MaybeAlign(8), frameArg, MaybeAlign(8), localsBytes);
     initFrame(frame, fi.frameSize, kFrameLocals + 1);
@@ -320,11 +368,6 @@ void Codegen::emitCall(const Op &op) {
   Value *st = B.CreateCall(fi.F, {ctxArg, stArg, frame});
   checkStatus(st);
   if (!newFrame) B.CreateMemCpy(frameArg, MaybeAlign(8), frame, MaybeAlign(8), localsBytes);
-  if (count) {
-    B.CreateBr(head);
-    B.SetInsertPoint(done);
-  }
-  B.CreateStore(depth, depthPtr);
 }
 
 }  // namespace ncc::jit

@@ -110,12 +110,33 @@ Value *Codegen::paramPtr(const Expr &var, Value *base, int64_t count, unsigned f
   return B.CreateGEP(dblTy, base, B.CreateFPToSI(r, i64Ty));
 }
 
+// Element of a named array (ir/Value.h arrayIndex): an integer index in 0..kArrayElements-1.
+Value *Codegen::elemPtr(const Expr &var, Value *base) {
+  Value *x = numOf(expr(*var.args[0]));
+  Value *ok = B.CreateAnd(B.CreateAnd(B.CreateFCmpOGE(x, ConstantFP::get(dblTy, 0.0)),
+                                      B.CreateFCmpOLT(x, ConstantFP::get(dblTy, (double)kArrayElements))),
+                          B.CreateFCmpOEQ(x, B.CreateUnaryIntrinsic(Intrinsic::trunc, x)));
+  faultIf(B.CreateNot(ok), var.loc, NCRT_FAULT_INDEX, var.str, x);
+  lastIndex = x;
+  return B.CreateGEP(dblTy, base, B.CreateFPToSI(x, i64Ty));
+}
+
 Value *Codegen::varPtr(const Expr &var, bool write) {
+  if (!var.args.empty() && var.space == VarSpace::Local)
+    return elemPtr(var, B.CreateConstGEP1_64(dblTy, localArrays, (uint64_t)cur_->arrays.at(var.str) * kArrayElements));
+  if (!var.args.empty() && var.space == VarSpace::Global)
+    return elemPtr(var, B.CreateConstGEP1_64(dblTy, namedBase, globalNames_.size() + (uint64_t)globalArrays_.at(var.str) *
+                                                                                   kArrayElements));
   switch (var.space) {
   case VarSpace::Numbered: return numberedPtr(var, write);
   case VarSpace::RParam: return paramPtr(var, rBase, NCRT_RPARAMS, NCRT_FAULT_RPARAM);
   case VarSpace::QParam: {
-    Value *base = B.CreateConstGEP1_64(dblTy, qBase, (uint64_t)qSpaces_.at(var.str) * NCRT_QPARAMS);
+    int q = qPrefixIndex(var.str);
+    if (q < 0) {
+      fail(var.loc, fmt::format("unknown Q parameter prefix '{}'", var.str));
+      return scratch;
+    }
+    Value *base = B.CreateConstGEP1_64(dblTy, qBase, (uint64_t)q * NCRT_QPARAMS);
     return paramPtr(var, base, NCRT_QPARAMS, NCRT_FAULT_QPARAM);
   }
   case VarSpace::Local: return B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + cur_->locals.at(var.str));
@@ -130,7 +151,8 @@ Val Codegen::loadVar(const Expr &var) {
   Value *v = B.CreateLoad(dblTy, varPtr(var, false));
   if (var.space == VarSpace::Local || var.space == VarSpace::Global) {
     Value *unset = B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
-    faultIf(unset, var.loc, NCRT_FAULT_UNSET_VAR, var.str, nullptr);
+    if (var.args.empty()) faultIf(unset, var.loc, NCRT_FAULT_UNSET_VAR, var.str, nullptr);
+    else faultIf(unset, var.loc, NCRT_FAULT_UNSET_ELEM, var.str, lastIndex);
   }
   return {v, true};
 }
@@ -141,6 +163,21 @@ void Codegen::storeVar(const Expr &var, Value *value) {
     return;
   }
   B.CreateStore(value, varPtr(var, true));
+}
+
+// String expressions (ir/Value.h): the leaves are appended to the runtime's text buffer.
+void Codegen::appendString(const Expr &e) {
+  if (e.kind == ExprKind::String) B.CreateCall(fStrCat, {ctxArg, cstring(e.str)});
+  else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
+    appendString(*e.args[0]);
+    appendString(*e.args[1]);
+  } else B.CreateCall(fStrNum, {ctxArg, expr(e).v});
+}
+
+Value *Codegen::stringValue(const Expr &e) {
+  B.CreateCall(fStrClear, {ctxArg});
+  appendString(e);
+  return B.CreateCall(fStr, {ctxArg});
 }
 
 Val Codegen::expr(const Expr &e) {

@@ -35,6 +35,7 @@ struct FnInfo {
   const ir::Function *fn = nullptr;
   llvm::Function *F = nullptr;
   std::map<std::string, unsigned> locals;  // named locals: frame slot 34 + index
+  std::map<std::string, unsigned> arrays;  // named local arrays: number in the activation's array block
   unsigned frameSize = 34;                 // #0..#33 then the named locals
   std::vector<std::pair<SourceLoc, std::string>> compileErrors;
 };
@@ -61,6 +62,7 @@ private:
   void emitLoop(const ir::Op &op);
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
+  void emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
   const ir::Op *resolveTarget(const ir::Op &go);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
   void emitTimeCheck(SourceLoc loc);
@@ -88,8 +90,11 @@ private:
   llvm::Value *roundOf(llvm::Value *v);  // llvm.round: half away from zero, like lround
   llvm::Value *varPtr(const ir::Expr &var, bool write);
   llvm::Value *numberedPtr(const ir::Expr &var, bool write);
+  llvm::Value *elemPtr(const ir::Expr &var, llvm::Value *base);
   llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
   Val loadVar(const ir::Expr &var);
+  llvm::Value *stringValue(const ir::Expr &e);  // builds a string expression; ptr to its text
+  void appendString(const ir::Expr &e);
   void storeVar(const ir::Expr &var, llvm::Value *value);
   // ------------------------------------------------ commands (CodegenCmd.cpp)
   void emitMachineOp(const ir::Op &op);
@@ -110,10 +115,14 @@ private:
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow;
+  llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStr, fCallee;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
-  std::map<std::string, unsigned> globalNames_, qSpaces_;  // module-wide slots
+  llvm::GlobalVariable *calleeNames = nullptr;  // names of the module's functions, for ncrt_callee
+  std::map<std::string, unsigned> globalNames_;   // module-wide slots
+  std::map<std::string, unsigned> globalArrays_;  // numbers of global arrays, stored after the scalars
+  unsigned qSpaces_ = 0;                          // Q prefix arrays: 1 + highest qPrefixIndex used
 
   // ------------------------------------------------ per function
   FnInfo *cur_ = nullptr;
@@ -122,6 +131,8 @@ private:
   llvm::PHINode *exitPhi = nullptr;
   llvm::Value *ctxArg, *stArg, *frameArg;
   llvm::Value *numberedBase, *rBase, *qBase, *namedBase, *maxLoop, *depthPtr, *pollPtr;
+  llvm::Value *localArrays = nullptr;  // this activation's named local arrays
+  llvm::Value *lastIndex = nullptr;    // index of the last array element addressed
   llvm::Value *cmdSlot = nullptr, *argSlot = nullptr, *backJumps = nullptr, *scratch = nullptr;
   struct LoopTargets {
     llvm::BasicBlock *cont, *brk;

@@ -103,6 +103,12 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_mod", &ncrt_mod);
   add("ncrt_idiv", &ncrt_idiv);
   add("ncrt_pow", &ncrt_pow);
+  add("ncrt_unset", &ncrt_unset);
+  add("ncrt_str_clear", &ncrt_str_clear);
+  add("ncrt_str_cat", &ncrt_str_cat);
+  add("ncrt_str_num", &ncrt_str_num);
+  add("ncrt_str", &ncrt_str);
+  add("ncrt_callee", &ncrt_callee);
   unsigned n = 0;
   const BuiltinInfo *tab = builtinTable(n);
   for (unsigned i = 0; i < n; ++i) add(tab[i].symbol, tab[i].fn);

@@ -451,7 +451,9 @@ TEST(IRVerifier, GotoTargets) {
 TEST(IRVerifier, CallsAndLoops) {
   EXPECT_EQ(verify("call callee=\"O1\"\n", "func @O1() {\n  return\n}\n"), "");
   EXPECT_EQ(verify("call callee=\"O2\"\n"), "'call' target 'O2' is not a function of this module");
-  EXPECT_EQ(verify("call callee=5\n"), "'call' argument 'callee' must be a string");
+  EXPECT_EQ(verify("call callee=5\n"), "'call' target 'O5' is not a function of this module");
+  EXPECT_EQ(verify("call callee=2.5\n"), "'call' argument 'callee' must be a string or a program number");
+  EXPECT_EQ(verify("call callee=x\n"), "'call' argument 'callee' must be a string or a program number");
   EXPECT_EQ(verify("break\n"), "'break' outside of a 'while' or 'loop'");
   EXPECT_EQ(verify("if cond=true {\n  continue\n}\n"), "'continue' outside of a 'while' or 'loop'");
   EXPECT_EQ(verify("loop count=3 {\n  if cond=true {\n    break\n  }\n  continue\n}\n"), "");

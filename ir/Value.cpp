@@ -1,0 +1,34 @@
+#include "ir/Value.h"
+
+#include <fmt/format.h>
+
+namespace ncc {
+
+std::string numberText(double v) {
+  if (isVacant(v)) return "";
+  if (v == std::trunc(v) && std::fabs(v) < 1e15) return fmt::format("{}", (long long)v);
+  return fmt::format("{}", v);
+}
+
+bool programName(double v, std::string &out) {
+  v = num(v);
+  if (!(v >= 0 && v < 1e15) || v != std::trunc(v)) return false;
+  out = fmt::format("O{}", (long long)v);
+  return true;
+}
+
+std::string unknownProgramMessage(std::string_view name) {
+  return fmt::format("call to unknown program '{}'", name);
+}
+std::string badProgramNumberMessage(double v) {
+  return fmt::format("call target {} is not a program number (a non-negative integer)", numberText(v));
+}
+
+std::string arrayIndexMessage(std::string_view name, double index) {
+  return fmt::format("index {} of array '{}' is not an integer in 0..{}", numberText(index), name, kArrayElements - 1);
+}
+std::string unsetElementMessage(std::string_view name, double index) {
+  return fmt::format("array element '{}[{}]' used before assignment", name, numberText(index));
+}
+
+}  // namespace ncc
