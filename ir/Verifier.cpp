@@ -27,6 +27,7 @@ const EnumRule kEnumRules[] = {
     {OpKind::Coolant, "flood", "on off"},
     {OpKind::Coolant, "mist", "on off"},
     {OpKind::CutterComp, "side", "off left right"},
+    {OpKind::CutterComp, "d_default", "modal tool"},
     {OpKind::SetOffset, "kind", "g92 g92_1 g10l2 g10l20"},
     {OpKind::Stop, "kind", "program optional end end_rewind"},
     {OpKind::Goto, "dir", "forward backward any"},
@@ -375,7 +376,7 @@ private:
       if (r.kind == op.kind && key == r.key) return Ctx::Var;
     for (auto &r : kEnumRules)
       if (r.kind == op.kind && key == r.key) return Ctx::Symbol;
-    if (op.kind == OpKind::Mode) return Ctx::Symbol;
+    if (op.kind == OpKind::Mode && key != "tolerance" && key != "naive_tolerance") return Ctx::Symbol;
     return Ctx::Number;
   }
 

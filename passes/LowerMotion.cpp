@@ -29,7 +29,7 @@ bool runLowerMotion(ir::Module &m, Diagnostics &diags, PassContext &ctx) {
   ExecutorSink es(exec);
   Evaluator ev(es, diags, ctx.limits);
   bool ok = ev.run(m);
-  ok &= exec.finish();
+  ok &= exec.finish(ok);
   return ok && !diags.hasErrors();
 }
 

@@ -409,10 +409,11 @@ bool Executor::exec(const MachineCmd &c) {
   }
 }
 
-bool Executor::finish() {
+bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
   x.comp.stop();
-  if (!x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");
+  // A run stopped by an error did not reach its end: no warning about how it ends.
+  if (ranToEnd && !x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");
   return true;
 }
 

@@ -37,8 +37,9 @@ public:
   // Executes one command. Errors go to diags (with the command's loc); returns false on error,
   // after which the caller stops the program.
   bool exec(const MachineCmd &cmd);
-  // Flushes pending state at program end (no M2 seen: warns); returns false on error.
-  bool finish();
+  // Flushes pending state at program end; returns false on error. ranToEnd: the program ran
+  // to its end (not stopped by an error), so a missing M2/M30 is worth a warning.
+  bool finish(bool ranToEnd = true);
   const ModalState &state() const;
   // Source blocks executed so far (a block in a loop counts each time it runs).
   uint64_t blockCount() const;

@@ -2,6 +2,7 @@
 // and canned cycles. Positions are computed in the machine frame (mm); words are converted with
 // the unit scale and the current offsets (ExecutorImpl.h).
 #include "runtime/ExecutorImpl.h"
+#include "runtime/Geometry.h"
 
 #include <cinttypes>
 #include <cmath>
@@ -29,9 +30,6 @@ constexpr ArcAxes kArcAxes[] = {
 // 0.001 x 2 x sqrt(2) inch in inch programs (rs274ngc CENTER_ARC_RADIUS_TOLERANCE_*).
 constexpr double kArcRelTolerance = 0.001;
 constexpr double kArcAbsTolMM = 0.02 * M_SQRT2, kArcAbsTolInch = 0.002 * M_SQRT2;
-// R-form arcs whose radius is shorter than half the chord by less than this pass as half circles
-// (rs274: 0.001 mm passes, 0.002 mm fails; 0.0001 inch fails).
-constexpr double kRadiusTolMM = 0.0015, kRadiusTolInch = 0.00005;
 
 constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // X Y Z A B C words
 
@@ -141,7 +139,7 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
     if (chord == 0) return error("Current point same as end point of arc", "arc-invalid");
     double half = chord / 2, h = 0;
     if (std::fabs(rr) < half) {
-      if (half - std::fabs(rr) > (inch ? kRadiusTolInch * 25.4 : kRadiusTolMM))
+      if (half - std::fabs(rr) > kArcRadiusSlackMM)
         return error("Arc radius too small to reach end point", "arc-radius-too-small");
     } else {
       h = std::sqrt(rr * rr - half * half);

@@ -40,6 +40,12 @@ ArcGeometry arcGeometry(const MotionRecord &r);
 // (degrees) so that feed-rate timing stays meaningful.
 double linearLength(const AxisVec &start, const AxisVec &end);
 
+// rs274 (2.9): an R-form arc whose radius falls short of half the chord by more than this is
+// "Arc radius too small to reach end point"; less, and it runs as a half circle. Measured on
+// rs274 in both units: 0.0012 mm and 0.00005 inch (0.00127 mm) pass, 0.0013 mm and 0.00006 inch
+// fail. Used by the executor and by lint's static check.
+constexpr double kArcRadiusSlackMM = 0.00128;
+
 // Point at parameter s in [0, 1] (fraction of the sweep, which is also the fraction of length).
 AxisVec arcPoint(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, double s);
 // Unit tangent (XYZ) in the direction of travel at parameter s.

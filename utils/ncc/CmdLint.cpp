@@ -13,6 +13,8 @@
 namespace ncc::driver {
 
 namespace {
+constexpr size_t kMaxLintDiagnostics = 100;
+
 class NullSink : public MotionSink {
 public:
   void record(const MotionRecord &) override {}
@@ -48,6 +50,9 @@ int cmdLint(int argc, char **argv) {
     return kExitUsage;
   }
   s.diags.setCollect(true);
+  // Collect far more than are shown (repeats of one rule at one location fold into one line);
+  // the bound keeps a runaway loop's repeated errors from filling memory.
+  s.diags.setErrorLimit(100000);
   if (!s.setUp()) {
     for (auto &d : s.diags.collected()) std::fprintf(stderr, "%s\n", s.diags.render(d).c_str());
     return kExitErrors;
@@ -56,18 +61,21 @@ int cmdLint(int argc, char **argv) {
     uint32_t f = s.open(path);
     if (!f) continue;
     ir::Module m;
-    unsigned before = s.diags.errorCount();
-    if (!s.load(f, m) || s.diags.errorCount() != before) continue;
     PassContext ctx;
     ctx.machine = &s.machine;
     ctx.limits = s.opts.limits;
+    // Front-end errors drop only the words of their block after the error: the rest of the
+    // program still gets the verifier, the static rules and a run, so one lint run reports
+    // every problem it can find (the issue 7 recovery). A module the verifier rejects is not run.
+    if (!s.load(f, m)) {
+      if (m.functions.empty() || !runPasses(m, {"verify", "sema"}, s.diags, ctx)) continue;
+    }
     runLint(m, s.diags, ctx);
     NullSink sink;
     Executor exec(s.machine, sink, s.diags);
     KeepGoingSink es(exec);
     Evaluator ev(es, s.diags, s.opts.limits);
-    ev.run(m);
-    exec.finish();
+    exec.finish(ev.run(m));
   }
   // Print, dropping repeats of one rule at one location (a loop reports once).
   // In source order, whichever stage found them.
@@ -81,10 +89,16 @@ int cmdLint(int argc, char **argv) {
   bool json = s.opts.diagnosticsFormat == "json";
   if (json) std::printf("[");
   bool first = true;
+  size_t shown = 0, hidden = 0;
   for (auto &d : all) {
     std::string key = fmt::format("{}:{}:{}:{}:{}", d.loc.file, d.loc.line, d.loc.col, d.rule, d.message);
     if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
     seen.push_back(key);
+    if (shown == kMaxLintDiagnostics) {
+      ++hidden;
+      continue;
+    }
+    ++shown;
     std::string text = s.diags.render(d);
     if (json) {
       std::printf("%s\n  %s", first ? "" : ",", text.c_str());
@@ -92,6 +106,12 @@ int cmdLint(int argc, char **argv) {
     } else {
       std::fputs(text.c_str(), stderr);
     }
+  }
+  if (hidden) {
+    std::string note = fmt::format("{} more diagnostics not shown (ncc lint shows the first {})", hidden,
+                                   kMaxLintDiagnostics);
+    if (json) std::printf(",\n  {\"severity\": \"note\", \"message\": \"%s\"}", note.c_str());
+    else std::fprintf(stderr, "ncc: note: %s\n", note.c_str());
   }
   if (json) std::printf("\n]\n");
   return s.diags.hasErrors() ? kExitErrors : kExitOk;

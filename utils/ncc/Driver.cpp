@@ -118,7 +118,7 @@ bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blo
     Evaluator ev(es, diags, opts.limits);
     ok = ev.run(m);
   }
-  ok &= exec.finish();
+  ok &= exec.finish(ok);
   if (blocks) *blocks = exec.blockCount();
   return ok && !diags.hasErrors();
 }

@@ -33,7 +33,10 @@ bool Session::executeStreamed(uint32_t file, MotionSink &sink, uint64_t *blocks,
     more = stream->next(chunk.functions[0].body, 4096);
     if (diags.hasErrors()) return false;
     if (verifyChunks && !runPasses(chunk, {"verify", "sema"}, diags, ctx)) return false;
-    if (!ev.run(chunk)) return false;
+    if (!ev.run(chunk)) {
+      exec.finish(false);
+      return false;
+    }
   }
   bool ok = exec.finish();
   if (blocks) *blocks = exec.blockCount();
