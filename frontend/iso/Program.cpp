@@ -4,6 +4,7 @@
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/iso/Lower.h"
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
@@ -61,6 +62,7 @@ private:
     std::string oname;
   };
   std::vector<OpenSub> subStack_;  // RS274 o-word subs being defined
+  size_t fileFn_ = SIZE_MAX;        // the function of a subprogram file being parsed
   bool sectionContent_ = false, ended_ = false;  // section has code; closing '%' seen
 
   Region &region() {
@@ -73,6 +75,21 @@ private:
   }
   size_t startFunction(const std::string &name, SourceLoc loc);
   void closeOpen(size_t depth);
+  // `#<name> = value` for rs274's call results (#<_value>, #<_value_returned>).
+  static Op valueAssign(const char *name, ir::ExprPtr value, SourceLoc loc) {
+    Op op(OpKind::Assign, loc);
+    op.set("target", Expr::var(ir::VarSpace::Global, name, nullptr, loc));
+    op.set("value", std::move(value));
+    return op;
+  }
+  // `return [v]` / `endsub [v]`: the caller reads v as #<_value>, with #<_value_returned> = 1.
+  void returnOps(SourceLoc loc, ir::ExprPtr value) {
+    if (value) {
+      region().push_back(valueAssign("_value", std::move(value), loc));
+      region().push_back(valueAssign("_value_returned", Expr::number(1, ir::Type::Int, loc), loc));
+    }
+    region().push_back(Op(OpKind::Return, loc));
+  }
   void pop();
   void statement(ParsedBlock &b, BlockLowerer &lower);
   void oword(ParsedBlock &b, BlockLowerer &lower);
@@ -206,7 +223,13 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
       return;
     }
     size_t outer = fn_;
-    fn_ = startFunction(oFunctionName(b.oname), loc);
+    // A subroutine file name.ngc that starts with `o<name> sub`: the file's function is the sub.
+    ir::Function &cur = module_.functions[fn_];
+    bool fileIsSub = fn_ == fileFn_ && subStack_.empty() && cur.name == oFunctionName(b.oname) &&
+                     std::all_of(cur.body.begin(), cur.body.end(), [](const Op &op) {
+                       return op.kind == OpKind::Block || op.kind == OpKind::Comment;
+                     });
+    if (!fileIsSub) fn_ = startFunction(oFunctionName(b.oname), loc);
     subStack_.push_back({outer, stack_.size(), b.oname});
     head();
     return;
@@ -218,9 +241,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     }
     closeOpen(subStack_.back().depth);
     head();
-    Op r(OpKind::Return, loc);
-    if (b.cond) r.set("value", std::move(b.cond));
-    region().push_back(std::move(r));
+    returnOps(loc, std::move(b.cond));
     fn_ = subStack_.back().outer;
     subStack_.pop_back();
     return;
@@ -229,6 +250,8 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
     head();
     std::string callee = oFunctionName(b.oname);
     lower.calls.push_back({callee, loc});
+    // rs274: #<_value_returned> is 0 after a call whose sub returned no value.
+    region().push_back(valueAssign("_value_returned", Expr::number(0, ir::Type::Int, loc), loc));
     Op op(OpKind::Call, loc);
     op.set("callee", Expr::string(callee, loc));
     op.set("frame", Expr::symbol("new", loc));
@@ -238,9 +261,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
   }
   case OKeyword::Return: {
     head();
-    Op r(OpKind::Return, loc);
-    if (b.cond) r.set("value", std::move(b.cond));
-    region().push_back(std::move(r));
+    returnOps(loc, std::move(b.cond));
     return;
   }
   case OKeyword::If: {
@@ -344,6 +365,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
   }
   ir::Function *first = module_.find(firstName);
   fn_ = first ? (size_t)(first - module_.functions.data()) : startFunction(firstName, {fileId, 1, 1});
+  fileFn_ = firstName == "main" ? SIZE_MAX : fn_;
   stack_.clear();
   subStack_.clear();
   sectionContent_ = ended_ = false;

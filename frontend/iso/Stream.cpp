@@ -28,7 +28,8 @@ bool isoIsStreamable(std::string_view text) {
       if (seenContent) return false;  // subprogram or RS274 o-word
       const char *r = q + 1;
       while (r < le && ((*r >= '0' && *r <= '9') || *r == ' ' || *r == '\t' || *r == '\r')) ++r;
-      if (r < le && letter(*r)) return false;  // o100 while ...
+      // o100 while ..., o<name> sub, o[#1] call, o#<sub> call: RS274NGC o-words.
+      if (r < le && (letter(*r) || *r == '<' || *r == '[' || *r == '#')) return false;
       p = nl ? nl + 1 : end;
       continue;
     }

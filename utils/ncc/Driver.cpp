@@ -20,6 +20,7 @@ void addCommonOptions(po::options_description &desc, CommonOptions &o) {
       ("engine", po::value(&o.engine)->default_value("eval"), "execution engine: eval|jit")
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
+      ("include,I", po::value(&o.includeDirs), "folder with subprogram files (after the program's own folder; repeatable)")
       ("max-loop-iterations", po::value(&o.limits.maxLoopIterations)->default_value(o.limits.maxLoopIterations),
        "stop a loop after this many iterations")
       ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
@@ -85,6 +86,7 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
     if (l <= 9) fo.blockDeleteMask |= 1u << l;
   fo.searchDirs.push_back(std::filesystem::path(sm.name(file)).parent_path().string());
   if (fo.searchDirs.back().empty()) fo.searchDirs.back() = ".";
+  for (auto &d : opts.includeDirs) fo.searchDirs.push_back(d);
   return fo;
 }
 

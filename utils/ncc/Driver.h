@@ -27,6 +27,7 @@ struct CommonOptions {
   std::string engine = "eval";
   std::string decimalMode;  // empty = the machine's
   std::vector<unsigned> blockDelete;
+  std::vector<std::string> includeDirs;  // subprogram files, searched after the program's folder
   ExecLimits limits;
   std::string diagnosticsFormat = "text";
   bool werror = false;
