@@ -71,7 +71,8 @@ static const struct LetterTable {
   int8_t slot[26];
   LetterTable() {
     for (auto &s : slot) s = -1;
-    for (int i = 0; i < kWords; ++i) slot[kWordLetters[i] - 'A'] = (int8_t)i;
+    for (int i = 0; i < kWords; ++i)
+      if (kWordLetters[i] >= 'A' && kWordLetters[i] <= 'Z') slot[kWordLetters[i] - 'A'] = (int8_t)i;
   }
 } kLetters;
 

@@ -62,6 +62,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::SetOffset, "index", Word::P},  {OpKind::Aux, "m", Word::P},
     {OpKind::Aux, "b", Word::P},            {OpKind::Aux, "h", Word::P},
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
+    {OpKind::Move, "polar_r", Word::PolarR}, {OpKind::Move, "polar_a", Word::PolarA},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -270,6 +271,7 @@ Op cmdToOp(const MachineCmd &c) {
       Word w = (Word)i;
       if (!c.has(w)) continue;
       if (op.kind == OpKind::SetOffset && w == Word::P) continue;
+      if (w == Word::PolarR || w == Word::PolarA) continue;  // named keys, above
       op.set(std::string(1, kWordLetters[i]), real(c.get(w)));
     }
   return op;

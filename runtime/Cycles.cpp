@@ -1,4 +1,5 @@
 #include "runtime/Cycles.h"
+#include "runtime/Geometry.h"
 
 #include <algorithm>
 
@@ -7,11 +8,11 @@ namespace ncc {
 namespace {
 
 // Plane axis indices: first and second plane axis, drilling axis.
-struct PlaneAxes {
+struct DrillAxes {
   int a1, a2, d;
   const char *name;  // as rs274 names the plane in its messages
 };
-constexpr PlaneAxes kPlaneAxes[] = {{0, 1, 2, "xy"}, {2, 0, 1, "xz"}, {1, 2, 0, "yz"}};
+constexpr DrillAxes kDrillAxes[] = {{0, 1, 2, "xy"}, {2, 0, 1, "xz"}, {1, 2, 0, "yz"}};
 
 struct CycleInfo {
   ModeValue mode;
@@ -27,7 +28,7 @@ constexpr CycleInfo kCycles[] = {
 // Collects the steps of one hole at (a1, a2) in the plane.
 class HoleWriter {
 public:
-  HoleWriter(std::vector<CycleStep> &out, const PlaneAxes &ax, double a1, double a2)
+  HoleWriter(std::vector<CycleStep> &out, const DrillAxes &ax, double a1, double a2)
       : out_(out), ax_(ax), a1_(a1), a2_(a2) {}
   void rapid(double level) { move(CycleStepKind::Rapid, level); }
   void feed(double level) { move(CycleStepKind::Feed, level); }
@@ -53,7 +54,7 @@ private:
     out_.push_back(st);
   }
   std::vector<CycleStep> &out_;
-  const PlaneAxes &ax_;
+  const DrillAxes &ax_;
   double a1_, a2_;
 };
 
@@ -133,7 +134,7 @@ const char *cycleCodeName(ModeValue cycle) {
 }
 
 bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string &err) {
-  const PlaneAxes &ax = kPlaneAxes[(int)in.plane];
+  const DrillAxes &ax = kDrillAxes[(int)in.plane];
   if (in.cycle == ModeValue::BoreBack || in.cycle == ModeValue::BoreFine || !isCycleMotion(in.cycle)) {
     err = std::string(cycleCodeName(in.cycle)) + " canned cycle is not supported";
     return false;
@@ -175,10 +176,15 @@ bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string 
   }
   const double clear = in.retractToR ? r : std::max(il, r);
   double level = std::max(pos[ax.d], in.sameCycle ? clear : r);  // height of the move to the hole
-  double a1 = in.incremental ? in.current[ax.a1] : in.target[ax.a1];
-  double a2 = in.incremental ? in.current[ax.a2] : in.target[ax.a2];
+  double a1 = in.incremental || in.polar ? in.current[ax.a1] : in.target[ax.a1];
+  double a2 = in.incremental || in.polar ? in.current[ax.a2] : in.target[ax.a2];
   for (int k = 0; k < in.repeats; ++k) {
-    if (in.incremental) {
+    if (in.polar) {
+      double x = a1 - in.origin[0], y = a2 - in.origin[1];
+      polarStep(x, y, in.incremental, in.polarHasR, in.polarR, in.polarHasA, in.polarA);
+      a1 = x + in.origin[0];
+      a2 = y + in.origin[1];
+    } else if (in.incremental) {
       a1 += in.target[ax.a1];
       a2 += in.target[ax.a2];
     }

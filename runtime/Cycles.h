@@ -42,6 +42,11 @@ struct CycleInput {
   int repeats = 1;          // L (Fanuc K)
   int spindle = 1;          // spindle direction before the cycle: 1 cw, 2 ccw (G86 restart)
   double peckClearance = 0.254;  // G83 stop short / G73 retract (0.010 inch), same unit as positions
+  // RS274NGC polar hole positions (XY plane): each repeat applies the @ ^ step (polarStep) to
+  // the previous hole, about the program origin `origin`, instead of `target`.
+  bool polar = false, polarHasR = false, polarHasA = false;
+  double polarR = 0, polarA = 0;  // radius (position units), angle (degrees)
+  std::array<double, 2> origin{};
 };
 
 // Appends the steps of one cycle block to `out`. Returns false with an rs274-like message in

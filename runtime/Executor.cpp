@@ -1,6 +1,7 @@
 // Executor: command dispatch, modal state, offsets and program stops. Motion lives in
 // ExecutorMotion.cpp. The semantics follow LinuxCNC's rs274 at machine level (the oracle).
 #include "runtime/ExecutorImpl.h"
+#include "runtime/Geometry.h"
 
 #include <cmath>
 
@@ -58,6 +59,13 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
     double v = c.get(w) * axisScale(i);
     double prog = inc ? t[i] - frameOffset(i) + v : v;
     t[i] = prog + frameOffset(i);
+  }
+  if (c.has(Word::PolarR) || c.has(Word::PolarA)) {  // X and Y from @ ^ (exec rejects X/Y with them)
+    double x = t[0] - frameOffset(0), y = t[1] - frameOffset(1);
+    polarStep(x, y, inc, c.has(Word::PolarR), c.get(Word::PolarR) * scale(), c.has(Word::PolarA),
+              c.get(Word::PolarA));
+    t[0] = x + frameOffset(0);
+    t[1] = y + frameOffset(1);
   }
   return frameOut(t);
 }
@@ -296,6 +304,12 @@ bool Executor::exec(const MachineCmd &c) {
   }
   bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
   if ((motion || c.kind == CmdKind::SetOffset) && !x.checkAxisWords(c)) return false;
+  if (c.has(Word::PolarR) || c.has(Word::PolarA)) {
+    for (Word w : {Word::X, Word::Y})  // rs274's messages
+      if (c.has(w))
+        return x.error(std::string("Cannot specify both polar coordinate and ") + kWordLetters[(int)w] + " word",
+                       "polar-with-xy");
+  }
   if (motion && x.st.ended && !x.warnedAfterEnd) {
     x.warnedAfterEnd = true;
     x.warning("motion after the end of the program (M2/M30)", "code-after-end");

@@ -96,6 +96,15 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     double v = c.get((Word)i) * scale();
     in.target[i] = inc ? (has ? v : 0.0) : (has ? v + frameOffset(i) : here[i]);
   }
+  if (c.has(Word::PolarR) || c.has(Word::PolarA)) {
+    if (pl != 0) return error("polar coordinates in a canned cycle outside the XY plane are not supported", "unsupported-code");
+    in.polar = true;
+    in.polarHasR = c.has(Word::PolarR);
+    in.polarHasA = c.has(Word::PolarA);
+    in.polarR = c.get(Word::PolarR) * scale();
+    in.polarA = c.get(Word::PolarA);
+    in.origin = {frameOffset(0), frameOffset(1)};
+  }
   steps.clear();
   std::string err;
   if (!expandCycle(in, steps, err)) return error(err, "cycle-invalid");

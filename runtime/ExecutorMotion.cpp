@@ -32,6 +32,8 @@ constexpr double kArcRelTolerance = 0.001;
 constexpr double kArcAbsTolMM = 0.02 * M_SQRT2, kArcAbsTolInch = 0.002 * M_SQRT2;
 
 constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // X Y Z A B C words
+// Words that give a move a target: the axes and RS274NGC's polar @ ^.
+const uint32_t kTargetMask = kAxisMask | wordBit(Word::PolarR) | wordBit(Word::PolarA);
 
 }  // namespace
 
@@ -93,16 +95,16 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
 bool Executor::Impl::execMove(const MachineCmd &c) {
   switch (st.motion) {
   case ModeValue::Rapid:
-    if (!(c.mask & kAxisMask)) return true;
+    if (!(c.mask & kTargetMask)) return true;
     return moveTo(RecordKind::Rapid, target(c));
   case ModeValue::Linear:
-    if (!(c.mask & kAxisMask)) return true;
+    if (!(c.mask & kTargetMask)) return true;
     if (!checkFeed("G1")) return false;
     return moveTo(RecordKind::Linear, target(c));
   case ModeValue::ArcCW:
   case ModeValue::ArcCCW: return arc(c, st.motion == ModeValue::ArcCW);
   case ModeValue::CycleOff:
-    if (!(c.mask & kAxisMask)) return true;
+    if (!(c.mask & kTargetMask)) return true;
     return error("Cannot use axis values with G80", "motion-mode-none");
   default:
     if (!compForbids("Cannot use canned cycles with cutter compensation on")) return false;

@@ -119,4 +119,19 @@ void arcBounds(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, V
   }
 }
 
+void polarStep(double &x, double &y, bool incremental, bool hasRadius, double radius, bool hasAngle,
+               double degrees) {
+  double r = std::hypot(x, y), a = std::atan2(y, x);
+  double da = degrees * M_PI / 180;
+  if (incremental) {
+    r += hasRadius ? radius : 0;
+    a += hasAngle ? da : 0;
+  } else {
+    r = hasRadius ? radius : r;
+    a = hasAngle ? da : a;
+  }
+  x = r * std::cos(a);
+  y = r * std::sin(a);
+}
+
 }  // namespace ncc

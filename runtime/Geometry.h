@@ -46,6 +46,12 @@ double linearLength(const AxisVec &start, const AxisVec &end);
 // fail. Used by the executor and by lint's static check.
 constexpr double kArcRadiusSlackMM = 0.00128;
 
+// RS274NGC polar coordinates (`@` radius, `^` angle in degrees) about the program origin: moves
+// the point (x, y), given relative to that origin. Absolute: a missing word keeps the point's
+// own radius or angle; incremental: the words are added to them (rs274's find_ends).
+void polarStep(double &x, double &y, bool incremental, bool hasRadius, double radius, bool hasAngle,
+               double degrees);
+
 // Point at parameter s in [0, 1] (fraction of the sweep, which is also the fraction of length).
 AxisVec arcPoint(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, double s);
 // Unit tangent (XYZ) in the direction of travel at parameter s.

@@ -27,7 +27,7 @@ using ir::OpKind;
 // The LLVM struct types below mirror these C++ layouts.
 static_assert(offsetof(MachineCmd, modes) == 4 && offsetof(MachineCmd, mask) == 12 &&
               offsetof(MachineCmd, blockNumber) == 16 && offsetof(MachineCmd, loc) == 24 &&
-              offsetof(MachineCmd, text) == 40 && offsetof(MachineCmd, w) == 48 && sizeof(MachineCmd) == 224,
+              offsetof(MachineCmd, text) == 40 && offsetof(MachineCmd, w) == 48 && sizeof(MachineCmd) == 48 + 8 * kWords,
               "MachineCmd layout changed: update cmdTy");
 static_assert(offsetof(ncrt_storage, max_loop) == 32 && offsetof(ncrt_storage, depth) == 44 &&
               offsetof(ncrt_storage, poll) == 48 && sizeof(ncrt_storage) == 56,

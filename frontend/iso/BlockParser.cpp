@@ -349,6 +349,15 @@ bool BlockParser::parseItems(ParsedBlock &out) {
       if (!parseAssign(out)) return false;
       continue;
     }
+    if ((c == '@' || c == '^') && flavour_ == Flavour::RS274) {  // polar radius / angle
+      ++p_;
+      IsoWord w;
+      w.letter = c;
+      w.loc = locAt(at);
+      if (!parseWordValue(w)) return false;
+      out.words.push_back(std::move(w));
+      continue;
+    }
     if (!isLetter(c)) return fail(p_, "unexpected character " + showChar(c), "syntax");
     std::string_view letters = readLetters();
     if (letters.size() >= 2) {

@@ -19,6 +19,7 @@ static const int kMacroArg[26] = {
     /*U*/ 21, /*V*/ 22, /*W*/ 23, /*X*/ 24, /*Y*/ 25, /*Z*/ 26};
 
 static const char kAxes[] = "XYZABCUVW";
+static const char kMoveWords[] = "XYZABCUVW@^";  // words that make a block a move
 static const char kOffsetAxes[] = "XYZABC";
 
 enum class Scale : uint8_t { None, Linear, Rotary, Feed, DwellX };
@@ -81,15 +82,18 @@ struct BlockLowerer::Block {
     MCodeInfo info;
     const IsoWord *word;
   };
-  // Which words are present, which were consumed.
+  // Which words are present, which were consumed. Slots: A-Z, then RS274NGC's polar `@` `^`.
   struct Words {
-    IsoWord *w[26] = {};
+    static int slot(char c) { return c == '@' ? 26 : c == '^' ? 27 : c - 'A'; }
+    static char letter(int slot) { return slot == 26 ? '@' : slot == 27 ? '^' : (char)('A' + slot); }
+    static uint32_t bit(char c) { return 1u << slot(c); }
+    IsoWord *w[28] = {};
     uint32_t used = 0, present = 0;
-    IsoWord *get(char c) { return w[c - 'A']; }
-    bool has(char c) const { return w[c - 'A'] != nullptr; }
+    IsoWord *get(char c) { return w[slot(c)]; }
+    bool has(char c) const { return w[slot(c)] != nullptr; }
     bool hasAny(const char *letters) const {
       uint32_t m = 0;
-      for (; *letters; ++letters) m |= 1u << (*letters - 'A');
+      for (; *letters; ++letters) m |= bit(*letters);
       return (present & m) != 0;
     }
   };
@@ -133,7 +137,7 @@ struct BlockLowerer::Block {
   SourceLoc gloc(GGroup g) const { return gs[(size_t)g].word->loc; }
   ExprPtr take(char c, Scale s) {
     IsoWord *w = bw.get(c);
-    bw.used |= 1u << (c - 'A');
+    bw.used |= Words::bit(c);
     return literal(*w, factor(s));
   }
   Op &emit(OpKind k, SourceLoc loc) {
@@ -146,6 +150,7 @@ struct BlockLowerer::Block {
   }
   // Keys are unique here, so args are appended directly (Op::set would search).
   static void add(Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); }
+  static void add(Op &op, const char *key, ExprPtr v) { op.args.push_back({key, std::move(v)}); }
   void axisWords(Op &op, const char *axes) {
     for (const char *a = axes; *a; ++a)
       if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
@@ -287,15 +292,15 @@ bool BlockLowerer::Block::classify() {
       ms[nm++] = {mi, &w};
       continue;
     }
-    if (w.letter < 'A' || w.letter > 'Z') continue;
+    if ((w.letter < 'A' || w.letter > 'Z') && w.letter != '@' && w.letter != '^') continue;
     bool argSetII = macroCall && (w.letter == 'I' || w.letter == 'J' || w.letter == 'K');
-    if (bw.w[w.letter - 'A'] && !argSetII) {
+    if (bw.get(w.letter) && !argSetII) {
       L.diags_.error(w.loc, fmt::format("two {} words in one block", w.letter), "duplicate-word");
       ok = false;
       continue;
     }
-    if (!bw.w[w.letter - 'A']) bw.w[w.letter - 'A'] = &w;
-    bw.present |= 1u << (w.letter - 'A');
+    if (!bw.get(w.letter)) bw.w[Words::slot(w.letter)] = &w;
+    bw.present |= Words::bit(w.letter);
   }
   return ok;
 }
@@ -487,7 +492,7 @@ bool BlockLowerer::Block::motion() {
   if (!axesTaken) {
     bool cycle = isCycleMotion(L.motion_);
     bool arc = L.motion_ == ModeValue::ArcCW || L.motion_ == ModeValue::ArcCCW;
-    bool moves = bw.hasAny(kAxes) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R'));
+    bool moves = bw.hasAny(kMoveWords) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R'));
     if (moves) {
       const bool rs274 = L.flavour_ == Flavour::RS274;
       std::string_view params = cycle ? cycleParamWords(L.motion_, rs274) : "";
@@ -499,6 +504,9 @@ bool BlockLowerer::Block::motion() {
       Op op(OpKind::Move, loc);
       op.args.reserve((size_t)__builtin_popcount(bw.present));
       axisWords(op, kAxes);
+      // RS274NGC polar coordinates: @ radius (a length), ^ angle in degrees, about the origin.
+      if (bw.has('@')) add(op, "polar_r", take('@', Scale::Linear));
+      if (bw.has('^')) add(op, "polar_a", take('^', Scale::None));
       // Arcs read I J K R; cycles read R (the clearance plane) only.
       for (char c : std::string_view(arc ? "IJKR" : cycle ? "R" : "")) {
         if (!bw.has(c)) continue;
@@ -596,7 +604,7 @@ bool BlockLowerer::Block::callsAndReturn() {
     int set = 0, lastPos = -1;
     for (auto &w : b.words) {
       if (w.letter == 'G' || w.letter == 'P' || w.letter == 'L') continue;
-      int local = kMacroArg[w.letter - 'A'];
+      int local = w.letter >= 'A' && w.letter <= 'Z' ? kMacroArg[w.letter - 'A'] : 0;
       if (specII && w.letter >= 'I' && w.letter <= 'K') {
         int pos = w.letter - 'I';
         if (pos <= lastPos) ++set;
@@ -637,7 +645,7 @@ bool BlockLowerer::Block::finish() {
   bool ok = true;
   for (uint32_t unused = bw.present & ~bw.used; unused; unused &= unused - 1)
     if (int c = __builtin_ctz(unused); bw.w[c]) {
-      L.diags_.error(bw.w[c]->loc, fmt::format("{} word is not used by any code of this block", (char)('A' + c)),
+      L.diags_.error(bw.w[c]->loc, fmt::format("{} word is not used by any code of this block", Words::letter(c)),
                      "unused-word");
       ok = false;
     }
