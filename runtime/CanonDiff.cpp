@@ -132,6 +132,7 @@ private:
   }
   LineReader lines_;
   size_t last_ = 0;
+  std::array<double, 6> pos_{};  // machine position after the last straight move
   double scale_ = 1, rot_ = 0;
   std::array<double, 6> g5x_{}, g92_{}, tool_{};
   int plane_ = 0;
@@ -207,6 +208,13 @@ bool MachineReader::next(Motion &m, std::string &err) {
       m.pos[0] = v[0];
     } else {
       continue;
+    }
+    if (m.kind != MotionKind::Dwell) {
+      // A straight move to where the machine already is moves nothing (rs274 prints one for a
+      // bare `G0` after a tool change): not motion at machine level.
+      bool still = (m.kind == MotionKind::Traverse || m.kind == MotionKind::Feed) && m.pos == pos_;
+      pos_ = m.pos;
+      if (still) continue;
     }
     m.line = l;
     m.unitScale = scale_;

@@ -487,4 +487,24 @@ TEST(CanonDiff, OffsetsKeepTheUnitsTheyWereSetIn) {
   EXPECT_TRUE(canonDiff(a, b, CanonDiffOptions(), report)) << report;
 }
 
+TEST(CanonDiff, MovesThatStayPutAreNoMotion) {
+  // rs274 prints a traverse to the current point for a bare G0 after a tool change.
+  const char *a =
+      "STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "STRAIGHT_TRAVERSE(1.0000, 2.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "STRAIGHT_FEED(1.0000, 2.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n";
+  const char *b = "STRAIGHT_TRAVERSE(1.0000, 2.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n";
+  std::string report;
+  EXPECT_TRUE(canonDiff(a, b, CanonDiffOptions(), report)) << report;
+  // After an arc the machine is at the arc's end: a move back to the start is real motion.
+  const char *c =
+      "STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "ARC_FEED(0.0000, 1.0000, 0.0000, 0.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n";
+  const char *d =
+      "STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "ARC_FEED(0.0000, 1.0000, 0.0000, 0.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)\n";
+  EXPECT_FALSE(canonDiff(c, d, CanonDiffOptions(), report));
+}
+
 }  // namespace
