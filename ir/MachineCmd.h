@@ -23,7 +23,7 @@ bool wordFromLetter(char c, Word &out);
 enum class CmdKind : uint8_t {
   Block,        // start of a source block: blockNumber, loc
   Comment,      // text
-  Message,      // text
+  Message,      // text; sub: MessageKind
   Mode,         // modes[0..nmodes)
   Feed,         // w[F]
   Speed,        // w[S]
@@ -45,6 +45,9 @@ enum class CmdKind : uint8_t {
 };
 
 enum class StopKind : uint8_t { Program, Optional, End, EndRewind };
+// Operator message (Sinumerik MSG, Fanuc #3006, LinuxCNC MSG) or LinuxCNC's DEBUG (to the trace),
+// PRINT (to stderr) and ABORT (stops the run). Numbers in DEBUG/PRINT/ABORT texts print "%f".
+enum class MessageKind : uint8_t { Msg, Debug, Print, Abort };
 enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20 };
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a

@@ -128,7 +128,7 @@ static_assert(countWords(kModeKeys) == kMaxModes, "MachineCmd::modes must hold e
 static const OpInfo kOps[] = {
     {OpKind::Block, "block", 0, 0, "", "n skip"},
     {OpKind::Comment, "comment", 0, 0, "text", ""},
-    {OpKind::Message, "message", 0, 0, "text", ""},
+    {OpKind::Message, "message", 0, 0, "text", "kind"},
     {OpKind::Mode, "mode", 0, 0, "", kModeOpKeys},
     {OpKind::Feed, "feed", 0, 0, "value", ""},
     {OpKind::Speed, "speed", 0, 0, "value", ""},

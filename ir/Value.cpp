@@ -10,6 +10,8 @@ std::string numberText(double v) {
   return fmt::format("{}", v);
 }
 
+std::string fixedNumberText(double v) { return fmt::format("{:.6f}", isVacant(v) ? 0.0 : v); }
+
 bool programName(double v, std::string &out) {
   v = num(v);
   if (!(v >= 0 && v < 1e15) || v != std::trunc(v)) return false;

@@ -73,6 +73,8 @@ inline double valueEq(double a, double b) {
 // text here: vacant is empty, integral values print without a decimal point (5, -12), others
 // with the shortest digits that read back as the same double (0.1, 2.5, 1e-07).
 std::string numberText(double v);
+// LinuxCNC's (DEBUG,…)/(PRINT,…)/(ABORT,…) substitution: "%f" (6 decimals); vacant reads 0.
+std::string fixedNumberText(double v);
 // A numeric callee is an ISO program number: n names the function "O<n>". False unless n is a
 // non-negative integer.
 bool programName(double v, std::string &out);

@@ -28,6 +28,7 @@ const EnumRule kEnumRules[] = {
     {OpKind::Coolant, "mist", "on off"},
     {OpKind::CutterComp, "side", "off left right"},
     {OpKind::CutterComp, "d_default", "modal tool"},
+    {OpKind::Message, "kind", "msg debug print abort"},
     {OpKind::SetOffset, "kind", "g92 g92_1 g10l2 g10l20"},
     {OpKind::Stop, "kind", "program optional end end_rewind"},
     {OpKind::Goto, "dir", "forward backward any"},

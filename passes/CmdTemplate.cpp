@@ -39,6 +39,10 @@ static const SymbolCode kSymbols[] = {
     {OpKind::SetOffset, "kind", "g92_1", (uint8_t)SetOffsetKind::G92Cancel},
     {OpKind::SetOffset, "kind", "g10l2", (uint8_t)SetOffsetKind::G10L2},
     {OpKind::SetOffset, "kind", "g10l20", (uint8_t)SetOffsetKind::G10L20},
+    {OpKind::Message, "kind", "msg", (uint8_t)MessageKind::Msg},
+    {OpKind::Message, "kind", "debug", (uint8_t)MessageKind::Debug},
+    {OpKind::Message, "kind", "print", (uint8_t)MessageKind::Print},
+    {OpKind::Message, "kind", "abort", (uint8_t)MessageKind::Abort},
     {OpKind::CutterComp, "d_default", "modal", 0},  // sub2: the radius without a D word
     {OpKind::CutterComp, "d_default", "tool", 1},
 };
@@ -138,6 +142,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   case OpKind::Comment:
   case OpKind::Message:
+    if (op.kind == OpKind::Message && !symbolArg("kind", c.sub)) return false;
     if (const Expr *e = op.get("text")) {
       if (e->kind == ExprKind::String) c.text = e->str.c_str();
       else out.text = e;  // evaluated at run time (the verifier allows this for messages only)
@@ -234,6 +239,7 @@ Op cmdToOp(const MachineCmd &c) {
   case CmdKind::Comment:
   case CmdKind::Message:
     op.set("text", Expr::string(c.text ? c.text : ""));
+    if (c.kind == CmdKind::Message && c.sub) op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub)));
     return op;
   case CmdKind::Mode:
     for (unsigned i = 0; i < c.nmodes; ++i) {

@@ -421,13 +421,13 @@ struct Evaluator::Impl {
     fail(e.loc, "bad expression");
   }
 
-  // A string expression's text; numeric operands as numberText (ir/Value.h).
-  void appendStr(Frame &fr, const Expr &e, std::string &out) {
+  // A string expression's text; numeric operands as numberText, or fixedNumberText (ir/Value.h).
+  void appendStr(Frame &fr, const Expr &e, std::string &out, bool fixed = false) {
     if (e.kind == ExprKind::String) out += e.str;
     else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
-      appendStr(fr, *e.args[0], out);
-      appendStr(fr, *e.args[1], out);
-    } else out += numberText(ev(fr, e));
+      appendStr(fr, *e.args[0], out, fixed);
+      appendStr(fr, *e.args[1], out, fixed);
+    } else out += fixed ? fixedNumberText(ev(fr, e)) : numberText(ev(fr, e));
   }
 
   // The function a callee expression names: a string, or a number meaning the program O<n>.
@@ -455,7 +455,7 @@ struct Evaluator::Impl {
     MachineCmd cmd = t.base;
     if (t.text) {
       text.clear();
-      appendStr(fr, *t.text, text);
+      appendStr(fr, *t.text, text, cmd.kind == CmdKind::Message && cmd.sub != (uint8_t)MessageKind::Msg);
       cmd.text = text.c_str();
     }
     for (const CmdSlot &s : t.slots) {

@@ -321,8 +321,15 @@ bool Executor::exec(const MachineCmd &c) {
     x.blockLoc = c.loc;
     x.feedInBlock = false;
     return true;
-  case CmdKind::Comment:
-  case CmdKind::Message: {
+  case CmdKind::Message:
+    if (c.sub == (uint8_t)MessageKind::Abort)  // LinuxCNC (ABORT,…): the run stops here
+      return x.error(c.text ? c.text : "", "abort");
+    if (c.sub == (uint8_t)MessageKind::Print) {  // LinuxCNC (PRINT,…): to stderr, not the trace
+      std::fprintf(stderr, "%s\n", c.text ? c.text : "");
+      return true;
+    }
+    [[fallthrough]];
+  case CmdKind::Comment: {
     MotionRecord r = x.record(c.kind == CmdKind::Comment ? RecordKind::Comment : RecordKind::Message);
     if (c.text) r.text = c.text;
     x.emit(r);

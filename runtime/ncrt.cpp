@@ -200,6 +200,7 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
 void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += numberText(v); }
+void ncrt_str_num_fixed(ncrt_ctx *ctx, double v) { ctx->text += fixedNumberText(v); }
 const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
 
 int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,

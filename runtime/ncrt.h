@@ -94,6 +94,7 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 void ncrt_str_clear(ncrt_ctx *ctx);
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
 void ncrt_str_num(ncrt_ctx *ctx, double v);
+void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
 /* A computed callee: the index in names[0..n) of the function named by the text buffer, or when
  * `numeric` by the program number `value` (O<n>). Reports the error at the loc and returns -1

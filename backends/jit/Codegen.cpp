@@ -69,6 +69,7 @@ void Codegen::declareRuntime() {
   fStrClear = decl("ncrt_str_clear", voidTy, {ptrTy});
   fStrCat = decl("ncrt_str_cat", voidTy, {ptrTy, ptrTy});
   fStrNum = decl("ncrt_str_num", voidTy, {ptrTy, dblTy});
+  fStrNumFixed = decl("ncrt_str_num_fixed", voidTy, {ptrTy, dblTy});
   fStr = decl("ncrt_str", ptrTy, {ptrTy});
   fCallee = decl("ncrt_callee", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty});
   // Pure arithmetic helpers: lets LLVM keep variables in registers across them.

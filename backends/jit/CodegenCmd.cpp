@@ -93,7 +93,10 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
     mask = B.CreateOr(mask, bit);
   }
   B.CreateStore(mask, B.CreateStructGEP(cmdTy, cmdSlot, 5));
-  if (t.text) B.CreateStore(stringValue(*t.text), B.CreateStructGEP(cmdTy, cmdSlot, 8));
+  if (t.text) {
+    bool fixed = t.base.kind == CmdKind::Message && t.base.sub != (uint8_t)MessageKind::Msg;
+    B.CreateStore(stringValue(*t.text, fixed), B.CreateStructGEP(cmdTy, cmdSlot, 8));
+  }
   checkStatus(B.CreateCall(fExec, {ctxArg, cmdSlot}));
 }
 

@@ -166,17 +166,17 @@ void Codegen::storeVar(const Expr &var, Value *value) {
 }
 
 // String expressions (ir/Value.h): the leaves are appended to the runtime's text buffer.
-void Codegen::appendString(const Expr &e) {
+void Codegen::appendString(const Expr &e, bool fixed) {
   if (e.kind == ExprKind::String) B.CreateCall(fStrCat, {ctxArg, cstring(e.str)});
   else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
-    appendString(*e.args[0]);
-    appendString(*e.args[1]);
-  } else B.CreateCall(fStrNum, {ctxArg, expr(e).v});
+    appendString(*e.args[0], fixed);
+    appendString(*e.args[1], fixed);
+  } else B.CreateCall(fixed ? fStrNumFixed : fStrNum, {ctxArg, expr(e).v});
 }
 
-Value *Codegen::stringValue(const Expr &e) {
+Value *Codegen::stringValue(const Expr &e, bool fixed) {
   B.CreateCall(fStrClear, {ctxArg});
-  appendString(e);
+  appendString(e, fixed);
   return B.CreateCall(fStr, {ctxArg});
 }
 

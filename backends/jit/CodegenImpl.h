@@ -93,8 +93,9 @@ private:
   llvm::Value *elemPtr(const ir::Expr &var, llvm::Value *base);
   llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
   Val loadVar(const ir::Expr &var);
-  llvm::Value *stringValue(const ir::Expr &e);  // builds a string expression; ptr to its text
-  void appendString(const ir::Expr &e);
+  // Builds a string expression; ptr to its text. fixed: numbers as fixedNumberText.
+  llvm::Value *stringValue(const ir::Expr &e, bool fixed = false);
+  void appendString(const ir::Expr &e, bool fixed);
   void storeVar(const ir::Expr &var, llvm::Value *value);
   // ------------------------------------------------ commands (CodegenCmd.cpp)
   void emitMachineOp(const ir::Op &op);
@@ -115,7 +116,7 @@ private:
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow;
-  llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStr, fCallee;
+  llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;

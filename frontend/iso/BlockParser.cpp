@@ -101,13 +101,24 @@ bool BlockParser::parseComment(ParsedBlock &out) {
   c.loc = locAt(open);
   size_t i = 0;
   while (i < text.size() && isBlank(text[i])) ++i;
-  if (text.size() - i >= 4 && equalsUpper(text.substr(i, 3), "MSG") && text[i + 3] == ',') {
+  // (MSG,text); RS274NGC also (DEBUG,text) (PRINT,text) (ABORT,text), whose #n / #<name> are
+  // replaced by the values when the block runs (Lower.cpp).
+  static const struct {
+    const char *word, *kind;
+    bool rs274;
+  } kMessages[] = {{"MSG", "msg", false}, {"DEBUG", "debug", true}, {"PRINT", "print", true}, {"ABORT", "abort", true}};
+  c.text = std::string(text);
+  for (auto &m : kMessages) {
+    size_t n = std::strlen(m.word);
+    if ((m.rs274 && flavour_ != Flavour::RS274) || text.size() - i < n + 1 ||
+        !equalsUpper(text.substr(i, n), m.word) || text[i + n] != ',')
+      continue;
     c.message = true;
-    i += 4;
+    c.kind = m.kind;
+    i += n + 1;
     while (i < text.size() && isBlank(text[i])) ++i;
     c.text = std::string(text.substr(i));
-  } else {
-    c.text = std::string(text);
+    break;
   }
   out.comments.push_back(std::move(c));
   return true;

@@ -1,6 +1,7 @@
 #include "frontend/iso/Lower.h"
 #include "ir/MachineCmd.h"
 
+#include <cctype>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -63,10 +64,45 @@ Op BlockLowerer::blockOp(const ParsedBlock &b) const {
   return op;
 }
 
+// LinuxCNC's parameter substitution in DEBUG/PRINT/ABORT texts: `#123` and `#<name>` become
+// the parameter's value (a `concat` the engines format at run time); the rest stays text.
+static ExprPtr substituted(const std::string &text, SourceLoc loc) {
+  ExprPtr out;
+  std::string lit;
+  auto append = [&](ExprPtr e) { out = out ? Expr::binary(ir::OpCode::Concat, std::move(out), std::move(e), loc) : std::move(e); };
+  auto flush = [&] {
+    if (!lit.empty()) append(Expr::string(lit, loc));
+    lit.clear();
+  };
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '#' && i + 1 < text.size() && std::isdigit((unsigned char)text[i + 1])) {
+      size_t j = i + 1;
+      while (j < text.size() && std::isdigit((unsigned char)text[j])) ++j;
+      flush();
+      append(Expr::var(ir::VarSpace::Numbered, "", Expr::number(std::stod(text.substr(i + 1, j - i - 1)), ir::Type::Int, loc), loc));
+      i = j - 1;
+    } else if (text[i] == '#' && i + 1 < text.size() && text[i + 1] == '<' && text.find('>', i) != std::string::npos) {
+      size_t close = text.find('>', i);
+      std::string name;
+      for (size_t k = i + 2; k < close; ++k)
+        if (text[k] != ' ' && text[k] != '\t') name.push_back((char)std::tolower((unsigned char)text[k]));
+      flush();
+      append(Expr::var(!name.empty() && name[0] == '_' ? ir::VarSpace::Global : ir::VarSpace::Local, name, nullptr, loc));
+      i = close;
+    } else {
+      lit.push_back(text[i]);
+    }
+  }
+  flush();
+  return out ? std::move(out) : Expr::string("", loc);
+}
+
 void BlockLowerer::lowerComments(const ParsedBlock &b, Region &out) {
   for (auto &c : b.comments) {
     Op op(c.message ? OpKind::Message : OpKind::Comment, c.loc);
-    op.set("text", Expr::string(c.text, c.loc));
+    bool substitutes = c.message && std::string_view(c.kind) != "msg";
+    op.set("text", substitutes ? substituted(c.text, c.loc) : Expr::string(c.text, c.loc));
+    if (substitutes) op.set("kind", Expr::symbol(c.kind, c.loc));
     out.push_back(std::move(op));
   }
 }

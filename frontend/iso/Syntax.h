@@ -29,7 +29,8 @@ struct IsoWord {
 struct IsoComment {
   std::string text;
   SourceLoc loc;
-  bool message = false;    // (MSG, text)
+  bool message = false;    // (MSG, text), or a LinuxCNC DEBUG / PRINT / ABORT (kind)
+  const char *kind = "msg";  // the message op's kind: msg, debug, print, abort
 };
 
 struct IsoAssign {
