@@ -4,6 +4,7 @@
 // well-formed module (null expressions, bad kinds are reported, not dereferenced).
 #include "ir/Builtins.h"
 #include "ir/ModeTable.h"
+#include "ir/SystemVars.h"
 #include "ir/NCIR.h"
 #include "ir/Value.h"
 
@@ -306,6 +307,10 @@ private:
         break;
       case Ctx::Var:
         if (v->kind != ExprKind::Var) break;  // reported by kVarRules
+        if (v->space == VarSpace::System) {  // controller state: read-only
+          error(op.loc, fmt::format("{}: system variable '{}' is read-only", where, v->str));
+          break;
+        }
         if (variable(*v, op.loc, where) && !v->args.empty() && v->args[0]) numericExpr(*v->args[0], op.loc, where);
         break;
       case Ctx::Symbol: break;  // checked by kEnumRules / checkModes
@@ -402,7 +407,9 @@ private:
   }
 
   bool variable(const Expr &e, SourceLoc l, const std::string &where) {
-    if (e.space == VarSpace::System) error(l, fmt::format("{}: system variable '${}' is not supported yet", where, e.str));
+    SysVar sv;
+    if (e.space == VarSpace::System && !sysVarFromName(e.str, sv))
+      error(l, fmt::format("{}: system variable '${}' is not supported yet", where, e.str));
     else if (e.space == VarSpace::QParam && e.str == "QS") error(l, where + ": QS string parameters are not supported yet");
     else return true;
     return false;

@@ -18,6 +18,7 @@ namespace ncc {
 using namespace ir;
 
 bool ExecutorSink::exec(const MachineCmd &cmd) { return exec_.exec(cmd); }
+bool ExecutorSink::readSystem(SysVar v, double &out) { return exec_.readSystem(v, out); }
 
 namespace {
 
@@ -364,9 +365,11 @@ struct Evaluator::Impl {
     }
     case VarSpace::System: {
       if (write) fail(v.loc, fmt::format("system variable '{}' cannot be assigned", v.str));
-      static double vac;
-      vac = vacantValue();
-      return vac;
+      static double value;
+      SysVar sv;
+      if (!sysVarFromName(v.str, sv) || !sink.readSystem(sv, value))
+        fail(v.loc, fmt::format("system variable '{}' is not available here", v.str));
+      return value;
     }
     }
     fail(v.loc, "bad variable");

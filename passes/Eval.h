@@ -6,6 +6,7 @@
 #pragma once
 #include "ir/MachineCmd.h"
 #include "ir/NCIR.h"
+#include "ir/SystemVars.h"
 #include "passes/ExecLimits.h"
 
 #include <memory>
@@ -19,6 +20,8 @@ public:
   virtual ~CmdSink() = default;
   // Returns false to stop the program (the sink has reported why).
   virtual bool exec(const MachineCmd &cmd) = 0;
+  // A system variable's current value (ir/SystemVars.h); false when this sink has none.
+  virtual bool readSystem(SysVar v, double &out) { return false; }
 };
 
 // Forwards commands to an Executor.
@@ -26,6 +29,7 @@ class ExecutorSink : public CmdSink {
 public:
   explicit ExecutorSink(Executor &e) : exec_(e) {}
   bool exec(const MachineCmd &cmd) override;
+  bool readSystem(SysVar v, double &out) override;
 
 private:
   Executor &exec_;

@@ -430,6 +430,82 @@ bool Executor::exec(const MachineCmd &c) {
   }
 }
 
+bool Executor::readSystem(SysVar v, double &out) const {
+  const Impl &x = *impl_;
+  const ModalState &st = x.st;
+  auto is = [&](bool b) { return b ? 1.0 : 0.0; };
+  // G code x 10 of a mode value, as LinuxCNC reports modes (_motion_mode 800 = G80).
+  auto code10 = [](ModeValue m) -> double {
+    static const struct { ModeValue m; int code; } kCodes[] = {
+        {ModeValue::Rapid, 0},         {ModeValue::Linear, 10},      {ModeValue::ArcCW, 20},
+        {ModeValue::ArcCCW, 30},       {ModeValue::CycleOff, 800},   {ModeValue::PeckChipBreak, 730},
+        {ModeValue::TapLeft, 740},     {ModeValue::BoreFine, 760},   {ModeValue::Drill, 810},
+        {ModeValue::DrillDwell, 820},  {ModeValue::Peck, 830},       {ModeValue::Tap, 840},
+        {ModeValue::BoreFeed, 850},    {ModeValue::BoreStop, 860},   {ModeValue::BoreBack, 870},
+        {ModeValue::BoreDwell, 890},   {ModeValue::XY, 170},         {ModeValue::ZX, 180},
+        {ModeValue::YZ, 190}};
+    for (auto &c : kCodes)
+      if (c.m == m) return c.code;
+    return -1;
+  };
+  static const double kCoordSystems[] = {540, 550, 560, 570, 580, 590, 591, 592, 593};
+  int axis = -1;
+  switch (v) {
+  case SysVar::VersionMajor: out = 2.9; return true;  // the LinuxCNC interpreter ncc follows
+  case SysVar::VersionMinor: out = 0; return true;
+  case SysVar::Line: out = x.blockLoc.line; return true;
+  case SysVar::MotionMode: out = code10(st.motion); return true;
+  case SysVar::Plane: out = code10(st.plane); return true;
+  case SysVar::CutterComp: out = 400 + 10 * st.cutterComp; return true;
+  case SysVar::Metric: out = is(st.units == ModeValue::MM); return true;
+  case SysVar::Imperial: out = is(st.units == ModeValue::Inch); return true;
+  case SysVar::Absolute: out = is(st.distance == ModeValue::Absolute); return true;
+  case SysVar::Incremental: out = is(st.distance == ModeValue::Incremental); return true;
+  case SysVar::InverseTime: out = is(st.feedMode == ModeValue::InverseTime); return true;
+  case SysVar::UnitsPerMinute: out = is(st.feedMode == ModeValue::PerMinute); return true;
+  case SysVar::UnitsPerRev: out = is(st.feedMode == ModeValue::PerRev); return true;
+  case SysVar::CoordSystem: out = kCoordSystems[st.workOffset - 1]; return true;
+  case SysVar::ToolOffset: out = is(st.toolLengthH != 0); return true;
+  case SysVar::RetractR: out = is(st.retract == ModeValue::RetractR); return true;
+  case SysVar::RetractOldZ: out = is(st.retract == ModeValue::RetractInitial); return true;
+  case SysVar::SpindleRpmMode: out = 1; return true;  // constant surface speed is not modelled
+  case SysVar::SpindleCssMode: out = 0; return true;
+  case SysVar::IjkAbsolute: out = is(st.arcDistance == ModeValue::ArcAbsolute); return true;
+  case SysVar::LatheDiameter: out = 0; return true;
+  case SysVar::LatheRadius: out = 1; return true;
+  case SysVar::SpindleOn: out = is(st.spindle != 0); return true;
+  case SysVar::SpindleCw: out = is(st.spindle == 1); return true;
+  case SysVar::Mist: out = is(st.mist); return true;
+  case SysVar::Flood: out = is(st.flood); return true;
+  case SysVar::SpeedOverride:
+  case SysVar::FeedOverride:
+  case SysVar::FeedHold: out = 1; return true;  // enabled, as in rs274's stand-alone set-up
+  case SysVar::AdaptiveFeed: out = 0; return true;
+  case SysVar::Feed: out = st.feed; return true;
+  case SysVar::Rpm: out = st.speed; return true;
+  case SysVar::PosX: axis = 0; break;
+  case SysVar::PosY: axis = 1; break;
+  case SysVar::PosZ: axis = 2; break;
+  case SysVar::PosA: axis = 3; break;
+  case SysVar::PosB: axis = 4; break;
+  case SysVar::PosC: axis = 5; break;
+  case SysVar::PosU:
+  case SysVar::PosV:
+  case SysVar::PosW: out = 0; return true;  // no U V W axes
+  case SysVar::CurrentTool:
+  case SysVar::CurrentPocket: out = st.toolInSpindle; return true;  // pocket = tool number here
+  case SysVar::SelectedTool:
+  case SysVar::SelectedPocket: out = st.toolSelected; return true;
+  case SysVar::RemapLevel:
+  case SysVar::Task: out = 0; return true;
+  case SysVar::Count: return false;
+  }
+  // Positions: program coordinates (all offsets applied), in program units.
+  AxisVec f = x.frameIn(st.position);
+  out = (f[axis] - x.frameOffset(axis)) / x.axisScale(axis);
+  return true;
+}
+
 bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
   x.comp.stop();

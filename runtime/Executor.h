@@ -5,6 +5,7 @@
 #pragma once
 #include "ir/MachineCmd.h"
 #include "ir/MotionIR.h"
+#include "ir/SystemVars.h"
 #include "runtime/Machine.h"
 
 namespace ncc {
@@ -40,6 +41,8 @@ public:
   // Flushes pending state at program end; returns false on error. ranToEnd: the program ran
   // to its end (not stopped by an error), so a missing M2/M30 is worth a warning.
   bool finish(bool ranToEnd = true);
+  // The value of a system variable (ir/SystemVars.h) in the current state.
+  bool readSystem(SysVar v, double &out) const;
   const ModalState &state() const;
   // Source blocks executed so far (a block in a loop counts each time it runs).
   uint64_t blockCount() const;

@@ -3,6 +3,7 @@
 
 #include "ir/Arith.h"
 #include "ir/Diagnostics.h"
+#include "ir/SystemVars.h"
 
 #include <fmt/format.h>
 
@@ -183,6 +184,7 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
   case NCRT_FAULT_INDEX: msg = arrayIndexMessage(name, value); break;
   case NCRT_FAULT_UNSET_ELEM: msg = unsetElementMessage(name, value); break;
   case NCRT_FAULT_QPARAM: msg = fmt::format("Q parameter index {} out of range", std::lround(value)); break;
+  case NCRT_FAULT_SYSVAR: msg = fmt::format("system variable '{}' is not available here", name); break;
   default: msg = "internal error: unknown run-time fault"; break;
   }
   ctx->diags.error({file, line, col}, msg);
@@ -195,6 +197,11 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   ctx->diags.error({file, line, col},
                    fmt::format("run time limit of {} s exceeded (limit --max-seconds)", ctx->limits.maxSeconds));
   return NCRT_ERROR;
+}
+
+double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id) {
+  double v;
+  return id < (uint32_t)SysVar::Count && ctx->sink.readSystem((SysVar)id, v) ? v : unsetValue();
 }
 
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }

@@ -42,7 +42,8 @@ enum {
   NCRT_FAULT_RPARAM = 6,        /* R parameter index lround(value) out of range */
   NCRT_FAULT_QPARAM = 7,        /* Q parameter index lround(value) out of range */
   NCRT_FAULT_INDEX = 8,         /* index value of array 'name' is not an integer in 0..N */
-  NCRT_FAULT_UNSET_ELEM = 9     /* array element 'name[value]' used before assignment */
+  NCRT_FAULT_UNSET_ELEM = 9,    /* array element 'name[value]' used before assignment */
+  NCRT_FAULT_SYSVAR = 10        /* system variable 'name' is not available here */
 };
 
 /* Variable storage and limits, laid out for direct access from generated code. Numbered slots
@@ -94,6 +95,8 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 void ncrt_str_clear(ncrt_ctx *ctx);
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
 void ncrt_str_num(ncrt_ctx *ctx, double v);
+/* A system variable (ncc::SysVar id) from the sink; the unset bits when it has none. */
+double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
 /* A computed callee: the index in names[0..n) of the function named by the text buffer, or when

@@ -4,6 +4,7 @@
 
 #include "ir/Value.h"
 #include "ir/Builtins.h"
+#include "ir/SystemVars.h"
 #include "runtime/ncrt.h"
 
 #include <llvm/IR/Intrinsics.h>
@@ -147,7 +148,14 @@ Value *Codegen::varPtr(const Expr &var, bool write) {
 }
 
 Val Codegen::loadVar(const Expr &var) {
-  if (var.space == VarSpace::System) return {ConstantFP::get(dblTy, vacantValue()), true};
+  if (var.space == VarSpace::System) {  // asked of the executor when the program runs
+    SysVar sv = SysVar::Count;
+    sysVarFromName(var.str, sv);
+    Value *v = B.CreateCall(fSysVar, {ctxArg, B.getInt32((uint32_t)sv)});
+    Value *none = B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
+    faultIf(none, var.loc, NCRT_FAULT_SYSVAR, var.str, nullptr);
+    return {v, false};
+  }
   Value *v = B.CreateLoad(dblTy, varPtr(var, false));
   if (var.space == VarSpace::Local || var.space == VarSpace::Global) {
     Value *unset = B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));

@@ -5,6 +5,8 @@
 #include "ir/Builtins.h"
 
 #include <charconv>
+#include "ir/SystemVars.h"
+
 #include <cstring>
 
 namespace ncc::iso {
@@ -116,7 +118,8 @@ bool BlockParser::parseComment(ParsedBlock &out) {
     c.message = true;
     c.kind = m.kind;
     i += n + 1;
-    while (i < text.size() && isBlank(text[i])) ++i;
+    if (flavour_ != Flavour::RS274)  // rs274 keeps the blanks after the comma
+      while (i < text.size() && isBlank(text[i])) ++i;
     c.text = std::string(text.substr(i));
     break;
   }
@@ -404,6 +407,15 @@ bool BlockParser::parseItems(ParsedBlock &out) {
   return true;
 }
 
+ir::ExprPtr namedParameter(std::string name, SourceLoc loc) {
+  // LinuxCNC's predefined parameters (#<_metric>, #<_x>, …) are controller state.
+  SysVar sv;
+  auto space = sysVarFromName(name, sv) ? ir::VarSpace::System
+               : name[0] == '_'         ? ir::VarSpace::Global
+                                        : ir::VarSpace::Local;
+  return Expr::var(space, std::move(name), nullptr, loc);
+}
+
 bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out) {
   out.clear();
   begin_ = p_ = line.data();
@@ -616,8 +628,7 @@ ExprPtr BlockParser::parseVariable() {
       return nullptr;
     }
     ++p_;
-    auto space = name[0] == '_' ? ir::VarSpace::Global : ir::VarSpace::Local;
-    return Expr::var(space, std::move(name), nullptr, locAt(at));
+    return namedParameter(std::move(name), locAt(at));
   }
   fail(p_, "'#' needs a variable number");
   return nullptr;

@@ -87,7 +87,7 @@ static ExprPtr substituted(const std::string &text, SourceLoc loc) {
       for (size_t k = i + 2; k < close; ++k)
         if (text[k] != ' ' && text[k] != '\t') name.push_back((char)std::tolower((unsigned char)text[k]));
       flush();
-      append(Expr::var(!name.empty() && name[0] == '_' ? ir::VarSpace::Global : ir::VarSpace::Local, name, nullptr, loc));
+      append(namedParameter(name, loc));
       i = close;
     } else {
       lit.push_back(text[i]);

@@ -94,6 +94,10 @@ struct ParsedBlock {
   }
 };
 
+// `#<name>` (name lower case, blanks removed): a predefined LinuxCNC parameter (System), a
+// global `_name`, or a local.
+ir::ExprPtr namedParameter(std::string name, SourceLoc loc);
+
 // Turns one line into a ParsedBlock. Reports syntax errors and returns false (the block is then
 // dropped by the caller).
 class BlockParser {

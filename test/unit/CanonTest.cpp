@@ -59,7 +59,7 @@ Machine oracleMachine() {
 TEST(OracleMachine, ToolsMatchToolsTxt) {
   Machine m = oracleMachine();
   auto tools = toolsTxt();
-  ASSERT_EQ(tools.size(), 3u);
+  ASSERT_EQ(tools.size(), 7u);
   ASSERT_EQ(m.tools.size(), tools.size());
   for (auto &[n, td] : tools) {
     ASSERT_TRUE(m.tools.count(n)) << "T" << n;

@@ -28,6 +28,7 @@ public:
     exec_.exec(c);
     return true;
   }
+  bool readSystem(SysVar v, double &out) override { return exec_.readSystem(v, out); }
 
 private:
   Executor &exec_;
