@@ -32,6 +32,9 @@ double ncc_builtin_exp(const double *a) { return std::exp(num(a[0])); }
 double ncc_builtin_pow(const double *a) { return std::pow(num(a[0]), num(a[1])); }
 double ncc_builtin_min(const double *a) { return std::fmin(num(a[0]), num(a[1])); }
 double ncc_builtin_max(const double *a) { return std::fmax(num(a[0]), num(a[1])); }
+// EXISTS[#<name>] (RS274NGC) asks whether a variable has a value: both engines answer it from
+// their variable storage (isExistsCall), never through this function.
+double ncc_builtin_exists(const double *) { return 1.0; }
 }
 
 static const BuiltinInfo kBuiltins[] = {
@@ -44,6 +47,7 @@ static const BuiltinInfo kBuiltins[] = {
     {"TRUNC", 1, ncc_builtin_trunc, "ncc_builtin_trunc"}, {"LN", 1, ncc_builtin_ln, "ncc_builtin_ln"},
     {"EXP", 1, ncc_builtin_exp, "ncc_builtin_exp"},       {"POT", 2, ncc_builtin_pow, "ncc_builtin_pow"},
     {"MINVAL", 2, ncc_builtin_min, "ncc_builtin_min"},    {"MAXVAL", 2, ncc_builtin_max, "ncc_builtin_max"},
+    {"EXISTS", 1, ncc_builtin_exists, "ncc_builtin_exists"},
 };
 
 const BuiltinInfo *builtinTable(unsigned &count) {

@@ -18,5 +18,8 @@ struct BuiltinInfo {
 // Returns null for an unknown name (the name is compared case-insensitively).
 const BuiltinInfo *findBuiltin(std::string_view name);
 const BuiltinInfo *builtinTable(unsigned &count);
+// EXISTS[var]: 1 when the variable has a value (a named variable that was assigned; numbered,
+// R, Q and known system variables always), else 0. The engines evaluate it themselves.
+inline bool isExistsCall(std::string_view name, size_t args) { return args == 1 && name == "EXISTS"; }
 
 }  // namespace ncc

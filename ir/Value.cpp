@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cstring>
+
 namespace ncc {
 
 std::string numberText(double v) {
@@ -10,7 +12,22 @@ std::string numberText(double v) {
   return fmt::format("{}", v);
 }
 
-std::string fixedNumberText(double v) { return fmt::format("{:.6f}", isVacant(v) ? 0.0 : v); }
+std::string fixedNumberText(double v) {
+  if (isUnset(v)) return "######";
+  return fmt::format("{:.6f}", isVacant(v) ? 0.0 : v);
+}
+
+double unsetValue() {
+  double d;
+  std::memcpy(&d, &kUnsetBits, sizeof d);
+  return d;
+}
+
+bool isUnset(double v) {
+  uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b == kUnsetBits;
+}
 
 bool programName(double v, std::string &out) {
   v = num(v);

@@ -73,8 +73,15 @@ inline double valueEq(double a, double b) {
 // text here: vacant is empty, integral values print without a decimal point (5, -12), others
 // with the shortest digits that read back as the same double (0.1, 2.5, 1e-07).
 std::string numberText(double v);
-// LinuxCNC's (DEBUG,…)/(PRINT,…)/(ABORT,…) substitution: "%f" (6 decimals); vacant reads 0.
+// LinuxCNC's (DEBUG,…)/(PRINT,…)/(ABORT,…) substitution: "%f" (6 decimals); vacant reads 0,
+// an unset named parameter "######" (as rs274 prints it).
 std::string fixedNumberText(double v);
+
+// A named variable that was never assigned holds this NaN: reading it is an error (unlike
+// Macro B's vacant). Generated code uses the same bits (runtime/ncrt.h NCRT_UNSET_BITS).
+constexpr uint64_t kUnsetBits = 0x7ff8dead0000f00dull;
+double unsetValue();
+bool isUnset(double v);
 // A numeric callee is an ISO program number: n names the function "O<n>". False unless n is a
 // non-negative integer.
 bool programName(double v, std::string &out);

@@ -22,18 +22,6 @@ bool ExecutorSink::readSystem(SysVar v, double &out) { return exec_.readSystem(v
 
 namespace {
 
-// A named local that was never assigned: reading it is an error (unlike Macro B's vacant).
-constexpr uint64_t kUnsetBits = 0x7ff8dead0000f00dull;
-double unsetValue() {
-  double d;
-  std::memcpy(&d, &kUnsetBits, sizeof d);
-  return d;
-}
-bool isUnset(double v) {
-  uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b == kUnsetBits;
-}
 
 struct EvalError {
   SourceLoc loc;
@@ -332,6 +320,21 @@ struct Evaluator::Impl {
     return a[i];
   }
 
+  // EXISTS: a named variable exists once assigned (in this frame, for locals).
+  bool exists(Frame &fr, const Expr &v) {
+    if (v.kind != ExprKind::Var || !v.args.empty()) return true;
+    if (v.space == VarSpace::Local) {
+      auto &names = *curFn->names;
+      auto it = names.find(v.str);
+      return it != names.end() && it->second < fr.named.size() && !isUnset(fr.named[it->second]);
+    }
+    if (v.space == VarSpace::Global) {
+      auto it = globalNames.find(v.str);
+      return it != globalNames.end() && !isUnset(globalNamed[it->second]);
+    }
+    return true;
+  }
+
   double &varRef(Frame &fr, CompiledFn &cf, const Expr &v, bool write) {
     if (!v.args.empty() && v.space == VarSpace::Local) return elemRef(fr.arrays, fr, v);
     if (!v.args.empty() && v.space == VarSpace::Global) return elemRef(globalArrays, fr, v);
@@ -410,6 +413,7 @@ struct Evaluator::Impl {
       return r;
     }
     case ExprKind::Call: {
+      if (isExistsCall(e.str, e.args.size()) && e.args[0]) return exists(fr, *e.args[0]) ? 1.0 : 0.0;
       const BuiltinInfo *b = findBuiltin(e.str);
       if (!b) fail(e.loc, fmt::format("unknown function '{}'", e.str));
       if (b->arity != e.args.size())
@@ -430,6 +434,8 @@ struct Evaluator::Impl {
     else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
       appendStr(fr, *e.args[0], out, fixed);
       appendStr(fr, *e.args[1], out, fixed);
+    } else if (fixed && !exists(fr, e)) {
+      out += fixedNumberText(unsetValue());  // LinuxCNC prints an unknown parameter as ######
     } else out += fixed ? fixedNumberText(ev(fr, e)) : numberText(ev(fr, e));
   }
 

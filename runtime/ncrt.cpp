@@ -16,12 +16,7 @@ using namespace ncc;
 ncrt_ctx::ncrt_ctx(CmdSink &t, Diagnostics &d, const ExecLimits &l)
     : sink(t), diags(d), limits(l), start(std::chrono::steady_clock::now()) {}
 
-static double unsetValue() {
-  uint64_t bits = NCRT_UNSET_BITS;
-  double d;
-  std::memcpy(&d, &bits, sizeof d);
-  return d;
-}
+static_assert(NCRT_UNSET_BITS == kUnsetBits, "generated code and ir/Value.h must agree on 'unset'");
 
 static bool endsProgram(const MachineCmd &c) {
   return c.kind == CmdKind::Stop &&

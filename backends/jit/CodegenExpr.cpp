@@ -179,6 +179,10 @@ void Codegen::appendString(const Expr &e, bool fixed) {
   else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
     appendString(*e.args[0], fixed);
     appendString(*e.args[1], fixed);
+  } else if (fixed && e.kind == ExprKind::Var && e.args.empty() &&
+             (e.space == VarSpace::Local || e.space == VarSpace::Global)) {
+    // LinuxCNC prints an unset named parameter as ###### (fixedNumberText): the raw slot.
+    B.CreateCall(fStrNumFixed, {ctxArg, B.CreateLoad(dblTy, varPtr(e, false))});
   } else B.CreateCall(fixed ? fStrNumFixed : fStrNum, {ctxArg, expr(e).v});
 }
 
@@ -262,6 +266,15 @@ Val Codegen::binary(const Expr &e) {
 
 // Builtins get num() arguments; a NaN result is the eval engine's domain error.
 Val Codegen::callBuiltin(const Expr &e) {
+  if (isExistsCall(e.str, e.args.size()) && e.args[0]) {
+    // A named scalar exists when its slot is not unset; everything else always has a value.
+    const Expr &v = *e.args[0];
+    if (v.kind != ExprKind::Var || !v.args.empty() || (v.space != VarSpace::Local && v.space != VarSpace::Global))
+      return {ConstantFP::get(dblTy, 1.0), false};
+    Value *raw = B.CreateLoad(dblTy, varPtr(v, false));
+    Value *set = B.CreateICmpNE(B.CreateBitCast(raw, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
+    return {toDouble(set), false};
+  }
   const BuiltinInfo *bi = findBuiltin(e.str);
   if (!bi) {
     fail(e.loc, fmt::format("unknown function '{}'", e.str));

@@ -7,6 +7,7 @@
 #include <charconv>
 #include "ir/SystemVars.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace ncc::iso {
@@ -284,6 +285,11 @@ bool BlockParser::parseOWord(ParsedBlock &out, const char *at) {
     numeric = true;
     while (p_ < end_ && isDigit(*p_)) out.oname.push_back(*p_++);
     if (out.oname.size() > 12) return fail(at, "program number too long");
+  } else if (p_ < end_ && (*p_ == '[' || *p_ == '#') && flavour_ == Flavour::RS274) {
+    // A computed o-word number (rs274): only `call` may use one (the sub must exist by number).
+    if (*p_ == '[') out.ocomputed = parseBracket();
+    else out.ocomputed = parseVariable();
+    if (!out.ocomputed) return false;
   } else {
     return fail(p_, "O needs a program number");
   }
@@ -303,6 +309,8 @@ bool BlockParser::parseOWord(ParsedBlock &out, const char *at) {
       found = true;
     }
   if (!found) return fail(k, "unknown O-word keyword '" + std::string(kw) + "'", "unknown-code");
+  if (out.ocomputed && out.okw != OKeyword::Call)
+    return fail(at, "a computed o-word number can only be called (o[...] call)", "syntax");
   out.stmt = StmtKind::OWord;
   out.stmtLoc = locAt(at);
   skipBlanks();
@@ -318,7 +326,12 @@ bool BlockParser::parseOWord(ParsedBlock &out, const char *at) {
     }
     return true;
   case OKeyword::Call:
-    while (p_ < end_ && *p_ == '[') {
+    while (p_ < end_ && (*p_ == '[' || *p_ == '(')) {
+      if (*p_ == '(') {  // comments may stand between the arguments
+        if (!parseComment(out)) return false;
+        skipBlanks();
+        continue;
+      }
       auto a = parseBracket();
       if (!a) return false;
       out.oargs.push_back(std::move(a));
@@ -363,6 +376,16 @@ bool BlockParser::parseItems(ParsedBlock &out) {
       if (!parseAssign(out)) return false;
       continue;
     }
+    if (c == '$' && flavour_ == Flavour::RS274) {  // spindle selection: ncc has one spindle
+      ++p_;
+      IsoWord w;
+      w.letter = '$';
+      w.loc = locAt(at);
+      if (!parseWordValue(w)) return false;
+      if (w.expr || (w.value != 0 && w.value != -1))
+        return fail(at, "spindle selection $n: the machine has one spindle ($0; $-1 = all)", "unsupported-code");
+      continue;  // $0 and $-1 name the one spindle
+    }
     if ((c == '@' || c == '^') && flavour_ == Flavour::RS274) {  // polar radius / angle
       ++p_;
       IsoWord w;
@@ -385,7 +408,10 @@ bool BlockParser::parseItems(ParsedBlock &out) {
       double v;
       bool pt, any;
       if (!readNumber(v, pt, any)) return failed_ ? false : fail(p_, "N needs a block number");
-      if (pt || v > 1e15) return fail(at, "block number must be an integer below 10^15");
+      // rs274 reads N1.5 (the number only labels the block); Fanuc block numbers are integers.
+      if ((pt && flavour_ != Flavour::RS274) || v > 1e15)
+        return fail(at, "block number must be an integer below 10^15");
+      if (pt) v = std::floor(v);
       if (out.n >= 0) return fail(at, "two N words in one block", "duplicate-word");
       out.n = (int64_t)v;
       continue;
@@ -637,7 +663,7 @@ ExprPtr BlockParser::parseVariable() {
 ExprPtr BlockParser::parseFunction(std::string name, const char *at) {
   static const char *kAllowed[] = {"SIN", "COS",  "TAN", "ASIN",  "ACOS", "ATAN", "SQRT",
                                    "ABS", "ROUND", "FIX", "FUP",  "LN",   "EXP"};
-  bool ok = false;
+  bool ok = name == "EXISTS" && flavour_ == Flavour::RS274;  // RS274NGC EXISTS[#<name>]
   for (auto *n : kAllowed) ok |= name == n;
   if (!ok || !findBuiltin(name)) {
     fail(at, "unknown function '" + name + "'", "unknown-code");
@@ -674,6 +700,10 @@ ExprPtr BlockParser::parseFunction(std::string name, const char *at) {
   }
   --depth_;
   if (args.empty()) return nullptr;
+  if (name == "EXISTS" && args[0]->kind != ir::ExprKind::Var) {
+    fail(at, "EXISTS needs a parameter: EXISTS[#<name>]", "syntax");
+    return nullptr;
+  }
   if (name == "ATAN" && args.size() == 1) {  // ATAN[y]/[x] is the two-argument arc tangent
     const char *save = p_;
     skipBlanks();

@@ -592,6 +592,16 @@ bool BlockLowerer::Block::callsAndReturn() {
       L.diags_.error(loc, "M98 needs the whole program (not streamable)", "not-streamable");
       return false;
     }
+    if (IsoWord *p = bw.get('P'); p && p->expr) {
+      // M98 P#1 / P[expr]: a computed program number, found when the call runs (a number n
+      // calls O<n>; the count comes from L only).
+      bw.used |= Words::bit('P');
+      Op &op = emit(OpKind::Call, loc);
+      op.set("callee", p->expr->clone());
+      op.set("count", bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc));
+      op.set("frame", Expr::symbol("shared", loc));
+      return true;
+    }
     long long prog;
     if (!programNumber(loc, "M98", prog)) return false;
     ExprPtr count;

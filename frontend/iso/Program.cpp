@@ -248,12 +248,13 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
   }
   case OKeyword::Call: {
     head();
-    std::string callee = oFunctionName(b.oname);
-    lower.calls.push_back({callee, loc});
+    std::string callee = b.ocomputed ? std::string() : oFunctionName(b.oname);
+    if (!b.ocomputed) lower.calls.push_back({callee, loc});
     // rs274: #<_value_returned> is 0 after a call whose sub returned no value.
     region().push_back(valueAssign("_value_returned", Expr::number(0, ir::Type::Int, loc), loc));
     Op op(OpKind::Call, loc);
-    op.set("callee", Expr::string(callee, loc));
+    // A computed number n calls the sub `o<n>` (function O<n>), found when the call runs.
+    op.set("callee", b.ocomputed ? std::move(b.ocomputed) : Expr::string(callee, loc));
     op.set("frame", Expr::symbol("new", loc));
     for (size_t i = 0; i < b.oargs.size(); ++i) op.set(fmt::format("a.{}", i + 1), std::move(b.oargs[i]));
     region().push_back(std::move(op));
@@ -373,12 +374,18 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
   ParsedBlock b;
   const char *p = text.data(), *end = p + text.size();
   uint32_t lineNo = 0;
+  bool afterEnd = false;  // RS274NGC: the main program's M2/M30 has been read
   while (p < end) {
     const char *nl = static_cast<const char *>(std::memchr(p, '\n', (size_t)(end - p)));
     const char *le = nl ? nl : end;
     ++lineNo;
     std::string_view line(p, (size_t)(le - p));
     p = nl ? nl + 1 : end;
+    // rs274 never reads past M2/M30 except to find a called sub: only o-word lines matter there.
+    if (afterEnd && subStack_.empty()) {
+      size_t i = line.find_first_not_of(" \t\r");
+      if (i == std::string_view::npos || (line[i] != 'o' && line[i] != 'O')) continue;
+    }
     if (!parser.parse(line, fileId, lineNo, b)) {
       ok_ = false;
       continue;
@@ -411,6 +418,9 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
     if (ended_) continue;  // text after the closing '%' is not part of the program
     if (!b.words.empty() || !b.assigns.empty() || b.stmt != StmtKind::None) sectionContent_ = true;
     statement(b, lower);
+    if (flavour == Flavour::RS274 && fn_ == 0 && subStack_.empty() && stack_.empty())
+      for (auto &w : b.words)
+        if (w.letter == 'M' && !w.expr && (w.value == 2 || w.value == 30)) afterEnd = true;
   }
   closeOpen(0);
   if (!subStack_.empty()) {

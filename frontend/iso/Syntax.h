@@ -73,6 +73,7 @@ struct ParsedBlock {
   int loopId = 0;            // DO / END id
   OKeyword okw = OKeyword::Sub;
   std::string oname;         // O-word name: "100" or "name"
+  ir::ExprPtr ocomputed;     // computed O-word number: O[#2*10] call, O#1 call
   std::vector<ir::ExprPtr> oargs;  // o<n> call [a] [b]
 
   void clear() {
@@ -90,6 +91,7 @@ struct ParsedBlock {
     target.reset();
     loopId = 0;
     oname.clear();
+    ocomputed.reset();
     oargs.clear();
   }
 };

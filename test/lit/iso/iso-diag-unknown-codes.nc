@@ -7,7 +7,7 @@ G96 S100
 M99 P10
 G10 L10 P1 R2
 G43 Z1
-M98 P#1
+M98 P-5
 %
 ; FEATURES: ISO-LEX-01
 ; Unknown codes and characters are errors with a caret at the word; known but not yet
