@@ -1,5 +1,7 @@
 #include "ir/Diagnostics.h"
+#include "ir/LintRules.h"
 
+#include <cstdlib>
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -127,6 +129,12 @@ std::string Diagnostics::render(const Diagnostic &d) const {
 }
 
 void Diagnostics::report(Severity s, SourceLoc loc, std::string message, std::string rule) {
+  // The test suite sets NCC_CHECK_RULES: a rule missing from the registry is a bug there.
+  static const bool checkRules = std::getenv("NCC_CHECK_RULES") != nullptr;
+  if (checkRules && !rule.empty() && !findLintRule(rule)) {
+    std::fprintf(stderr, "ncc: internal error: rule '%s' is not in ir/LintRules.cpp\n", rule.c_str());
+    std::abort();
+  }
   if (s == Severity::Warning && werror_) s = Severity::Error;
   if (s == Severity::Error) ++errors_;
   if (s == Severity::Warning) ++warnings_;

@@ -18,6 +18,8 @@ src_root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 llvm_bin = "/usr/lib/llvm-19/bin"
 config.environment["PATH"] = os.pathsep.join([tools, llvm_bin, os.environ.get("PATH", "")])
+# Every diagnostic's rule id must be in the registry (ir/LintRules.cpp): ncc aborts otherwise.
+config.environment["NCC_CHECK_RULES"] = "1"
 config.substitutions.append(("%ncc", os.path.join(tools, "ncc")))
 config.substitutions.append(("%srcroot", src_root))
 config.substitutions.append(("%shared", os.path.normpath(os.path.join(src_root, "..", "shared"))))

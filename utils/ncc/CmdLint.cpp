@@ -1,6 +1,7 @@
 // ncc lint: front-end, verifier and sema diagnostics, static lint rules, then a run through the
 // executor (discarding motion) for the rules that need modal state. Each rule fires once per
 // source location.
+#include "ir/LintRules.h"
 #include "passes/Eval.h"
 #include "passes/Pass.h"
 #include "runtime/Executor.h"
@@ -39,13 +40,25 @@ int cmdLint(int argc, char **argv) {
   Session s;
   std::vector<std::string> files;
   po::options_description desc("ncc lint options");
-  desc.add_options()("file", po::value(&files)->multitoken(), "programs to check");
+  bool listRules = false;
+  desc.add_options()("file", po::value(&files)->multitoken(), "programs to check")(
+      "list-rules", po::bool_switch(&listRules), "print the rule table (docs/LINT.md) and exit");
   addCommonOptions(desc, s.opts);
   po::positional_options_description pos;
   pos.add("file", -1);
   po::variables_map vm;
   int rc = parseArgs(argc, argv, desc, pos, vm, "ncc lint FILE... [--diagnostics-format=text|json] [-Werror]");
   if (rc >= 0) return rc;
+  if (listRules) {
+    static const char *kSeverity[] = {"note", "warning", "error"};
+    size_t n;
+    const LintRule *rules = lintRules(n);
+    std::printf("| rule id | severity | stage | fires when |\n|---|---|---|---|\n");
+    for (size_t i = 0; i < n; ++i)
+      std::printf("| `%s` | %s | %s | %s |\n", rules[i].id, kSeverity[(int)rules[i].severity], rules[i].stage,
+                  rules[i].fires);
+    return kExitOk;
+  }
   if (files.empty()) {
     std::fprintf(stderr, "ncc: error: no input files\n");
     return kExitUsage;
