@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (test/fuzz) with clang-19 into ./build-fuzz and runs each for
-# SECONDS (default 60), starting from the seed corpus test/fuzz/corpus/<target>.
+# SECONDS (default 60), starting from the seed corpus test/fuzz/corpus/<target>, mutating
+# with the words of test/fuzz/<target>.dict.
 # Usage: utils/fuzz.sh [SECONDS] [TARGET...]   (targets: iso ir machine; default all)
 # New inputs go to build-fuzz/corpus/<target> (not the repository); findings (crash-*, leak-*,
 # timeout-*, oom-*) to build-fuzz/findings/<target>/. Reproduce one with
@@ -13,17 +14,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(iso ir machine)
 
-missing=()
-for p in clang-19 libclang-rt-19-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  sudo=""
-  [ "$(id -u)" -ne 0 ] && sudo="sudo"
-  echo "fuzz: installing ${missing[*]}"
-  $sudo apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+utils/install-missing.sh clang-19 libclang-rt-19-dev
 
 if [ ! -f build-fuzz/build.ninja ]; then
   cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -42,7 +33,7 @@ for t in "${targets[@]}"; do
   echo "fuzz: $t for ${seconds}s (log $log)"
   # Stops at the first finding; rerunning continues from the grown corpus.
   build-fuzz/test/fuzz/fuzz-$t "$work" "test/fuzz/corpus/$t" -max_total_time="$seconds" \
-      -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+      -dict="test/fuzz/$t.dict" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
       -artifact_prefix="$findings/" >"$log" 2>&1 || true
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   new=$(( $(ls "$findings" | wc -l) - before ))
