@@ -36,6 +36,27 @@ private:
 };
 }  // namespace
 
+bool Session::lint(uint32_t file) {
+  unsigned before = diags.errorCount();
+  ir::Module m;
+  PassContext ctx;
+  ctx.machine = &machine;
+  ctx.limits = opts.limits;
+  // Front-end errors drop only the words of their block after the error: the rest of the
+  // program still gets the verifier, the static rules and a run, so one lint run reports
+  // every problem it can find (the issue 7 recovery). A module the verifier rejects is not run.
+  if (!load(file, m)) {
+    if (m.functions.empty() || !runPasses(m, {"verify", "sema"}, diags, ctx)) return false;
+  }
+  runLint(m, diags, ctx);
+  NullSink sink;
+  Executor exec(machine, sink, diags);
+  KeepGoingSink es(exec);
+  Evaluator ev(es, diags, opts.limits);
+  exec.finish(ev.run(m));
+  return diags.errorCount() == before;
+}
+
 int cmdLint(int argc, char **argv) {
   Session s;
   std::vector<std::string> files;
@@ -71,26 +92,8 @@ int cmdLint(int argc, char **argv) {
     for (auto &d : s.diags.collected()) std::fprintf(stderr, "%s\n", s.diags.render(d).c_str());
     return kExitErrors;
   }
-  for (auto &path : files) {
-    uint32_t f = s.open(path);
-    if (!f) continue;
-    ir::Module m;
-    PassContext ctx;
-    ctx.machine = &s.machine;
-    ctx.limits = s.opts.limits;
-    // Front-end errors drop only the words of their block after the error: the rest of the
-    // program still gets the verifier, the static rules and a run, so one lint run reports
-    // every problem it can find (the issue 7 recovery). A module the verifier rejects is not run.
-    if (!s.load(f, m)) {
-      if (m.functions.empty() || !runPasses(m, {"verify", "sema"}, s.diags, ctx)) continue;
-    }
-    runLint(m, s.diags, ctx);
-    NullSink sink;
-    Executor exec(s.machine, sink, s.diags);
-    KeepGoingSink es(exec);
-    Evaluator ev(es, s.diags, s.opts.limits);
-    exec.finish(ev.run(m));
-  }
+  for (auto &path : files)
+    if (uint32_t f = s.open(path)) s.lint(f);
   // Print, dropping repeats of one rule at one location (a loop reports once).
   // In source order, whichever stage found them.
   std::vector<Diagnostic> all = s.diags.collected();

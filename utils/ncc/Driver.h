@@ -62,6 +62,11 @@ public:
   bool executeStreamed(uint32_t file, MotionSink &sink, uint64_t *blocks, bool &streamed);
   // The same for an already-loaded module.
   bool executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blocks = nullptr);
+  // `ncc lint` on one file: load (recovering after front-end errors), static rules, a run that
+  // keeps going after executor errors. Diagnostics go to diags; false when it reported errors.
+  bool lint(uint32_t file);
+  // Blocks per streamed chunk (the fuzz targets use tiny chunks to reach the chunk boundaries).
+  size_t streamChunkBlocks = 4096;
 
   int exitCode() const { return diags.hasErrors() ? kExitErrors : kExitOk; }
 };

@@ -1,5 +1,5 @@
-// Runs a flat program a chunk of blocks at a time: parse and lower 4096 blocks, evaluate and
-// execute them, drop them, go on. Memory stays bounded whatever the program's length.
+// Runs a flat program a chunk of blocks at a time: parse and lower streamChunkBlocks (4096)
+// blocks, evaluate and execute them, drop them, go on. Memory stays bounded whatever the length.
 // (A two-thread pipeline, parsing the next chunk while executing this one, gave no clear gain on
 // flat_moves: 0.91 s against 0.95 s at 128% CPU, as execution dominates. Not worth the threads.)
 #include "passes/Eval.h"
@@ -30,7 +30,7 @@ bool Session::executeStreamed(uint32_t file, MotionSink &sink, uint64_t *blocks,
   bool more = true;
   while (more && !ev.ended()) {
     chunk.functions[0].body.clear();
-    more = stream->next(chunk.functions[0].body, 4096);
+    more = stream->next(chunk.functions[0].body, streamChunkBlocks);
     if (diags.hasErrors()) return false;
     if (verifyChunks && !runPasses(chunk, {"verify", "sema"}, diags, ctx)) return false;
     if (!ev.run(chunk)) {

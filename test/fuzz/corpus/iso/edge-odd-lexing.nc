@@ -1,0 +1,4 @@
+G1 X1 Y1 Z1 A1 B1 C1 U1 V1 W1 F100 (unterminated
+/3 G0 X%
+N99999999999 G91 G28 X0
+%
