@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake ninja-build g++ ccache python3 llvm-19-dev llvm-19-tools
-          libboost-program-options-dev libfmt-dev libgtest-dev)
+          libboost-program-options-dev libfmt-dev libgtest-dev libtomlplusplus-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -58,11 +58,7 @@ int cmdMachine(int argc, char **argv) {
   }
   if (!check.empty()) {
     Machine m;
-    std::string err;
-    if (!Machine::load(check, m, err)) {
-      std::fprintf(stderr, "%s\n", err.c_str());
-      return kExitErrors;
-    }
+    if (!s.loadMachine(check, m)) return kExitErrors;
     std::printf("%s: ok (machine '%s')\n", check.c_str(), m.name.c_str());
     return kExitOk;
   }
