@@ -112,6 +112,9 @@ std::optional<std::string> readString(Ctx &c, const toml::node &n, const std::st
 // [x, y, z (, a, b, c)] into out; out is unchanged after a problem. Not inlined: GCC's bounds
 // check otherwise warns about the instantiations for structs without an AxisVec member.
 [[gnu::noinline]] void readAxisVec(Ctx &c, const toml::node &n, const std::string &key, AxisVec &out) {
+  // An unquoted g59.1 is a dotted key (table g59, key 1): say how to write it.
+  if (n.is_table())
+    return c.error(n.source(), key + ": expected an array, got a table (quote keys with a dot: \"" + key + ".1\")");
   const toml::array *a = n.as_array();
   if (!a || a->size() < 3 || a->size() > (size_t)kAxes)
     return c.error(n.source(), key + ": expected an array of 3 to 6 numbers [x, y, z, a, b, c], got " +
@@ -282,10 +285,6 @@ const KeyDef<OffsetsIn> kOffsetKeys[] = {
 
 void readOffsets(Ctx &c, const toml::node &n, void *obj) {
   Machine &m = *static_cast<Machine *>(obj);
-  // An unquoted g59.1 is a dotted key (table g59, key 1): say how to write it.
-  if (auto *t = n.as_table())
-    if (auto *g59 = t->get("g59"); g59 && g59->is_table())
-      return c.error(g59->source(), "g59: write the keys \"g59.1\" ... \"g59.3\" in quotes (a bare dot nests tables)");
   OffsetsIn o;
   readTable(c, n, "[offsets]", kOffsetKeys, o);
   m.workOffsets = {o.g54, o.g55, o.g56, o.g57, o.g58, o.g59, o.g59_1, o.g59_2, o.g59_3};

@@ -348,7 +348,7 @@ TEST(Machine, ErrorsAreLocated) {
   EXPECT_EQ(parseError(b + "[[tools]]\nnumber = 1\nedges = [{ d = 2 }, { d = 3 }]\n"),
             "m.toml:5:1: error: tool 1 has several edges but no d = 1 (the edge T, H and D numbers use)");
   EXPECT_EQ(parseError(b + "[offsets]\ng59.1 = [1, 2, 3]\n"),
-            "m.toml:6:1: error: g59: write the keys \"g59.1\" ... \"g59.3\" in quotes (a bare dot nests tables)");
+            "m.toml:6:1: error: g59: expected an array, got a table (quote keys with a dot: \"g59.1\")");
   EXPECT_EQ(parseError("schema = 1\n[machine]\nname = \"x\"\n"),
             "m.toml:1:1: error: no linear axis (need at least one of [axes.X] [axes.Y] [axes.Z])");
   EXPECT_EQ(parseError(b + "kind = \"rotary\"\n"), "m.toml:2:1: error: axis X: kinematics \"xyz\" needs it linear");
