@@ -250,17 +250,18 @@ const KeyDef<AxisLimits> kAxisKeys[] = {
     {"max", &AxisLimits::maxPos},
 };
 
+// A table of named tables ([axes.X], [emit.iso]): f(name, key, value) for each.
+template <class F> void forEachNamed(Ctx &c, const toml::node &n, const std::string &what, F f) {
+  const toml::table *t = n.as_table();
+  if (!t) return c.error(n.source(), what + ": expected tables [" + what + ".NAME], got " + typeName(n));
+  for (auto &&[k, v] : *t) f(std::string(k.str()), k, v);
+}
+
 void readAxes(Ctx &c, const toml::node &n, void *obj) {
   Machine &m = *static_cast<Machine *>(obj);
-  const toml::table *t = n.as_table();
-  if (!t) return c.error(n.source(), "axes: expected tables [axes.X] ..., got " + typeName(n));
-  for (auto &&[k, v] : *t) {
-    std::string name(k.str());
+  forEachNamed(c, n, "axes", [&](const std::string &name, const toml::key &k, const toml::node &v) {
     const char *p = name.size() == 1 ? std::strchr(kAxisNames, name[0]) : nullptr;
-    if (!p || !*p) {
-      c.error(k.source(), "axis '" + name + "': the executor models only the axes X Y Z A B C");
-      continue;
-    }
+    if (!p || !*p) return c.error(k.source(), "axis '" + name + "': the executor models only the axes X Y Z A B C");
     int i = int(p - kAxisNames);
     AxisLimits a;
     a.present = true;
@@ -268,7 +269,7 @@ void readAxes(Ctx &c, const toml::node &n, void *obj) {
     if (readTable(c, v, "[axes." + name + "]", kAxisKeys, a) && a.minPos >= a.maxPos)
       c.error(v.source(), "[axes." + name + "]: min must be below max");
     m.axes[i] = a;
-  }
+  });
 }
 
 // The [offsets] table: named reference positions, copied into Machine afterwards.
@@ -367,20 +368,12 @@ void flattenEmit(Ctx &c, const toml::table &t, const std::string &prefix, std::m
 
 void readEmit(Ctx &c, const toml::node &n, void *obj) {
   Machine &m = *static_cast<Machine *>(obj);
-  const toml::table *t = n.as_table();
-  if (!t) return c.error(n.source(), "emit: expected tables [emit.iso], [emit.sinumerik], got " + typeName(n));
-  for (auto &&[k, v] : *t) {
-    std::string name(k.str());
-    if (name != "iso" && name != "sinumerik") {
-      c.error(k.source(), "unknown emitter '" + name + "' in [emit] (iso, sinumerik)");
-      continue;
-    }
-    if (!v.is_table()) {
-      c.error(v.source(), "emit." + name + ": expected a table, got " + typeName(v));
-      continue;
-    }
+  forEachNamed(c, n, "emit", [&](const std::string &name, const toml::key &k, const toml::node &v) {
+    if (name != "iso" && name != "sinumerik")
+      return c.error(k.source(), "unknown emitter '" + name + "' in [emit] (iso, sinumerik)");
+    if (!v.is_table()) return c.error(v.source(), "emit." + name + ": expected a table, got " + typeName(v));
     flattenEmit(c, *v.as_table(), "", m.sections["emit." + name]);
-  }
+  });
 }
 
 void readSchema(Ctx &c, const toml::node &n, void *) {

@@ -19,7 +19,7 @@ Machine trapezoidMachine() {
     text += std::string("[axes.") + ax + "]\nmax_velocity = 60000\nmax_accel = 1000\n";
   Machine m;
   std::string err;
-  EXPECT_TRUE(Machine::parse(text, "t.ini", m, err)) << err;
+  EXPECT_TRUE(Machine::parse(text, "t.toml", m, err)) << err;
   return m;
 }
 

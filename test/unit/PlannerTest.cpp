@@ -18,7 +18,7 @@ Machine testMachine(double jerk, double tolerance = 0.01, int lookahead = 32) {
             std::to_string(jerk) + "\n";
   Machine m;
   std::string err;
-  EXPECT_TRUE(Machine::parse(text, "test.ini", m, err)) << err;
+  EXPECT_TRUE(Machine::parse(text, "test.toml", m, err)) << err;
   return m;
 }
 
