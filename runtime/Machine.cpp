@@ -1,186 +1,400 @@
-// Machine description parser (format: docs/MACHINE.md). Keys are data tables per section kind,
-// so adding a setting is one table row; every error names the file and line.
+// Machine description reader (schema: docs/MACHINE.md). toml++ parses the file and keeps source
+// positions; each table's keys are a data table (name, field, range or choices), so adding a
+// setting is one row, and every problem is reported as "file:line:col: error: message".
 #include "runtime/Machine.h"
 
+#include <toml++/toml.h>
+
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
+#include <tuple>
+#include <variant>
 
 namespace ncc {
 
 namespace {
 
-std::string trim(const std::string &s) {
-  size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return {};
-  size_t e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr const char *kAxisNames = "XYZABC";
+constexpr const char *kDialects = "iso fanuc linuxcnc sinumerik heidenhain cldata";
+// Modal groups a controller may reset at M2/M30 (the executor resets rs274's set today).
+constexpr const char *kResetGroups =
+    "motion plane distance feed_mode units cutter_comp tool_length work_offset g92 feed spindle coolant path_mode";
+
+struct Ctx {
+  std::vector<MachineError> problems;
+  void error(const toml::source_region &at, const std::string &msg) {
+    // Implicit tables (the [axes] of [axes.X]) have no position: report them at the start.
+    problems.push_back({std::max<uint32_t>(at.begin.line, 1), std::max<uint32_t>(at.begin.column, 1), msg});
+  }
+};
+
+using NodeReader = void (*)(Ctx &, const toml::node &, void *obj);
+
+// What a key sets: a field of the table's struct (its type decides the TOML type expected), or a
+// reader for structured values.
+template <class T>
+using Field = std::variant<double T::*, int T::*, std::string T::*, bool T::*, AxisVec T::*,
+                           std::vector<std::string> T::*, NodeReader>;
+
+template <class T> struct KeyDef {
+  const char *key;
+  Field<T> field;
+  double lo = -kInf, hi = kInf;  // numbers: allowed range
+  bool loOpen = false;           // lo itself is excluded
+  const char *choices = nullptr; // strings: the allowed values, blank-separated
+  bool required = false;
+};
+
+std::string typeName(const toml::node &n) {
+  switch (n.type()) {
+  case toml::node_type::table: return "a table";
+  case toml::node_type::array: return "an array";
+  case toml::node_type::string: return "a string";
+  case toml::node_type::integer: return "an integer";
+  case toml::node_type::floating_point: return "a floating-point number";
+  case toml::node_type::boolean: return "a boolean";
+  default: return "a date or time";
+  }
 }
 
-bool parseNumber(const std::string &v, double &out) {
-  if (v.empty()) return false;
-  char *end = nullptr;
-  errno = 0;
-  double d = std::strtod(v.c_str(), &end);
-  if (*end != 0 || errno == ERANGE || !std::isfinite(d)) return false;
-  out = d;
-  return true;
+std::string num(double d) {
+  if (d == std::floor(d) && std::fabs(d) < 1e15) return std::to_string((long long)d);
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, d);
+  return std::string(buf, r.ptr);
 }
 
-bool parseInt(const std::string &v, long long &out) {
-  if (v.empty()) return false;
-  char *end = nullptr;
-  errno = 0;
-  long long n = std::strtoll(v.c_str(), &end, 10);
-  if (*end != 0 || errno == ERANGE) return false;
-  out = n;
-  return true;
-}
-
-bool parseBool(const std::string &v, bool &out) {
-  static const struct { const char *text; bool value; } words[] = {
-      {"true", true}, {"yes", true}, {"on", true}, {"1", true},
-      {"false", false}, {"no", false}, {"off", false}, {"0", false}};
-  for (auto &w : words)
-    if (v == w.text) { out = w.value; return true; }
+bool isChoice(const char *choices, const std::string &v) {
+  std::istringstream in(choices);
+  std::string w;
+  while (in >> w)
+    if (w == v) return true;
   return false;
 }
 
-// "x y z [a b c]": 3 to 6 numbers separated by blanks or commas.
-bool parseAxisVec(const std::string &v, AxisVec &out) {
-  std::string s = v;
-  for (char &c : s) if (c == ',') c = ' ';
-  std::istringstream in(s);
-  AxisVec r{};
-  int n = 0;
-  std::string tok;
-  while (in >> tok) {
-    if (n == kAxes || !parseNumber(tok, r[n])) return false;
-    ++n;
+std::string choiceList(const char *choices) {
+  std::istringstream in(choices);
+  std::string w, out;
+  while (in >> w) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+std::optional<double> readNumber(Ctx &c, const toml::node &n, const std::string &key) {
+  if (auto d = n.value<double>(); d && (n.is_integer() || n.is_floating_point()) && std::isfinite(*d)) return d;
+  c.error(n.source(), key + ": expected a number, got " + typeName(n));
+  return std::nullopt;
+}
+
+std::optional<std::string> readString(Ctx &c, const toml::node &n, const std::string &key, const char *choices) {
+  if (!n.is_string()) {
+    c.error(n.source(), key + ": expected a string, got " + typeName(n));
+    return std::nullopt;
   }
-  if (n < 3) return false;
-  out = r;
-  return true;
-}
-
-// A setter returns an error text (empty on success).
-template <class T> struct KeyDef {
-  const char *key;
-  std::string (*apply)(T &, const std::string &);
-};
-
-#define NCC_NUM(field, cond, what)                                                    \
-  [](auto &o, const std::string &v) -> std::string {                                  \
-    double d;                                                                         \
-    if (!parseNumber(v, d)) return "expected a number, got '" + v + "'";              \
-    if (!(cond)) return std::string("value must be ") + what;                         \
-    o.field = d;                                                                      \
-    return {};                                                                        \
+  std::string v = **n.as_string();
+  if (choices && !isChoice(choices, v)) {
+    c.error(n.source(), key + ": '" + v + "' is not one of " + choiceList(choices));
+    return std::nullopt;
   }
-
-const KeyDef<Machine> kMachineKeys[] = {
-    {"name", [](Machine &m, const std::string &v) -> std::string {
-       if (v.empty()) return "name must not be empty";
-       m.name = v;
-       return {};
-     }},
-    {"dialect", [](Machine &m, const std::string &v) -> std::string {
-       static const char *known[] = {"iso", "fanuc", "linuxcnc", "sinumerik", "heidenhain", "cldata"};
-       for (auto *k : known)
-         if (v == k) { m.dialect = v; return {}; }
-       return "unknown dialect '" + v + "' (iso, fanuc, linuxcnc, sinumerik, heidenhain, cldata)";
-     }},
-    {"decimal_mode", [](Machine &m, const std::string &v) -> std::string {
-       if (v != "calculator" && v != "is-b" && v != "is-c")
-         return "decimal_mode must be calculator, is-b or is-c, got '" + v + "'";
-       m.decimalMode = v;
-       return {};
-     }},
-    {"rapid_feed", NCC_NUM(rapidFeed, d > 0, "> 0")},
-    {"max_feed", NCC_NUM(maxFeed, d > 0, "> 0")},
-    {"arc_tolerance", NCC_NUM(arcTolerance, d > 0, "> 0")},
-    {"path_tolerance", NCC_NUM(pathTolerance, d >= 0, ">= 0")},
-    {"free_tools", [](Machine &m, const std::string &v) -> std::string {
-       long long n;
-       if (!parseInt(v, n) || n < 0 || n > 99999) return "expected an integer 0..99999, got '" + v + "'";
-       m.freeTools = (int)n;
-       return {};
-     }},
-    {"lookahead", [](Machine &m, const std::string &v) -> std::string {
-       long long n;
-       if (!parseInt(v, n)) return "expected an integer, got '" + v + "'";
-       if (n < 1 || n > 100000) return "lookahead must be 1..100000";
-       m.lookahead = (int)n;
-       return {};
-     }},
-};
-
-const KeyDef<AxisLimits> kAxisKeys[] = {
-    {"present", [](AxisLimits &a, const std::string &v) -> std::string {
-       return parseBool(v, a.present) ? std::string() : "expected true or false, got '" + v + "'";
-     }},
-    {"rotary", [](AxisLimits &a, const std::string &v) -> std::string {
-       return parseBool(v, a.rotary) ? std::string() : "expected true or false, got '" + v + "'";
-     }},
-    {"max_velocity", NCC_NUM(maxVelocity, d > 0, "> 0")},
-    {"max_accel", NCC_NUM(maxAccel, d > 0, "> 0")},
-    {"max_jerk", NCC_NUM(maxJerk, d >= 0, ">= 0 (0 = no jerk limit)")},
-    {"min", NCC_NUM(minPos, true, "")},
-    {"max", NCC_NUM(maxPos, true, "")},
-};
-
-const KeyDef<ToolData> kToolKeys[] = {
-    {"length", NCC_NUM(length, true, "")},
-    {"radius", NCC_NUM(radius, d >= 0, ">= 0")},
-};
-#undef NCC_NUM
-
-template <class T, size_t N>
-const KeyDef<T> *findKey(const KeyDef<T> (&table)[N], const std::string &key) {
-  for (auto &k : table)
-    if (key == k.key) return &k;
-  return nullptr;
-}
-
-// Offsets: g54..g59, g59.1..g59.3 map to workOffsets[0..8].
-AxisVec *offsetSlot(Machine &m, const std::string &key) {
-  static const char *names[] = {"g54", "g55", "g56", "g57", "g58", "g59", "g59.1", "g59.2", "g59.3"};
-  for (int i = 0; i < 9; ++i)
-    if (key == names[i]) return &m.workOffsets[i];
-  if (key == "home1") return &m.home1;
-  if (key == "home2") return &m.home2;
-  return nullptr;
-}
-
-int axisIndex(char c) {
-  static const char letters[] = "XYZABC";
-  const char *p = std::strchr(letters, std::toupper((unsigned char)c));
-  return (p && *p) ? int(p - letters) : -1;
-}
-
-// Strips a comment: '#' after a blank or at line start, ';' only at line start (so a
-// Sinumerik header "; text" can be a value). A value in double quotes is taken literally.
-std::string stripComment(const std::string &line) {
-  std::string t = trim(line);
-  if (t.empty() || t[0] == '#' || t[0] == ';') return {};
-  bool quoted = false;
-  for (size_t i = 0; i < t.size(); ++i) {
-    if (t[i] == '"') quoted = !quoted;
-    if (!quoted && t[i] == '#' && i > 0 && (t[i - 1] == ' ' || t[i - 1] == '\t'))
-      return trim(t.substr(0, i));
-  }
-  return t;
-}
-
-std::string unquote(const std::string &v) {
-  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') return v.substr(1, v.size() - 2);
   return v;
 }
+
+// [x, y, z (, a, b, c)] into out; out is unchanged after a problem. Not inlined: GCC's bounds
+// check otherwise warns about the instantiations for structs without an AxisVec member.
+[[gnu::noinline]] void readAxisVec(Ctx &c, const toml::node &n, const std::string &key, AxisVec &out) {
+  // An unquoted g59.1 is a dotted key (table g59, key 1): say how to write it.
+  if (n.is_table())
+    return c.error(n.source(), key + ": expected an array, got a table (quote keys with a dot: \"" + key + ".1\")");
+  const toml::array *a = n.as_array();
+  if (!a || a->size() < 3 || a->size() > (size_t)kAxes)
+    return c.error(n.source(), key + ": expected an array of 3 to 6 numbers [x, y, z, a, b, c], got " +
+                                   (a ? std::to_string(a->size()) + " elements" : typeName(n)));
+  AxisVec v{};
+  for (size_t i = 0; i < a->size(); ++i) {
+    auto d = readNumber(c, *a->get(i), key + "[" + std::to_string(i) + "]");
+    if (!d) return;
+    v[i] = *d;
+  }
+  out = v;
+}
+
+// Sets one key's field, or reports why not.
+template <class T> void apply(Ctx &c, const KeyDef<T> &def, const toml::node &n, T &obj) {
+  const std::string key = def.key;
+  auto inRange = [&](double d) {
+    if ((def.loOpen ? d > def.lo : d >= def.lo) && d <= def.hi) return true;
+    std::string want = def.hi < kInf ? num(def.lo) + ".." + num(def.hi) : (def.loOpen ? "> " : ">= ") + num(def.lo);
+    c.error(n.source(), key + ": must be " + want + ", got " + num(d));
+    return false;
+  };
+  std::visit(
+      [&](auto field) {
+        using F = decltype(field);
+        if constexpr (std::is_same_v<F, NodeReader>) {
+          field(c, n, &obj);
+        } else if constexpr (std::is_same_v<F, double T::*>) {
+          if (auto d = readNumber(c, n, key); d && inRange(*d)) obj.*field = *d;
+        } else if constexpr (std::is_same_v<F, int T::*>) {
+          if (!n.is_integer()) return c.error(n.source(), key + ": expected an integer, got " + typeName(n));
+          double d = (double)**n.as_integer();
+          if (inRange(d)) obj.*field = (int)d;
+        } else if constexpr (std::is_same_v<F, std::string T::*>) {
+          if (auto s = readString(c, n, key, def.choices)) obj.*field = *s;
+        } else if constexpr (std::is_same_v<F, bool T::*>) {
+          if (!n.is_boolean()) return c.error(n.source(), key + ": expected true or false, got " + typeName(n));
+          obj.*field = **n.as_boolean();
+        } else if constexpr (std::is_same_v<F, AxisVec T::*>) {
+          readAxisVec(c, n, key, obj.*field);
+        } else {  // list of strings
+          const toml::array *a = n.as_array();
+          if (!a) return c.error(n.source(), key + ": expected an array of strings, got " + typeName(n));
+          std::vector<std::string> v;
+          for (const toml::node &e : *a)
+            if (auto s = readString(c, e, key, def.choices)) v.push_back(*s);
+          obj.*field = v;
+        }
+      },
+      def.field);
+}
+
+// Reads table t into obj by the key table; unknown keys and missing required keys are errors.
+template <class T, size_t N>
+bool readTable(Ctx &c, const toml::node &node, const std::string &where, const KeyDef<T> (&keys)[N], T &obj) {
+  const toml::table *t = node.as_table();
+  if (!t) {
+    c.error(node.source(), where + ": expected a table, got " + typeName(node));
+    return false;
+  }
+  size_t before = c.problems.size();
+  for (auto &&[k, v] : *t) {
+    auto def = std::find_if(std::begin(keys), std::end(keys), [&](auto &d) { return k.str() == d.key; });
+    if (def == std::end(keys))
+      c.error(k.source(), "unknown key '" + std::string(k.str()) + "' in " + where);
+    else
+      apply(c, *def, v, obj);
+  }
+  for (auto &d : keys)
+    if (d.required && !t->contains(d.key)) c.error(t->source(), where + " needs '" + d.key + "'");
+  return c.problems.size() == before;
+}
+
+// ---- the schema ------------------------------------------------------------------------------
+
+const KeyDef<Machine> kMachineKeys[] = {
+    {"name", &Machine::name},
+    {"dialect", &Machine::dialect, 0, 0, false, kDialects},
+    {"decimal_mode", &Machine::decimalMode, 0, 0, false, "calculator is-b is-c"},
+    {"rapid_feed", &Machine::rapidFeed, 0, kInf, true},
+    {"max_feed", &Machine::maxFeed, 0, kInf, true},
+    {"arc_tolerance", &Machine::arcTolerance, 0, kInf, true},
+    {"path_tolerance", &Machine::pathTolerance, 0},
+    {"lookahead", &Machine::lookahead, 1, 100000},
+    {"free_tools", &Machine::freeTools, 0, 99999},
+};
+
+void readMacroCalls(Ctx &c, const toml::node &n, void *obj) {
+  auto &calls = static_cast<Controller *>(obj)->macroCalls;
+  const toml::table *t = n.as_table();
+  if (!t) return c.error(n.source(), "macro_calls: expected a table of code = \"program\", got " + typeName(n));
+  for (auto &&[k, v] : *t) {
+    std::string code(k.str());
+    // M<n> or G<n>[.<n>]: the codes a controller lets a macro replace.
+    bool ok = code.size() >= 2 && (code[0] == 'M' || code[0] == 'G');
+    size_t dot = code.find('.');
+    for (size_t i = 1; ok && i < code.size(); ++i)
+      ok = std::isdigit((unsigned char)code[i]) || (i == dot && code[0] == 'G' && i > 1 && i + 1 < code.size());
+    if (!ok) {
+      c.error(k.source(), "macro_calls: '" + code + "' is not an M or G code (M6, G81, \"G65.1\")");
+      continue;
+    }
+    if (auto s = readString(c, v, "macro_calls." + code, nullptr)) {
+      if (s->empty()) c.error(v.source(), "macro_calls." + code + ": the program name is empty");
+      else calls[code] = *s;
+    }
+  }
+}
+
+const KeyDef<Controller> kControllerKeys[] = {
+    {"family", &Controller::family, 0, 0, false, kDialects},
+    {"model", &Controller::model},
+    {"gcode_system", &Controller::gcodeSystem, 0, 0, false, "A B C"},
+    {"plane", &Controller::plane, 0, 0, false, "G17 G18 G19"},
+    {"diameter_programming", &Controller::diameterProgramming},
+    {"reset", &Controller::reset, 0, 0, false, kResetGroups},
+    {"r_params", &Controller::rParams, 0, 100000},
+    {"q_params", &Controller::qParams, 0, 100000},
+    {"real_tolerance", &Controller::realTolerance, 0, 1},
+    {"macro_calls", NodeReader(readMacroCalls)},
+};
+
+void readAxisKind(Ctx &c, const toml::node &n, void *obj) {
+  if (auto s = readString(c, n, "kind", "linear rotary")) static_cast<AxisLimits *>(obj)->rotary = *s == "rotary";
+}
+
+const KeyDef<AxisLimits> kAxisKeys[] = {
+    {"kind", NodeReader(readAxisKind)},
+    {"max_velocity", &AxisLimits::maxVelocity, 0, kInf, true, nullptr, true},
+    {"max_accel", &AxisLimits::maxAccel, 0, kInf, true, nullptr, true},
+    {"max_jerk", &AxisLimits::maxJerk, 0},
+    {"min", &AxisLimits::minPos},
+    {"max", &AxisLimits::maxPos},
+};
+
+// A table of named tables ([axes.X], [emit.iso]): f(name, key, value) for each.
+template <class F> void forEachNamed(Ctx &c, const toml::node &n, const std::string &what, F f) {
+  const toml::table *t = n.as_table();
+  if (!t) return c.error(n.source(), what + ": expected tables [" + what + ".NAME], got " + typeName(n));
+  for (auto &&[k, v] : *t) f(std::string(k.str()), k, v);
+}
+
+void readAxes(Ctx &c, const toml::node &n, void *obj) {
+  Machine &m = *static_cast<Machine *>(obj);
+  forEachNamed(c, n, "axes", [&](const std::string &name, const toml::key &k, const toml::node &v) {
+    const char *p = name.size() == 1 ? std::strchr(kAxisNames, name[0]) : nullptr;
+    if (!p || !*p) return c.error(k.source(), "axis '" + name + "': the executor models only the axes X Y Z A B C");
+    int i = int(p - kAxisNames);
+    AxisLimits a;
+    a.present = true;
+    a.rotary = i >= 3;  // A B C turn unless kind says otherwise
+    if (readTable(c, v, "[axes." + name + "]", kAxisKeys, a) && a.minPos >= a.maxPos)
+      c.error(v.source(), "[axes." + name + "]: min must be below max");
+    m.axes[i] = a;
+  });
+}
+
+// The [offsets] table: named reference positions, copied into Machine afterwards.
+struct OffsetsIn {
+  AxisVec g54{}, g55{}, g56{}, g57{}, g58{}, g59{}, g59_1{}, g59_2{}, g59_3{}, home1{}, home2{};
+};
+
+const KeyDef<OffsetsIn> kOffsetKeys[] = {
+    {"g54", &OffsetsIn::g54},     {"g55", &OffsetsIn::g55},     {"g56", &OffsetsIn::g56},
+    {"g57", &OffsetsIn::g57},     {"g58", &OffsetsIn::g58},     {"g59", &OffsetsIn::g59},
+    {"g59.1", &OffsetsIn::g59_1}, {"g59.2", &OffsetsIn::g59_2}, {"g59.3", &OffsetsIn::g59_3},
+    {"home1", &OffsetsIn::home1}, {"home2", &OffsetsIn::home2},
+};
+
+void readOffsets(Ctx &c, const toml::node &n, void *obj) {
+  Machine &m = *static_cast<Machine *>(obj);
+  OffsetsIn o;
+  readTable(c, n, "[offsets]", kOffsetKeys, o);
+  m.workOffsets = {o.g54, o.g55, o.g56, o.g57, o.g58, o.g59, o.g59_1, o.g59_2, o.g59_3};
+  m.home1 = o.home1;
+  m.home2 = o.home2;
+}
+
+struct EdgeIn : ToolEdge {
+  int d = -1;
+};
+
+const KeyDef<EdgeIn> kEdgeKeys[] = {
+    {"d", &EdgeIn::d, 1, 99999, false, nullptr, true},
+    {"length", &EdgeIn::length},
+    {"radius", &EdgeIn::radius, 0},
+    {"length_wear", &EdgeIn::lengthWear},
+    {"radius_wear", &EdgeIn::radiusWear},
+};
+
+struct ToolIn : Tool {
+  int number = -1;
+};
+
+void readEdges(Ctx &c, const toml::node &n, void *obj) {
+  Tool &tool = *static_cast<ToolIn *>(obj);
+  const toml::array *a = n.as_array();
+  if (!a || a->empty())
+    return c.error(n.source(), "edges: expected a non-empty array of tables {d = 1, length = ..., radius = ...}");
+  for (const toml::node &e : *a) {
+    EdgeIn in;
+    if (!readTable(c, e, "edge", kEdgeKeys, in)) continue;
+    if (tool.edges.count(in.d)) c.error(e.source(), "edge d = " + std::to_string(in.d) + " appears twice");
+    tool.edges[in.d] = in;
+  }
+}
+
+const KeyDef<ToolIn> kToolKeys[] = {
+    {"number", &ToolIn::number, 0, 99999, false, nullptr, true},
+    {"name", &ToolIn::name},
+    {"edges", NodeReader(readEdges), 0, 0, false, nullptr, true},
+};
+
+void readTools(Ctx &c, const toml::node &n, void *obj) {
+  Machine &m = *static_cast<Machine *>(obj);
+  const toml::array *a = n.as_array();
+  if (!a) return c.error(n.source(), "tools: expected an array of tables [[tools]], got " + typeName(n));
+  for (const toml::node &e : *a) {
+    ToolIn in;
+    if (!readTable(c, e, "[[tools]]", kToolKeys, in)) continue;
+    std::string tn = "tool " + std::to_string(in.number);
+    if (m.toolTable.count(in.number)) {
+      c.error(e.source(), tn + " appears twice");
+      continue;
+    }
+    // T, H and D numbers name a tool and use its edge 1, or its only edge.
+    auto edge = in.edges.count(1) ? in.edges.find(1) : in.edges.size() == 1 ? in.edges.begin() : in.edges.end();
+    if (edge == in.edges.end()) {
+      c.error(e.source(), tn + " has several edges but no d = 1 (the edge T, H and D numbers use)");
+      continue;
+    }
+    const ToolEdge &g = edge->second;
+    m.tools[in.number] = ToolData{g.length + g.lengthWear, g.radius + g.radiusWear};
+    if (m.tools[in.number].radius < 0) c.error(e.source(), tn + ": radius + radius_wear is negative");
+    m.toolTable[in.number] = in;
+  }
+}
+
+// [emit.iso], [emit.sinumerik]: kept as text for the emitters (nested tables become dotted keys).
+void flattenEmit(Ctx &c, const toml::table &t, const std::string &prefix, std::map<std::string, std::string> &out) {
+  for (auto &&[k, v] : t) {
+    std::string key = prefix + std::string(k.str());
+    if (auto *sub = v.as_table()) flattenEmit(c, *sub, key + ".", out);
+    else if (auto *s = v.as_string()) out[key] = **s;
+    else if (auto *b = v.as_boolean()) out[key] = **b ? "true" : "false";
+    else if (auto *i = v.as_integer()) out[key] = std::to_string(**i);
+    else if (auto *f = v.as_floating_point()) out[key] = num(**f);
+    else c.error(v.source(), key + ": expected a string, number or boolean, got " + typeName(v));
+  }
+}
+
+void readEmit(Ctx &c, const toml::node &n, void *obj) {
+  Machine &m = *static_cast<Machine *>(obj);
+  forEachNamed(c, n, "emit", [&](const std::string &name, const toml::key &k, const toml::node &v) {
+    if (name != "iso" && name != "sinumerik")
+      return c.error(k.source(), "unknown emitter '" + name + "' in [emit] (iso, sinumerik)");
+    if (!v.is_table()) return c.error(v.source(), "emit." + name + ": expected a table, got " + typeName(v));
+    flattenEmit(c, *v.as_table(), "", m.sections["emit." + name]);
+  });
+}
+
+void readSchema(Ctx &c, const toml::node &n, void *) {
+  if (n.value_exact<int64_t>() != 1)
+    c.error(n.source(), "schema: this ncc reads machine descriptions of schema 1 (write schema = 1)");
+}
+
+const KeyDef<Machine> kTopKeys[] = {
+    {"schema", NodeReader(readSchema)},
+    {"kinematics", &Machine::kinematics, 0, 0, false, "xyz"},
+    {"machine", NodeReader([](Ctx &c, const toml::node &n, void *m) {
+       readTable(c, n, "[machine]", kMachineKeys, *static_cast<Machine *>(m));
+     })},
+    {"controller", NodeReader([](Ctx &c, const toml::node &n, void *m) {
+       readTable(c, n, "[controller]", kControllerKeys, static_cast<Machine *>(m)->controller);
+     })},
+    {"axes", NodeReader(readAxes)},
+    {"offsets", NodeReader(readOffsets)},
+    {"tools", NodeReader(readTools)},
+    {"emit", NodeReader(readEmit)},
+};
 
 }  // namespace
 
@@ -191,100 +405,75 @@ std::string Machine::get(const std::string &section, const std::string &key, con
   return k == s->second.end() ? def : k->second;
 }
 
-bool Machine::parse(const std::string &text, const std::string &name, Machine &out, std::string &err) {
+bool Machine::parse(const std::string &text, const std::string &name, Machine &out,
+                    std::vector<MachineError> &errors) {
   Machine m;
-  m.axes = {};
-  std::istringstream in(text);
-  std::string raw, section;
-  unsigned lineNo = 0;
-  std::array<unsigned, kAxes> axisLine{};
-  auto fail = [&](unsigned line, const std::string &msg) {
-    err = name + ":" + std::to_string(line) + ": " + msg;
-    return false;
-  };
-  while (std::getline(in, raw)) {
-    ++lineNo;
-    if (lineNo == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);  // UTF-8 byte order mark
-    std::string line = stripComment(raw);
-    if (line.empty()) continue;
-    if (line.front() == '[') {
-      if (line.back() != ']') return fail(lineNo, "missing ']' in section header");
-      section = trim(line.substr(1, line.size() - 2));
-      if (section.empty()) return fail(lineNo, "empty section name");
-      if (section.rfind("axis.", 0) == 0) {
-        int ax = section.size() == 6 ? axisIndex(section[5]) : -1;
-        if (ax < 0) return fail(lineNo, "unknown axis section [" + section + "] (axes are X Y Z A B C)");
-        section = std::string("axis.") + "XYZABC"[ax];
-        // A listed axis is present unless it says otherwise; A/B/C default to rotary.
-        m.axes[ax].present = true;
-        m.axes[ax].rotary = ax >= 3;
-        axisLine[ax] = lineNo;
-      } else if (section.rfind("tool.", 0) == 0) {
-        long long n;
-        if (!parseInt(section.substr(5), n) || n < 0 || n > 99999)
-          return fail(lineNo, "bad tool section [" + section + "] (expected [tool.N], N = 0..99999)");
-        m.tools[(int)n];
-      }
-      m.sections[section];
-      continue;
-    }
-    size_t eq = line.find('=');
-    if (eq == std::string::npos) return fail(lineNo, "expected 'key = value' or '[section]'");
-    std::string key = trim(line.substr(0, eq));
-    std::string value = unquote(trim(line.substr(eq + 1)));
-    if (key.empty()) return fail(lineNo, "missing key before '='");
-    if (section.empty()) return fail(lineNo, "key '" + key + "' outside a section");
-    auto &sec = m.sections[section];
-    if (sec.count(key)) return fail(lineNo, "duplicate key '" + key + "' in [" + section + "]");
-    sec[key] = value;
-
-    std::string problem;
-    bool known = true;
-    if (section == "machine") {
-      auto *k = findKey(kMachineKeys, key);
-      if (k) problem = k->apply(m, value); else known = false;
-    } else if (section.rfind("axis.", 0) == 0) {
-      auto *k = findKey(kAxisKeys, key);
-      if (k) problem = k->apply(m.axes[axisIndex(section[5])], value); else known = false;
-    } else if (section.rfind("tool.", 0) == 0) {
-      auto *k = findKey(kToolKeys, key);
-      if (k) problem = k->apply(m.tools[std::atoi(section.c_str() + 5)], value); else known = false;
-    } else if (section == "offsets") {
-      AxisVec *slot = offsetSlot(m, key);
-      if (!slot) known = false;
-      else if (!parseAxisVec(value, *slot)) problem = "expected 3 to 6 numbers (x y z [a b c]), got '" + value + "'";
-    }
-    if (!known) return fail(lineNo, "unknown key '" + key + "' in [" + section + "]");
-    if (!problem.empty()) return fail(lineNo, key + ": " + problem);
+  Ctx c;
+  toml::table doc;
+  try {
+    doc = toml::parse(text, name);
+  } catch (const toml::parse_error &e) {
+    c.error(e.source(), std::string(e.description()));
   }
-  // Whole-section checks, reported at the section header.
-  for (int i = 0; i < kAxes; ++i) {
-    const AxisLimits &a = m.axes[i];
-    if (!a.present) continue;
-    std::string sec = std::string("[axis.") + "XYZABC"[i] + "]";
-    if (a.maxVelocity <= 0) return fail(axisLine[i], "present axis " + sec + " needs max_velocity");
-    if (a.maxAccel <= 0) return fail(axisLine[i], "present axis " + sec + " needs max_accel");
-    if (a.minPos >= a.maxPos) return fail(axisLine[i], sec + ": min must be below max");
+  if (c.problems.empty() && !doc.contains("schema"))
+    c.error({}, "missing 'schema = 1' (the version of the machine description format)");
+  if (c.problems.empty() && readTable(c, doc, "the top level", kTopKeys, m)) {
+    // Whole-machine checks, reported at the start of the file.
+    if (!m.axes[0].present && !m.axes[1].present && !m.axes[2].present)
+      c.error({}, "no linear axis (need at least one of [axes.X] [axes.Y] [axes.Z])");
+    // "xyz": X Y Z are the Cartesian tool position itself, so they cannot turn.
+    for (int i = 0; i < 3; ++i)
+      if (m.axes[i].present && m.axes[i].rotary)
+        c.error(doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
+                std::string("axis ") + kAxisNames[i] + ": kinematics \"xyz\" needs it linear");
   }
-  if (!m.axes[0].present && !m.axes[1].present && !m.axes[2].present)
-    return fail(lineNo ? lineNo : 1, "no linear axis present (need at least one of [axis.X] [axis.Y] [axis.Z])");
+  errors = std::move(c.problems);
+  std::stable_sort(errors.begin(), errors.end(),
+                   [](auto &a, auto &b) { return std::tie(a.line, a.col) < std::tie(b.line, b.col); });
+  if (!errors.empty()) return false;
   out = std::move(m);
   return true;
 }
 
-bool Machine::load(const std::string &nameOrPath, Machine &out, std::string &err) {
+bool Machine::load(const std::string &nameOrPath, Machine &out, std::vector<MachineError> &errors) {
   if (nameOrPath == "default" || nameOrPath == "default-mill") {
     out = builtinDefault();
     return true;
   }
   std::ifstream f(nameOrPath, std::ios::binary);
   if (!f) {
-    err = nameOrPath + ": cannot read machine description: " + std::strerror(errno);
+    errors = {{0, 0, std::string("cannot read machine description: ") + std::strerror(errno)}};
     return false;
   }
   std::stringstream ss;
   ss << f.rdbuf();
-  return parse(ss.str(), nameOrPath, out, err);
+  return parse(ss.str(), nameOrPath, out, errors);
+}
+
+namespace {
+std::string errorText(const std::string &name, const std::vector<MachineError> &errors) {
+  std::string err;
+  for (auto &e : errors) {
+    err += (err.empty() ? "" : "\n") + name;
+    if (e.line) err += ":" + std::to_string(e.line) + ":" + std::to_string(e.col);
+    err += ": error: " + e.message;
+  }
+  return err;
+}
+}  // namespace
+
+bool Machine::parse(const std::string &text, const std::string &name, Machine &out, std::string &err) {
+  std::vector<MachineError> errors;
+  if (parse(text, name, out, errors)) return true;
+  err = errorText(name, errors);
+  return false;
+}
+
+bool Machine::load(const std::string &nameOrPath, Machine &out, std::string &err) {
+  std::vector<MachineError> errors;
+  if (load(nameOrPath, out, errors)) return true;
+  err = errorText(nameOrPath, errors);
+  return false;
 }
 
 const char *Machine::builtinDefaultText() {

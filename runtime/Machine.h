@@ -1,11 +1,12 @@
-// Machine description: axes and their limits, controller settings, offsets, tools and the
-// emitter's word formats. A data file (INI-like, see docs/MACHINE.md); the default 3-axis mill
-// is embedded in the binary so `ncc run prog.nc` needs no set-up.
+// Machine description: axes and their limits, controller profile, kinematics, offsets, tools
+// and the emitters' settings. A versioned TOML file (schema 1, see docs/MACHINE.md); the default
+// 3-axis mill is embedded in the binary so `ncc run prog.nc` needs no set-up.
 #pragma once
 #include "ir/MotionIR.h"
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace ncc {
 
@@ -18,15 +19,49 @@ struct AxisLimits {
   double minPos = -1e9, maxPos = 1e9;  // soft limits, machine coordinates
 };
 
+// What a T, H or D number stands for today: its tool's edge 1 (or only edge), geometry + wear.
 struct ToolData {
   double length = 0;  // mm
   double radius = 0;  // mm
+};
+
+// One cutting edge (Sinumerik D number, Heidenhain/Fanuc offset) of a tool.
+struct ToolEdge {
+  double length = 0, radius = 0;          // mm, geometry
+  double lengthWear = 0, radiusWear = 0;  // mm, added to the geometry
+};
+
+struct Tool {
+  std::string name;
+  std::map<int, ToolEdge> edges;  // by D number
+};
+
+// The controller profile: data for the dialect front ends (docs/MACHINE.md says which are used).
+struct Controller {
+  std::string family = "iso";        // iso fanuc linuxcnc sinumerik heidenhain cldata
+  std::string model;                 // free text, e.g. "840D sl"
+  std::string gcodeSystem = "A";     // Fanuc lathe G-code system A, B or C
+  std::string plane = "G17";         // start-up plane G17, G18, G19
+  bool diameterProgramming = false;  // lathe: X words are diameters
+  std::vector<std::string> reset;    // modal groups M2/M30 reset
+  int rParams = 100;                 // Sinumerik R0..R(n-1)
+  int qParams = 2000;                // Heidenhain Q0..Q(n-1)
+  double realTolerance = 1e-12;      // Sinumerik: relative tolerance of REAL = and <>
+  std::map<std::string, std::string> macroCalls;  // "M6" -> program called instead
+};
+
+// One problem of a machine description; line 0 = not located (an unreadable file).
+struct MachineError {
+  uint32_t line = 0, col = 0;
+  std::string message;
 };
 
 struct Machine {
   std::string name = "default-mill";
   std::string dialect = "iso";           // controller dialect of the machine
   std::array<AxisLimits, kAxes> axes{};
+  std::string kinematics = "xyz";
+  Controller controller;
   double rapidFeed = 10000;              // mm/min, path rapid speed cap
   double maxFeed = 5000;                 // mm/min, programmed feed cap
   double arcTolerance = 0.002;           // mm: arc start/end radius mismatch allowed
@@ -37,15 +72,16 @@ struct Machine {
   std::string decimalMode = "calculator";
   std::array<AxisVec, 9> workOffsets{};  // G54..G59.3, machine mm
   AxisVec home1{}, home2{};              // G28 / G30 reference positions, machine mm
-  std::map<int, ToolData> tools;
+  std::map<int, Tool> toolTable;         // every tool with its name and edges
+  std::map<int, ToolData> tools;         // by T/H/D number: edge 1 of toolTable (see ToolData)
   // Tool numbers 1..freeTools are valid even when the table lacks them (zero length and
   // radius), as in rs274's stand-alone set-up; any other number must be in the table (when
   // the machine has one).
   int freeTools = 0;
   // The tool data of number n (0 = no tool: zero data), or null when n is not a valid tool.
   const ToolData *findTool(int n) const;
-  // Every section and key of the file as written, for consumers with their own settings
-  // (emitters read [emit.iso], [emit.sinumerik]).
+  // The [emit.NAME] tables as text, section "emit.NAME", nested keys dotted ("format.X"), for
+  // the emitters, which check their own keys.
   std::map<std::string, std::map<std::string, std::string>> sections;
 
   std::string get(const std::string &section, const std::string &key, const std::string &def = "") const;
@@ -53,9 +89,12 @@ struct Machine {
   static const Machine &builtinDefault();
   // The text of the embedded default description (`ncc machine --print-default`).
   static const char *builtinDefaultText();
-  // Parses description text; errors name the line.
-  static bool parse(const std::string &text, const std::string &name, Machine &out, std::string &err);
+  // Parses description text; on failure, every problem found, in file order.
+  static bool parse(const std::string &text, const std::string &name, Machine &out, std::vector<MachineError> &errors);
   // NAME is "default" or a path to a description file.
+  static bool load(const std::string &nameOrPath, Machine &out, std::vector<MachineError> &errors);
+  // The same with the problems as text, one "name:line:col: error: message" line each.
+  static bool parse(const std::string &text, const std::string &name, Machine &out, std::string &err);
   static bool load(const std::string &nameOrPath, Machine &out, std::string &err);
 };
 

@@ -48,11 +48,11 @@ std::map<int, ToolData> toolsTxt() {
   return out;
 }
 
-// The oracle machine (Inputs/oracle.machine) through the real machine-description parser.
+// The oracle machine (Inputs/oracle.toml) through the real machine-description parser.
 Machine oracleMachine() {
   Machine m;
   std::string err;
-  EXPECT_TRUE(Machine::load(oracleDir() + "/Inputs/oracle.machine", m, err)) << err;
+  EXPECT_TRUE(Machine::load(oracleDir() + "/Inputs/oracle.toml", m, err)) << err;
   return m;
 }
 

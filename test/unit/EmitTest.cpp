@@ -551,7 +551,7 @@ TEST(EmitBoth, StreamsToFile) {
 }
 
 TEST(EmitBoth, DefaultMillFileKeys) {
-  // The [emit.*] keys of runtime/machines/default-mill.ini (format.<LETTER>, program_header,
+  // The [emit.*] keys of runtime/machines/default-mill.toml (format.<LETTER>, program_header,
   // program_footer, block_numbers = true, block_every, line_ending).
   Stream s;
   s.move(RecordKind::Rapid, 1.23456, 0, 0);

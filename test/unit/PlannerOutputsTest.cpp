@@ -14,12 +14,12 @@ using namespace ncc;
 namespace {
 
 Machine trapezoidMachine() {
-  std::string text = "[machine]\nrapid_feed = 12000\nmax_feed = 10000\n";
+  std::string text = "schema = 1\n[machine]\nrapid_feed = 12000\nmax_feed = 10000\n";
   for (const char *ax : {"X", "Y", "Z"})
-    text += std::string("[axis.") + ax + "]\nmax_velocity = 60000\nmax_accel = 1000\n";
+    text += std::string("[axes.") + ax + "]\nmax_velocity = 60000\nmax_accel = 1000\n";
   Machine m;
   std::string err;
-  EXPECT_TRUE(Machine::parse(text, "t.ini", m, err)) << err;
+  EXPECT_TRUE(Machine::parse(text, "t.toml", m, err)) << err;
   return m;
 }
 

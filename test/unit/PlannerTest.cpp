@@ -11,14 +11,14 @@ namespace {
 
 // X/Y/Z 1000 mm/s^2; jerk as given (0 = trapezoid); feed cap 10000 mm/min.
 Machine testMachine(double jerk, double tolerance = 0.01, int lookahead = 32) {
-  std::string text = "[machine]\nrapid_feed = 12000\nmax_feed = 10000\nlookahead = " + std::to_string(lookahead) +
-                     "\npath_tolerance = " + std::to_string(tolerance) + "\n";
+  std::string text = "schema = 1\n[machine]\nrapid_feed = 12000\nmax_feed = 10000\nlookahead = " +
+                     std::to_string(lookahead) + "\npath_tolerance = " + std::to_string(tolerance) + "\n";
   for (const char *ax : {"X", "Y", "Z"})
-    text += std::string("[axis.") + ax + "]\nmax_velocity = 60000\nmax_accel = 1000\nmax_jerk = " +
+    text += std::string("[axes.") + ax + "]\nmax_velocity = 60000\nmax_accel = 1000\nmax_jerk = " +
             std::to_string(jerk) + "\n";
   Machine m;
   std::string err;
-  EXPECT_TRUE(Machine::parse(text, "test.ini", m, err)) << err;
+  EXPECT_TRUE(Machine::parse(text, "test.toml", m, err)) << err;
   return m;
 }
 

@@ -1,4 +1,6 @@
 // ncc canon-diff and ncc machine.
+#include "backends/emit/ControllerTable.h"
+#include "backends/emit/Emitter.h"
 #include "runtime/CanonDiff.h"
 #include "utils/ncc/Driver.h"
 
@@ -58,11 +60,14 @@ int cmdMachine(int argc, char **argv) {
   }
   if (!check.empty()) {
     Machine m;
-    std::string err;
-    if (!Machine::load(check, m, err)) {
-      std::fprintf(stderr, "%s\n", err.c_str());
-      return kExitErrors;
+    if (!s.loadMachine(check, m)) return kExitErrors;
+    // The [emit.*] values as the emitters will read them (translate reports the same).
+    bool ok = true;
+    for (emit::Target t : {emit::Target::ISO, emit::Target::Sinumerik}) {
+      emit::ControllerStyle style = emit::defaultStyle(t);
+      ok = emit::applyMachineSection(m, style, s.diags) && ok;
     }
+    if (!ok) return kExitErrors;
     std::printf("%s: ok (machine '%s')\n", check.c_str(), m.name.c_str());
     return kExitOk;
   }

@@ -55,16 +55,23 @@ int parseArgs(int argc, char **argv, po::options_description &desc, po::position
 bool Session::setUp() {
   diags.setFormat(opts.diagnosticsFormat == "json" ? Diagnostics::Format::Json : Diagnostics::Format::Text);
   diags.setWarningsAsErrors(opts.werror);
-  std::string err;
-  if (!Machine::load(opts.machine, machine, err)) {
-    diags.error({}, fmt::format("cannot load machine '{}': {}", opts.machine, err));
-    return false;
-  }
+  if (!loadMachine(opts.machine, machine)) return false;
   if (opts.engine != "eval" && opts.engine != "jit") {
     diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));
     return false;
   }
   return true;
+}
+
+bool Session::loadMachine(const std::string &nameOrPath, Machine &out) {
+  std::vector<MachineError> errors;
+  if (Machine::load(nameOrPath, out, errors)) return true;
+  // Register the file only now, so that a good machine file adds no source to the session.
+  uint32_t f = errors[0].line ? sm.addFile(nameOrPath) : 0;
+  for (auto &e : errors)
+    diags.error(SourceLoc{f, e.line, e.col},
+                f ? e.message : fmt::format("cannot load machine '{}': {}", nameOrPath, e.message));
+  return false;
 }
 
 uint32_t Session::open(const std::string &path) {

@@ -13,7 +13,7 @@ root=$here/../..
 ncc=${1:-$root/build/utils/ncc}
 dir=${2:-/usr/share/linuxcnc/ncfiles}
 verbose=${3:-}
-machine=$root/test/lit/oracle/Inputs/oracle.machine
+machine=$root/test/lit/oracle/Inputs/oracle.toml
 command -v rs274 >/dev/null || { echo "ncfiles.sh: rs274 not found (apt-get install linuxcnc-uspace)" >&2; exit 2; }
 [ -d "$dir" ] || { echo "ncfiles.sh: no directory $dir" >&2; exit 2; }
 tmp=$(mktemp -d)

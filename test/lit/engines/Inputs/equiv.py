@@ -16,7 +16,7 @@ programs = sorted({p for pat in patterns for p in glob.glob(os.path.join(root, p
 
 def run(prog, engine):
     args = [ncc, "compile", prog, "--emit=motion", "--engine=" + engine, "--max-seconds=20"]
-    oracle = os.path.join(os.path.dirname(prog), "Inputs", "oracle.machine")
+    oracle = os.path.join(os.path.dirname(prog), "Inputs", "oracle.toml")
     if os.path.exists(oracle):
         args.append("--machine=" + oracle)
     p = subprocess.run(args, capture_output=True, text=True, timeout=120)
