@@ -290,11 +290,19 @@ private:
     }
   }
 
-  void checkSupported(const Op &op, const std::string &name) {
+  // Where an argument sits ("'move' argument 'X'"), formatted only when an error needs it: this
+  // check runs on every chunk of a streamed run.
+  struct Where {
+    std::string_view op, key;
+    std::string text() const { return fmt::format("'{}' argument '{}'", op, key); }
+    std::string operator+(const char *s) const { return text() + s; }
+  };
+
+  void checkSupported(const Op &op, const char *name) {
     for (auto &a : op.args) {
       const Expr *v = a.value.get();
       if (!v) continue;
-      std::string where = fmt::format("'{}' argument '{}'", name, a.key);
+      Where where{name, a.key};
       switch (argContext(op, a.key)) {
       case Ctx::Number: numericExpr(*v, op.loc, where); break;
       case Ctx::Text: stringExpr(*v, op.loc, where); break;
@@ -308,7 +316,7 @@ private:
       case Ctx::Var:
         if (v->kind != ExprKind::Var) break;  // reported by kVarRules
         if (v->space == VarSpace::System) {  // controller state: read-only
-          error(op.loc, fmt::format("{}: system variable '{}' is read-only", where, v->str));
+          error(op.loc, fmt::format("{}: system variable '{}' is read-only", where.text(), v->str));
           break;
         }
         if (variable(*v, op.loc, where) && !v->args.empty() && v->args[0]) numericExpr(*v->args[0], op.loc, where);
@@ -387,7 +395,7 @@ private:
   }
 
   // A string expression: string constants and concat; other operands are numbers.
-  bool stringExpr(const Expr &e, SourceLoc l, const std::string &where) {
+  bool stringExpr(const Expr &e, SourceLoc l, const Where &where) {
     if (e.kind == ExprKind::String) return true;
     if (e.kind == ExprKind::Binary && e.op == OpCode::Concat && e.args.size() == 2 && e.args[0] && e.args[1])
       return stringExpr(*e.args[0], l, where) && stringExpr(*e.args[1], l, where);
@@ -395,7 +403,7 @@ private:
   }
 
   // Reports the first problem of the expression only.
-  bool numericExpr(const Expr &e, SourceLoc l, const std::string &where) {
+  bool numericExpr(const Expr &e, SourceLoc l, const Where &where) {
     if (e.kind == ExprKind::String || e.kind == ExprKind::Symbol || (e.kind == ExprKind::Binary && e.op == OpCode::Concat)) {
       error(l, where + ": strings are supported only in message texts and call targets yet");
       return false;
@@ -406,10 +414,10 @@ private:
     return true;
   }
 
-  bool variable(const Expr &e, SourceLoc l, const std::string &where) {
+  bool variable(const Expr &e, SourceLoc l, const Where &where) {
     SysVar sv;
     if (e.space == VarSpace::System && !sysVarFromName(e.str, sv))
-      error(l, fmt::format("{}: system variable '${}' is not supported yet", where, e.str));
+      error(l, fmt::format("{}: system variable '${}' is not supported yet", where.text(), e.str));
     else if (e.space == VarSpace::QParam && e.str == "QS") error(l, where + ": QS string parameters are not supported yet");
     else return true;
     return false;

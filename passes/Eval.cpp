@@ -367,7 +367,7 @@ struct Evaluator::Impl {
       return globalNamed[it->second];
     }
     case VarSpace::System: {
-      if (write) fail(v.loc, fmt::format("system variable '{}' cannot be assigned", v.str));
+      if (write) fail(v.loc, fmt::format("system variable '{}' is read-only", v.str));
       static double value;
       SysVar sv;
       if (!sysVarFromName(v.str, sv) || !sink.readSystem(sv, value))
@@ -621,12 +621,13 @@ struct Evaluator::Impl {
   // its locals between chunks.
   Frame mainFrame;
   bool started = false;
+  bool trusted = false;  // skip verifyRunnable (trustInput)
 
   bool run(const Module &m) {
     module = &m;
     compiled.clear();  // a new module (or chunk) may reuse addresses of the last one
     if (m.functions.empty()) return true;
-    if (!verifyRunnable(m, diags)) return false;
+    if (!trusted && !verifyRunnable(m, diags)) return false;
     if (!started) {
       start = std::chrono::steady_clock::now();
       for (double &l : mainFrame.locals) l = vacantValue();
@@ -653,5 +654,7 @@ Evaluator::Evaluator(CmdSink &sink, Diagnostics &diags, const ExecLimits &limits
 Evaluator::~Evaluator() = default;
 bool Evaluator::run(const Module &m) { return impl_->run(m); }
 bool Evaluator::ended() const { return impl_->ended; }
+
+void Evaluator::trustInput(bool trusted) { impl_->trusted = trusted; }
 
 }  // namespace ncc

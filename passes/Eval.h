@@ -41,6 +41,9 @@ public:
   ~Evaluator();
   // Runs the module's entry function (functions[0]). Returns false on error.
   bool run(const ir::Module &m);
+  // The caller vouches that every module it runs is runnable (ir::verifyRunnable): the ISO
+  // block stream's flat chunks, checked in tests (NCC_VERIFY_CHUNKS) and by the fuzzers.
+  void trustInput(bool trusted);
   // True once the program reached M2/M30 (stop kind=end|end_rewind).
   bool ended() const;
 

@@ -167,7 +167,7 @@ Val Codegen::loadVar(const Expr &var) {
 
 void Codegen::storeVar(const Expr &var, Value *value) {
   if (var.space == VarSpace::System) {
-    fail(var.loc, fmt::format("system variable '{}' cannot be assigned", var.str));
+    fail(var.loc, fmt::format("system variable '{}' is read-only", var.str));
     return;
   }
   B.CreateStore(value, varPtr(var, true));
