@@ -48,7 +48,9 @@ enum class StopKind : uint8_t { Program, Optional, End, EndRewind };
 // Operator message (Sinumerik MSG, Fanuc #3006, LinuxCNC MSG) or LinuxCNC's DEBUG (to the trace),
 // PRINT (to stderr) and ABORT (stops the run). Numbers in DEBUG/PRINT/ABORT texts print "%f".
 enum class MessageKind : uint8_t { Msg, Debug, Print, Abort };
-enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20 };
+// G92.2 zeroes the G92 offsets but keeps them for G92.3 to restore; G28.1/G30.1 store the
+// current position as reference point 1/2.
+enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20, G92Suspend, G92Restore, StoreHome1, StoreHome2 };
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a
 // key given twice), so every key of the op fits.

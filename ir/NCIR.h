@@ -102,7 +102,7 @@ enum class OpKind : uint8_t {
   ToolLength,  // h=<int> (0 = cancel)
   CutterComp,  // side=off|left|right d=<int>?
   WorkOffset,  // index=<int> 1..9 (G54..)
-  SetOffset,   // kind=g92|g92_1|g10l2|g10l20 index=<int>? X Y Z… offsets and origin setting
+  SetOffset,   // kind=g92|g92_1|g92_2|g92_3|g10l2|g10l20|g28_1|g30_1 index=<int>? X Y Z… offsets and origin setting
   Stop,        // kind=program|optional|end|end_rewind
   Aux,         // m=<int>  other M codes; h=/b= auxiliary values
   // data

@@ -30,7 +30,7 @@ const EnumRule kEnumRules[] = {
     {OpKind::CutterComp, "side", "off left right"},
     {OpKind::CutterComp, "d_default", "modal tool"},
     {OpKind::Message, "kind", "msg debug print abort"},
-    {OpKind::SetOffset, "kind", "g92 g92_1 g10l2 g10l20"},
+    {OpKind::SetOffset, "kind", "g92 g92_1 g92_2 g92_3 g10l2 g10l20 g28_1 g30_1"},
     {OpKind::Stop, "kind", "program optional end end_rewind"},
     {OpKind::Goto, "dir", "forward backward any"},
     {OpKind::Call, "frame", "new shared"},

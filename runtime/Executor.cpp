@@ -172,9 +172,19 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
 
 bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
-  if (kind == SetOffsetKind::G92Cancel) {
-    g92 = {};
+  switch (kind) {
+  case SetOffsetKind::G92Cancel:  // all axes, or those named (Fanuc G92.1 X0 Y0)
+    for (int i = 0; i < kAxes; ++i) {
+      if (c.mask & ((1u << kAxes) - 1) && !c.has((Word)i)) continue;
+      if (c.has((Word)i) && c.get((Word)i) != 0) return error("G92.1 axis values must be 0", "bad-number");
+      g92[i] = g92Saved[i] = 0;
+    }
     return true;
+  case SetOffsetKind::G92Suspend: g92 = {}; return true;
+  case SetOffsetKind::G92Restore: g92 = g92Saved; return true;
+  case SetOffsetKind::StoreHome1: home[0] = st.position; return true;
+  case SetOffsetKind::StoreHome2: home[1] = st.position; return true;
+  default: break;
   }
   if (kind == SetOffsetKind::G92) {
     // The current position becomes the programmed one: G92 absorbs the difference.
@@ -184,6 +194,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
         double before = rotated() ? f[i] : st.position[i] - g5x[st.workOffset - 1][i] - (i == 2 ? toolLength : 0.0);
         g92[i] = before - c.get((Word)i) * axisScale(i);
       }
+    g92Saved = g92;
     return true;
   }
   double p = c.get(Word::P);

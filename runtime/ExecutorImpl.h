@@ -12,6 +12,8 @@ namespace ncc {
 struct Executor::Impl {
   Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), comp(s) {
     g5x = m.workOffsets;
+    home[0] = m.home1;
+    home[1] = m.home2;
   }
   const Machine &machine;
   MotionSink &sink;
@@ -23,6 +25,8 @@ struct Executor::Impl {
   std::array<AxisVec, 9> g5x{};
   std::array<double, 9> g5xRotation{};  // degrees
   AxisVec g92{};
+  AxisVec g92Saved{};  // what G92.3 restores (G92.2 zeroes g92 only)
+  AxisVec home[2];     // G28 / G30 reference points (machine), G28.1 / G30.1 store them
   double toolLength = 0;
   double feedMM = 0;
   bool feedInBlock = false;  // an F word in the current block (inverse time needs one per move)  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)

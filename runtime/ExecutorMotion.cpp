@@ -214,7 +214,7 @@ bool Executor::Impl::execHome(const MachineCmd &c) {
   if (!moveTo(RecordKind::Rapid, target(c))) return false;
   // rs274 replaces the named axes' program coordinates by the reference point's: under a
   // rotated coordinate system G28 X moves along the program X axis (frameIn/frameOut).
-  const AxisVec home = frameIn(c.sub == 2 ? machine.home2 : machine.home1);
+  const AxisVec home = frameIn(this->home[c.sub == 2 ? 1 : 0]);
   bool any = c.mask & kAxisMask;
   AxisVec t = frameIn(st.position);
   for (int i = 0; i < kAxes; ++i)

@@ -11,7 +11,7 @@ namespace ncc::iso {
 enum class GKind : uint8_t {
   Mode,          // a mode op: group + value from the table
   Dwell,         // G4
-  SetOffset,     // G92 / G92.1 / G10 (setKind)
+  SetOffset,     // arg: 0 G10, 1 G92, 2 G92.1, 3 G92.2, 4 G92.3, 5 G28.1, 6 G30.1 (kSetOffsetKinds)
   Home,          // G28 (ref 1) / G30 (ref 2, or P)
   MachineCoord,  // G53
   CutterComp,    // G40 / G41 / G42 (arg: 0 off, 1 left, 2 right)

@@ -494,11 +494,15 @@ bool BlockLowerer::Block::coordinateOps() {
         op.set("R", take('R', Scale::None));
       }
     } else {
-      op.set("kind", Expr::symbol(nonModal->arg == 1 ? "g92" : "g92_1", loc));
+      static const char *kSetOffsetKinds[] = {"g10", "g92", "g92_1", "g92_2", "g92_3", "g28_1", "g30_1"};
+      op.set("kind", Expr::symbol(kSetOffsetKinds[nonModal->arg], loc));
     }
-    axisWords(op, kOffsetAxes);
+    // G10 and G92 take axis values; Fanuc's G92.1 X0 Y0 names the axes to reset; otherwise the
+    // block's axis words are a move in the current mode (rs274: `G92.1 X0` resets, then moves).
+    bool takesAxes = nonModal->arg <= 1 || (nonModal->arg == 2 && L.flavour_ == Flavour::Fanuc);
+    if (takesAxes) axisWords(op, kOffsetAxes);
     out.push_back(std::move(op));
-    axesTaken = true;
+    axesTaken = takesAxes;
   }
   if (nonModal && nonModal->kind == GKind::Home) {
     SourceLoc loc = gloc(GGroup::NonModal);
