@@ -18,4 +18,17 @@ inline double arithPow(double a, double b) { return std::pow(a, b); }
 // Integer division (Sinumerik DIV): truncates toward zero.
 inline double arithIDiv(double a, double b) { return std::trunc(a / b); }
 
+// Bitwise AND/OR/XOR (Fanuc Macro B, `[12 OR 3]` = 15) on integral operands below 2^53; NaN
+// when an operand is not such an integer (a run-time error in both engines).
+inline double arithBitwise(int op, double a, double b) {  // op: 0 and, 1 or, 2 xor
+  a = num(a), b = num(b);
+  if (a != std::trunc(a) || b != std::trunc(b) || std::fabs(a) > 9007199254740992.0 ||
+      std::fabs(b) > 9007199254740992.0)
+    return std::nan("");
+  long long x = (long long)a, y = (long long)b;
+  return (double)(op == 0 ? (x & y) : op == 1 ? (x | y) : (x ^ y));
+}
+// Fanuc FUP: the integer next away from zero (FUP[-1.2] = -2); LinuxCNC FUP is ceil.
+inline double arithAwayFromZero(double a) { return a < 0 ? std::floor(a) : std::ceil(a); }
+
 }  // namespace ncc

@@ -1,4 +1,5 @@
 #include "ir/Builtins.h"
+#include "ir/Arith.h"
 #include "ir/Value.h"
 
 #include <cmath>
@@ -26,6 +27,7 @@ double ncc_builtin_abs(const double *a) { return std::fabs(num(a[0])); }
 double ncc_builtin_round(const double *a) { return std::round(num(a[0])); }
 double ncc_builtin_fix(const double *a) { return std::floor(num(a[0])); }
 double ncc_builtin_fup(const double *a) { return std::ceil(num(a[0])); }
+double ncc_builtin_awayfromzero(const double *a) { return arithAwayFromZero(num(a[0])); }
 double ncc_builtin_trunc(const double *a) { return std::trunc(num(a[0])); }
 double ncc_builtin_ln(const double *a) { return std::log(num(a[0])); }
 double ncc_builtin_exp(const double *a) { return std::exp(num(a[0])); }
@@ -48,6 +50,7 @@ static const BuiltinInfo kBuiltins[] = {
     {"EXP", 1, ncc_builtin_exp, "ncc_builtin_exp"},       {"POT", 2, ncc_builtin_pow, "ncc_builtin_pow"},
     {"MINVAL", 2, ncc_builtin_min, "ncc_builtin_min"},    {"MAXVAL", 2, ncc_builtin_max, "ncc_builtin_max"},
     {"EXISTS", 1, ncc_builtin_exists, "ncc_builtin_exists"},
+    {"AWAYFROMZERO", 1, ncc_builtin_awayfromzero, "ncc_builtin_awayfromzero"},
 };
 
 const BuiltinInfo *builtinTable(unsigned &count) {

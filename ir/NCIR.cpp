@@ -13,7 +13,8 @@ const char *typeName(Type t) {
 
 const char *opCodeName(OpCode op) {
   static const char *names[] = {"none", "neg", "not", "add", "sub", "mul", "div", "mod", "pow", "idiv",
-                                "eq",   "ne",  "lt",  "le",  "gt",  "ge",  "and", "or",  "xor", "concat"};
+                                "eq",   "ne",  "lt",  "le",  "gt",  "ge",  "and", "or",  "xor", "concat",
+                                "band", "bor", "bxor"};
   return names[(unsigned)op];
 }
 

@@ -47,8 +47,10 @@ enum class OpCode : uint8_t {
   Add, Sub, Mul, Div, Mod, Pow,      // arithmetic
   IDiv,                              // integer division (Sinumerik DIV)
   Eq, Ne, Lt, Le, Gt, Ge,            // comparison (result Bool)
-  And, Or, Xor,                      // logical (Macro B also bitwise on integers)
+  And, Or, Xor,                      // logical: 1 or 0
   Concat,                            // string concatenation (Sinumerik <<)
+  BAnd, BOr, BXor,                   // bitwise on integers (Fanuc Macro B AND/OR/XOR in values)
+  // Keep BXor last: the text parser and the verifier take [Add, BXor] as the binary operators.
 };
 const char *opCodeName(OpCode op);  // "add", "lt", ...
 

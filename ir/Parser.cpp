@@ -476,7 +476,7 @@ private:
     next();
     OpCode op = OpCode::None;
     if (h.kind == Tok::Ident)
-      for (unsigned i = 1; i <= (unsigned)OpCode::Concat; ++i)
+      for (unsigned i = 1; i <= (unsigned)OpCode::BXor; ++i)
         if (h.text == opCodeName((OpCode)i)) op = (OpCode)i;
     if (op == OpCode::None) return Expr::call(h.text, std::move(args));
     if (args.size() == 1) return Expr::unary(op, std::move(args[0]));

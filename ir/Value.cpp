@@ -17,6 +17,10 @@ std::string fixedNumberText(double v) {
   return fmt::format("{:.6f}", isVacant(v) ? 0.0 : v);
 }
 
+std::string bitwiseOperandMessage(std::string_view op) {
+  return fmt::format("bitwise '{}' needs integer operands", op);
+}
+
 double unsetValue() {
   double d;
   std::memcpy(&d, &kUnsetBits, sizeof d);

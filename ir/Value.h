@@ -82,6 +82,8 @@ std::string fixedNumberText(double v);
 constexpr uint64_t kUnsetBits = 0x7ff8dead0000f00dull;
 double unsetValue();
 bool isUnset(double v);
+// The run-time error of a bitwise operator on a non-integer, the same in both engines.
+std::string bitwiseOperandMessage(std::string_view op);
 // A numeric callee is an ISO program number: n names the function "O<n>". False unless n is a
 // non-negative integer.
 bool programName(double v, std::string &out);

@@ -448,7 +448,7 @@ private:
         error(l, fmt::format("{}: unary '{}' with {} operand(s)", where, opCodeName(e->op), n));
       break;
     case ExprKind::Binary:
-      if (n != 2 || e->op < OpCode::Add || e->op > OpCode::Concat)
+      if (n != 2 || e->op < OpCode::Add || e->op > OpCode::BXor)
         error(l, fmt::format("{}: binary '{}' with {} operand(s)", where, opCodeName(e->op), n));
       break;
     case ExprKind::Call: {

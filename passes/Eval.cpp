@@ -407,6 +407,7 @@ struct Evaluator::Impl {
       switch (applyBinary(e.op, a, b, r)) {
       case OpStatus::Ok: return r;
       case OpStatus::DivByZero: fail(e.loc, "division by zero");
+      case OpStatus::NotInteger: fail(e.loc, bitwiseOperandMessage(opCodeName(e.op)));
       case OpStatus::NotNumeric:
         fail(e.loc, fmt::format("operator '{}' is not supported on numbers", opCodeName(e.op)));
       }

@@ -7,7 +7,7 @@
 
 namespace ncc {
 
-enum class OpStatus { Ok, DivByZero, NotNumeric };
+enum class OpStatus { Ok, DivByZero, NotNumeric, NotInteger };
 
 inline OpStatus applyBinary(ir::OpCode op, double a, double b, double &r) {
   using ir::OpCode;
@@ -37,6 +37,11 @@ inline OpStatus applyBinary(ir::OpCode op, double a, double b, double &r) {
   case OpCode::And: r = truthy(a) && truthy(b) ? 1.0 : 0.0; return OpStatus::Ok;
   case OpCode::Or: r = truthy(a) || truthy(b) ? 1.0 : 0.0; return OpStatus::Ok;
   case OpCode::Xor: r = truthy(a) != truthy(b) ? 1.0 : 0.0; return OpStatus::Ok;
+  case OpCode::BAnd:
+  case OpCode::BOr:
+  case OpCode::BXor:
+    r = arithBitwise((int)op - (int)OpCode::BAnd, a, b);
+    return std::isnan(r) ? OpStatus::NotInteger : OpStatus::Ok;
   default: return OpStatus::NotNumeric;
   }
 }

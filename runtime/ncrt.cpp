@@ -218,6 +218,7 @@ int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const 
 }
 
 double ncrt_mod(double a, double b) { return arithMod(a, b); }
+double ncrt_bitwise(int32_t op, double a, double b) { return arithBitwise(op, a, b); }
 double ncrt_idiv(double a, double b) { return arithIDiv(a, b); }
 double ncrt_pow(double a, double b) { return arithPow(a, b); }
 

@@ -106,6 +106,7 @@ int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const 
                     uint32_t file, uint32_t line, uint32_t col);
 /* Arithmetic of ir/Arith.h on num() operands (the divisor is checked by the caller). */
 double ncrt_mod(double a, double b);
+double ncrt_bitwise(int32_t op, double a, double b);  /* arithBitwise: NaN on non-integers */
 double ncrt_idiv(double a, double b);
 double ncrt_pow(double a, double b);
 

@@ -65,6 +65,7 @@ void Codegen::declareRuntime() {
   fMod = decl("ncrt_mod", dblTy, {dblTy, dblTy});
   fIDiv = decl("ncrt_idiv", dblTy, {dblTy, dblTy});
   fPow = decl("ncrt_pow", dblTy, {dblTy, dblTy});
+  fBitwise = decl("ncrt_bitwise", dblTy, {i32Ty, dblTy, dblTy});
   fUnset = decl("ncrt_unset", voidTy, {ptrTy, i64Ty});
   fStrClear = decl("ncrt_str_clear", voidTy, {ptrTy});
   fStrCat = decl("ncrt_str_cat", voidTy, {ptrTy, ptrTy});
@@ -74,7 +75,7 @@ void Codegen::declareRuntime() {
   fStr = decl("ncrt_str", ptrTy, {ptrTy});
   fCallee = decl("ncrt_callee", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty});
   // Pure arithmetic helpers: lets LLVM keep variables in registers across them.
-  for (auto *fc : {&fMod, &fIDiv, &fPow}) {
+  for (auto *fc : {&fMod, &fIDiv, &fPow, &fBitwise}) {
     auto *fn = cast<Function>(fc->getCallee());
     fn->setDoesNotAccessMemory();
     fn->setDoesNotThrow();

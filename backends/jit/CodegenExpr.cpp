@@ -259,6 +259,13 @@ Val Codegen::binary(const Expr &e) {
   case OpCode::And: return {toDouble(B.CreateAnd(truthy(a), truthy(b))), false};
   case OpCode::Or: return {toDouble(B.CreateOr(truthy(a), truthy(b))), false};
   case OpCode::Xor: return {toDouble(B.CreateXor(truthy(a), truthy(b))), false};
+  case OpCode::BAnd:
+  case OpCode::BOr:
+  case OpCode::BXor: {
+    Value *r = B.CreateCall(fBitwise, {B.getInt32((int)e.op - (int)OpCode::BAnd), numOf(a), numOf(b)});
+    failIf(B.CreateFCmpUNO(r, r), e.loc, bitwiseOperandMessage(ir::opCodeName(e.op)));
+    return {r, false};
+  }
   default: fail(e.loc, fmt::format("operator '{}' is not supported on numbers", ir::opCodeName(e.op))); break;
   }
   return {ConstantFP::get(dblTy, 0.0), false};

@@ -115,7 +115,7 @@ private:
   llvm::PointerType *ptrTy;
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
-  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow;
+  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;

@@ -101,6 +101,7 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_fault", &ncrt_fault);
   add("ncrt_poll", &ncrt_poll);
   add("ncrt_mod", &ncrt_mod);
+  add("ncrt_bitwise", &ncrt_bitwise);
   add("ncrt_idiv", &ncrt_idiv);
   add("ncrt_pow", &ncrt_pow);
   add("ncrt_unset", &ncrt_unset);

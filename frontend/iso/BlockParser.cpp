@@ -442,6 +442,40 @@ ir::ExprPtr namedParameter(std::string name, SourceLoc loc) {
   return Expr::var(space, std::move(name), nullptr, loc);
 }
 
+// Fanuc Macro B semantics, explicit in the IR: AND/OR/XOR are bitwise on integers in values
+// (`[12 OR 3]` = 15) and logical only where they join conditions of IF/WHILE; FIX truncates
+// toward zero and FUP rounds away from zero (LinuxCNC floors and ceils).
+static bool isLogical(const ir::Expr *e) {
+  using ir::OpCode;
+  return e && e->kind == ir::ExprKind::Binary &&
+         ((e->op >= OpCode::Eq && e->op <= OpCode::Ge) || e->op == OpCode::And || e->op == OpCode::Or ||
+          e->op == OpCode::Xor);
+}
+
+static void fanucSemantics(ir::Expr *e, bool condition) {
+  if (!e) return;
+  using ir::OpCode;
+  bool logicalOp = e->kind == ir::ExprKind::Binary && (e->op == OpCode::And || e->op == OpCode::Or || e->op == OpCode::Xor);
+  for (auto &a : e->args) fanucSemantics(a.get(), logicalOp && condition);
+  // Joining two truth values (comparisons, or AND/OR/XOR of them) stays logical anywhere.
+  bool joinsTruths = logicalOp && e->args.size() == 2 && isLogical(e->args[0].get()) && isLogical(e->args[1].get());
+  if (logicalOp && !condition && !joinsTruths)
+    e->op = e->op == OpCode::And ? OpCode::BAnd : e->op == OpCode::Or ? OpCode::BOr : OpCode::BXor;
+  if (e->kind == ir::ExprKind::Call && e->str == "FIX") e->str = "TRUNC";
+  if (e->kind == ir::ExprKind::Call && e->str == "FUP") e->str = "AWAYFROMZERO";
+}
+
+static void fanucSemantics(ParsedBlock &b) {
+  for (auto &w : b.words) fanucSemantics(w.expr.get(), false);
+  for (auto &a : b.assigns) {
+    fanucSemantics(a.target.get(), false);
+    fanucSemantics(a.value.get(), false);
+  }
+  fanucSemantics(b.cond.get(), true);
+  fanucSemantics(b.target.get(), false);
+  for (auto &a : b.oargs) fanucSemantics(a.get(), false);
+}
+
 bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out) {
   out.clear();
   begin_ = p_ = line.data();
@@ -459,6 +493,7 @@ bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, P
     return true;
   }
   bool ok = parseItems(out);
+  if (ok && flavour_ == Flavour::Fanuc) fanucSemantics(out);
   return ok && !failed_;
 }
 

@@ -159,7 +159,10 @@ static std::string exprOf(const char *src, Flavour fl = Flavour::Fanuc) {
 TEST(IsoExpr, FanucPrecedence) {
   EXPECT_EQ(exprOf("1+2*3"), "(add 1 (mul 2 3))");
   EXPECT_EQ(exprOf("1-2-3"), "(sub (sub 1 2) 3)");
-  EXPECT_EQ(exprOf("#1 AND #2 OR #3"), "(or (and #1 #2) #3)");
+  // Fanuc: AND/OR/XOR on values are bitwise; joining comparisons they stay logical.
+  EXPECT_EQ(exprOf("#1 AND #2 OR #3"), "(bor (band #1 #2) #3)");
+  EXPECT_EQ(exprOf("[#1 EQ 1] AND [#2 EQ 2]"), "(and (eq #1 1) (eq #2 2))");
+  EXPECT_EQ(exprOf("FIX[#1] + FUP[#2]"), "(add (TRUNC #1) (AWAYFROMZERO #2))");
   EXPECT_EQ(exprOf("#1 + 1 GT #2 * 2"), "(gt (add #1 1) (mul #2 2))");
   EXPECT_EQ(exprOf("7 MOD 3"), "(mod 7 3)");
   EXPECT_EQ(exprOf("-[#1]"), "(neg #1)");

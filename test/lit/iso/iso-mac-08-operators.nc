@@ -14,7 +14,7 @@
 ; CHECK: assign target=#1 value=(sub (add 1 (mul 2 3)) (div 4 2))
 ; CHECK: assign target=#2 value=(gt #1 3)
 ; CHECK: assign target=#3 value=(mul (add 1 2) 3)
-; CHECK: assign target=#4 value=(xor (or (and (mod 7 3) 1) 2) 3)
+; CHECK: assign target=#4 value=(bxor (bor (band (mod 7 3) 1) 2) 3)
 ; CHECK: assign target=#5 value=(eq #1 vacant)
 ; CHECK: assign target=#6 value=(or (or (and (ne #1 2) (ge #2 1)) (lt #3 4)) (le #4 5))
 ; CHECK: assign target=#7 value=(mul (neg #1) -2)
