@@ -180,7 +180,26 @@ static bool parseLoopId(BlockParser &, const char *&p, const char *end, int &id)
   return true;
 }
 
+// Fanuc Custom Macro B accepts the first two letters of a keyword or function for the whole
+// word (WH for WHILE, RO for ROUND, …). Two-letter words that are words of their own (IF, DO,
+// OR, EQ, NE, GT, GE, LT, LE, LN) are not abbreviations.
+static const struct {
+  const char *abbrev, *word;
+} kFanucAbbreviations[] = {
+    {"GO", "GOTO"}, {"TH", "THEN"}, {"WH", "WHILE"}, {"EN", "END"},  {"AN", "AND"},  {"XO", "XOR"},
+    {"MO", "MOD"},  {"SI", "SIN"},  {"CO", "COS"},   {"TA", "TAN"},  {"AS", "ASIN"}, {"AC", "ACOS"},
+    {"AT", "ATAN"}, {"SQ", "SQRT"}, {"AB", "ABS"},   {"RO", "ROUND"}, {"FI", "FIX"}, {"FU", "FUP"},
+    {"EX", "EXP"}};
+
+std::string_view BlockParser::keyword(std::string_view w) const {
+  if (flavour_ == Flavour::Fanuc && w.size() == 2)
+    for (auto &a : kFanucAbbreviations)
+      if (equalsUpper(w, a.abbrev)) return a.word;
+  return w;
+}
+
 bool BlockParser::parseStatement(std::string_view kw, const char *at, ParsedBlock &out) {
+  kw = keyword(kw);
   if (out.stmt != StmtKind::None) return fail(at, "only one macro statement is allowed per block");
   out.stmtLoc = locAt(at);
   auto gotoTarget = [&]() -> bool {
@@ -207,7 +226,7 @@ bool BlockParser::parseStatement(std::string_view kw, const char *at, ParsedBloc
     if (!out.cond) return false;
     skipBlanks();
     const char *k = p_;
-    std::string_view next = readLetters();
+    std::string_view next = keyword(readLetters());
     if (equalsUpper(next, "GOTO")) {
       out.stmt = StmtKind::IfGoto;
       return gotoTarget();
@@ -547,7 +566,7 @@ bool BlockParser::binaryOp(int &prec, OpCode &op, const char *&after) {
   if (!isLetter(c)) return false;
   const char *q = p_;
   while (q < end_ && isLetter(*q)) ++q;
-  std::string_view w(p_, (size_t)(q - p_));
+  std::string_view w = keyword(std::string_view(p_, (size_t)(q - p_)));
   static const struct {
     const char *name;
     OpCode op;
@@ -640,7 +659,7 @@ ExprPtr BlockParser::parsePrimary() {
     return e;
   }
   if (isLetter(c)) {
-    std::string name = toUpper(readLetters());
+    std::string name = toUpper(keyword(readLetters()));
     return parseFunction(std::move(name), at);
   }
   fail(at, "expected a value, found " + showChar(c));

@@ -140,6 +140,8 @@ private:
   ir::ExprPtr parseVariable();  // after '#'
   ir::ExprPtr parseFunction(std::string name, const char *at);
   bool binaryOp(int &prec, ir::OpCode &op, const char *&after);
+  // A Fanuc two-letter abbreviation's keyword (WH -> WHILE); otherwise the word itself.
+  std::string_view keyword(std::string_view w) const;
 };
 
 }  // namespace ncc::iso
