@@ -395,6 +395,13 @@ bool BlockParser::parseItems(ParsedBlock &out) {
       if (!parseAssign(out)) return false;
       continue;
     }
+    if (c == ':' && flavour_ == Flavour::Fanuc && nothingYet()) {  // Fanuc `:0100` = O0100
+      ++p_;
+      if (p_ >= end_ || !isDigit(*p_)) return fail(at, "':' (program number) needs a number");
+      if (!parseOWord(out, at)) return false;
+      if (out.programNumber < 0) return fail(at, "':' gives a program number only (:1234)");
+      continue;
+    }
     if (c == '$' && flavour_ == Flavour::RS274) {  // spindle selection: ncc has one spindle
       ++p_;
       IsoWord w;

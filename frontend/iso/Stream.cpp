@@ -24,7 +24,7 @@ bool isoIsStreamable(std::string_view text) {
       ++q;
       while (q < le && ((*q >= '0' && *q <= '9') || *q == ' ')) ++q;
     }
-    if (q < le && up(*q) == 'O') {
+    if (q < le && (up(*q) == 'O' || *q == ':')) {  // O1234 or Fanuc :1234
       if (seenContent) return false;  // subprogram or RS274 o-word
       const char *r = q + 1;
       while (r < le && ((*r >= '0' && *r <= '9') || *r == ' ' || *r == '\t' || *r == '\r')) ++r;
