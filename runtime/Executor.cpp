@@ -82,9 +82,7 @@ const ToolData *Executor::Impl::tool(double n, const char *word) {
 }
 
 bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
-  // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
-  bool described = machine.axes[0].present || machine.axes[1].present || machine.axes[2].present;
-  for (int i = 0; i < kAxes && described; ++i)
+  for (int i = 0; i < kAxes && axesDescribed; ++i)
     if (c.has((Word)i) && !machine.axes[i].present)
       return error(std::string(1, kWordLetters[i]) + " word used, but the machine has no " + kWordLetters[i] +
                        " axis",
@@ -175,7 +173,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   switch (kind) {
   case SetOffsetKind::G92Cancel:  // all axes, or those named (Fanuc G92.1 X0 Y0)
     for (int i = 0; i < kAxes; ++i) {
-      if (c.mask & ((1u << kAxes) - 1) && !c.has((Word)i)) continue;
+      if ((c.mask & kAxisMask) && !c.has((Word)i)) continue;
       if (c.has((Word)i) && c.get((Word)i) != 0) return error("G92.1 axis values must be 0", "bad-number");
       g92[i] = g92Saved[i] = 0;
     }

@@ -9,12 +9,17 @@
 
 namespace ncc {
 
+constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // the X Y Z A B C words of a MachineCmd
+
 struct Executor::Impl {
   Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), comp(s) {
     g5x = m.workOffsets;
     home[0] = m.home1;
     home[1] = m.home2;
+    // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
+    axesDescribed = m.axes[0].present || m.axes[1].present || m.axes[2].present;
   }
+  bool axesDescribed = true;
   const Machine &machine;
   MotionSink &sink;
   Diagnostics &diags;

@@ -31,7 +31,6 @@ constexpr ArcAxes kArcAxes[] = {
 constexpr double kArcRelTolerance = 0.001;
 constexpr double kArcAbsTolMM = 0.02 * M_SQRT2, kArcAbsTolInch = 0.002 * M_SQRT2;
 
-constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // X Y Z A B C words
 // Words that give a move a target: the axes and RS274NGC's polar @ ^.
 const uint32_t kTargetMask = kAxisMask | wordBit(Word::PolarR) | wordBit(Word::PolarA);
 

@@ -459,7 +459,11 @@ bool BlockParser::parseItems(ParsedBlock &out) {
   return true;
 }
 
-ir::ExprPtr namedParameter(std::string name, SourceLoc loc) {
+ir::ExprPtr namedParameter(std::string_view raw, SourceLoc loc) {
+  std::string name;  // names are case-insensitive and blanks do not count
+  for (char c : raw)
+    if (!isBlank(c)) name.push_back((char)std::tolower((unsigned char)c));
+  if (name.empty()) return nullptr;
   // LinuxCNC's predefined parameters (#<_metric>, #<_x>, …) are controller state.
   SysVar sv;
   auto space = sysVarFromName(name, sv) ? ir::VarSpace::System
@@ -705,17 +709,14 @@ ExprPtr BlockParser::parseVariable() {
   }
   if (*p_ == '<' && flavour_ == Flavour::RS274) {
     const char *b = ++p_;
-    std::string name;
-    while (p_ < end_ && *p_ != '>') {
-      if (!isBlank(*p_)) name.push_back((char)std::tolower((unsigned char)*p_));
-      ++p_;
-    }
-    if (p_ >= end_ || name.empty()) {
-      fail(b - 1, "unterminated parameter name: missing '>'");
+    while (p_ < end_ && *p_ != '>') ++p_;
+    ExprPtr e = p_ < end_ ? namedParameter(std::string_view(b, (size_t)(p_ - b)), locAt(at)) : nullptr;
+    if (!e) {
+      fail(b - 1, p_ < end_ ? "empty parameter name: #<>" : "unterminated parameter name: missing '>'");
       return nullptr;
     }
     ++p_;
-    return namedParameter(std::move(name), locAt(at));
+    return e;
   }
   fail(p_, "'#' needs a variable number");
   return nullptr;

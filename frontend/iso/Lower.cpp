@@ -83,11 +83,12 @@ static ExprPtr substituted(const std::string &text, SourceLoc loc) {
       i = j - 1;
     } else if (text[i] == '#' && i + 1 < text.size() && text[i + 1] == '<' && text.find('>', i) != std::string::npos) {
       size_t close = text.find('>', i);
-      std::string name;
-      for (size_t k = i + 2; k < close; ++k)
-        if (text[k] != ' ' && text[k] != '\t') name.push_back((char)std::tolower((unsigned char)text[k]));
-      flush();
-      append(namedParameter(name, loc));
+      if (ExprPtr p = namedParameter(std::string_view(text).substr(i + 2, close - i - 2), loc)) {
+        flush();
+        append(std::move(p));
+      } else {
+        lit += "######";  // rs274 prints an empty name as an unknown parameter
+      }
       i = close;
     } else {
       lit.push_back(text[i]);
@@ -123,15 +124,16 @@ struct BlockLowerer::Block {
     static int slot(char c) { return c == '@' ? 26 : c == '^' ? 27 : c - 'A'; }
     static char letter(int slot) { return slot == 26 ? '@' : slot == 27 ? '^' : (char)('A' + slot); }
     static uint32_t bit(char c) { return 1u << slot(c); }
+    static uint32_t bits(const char *letters) {
+      uint32_t m = 0;
+      for (; *letters; ++letters) m |= bit(*letters);
+      return m;
+    }
     IsoWord *w[28] = {};
     uint32_t used = 0, present = 0;
     IsoWord *get(char c) { return w[slot(c)]; }
     bool has(char c) const { return w[slot(c)] != nullptr; }
-    bool hasAny(const char *letters) const {
-      uint32_t m = 0;
-      for (; *letters; ++letters) m |= bit(*letters);
-      return (present & m) != 0;
-    }
+    bool hasAny(const char *letters) const { return (present & bits(letters)) != 0; }
   };
 
   BlockLowerer &L;
@@ -413,9 +415,7 @@ bool BlockLowerer::Block::setup() {
     }
     // 808D ISO (spec ISO-LEX-11, manual L2111): a dwell is programmed in a block of its own.
     // rs274 runs a dwell and the block's motion, the dwell first.
-    uint32_t axisBits = 0;
-    for (char a : std::string_view("XYZABCUVW")) axisBits |= 1u << (a - 'A');
-    if (L.flavour_ == Flavour::Fanuc && (G(GGroup::Motion) || (bw.present & ~bw.used & axisBits))) {
+    if (L.flavour_ == Flavour::Fanuc && (G(GGroup::Motion) || (bw.present & ~bw.used & Words::bits(kAxes)))) {
       L.diags_.error(loc, "G4 must be programmed in a block of its own (no motion in a dwell block)",
                      "dwell-with-motion");
       return false;

@@ -96,9 +96,9 @@ struct ParsedBlock {
   }
 };
 
-// `#<name>` (name lower case, blanks removed): a predefined LinuxCNC parameter (System), a
-// global `_name`, or a local.
-ir::ExprPtr namedParameter(std::string name, SourceLoc loc);
+// `#<name>` (the text between < and >; case and blanks do not count): a predefined LinuxCNC
+// parameter (System), a global `_name`, or a local. Null for an empty name.
+ir::ExprPtr namedParameter(std::string_view name, SourceLoc loc);
 
 // Turns one line into a ParsedBlock. Reports syntax errors and returns false (the block is then
 // dropped by the caller).
