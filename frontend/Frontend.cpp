@@ -60,6 +60,8 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.decimalMode = o.decimalMode;
   io.blockDeleteMask = o.blockDeleteMask;
   io.searchDirs = o.searchDirs;
+  io.axesScaleEnable = o.axesScaleEnable;
+  io.scaleWeighting = o.scaleWeighting;
   return io;
 }
 

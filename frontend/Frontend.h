@@ -13,6 +13,8 @@ struct FrontendOptions {
   std::string decimalMode = "calculator";  // numbers without '.', see docs/MACHINE.md
   unsigned blockDeleteMask = 0;            // active block-delete levels (bit n = /n)
   std::vector<std::string> searchDirs;     // where called subprogram files are looked up
+  bool axesScaleEnable = false;            // ISO G51: per-axis factors I J K (else P), machine [controller]
+  double scaleWeighting = 0.001;           // ISO G51: unit of the factors
 };
 
 // What a file holds: a dialect, or textual NC IR.

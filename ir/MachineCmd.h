@@ -41,6 +41,7 @@ enum class CmdKind : uint8_t {
   SetOffset,    // sub: SetOffsetKind; index in w[P]; values in mask words
   Stop,         // sub: StopKind
   Aux,          // w[P] the M number (or other aux value); sub: letter ('M', 'B', 'H')
+  Frame,        // sub: FrameSlot; sub2: FrameAction | FrameFlag bits; values in mask words
   Count
 };
 
@@ -50,7 +51,15 @@ enum class StopKind : uint8_t { Program, Optional, End, EndRewind };
 enum class MessageKind : uint8_t { Msg, Debug, Print, Abort };
 // G92.2 zeroes the G92 offsets but keeps them for G92.3 to restore; G28.1/G30.1 store the
 // current position as reference point 1/2.
-enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20, G92Suspend, G92Restore, StoreHome1, StoreHome2 };
+// G52 in RS274NGC sets the G92 offsets of the named axes (LinuxCNC keeps both in one register).
+enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20, G92Suspend, G92Restore, StoreHome1, StoreHome2, G52 };
+// The programmable frame (runtime/Frame.h): its slots, what a `frame` op does to one, and how a
+// rotation reads its words. form=plane is the ISO 2-D G68 (about the active plane's normal axis,
+// R absolute or incremental by G90/G91, an omitted centre word = the current position); form=axis
+// the 3-D G68 (about the vector I J K, R absolute, an omitted centre word = 0).
+enum class FrameSlot : uint8_t { Local, Rotation, Scale, Mirror, Count };
+enum class FrameAction : uint8_t { Cancel, Set };
+constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a
 // key given twice), so every key of the op fits.

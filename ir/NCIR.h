@@ -104,9 +104,11 @@ enum class OpKind : uint8_t {
   ToolLength,  // h=<int> (0 = cancel)
   CutterComp,  // side=off|left|right d=<int>?
   WorkOffset,  // index=<int> 1..9 (G54..)
-  SetOffset,   // kind=g92|g92_1|g92_2|g92_3|g10l2|g10l20|g28_1|g30_1 index=<int>? X Y Z… offsets and origin setting
+  SetOffset,   // kind=g92|g92_1|g92_2|g92_3|g10l2|g10l20|g28_1|g30_1|g52 index=<int>? X Y Z… offsets and origin setting
   Stop,        // kind=program|optional|end|end_rewind
   Aux,         // m=<int>  other M codes; h=/b= auxiliary values
+  Frame,       // slot=local|rotation|scale|mirror action=set|cancel form=plane|axis? X Y Z I J K R
+               //   a programmable frame slot (ISO G52 G68 G51 G51.1, see docs/IR.md)
   // data
   Declare,     // var=<var> type=<symbol> init=<expr>?
   Assign,      // target=<var> value=<expr>

@@ -13,7 +13,7 @@ bool isMachineOp(OpKind k) {
   case OpKind::Feed: case OpKind::Speed: case OpKind::ToolSelect: case OpKind::ToolChange:
   case OpKind::Spindle: case OpKind::Coolant: case OpKind::Dwell: case OpKind::Move:
   case OpKind::Home: case OpKind::MachineMove: case OpKind::ToolLength: case OpKind::CutterComp:
-  case OpKind::WorkOffset: case OpKind::SetOffset: case OpKind::Stop: case OpKind::Aux:
+  case OpKind::WorkOffset: case OpKind::SetOffset: case OpKind::Stop: case OpKind::Aux: case OpKind::Frame:
     return true;
   default:
     return false;
@@ -43,6 +43,15 @@ static const SymbolCode kSymbols[] = {
     {OpKind::SetOffset, "kind", "g30_1", (uint8_t)SetOffsetKind::StoreHome2},
     {OpKind::SetOffset, "kind", "g10l2", (uint8_t)SetOffsetKind::G10L2},
     {OpKind::SetOffset, "kind", "g10l20", (uint8_t)SetOffsetKind::G10L20},
+    {OpKind::SetOffset, "kind", "g52", (uint8_t)SetOffsetKind::G52},
+    {OpKind::Frame, "slot", "local", (uint8_t)FrameSlot::Local},
+    {OpKind::Frame, "slot", "rotation", (uint8_t)FrameSlot::Rotation},
+    {OpKind::Frame, "slot", "scale", (uint8_t)FrameSlot::Scale},
+    {OpKind::Frame, "slot", "mirror", (uint8_t)FrameSlot::Mirror},
+    {OpKind::Frame, "action", "cancel", (uint8_t)FrameAction::Cancel},
+    {OpKind::Frame, "action", "set", (uint8_t)FrameAction::Set},
+    {OpKind::Frame, "form", "plane", 0},
+    {OpKind::Frame, "form", "axis", kFrameFormAxis},
     {OpKind::Message, "kind", "msg", (uint8_t)MessageKind::Msg},
     {OpKind::Message, "kind", "debug", (uint8_t)MessageKind::Debug},
     {OpKind::Message, "kind", "print", (uint8_t)MessageKind::Print},
@@ -95,6 +104,7 @@ static CmdKind cmdKindOf(OpKind k) {
   case OpKind::SetOffset: return CmdKind::SetOffset;
   case OpKind::Stop: return CmdKind::Stop;
   case OpKind::Aux: return CmdKind::Aux;
+  case OpKind::Frame: return CmdKind::Frame;
   default: return CmdKind::Count;
   }
 }
@@ -173,6 +183,12 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   case OpKind::SetOffset:
     if (!symbolArg("kind", c.sub)) return false;
     break;
+  case OpKind::Frame: {
+    uint8_t action = 0, form = 0;
+    if (!symbolArg("slot", c.sub) || !symbolArg("action", action) || !symbolArg("form", form)) return false;
+    c.sub2 = action | form;
+    break;
+  }
   case OpKind::WorkOffset: {
     double v = 1;
     if (!constNumber(op.get("index"), v) || v < 1 || v > 9) {
@@ -214,7 +230,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   // Scalar words: named keys per the table, axis/parameter letters for motion ops.
   bool letters = op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-                 op.kind == OpKind::SetOffset;
+                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame;
   for (auto &a : op.args) {
     Word w;
     if (letters && a.key.size() == 1 && wordFromLetter(a.key[0], w)) {
@@ -232,7 +248,8 @@ Op cmdToOp(const MachineCmd &c) {
                                  OpKind::Feed, OpKind::Speed, OpKind::ToolSelect, OpKind::ToolChange,
                                  OpKind::Spindle, OpKind::Coolant, OpKind::Dwell, OpKind::Move,
                                  OpKind::Home, OpKind::MachineMove, OpKind::ToolLength, OpKind::CutterComp,
-                                 OpKind::WorkOffset, OpKind::SetOffset, OpKind::Stop, OpKind::Aux};
+                                 OpKind::WorkOffset, OpKind::SetOffset, OpKind::Stop, OpKind::Aux,
+                                 OpKind::Frame};
   static_assert(sizeof(kinds) / sizeof(kinds[0]) == (size_t)CmdKind::Count);
   Op op(kinds[(unsigned)c.kind], c.loc);
   auto real = [](double v) { return Expr::number(v, Type::Real); };
@@ -258,6 +275,12 @@ Op cmdToOp(const MachineCmd &c) {
     if (c.sub2) op.set("d_default", Expr::symbol(symbolFor(op.kind, "d_default", c.sub2)));
     break;
   case CmdKind::SetOffset: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); break;
+  case CmdKind::Frame:
+    op.set("slot", Expr::symbol(symbolFor(op.kind, "slot", c.sub)));
+    op.set("action", Expr::symbol(symbolFor(op.kind, "action", c.sub2 & 0x0f)));
+    if (c.sub == (uint8_t)FrameSlot::Rotation && (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set)
+      op.set("form", Expr::symbol(symbolFor(op.kind, "form", c.sub2 & kFrameFormAxis)));
+    break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;
   case CmdKind::Home: op.set("ref", Expr::number(c.sub, Type::Int)); break;
@@ -276,7 +299,7 @@ Op cmdToOp(const MachineCmd &c) {
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }
   if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-      op.kind == OpKind::SetOffset)
+      op.kind == OpKind::SetOffset || op.kind == OpKind::Frame)
     for (int i = 0; i < kWords; ++i) {
       Word w = (Word)i;
       if (!c.has(w)) continue;

@@ -32,21 +32,49 @@ static void rotateXY(AxisVec &p, double degrees) {
 }
 
 AxisVec Executor::Impl::frameIn(const AxisVec &m) const {
-  if (!rotated()) return m;
+  if (!linearFrame()) return m;
   AxisVec f;
   const AxisVec &o = g5x[st.workOffset - 1];
   for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - (i == 2 ? toolLength : 0.0);
-  rotateXY(f, -rotation());
-  return f;
+  if (rotated()) rotateXY(f, -rotation());
+  if (!pf.linear) return f;
+  for (int i = 0; i < kAxes; ++i) f[i] -= g92[i];
+  return pf.in(f);
 }
 
 AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
-  if (!rotated()) return f;
+  if (!linearFrame()) return f;
   AxisVec m = f;
-  rotateXY(m, rotation());
+  if (pf.linear) {
+    m = pf.out(f);
+    for (int i = 0; i < kAxes; ++i) m[i] += g92[i];
+  }
+  if (rotated()) rotateXY(m, rotation());
   const AxisVec &o = g5x[st.workOffset - 1];
   for (int i = 0; i < kAxes; ++i) m[i] += o[i] + (i == 2 ? toolLength : 0.0);
   return m;
+}
+
+bool Executor::Impl::frameForbids(const char *what) {
+  if (!pf.linear) return true;
+  return error(std::string(what) + " is not allowed while a programmable rotation, scaling or mirror (G68, G51, "
+                                   "G51.1) is active",
+               "frame-conflict");
+}
+
+bool Executor::Impl::frameKeepsPlane(Plane pl, bool &flip) const {
+  flip = false;
+  if (!linearFrame()) return true;
+  if (rotated()) return pl == Plane::XY;  // rs274's Rz (pf is never linear with it: no G68 in .ngc)
+  static const int kA1[] = {0, 2, 1}, kA2[] = {1, 0, 2}, kD[] = {2, 1, 0};
+  int a1 = kA1[(int)pl], a2 = kA2[(int)pl], d = kD[(int)pl];
+  const auto &m = pf.composite.m;
+  if (m[d][a1] != 0 || m[d][a2] != 0 || m[a1][d] != 0 || m[a2][d] != 0) return false;
+  double n1 = m[a1][a1] * m[a1][a1] + m[a2][a1] * m[a2][a1], n2 = m[a1][a2] * m[a1][a2] + m[a2][a2] * m[a2][a2];
+  double dot = m[a1][a1] * m[a1][a2] + m[a2][a1] * m[a2][a2];
+  if (std::fabs(n1 - n2) > 1e-12 * std::max(n1, n2) || std::fabs(dot) > 1e-12 * std::max(n1, n2)) return false;
+  flip = m[a1][a1] * m[a2][a2] - m[a1][a2] * m[a2][a1] < 0;
+  return true;
 }
 
 AxisVec Executor::Impl::target(const MachineCmd &c) const {
@@ -171,12 +199,18 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
 bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
   switch (kind) {
-  case SetOffsetKind::G92Cancel:  // all axes, or those named (Fanuc G92.1 X0 Y0)
+  case SetOffsetKind::G92Cancel:  // all axes, or those named (Fanuc G92.1 X0 Y0); G52 too
+    if (!frameForbids("G92.1")) return false;
     for (int i = 0; i < kAxes; ++i) {
       if ((c.mask & kAxisMask) && !c.has((Word)i)) continue;
       if (c.has((Word)i) && c.get((Word)i) != 0) return error("G92.1 axis values must be 0", "bad-number");
-      g92[i] = g92Saved[i] = 0;
+      g92[i] = g92Saved[i] = pf.local[i] = 0;
     }
+    pf.update();
+    return true;
+  case SetOffsetKind::G52:  // rs274: the named axes' G92 offsets (one register for G52 and G92)
+    for (int i = 0; i < kAxes; ++i)
+      if (c.has((Word)i)) g92[i] = g92Saved[i] = c.get((Word)i) * axisScale(i);
     return true;
   case SetOffsetKind::G92Suspend: g92 = {}; return true;
   case SetOffsetKind::G92Restore: g92 = g92Saved; return true;
@@ -185,14 +219,18 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   default: break;
   }
   if (kind == SetOffsetKind::G92) {
-    // The current position becomes the programmed one: G92 absorbs the difference.
+    // The current position becomes the programmed one: G92 absorbs the difference, and the
+    // local shift (G52) of the named axes (Fanuc; rs274 has no separate one).
+    if (!frameForbids("G92")) return false;
     AxisVec f = frameIn(st.position);
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i)) {
+        pf.local[i] = 0;
         double before = rotated() ? f[i] : st.position[i] - g5x[st.workOffset - 1][i] - (i == 2 ? toolLength : 0.0);
         g92[i] = before - c.get((Word)i) * axisScale(i);
       }
     g92Saved = g92;
+    pf.update();
     return true;
   }
   double p = c.get(Word::P);
@@ -207,13 +245,14 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     if (c.has(Word::R)) g5xRotation[n - 1] = c.get(Word::R);      // the system's XY rotation
     return true;
   }
+  if (!frameForbids("G10 L20")) return false;
   // L20: the current position gets program value v in system n; the other axes keep their
   // program position there (under the system's rotation, an X word moves the origin in Y too).
   double rot = g5xRotation[n - 1];
   if (rot == 0) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i))
-        sys[i] = st.position[i] - g92[i] - (i == 2 ? toolLength : 0.0) - c.get((Word)i) * axisScale(i);
+        sys[i] = st.position[i] - g92[i] - pf.local[i] - (i == 2 ? toolLength : 0.0) - c.get((Word)i) * axisScale(i);
     return true;
   }
   AxisVec rel;  // machine position less tool length and the system's origin
@@ -221,7 +260,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   AxisVec q = rel;
   rotateXY(q, -rot);  // program + G92 in system n
   for (int i = 0; i < kAxes; ++i)
-    if (c.has((Word)i)) q[i] = c.get((Word)i) * axisScale(i) + g92[i];
+    if (c.has((Word)i)) q[i] = c.get((Word)i) * axisScale(i) + g92[i] + pf.local[i];
   rotateXY(q, rot);
   for (int i = 0; i < kAxes; ++i) sys[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - q[i];
   return true;
@@ -254,9 +293,152 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
   double radius = cutterD == 0 ? 0 : t->radius;
   if (radius > 0 && plane() != Plane::XY)
     return error("cutter radius compensation is only supported in the XY plane (G17)", "cutcomp-plane");
+  // Compensation works on the machine path: a mirrored frame swaps the sides (G41 <-> G42, as
+  // the 808D manual's table 2-12 says); a frame that tilts the XY plane is not supported.
+  bool flip = false;
+  if (radius > 0 && !frameKeepsPlane(Plane::XY, flip))
+    return error("cutter radius compensation under a rotation that tilts the XY plane is not supported",
+                 "unsupported-code");
   st.cutterComp = c.sub;
   compExit = false;
-  if (radius > 0) comp.start(c.sub == 1 ? 1 : -1, radius, st.position);
+  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, st.position);
+  return true;
+}
+
+namespace {
+// The modal groups a controller may reset at M2/M30 (machine key [controller] reset) and what
+// resetting each means. The names are the machine file's (docs/MACHINE.md).
+struct ResetGroup {
+  const char *name;
+  uint32_t bit;
+  void (*reset)(Executor::Impl &x);
+};
+using X = Executor::Impl;
+const ResetGroup kResetGroups[] = {
+    {"motion", 1u << 0, [](X &x) { x.st.motion = ModeValue::Linear; }},
+    {"plane", 1u << 1, [](X &x) { x.st.plane = ModeValue::XY; }},
+    {"distance", 1u << 2, [](X &x) { x.st.distance = ModeValue::Absolute; }},
+    {"feed_mode", 1u << 3, [](X &x) { x.st.feedMode = ModeValue::PerMinute; }},
+    {"units", 1u << 4, [](X &x) { x.st.units = ModeValue::MM; }},
+    {"cutter_comp", 1u << 5, [](X &x) { x.st.cutterComp = 0; }},
+    {"tool_length", 1u << 6, [](X &x) { x.toolLength = 0, x.st.toolLengthH = 0; }},
+    {"work_offset", 1u << 7, [](X &x) { x.st.workOffset = 1; }},
+    {"g92", 1u << 8, [](X &x) { x.g92 = {}; }},
+    {"feed", 1u << 9, [](X &x) { x.st.feed = x.feedMM = 0; }},
+    {"spindle", 1u << 10, [](X &x) { x.st.spindle = 0; }},
+    {"coolant", 1u << 11, [](X &x) { x.st.flood = x.st.mist = false; }},
+    {"path_mode", 1u << 12, [](X &x) { x.st.pathMode = ModalState{}.pathMode; }},
+    {"rotation", 1u << 13, [](X &x) { x.pf.clearRotation(), x.pf.update(); }},
+    {"scaling", 1u << 14, [](X &x) { x.pf.clearScale(), x.pf.update(); }},
+    {"mirror", 1u << 15, [](X &x) { x.pf.clearMirror(), x.pf.update(); }},
+    {"local_offset", 1u << 16, [](X &x) { x.pf.local = {}, x.pf.update(); }},
+};
+}  // namespace
+
+uint32_t resetGroupMask(const std::vector<std::string> &groups) {
+  uint32_t mask = 0;
+  for (auto &name : groups)
+    for (auto &g : kResetGroups)
+      if (name == g.name) mask |= g.bit;
+  return mask;
+}
+
+bool Executor::Impl::execFrame(const MachineCmd &c) {
+  auto slot = (FrameSlot)c.sub;
+  bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
+  if (comp.active()) return error("Cannot change the programmable frame with cutter radius comp on", "cutcomp-conflict");
+  const AxisVec program = [&] {  // the current position in program coordinates
+    AxisVec f = frameIn(st.position);
+    for (int i = 0; i < kAxes; ++i) f[i] -= frameOffset(i);
+    return f;
+  }();
+  auto word = [&](int axis, double def) { return c.has((Word)axis) ? c.get((Word)axis) * axisScale(axis) : def; };
+  switch (slot) {
+  case FrameSlot::Local:  // G52: the named axes' shift (G52 X0 Y0 cancels); cancel = all
+    if (!frameForbids("G52")) return false;
+    for (int i = 0; i < kAxes; ++i)
+      if (!set || c.has((Word)i)) pf.local[i] = set ? c.get((Word)i) * axisScale(i) : 0;
+    break;
+  case FrameSlot::Rotation: {
+    if (!set) {
+      pf.clearRotation();
+      break;
+    }
+    if (pf.scaleOn || pf.mirrorOn())
+      return error("G68 together with scaling or mirroring (G51, G51.1) is not supported", "unsupported-code");
+    bool axisForm = c.sub2 & kFrameFormAxis;
+    static const int kA1[] = {0, 2, 1}, kA2[] = {1, 0, 2}, kD[] = {2, 1, 0};
+    const int pl = (int)plane();
+    double angle = c.has(Word::R) ? c.get(Word::R) : 0;  // R omitted: SD42150, 0 by default
+    Vec3 axis{}, centre{};
+    if (axisForm) {  // 3-D: about I J K through X Y Z (absolute, omitted = 0), R absolute
+      axis = {c.get(Word::I), c.get(Word::J), c.get(Word::K)};
+      if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0)
+        return error("G68 rotation vector I0 J0 K0 (808D alarm 12560: value outside the allowed limits)",
+                     "frame-invalid");
+      for (int i = 0; i < 3; ++i) centre[i] = word(i, 0);
+    } else {  // 2-D: about the plane's normal through the plane-axis words (omitted: here)
+      if (c.has((Word)kD[pl]))
+        return error(std::string("G68 in the ") + kWordLetters[kA1[pl]] + kWordLetters[kA2[pl]] + " plane takes no " +
+                         kWordLetters[kD[pl]] + " word (a 3-D rotation needs I J K)",
+                     "frame-invalid");
+      axis[kD[pl]] = 1;
+      centre = {program[0], program[1], program[2]};
+      centre[kA1[pl]] = word(kA1[pl], program[kA1[pl]]);
+      centre[kA2[pl]] = word(kA2[pl], program[kA2[pl]]);
+      if (st.distance == ModeValue::Incremental) {
+        if (pf.rotationLevels > 0)
+          return error("an incremental G68 R while a rotation is active is not supported: cancel it with G69 first",
+                       "unsupported-code");
+      }
+    }
+    if (pf.rotationLevels == 2)
+      return error("a third G68 rotation (two are active; cancel them with G69)", "frame-invalid");
+    // A G68 while one is active is the second level, in the rotated system (808D 2.4.1.10).
+    int level = pf.rotationLevels;
+    pf.rotation[level] = Affine::rotation(axis, angle, centre);
+    pf.rotationPlanar[level] = !axisForm;
+    pf.rotationLevels = level + 1;
+    break;
+  }
+  case FrameSlot::Scale: {
+    if (!set) {
+      pf.clearScale();
+      break;
+    }
+    if (pf.rotationLevels || pf.mirrorOn())
+      return error("G51 together with a rotation or mirror (G68, G51.1) is not supported", "unsupported-code");
+    // A G51 while scaling is on replaces it (the manual's example 2-20 does so).
+    Vec3 f{c.has(Word::I) ? c.get(Word::I) : 1, c.has(Word::J) ? c.get(Word::J) : 1,
+           c.has(Word::K) ? c.get(Word::K) : 1};
+    for (int i = 0; i < 3; ++i)
+      if (f[i] == 0 || std::fabs(f[i]) > 1e6) return error("G51 scale factor 0 or out of range", "frame-invalid");
+    pf.scaleOn = true;
+    pf.scaleFactors = f;
+    pf.scaleCentre = {word(0, 0), word(1, 0), word(2, 0)};  // absolute; omitted = workpiece zero
+    break;
+  }
+  case FrameSlot::Mirror: {
+    if (!set) {  // G50.1 X Y Z: those axes; no axis word: all
+      bool any = c.mask & 7u;
+      for (int i = 0; i < 3; ++i)
+        if (!any || c.has((Word)i)) pf.mirrorAxes[i] = 0, pf.mirrorAt[i] = 0;
+      break;
+    }
+    if (pf.rotationLevels || pf.scaleOn)
+      return error("G51.1 together with a rotation or scaling (G68, G51) is not supported", "unsupported-code");
+    if (st.distance == ModeValue::Incremental)
+      return error("G51.1 mirror positions are absolute: program it in G90", "frame-invalid");
+    for (int i = 3; i < kAxes; ++i)
+      if (c.has((Word)i)) return error("G51.1 mirrors X, Y and Z only", "frame-invalid");
+    if (!(c.mask & 7u)) return error("G51.1 needs the mirror position of an axis (X, Y or Z)", "missing-word");
+    for (int i = 0; i < 3; ++i)
+      if (c.has((Word)i)) pf.mirrorAxes[i] = 1, pf.mirrorAt[i] = c.get((Word)i) * axisScale(i);
+    break;
+  }
+  default: return error("bad frame slot", "bad-command");
+  }
+  pf.update();
   return true;
 }
 
@@ -271,16 +453,9 @@ bool Executor::Impl::execStop(const MachineCmd &c) {
     MotionRecord r = record(RecordKind::ProgramEnd);
     r.ivalue = (StopKind)c.sub == StopKind::EndRewind ? 30 : 2;
     emit(r);
-    // What M2/M30 reset in rs274 (G92, units and tool length stay).
-    st.workOffset = 1;
-    st.plane = ModeValue::XY;
-    st.feedMode = ModeValue::PerMinute;
-    st.distance = ModeValue::Absolute;
-    st.motion = ModeValue::Linear;
-    st.feed = feedMM = 0;
-    st.spindle = 0;
-    st.flood = st.mist = false;
-    st.cutterComp = 0;
+    // What M2/M30 reset: the machine's [controller] reset list (rs274's set by default).
+    for (const ResetGroup &g : kResetGroups)
+      if (resetMask & g.bit) g.reset(*this);
     initialLevelValid = false;
     lastCycle = ModeValue::CycleOff;
     st.ended = true;
@@ -419,8 +594,10 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::MachineMove: return x.execMachineMove(c);
   case CmdKind::ToolLength: return x.execToolLength(c);
   case CmdKind::CutterComp: return x.execCutterComp(c);
+  case CmdKind::Frame: return x.execFrame(c);
   case CmdKind::WorkOffset:
     if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
+    if (c.sub != x.st.workOffset && !x.frameForbids("changing the work offset")) return false;
     x.st.workOffset = c.sub;
     return true;
   case CmdKind::SetOffset: return x.execSetOffset(c);

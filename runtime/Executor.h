@@ -47,8 +47,9 @@ public:
   // Source blocks executed so far (a block in a loop counts each time it runs).
   uint64_t blockCount() const;
 
+  struct Impl;  // the state, shared by runtime/Executor*.cpp (ExecutorImpl.h)
+
 private:
-  struct Impl;
   Impl *impl_;
 };
 

@@ -52,6 +52,14 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   if (rotated() && pl != 0)
     return error("canned cycles outside the XY plane with a rotated coordinate system are not supported",
                  "unsupported-code");
+  if (pf.linear) {  // only a rotation about the drilling axis keeps the cycle's geometry
+    const auto &m = pf.composite.m;
+    bool flip = false;
+    if (!frameKeepsPlane(plane(), flip) || flip || m[d][d] != 1 || pf.scaleOn)
+      return error("canned cycles under scaling, mirroring or a rotation that tilts the drilling axis are not "
+                   "supported",
+                   "unsupported-code");
+  }
   bool peck = cyc == ModeValue::Peck || cyc == ModeValue::PeckChipBreak;
   if (peck && !haveQ) return error(std::string("Q word missing with ") + lower(code), "cycle-missing-word");
   int repeats = 1;

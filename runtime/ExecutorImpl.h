@@ -3,6 +3,7 @@
 #pragma once
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
+#include "runtime/Frame.h"
 #include "runtime/Executor.h"
 
 #include <vector>
@@ -11,6 +12,9 @@ namespace ncc {
 
 constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // the X Y Z A B C words of a MachineCmd
 
+// The [controller] reset list as bits (Executor.cpp: kResetGroups).
+uint32_t resetGroupMask(const std::vector<std::string> &groups);
+
 struct Executor::Impl {
   Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), comp(s) {
     g5x = m.workOffsets;
@@ -18,15 +22,19 @@ struct Executor::Impl {
     home[1] = m.home2;
     // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
     axesDescribed = m.axes[0].present || m.axes[1].present || m.axes[2].present;
+    resetMask = resetGroupMask(m.controller.reset);
   }
+  uint32_t resetMask = 0;  // what M2/M30 reset (the machine's [controller] reset list)
   bool axesDescribed = true;
   const Machine &machine;
   MotionSink &sink;
   Diagnostics &diags;
   ModalState st;
 
-  // Frame (rs274's order): machine = Rz(program + G92) + G5x (+ tool length on Z), all mm,
-  // where Rz is the XY rotation of the active coordinate system (G10 L2 R).
+  // Frame (runtime/Frame.h): machine = Rz(P(program) + G92) + G5x (+ tool length on Z), all
+  // mm, where P is the programmable frame (G52 G68 G51 G51.1) and Rz the XY rotation of the
+  // active coordinate system (G10 L2 R), rs274's order after P.
+  ProgrammableFrame pf;
   std::array<AxisVec, 9> g5x{};
   std::array<double, 9> g5xRotation{};  // degrees
   AxisVec g92{};
@@ -62,7 +70,7 @@ struct Executor::Impl {
   double scale() const { return st.units == ModeValue::Inch ? 25.4 : 1.0; }
   double axisScale(int axis) const { return axis < 3 ? scale() : 1.0; }
   double offset(int axis) const {
-    return g5x[st.workOffset - 1][axis] + g92[axis] + (axis == 2 ? toolLength : 0.0);
+    return g5x[st.workOffset - 1][axis] + g92[axis] + pf.local[axis] + (axis == 2 ? toolLength : 0.0);
   }
   double programPos(int axis) const { return st.position[axis] - offset(axis); }
   double rotation() const { return g5xRotation[st.workOffset - 1]; }
@@ -70,8 +78,12 @@ struct Executor::Impl {
   // (frameOffset = every offset), so unrotated programs compute exactly as before; with a
   // rotation it is the frame before Rz, where only G92 offsets. Targets, arc centres and
   // cycles are computed in it and mapped to the machine with frameOut.
+  // With a programmable mirror, scaling or rotation the offset frame is the program frame itself.
   bool rotated() const { return rotation() != 0; }
-  double frameOffset(int axis) const { return rotated() ? g92[axis] : offset(axis); }
+  bool linearFrame() const { return pf.linear || rotated(); }
+  double frameOffset(int axis) const {
+    return pf.linear ? 0.0 : rotated() ? g92[axis] + pf.local[axis] : offset(axis);
+  }
   AxisVec frameIn(const AxisVec &machinePos) const;
   AxisVec frameOut(const AxisVec &framePos) const;
   Plane plane() const;
@@ -92,6 +104,12 @@ struct Executor::Impl {
   bool execSetOffset(const MachineCmd &c);
   bool execStop(const MachineCmd &c);
   bool execCutterComp(const MachineCmd &c);
+  bool execFrame(const MachineCmd &c);
+  // Errors for what ncc does not do under a programmable mirror, scaling or rotation.
+  bool frameForbids(const char *what);
+  // The offset frame's plane `pl` maps onto the same machine plane with equal scale on both axes
+  // (so an arc stays a circle in that plane); `flip` when it mirrors the plane.
+  bool frameKeepsPlane(Plane pl, bool &flip) const;
   // Tool data of a T/H/D number; an error naming it when the machine has no such tool.
   const ToolData *tool(double n, const char *word);
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.

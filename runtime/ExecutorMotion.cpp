@@ -115,8 +115,10 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   const ArcAxes &ax = kArcAxes[(int)plane()];
   const char *code = cw ? "G2" : "G3";
   if (!checkFeed(code)) return false;
-  if (rotated() && plane() != Plane::XY)
-    return error("arcs outside the XY plane with a rotated coordinate system are not supported",
+  bool flip = false;  // a mirrored frame turns the arc the other way on the machine
+  if (!frameKeepsPlane(plane(), flip))
+    return error(rotated() ? "arcs outside the XY plane with a rotated coordinate system are not supported"
+                           : "an arc under a frame that tilts its plane or scales its axes unequally is not supported",
                  "unsupported-code");
   const AxisVec end = target(c);
   // Computed in the offset frame (ExecutorImpl.h): I J K and R are program values.
@@ -192,15 +194,20 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   centre[ax.a2] = c2;
   centre = frameOut(centre);
   r.center = {centre[0], centre[1], centre[2]};
-  r.turns = cw ? -turns : turns;
+  r.turns = cw != flip ? -turns : turns;
   r.exactStop = st.pathMode == ModeValue::ExactStop;
-  // Path length (for inverse-time feed): swept angle times radius, with the helix.
+  // Path length (for inverse-time feed): swept angle times radius, with the helix; on the
+  // machine (a scaled frame scales it).
   double a0 = std::atan2(s2 - c2, s1 - c1), a1 = std::atan2(e2 - c2, e1 - c1);
   double sweep = cw ? a0 - a1 : a1 - a0;
   if (sweep <= 1e-12) sweep += 2 * M_PI;
   sweep += 2 * M_PI * (turns - 1);
-  double radius = std::hypot(s1 - c1, s2 - c2);
-  r.feed = moveFeed(std::hypot(sweep * radius, end[ax.d] - start[ax.d]));
+  double radius = std::hypot(s1 - c1, s2 - c2), height = end[ax.d] - start[ax.d];
+  if (pf.linear) {
+    radius = std::hypot(st.position[ax.a1] - centre[ax.a1], st.position[ax.a2] - centre[ax.a2]);
+    height = end[ax.d] - st.position[ax.d];
+  }
+  r.feed = moveFeed(std::hypot(sweep * radius, height));
   inverseTimeRate(r.feed);
   st.position = end;
   return emitMove(r);
@@ -210,6 +217,7 @@ bool Executor::Impl::execHome(const MachineCmd &c) {
   // Rapid through the intermediate point (program coordinates), then the named axes (all when
   // none is named) to the stored reference position (machine coordinates).
   if (!compForbids("Cannot use g28 or g30 with cutter radius comp")) return false;
+  if (!frameForbids(c.sub == 2 ? "G30" : "G28")) return false;
   if (!moveTo(RecordKind::Rapid, target(c))) return false;
   // rs274 replaces the named axes' program coordinates by the reference point's: under a
   // rotated coordinate system G28 X moves along the program X axis (frameIn/frameOut).

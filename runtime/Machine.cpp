@@ -27,9 +27,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr const char *kAxisNames = "XYZABC";
 constexpr const char *kDialects = "iso fanuc linuxcnc sinumerik heidenhain cldata";
-// Modal groups a controller may reset at M2/M30 (the executor resets rs274's set today).
+// Modal groups a controller may reset at M2/M30 (the executor's table in runtime/Executor.cpp).
 constexpr const char *kResetGroups =
-    "motion plane distance feed_mode units cutter_comp tool_length work_offset g92 feed spindle coolant path_mode";
+    "motion plane distance feed_mode units cutter_comp tool_length work_offset g92 feed spindle coolant path_mode "
+    "rotation scaling mirror local_offset";
 
 struct Ctx {
   std::vector<MachineError> problems;
@@ -234,6 +235,8 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"r_params", &Controller::rParams, 0, 100000},
     {"q_params", &Controller::qParams, 0, 100000},
     {"real_tolerance", &Controller::realTolerance, 0, 1},
+    {"axes_scale_enable", &Controller::axesScaleEnable},
+    {"scale_weighting", &Controller::scaleWeighting, 1e-5, 1e-3},
     {"macro_calls", NodeReader(readMacroCalls)},
 };
 

@@ -43,10 +43,16 @@ struct Controller {
   std::string gcodeSystem = "A";     // Fanuc lathe G-code system A, B or C
   std::string plane = "G17";         // start-up plane G17, G18, G19
   bool diameterProgramming = false;  // lathe: X words are diameters
-  std::vector<std::string> reset;    // modal groups M2/M30 reset
+  // Modal groups M2/M30 reset; without the key, rs274's set (G92, units and tool length stay).
+  std::vector<std::string> reset = {"work_offset", "plane", "feed_mode", "distance", "motion",
+                                    "feed",        "spindle", "coolant", "cutter_comp"};
   int rParams = 100;                 // Sinumerik R0..R(n-1)
   int qParams = 2000;                // Heidenhain Q0..Q(n-1)
   double realTolerance = 1e-12;      // Sinumerik: relative tolerance of REAL = and <>
+  // ISO G51 scaling (808D MD22914 $MC_AXES_SCALE_ENABLE, MD22910 weighting): false = one factor
+  // P for all axes, true = per-axis factors I J K (a negative one mirrors); factor x weighting.
+  bool axesScaleEnable = false;
+  double scaleWeighting = 0.001;
   std::map<std::string, std::string> macroCalls;  // "M6" -> program called instead
 };
 

@@ -19,7 +19,8 @@ enum class GKind : uint8_t {
   WorkOffset,    // G54..G59.3 (arg: index)
   MacroCall,     // G65
   SubCall,       // G05 P<program> L<count>: subprogram call (808D); G05 without P, P0, P01 ignored
-  NoOp,          // cancels a function ncc does not model and is always off (G15, G50.1, G67, G69, G97, G291)
+  Frame,         // G52 (local shift), G68/G69 (rotation), G51/G50 (scaling), G51.1/G50.1 (mirror); arg 1 on, 0 off
+  NoOp,          // cancels a function ncc does not model and is always off (G15, G67, G97, G291)
   Unsupported,   // known code that is not lowered yet: error with the description
 };
 

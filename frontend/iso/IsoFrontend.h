@@ -24,6 +24,8 @@ struct IsoOptions {
   std::string decimalMode = "calculator";
   unsigned blockDeleteMask = 0;         // bit n set = skip level /n active (/ = /0)
   std::vector<std::string> searchDirs;  // subprogram files; default: dir of the main file
+  bool axesScaleEnable = false;         // G51 reads I J K (else P): machine [controller]
+  double scaleWeighting = 0.001;        // G51 factor unit
 };
 
 // Parses the main program file (already in sm) plus the subprograms it calls (same file after

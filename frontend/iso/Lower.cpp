@@ -1,6 +1,7 @@
 #include "frontend/iso/Lower.h"
 #include "ir/MachineCmd.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fmt/format.h>
@@ -41,6 +42,7 @@ static const char *rs274Meaning(int32_t code10) {
   case 50: return "RS274NGC cubic spline";
   case 51: return "RS274NGC quadratic spline";
   case 760: return "RS274NGC threading cycle";
+  case 500: case 510: case 511: case 680: return "not an RS274NGC code";
   default: return nullptr;
   }
 }
@@ -50,7 +52,7 @@ static std::string gName(int32_t code10) {
 }
 
 BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags)
-    : diags_(diags), flavour_(flavour) {
+    : diags_(diags), flavour_(flavour), axesScaleEnable_(opts.axesScaleEnable), scaleWeighting_(opts.scaleWeighting) {
   if (opts.decimalMode == "calculator") decimal_ = 0;
   else if (opts.decimalMode == "is-b") decimal_ = 1;
   else if (opts.decimalMode == "is-c") decimal_ = 2;
@@ -225,6 +227,7 @@ struct BlockLowerer::Block {
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level
   bool coordinateOps();  // G10/G92, G28/G30, G53
+  bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();
   bool stops();
   bool callsAndReturn();
@@ -522,6 +525,110 @@ bool BlockLowerer::Block::coordinateOps() {
     out.push_back(std::move(op));
     axesTaken = true;
   }
+  return frameOps();
+}
+
+// The programmable frame (runtime/Frame.h). Each code takes the block's axis words; the 808D
+// manual (2.4.1.9-2.4.2.4) gives the formats: G52 X Y Z; G68 X Y R (2-D) or X Y Z I J K R (3-D);
+// G69; G51 X Y Z P or X Y Z I J K (machine key axes_scale_enable), factors x scale_weighting;
+// G50; G51.1 X Y Z (mirror positions); G50.1 X Y Z (the axes to cancel).
+bool BlockLowerer::Block::frameOps() {
+  static const GGroup kGroups[] = {GGroup::Mirror, GGroup::Scaling, GGroup::Rotation, GGroup::NonModal};
+  const GCodeInfo *gi = nullptr;
+  GGroup group = GGroup::Count;
+  for (GGroup g : kGroups) {
+    if (!G(g) || G(g)->kind != GKind::Frame) continue;
+    if (gi) {
+      L.diags_.error(gloc(g), fmt::format("{} and {} in one block: each takes the axis words", gName(gi->code10),
+                                          gName(G(g)->code10)),
+                     "modal-group-conflict");
+      return false;
+    }
+    gi = G(g), group = g;
+  }
+  if (!gi) return true;
+  SourceLoc loc = gloc(group);
+  const bool on = gi->arg == 1;
+  axesTaken = true;  // stray axis words are unused words, never a move
+  if (L.flavour_ == Flavour::RS274) {
+    if (gi->code10 != 520) {  // G69, G50.1: LinuxCNC has no rotation or mirror to cancel
+      axesTaken = false;
+      return true;
+    }
+    Op &op = emit(OpKind::SetOffset, loc);  // LinuxCNC's G52: the G92 register
+    op.set("kind", Expr::symbol("g52", loc));
+    axisWords(op, kOffsetAxes);
+    return true;
+  }
+  if (group == GGroup::Rotation)  // 808D: G68 and G69 blocks hold no other G code
+    for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
+      if (gs[g].info && (GGroup)g != GGroup::Rotation) {
+        L.diags_.error(gs[g].word->loc,
+                       fmt::format("{} must not share its block with other G codes", gName(gi->code10)), "syntax");
+        return false;
+      }
+  static const char *kSlots[] = {"mirror", "scale", "rotation", "local"};  // by kGroups
+  Op op(OpKind::Frame, loc);
+  op.set("slot", Expr::symbol(kSlots[std::find(kGroups, kGroups + 4, group) - kGroups], loc));
+  op.set("action", Expr::symbol(on ? "set" : "cancel", loc));
+  switch (gi->code10) {
+  case 680:
+    op.set("form", Expr::symbol(bw.hasAny("IJK") ? "axis" : "plane", loc));
+    axisWords(op, "XYZ");
+    for (char c : std::string_view("IJK"))
+      if (bw.has(c)) add(op, c, take(c, Scale::None));
+    if (bw.has('R')) add(op, 'R', take('R', Scale::Rotary));
+    break;
+  case 510: {
+    // The factor unit of the machine; P is one factor for all axes, I J K one per axis.
+    const char *words = L.axesScaleEnable_ ? "IJK" : "P";
+    const char *other = L.axesScaleEnable_ ? "P" : "IJK";
+    if (bw.hasAny(other)) {
+      char c = 0;
+      for (const char *o = other; *o && !c; ++o)
+        if (bw.has(*o)) c = *o;
+      L.diags_.error(bw.get(c)->loc,
+                     L.axesScaleEnable_
+                         ? "G51 P on a machine with per-axis scaling (axes_scale_enable = true): program I J K"
+                         : fmt::format("G51 {} needs per-axis scaling (machine [controller] axes_scale_enable = true)", c),
+                     "unsupported-code");
+      return false;
+    }
+    if (!bw.hasAny(words)) {
+      L.diags_.error(loc, fmt::format("G51 needs {} (the setting-data default factor is not modelled)",
+                                      L.axesScaleEnable_ ? "I, J or K" : "P"),
+                     "missing-word");
+      return false;
+    }
+    axisWords(op, "XYZ");
+    for (const char *w = words; *w; ++w) {
+      if (!bw.has(*w)) continue;
+      IsoWord *f = bw.get(*w);
+      if (!f->expr && (f->hasPoint || (*w == 'P' && f->value <= 0))) {
+        L.diags_.error(f->loc,
+                       f->hasPoint ? fmt::format("G51 {} is an integer in units of the scale weighting", *w)
+                                   : std::string("G51 P must be greater than zero"),
+                       "bad-number");
+        return false;
+      }
+      ExprPtr e = take(*w, Scale::None);
+      auto scaled = [&] {
+        if (e->kind == ir::ExprKind::Number) return Expr::number(e->num * L.scaleWeighting_, ir::Type::Real, f->loc);
+        return Expr::binary(ir::OpCode::Mul, e->clone(), Expr::number(L.scaleWeighting_, ir::Type::Real, f->loc),
+                            f->loc);
+      };
+      if (*w == 'P')
+        for (char c : std::string_view("IJK")) add(op, c, scaled());
+      else
+        add(op, *w, scaled());
+    }
+    break;
+  }
+  case 511: case 501: axisWords(op, "XYZ"); break;
+  case 520: axisWords(op, kOffsetAxes); break;
+  default: break;  // G69, G50
+  }
+  out.push_back(std::move(op));
   return true;
 }
 

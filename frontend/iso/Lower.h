@@ -31,6 +31,8 @@ private:
   Diagnostics &diags_;
   Flavour flavour_;
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
+  bool axesScaleEnable_ = false;  // G51 factors: I J K (else P)
+  double scaleWeighting_ = 0.001;
   ModeValue motion_ = ModeValue::Rapid;
   ModeValue feedMode_ = ModeValue::PerMinute;
   ModeValue units_ = ModeValue::MM;

@@ -66,7 +66,7 @@ TEST(Machine, DefaultIsEmbeddedAndComplete) {
   EXPECT_DOUBLE_EQ(m.tools.at(1).radius, 5);
   EXPECT_DOUBLE_EQ(m.tools.at(4).radius, 25);
   EXPECT_EQ(m.toolTable.at(3).name, "8 mm drill");
-  EXPECT_EQ(m.controller.reset.size(), 9u);
+  EXPECT_EQ(m.controller.reset.size(), 13u);  // rs274's set and the programmable frame's slots
   // Emitter settings: the [emit.*] tables as text, nested keys dotted.
   EXPECT_EQ(m.get("emit.iso", "arc_style"), "ijk");
   EXPECT_EQ(m.get("emit.iso", "format.X"), "3");
@@ -217,7 +217,9 @@ TEST(Machine, MissingKeysTakeDefaults) {
   EXPECT_EQ(m.controller.gcodeSystem, "A");
   EXPECT_EQ(m.controller.plane, "G17");
   EXPECT_FALSE(m.controller.diameterProgramming);
-  EXPECT_TRUE(m.controller.reset.empty());
+  EXPECT_EQ(m.controller.reset.size(), 9u);  // without the key: rs274's set
+  EXPECT_FALSE(m.controller.axesScaleEnable);
+  EXPECT_DOUBLE_EQ(m.controller.scaleWeighting, 0.001);
   EXPECT_EQ(m.controller.rParams, 100);
   EXPECT_EQ(m.controller.qParams, 2000);
   EXPECT_DOUBLE_EQ(m.controller.realTolerance, d.controller.realTolerance);
@@ -348,7 +350,8 @@ TEST(Machine, ErrorsAreLocated) {
        "m.toml:6:16: error: gcode_system: 'D' is not one of A, B, C"},
       {b + "[controller]\nreset = [\"plane\", \"everything\"]\n",
        "m.toml:6:19: error: reset: 'everything' is not one of motion, plane, distance, feed_mode, units, "
-       "cutter_comp, tool_length, work_offset, g92, feed, spindle, coolant, path_mode"},
+       "cutter_comp, tool_length, work_offset, g92, feed, spindle, coolant, path_mode, rotation, scaling, mirror, "
+       "local_offset"},
       {"schema = 1\nkinematics = \"trunnion-ac\"\n[axes.X]\nmax_velocity = 1\nmax_accel = 1\n",
        "m.toml:2:14: error: kinematics: 'trunnion-ac' is not one of xyz"},
       {b + "[controller]\nmacro_calls = { T = \"O9000\" }\n",

@@ -1,0 +1,124 @@
+#include "runtime/Frame.h"
+
+#include <cmath>
+
+namespace ncc {
+
+Vec3 Affine::applyLinear(const Vec3 &v) const {
+  Vec3 r;
+  for (int i = 0; i < 3; ++i) r[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
+  return r;
+}
+
+Vec3 Affine::apply(const Vec3 &p) const {
+  Vec3 r = applyLinear(p);
+  for (int i = 0; i < 3; ++i) r[i] += t[i];
+  return r;
+}
+
+Affine Affine::then(const Affine &o) const {
+  Affine r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.m[i][j] = o.m[i][0] * m[0][j] + o.m[i][1] * m[1][j] + o.m[i][2] * m[2][j];
+  r.t = o.apply(t);
+  return r;
+}
+
+double Affine::det() const {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+Affine Affine::inverse() const {
+  Affine r;
+  double d = det();  // frames never have d == 0: scale factors of 0 are rejected
+  r.m[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / d;
+  r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / d;
+  r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / d;
+  r.m[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / d;
+  r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / d;
+  r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / d;
+  r.m[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / d;
+  r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / d;
+  r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / d;
+  Vec3 nt = r.applyLinear(t);
+  r.t = {-nt[0], -nt[1], -nt[2]};
+  return r;
+}
+
+bool Affine::linearIdentity() const {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (m[i][j] != (i == j ? 1.0 : 0.0)) return false;
+  return true;
+}
+
+// Exact values at multiples of 90 degrees, so a G68 R90 maps X10 to Y10, not to Y10 plus 6e-16.
+static void sinCos(double degrees, double &s, double &c) {
+  double q = degrees / 90;
+  if (q == std::floor(q)) {
+    static const double kS[] = {0, 1, 0, -1}, kC[] = {1, 0, -1, 0};
+    int k = (int)std::fmod(std::fmod(q, 4) + 4, 4);
+    s = kS[k], c = kC[k];
+    return;
+  }
+  double r = degrees * M_PI / 180;
+  s = std::sin(r), c = std::cos(r);
+}
+
+Affine Affine::rotation(Vec3 u, double degrees, const Vec3 &centre) {
+  double n = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for (double &x : u) x /= n;
+  double s, c;
+  sinCos(degrees, s, c);
+  double k = 1 - c;
+  Affine a;  // Rodrigues: counter-clockwise seen from the tip of u
+  a.m[0][0] = c + u[0] * u[0] * k, a.m[0][1] = u[0] * u[1] * k - u[2] * s, a.m[0][2] = u[0] * u[2] * k + u[1] * s;
+  a.m[1][0] = u[1] * u[0] * k + u[2] * s, a.m[1][1] = c + u[1] * u[1] * k, a.m[1][2] = u[1] * u[2] * k - u[0] * s;
+  a.m[2][0] = u[2] * u[0] * k - u[1] * s, a.m[2][1] = u[2] * u[1] * k + u[0] * s, a.m[2][2] = c + u[2] * u[2] * k;
+  Vec3 rc = a.applyLinear(centre);
+  for (int i = 0; i < 3; ++i) a.t[i] = centre[i] - rc[i];
+  return a;
+}
+
+Affine Affine::scaling(const Vec3 &f, const Vec3 &centre) {
+  Affine a;
+  for (int i = 0; i < 3; ++i) {
+    a.m[i][i] = f[i];
+    a.t[i] = centre[i] - f[i] * centre[i];
+  }
+  return a;
+}
+
+void ProgrammableFrame::update() {
+  Affine c;
+  Vec3 mirror{1, 1, 1};
+  for (int i = 0; i < 3; ++i)
+    if (mirrorAxes[i]) mirror[i] = -1;
+  c = Affine::scaling(mirror, mirrorAt);
+  if (scaleOn) c = c.then(Affine::scaling(scaleFactors, scaleCentre));
+  if (rotationLevels == 2) c = c.then(rotation[1]);
+  if (rotationLevels >= 1) c = c.then(rotation[0]);
+  linear = !c.linearIdentity();
+  for (int i = 0; i < 3; ++i) c.t[i] += local[i];
+  composite = c;
+  inverseComposite = c.inverse();
+}
+
+AxisVec ProgrammableFrame::out(const AxisVec &p) const {
+  AxisVec r = p;
+  Vec3 x = composite.apply({p[0], p[1], p[2]});
+  for (int i = 0; i < 3; ++i) r[i] = x[i];
+  for (int i = 3; i < kAxes; ++i) r[i] += local[i];
+  return r;
+}
+
+AxisVec ProgrammableFrame::in(const AxisVec &s) const {
+  AxisVec r = s;
+  Vec3 x = inverseComposite.apply({s[0], s[1], s[2]});
+  for (int i = 0; i < 3; ++i) r[i] = x[i];
+  for (int i = 3; i < kAxes; ++i) r[i] -= local[i];
+  return r;
+}
+
+}  // namespace ncc

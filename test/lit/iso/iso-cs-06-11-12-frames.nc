@@ -1,0 +1,53 @@
+G17 G90 G21 G94 F1000
+G0 X0 Y0
+G52 X100 Y50
+G0 X10 Y0
+G68 X0 Y0 R90
+G1 X10 Y0
+G3 X0 Y10 R10
+G69
+G52 X0 Y0
+G0 X20 Y10
+G68 R45
+G91 G1 X10
+G90
+G69
+G0 X0 Y0 Z0
+G68 X0 Y0 Z0 I1 J0 K0 R90
+G1 X10 Y10 Z0
+G68 X0 Y0 Z0 I0 J0 K1 R90
+G1 X10 Y0 Z0
+G69
+G1 X10 Y0 Z0
+G18
+G68 X0 Z0 R90
+G1 X0 Y0 Z10
+G69
+M30
+%
+; FEATURES: ISO-CS-06 ISO-CS-11 ISO-CS-12
+; G52 shifts (machine = program + local); G68 rotates about the given centre, in the active
+; plane (G17: about Z, G18: about Y, counter-clockwise seen from the axis tip); without X Y the
+; centre is the current position; a 3-D G68 turns about I J K; a second G68 stacks in the rotated
+; system (808D manual 2.4.1.6, 2.4.1.9-10). Arcs stay arcs in the rotated frame.
+; RUN: %ncc compile %s --emit=ir | FileCheck %s --check-prefix=IR
+; IR: frame slot=local action=set X=100 Y=50 loc(1:3:1)
+; IR: frame slot=rotation action=set form=plane X=0 Y=0 R=90 loc(1:5:1)
+; IR: frame slot=rotation action=cancel loc(1:8:1)
+; IR: frame slot=rotation action=set form=axis X=0 Y=0 Z=0 I=1 J=0 K=0 R=90 loc(1:16:1)
+; RUN: %ncc compile %s --emit=motion | FileCheck %s
+; CHECK: rapid X110 Y50 Z0 {{.*}}@4:1
+; CHECK-NEXT: linear X100 Y60 Z0 {{.*}}@6:1
+; CHECK-NEXT: arc X90 Y50 Z0 A0 B0 C0 center(100, 50, 0) plane=xy turns=1 {{.*}}@7:1
+; CHECK-NEXT: rapid X20 Y10 Z0 {{.*}}@10:1
+; 45 degrees about the current position (20, 10): X+10 incremental goes along the diagonal.
+; CHECK-NEXT: linear X27.07106781186{{[0-9]*}} Y17.07106781186{{[0-9]*}} Z0 {{.*}}@12:
+; CHECK-NEXT: rapid X0 Y0 Z0 {{.*}}@15:1
+; About X by 90: Y goes to Z.
+; CHECK-NEXT: linear X10 Y0 Z10 {{.*}}@17:1
+; Stacked: about Z of the rotated system, X turns to its Y, which the first rotation turned to Z.
+; CHECK-NEXT: linear X0 Y0 Z10 {{.*}}@19:1
+; CHECK-NEXT: linear X10 Y0 Z0 {{.*}}@21:1
+; G18: about Y, Z turns toward X.
+; CHECK-NEXT: plane 1
+; CHECK-NEXT: linear X10 Y0 Z0 {{.*}}@24:1
