@@ -25,104 +25,32 @@ constexpr CycleInfo kCycles[] = {
     {ModeValue::BoreBack, "G87"},  {ModeValue::BoreFine, "G76"},
 };
 
-// Collects the steps of one hole at (a1, a2) in the plane.
-class HoleWriter {
-public:
-  HoleWriter(std::vector<CycleStep> &out, const DrillAxes &ax, double a1, double a2)
-      : out_(out), ax_(ax), a1_(a1), a2_(a2) {}
-  void rapid(double level) { move(CycleStepKind::Rapid, level); }
-  void feed(double level) { move(CycleStepKind::Feed, level); }
-  void dwell(double s) {
-    CycleStep st;
-    st.kind = CycleStepKind::Dwell;
-    st.seconds = s;
-    out_.push_back(st);
-  }
-  void spindle(CycleStepKind k) {
-    CycleStep st;
-    st.kind = k;
-    out_.push_back(st);
-  }
-
-private:
-  void move(CycleStepKind k, double level) {
-    CycleStep st;
-    st.kind = k;
-    st.pos[ax_.a1] = a1_;
-    st.pos[ax_.a2] = a2_;
-    st.pos[ax_.d] = level;
-    out_.push_back(st);
-  }
-  std::vector<CycleStep> &out_;
-  const DrillAxes &ax_;
-  double a1_, a2_;
-};
-
-CycleStepKind spindleStep(int dir) {
-  return dir == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW;
-}
-
-// Pecking infeed shared by G83 (back to R between pecks, then down to just above the previous
-// depth) and G73 (a short chip-breaking retract only).
-void pecks(HoleWriter &h, const CycleInput &in, double r, double bottom, bool toR) {
-  for (double depth = r - in.q; depth > bottom; depth -= in.q) {
-    h.feed(depth);
-    if (toR) h.rapid(r);
-    h.rapid(depth + in.peckClearance);
-  }
-  h.feed(bottom);
-}
-
-// The motion at one hole after reaching the R level.
-void holeBody(HoleWriter &h, const CycleInput &in, double r, double bottom, double clear) {
+// The hole of an ISO cycle (rs274's expansion): pecks from R by Q (G83 back to R and down to
+// `peckClearance` above the last depth, G73 back by peckClearance), dwell P, the exit.
+HoleSpec isoHole(const CycleInput &in, double r, double bottom, double clear) {
+  HoleSpec h;
+  h.start = r, h.bottom = bottom, h.retract = clear;
+  h.spindle = in.spindle;
   switch (in.cycle) {
-  case ModeValue::Drill:
-    h.feed(bottom);
-    h.rapid(clear);
-    break;
-  case ModeValue::DrillDwell:
-    h.feed(bottom);
-    h.dwell(in.p);
-    h.rapid(clear);
-    break;
+  case ModeValue::DrillDwell: h.dwellBottom = in.p; break;
   case ModeValue::Peck:
   case ModeValue::PeckChipBreak:
-    pecks(h, in, r, bottom, in.cycle == ModeValue::Peck);
-    h.rapid(clear);
+    h.peck = in.q;
+    h.breaksPerRetract = in.cycle == ModeValue::Peck ? 0 : -1;
+    h.chipBreak = h.reentry = in.peckClearance;
     break;
   case ModeValue::Tap:
-  case ModeValue::TapLeft: {
-    // Reverse at the bottom, feed straight out to the clear level, restore the direction.
-    bool right = in.cycle == ModeValue::Tap;
-    h.feed(bottom);
-    h.spindle(CycleStepKind::SpindleStop);
-    h.spindle(right ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW);
-    h.dwell(in.p);
-    h.feed(clear);
-    h.spindle(CycleStepKind::SpindleStop);
-    h.spindle(right ? CycleStepKind::SpindleCW : CycleStepKind::SpindleCCW);
+  case ModeValue::TapLeft:
+    h.exit = HoleExit::Tap;
+    h.dwellBottom = in.p;
+    h.spindle = in.cycle == ModeValue::Tap ? 1 : 2;
     break;
+  case ModeValue::BoreFeed: h.exit = HoleExit::Feed, h.exitLevel = r; break;
+  case ModeValue::BoreStop: h.exit = HoleExit::SpindleStopRapid, h.dwellBottom = in.p; break;
+  case ModeValue::BoreDwell: h.exit = HoleExit::Feed, h.exitLevel = clear, h.exitRapid = false, h.dwellBottom = in.p; break;
+  default: break;
   }
-  case ModeValue::BoreFeed:
-    h.feed(bottom);
-    h.feed(r);
-    h.rapid(clear);
-    break;
-  case ModeValue::BoreStop:
-    h.feed(bottom);
-    h.dwell(in.p);
-    h.spindle(CycleStepKind::SpindleStop);
-    h.rapid(clear);
-    h.spindle(spindleStep(in.spindle));
-    break;
-  case ModeValue::BoreDwell:
-    h.feed(bottom);
-    h.dwell(in.p);
-    h.feed(clear);
-    break;
-  default:
-    break;
-  }
+  return h;
 }
 
 }  // namespace
@@ -157,7 +85,7 @@ bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string 
       return false;
     }
     // A peck count the machine could never finish is a typo; refuse instead of looping.
-    if ((r - bottom) / in.q > 1e6) {
+    if ((r - bottom) / in.q > kMaxPecks) {
       err = "Peck depth Q too small for the hole depth";
       return false;
     }
@@ -188,10 +116,14 @@ bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string 
       a1 += in.target[ax.a1];
       a2 += in.target[ax.a2];
     }
-    HoleWriter h(out, ax, a1, a2);
-    h.rapid(level);
-    if (level != r) h.rapid(r);
-    holeBody(h, in, r, bottom, clear);
+    auto rapid = [&](double z) {
+      CycleStep st;
+      st.pos[ax.a1] = a1, st.pos[ax.a2] = a2, st.pos[ax.d] = z;
+      out.push_back(st);
+    };
+    rapid(level);
+    if (level != r) rapid(r);
+    holeSteps(isoHole(in, r, bottom, clear), ax.a1, ax.a2, ax.d, a1, a2, out);
     level = clear;
   }
   return true;

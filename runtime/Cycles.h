@@ -1,26 +1,17 @@
 // Canned drilling cycles (G73 G74 G81-G86 G89) expanded into elementary steps, the way LinuxCNC's
-// rs274 expands them (the reference the oracle tests compare against). A pure function: the
-// executor calls it with machine-frame values, a pass may call it to pre-expand cycles.
+// rs274 expands them (the reference the oracle tests compare against): the ISO entry of the
+// cycle library, positioning and repeats here, each hole a HoleSpec (runtime/cycles/Hole.h).
+// A pure function: the executor calls it with offset-frame values.
 #pragma once
 #include "ir/ModeTable.h"
 #include "ir/MotionIR.h"
+#include "runtime/cycles/Hole.h"
 
 #include <array>
 #include <string>
 #include <vector>
 
 namespace ncc {
-
-enum class CycleStepKind : uint8_t { Rapid, Feed, Dwell, SpindleStop, SpindleCW, SpindleCCW };
-
-struct CycleStep {
-  CycleStepKind kind = CycleStepKind::Rapid;
-  std::array<double, 3> pos{};  // X Y Z target of Rapid/Feed
-  double seconds = 0;           // Dwell
-  // The move to the R level made before the holes when the initial level is below R: rs274
-  // makes it outside the exact-path bracket of the holes.
-  bool preMove = false;
-};
 
 struct CycleInput {
   ModeValue cycle = ModeValue::Drill;  // Drill .. BoreDwell (not BoreBack/BoreFine)

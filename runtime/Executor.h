@@ -7,6 +7,7 @@
 #include "ir/MotionIR.h"
 #include "ir/SystemVars.h"
 #include "runtime/Machine.h"
+#include "runtime/cycles/Library.h"
 
 namespace ncc {
 
@@ -41,6 +42,11 @@ public:
   // Flushes pending state at program end; returns false on error. ranToEnd: the program ran
   // to its end (not stopped by an error), so a missing M2/M30 is worth a warning.
   bool finish(bool ranToEnd = true);
+  // Runs a cycle of the library (runtime/cycles/Library.h) at the current position: `cycle`
+  // alone, or the position pattern `pattern` with `cycle` at each position. Errors go to diags
+  // at `loc`.
+  bool runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern, const CycleArgs *patternArgs,
+                SourceLoc loc);
   // The value of a system variable (ir/SystemVars.h) in the current state.
   bool readSystem(SysVar v, double &out) const;
   const ModalState &state() const;

@@ -117,9 +117,13 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   std::string err;
   if (!expandCycle(in, steps, err)) return error(err, "cycle-invalid");
   lastCycle = cyc;
+  return runSteps(steps);
+}
 
+bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
   // rs274 runs the holes of a block in exact-path mode and restores the path mode after.
   bool bracketOpen = false;
+  double rate = feedMM;  // a step's own feed (vendor cycles) changes the rate for its move
   auto openBracket = [&] {
     MotionRecord r = record(RecordKind::PathMode);
     r.ivalue = 0;
@@ -133,7 +137,16 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     to = frameOut(to);
     switch (s.kind) {
     case CycleStepKind::Rapid: moveTo(RecordKind::Rapid, to, !s.preMove); break;
-    case CycleStepKind::Feed: moveTo(RecordKind::Linear, to, true); break;
+    case CycleStepKind::Feed: {
+      double f = s.feed > 0 ? s.feed : feedMM;
+      if (f != rate) {
+        MotionRecord r = record(RecordKind::FeedRate);
+        r.value = rate = f;
+        emit(r);
+      }
+      moveTo(RecordKind::Linear, to, true, s.feed);
+      break;
+    }
     case CycleStepKind::Dwell: {
       MotionRecord r = record(RecordKind::Dwell);
       r.value = s.seconds;
@@ -145,8 +158,43 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     case CycleStepKind::SpindleCCW: emit(record(RecordKind::SpindleCCW)); break;
     }
   }
+  if (rate != feedMM) {
+    MotionRecord r = record(RecordKind::FeedRate);
+    r.value = feedMM;
+    emit(r);
+  }
   if (bracketOpen) emit(pathModeRecord());
   return true;
+}
+
+bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
+                        const CycleArgs *patternArgs, SourceLoc loc) {
+  Impl &x = *impl_;
+  x.loc = loc;
+  std::string err;
+  if (!checkCycleArgs(cycle, args, err) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
+    return x.error(err, "cycle-invalid");
+  if (x.st.units != ModeValue::MM) return x.error("library cycles run in mm (G21) only", "unsupported-code");
+  if (!x.compForbids("Cannot use canned cycles with cutter compensation on")) return false;
+  if (x.pf.linear || x.rotated())
+    return x.error("library cycles under a rotation, scaling or mirror are not supported yet", "unsupported-code");
+  CycleContext ctx;
+  ctx.plane = (int)x.plane();
+  AxisVec here = x.frameIn(x.st.position);
+  for (int i = 0; i < 3; ++i) ctx.position[i] = here[i] - x.frameOffset(i);
+  ctx.feed = x.st.feedMode == ModeValue::PerMinute ? x.feedMM : 0;
+  ctx.spindle = x.st.spindle;
+  ctx.speed = x.st.speed;
+  std::vector<CycleStep> steps;
+  bool ok = pattern ? expandPattern(*pattern, *patternArgs, cycle, args, ctx, steps, err)
+                    : cycle.expand ? cycle.expand(args, ctx, steps, err)
+                                   : (err = std::string(cycle.name) + " is a position pattern: give it a cycle to run", false);
+  if (!ok) return x.error(std::string(pattern ? pattern->name : cycle.name) + ": " + err, "cycle-invalid");
+  for (const CycleStep &s : steps)
+    if (s.kind == CycleStepKind::Feed && s.feed <= 0 && !x.checkFeed(cycle.name)) return false;
+  for (CycleStep &s : steps)  // program coordinates -> the offset frame
+    for (int i = 0; i < 3; ++i) s.pos[i] += x.frameOffset(i);
+  return x.runSteps(steps);
 }
 
 }  // namespace ncc

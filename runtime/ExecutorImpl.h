@@ -122,13 +122,16 @@ struct Executor::Impl {
   bool execMove(const MachineCmd &c);
   bool execHome(const MachineCmd &c);
   bool execMachineMove(const MachineCmd &c);
-  bool moveTo(RecordKind k, const AxisVec &to, bool exactStop = false);
+  // feed: mm/min of this move (a cycle step's own feed), 0 = the modal feed.
+  bool moveTo(RecordKind k, const AxisVec &to, bool exactStop = false, double feed = 0);
   bool checkFeed(const char *code);
   double moveFeed(double lengthMM) const;
   // In inverse time each feed move gets its own rate record (mm/min), as rs274 prints it.
   void inverseTimeRate(double mmPerMin);
   bool arc(const MachineCmd &c, bool cw);
   bool cycle(const MachineCmd &c);
+  // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.
+  bool runSteps(const std::vector<CycleStep> &steps);
 };
 
 }  // namespace ncc

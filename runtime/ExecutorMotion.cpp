@@ -61,15 +61,15 @@ bool Executor::Impl::checkFeed(const char *code) {
   return error(std::string("Cannot do ") + code + " with zero feed rate", "motion-without-feed");
 }
 
-bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop) {
+bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop, double feed) {
   MotionRecord r = record(k);
   r.end = to;
   r.exactStop = exactStop || st.pathMode == ModeValue::ExactStop;
   if (k == RecordKind::Linear) {
     double d2 = 0;
     for (int i = 0; i < 3; ++i) d2 += (to[i] - r.start[i]) * (to[i] - r.start[i]);
-    r.feed = moveFeed(std::sqrt(d2));
-    inverseTimeRate(r.feed);
+    r.feed = feed > 0 ? feed : moveFeed(std::sqrt(d2));
+    if (feed <= 0) inverseTimeRate(r.feed);
   }
   st.position = to;
   return emitMove(r);

@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake ninja-build g++ ccache python3 llvm-19-dev llvm-19-tools
-          libboost-program-options-dev libfmt-dev libgtest-dev libtomlplusplus-dev)
+          libboost-program-options-dev libfmt-dev libgtest-dev libtomlplusplus-dev
+          libpolyclipping-dev)
 utils/install-missing.sh "${packages[@]}"
 
 if [ ! -f build/build.ninja ]; then

@@ -14,18 +14,22 @@ import re
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DIGESTS = [("ISO", "seed001-iso-dialect.md")]
-ROW = re.compile(r"^\|\s*((?:ISO)-[A-Z]+-\d+)\s*\|\s*([^|]*)\|")
+DIGESTS = [("ISO", "seed001-iso-dialect.md"), ("SIN", "seed000a-sinumerik-language.md"),
+           ("SIN", "seed000b-sinumerik-motion.md"), ("SIN", "seed000c-sinumerik-cycles-operators.md"),
+           ("HEI", "seed002a-heidenhain-cycles.md"), ("HEI", "seed002b-heidenhain-cycles.md"),
+           ("NCB", "seed003-nc200.md"), ("CLD", "seed004-adem-gpp-cldata.md")]
+ROW = re.compile(r"^\|\s*((?:ISO|SIN|HEI|NCB|CLD|GPP)-[A-Z0-9]+-\d+)\s*\|\s*([^|]*)\|")
 
 
 def spec_ids(shared):
-    ids = []
+    ids, seen = [], set()
     for _, name in DIGESTS:
         path = os.path.join(shared, "spec", name)
         with open(path, encoding="utf-8") as f:
             for line in f:
                 m = ROW.match(line)
-                if m:
+                if m and m.group(1) not in seen:  # a digest may repeat an id in a summary table
+                    seen.add(m.group(1))
                     ids.append((m.group(1), m.group(2).strip(), name))
     return ids
 

@@ -87,5 +87,6 @@ int cmdTranslate(int argc, char **argv);
 int cmdLint(int argc, char **argv);
 int cmdCanonDiff(int argc, char **argv);
 int cmdMachine(int argc, char **argv);
+int cmdCycle(int argc, char **argv);
 
 }  // namespace ncc::driver

@@ -20,6 +20,7 @@ static const Subcommand kSubcommands[] = {
     {"lint", cmdLint, "check programs and report diagnostics"},
     {"canon-diff", cmdCanonDiff, "compare two canonical traces (LinuxCNC rs274 format)"},
     {"machine", cmdMachine, "print or check machine descriptions"},
+    {"cycle", cmdCycle, "run one cycle of the library alone (sin.CYCLE83, hei.200, …) and print its Motion IR"},
 };
 
 static void usage(std::FILE *out) {

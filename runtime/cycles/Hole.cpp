@@ -1,0 +1,108 @@
+#include "runtime/cycles/Hole.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ncc {
+
+namespace {
+class Writer {
+public:
+  Writer(std::vector<CycleStep> &out, int a1, int a2, int d, double p1, double p2)
+      : out_(out), a1_(a1), a2_(a2), d_(d), p1_(p1), p2_(p2) {}
+  void rapid(double level) { move(CycleStepKind::Rapid, level, 0); }
+  void feed(double level, double f) { move(CycleStepKind::Feed, level, f); }
+  void go(double level, bool rapidMove, double f) { rapidMove ? rapid(level) : feed(level, f); }
+  void dwell(double s) {
+    if (s < 0) return;
+    CycleStep st;
+    st.kind = CycleStepKind::Dwell;
+    st.seconds = s;
+    out_.push_back(st);
+  }
+  void spindle(CycleStepKind k) {
+    CycleStep st;
+    st.kind = k;
+    out_.push_back(st);
+  }
+
+private:
+  void move(CycleStepKind k, double level, double f) {
+    CycleStep st;
+    st.kind = k;
+    st.pos[a1_] = p1_;
+    st.pos[a2_] = p2_;
+    st.pos[d_] = level;
+    st.feed = f;
+    out_.push_back(st);
+  }
+  std::vector<CycleStep> &out_;
+  int a1_, a2_, d_;
+  double p1_, p2_;
+};
+}  // namespace
+
+void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, std::vector<CycleStep> &out) {
+  Writer w(out, a1, a2, d, p1, p2);
+  const double dir = h.bottom < h.start ? -1.0 : 1.0;
+  auto above = [&](double level) { return dir < 0 ? level > h.bottom : level < h.bottom; };
+  bool first = true;
+  auto feedTo = [&](double level) {
+    w.feed(level, first && h.firstFeed > 0 ? h.firstFeed : h.feed);
+    first = false;
+  };
+  if (h.peck > 0) {
+    double cur = h.peckFromSet ? h.peckFrom : h.start, p = h.peck;
+    int breaks = 0;
+    for (;;) {
+      double next = cur + dir * p;
+      if (!above(next)) break;
+      feedTo(next);
+      w.dwell(h.dwellPeck);
+      if (h.breaksPerRetract < 0 || breaks < h.breaksPerRetract) {
+        w.go(next - dir * h.chipBreak, h.chipBreakRapid, h.feed);
+        ++breaks;
+      } else {
+        w.go(h.start, h.fullRetractFeed < 0, std::max(h.fullRetractFeed, 0.0));
+        w.dwell(h.dwellTop);
+        w.rapid(next - dir * h.reentry);
+        breaks = 0;
+      }
+      cur = next;
+      if (h.factor > 0) p = std::max(p * h.factor, h.minPeck);
+      else if (h.decrement > 0) p = std::max(p - h.decrement, h.minPeck);
+    }
+  }
+  feedTo(h.bottom);
+  switch (h.exit) {
+  case HoleExit::Rapid:
+    w.dwell(h.dwellBottom);
+    w.rapid(h.retract);
+    break;
+  case HoleExit::Feed:
+    w.dwell(h.dwellBottom);
+    w.feed(h.exitLevel, h.exitFeed);
+    if (h.exitRapid) w.rapid(h.retract);
+    break;
+  case HoleExit::SpindleStopRapid:
+    w.dwell(h.dwellBottom);
+    w.spindle(CycleStepKind::SpindleStop);
+    w.rapid(h.retract);
+    w.spindle(h.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW);
+    break;
+  case HoleExit::Tap: {
+    // Reverse at the bottom, feed straight out, restore the direction (rs274 order: the dwell
+    // comes after the reversal).
+    bool right = h.spindle != 2;
+    w.spindle(CycleStepKind::SpindleStop);
+    w.spindle(right ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW);
+    w.dwell(h.dwellBottom);
+    w.feed(h.retract, h.exitFeed);
+    w.spindle(CycleStepKind::SpindleStop);
+    w.spindle(right ? CycleStepKind::SpindleCW : CycleStepKind::SpindleCCW);
+    break;
+  }
+  }
+}
+
+}  // namespace ncc

@@ -1,0 +1,67 @@
+// Hole strategies shared by every drilling cycle: ISO G73-G89 (runtime/Cycles.cpp), Sinumerik
+// CYCLE81-CYCLE89 and Heidenhain 200-205 (runtime/cycles/Library.cpp) describe one hole as a
+// HoleSpec; holeSteps turns it into elementary steps along the drilling axis.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace ncc {
+
+enum class CycleStepKind : uint8_t { Rapid, Feed, Dwell, SpindleStop, SpindleCW, SpindleCCW };
+
+struct CycleStep {
+  CycleStepKind kind = CycleStepKind::Rapid;
+  std::array<double, 3> pos{};  // X Y Z target of Rapid/Feed
+  double seconds = 0;           // Dwell
+  double feed = 0;              // Feed: mm/min, 0 = the programmed feed
+  // The move to the R level made before the holes when the initial level is below R: rs274
+  // makes it outside the exact-path bracket of the holes.
+  bool preMove = false;
+};
+
+// What happens after the bottom of the hole.
+enum class HoleExit : uint8_t {
+  Rapid,            // rapid to `retract`
+  Feed,             // feed to `exitLevel` at exitFeed, then (exitRapid) rapid to `retract` (G85, G89, 201)
+  SpindleStopRapid, // spindle stop, rapid to `retract`, spindle on again (G86)
+  Tap,              // spindle reverse, feed to `retract`, spindle forward again (G84, G74)
+};
+
+struct HoleSpec {
+  // Levels on the drilling axis, absolute. Feeding starts at `start`; depth runs from start
+  // toward bottom (either direction).
+  double start = 0, bottom = 0, retract = 0;
+  // Infeed: one pass when peck <= 0. Otherwise pecks of `peck`, each following one smaller by
+  // `decrement` (or multiplied by `factor` when factor > 0) but not below `minPeck`.
+  double peck = 0, decrement = 0, factor = 0, minPeck = 0;
+  // Where the first peck is measured from when not `start` (Heidenhain: the surface).
+  bool peckFromSet = false;
+  double peckFrom = 0;
+  // After each peck: a chip break (back by chipBreak, rapid or at the feed) or a full retract to
+  // `start`, a dwell there, and a rapid back to `reentry` above the last depth. breaksPerRetract:
+  // -1 always chip break, 0 always full retract, n: n chip breaks, then a full retract.
+  int breaksPerRetract = 0;
+  double chipBreak = 0;
+  bool chipBreakRapid = true;
+  double reentry = 0;
+  double fullRetractFeed = -1;  // < 0: rapid; 0: the programmed feed; > 0: mm/min
+  // Dwells in seconds; < 0: none (ISO writes a 0 s dwell where the cycle has one).
+  double dwellPeck = -1;        // at each peck depth
+  double dwellTop = -1;         // at `start` after a full retract
+  double dwellBottom = -1;      // at the bottom (tapping: after the reversal)
+  double feed = 0, firstFeed = 0;  // 0: the programmed feed
+  HoleExit exit = HoleExit::Rapid;
+  double exitLevel = 0, exitFeed = 0;
+  bool exitRapid = true;
+  int spindle = 1;  // direction before the cycle (1 cw, 2 ccw): G86 restart, tapping
+};
+
+// Appends the steps of one hole at plane position (p1, p2): axes a1, a2 in the plane and d the
+// drilling axis (indices into X Y Z). Starts with the feed from `start`; the caller positions.
+void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, std::vector<CycleStep> &out);
+
+// Largest number of pecks a hole may need; more is a typo (peck depth far too small).
+constexpr double kMaxPecks = 1e6;
+
+}  // namespace ncc

@@ -1,0 +1,389 @@
+#include "runtime/cycles/Library.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace ncc {
+
+namespace {
+
+// Plane axis indices: first and second plane axis, tool (drilling) axis.
+constexpr int kA1[] = {0, 2, 1}, kA2[] = {1, 0, 2}, kD[] = {2, 1, 0};
+
+bool fail(std::string &err, std::string msg) {
+  err = std::move(msg);
+  return false;
+}
+
+// Digit n (1 = units) of a Sinumerik mode word (_AMODE, _VARI, _DMODE …).
+int digit(double word, int n) {
+  long v = (long)std::fabs(word);
+  for (int i = 1; i < n; ++i) v /= 10;
+  return (int)(v % 10);
+}
+
+// The plane of a Sinumerik cycle: _DMODE 1st digit 1/2/3 = G17/G18/G19 inside the cycle.
+int sinPlane(const CycleArgs &a, const CycleContext &ctx) {
+  int p = digit(a.get("_DMODE"), 1);
+  return p >= 1 && p <= 3 ? p - 1 : ctx.plane;
+}
+
+// The steps of one hole: rapid to the start level above the hole, then the HoleSpec.
+void hole(const HoleSpec &h, int plane, const CycleContext &ctx, std::vector<CycleStep> &out) {
+  int a1 = kA1[plane], a2 = kA2[plane], d = kD[plane];
+  if (ctx.position[d] != h.start) {  // a pattern may already be there
+    CycleStep st;
+    st.pos = ctx.position;
+    st.pos[d] = h.start;
+    out.push_back(st);
+  }
+  holeSteps(h, a1, a2, d, ctx.position[a1], ctx.position[a2], out);
+}
+
+// ---- Sinumerik drilling cycles (seed000c 19.1.21-23, 19.1.25): RTP RFP SDIS DP DPR …
+// Depth: _AMODE 1st digit 1 = DPR (relative to RFP), 2 = DP; 0 (compatibility) = DPR when it is
+// programmed, else DP. Dwell: _AMODE digit: 1 s, 2 revolutions, 0 = the sign (>0 s, <0 rev).
+struct SinHole {
+  double rtp, start, bottom, dir;
+  int plane;
+};
+bool sinLevels(const CycleArgs &a, const CycleContext &ctx, SinHole &h, std::string &err) {
+  for (const char *k : {"RTP", "RFP"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  double rfp = a.get("RFP");
+  int mode = digit(a.get("_AMODE"), 1);
+  bool rel = mode == 1 || (mode == 0 && a.has("DPR"));
+  if (rel ? !a.has("DPR") : !a.has("DP")) return fail(err, rel ? "DPR (relative depth) is required" : "DP or DPR (depth) is required");
+  double bottom = rel ? rfp - a.get("DPR") : a.get("DP");
+  h.dir = bottom < rfp ? -1 : 1;
+  h.rtp = a.get("RTP");
+  h.start = rfp - h.dir * std::fabs(a.get("SDIS"));
+  h.bottom = bottom;
+  h.plane = sinPlane(a, ctx);
+  if ((h.rtp - h.start) * h.dir > 0) return fail(err, "the retraction plane RTP lies below the safety level RFP + SDIS");
+  return true;
+}
+bool sinDwell(const CycleArgs &a, const char *key, int amodeDigit, const CycleContext &ctx, double &out,
+              std::string &err) {
+  out = -1;
+  if (!a.has(key) || a.get(key) == 0) return true;
+  double v = a.get(key);
+  int mode = digit(a.get("_AMODE"), amodeDigit);
+  bool revs = mode == 2 || (mode == 0 && v < 0);
+  if (!revs) return out = std::fabs(v), true;
+  if (ctx.speed <= 0) return fail(err, std::string(key) + " in spindle revolutions needs a spindle speed");
+  out = std::fabs(v) * 60 / ctx.speed;
+  return true;
+}
+
+bool sinCycle81(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  SinHole s;
+  if (!sinLevels(a, ctx, s, err)) return false;
+  if (digit(a.get("_GMODE"), 2) == 1) return fail(err, "centring to a diameter (_GMODE 2nd digit 1) needs the tool angle: not supported");
+  HoleSpec h;
+  h.start = s.start, h.bottom = s.bottom, h.retract = s.rtp;
+  if (!sinDwell(a, "DTB", 2, ctx, h.dwellBottom, err)) return false;
+  hole(h, s.plane, ctx, out);
+  return true;
+}
+
+bool sinCycle82(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  if (digit(a.get("_VARI"), 4) || digit(a.get("_VARI"), 5))
+    return fail(err, "CYCLE82 through-drilling and spot drilling (_VARI 4th/5th digit) are not supported");
+  if (digit(a.get("_GMODE"), 2) == 1) return fail(err, "depth to the shank (_GMODE 2nd digit 1) needs the tool angle: not supported");
+  return sinCycle81(a, ctx, out, err);
+}
+
+bool sinCycle83(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  SinHole s;
+  if (!sinLevels(a, ctx, s, err)) return false;
+  if (digit(a.get("_GMODE"), 2) == 1) return fail(err, "depth to the shank (_GMODE 2nd digit 1) needs the tool angle: not supported");
+  if (a.has("_AXN") && a.get("_AXN") != 0) return fail(err, "_AXN (tool axis other than the plane's) is not supported");
+  HoleSpec h;
+  h.start = s.start, h.bottom = s.bottom, h.retract = s.rtp;
+  double rfp = a.get("RFP");
+  // First depth: FDPR relative to RFP or FDEP absolute (_AMODE 5th digit, 0 = whichever is given).
+  int m5 = digit(a.get("_AMODE"), 5);
+  bool rel = m5 == 1 || (m5 == 0 && a.has("FDPR"));
+  if (rel ? !a.has("FDPR") : !a.has("FDEP")) return fail(err, "FDEP or FDPR (first drilling depth) is required");
+  double first = rel ? rfp - a.get("FDPR") : a.get("FDEP");
+  double firstPeck = (h.start - first) * -s.dir;  // from the start level
+  if (firstPeck <= 0) return fail(err, "the first drilling depth lies above the start level RFP + SDIS");
+  if (std::fabs(h.bottom - h.start) / firstPeck > kMaxPecks) return fail(err, "first drilling depth too small");
+  h.peck = firstPeck;
+  // Degression: _AMODE 6th digit 1 = amount, 2 = percentage, 0 = the sign of _DAM (>0 amount).
+  double dam = a.get("_DAM");
+  int m6 = digit(a.get("_AMODE"), 6);
+  if (m6 == 2 || (m6 == 0 && dam < 0))
+    return fail(err, "CYCLE83 percentage degression (_DAM < 0 or _AMODE 6th digit 2) is not supported");
+  // The classic 840D rule: each infeed is the previous one less _DAM, and never less than _DAM.
+  h.decrement = h.minPeck = std::fabs(dam);
+  if (dam == 0) h.minPeck = 0, h.decrement = 0;
+  // First-infeed feed factor FRF (0.001..1, 0 = 100 %).
+  double frf = a.get("FRF");
+  if (digit(a.get("_AMODE"), 8) == 1) frf /= 100;
+  if (frf < 0 || frf > 9.99999) return fail(err, "FRF out of range");
+  if (frf > 0 && frf != 1) {
+    if (ctx.feed <= 0) return fail(err, "FRF needs a feed programmed before the cycle");
+    h.firstFeed = ctx.feed * frf;
+  }
+  if (!sinDwell(a, "DTB", 2, ctx, h.dwellPeck, err) || !sinDwell(a, "_DTD", 4, ctx, h.dwellBottom, err))
+    return false;
+  if (!a.has("_DTD")) h.dwellBottom = h.dwellPeck;  // compatibility: DTB also at the final depth
+  if (digit(a.get("VARI"), 1) == 0) {  // chip breaking: back by V2 (_VRT, default 1 mm) at the feed
+    h.breaksPerRetract = -1;
+    h.chipBreak = a.get("_VRT") > 0 ? a.get("_VRT") : 1.0;
+    h.chipBreakRapid = false;
+  } else {  // chip removal: rapid to RFP + SDIS, dwell DTS, rapid back to V3 above the last depth
+    h.breaksPerRetract = 0;
+    if (!sinDwell(a, "DTS", 3, ctx, h.dwellTop, err)) return false;
+    int m7 = digit(a.get("_AMODE"), 7);
+    if (m7 == 1 || (m7 == 0 && a.get("_DIS1") <= 0))
+      return fail(err, "CYCLE83 automatic anticipation distance (_DIS1 = 0) is computed by the controller: program _DIS1 > 0");
+    h.reentry = a.get("_DIS1");
+  }
+  hole(h, s.plane, ctx, out);
+  return true;
+}
+
+bool sinCycle85(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  SinHole s;
+  if (!sinLevels(a, ctx, s, err)) return false;
+  if (!(a.get("FFR") > 0) || !(a.get("RFF") > 0)) return fail(err, "FFR and RFF (feeds in and out) must be greater than 0");
+  HoleSpec h;
+  h.start = s.start, h.bottom = s.bottom, h.retract = s.rtp;
+  h.feed = a.get("FFR");
+  h.exit = HoleExit::Feed, h.exitLevel = s.start, h.exitFeed = a.get("RFF");
+  if (!sinDwell(a, "DTB", 2, ctx, h.dwellBottom, err)) return false;
+  hole(h, s.plane, ctx, out);
+  return true;
+}
+
+// ---- Heidenhain drilling cycles (seed002a 200, 201, 203): Q200 set-up clearance, Q201 depth
+// (its sign is the direction; 0: the cycle does nothing), Q203 surface, Q204 2nd set-up clearance.
+struct HeiLevels {
+  double zsc, bottom, z2, dir;
+};
+bool heiLevels(const CycleArgs &a, HeiLevels &l, std::string &err) {
+  for (const char *k : {"Q200", "Q201", "Q203", "Q206"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  double depth = a.get("Q201"), surface = a.get("Q203");
+  l.dir = depth < 0 ? -1 : 1;
+  l.zsc = surface - l.dir * std::fabs(a.get("Q200"));
+  l.bottom = surface + depth;
+  l.z2 = surface - l.dir * std::max(std::fabs(a.get("Q200")), std::fabs(a.get("Q204")));
+  if (!(a.get("Q206") > 0)) return fail(err, "Q206 (plunging feed) must be greater than 0");
+  return true;
+}
+double heiDwell(const CycleArgs &a, const char *k) { return a.get(k) > 0 ? a.get(k) : -1; }
+
+// The common part of 200 and 203: levels, the plunge feed, infeeds of Q202 counted from the
+// surface (one pass when Q202 reaches the depth) and Q210 at the top. False with err set, or
+// with err empty when the depth is 0 (the TNC does not run the cycle).
+bool heiPeckHole(const CycleArgs &a, HoleSpec &h, std::string &err) {
+  HeiLevels l;
+  if (!heiLevels(a, l, err)) return false;
+  if (a.get("Q201") == 0) return false;
+  if (a.get("Q395") != 0) return fail(err, "Q395 = 1 (depth to the cylindrical part) needs the tool's point angle: not supported");
+  h.start = l.zsc, h.bottom = l.bottom, h.retract = l.z2;
+  h.feed = a.get("Q206");
+  double peck = std::fabs(a.get("Q202"));
+  if (peck > 0 && peck < std::fabs(a.get("Q201"))) {
+    if (std::fabs(a.get("Q201")) / peck > kMaxPecks) return fail(err, "Q202 (plunging depth) too small");
+    h.peck = peck;
+    h.peckFromSet = true, h.peckFrom = a.get("Q203");
+    h.dwellTop = heiDwell(a, "Q210");
+  }
+  return true;
+}
+
+bool hei200(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HoleSpec h;
+  if (!heiPeckHole(a, h, err)) return err.empty();
+  h.breaksPerRetract = 0;  // every infeed: rapid to the set-up clearance, dwell, rapid back
+  h.reentry = std::fabs(a.get("Q200"));
+  h.dwellPeck = h.dwellBottom = heiDwell(a, "Q211");  // at every infeed (manual L1904)
+  hole(h, ctx.plane, ctx, out);
+  return true;
+}
+
+bool hei201(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiLevels l;
+  if (!heiLevels(a, l, err)) return false;
+  if (a.get("Q201") == 0) return true;
+  HoleSpec h;
+  h.start = l.zsc, h.bottom = l.bottom, h.retract = l.z2;
+  h.feed = a.get("Q206");
+  h.dwellBottom = heiDwell(a, "Q211");
+  h.exit = HoleExit::Feed, h.exitLevel = l.zsc;
+  h.exitFeed = a.get("Q208") > 0 ? a.get("Q208") : h.feed;
+  h.exitRapid = l.z2 != l.zsc;
+  hole(h, ctx.plane, ctx, out);
+  return true;
+}
+
+bool hei203(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HoleSpec h;
+  if (!heiPeckHole(a, h, err)) return err.empty();
+  h.decrement = std::fabs(a.get("Q212"));
+  h.minPeck = std::fabs(a.get("Q205"));
+  h.breaksPerRetract = (int)std::max(0.0, a.get("Q213"));
+  h.chipBreak = h.reentry = std::fabs(a.get("Q256"));
+  h.fullRetractFeed = a.get("Q208") > 0 ? a.get("Q208") : h.feed;
+  h.dwellBottom = heiDwell(a, "Q211");
+  hole(h, ctx.plane, ctx, out);
+  return true;
+}
+
+// ---- patterns
+bool count(const CycleArgs &a, const char *k, int &n, std::string &err) {
+  double v = a.get(k);
+  if (!a.has(k) || v < 1 || v != std::floor(v) || v > 99999) return fail(err, std::string(k) + " must be a count 1..99999");
+  n = (int)v;
+  return true;
+}
+
+bool sinHoles1(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
+  int n;
+  if (!count(a, "NUM", n, err)) return false;
+  out = linePattern({a.get("SPCA"), a.get("SPCO")}, a.get("STA1"), a.get("FDIS"), a.get("DBH"), n);
+  // _HIDE is a STRING; a single position may arrive as a number.
+  auto hide = a.text.find("_HIDE");
+  if (hide != a.text.end()) return hidePositions(out, hide->second, err);
+  return !a.has("_HIDE") || hidePositions(out, std::to_string((long)a.get("_HIDE")), err);
+}
+
+bool sinHoles2(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
+  int n;
+  if (!count(a, "NUM", n, err)) return false;
+  double vari = a.get("_VARI");
+  if (digit(vari, 2) == 1) return fail(err, "HOLES2 positioning along the circle (_VARI 2nd digit 1) is not supported");
+  if (digit(vari, 5) != 0) return fail(err, "HOLES2 with a rotary axis (_VARI 5th digit) is not supported");
+  int form = digit(vari, 4);  // 1 full circle, 2 pitch circle, 0 compatibility: INDA = 0 is full
+  bool full = form == 1 || (form == 0 && a.get("INDA") == 0);
+  double step = full ? 360.0 / n : a.get("INDA");
+  out = circlePattern({a.get("CPA"), a.get("CPO")}, a.get("RAD"), a.get("STA1"), step, n);
+  return true;
+}
+
+bool hei220(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
+  int n;
+  if (!count(a, "Q241", n, err)) return false;
+  if (a.get("Q365") != 0) return fail(err, "Q365 = 1 (traverse along the pitch circle) is not supported");
+  double start = a.get("Q245"), stop = a.get("Q246"), step = a.get("Q247");
+  if (step == 0) {
+    if (std::fabs(stop - start) == 360) step = 360.0 / n;
+    else if (stop == start) return fail(err, "Q246 (stopping angle) must differ from Q245");
+    else step = n > 1 ? (stop - start) / (n - 1) : 0;
+  }
+  out = circlePattern({a.get("Q216"), a.get("Q217")}, a.get("Q244") / 2, start, step, n);
+  return true;
+}
+
+bool hei221(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
+  int n1, n2;
+  if (!count(a, "Q242", n1, err) || !count(a, "Q243", n2, err)) return false;
+  out = gridPattern({a.get("Q225"), a.get("Q226")}, a.get("Q224"), a.get("Q237"), a.get("Q238"), n1, n2, true, false);
+  return true;
+}
+
+const std::vector<CycleDef> kLibrary = {
+    {"sin.CYCLE81", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE", "Sinumerik drilling, centring", sinCycle81, nullptr},
+    {"sin.CYCLE82", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE _VARI S_ZA S_FA S_ZD S_FD",
+     "Sinumerik drilling, counterboring", sinCycle82, nullptr},
+    {"sin.CYCLE83",
+     "RTP RFP SDIS DP DPR FDEP FDPR _DAM DTB DTS FRF VARI _AXN _MDEP _VRT _DTD _DIS1 _GMODE _DMODE _AMODE",
+     "Sinumerik deep-hole drilling", sinCycle83, nullptr},
+    {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr},
+    {"sin.HOLES1", "SPCA SPCO STA1 FDIS DBH NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik row of holes", nullptr,
+     sinHoles1},
+    {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
+     sinHoles2},
+    {"hei.200", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395", "Heidenhain drilling", hei200, nullptr},
+    {"hei.201", "Q200 Q201 Q206 Q211 Q208 Q203 Q204", "Heidenhain reaming", hei201, nullptr},
+    {"hei.203", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395",
+     "Heidenhain universal drilling", hei203, nullptr},
+    {"hei.220", "Q216 Q217 Q244 Q245 Q246 Q247 Q241 Q200 Q203 Q204 Q301 Q365", "Heidenhain polar pattern", nullptr,
+     hei220},
+    {"hei.221", "Q225 Q226 Q237 Q238 Q242 Q243 Q224 Q200 Q203 Q204 Q301", "Heidenhain Cartesian pattern", nullptr,
+     hei221},
+};
+
+}  // namespace
+
+const std::vector<CycleDef> &cycleLibrary() { return kLibrary; }
+
+const CycleDef *findCycle(std::string_view name) {
+  for (auto &d : kLibrary)
+    if (name == d.name) return &d;
+  return nullptr;
+}
+
+bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err) {
+  auto known = [&](const std::string &k) {
+    std::istringstream in(def.params);
+    std::string p;
+    while (in >> p)
+      if (p == k) return true;
+    return false;
+  };
+  for (auto &[k, v] : args.num)
+    if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
+  for (auto &[k, v] : args.text)
+    if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
+  return true;
+}
+
+bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef &hole, CycleArgs ha,
+                   const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  if (!pattern.positions || !hole.expand)
+    return fail(err, std::string(pattern.name) + " with " + hole.name + ": a position pattern runs a machining cycle");
+  bool hei = std::string_view(pattern.name).substr(0, 4) == "hei.";
+  if (hei != (std::string_view(hole.name).substr(0, 4) == "hei."))
+    return fail(err, "a pattern runs the cycles of its own controller");
+  std::vector<PlanePoint> pts;
+  if (!pattern.positions(pa, pts, err)) return false;
+  int plane = ctx.plane, a1 = kA1[plane], a2 = kA2[plane], d = kD[plane];
+  std::array<double, 3> here = ctx.position;
+  double between = here[d];  // Sinumerik: from hole to hole at the level the cycle retracts to
+  if (hei) {
+    // The pattern's Q200 Q203 Q204 replace the cycle's; Q301 picks the level between holes.
+    for (const char *k : {"Q200", "Q203", "Q204"})
+      if (pa.has(k)) ha.num[k] = pa.get(k);
+    double dir = ha.get("Q201") < 0 ? -1 : 1, surface = ha.get("Q203");
+    double zsc = surface - dir * std::fabs(ha.get("Q200"));
+    double z2 = surface - dir * std::max(std::fabs(ha.get("Q200")), std::fabs(ha.get("Q204")));
+    between = pa.get("Q301") != 0 ? z2 : zsc;
+    CycleStep up;  // rapid to the 2nd set-up clearance first
+    up.pos = here, up.pos[d] = z2;
+    out.push_back(up);
+    here[d] = z2;
+  }
+  for (size_t i = 0; i < pts.size(); ++i) {
+    CycleStep to;  // rapid in the plane at the current level
+    to.pos = here, to.pos[a1] = pts[i][0], to.pos[a2] = pts[i][1];
+    out.push_back(to);
+    CycleContext at = ctx;
+    at.position = to.pos;
+    size_t first = out.size();
+    if (!hole.expand(ha, at, out, err)) return false;
+    // The last retract of the hole goes to the level between holes (Heidenhain Q301); the last
+    // hole retracts as the cycle says.
+    if (hei && i + 1 < pts.size())
+      for (size_t k = out.size(); k-- > first;)
+        if (out[k].kind == CycleStepKind::Rapid) {
+          out[k].pos[d] = between;
+          break;
+        }
+    here = out.back().pos;
+    for (size_t k = out.size(); k-- > first;)
+      if (out[k].kind == CycleStepKind::Rapid || out[k].kind == CycleStepKind::Feed) {
+        here = out[k].pos;
+        break;
+      }
+  }
+  return true;
+}
+
+}  // namespace ncc

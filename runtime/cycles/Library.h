@@ -1,0 +1,60 @@
+// The cycle library: every vendor cycle as a thin entry that maps its parameter list onto the
+// shared pieces (hole strategies in Hole.h, pattern walkers in Pattern.h, clearing in
+// Clearing.h). A front end lowers `CYCLE83(…)`, `CYCL DEF 200 …` or a CLData cycle record onto an
+// entry by name (`sin.CYCLE83`, `hei.200`); the executor runs it (Executor::runCycle), and
+// `ncc cycle NAME K=V…` runs one alone. docs/CYCLES.md lists the entries.
+#pragma once
+#include "runtime/cycles/Hole.h"
+#include "runtime/cycles/Pattern.h"
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncc {
+
+// A cycle's arguments by parameter name (positional calls are mapped to names by the front end
+// from the entry's parameter list). Omitted parameters are absent, not 0.
+struct CycleArgs {
+  std::map<std::string, double> num;
+  std::map<std::string, std::string> text;  // STRING parameters (Sinumerik _HIDE)
+  bool has(const std::string &k) const { return num.count(k) != 0; }
+  double get(const std::string &k, double def = 0) const {
+    auto it = num.find(k);
+    return it == num.end() ? def : it->second;
+  }
+};
+
+// Where the cycle runs: program coordinates (mm, the active frame's), the plane, the modal
+// feed and spindle.
+struct CycleContext {
+  int plane = 0;                    // 0 XY (drill along Z), 1 ZX (along Y), 2 YZ (along X)
+  std::array<double, 3> position{};  // X Y Z
+  double feed = 0;                  // mm/min (0 = none programmed)
+  int spindle = 0;                  // 0 stop, 1 cw, 2 ccw
+  double speed = 0;                 // rpm
+};
+
+struct CycleDef {
+  const char *name;    // "sin.CYCLE81", "hei.200"
+  const char *params;  // the positional parameter names, space-separated
+  const char *what;
+  // A machining cycle: appends its steps (program coordinates) at ctx.position.
+  bool (*expand)(const CycleArgs &args, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
+  // A position pattern: the positions in the plane, in the order they are visited.
+  bool (*positions)(const CycleArgs &args, std::vector<PlanePoint> &out, std::string &err);
+};
+
+const std::vector<CycleDef> &cycleLibrary();
+const CycleDef *findCycle(std::string_view name);
+
+// A position pattern with the hole cycle run at each position (Sinumerik MCALL + HOLES1,
+// Heidenhain CYCL DEF 200 + CYCL DEF 220 …).
+bool expandPattern(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef &hole, CycleArgs holeArgs,
+                   const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
+
+// Checks args against the entry's parameter list: unknown names are errors.
+bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err);
+
+}  // namespace ncc

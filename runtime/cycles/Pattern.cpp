@@ -1,0 +1,89 @@
+#include "runtime/cycles/Pattern.h"
+
+#include <cmath>
+#include <set>
+
+namespace ncc {
+
+namespace {
+// cos/sin with exact values at multiples of 90 degrees (a hole at 90 degrees has X exactly 0).
+void dir(double degrees, double &c, double &s) {
+  double q = degrees / 90;
+  if (q == std::floor(q)) {
+    static const double kC[] = {1, 0, -1, 0}, kS[] = {0, 1, 0, -1};
+    int k = (int)std::fmod(std::fmod(q, 4) + 4, 4);
+    c = kC[k], s = kS[k];
+    return;
+  }
+  double r = degrees * M_PI / 180;
+  c = std::cos(r), s = std::sin(r);
+}
+}  // namespace
+
+std::vector<PlanePoint> linePattern(PlanePoint o, double degrees, double first, double spacing, int count) {
+  double c, s;
+  dir(degrees, c, s);
+  std::vector<PlanePoint> out;
+  for (int i = 0; i < count; ++i) {
+    double d = first + i * spacing;
+    out.push_back({o[0] + d * c, o[1] + d * s});
+  }
+  return out;
+}
+
+std::vector<PlanePoint> circlePattern(PlanePoint centre, double radius, double start, double step, int count) {
+  std::vector<PlanePoint> out;
+  for (int i = 0; i < count; ++i) {
+    double c, s;
+    dir(start + i * step, c, s);
+    out.push_back({centre[0] + radius * c, centre[1] + radius * s});
+  }
+  return out;
+}
+
+std::vector<PlanePoint> gridPattern(PlanePoint o, double degrees, double d1, double d2, int n1, int n2, bool meander,
+                                    bool frameOnly) {
+  double c, s;
+  dir(degrees, c, s);
+  std::vector<PlanePoint> out;
+  for (int j = 0; j < n2; ++j)
+    for (int k = 0; k < n1; ++k) {
+      int i = meander && (j % 2) ? n1 - 1 - k : k;
+      if (frameOnly && j != 0 && j != n2 - 1 && i != 0 && i != n1 - 1) continue;
+      double u = i * d1, v = j * d2;
+      out.push_back({o[0] + u * c - v * s, o[1] + u * s + v * c});
+    }
+  return out;
+}
+
+bool hidePositions(std::vector<PlanePoint> &pts, const std::string &list, std::string &err) {
+  std::set<long> hidden;
+  size_t i = 0;
+  while (i < list.size()) {
+    while (i < list.size() && (list[i] == ' ' || list[i] == ',')) ++i;
+    if (i == list.size()) break;
+    char *end = nullptr;
+    long a = std::strtol(list.c_str() + i, &end, 10), b = a;
+    if (end == list.c_str() + i || a < 1) {
+      err = "position list '" + list + "': expected numbers from 1, separated by commas";
+      return false;
+    }
+    i = end - list.c_str();
+    if (i < list.size() && list[i] == '-') {
+      b = std::strtol(list.c_str() + i + 1, &end, 10);
+      if (end == list.c_str() + i + 1 || b < a) {
+        err = "position list '" + list + "': bad range";
+        return false;
+      }
+      i = end - list.c_str();
+    }
+    for (long k = a; k <= b && k <= (long)pts.size(); ++k) hidden.insert(k);
+  }
+  std::vector<PlanePoint> kept;
+  for (size_t k = 0; k < pts.size(); ++k)
+    if (!hidden.count((long)k + 1)) kept.push_back(pts[k]);
+  pts = std::move(kept);
+  return true;
+}
+
+}  // namespace ncc
