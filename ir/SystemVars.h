@@ -15,8 +15,23 @@ enum class SysVar : uint8_t {
   RetractOldZ, SpindleRpmMode, SpindleCssMode, IjkAbsolute, LatheDiameter, LatheRadius, SpindleOn,
   SpindleCw, Mist, Flood, SpeedOverride, FeedOverride, AdaptiveFeed, FeedHold, Feed, Rpm, PosX,
   PosY, PosZ, PosA, PosB, PosC, PosU, PosV, PosW, CurrentTool, CurrentPocket, SelectedTool,
-  SelectedPocket, RemapLevel, Task, Count
+  SelectedPocket, RemapLevel, Task, G92On, CoordSystemNumber, ToolDiameter, ToolLengthH, CutterD, Count
 };
+
+// Indexed families after the named variables (ids from SysVar::Count on): work offsets of
+// systems 1..9 (X Y Z A B C and the XY rotation R), the G92 offsets, reference points 1 and 2,
+// the machine position and the tool offsets (X Y Z A B C). Offsets and reference points are in
+// machine units (mm); positions in program units.
+enum class SysFamily : uint8_t { None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset };
+struct SysVarInfo {
+  SysFamily family = SysFamily::None;
+  int system = 0;  // WorkOffset: 1..9
+  int axis = 0;    // 0..5 X..C, 6 = R (WorkOffset)
+};
+SysVarInfo sysVarInfo(SysVar v);
+// The id of a family member; SysVar::Count when out of range.
+SysVar sysVarOf(SysFamily f, int system, int axis);
+constexpr int kSysVarIds = (int)SysVar::Count + 9 * 7 + 5 * 6;
 
 // The IR name of a system variable (LinuxCNC's parameter name, e.g. "_metric"); false when
 // `name` is none. Names are lower case.

@@ -635,6 +635,19 @@ bool Executor::readSystem(SysVar v, double &out) const {
     return -1;
   };
   static const double kCoordSystems[] = {540, 550, 560, 570, 580, 590, 591, 592, 593};
+  // Offsets and reference points in machine units (mm), as LinuxCNC keeps its parameters.
+  SysVarInfo info = sysVarInfo(v);
+  switch (info.family) {
+  case SysFamily::WorkOffset:
+    out = info.axis == 6 ? x.g5xRotation[info.system - 1] : x.g5x[info.system - 1][info.axis];
+    return true;
+  case SysFamily::G92: out = x.g92[info.axis]; return true;
+  case SysFamily::Home1: out = x.home[0][info.axis]; return true;
+  case SysFamily::Home2: out = x.home[1][info.axis]; return true;
+  case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
+  case SysFamily::ToolOffset: out = info.axis == 2 ? x.toolLength : 0; return true;  // length along Z only
+  case SysFamily::None: break;
+  }
   int axis = -1;
   switch (v) {
   case SysVar::VersionMajor: out = 2.9; return true;  // the LinuxCNC interpreter ncc follows
@@ -684,6 +697,20 @@ bool Executor::readSystem(SysVar v, double &out) const {
   case SysVar::SelectedPocket: out = st.toolSelected; return true;
   case SysVar::RemapLevel:
   case SysVar::Task: out = 0; return true;
+  case SysVar::G92On: {
+    bool on = false;
+    for (int i = 0; i < kAxes; ++i) on |= x.g92[i] != 0;
+    out = is(on);
+    return true;
+  }
+  case SysVar::CoordSystemNumber: out = st.workOffset; return true;
+  case SysVar::ToolDiameter: {
+    const ToolData *t = st.toolInSpindle > 0 ? x.machine.findTool(st.toolInSpindle) : nullptr;
+    out = t ? 2 * t->radius : 0;
+    return true;
+  }
+  case SysVar::ToolLengthH: out = st.toolLengthH; return true;
+  case SysVar::CutterD: out = x.cutterD; return true;
   case SysVar::Count: return false;
   }
   // Positions: program coordinates (all offsets applied), in program units.

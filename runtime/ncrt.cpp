@@ -196,7 +196,7 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
 
 double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id) {
   double v;
-  return id < (uint32_t)SysVar::Count && ctx->sink.readSystem((SysVar)id, v) ? v : unsetValue();
+  return id < (uint32_t)kSysVarIds && ctx->sink.readSystem((SysVar)id, v) ? v : unsetValue();
 }
 
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }

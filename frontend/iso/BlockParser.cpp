@@ -5,6 +5,7 @@
 #include "ir/Builtins.h"
 
 #include <charconv>
+#include <fmt/format.h>
 #include "ir/SystemVars.h"
 
 #include <cmath>
@@ -266,8 +267,12 @@ bool BlockParser::parseAssign(ParsedBlock &out) {
   const char *at = p_;
   IsoAssign a;
   a.loc = locAt(at);
-  a.target = parseVariable();
+  a.target = parseVariable(true);
   if (!a.target) return false;
+  if (a.target->kind == ir::ExprKind::Var && a.target->space == ir::VarSpace::Numbered && !a.target->args.empty() &&
+      a.target->args[0]->kind == ir::ExprKind::Number && classifyParameter(flavour_, (long)a.target->args[0]->num).kind ==
+                                                             SystemParam::Alarm)
+    a.alarm = (int)a.target->args[0]->num;
   if (a.target->kind == ir::ExprKind::Vacant) return fail(at, "#0 is always vacant and cannot be assigned");
   skipBlanks();
   if (p_ >= end_ || *p_ != '=') return fail(p_, "expected '=' after the variable");
@@ -464,9 +469,11 @@ ir::ExprPtr namedParameter(std::string_view raw, SourceLoc loc) {
   for (char c : raw)
     if (!isBlank(c)) name.push_back((char)std::tolower((unsigned char)c));
   if (name.empty()) return nullptr;
-  // LinuxCNC's predefined parameters (#<_metric>, #<_x>, …) are controller state.
+  // LinuxCNC's predefined parameters (#<_metric>, #<_x>, #<_abs_x> …) are controller state;
+  // ncc's other system variables (reached through #5221 …) are not names in LinuxCNC.
   SysVar sv;
-  auto space = sysVarFromName(name, sv) ? ir::VarSpace::System
+  bool predefined = sysVarFromName(name, sv) && (sv < SysVar::G92On || sysVarInfo(sv).family == SysFamily::MachinePos);
+  auto space = predefined ? ir::VarSpace::System
                : name[0] == '_'         ? ir::VarSpace::Global
                                         : ir::VarSpace::Local;
   return Expr::var(space, std::move(name), nullptr, loc);
@@ -677,7 +684,7 @@ ExprPtr BlockParser::parsePrimary() {
   return nullptr;
 }
 
-ExprPtr BlockParser::parseVariable() {
+ExprPtr BlockParser::parseVariable(bool target) {
   const char *at = p_;
   ++p_;  // '#'
   skipBlanks();
@@ -695,7 +702,19 @@ ExprPtr BlockParser::parseVariable() {
       return nullptr;
     }
     if (v == 0) return Expr::vacant(locAt(at));
-    return Expr::var(ir::VarSpace::Numbered, "", Expr::number(v, ir::Type::Int, locAt(b)), locAt(at));
+    long n = v > 1e9 ? 1000000000L : (long)v;
+    SystemParam sp = classifyParameter(flavour_, n);
+    if (target && sp.kind == SystemParam::System) {
+      fail(at, fmt::format("#{} ({}) cannot be assigned: ncc reads controller state only", n, sp.what),
+           "unsupported-code");
+      return nullptr;
+    }
+    if (target && sp.kind == SystemParam::Alarm)
+      return Expr::var(ir::VarSpace::Numbered, "", Expr::number(v, ir::Type::Int, locAt(b)), locAt(at));
+    std::string err;
+    ExprPtr e = numberedParameter(flavour_, n, locAt(at), err);
+    if (!e) fail(at, err, "unsupported-code");
+    return e;
   }
   if (*p_ == '[' || *p_ == '#') {
     if (++depth_ > 100) {

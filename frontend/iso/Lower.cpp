@@ -68,7 +68,7 @@ Op BlockLowerer::blockOp(const ParsedBlock &b) const {
 
 // LinuxCNC's parameter substitution in DEBUG/PRINT/ABORT texts: `#123` and `#<name>` become
 // the parameter's value (a `concat` the engines format at run time); the rest stays text.
-static ExprPtr substituted(const std::string &text, SourceLoc loc) {
+static ExprPtr substituted(const std::string &text, SourceLoc loc, Flavour flavour, Diagnostics &diags) {
   ExprPtr out;
   std::string lit;
   auto append = [&](ExprPtr e) { out = out ? Expr::binary(ir::OpCode::Concat, std::move(out), std::move(e), loc) : std::move(e); };
@@ -81,7 +81,14 @@ static ExprPtr substituted(const std::string &text, SourceLoc loc) {
       size_t j = i + 1;
       while (j < text.size() && std::isdigit((unsigned char)text[j])) ++j;
       flush();
-      append(Expr::var(ir::VarSpace::Numbered, "", Expr::number(std::stod(text.substr(i + 1, j - i - 1)), ir::Type::Int, loc), loc));
+      std::string err;
+      double n = std::stod(text.substr(i + 1, j - i - 1));
+      ExprPtr p = n == 0 ? Expr::vacant(loc) : numberedParameter(flavour, n > 1e9 ? 1000000000L : (long)n, loc, err);
+      if (!p) {
+        diags.error(loc, err, "unsupported-code");
+        p = Expr::string("", loc);
+      }
+      append(std::move(p));
       i = j - 1;
     } else if (text[i] == '#' && i + 1 < text.size() && text[i + 1] == '<' && text.find('>', i) != std::string::npos) {
       size_t close = text.find('>', i);
@@ -104,7 +111,7 @@ void BlockLowerer::lowerComments(const ParsedBlock &b, Region &out) {
   for (auto &c : b.comments) {
     Op op(c.message ? OpKind::Message : OpKind::Comment, c.loc);
     bool substitutes = c.message && std::string_view(c.kind) != "msg";
-    op.set("text", substitutes ? substituted(c.text, c.loc) : Expr::string(c.text, c.loc));
+    op.set("text", substitutes ? substituted(c.text, c.loc, flavour_, diags_) : Expr::string(c.text, c.loc));
     if (substitutes) op.set("kind", Expr::symbol(c.kind, c.loc));
     out.push_back(std::move(op));
   }
@@ -792,6 +799,20 @@ bool BlockLowerer::Block::callsAndReturn() {
 
 bool BlockLowerer::Block::finish() {
   for (auto &a : b.assigns) {
+    if (a.alarm) {
+      // Fanuc #3000 = n: alarm 3000 + n, the run stops; #3006 = n: a stop with a message, the
+      // program goes on at cycle start (M0). The block's comment is the operator text.
+      SourceLoc loc = a.loc;
+      ExprPtr text = Expr::binary(ir::OpCode::Concat, Expr::string(a.alarm == 3000 ? "macro alarm #3000 = " : "#3006 = ", loc),
+                                  std::move(a.value), loc);
+      if (!b.comments.empty())
+        text = Expr::binary(ir::OpCode::Concat, std::move(text), Expr::string(" (" + b.comments.front().text + ")", loc), loc);
+      Op &m = emit(OpKind::Message, loc);
+      m.set("text", std::move(text));
+      if (a.alarm == 3000) m.set("kind", Expr::symbol("abort", loc));
+      else emit(OpKind::Stop, loc).set("kind", Expr::symbol("program", loc));
+      continue;
+    }
     Op &op = emit(OpKind::Assign, a.loc);
     op.set("target", std::move(a.target));
     op.set("value", std::move(a.value));

@@ -3,6 +3,7 @@
 #pragma once
 #include "ir/Diagnostics.h"
 #include "ir/NCIR.h"
+#include "ir/SystemVars.h"
 
 #include <cstdint>
 #include <string>
@@ -35,6 +36,7 @@ struct IsoComment {
 
 struct IsoAssign {
   ir::ExprPtr target, value;
+  int alarm = 0;  // Fanuc #3000 (alarm: the run stops) or #3006 (stop with a message)
   SourceLoc loc;
 };
 
@@ -100,6 +102,19 @@ struct ParsedBlock {
 // parameter (System), a global `_name`, or a local. Null for an empty name.
 ir::ExprPtr namedParameter(std::string_view name, SourceLoc loc);
 
+// What a constant numbered parameter `#n` is (frontend/iso/SystemParams.cpp): a plain
+// parameter, controller state (a System variable), Fanuc's #3000/#3006 (alarm and stop with a
+// message, assignment only), or a number ncc does not provide (an error: `what` says why).
+struct SystemParam {
+  enum Kind { Plain, System, Alarm, Unsupported } kind = Plain;
+  SysVar var = SysVar::Count;
+  std::string what;  // System: what the parameter is ("work offset 1 X")
+};
+SystemParam classifyParameter(Flavour f, long n);
+// The expression reading `#n` (n > 0): a Numbered or a System variable; null with err set when
+// ncc does not provide it.
+ir::ExprPtr numberedParameter(Flavour f, long n, SourceLoc loc, std::string &err);
+
 // Turns one line into a ParsedBlock. Reports syntax errors and returns false (the block is then
 // dropped by the caller).
 class BlockParser {
@@ -137,7 +152,7 @@ private:
   ir::ExprPtr parseBracket();   // [ expr ]
   ir::ExprPtr parseUnary();
   ir::ExprPtr parsePrimary();
-  ir::ExprPtr parseVariable();  // after '#'
+  ir::ExprPtr parseVariable(bool target = false);  // after '#'; target: of an assignment
   ir::ExprPtr parseFunction(std::string name, const char *at);
   bool binaryOp(int &prec, ir::OpCode &op, const char *&after);
   // A Fanuc two-letter abbreviation's keyword (WH -> WHILE); otherwise the word itself.

@@ -1,0 +1,105 @@
+// Numbered parameters that are controller state: LinuxCNC's #5161-#5428 and Fanuc Custom Macro
+// B's system variables (#1000 and up). A constant `#n` in such a range becomes a System variable
+// (ir/SystemVars.h) the executor answers, or an error when ncc does not provide it: reading it
+// as a plain parameter would be silently wrong.
+#include "frontend/iso/Syntax.h"
+#include "ir/SystemVars.h"
+
+#include <fmt/format.h>
+
+namespace ncc::iso {
+
+namespace {
+constexpr const char *kAxisLetters = "XYZABCUVW";
+
+// A run of numbers mapped onto one family or variable: n = first + stride*(system-1) + axis.
+struct ParamRange {
+  Flavour flavour;
+  int first, last;   // inclusive
+  SysFamily family;  // None: `named` for every number of the range
+  SysVar named;
+  int stride = 0, systems = 1, axes = 6;  // families: systems of `stride` numbers, `axes` axes each
+  const char *what;
+};
+
+constexpr Flavour R = Flavour::RS274, F = Flavour::Fanuc;
+const ParamRange kRanges[] = {
+    // LinuxCNC (Numbered Parameters of the G-code manual). Axes U V W: ncc has none.
+    {R, 5161, 5166, SysFamily::Home1, SysVar::Count, 0, 1, 6, "G28 reference point"},
+    {R, 5181, 5186, SysFamily::Home2, SysVar::Count, 0, 1, 6, "G30 reference point"},
+    {R, 5210, 5210, SysFamily::None, SysVar::G92On, 0, 1, 1, "G92 offsets applied"},
+    {R, 5211, 5216, SysFamily::G92, SysVar::Count, 0, 1, 6, "G92 offset"},
+    {R, 5220, 5220, SysFamily::None, SysVar::CoordSystemNumber, 0, 1, 1, "coordinate system number"},
+    {R, 5221, 5390, SysFamily::WorkOffset, SysVar::Count, 20, 9, 7, "work offset"},  // +9 = R
+    {R, 5400, 5400, SysFamily::None, SysVar::CurrentTool, 0, 1, 1, "tool number"},
+    {R, 5401, 5406, SysFamily::ToolOffset, SysVar::Count, 0, 1, 6, "tool offset"},
+    {R, 5410, 5410, SysFamily::None, SysVar::ToolDiameter, 0, 1, 1, "tool diameter"},
+    {R, 5420, 5420, SysFamily::None, SysVar::PosX, 0, 1, 1, "current X"},
+    {R, 5421, 5421, SysFamily::None, SysVar::PosY, 0, 1, 1, "current Y"},
+    {R, 5422, 5422, SysFamily::None, SysVar::PosZ, 0, 1, 1, "current Z"},
+    {R, 5423, 5423, SysFamily::None, SysVar::PosA, 0, 1, 1, "current A"},
+    {R, 5424, 5424, SysFamily::None, SysVar::PosB, 0, 1, 1, "current B"},
+    {R, 5425, 5425, SysFamily::None, SysVar::PosC, 0, 1, 1, "current C"},
+    // Fanuc Custom Macro B (0i): positions (#5001 block end, #5041 current: without read-ahead both
+    // are the position now), machine position, G54-G59 offsets, modal F D H S T.
+    {F, 5001, 5006, SysFamily::None, SysVar::Count, 0, 1, 6, "block end position"},
+    {F, 5021, 5026, SysFamily::MachinePos, SysVar::Count, 0, 1, 6, "machine position"},
+    {F, 5041, 5046, SysFamily::None, SysVar::Count, 0, 1, 6, "current position"},
+    {F, 5221, 5326, SysFamily::WorkOffset, SysVar::Count, 20, 6, 6, "work offset"},
+    {F, 4107, 4107, SysFamily::None, SysVar::CutterD, 0, 1, 1, "modal D"},
+    {F, 4109, 4109, SysFamily::None, SysVar::Feed, 0, 1, 1, "modal F"},
+    {F, 4111, 4111, SysFamily::None, SysVar::ToolLengthH, 0, 1, 1, "modal H"},
+    {F, 4119, 4119, SysFamily::None, SysVar::Rpm, 0, 1, 1, "modal S"},
+    {F, 4120, 4120, SysFamily::None, SysVar::SelectedTool, 0, 1, 1, "modal T"},
+};
+constexpr SysVar kPositions[] = {SysVar::PosX, SysVar::PosY, SysVar::PosZ, SysVar::PosA, SysVar::PosB, SysVar::PosC};
+
+// Plain parameters: LinuxCNC #1-#5000 (above, rs274 stops at #5602); Fanuc locals #1-#33 and
+// commons #100-#999 (#100-#499 with the common-variable option).
+bool plainParameter(Flavour f, long n) {
+  if (f == Flavour::RS274) return n >= 1 && n <= 5000;
+  return (n >= 1 && n <= 33) || (n >= 100 && n <= 999);
+}
+}  // namespace
+
+SystemParam classifyParameter(Flavour f, long n) {
+  SystemParam p;
+  if (plainParameter(f, n)) return p;
+  for (const ParamRange &r : kRanges) {
+    if (r.flavour != f || n < r.first || n > r.last) continue;
+    int off = n - r.first, sys = r.stride ? off / r.stride + 1 : 1, axis = r.stride ? off % r.stride : off;
+    if (r.family == SysFamily::WorkOffset && axis == 9 && r.axes == 7) axis = 6;  // LinuxCNC R
+    else if (axis >= r.axes || (r.family == SysFamily::WorkOffset && axis >= 6)) break;
+    p.kind = SystemParam::System;
+    if (r.family != SysFamily::None) p.var = sysVarOf(r.family, sys, axis);
+    else if (r.named != SysVar::Count) p.var = r.named;
+    else p.var = kPositions[axis];
+    p.what = r.family == SysFamily::WorkOffset
+                 ? fmt::format("{} {} {}", r.what, sys, axis == 6 ? 'R' : kAxisLetters[axis])
+                 : r.axes > 1 ? fmt::format("{} {}", r.what, kAxisLetters[axis]) : std::string(r.what);
+    return p;
+  }
+  p.kind = SystemParam::Unsupported;
+  if (f == Flavour::RS274)
+    p.what = n > 5602 ? fmt::format("parameter #{} is out of range (rs274 has #1-#5602)", n)
+                      : fmt::format("parameter #{} (LinuxCNC controller state) is not provided by ncc", n);
+  else if (n == 3000 || n == 3006)
+    p.kind = SystemParam::Alarm;
+  else
+    p.what = n >= 34 && n <= 99 ? fmt::format("#{} does not exist in Custom Macro B (#1-#33 local, #100-#999 common)", n)
+                                : fmt::format("Fanuc system variable #{} is not supported", n);
+  return p;
+}
+
+ir::ExprPtr numberedParameter(Flavour f, long n, SourceLoc loc, std::string &err) {
+  SystemParam sp = classifyParameter(f, n);
+  switch (sp.kind) {
+  case SystemParam::Plain: return ir::Expr::var(ir::VarSpace::Numbered, "", ir::Expr::number((double)n, ir::Type::Int, loc), loc);
+  case SystemParam::System: return ir::Expr::var(ir::VarSpace::System, sysVarName(sp.var), nullptr, loc);
+  case SystemParam::Alarm: err = fmt::format("#{} can only be assigned (alarm and message stop)", n); return nullptr;
+  case SystemParam::Unsupported: err = sp.what; return nullptr;
+  }
+  return nullptr;
+}
+
+}  // namespace ncc::iso
