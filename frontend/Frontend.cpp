@@ -62,6 +62,7 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.searchDirs = o.searchDirs;
   io.axesScaleEnable = o.axesScaleEnable;
   io.scaleWeighting = o.scaleWeighting;
+  io.startup = o.startup;
   return io;
 }
 

@@ -1,6 +1,7 @@
 // Front-end dispatch: picks the dialect of a source file and runs its front end. Every front
 // end produces NC IR (ir/NCIR.h); the textual IR (.ncir) is read by the IR parser.
 #pragma once
+#include "ir/ModeTable.h"
 #include "ir/NCIR.h"
 
 #include <memory>
@@ -14,6 +15,7 @@ struct FrontendOptions {
   unsigned blockDeleteMask = 0;            // active block-delete levels (bit n = /n)
   std::vector<std::string> searchDirs;     // where called subprogram files are looked up
   bool axesScaleEnable = false;            // ISO G51: per-axis factors I J K (else P), machine [controller]
+  std::vector<ModeValue> startup;         // the controller's start-up modes (units, feed mode, motion)
   double scaleWeighting = 0.001;           // ISO G51: unit of the factors
 };
 

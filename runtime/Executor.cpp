@@ -467,8 +467,16 @@ bool Executor::Impl::execStop(const MachineCmd &c) {
 
 Executor::Executor(const Machine &machine, MotionSink &sink, Diagnostics &diags)
     : impl_(new Impl(machine, sink, diags)) {
-  // Program start: machine zero, whatever offsets the machine description holds.
+  // Program start: machine zero, whatever offsets the machine description holds, the
+  // controller's start-up modes.
   impl_->st.position = {};
+  MachineCmd modes;
+  modes.kind = CmdKind::Mode;
+  const Controller &ctl = machine.controller;
+  if (ctl.plane != "G17") modes.modes[modes.nmodes++] = ctl.plane == "G18" ? ModeValue::ZX : ModeValue::YZ;
+  for (ModeValue m : ctl.startup)
+    if (modes.nmodes < kMaxModes) modes.modes[modes.nmodes++] = m;
+  if (modes.nmodes) impl_->execMode(modes);
 }
 
 Executor::~Executor() { delete impl_; }

@@ -225,7 +225,45 @@ void readMacroCalls(Ctx &c, const toml::node &n, void *obj) {
   }
 }
 
+// The codes `startup` accepts and their modes.
+const struct {
+  const char *code;
+  ModeValue mode;
+} kStartupCodes[] = {
+    {"G0", ModeValue::Rapid},        {"G1", ModeValue::Linear},          {"G80", ModeValue::CycleOff},
+    {"G20", ModeValue::Inch},        {"G21", ModeValue::MM},             {"G90", ModeValue::Absolute},
+    {"G91", ModeValue::Incremental}, {"G90.1", ModeValue::ArcAbsolute},  {"G91.1", ModeValue::ArcIncremental},
+    {"G93", ModeValue::InverseTime}, {"G94", ModeValue::PerMinute},      {"G95", ModeValue::PerRev},
+    {"G98", ModeValue::RetractInitial}, {"G99", ModeValue::RetractR},    {"G61", ModeValue::ExactPath},
+    {"G61.1", ModeValue::ExactStop}, {"G64", ModeValue::Continuous},
+};
+
+void readStartup(Ctx &c, const toml::node &n, void *obj) {
+  auto &modes = static_cast<Controller *>(obj)->startup;
+  const toml::array *a = n.as_array();
+  if (!a) return c.error(n.source(), "startup: expected an array of G codes, got " + typeName(n));
+  modes.clear();
+  for (const toml::node &e : *a) {
+    auto s = readString(c, e, "startup", nullptr);
+    if (!s) continue;
+    const ModeValue *found = nullptr;
+    for (auto &k : kStartupCodes)
+      if (*s == k.code) found = &k.mode;
+    if (!found) {
+      std::string all;
+      for (auto &k : kStartupCodes) all += std::string(all.empty() ? "" : " ") + k.code;
+      c.error(e.source(), "startup: '" + *s + "' is not a start-up code (" + all + "; the plane is the key plane)");
+      continue;
+    }
+    for (ModeValue m : modes)
+      if (modeValueInfo(m).group == modeValueInfo(*found).group)
+        c.error(e.source(), "startup: two codes of one modal group");
+    modes.push_back(*found);
+  }
+}
+
 const KeyDef<Controller> kControllerKeys[] = {
+    {"startup", NodeReader(readStartup)},
     {"family", &Controller::family, 0, 0, false, kDialects},
     {"model", &Controller::model},
     {"gcode_system", &Controller::gcodeSystem, 0, 0, false, "A B C"},

@@ -2,6 +2,7 @@
 // and the emitters' settings. A versioned TOML file (schema 1, see docs/MACHINE.md); the default
 // 3-axis mill is embedded in the binary so `ncc run prog.nc` needs no set-up.
 #pragma once
+#include "ir/ModeTable.h"
 #include "ir/MotionIR.h"
 
 #include <map>
@@ -54,6 +55,10 @@ struct Controller {
   bool axesScaleEnable = false;
   double scaleWeighting = 0.001;
   std::map<std::string, std::string> macroCalls;  // "M6" -> program called instead
+  // The modal state at program start, besides `plane` (key `startup`, G codes): one code per
+  // group, e.g. LinuxCNC's stand-alone G80 and G99. Groups not named start as ncc's default
+  // (G0 G90 G91.1 G94 G98 G21 G64).
+  std::vector<ModeValue> startup;
 };
 
 // One problem of a machine description; line 0 = not located (an unreadable file).

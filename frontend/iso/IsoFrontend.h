@@ -9,6 +9,7 @@
 //  - the canned-cycle repeat count is always `L` (Fanuc writes K).
 #pragma once
 #include "ir/Diagnostics.h"
+#include "ir/ModeTable.h"
 #include "ir/NCIR.h"
 
 #include <memory>
@@ -26,6 +27,7 @@ struct IsoOptions {
   std::vector<std::string> searchDirs;  // subprogram files; default: dir of the main file
   bool axesScaleEnable = false;         // G51 reads I J K (else P): machine [controller]
   double scaleWeighting = 0.001;        // G51 factor unit
+  std::vector<ModeValue> startup;       // start-up modes: units, feed mode, motion as the block words' context
 };
 
 // Parses the main program file (already in sm) plus the subprograms it calls (same file after

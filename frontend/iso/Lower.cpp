@@ -57,6 +57,12 @@ BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics 
   else if (opts.decimalMode == "is-b") decimal_ = 1;
   else if (opts.decimalMode == "is-c") decimal_ = 2;
   else decimal_ = -1;
+  for (ModeValue m : opts.startup) {
+    ModeGroup g = modeValueInfo(m).group;
+    if (g == ModeGroup::Units) units_ = m;
+    else if (g == ModeGroup::FeedMode) feedMode_ = m;
+    else if (g == ModeGroup::Motion) motion_ = m;
+  }
 }
 
 Op BlockLowerer::blockOp(const ParsedBlock &b) const {

@@ -54,10 +54,12 @@ const ParamRange kRanges[] = {
 };
 constexpr SysVar kPositions[] = {SysVar::PosX, SysVar::PosY, SysVar::PosZ, SysVar::PosA, SysVar::PosB, SysVar::PosC};
 
-// Plain parameters: LinuxCNC #1-#5000 (above, rs274 stops at #5602); Fanuc locals #1-#33 and
-// commons #100-#999 (#100-#499 with the common-variable option).
+// Plain parameters: LinuxCNC #1-#5000 (above, rs274 stops at #5602) and #5599-#5601 (the DEBUG
+// output flag and the tool changer's fault flags, which stand-alone rs274 never sets; ncc prints
+// DEBUG messages whatever #5599 holds: no motion depends on it); Fanuc locals #1-#33 and commons
+// #100-#999 (#100-#499 with the common-variable option).
 bool plainParameter(Flavour f, long n) {
-  if (f == Flavour::RS274) return n >= 1 && n <= 5000;
+  if (f == Flavour::RS274) return (n >= 1 && n <= 5000) || (n >= 5599 && n <= 5601);
   return (n >= 1 && n <= 33) || (n >= 100 && n <= 999);
 }
 }  // namespace

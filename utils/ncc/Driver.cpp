@@ -91,6 +91,7 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.decimalMode = opts.decimalMode.empty() ? machine.decimalMode : opts.decimalMode;
   fo.axesScaleEnable = machine.controller.axesScaleEnable;
   fo.scaleWeighting = machine.controller.scaleWeighting;
+  fo.startup = machine.controller.startup;
   for (unsigned l : opts.blockDelete)
     if (l <= 9) fo.blockDeleteMask |= 1u << l;
   fo.searchDirs.push_back(std::filesystem::path(sm.name(file)).parent_path().string());
