@@ -147,7 +147,7 @@ static const OpInfo kOps[] = {
     {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C R"},
     {OpKind::Stop, "stop", 0, 0, "kind", ""},
     {OpKind::Aux, "aux", 0, 0, "", "m b h"},
-    {OpKind::Declare, "declare", 0, 0, "var type", "init"},
+    {OpKind::Declare, "declare", 0, 0, "var type", "init len"},
     {OpKind::Assign, "assign", 0, 0, "target value", ""},
     {OpKind::If, "if", 1, 2, "cond", ""},
     {OpKind::While, "while", 1, 1, "cond", "id"},

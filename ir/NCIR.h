@@ -35,7 +35,7 @@ enum class ExprKind : uint8_t {
   Bool,    // num != 0
   Symbol,  // str: an enum-like bare word (mode names, dialect keywords)
   Vacant,  // Macro B #0 / "no value"
-  Var,     // space + str (name) + optional args[0] (index)
+  Var,     // space + str (name) + optional args[0] (index); named variables up to 3 indices
   Unary,   // op + args[0]
   Binary,  // op + args[0], args[1]
   Call,    // str (builtin function name, upper case) + args
@@ -108,7 +108,7 @@ enum class OpKind : uint8_t {
   Stop,        // kind=program|optional|end|end_rewind
   Aux,         // m=<int>  other M codes; h=/b= auxiliary values
   // data
-  Declare,     // var=<var> type=<symbol> init=<expr>?
+  Declare,     // var=<var>[dims]? type=<symbol> init=<expr>? len=<int>?  (ir/Decls.h)
   Assign,      // target=<var> value=<expr>
   // control
   If,          // cond=<bool> {then} {else}?

@@ -24,23 +24,36 @@ constexpr int kMacroLocals = 33;
 
 constexpr uint64_t kVacantBits = 0x7ff8dead0000beefull;
 
-inline double vacantValue() {
-  double d;
-  std::memcpy(&d, &kVacantBits, sizeof d);
-  return d;
-}
-inline bool isVacant(double v) {
+inline uint64_t valueBits(double v) {
   uint64_t b;
   std::memcpy(&b, &v, sizeof b);
-  return b == kVacantBits;
+  return b;
 }
+inline double bitsValue(uint64_t b) {
+  double d;
+  std::memcpy(&d, &b, sizeof d);
+  return d;
+}
+inline double vacantValue() { return bitsValue(kVacantBits); }
+inline bool isVacant(double v) { return valueBits(v) == kVacantBits; }
 // The value used in arithmetic.
 inline double num(double v) { return isVacant(v) ? 0.0 : v; }
 inline bool truthy(double v) { return !isVacant(v) && v != 0.0; }
 
-// Parameter arrays that exist before the program runs. Sinumerik R and Heidenhain Q/QL/QR
-// parameters start at 0 (only Macro B `#n` starts vacant). QS holds strings, which variables
-// cannot hold yet: it stays vacant. Q prefixes have fixed array numbers in both engines.
+
+// A string value is a NaN-boxed handle into the run's StringPool (ir/Strings.h): the bits
+// kStringTag | index. Handle 0 is the empty string.
+constexpr uint64_t kStringTag = 0x7ffc000000000000ull;
+constexpr uint64_t kStringTagMask = 0xffff000000000000ull;
+constexpr uint64_t kEmptyStringBits = kStringTag;
+inline bool isString(double v) { return (valueBits(v) & kStringTagMask) == kStringTag; }
+inline double emptyString() { return bitsValue(kEmptyStringBits); }
+
+// Initial values, one place per variable space (docs/IR.md §3): Macro B `#n` starts vacant
+// (numberedStart); Sinumerik R and Heidenhain Q/QL/QR parameters start at 0; Heidenhain QS
+// (string parameters) start as the empty string; named variables start unset unless declared
+// (declared ones: initialValue(ValueType), ir/Strings.h). Q prefixes have fixed array numbers
+// in both engines.
 constexpr std::string_view kQPrefixes[] = {"Q", "QL", "QR", "QS"};
 constexpr int kQSpaces = 4;
 inline int qPrefixIndex(std::string_view prefix) {
@@ -48,8 +61,9 @@ inline int qPrefixIndex(std::string_view prefix) {
     if (kQPrefixes[i] == prefix) return i;
   return -1;
 }
+inline double numberedStart() { return vacantValue(); }
 inline double rParamStart() { return 0.0; }
-inline double qParamStart(int prefixIndex) { return kQPrefixes[prefixIndex] == "QS" ? vacantValue() : 0.0; }
+inline double qParamStart(int prefixIndex) { return kQPrefixes[prefixIndex] == "QS" ? emptyString() : 0.0; }
 
 // Named arrays: an indexed named variable (%A[i], %%A[i]) is element i of the array A, apart
 // from the scalar %A. Indices are integers 0..kArrayElements-1 (vacant counts as 0); anything

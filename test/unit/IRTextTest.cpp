@@ -399,7 +399,7 @@ TEST(IRVerifier, EnumeratedValuesAndVariables) {
   EXPECT_EQ(verify("assign target=5 value=1\n"), "'assign' argument 'target' must be a variable");
   EXPECT_EQ(verify("declare var=%x type=REAL init=0.5\n"), "");
   EXPECT_EQ(verify("declare var=%x type=float\n"),
-            "'declare' argument 'type' must be one of: int real bool string symbol axis frame");
+            "'declare' argument 'type' must be one of: int real bool char string symbol axis frame");
   EXPECT_EQ(verify("block n=#1\n"), "'block' argument 'n' must be a non-negative integer constant");
   EXPECT_EQ(verify("declare var=#1 type=REAL\n"), "'declare' argument 'var' must be a named variable (%name or %%name)");
   EXPECT_EQ(verify("declare var=%%g type=INT\n"), "");
