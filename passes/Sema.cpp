@@ -64,7 +64,8 @@ struct Sema {
       }
       bool cmp = e.op >= OpCode::Eq && e.op <= OpCode::Ge;
       auto str = [](Type t) { return t == Type::String || t == Type::Unknown || t == Type::Symbol || t == Type::Axis; };
-      if (cmp && ((str(a) && numeric(b) && b != Type::Unknown) || (numeric(a) && a != Type::Unknown && str(b))))
+      auto known = [](Type t) { return t != Type::Unknown; };
+      if (cmp && ((str(a) && known(a) && numeric(b) && known(b)) || (numeric(a) && known(a) && str(b) && known(b))))
         diags.error(e.loc, "cannot compare a string with a number");
       else if (!(numeric(a) && numeric(b)) && !(cmp && str(a) && str(b)))
         diags.error(e.loc, fmt::format("operands of '{}' must be numbers", opCodeName(e.op)));
