@@ -317,13 +317,7 @@ void Codegen::emitCall(const Op &op) {
       Val v = expr(*a.value);
       if (!k.empty() && k[0] >= '0' && k[0] <= '9') checkNotString(v, op.loc, stringInParameterMessage());
       else if (fixed)  // a typed parameter converts its argument (ir/Strings.h convertForStore)
-        if (const VarDecl *d = decls_.find(*fixed->fn, ir::VarSpace::Local, k)) {
-          ir::Expr param;
-          param.kind = ExprKind::Var;
-          param.str = k;
-          param.loc = op.loc;
-          v.v = convertFor(param, d, v);
-        }
+        v.v = convertArg(*fixed, k, v, op.loc);
       args.push_back({k, v.v});
     }
   B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
@@ -356,7 +350,11 @@ void Codegen::emitCall(const Op &op) {
       BasicBlock *bb = newBlock("call.case");
       sw->addCase(B.getInt64(i), bb);
       B.SetInsertPoint(bb);
-      emitInvoke(functions_.at(src_.functions[i].name), args, newFrame);
+      FnInfo &fi = functions_.at(src_.functions[i].name);
+      auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
+      for (auto &[k, v] : converted)
+        if (k.empty() || k[0] < '0' || k[0] > '9') v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
+      emitInvoke(fi, converted, newFrame);
       B.CreateBr(joined);
     }
     B.SetInsertPoint(joined);
@@ -366,6 +364,17 @@ void Codegen::emitCall(const Op &op) {
     B.SetInsertPoint(done);
   }
   B.CreateStore(depth, depthPtr);
+}
+
+// An argument for the named parameter `key` of `fi`, converted when the parameter is typed.
+Value *Codegen::convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc) {
+  const VarDecl *d = decls_.find(*fi.fn, ir::VarSpace::Local, key);
+  if (!d) return v.v;
+  ir::Expr param;
+  param.kind = ExprKind::Var;
+  param.str = key;
+  param.loc = loc;
+  return convertFor(param, d, v);
 }
 
 // One activation of `fi` with the caller's evaluated arguments.

@@ -76,6 +76,7 @@ private:
   void emitLoop(const ir::Op &op);
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
+  llvm::Value *convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc);
   void emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
   const ir::Op *resolveTarget(const ir::Op &go);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
