@@ -148,12 +148,18 @@ static bool changeCase(StrArgs a, int (*f)(int), double &out) {
 }
 NCC_STRFN(strToupper) { return changeCase({pool, args, n, error, "TOUPPER"}, ::toupper, out); }
 NCC_STRFN(strTolower) { return changeCase({pool, args, n, error, "TOLOWER"}, ::tolower, out); }
-// A number literal, surrounding blanks allowed: what NUMBER converts and ISNUMBER accepts.
+// A number literal, surrounding blanks allowed: what NUMBER converts and ISNUMBER accepts. The
+// exponent may be written Sinumerik's way, EX (any case): "1234.9876Ex-7".
 static bool parseNumber(std::string_view s, double &out) {
   std::string t(s);
   size_t b = t.find_first_not_of(" \t"), e = t.find_last_not_of(" \t");
   if (b == std::string::npos) return false;
   t = t.substr(b, e - b + 1);
+  for (size_t i = 0; i + 1 < t.size(); ++i)
+    if ((t[i] == 'e' || t[i] == 'E') && (t[i + 1] == 'x' || t[i + 1] == 'X')) {
+      t.erase(i + 1, 1);
+      break;
+    }
   char *end;
   out = std::strtod(t.c_str(), &end);
   return *end == 0 && std::isfinite(out) && std::isdigit((unsigned char)t[t.find_first_not_of("+-.")]);

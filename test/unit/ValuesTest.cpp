@@ -123,6 +123,10 @@ TEST(Values, StringBuiltins) {
   EXPECT_EQ(r, 2);
   ASSERT_TRUE(call("MINDEX", {str(p, "/_N_MPF_DIR/_N_EXECUTE_MPF"), str(p, "M,N,O,P")}, r, err));
   EXPECT_EQ(r + 1, 3);  // the manual's example
+  ASSERT_TRUE(call("NUMBER", {str(p, "1234.9876Ex-7")}, r, err));
+  EXPECT_DOUBLE_EQ(r, 1234.9876e-7);
+  ASSERT_TRUE(call("ISNUMBER", {str(p, "1234XYZ")}, r, err));
+  EXPECT_EQ(r, 0);
   EXPECT_FALSE(call("NUMBER", {str(p, "12x")}, r, err));
   EXPECT_EQ(err, "'NUMBER' cannot convert \"12x\" to a number");
   EXPECT_FALSE(call("STRLEN", {5.0}, r, err));
