@@ -63,6 +63,10 @@ bool declOf(const Op &op, VarDecl &d, std::string &error) {
                           kMaxArrayExtent);
       return false;
     }
+  if (d.type == ValueType::String && d.rank > 2) {  // Sinumerik: STRING arrays have at most 2
+    error = fmt::format("string array '{}' has {} dimensions, at most 2 are allowed", v->str, d.rank);
+    return false;
+  }
   if (d.size() > kMaxArrayElements) {
     error = fmt::format("array '{}' has {} elements, at most {} are allowed", v->str, d.size(), kMaxArrayElements);
     return false;

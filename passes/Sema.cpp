@@ -104,6 +104,17 @@ struct Sema {
         if (!computed && (!c || !constantCallee(*c, name) || !m.find(name)))
           diags.error(op.loc, fmt::format("call to unknown program '{}'", name));
       }
+      if (op.kind == OpKind::Assign || op.kind == OpKind::Declare) {  // stores the declared type refuses
+        bool assign = op.kind == OpKind::Assign;
+        const Expr *t = op.get(assign ? "target" : "var"), *v = op.get(assign ? "value" : "init");
+        const VarDecl *d = t && v && fn ? decls.find(*fn, *t) : nullptr;
+        bool strValue = v && (v->type == Type::String || v->type == Type::Symbol);
+        bool numValue = v && v->type != Type::Unknown && numeric(v->type);
+        if (d && strValue && (d->type == ValueType::Int || d->type == ValueType::Real))
+          diags.error(op.loc, fmt::format("cannot assign a string to {} variable '{}'", valueTypeName(d->type), t->str));
+        if (d && numValue && (d->type == ValueType::String || d->type == ValueType::Axis))
+          diags.error(op.loc, fmt::format("cannot assign a number to {} variable '{}'", valueTypeName(d->type), t->str));
+      }
       if ((op.kind == OpKind::If || op.kind == OpKind::While)) {
         const Expr *c = op.get("cond");
         if (c && !numeric(c->type)) diags.error(c->loc, "condition must be a number or boolean");
