@@ -79,7 +79,8 @@ struct Expr {
 
   ExprPtr clone() const;
   bool isConstant() const { return kind == ExprKind::Number || kind == ExprKind::Bool || kind == ExprKind::String; }
-  // A string-valued expression: a string constant or a concat (whose operands may be numbers).
+  // A string expression by its shape: a string constant or a concat (whose operands may be
+  // numbers). Variables and string builtins may hold strings too (docs/IR.md §2.1).
   bool isStringExpr() const { return kind == ExprKind::String || (kind == ExprKind::Binary && op == OpCode::Concat); }
 };
 

@@ -2,7 +2,7 @@
 // JIT-compiled code (through the ncrt_* wrappers of runtime/ncrt.cpp), so each rule exists once.
 //
 // Representation. Every run-time value stays a double. A string is a NaN-boxed handle:
-// the bits kStringTag | i, where i indexes the run's StringPool. Handle 0 is the empty string
+// the bits kStringTag | i (ir/Value.h), where i indexes the run's StringPool. Handle 0 is the empty string
 // (a constant: QS parameters and STRING variables start with it, no pool needed). Strings are
 // interned: equal contents have one handle, so a handle is never stale and `eq` on two strings
 // could compare bits. Arithmetic never produces the tag (it yields the default NaN or propagates

@@ -10,6 +10,8 @@
 //  - a word whose value is vacant is as if not programmed (G1 X#0 moves no axis).
 //  - booleans are 1.0 / 0.0; any non-zero, non-vacant value is true.
 // Angles of trigonometric builtins are degrees (every dialect ncc reads uses degrees).
+// Strings are NaN-boxed handles too (kStringTag below; the pool and the typed-value rules are in
+// ir/Strings.h).
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -82,10 +84,10 @@ inline double valueEq(double a, double b) {
   return a == b ? 1.0 : 0.0;
 }
 
-// Strings are built at run time only by string expressions (a string constant or `concat`, see
-// Expr::isStringExpr) for message texts and computed callees; their numeric operands become
-// text here: vacant is empty, integral values print without a decimal point (5, -12), others
-// with the shortest digits that read back as the same double (0.1, 2.5, 1e-07).
+// The text of a number where a string is built (concat, messages, TOSTR; strings themselves are
+// handles, see ir/Strings.h valueText): vacant is empty, integral values print without a
+// decimal point (5, -12), others with the shortest digits that read back as the same double
+// (0.1, 2.5, 1e-07).
 std::string numberText(double v);
 // LinuxCNC's (DEBUG,…)/(PRINT,…)/(ABORT,…) substitution: "%f" (6 decimals); vacant reads 0,
 // an unset named parameter "######" (as rs274 prints it).

@@ -91,9 +91,10 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 /* Called when storage->poll runs out: resets it and checks the run-time limit. Returns
  * NCRT_ERROR (reported at the given loc) when the limit is exceeded, else NCRT_OK. */
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
-/* Run-time strings (message texts, computed callees): generated code clears the context's text
- * buffer, appends the leaves of a string expression in order, then reads it. Numbers are
- * appended as ncc::numberText (ir/Value.h). */
+/* Run-time texts (message texts, computed callees, concat before ncrt_str_intern): generated
+ * code clears the context's text buffer, appends the leaves of a string expression in order,
+ * then reads it. Values are appended as ncc::valueText (ir/Strings.h): strings as they are,
+ * numbers as numberText (ncrt_str_num_fixed: fixedNumberText). */
 void ncrt_str_clear(ncrt_ctx *ctx);
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
 void ncrt_str_num(ncrt_ctx *ctx, double v);
