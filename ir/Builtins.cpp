@@ -1,8 +1,14 @@
 #include "ir/Builtins.h"
 #include "ir/Arith.h"
+#include "ir/Strings.h"
 #include "ir/Value.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 namespace ncc {
 
@@ -37,7 +43,168 @@ double ncc_builtin_max(const double *a) { return std::fmax(num(a[0]), num(a[1]))
 // EXISTS[#<name>] (RS274NGC) asks whether a variable has a value: both engines answer it from
 // their variable storage (isExistsCall), never through this function.
 double ncc_builtin_exists(const double *) { return 1.0; }
+// Comparisons with a relative tolerance (Sinumerik compares REALs so, relative 1e-12): a and b
+// are equal when |a - b| <= tol * max(|a|, |b|); the front end supplies tol (args[2]).
+static bool tolEqual(const double *a) {
+  double x = num(a[0]), y = num(a[1]);
+  return x == y || std::fabs(x - y) <= num(a[2]) * std::fmax(std::fabs(x), std::fabs(y));
 }
+double ncc_builtin_toleq(const double *a) { return tolEqual(a) ? 1.0 : 0.0; }
+double ncc_builtin_tolne(const double *a) { return tolEqual(a) ? 0.0 : 1.0; }
+double ncc_builtin_tollt(const double *a) { return num(a[0]) < num(a[1]) && !tolEqual(a) ? 1.0 : 0.0; }
+double ncc_builtin_tolle(const double *a) { return num(a[0]) < num(a[1]) || tolEqual(a) ? 1.0 : 0.0; }
+double ncc_builtin_tolgt(const double *a) { return num(a[0]) > num(a[1]) && !tolEqual(a) ? 1.0 : 0.0; }
+double ncc_builtin_tolge(const double *a) { return num(a[0]) > num(a[1]) || tolEqual(a) ? 1.0 : 0.0; }
+}
+
+// ---------------------------------------------------------------- string builtins
+// Positions are 0-based and -1 means "not found" (Sinumerik INDEX/RINDEX/MINDEX/MATCH/SUBSTR).
+namespace {
+struct StrArgs {
+  StringPool &pool;
+  const double *a;
+  unsigned n;
+  std::string &error;
+  const char *fn;
+  bool str(unsigned i, std::string_view &out) {
+    if (!isString(a[i])) {
+      error = fmt::format("'{}' argument {} must be a string", fn, i + 1);
+      return false;
+    }
+    out = pool.text(a[i]);
+    return true;
+  }
+  bool chr(unsigned i, char &out) {
+    std::string_view s;
+    if (!str(i, s)) return false;
+    if (s.size() != 1) {
+      error = fmt::format("'{}' argument {} must be a one-character string", fn, i + 1);
+      return false;
+    }
+    out = s[0];
+    return true;
+  }
+  bool number(unsigned i, double &out) {
+    if (isString(a[i])) {
+      error = fmt::format("'{}' argument {} must be a number", fn, i + 1);
+      return false;
+    }
+    out = num(a[i]);
+    return true;
+  }
+  bool ret(std::string_view s, double &out) { return pool.intern(s, out, error); }
+};
+double position(size_t p) { return p == std::string_view::npos ? -1.0 : (double)p; }
+}  // namespace
+
+#define NCC_STRFN(NAME) \
+  static bool NAME(StringPool &pool, const double *args, unsigned n, double &out, std::string &error)
+
+NCC_STRFN(strStrlen) {
+  StrArgs a{pool, args, n, error, "STRLEN"};
+  std::string_view s;
+  if (!a.str(0, s)) return false;
+  out = (double)s.size();
+  return true;
+}
+// INDEX/RINDEX(s, c): first/last position of the character c; MINDEX(s, list): first position
+// of any character of list; MATCH(s, t): first position of the substring t.
+template <size_t (*Find)(std::string_view, std::string_view)>
+static bool search(StrArgs a, bool oneChar, double &out) {
+  std::string_view s, t;
+  char c;
+  if (!a.str(0, s)) return false;
+  if (oneChar ? !a.chr(1, c) : !a.str(1, t)) return false;
+  out = position(Find(s, oneChar ? std::string_view(&c, 1) : t));
+  return true;
+}
+static size_t findFirst(std::string_view s, std::string_view t) { return s.find(t); }
+static size_t findLast(std::string_view s, std::string_view t) { return s.rfind(t); }
+static size_t findAny(std::string_view s, std::string_view t) { return s.find_first_of(t); }
+NCC_STRFN(strIndex) { return search<findFirst>({pool, args, n, error, "INDEX"}, true, out); }
+NCC_STRFN(strRindex) { return search<findLast>({pool, args, n, error, "RINDEX"}, true, out); }
+NCC_STRFN(strMindex) { return search<findAny>({pool, args, n, error, "MINDEX"}, false, out); }
+NCC_STRFN(strMatch) { return search<findFirst>({pool, args, n, error, "MATCH"}, false, out); }
+// SUBSTR(s, i[, len]): from index i, len characters or to the end; i past the end gives "".
+NCC_STRFN(strSubstr) {
+  StrArgs a{pool, args, n, error, "SUBSTR"};
+  std::string_view s;
+  double i, len = -1;
+  if (!a.str(0, s) || !a.number(1, i) || (n > 2 && !a.number(2, len))) return false;
+  if (i < 0 || i != std::trunc(i) || (n > 2 && (len < 0 || len != std::trunc(len)))) {
+    error = "'SUBSTR' index and length must be non-negative integers";
+    return false;
+  }
+  size_t from = i >= (double)s.size() ? s.size() : (size_t)i;
+  size_t count = n > 2 && len < (double)s.size() ? (size_t)len : std::string_view::npos;
+  return a.ret(s.substr(from, count), out);
+}
+static bool changeCase(StrArgs a, int (*f)(int), double &out) {
+  std::string_view s;
+  if (!a.str(0, s)) return false;
+  std::string r(s);
+  for (char &c : r) c = (char)f((unsigned char)c);
+  return a.ret(r, out);
+}
+NCC_STRFN(strToupper) { return changeCase({pool, args, n, error, "TOUPPER"}, ::toupper, out); }
+NCC_STRFN(strTolower) { return changeCase({pool, args, n, error, "TOLOWER"}, ::tolower, out); }
+// A number literal, surrounding blanks allowed: what NUMBER converts and ISNUMBER accepts. The
+// exponent may be written Sinumerik's way, EX (any case): "1234.9876Ex-7".
+static bool parseNumber(std::string_view s, double &out) {
+  std::string t(s);
+  size_t b = t.find_first_not_of(" \t"), e = t.find_last_not_of(" \t");
+  if (b == std::string::npos) return false;
+  t = t.substr(b, e - b + 1);
+  for (size_t i = 0; i + 1 < t.size(); ++i)
+    if ((t[i] == 'e' || t[i] == 'E') && (t[i + 1] == 'x' || t[i + 1] == 'X')) {
+      t.erase(i + 1, 1);
+      break;
+    }
+  char *end;
+  out = std::strtod(t.c_str(), &end);
+  return *end == 0 && std::isfinite(out) && std::isdigit((unsigned char)t[t.find_first_not_of("+-.")]);
+}
+NCC_STRFN(strNumber) {
+  StrArgs a{pool, args, n, error, "NUMBER"};
+  std::string_view s;
+  if (!a.str(0, s)) return false;
+  if (!parseNumber(s, out)) {
+    error = fmt::format("'NUMBER' cannot convert \"{}\" to a number", s);
+    return false;
+  }
+  return true;
+}
+NCC_STRFN(strIsnumber) {
+  StrArgs a{pool, args, n, error, "ISNUMBER"};
+  std::string_view s;
+  double v;
+  if (!a.str(0, s)) return false;
+  out = parseNumber(s, v) ? 1.0 : 0.0;
+  return true;
+}
+// TOSTR(x): the text of any value (Sinumerik unary <<): numbers as numberText.
+NCC_STRFN(strTostr) { return StrArgs{pool, args, n, error, "TOSTR"}.ret(valueText(pool, args[0]), out); }
+// CHR(code): the one-character string of a code 1..255 ("" for 0); ORD(s): the code of the
+// first character of s, 0 for "".
+NCC_STRFN(strChr) {
+  StrArgs a{pool, args, n, error, "CHR"};
+  double v;
+  if (!a.number(0, v)) return false;
+  if (!(v >= 0 && v <= 255) || v != std::trunc(v)) {
+    error = fmt::format("'CHR' argument {} is not a character code 0..255", numberText(v));
+    return false;
+  }
+  char c = (char)(unsigned char)v;
+  return a.ret(v == 0 ? std::string_view() : std::string_view(&c, 1), out);
+}
+NCC_STRFN(strOrd) {
+  StrArgs a{pool, args, n, error, "ORD"};
+  std::string_view s;
+  if (!a.str(0, s)) return false;
+  out = s.empty() ? 0.0 : (double)(unsigned char)s[0];
+  return true;
+}
+#undef NCC_STRFN
 
 static const BuiltinInfo kBuiltins[] = {
     {"SIN", 1, ncc_builtin_sin, "ncc_builtin_sin"},       {"COS", 1, ncc_builtin_cos, "ncc_builtin_cos"},
@@ -51,11 +218,33 @@ static const BuiltinInfo kBuiltins[] = {
     {"MINVAL", 2, ncc_builtin_min, "ncc_builtin_min"},    {"MAXVAL", 2, ncc_builtin_max, "ncc_builtin_max"},
     {"EXISTS", 1, ncc_builtin_exists, "ncc_builtin_exists"},
     {"AWAYFROMZERO", 1, ncc_builtin_awayfromzero, "ncc_builtin_awayfromzero"},
+    {"TOLEQ", 3, ncc_builtin_toleq, "ncc_builtin_toleq"},   {"TOLNE", 3, ncc_builtin_tolne, "ncc_builtin_tolne"},
+    {"TOLLT", 3, ncc_builtin_tollt, "ncc_builtin_tollt"},   {"TOLLE", 3, ncc_builtin_tolle, "ncc_builtin_tolle"},
+    {"TOLGT", 3, ncc_builtin_tolgt, "ncc_builtin_tolgt"},   {"TOLGE", 3, ncc_builtin_tolge, "ncc_builtin_tolge"},
+    // String builtins: name, arity, -, -, function, argument kinds, result kind, fewest arguments.
+    {"STRLEN", 1, nullptr, nullptr, strStrlen, "s", 'n'},
+    {"INDEX", 2, nullptr, nullptr, strIndex, "ss", 'n'},
+    {"RINDEX", 2, nullptr, nullptr, strRindex, "ss", 'n'},
+    {"MINDEX", 2, nullptr, nullptr, strMindex, "ss", 'n'},
+    {"MATCH", 2, nullptr, nullptr, strMatch, "ss", 'n'},
+    {"SUBSTR", 3, nullptr, nullptr, strSubstr, "snn", 's', 2},
+    {"TOUPPER", 1, nullptr, nullptr, strToupper, "s", 's'},
+    {"TOLOWER", 1, nullptr, nullptr, strTolower, "s", 's'},
+    {"NUMBER", 1, nullptr, nullptr, strNumber, "s", 'n'},
+    {"ISNUMBER", 1, nullptr, nullptr, strIsnumber, "s", 'n'},
+    {"TOSTR", 1, nullptr, nullptr, strTostr, "a", 's'},
+    {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
+    {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
 };
 
 const BuiltinInfo *builtinTable(unsigned &count) {
   count = sizeof(kBuiltins) / sizeof(kBuiltins[0]);
   return kBuiltins;
+}
+
+std::string builtinArity(const BuiltinInfo &b) {
+  unsigned lo = b.minArity ? b.minArity : b.arity;
+  return lo == b.arity ? fmt::format("{}", b.arity) : fmt::format("{} or {}", lo, b.arity);
 }
 
 const BuiltinInfo *findBuiltin(std::string_view name) {

@@ -2,22 +2,39 @@
 // calls `fn` directly, the JIT emits calls to the same C functions by address (ncc_builtin_*).
 // Argument and result conventions follow ir/Value.h (vacant counts as 0; degrees).
 #pragma once
+#include <string>
 #include <string_view>
 
 namespace ncc {
 
+class StringPool;
+
+// Numeric builtins: num() arguments (vacant = 0), a double result; NaN = domain error.
 using BuiltinFn = double (*)(const double *args);
+// String builtins (ir/Strings.h): the raw argument values (string handles or numbers), n of
+// them; false with `error` set on a run-time error (a wrong argument kind, NUMBER of a text
+// that is no number, the pool limit).
+using StrBuiltinFn = bool (*)(StringPool &pool, const double *args, unsigned n, double &out, std::string &error);
 
 struct BuiltinInfo {
   const char *name;    // upper case, as written in NC IR: SIN, ATAN2, ...
-  unsigned arity;
-  BuiltinFn fn;
-  const char *symbol;  // exported C symbol name (for JIT linking), e.g. "ncc_builtin_sin"
+  unsigned arity;      // the most arguments
+  BuiltinFn fn;        // numeric builtins; null for string builtins
+  const char *symbol;  // exported C symbol name of fn (for JIT linking), e.g. "ncc_builtin_sin"
+  StrBuiltinFn sfn = nullptr;   // string builtins (the JIT calls them through ncrt_strfn)
+  const char *args = nullptr;   // string builtins: kind of each argument, 's' string, 'n' number, 'a' any
+  char result = 'n';            // 'n' number, 's' string
+  unsigned minArity = 0;        // fewest arguments when fewer than arity are allowed (SUBSTR)
+  bool accepts(size_t n) const { return n <= arity && n >= (minArity ? minArity : arity); }
+  // The static kind of argument i: 's', 'n' or 'a' (any).
+  char argKind(size_t i) const { return args ? args[i] : 'n'; }
 };
 
 // Returns null for an unknown name (the name is compared case-insensitively).
 const BuiltinInfo *findBuiltin(std::string_view name);
 const BuiltinInfo *builtinTable(unsigned &count);
+// The arity text of error messages: "1", "2 or 3".
+std::string builtinArity(const BuiltinInfo &b);
 // EXISTS[var]: 1 when the variable has a value (a named variable that was assigned; numbered,
 // R, Q and known system variables always), else 0. The engines evaluate it themselves.
 inline bool isExistsCall(std::string_view name, size_t args) { return args == 1 && name == "EXISTS"; }

@@ -35,7 +35,7 @@ enum class ExprKind : uint8_t {
   Bool,    // num != 0
   Symbol,  // str: an enum-like bare word (mode names, dialect keywords)
   Vacant,  // Macro B #0 / "no value"
-  Var,     // space + str (name) + optional args[0] (index)
+  Var,     // space + str (name) + optional args[0] (index); named variables up to 3 indices
   Unary,   // op + args[0]
   Binary,  // op + args[0], args[1]
   Call,    // str (builtin function name, upper case) + args
@@ -79,7 +79,8 @@ struct Expr {
 
   ExprPtr clone() const;
   bool isConstant() const { return kind == ExprKind::Number || kind == ExprKind::Bool || kind == ExprKind::String; }
-  // A string-valued expression: a string constant or a concat (whose operands may be numbers).
+  // A string expression by its shape: a string constant or a concat (whose operands may be
+  // numbers). Variables and string builtins may hold strings too (docs/IR.md §2.1).
   bool isStringExpr() const { return kind == ExprKind::String || (kind == ExprKind::Binary && op == OpCode::Concat); }
 };
 
@@ -110,7 +111,7 @@ enum class OpKind : uint8_t {
   Frame,       // slot=local|rotation|scale|mirror action=set|cancel form=plane|axis? X Y Z I J K R
                //   a programmable frame slot (ISO G52 G68 G51 G51.1, see docs/IR.md)
   // data
-  Declare,     // var=<var> type=<symbol> init=<expr>?
+  Declare,     // var=<var>[dims]? type=<symbol> init=<expr>? len=<int>?  (ir/Decls.h)
   Assign,      // target=<var> value=<expr>
   // control
   If,          // cond=<bool> {then} {else}?

@@ -403,6 +403,21 @@ private:
     expectPunct(']');
     return e;
   }
+  // A named variable's indices: '[' expr {',' expr} ']' (declared arrays have up to 3).
+  void parseIndices(Expr &v) {
+    if (!isPunct('[')) return;
+    next();
+    if (isPunct(']')) {  // '[]' is no index, as for the other spaces
+      next();
+      return;
+    }
+    v.args.push_back(parseExpr());
+    while (isPunct(',')) {
+      next();
+      v.args.push_back(parseExpr());
+    }
+    expectPunct(']');
+  }
 
   ExprPtr intConst(double v) { return Expr::number(v, Type::Int); }
 
@@ -434,7 +449,9 @@ private:
         sp = VarSpace::Global;
       }
       std::string name = expectName("variable name");
-      return Expr::var(sp, std::move(name), parseIndexOpt());
+      ExprPtr v = Expr::var(sp, std::move(name));
+      parseIndices(*v);
+      return v;
     }
     if (c == '$') {
       next();

@@ -58,7 +58,10 @@ void printIndex(const Expr &e, std::string &o) {
     return;
   }
   o += '[';
-  printExprTo(e.args[0].get(), o);
+  for (size_t i = 0; i < e.args.size(); ++i) {
+    if (i) o += ", ";
+    printExprTo(e.args[i].get(), o);
+  }
   o += ']';
 }
 

@@ -21,17 +21,8 @@ std::string bitwiseOperandMessage(std::string_view op) {
   return fmt::format("bitwise '{}' needs integer operands", op);
 }
 
-double unsetValue() {
-  double d;
-  std::memcpy(&d, &kUnsetBits, sizeof d);
-  return d;
-}
-
-bool isUnset(double v) {
-  uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b == kUnsetBits;
-}
+double unsetValue() { return bitsValue(kUnsetBits); }
+bool isUnset(double v) { return valueBits(v) == kUnsetBits; }
 
 bool programName(double v, std::string &out) {
   v = num(v);
@@ -47,9 +38,6 @@ std::string badProgramNumberMessage(double v) {
   return fmt::format("call target {} is not a program number (a non-negative integer)", numberText(v));
 }
 
-std::string arrayIndexMessage(std::string_view name, double index) {
-  return fmt::format("index {} of array '{}' is not an integer in 0..{}", numberText(index), name, kArrayElements - 1);
-}
 std::string unsetElementMessage(std::string_view name, double index) {
   return fmt::format("array element '{}[{}]' used before assignment", name, numberText(index));
 }

@@ -10,6 +10,8 @@
 //  - a word whose value is vacant is as if not programmed (G1 X#0 moves no axis).
 //  - booleans are 1.0 / 0.0; any non-zero, non-vacant value is true.
 // Angles of trigonometric builtins are degrees (every dialect ncc reads uses degrees).
+// Strings are NaN-boxed handles too (kStringTag below; the pool and the typed-value rules are in
+// ir/Strings.h).
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -24,23 +26,36 @@ constexpr int kMacroLocals = 33;
 
 constexpr uint64_t kVacantBits = 0x7ff8dead0000beefull;
 
-inline double vacantValue() {
-  double d;
-  std::memcpy(&d, &kVacantBits, sizeof d);
-  return d;
-}
-inline bool isVacant(double v) {
+inline uint64_t valueBits(double v) {
   uint64_t b;
   std::memcpy(&b, &v, sizeof b);
-  return b == kVacantBits;
+  return b;
 }
+inline double bitsValue(uint64_t b) {
+  double d;
+  std::memcpy(&d, &b, sizeof d);
+  return d;
+}
+inline double vacantValue() { return bitsValue(kVacantBits); }
+inline bool isVacant(double v) { return valueBits(v) == kVacantBits; }
 // The value used in arithmetic.
 inline double num(double v) { return isVacant(v) ? 0.0 : v; }
 inline bool truthy(double v) { return !isVacant(v) && v != 0.0; }
 
-// Parameter arrays that exist before the program runs. Sinumerik R and Heidenhain Q/QL/QR
-// parameters start at 0 (only Macro B `#n` starts vacant). QS holds strings, which variables
-// cannot hold yet: it stays vacant. Q prefixes have fixed array numbers in both engines.
+
+// A string value is a NaN-boxed handle into the run's StringPool (ir/Strings.h): the bits
+// kStringTag | index. Handle 0 is the empty string.
+constexpr uint64_t kStringTag = 0x7ffc000000000000ull;
+constexpr uint64_t kStringTagMask = 0xffff000000000000ull;
+constexpr uint64_t kEmptyStringBits = kStringTag;
+inline bool isString(double v) { return (valueBits(v) & kStringTagMask) == kStringTag; }
+inline double emptyString() { return bitsValue(kEmptyStringBits); }
+
+// Initial values, one place per variable space (docs/IR.md §3): Macro B `#n` starts vacant
+// (numberedStart); Sinumerik R and Heidenhain Q/QL/QR parameters start at 0; Heidenhain QS
+// (string parameters) start as the empty string; named variables start unset unless declared
+// (declared ones: initialValue(ValueType), ir/Strings.h). Q prefixes have fixed array numbers
+// in both engines.
 constexpr std::string_view kQPrefixes[] = {"Q", "QL", "QR", "QS"};
 constexpr int kQSpaces = 4;
 inline int qPrefixIndex(std::string_view prefix) {
@@ -48,8 +63,9 @@ inline int qPrefixIndex(std::string_view prefix) {
     if (kQPrefixes[i] == prefix) return i;
   return -1;
 }
+inline double numberedStart() { return vacantValue(); }
 inline double rParamStart() { return 0.0; }
-inline double qParamStart(int prefixIndex) { return kQPrefixes[prefixIndex] == "QS" ? vacantValue() : 0.0; }
+inline double qParamStart(int prefixIndex) { return kQPrefixes[prefixIndex] == "QS" ? emptyString() : 0.0; }
 
 // Named arrays: an indexed named variable (%A[i], %%A[i]) is element i of the array A, apart
 // from the scalar %A. Indices are integers 0..kArrayElements-1 (vacant counts as 0); anything
@@ -68,10 +84,10 @@ inline double valueEq(double a, double b) {
   return a == b ? 1.0 : 0.0;
 }
 
-// Strings are built at run time only by string expressions (a string constant or `concat`, see
-// Expr::isStringExpr) for message texts and computed callees; their numeric operands become
-// text here: vacant is empty, integral values print without a decimal point (5, -12), others
-// with the shortest digits that read back as the same double (0.1, 2.5, 1e-07).
+// The text of a number where a string is built (concat, messages, TOSTR; strings themselves are
+// handles, see ir/Strings.h valueText): vacant is empty, integral values print without a
+// decimal point (5, -12), others with the shortest digits that read back as the same double
+// (0.1, 2.5, 1e-07).
 std::string numberText(double v);
 // LinuxCNC's (DEBUG,…)/(PRINT,…)/(ABORT,…) substitution: "%f" (6 decimals); vacant reads 0,
 // an unset named parameter "######" (as rs274 prints it).

@@ -3,6 +3,7 @@
 // one diagnostic at the op's loc; the verifier never stops early and never assumes a
 // well-formed module (null expressions, bad kinds are reported, not dereferenced).
 #include "ir/Builtins.h"
+#include "ir/Decls.h"
 #include "ir/ModeTable.h"
 #include "ir/SystemVars.h"
 #include "ir/NCIR.h"
@@ -37,7 +38,7 @@ const EnumRule kEnumRules[] = {
     {OpKind::Frame, "form", "plane axis"},
     {OpKind::Goto, "dir", "forward backward any"},
     {OpKind::Call, "frame", "new shared"},
-    {OpKind::Declare, "type", "int real bool string symbol axis frame"},
+    {OpKind::Declare, "type", "int real bool char string symbol axis frame"},
 };
 
 // Keys whose value must be a variable reference (something that can be assigned).
@@ -88,6 +89,7 @@ public:
 
   bool run() {
     if (m_.functions.empty()) error({}, "module has no functions (functions[0] is the entry)");
+    if (!collectDecls(m_, decls_, &d_)) ++errors_;
     std::set<std::string> names;
     for (auto &f : m_.functions) {
       if (!names.insert(f.name).second) error(f.loc, fmt::format("function '@{}' is defined twice", f.name));
@@ -103,6 +105,8 @@ private:
   unsigned loopDepth_ = 0;
   Targets targets_;
   std::set<std::string> labelsSeen_;
+  DeclTable decls_;
+  const Function *fn_ = nullptr;
 
   void error(SourceLoc l, std::string msg) {
     ++errors_;
@@ -110,6 +114,7 @@ private:
   }
 
   void verifyFunction(const Function &f) {
+    fn_ = &f;
     if (f.name.empty()) error(f.loc, "function has no name");
     std::set<std::string> params;
     for (auto &p : f.params) {
@@ -272,13 +277,17 @@ private:
   // Assumes a module that passed run().
 public:
   bool runnable() {
+    collectDecls(m_, decls_, nullptr);
     for (auto &f : m_.functions) {
-      for (auto &p : f.params) {  // neither engine passes by reference, applies defaults or converts types
+      fn_ = &f;
+      for (auto &p : f.params) {  // neither engine passes by reference or applies defaults
         if (p.byRef) error(f.loc, fmt::format("function '@{}': VAR (by-reference) parameter '{}' is not supported yet", f.name, p.name));
         if (p.defaultValue) error(f.loc, fmt::format("function '@{}': default of parameter '{}' is not supported yet", f.name, p.name));
-        if (p.type != Type::Real && p.type != Type::Bool)
-          error(f.loc, fmt::format("function '@{}': parameter '{}' of type {} is not supported yet (REAL, BOOL)", f.name,
-                                   p.name, typeName(p.type)));
+        if (p.type != Type::Real && p.type != Type::Bool && p.type != Type::Int && p.type != Type::String &&
+            p.type != Type::Axis)
+          error(f.loc, fmt::format("function '@{}': parameter '{}' of type {} is not supported yet (REAL, INT, BOOL, "
+                                   "STRING, AXIS)",
+                                   f.name, p.name, typeName(p.type)));
       }
       walk(f.body);
     }
@@ -308,10 +317,10 @@ private:
       Where where{name, a.key};
       switch (argContext(op, a.key)) {
       case Ctx::Number: numericExpr(*v, op.loc, where); break;
-      case Ctx::Text: stringExpr(*v, op.loc, where); break;
+      case Ctx::Any:
+      case Ctx::Text: anyExpr(*v, op.loc, where); break;
       case Ctx::Callee:
-        if (v->isStringExpr()) stringExpr(*v, op.loc, where);
-        else if (v->kind != ExprKind::Symbol) numericExpr(*v, op.loc, where);  // symbols: checkControl
+        if (v->kind != ExprKind::Symbol) anyExpr(*v, op.loc, where);  // symbols: checkControl
         break;
       case Ctx::Constant:
         if (v->kind != ExprKind::String) error(op.loc, where + " must be a string constant");
@@ -322,17 +331,21 @@ private:
           error(op.loc, fmt::format("{}: system variable '{}' is read-only", where.text(), v->str));
           break;
         }
-        if (variable(*v, op.loc, where) && !v->args.empty() && v->args[0]) numericExpr(*v->args[0], op.loc, where);
+        if (variable(*v, op.loc, where) && op.kind != OpKind::Declare)
+          for (auto &i : v->args)
+            if (i) numericExpr(*i, op.loc, where);
+        if (op.kind == OpKind::Assign && numericSpace(*v))
+          if (const Expr *val = op.get("value"); val && kindOf(*val) == 's')
+            error(op.loc, fmt::format("'assign': {}", stringInParameterMessage()));
         break;
       case Ctx::Symbol: break;  // checked by kEnumRules / checkModes
       }
     }
     switch (op.kind) {
     case OpKind::Declare: {
-      const Expr *v = op.get("var"), *t = op.get("type");
-      if (v && !v->args.empty()) error(op.loc, "'declare' of an array element: array declarations are not supported yet");
-      if (t && t->kind == ExprKind::Symbol && lower(t->str) != "real" && lower(t->str) != "bool")
-        error(op.loc, fmt::format("'declare' type '{}' is not supported yet (real, bool)", t->str));
+      const Expr *t = op.get("type");
+      if (t && t->kind == ExprKind::Symbol && (lower(t->str) == "symbol" || lower(t->str) == "frame"))
+        error(op.loc, fmt::format("'declare' type '{}' is not supported yet", t->str));
       break;
     }
     case OpKind::Return:
@@ -382,9 +395,13 @@ private:
 
   // Where an argument's value is used: a number (the default), a run-time string, a call
   // target, a string constant, a variable to assign, or a symbol.
-  enum class Ctx { Number, Text, Callee, Constant, Var, Symbol };
+  enum class Ctx { Number, Any, Text, Callee, Constant, Var, Symbol };
   static Ctx argContext(const Op &op, const std::string &key) {
     if (op.kind == OpKind::Message && key == "text") return Ctx::Text;
+    if ((op.kind == OpKind::Assign && key == "value") || (op.kind == OpKind::Declare && key == "init") ||
+        (op.kind == OpKind::Call && key.rfind("a.", 0) == 0 && !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
+      return Ctx::Any;
+    if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
     if (op.kind == OpKind::Call && key == "callee") return Ctx::Callee;
     if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||
         (op.kind == OpKind::Goto && key == "label"))
@@ -397,31 +414,83 @@ private:
     return Ctx::Number;
   }
 
-  // A string expression: string constants and concat; other operands are numbers.
-  bool stringExpr(const Expr &e, SourceLoc l, const Where &where) {
-    if (e.kind == ExprKind::String) return true;
-    if (e.kind == ExprKind::Binary && e.op == OpCode::Concat && e.args.size() == 2 && e.args[0] && e.args[1])
-      return stringExpr(*e.args[0], l, where) && stringExpr(*e.args[1], l, where);
-    return numericExpr(e, l, where);
+  // What an expression statically is: 's' a string (constants, symbols, concat, string
+  // builtins, variables declared string/char/axis), 'n' a number, 'a' either (undeclared named
+  // variables and QS parameters hold what was assigned: checked at run time).
+  char kindOf(const Expr &e) const {
+    switch (e.kind) {
+    case ExprKind::String:
+    case ExprKind::Symbol: return 's';
+    case ExprKind::Binary: return e.op == OpCode::Concat ? 's' : 'n';
+    case ExprKind::Call: {
+      const BuiltinInfo *b = findBuiltin(e.str);
+      return b ? b->result : 'n';
+    }
+    case ExprKind::Var: {
+      if (e.space == VarSpace::QParam) return e.str == "QS" ? 'a' : 'n';
+      if (e.space != VarSpace::Local && e.space != VarSpace::Global) return 'n';
+      const VarDecl *d = fn_ ? decls_.find(*fn_, e) : nullptr;
+      if (!d || d->type == ValueType::Any) return 'a';
+      return holdsString(d->type) ? 's' : 'n';
+    }
+    default: return 'n';
+    }
+  }
+  static bool numericSpace(const Expr &v) {
+    return v.space == VarSpace::Numbered || v.space == VarSpace::RParam || (v.space == VarSpace::QParam && v.str != "QS");
   }
 
-  // Reports the first problem of the expression only.
-  bool numericExpr(const Expr &e, SourceLoc l, const Where &where) {
-    if (e.kind == ExprKind::String || e.kind == ExprKind::Symbol || (e.kind == ExprKind::Binary && e.op == OpCode::Concat)) {
-      error(l, where + ": strings are supported only in message texts and call targets yet");
-      return false;
-    }
+  // A value of any kind; its operands are checked for what they must be. Reports the first
+  // problem of the expression only.
+  bool anyExpr(const Expr &e, SourceLoc l, const Where &where) {
     if (e.kind == ExprKind::Var && !variable(e, l, where)) return false;
+    if (e.kind == ExprKind::Var) {
+      for (auto &i : e.args)
+        if (i && !numericExpr(*i, l, where)) return false;
+      return true;
+    }
+    if (e.kind == ExprKind::Binary && e.args.size() == 2 && e.args[0] && e.args[1]) {
+      if (e.op == OpCode::Concat) return anyExpr(*e.args[0], l, where) && anyExpr(*e.args[1], l, where);
+      if (e.op >= OpCode::Eq && e.op <= OpCode::Ge) {
+        char a = kindOf(*e.args[0]), b = kindOf(*e.args[1]);
+        if ((a == 's' && b == 'n') || (a == 'n' && b == 's')) {
+          error(l, where + ": cannot compare a string with a number");
+          return false;
+        }
+        return anyExpr(*e.args[0], l, where) && anyExpr(*e.args[1], l, where);
+      }
+    }
+    if (e.kind == ExprKind::Call)
+      if (const BuiltinInfo *b = findBuiltin(e.str); b && b->sfn) {
+        for (size_t i = 0; i < e.args.size(); ++i) {
+          if (!e.args[i]) continue;
+          char want = b->argKind(i), have = kindOf(*e.args[i]);
+          if (want == 's' && have == 'n') {
+            error(l, fmt::format("{}: '{}' argument {} must be a string", where.text(), b->name, i + 1));
+            return false;
+          }
+          if (!(want == 'n' ? numericExpr(*e.args[i], l, where) : anyExpr(*e.args[i], l, where))) return false;
+        }
+        return true;
+      }
     for (auto &a : e.args)
       if (a && !numericExpr(*a, l, where)) return false;
     return true;
+  }
+
+  // A number: a statically known string here is an error (at run time too, for 'a').
+  bool numericExpr(const Expr &e, SourceLoc l, const Where &where) {
+    if (kindOf(e) == 's') {
+      error(l, where + (": " + stringAsNumberMessage()).c_str());
+      return false;
+    }
+    return anyExpr(e, l, where);
   }
 
   bool variable(const Expr &e, SourceLoc l, const Where &where) {
     SysVar sv;
     if (e.space == VarSpace::System && !sysVarFromName(e.str, sv))
       error(l, fmt::format("{}: system variable '${}' is not supported yet", where.text(), e.str));
-    else if (e.space == VarSpace::QParam && e.str == "QS") error(l, where + ": QS string parameters are not supported yet");
     else return true;
     return false;
   }
@@ -457,8 +526,8 @@ private:
     case ExprKind::Call: {
       const BuiltinInfo *b = findBuiltin(e->str);
       if (!b) error(l, fmt::format("{}: unknown function '{}'", where, e->str));
-      else if (b->arity != n)
-        error(l, fmt::format("{}: function '{}' takes {} argument{}, found {}", where, b->name, b->arity,
+      else if (!b->accepts(n))
+        error(l, fmt::format("{}: function '{}' takes {} argument{}, found {}", where, b->name, builtinArity(*b),
                              b->arity == 1 ? "" : "s", n));
       break;
     }
@@ -468,7 +537,25 @@ private:
   }
 
   void verifyVar(const Expr &e, SourceLoc l, const std::string &where) {
-    if (e.args.size() > 1) error(l, where + ": a variable has more than one index");
+    bool named = e.space == VarSpace::Local || e.space == VarSpace::Global;
+    if (e.args.size() > (named ? kMaxArrayRank : 1))
+      error(l, fmt::format("{}: a variable has more than {} ind{}", where, named ? kMaxArrayRank : 1,
+                           named ? "ices" : "ex"));
+    else if (named && fn_ && !where.starts_with("'declare' argument 'var'")) {
+      // Declared arrays are indexed with their rank; undeclared named arrays are 1-D.
+      const VarDecl *d = decls_.find(*fn_, e);
+      unsigned rank = d ? d->rank : (e.args.empty() ? 0 : 1);
+      if (e.args.size() != rank) {
+        if (d && d->rank == 0)
+          error(l, fmt::format("{}: '{}' is declared as a scalar, not an array", where, e.str));
+        else if (d)
+          error(l, fmt::format("{}: array '{}' is declared with {} dimension{}, indexed with {}", where, e.str,
+                               d->rank, d->rank == 1 ? "" : "s", e.args.size()));
+        else
+          error(l, fmt::format("{}: '{}' has {} indices but is not declared as an array", where, e.str,
+                               e.args.size()));
+      }
+    }
     switch (e.space) {
     case VarSpace::QParam:
       if (e.str != "Q" && e.str != "QL" && e.str != "QR" && e.str != "QS")

@@ -2,6 +2,8 @@
 
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
+#include "ir/Decls.h"
+#include "ir/Strings.h"
 #include "ir/Value.h"
 #include "passes/CmdTemplate.h"
 #include "passes/Operators.h"
@@ -85,7 +87,9 @@ struct Evaluator::Impl {
   std::vector<double> globalNamed;
   std::unordered_map<std::string, std::vector<double>> globalArrays;
   double lastIndex = 0;  // index of the last array element referenced (for the unset error)
-  std::vector<double> numbered = std::vector<double>(100000, vacantValue());
+  std::vector<double> numbered = std::vector<double>(100000, numberedStart());
+  StringPool pool;  // the run's strings (ir/Strings.h)
+  DeclTable decls;  // declared types of the current module
   std::vector<double> rparams = std::vector<double>(1000, rParamStart());
   std::vector<double> qparams[kQSpaces];  // by qPrefixIndex, allocated on first use
   unsigned depth = 0;
@@ -292,7 +296,7 @@ struct Evaluator::Impl {
 
   // ------------------------------------------------------------ values
   double &numberedRef(Frame &fr, const Expr &v, bool write) {
-    double idx = num(ev(fr, *v.args[0]));
+    double idx = num(number(fr, *v.args[0]));
     long n = std::lround(idx);
     if (n >= 1 && n <= kMacroLocals) return fr.locals[n];
     if (n == 0) {
@@ -306,13 +310,25 @@ struct Evaluator::Impl {
   }
 
   double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, const char *what) {
-    long n = v.args.empty() ? 0 : std::lround(num(ev(fr, *v.args[0])));
+    long n = v.args.empty() ? 0 : std::lround(num(number(fr, *v.args[0])));
     if (n < 0 || n >= (long)arr.size()) fail(v.loc, fmt::format("{} index {} out of range", what, n));
     return arr[n];
   }
 
   double &elemRef(std::unordered_map<std::string, std::vector<double>> &arrays, Frame &fr, const Expr &v) {
-    lastIndex = ev(fr, *v.args[0]);
+    if (const VarDecl *d = decls.find(*curFn->fn, v)) {  // declared: rank indices within the bounds
+      uint64_t flat = 0;
+      for (unsigned k = 0; k < d->rank; ++k) {
+        double x = num(number(fr, *v.args[k]));
+        if (!(x >= 0 && x < d->dims[k]) || x != std::trunc(x))
+          fail(v.loc, declaredIndexMessage(v.str, x, k + 1, d->rank, d->dims[k]));
+        flat = flat * d->dims[k] + (uint64_t)x;
+      }
+      auto &a = arrays[v.str];
+      if (a.size() != d->size()) a.assign(d->size(), initialValue(d->type));
+      return a[flat];
+    }
+    lastIndex = number(fr, *v.args[0]);
     uint32_t i;
     if (!arrayIndex(lastIndex, i)) fail(v.loc, arrayIndexMessage(v.str, lastIndex));
     auto &a = arrays[v.str];
@@ -386,7 +402,7 @@ struct Evaluator::Impl {
     case ExprKind::Bool: return e.num;
     case ExprKind::Vacant: return vacantValue();
     case ExprKind::String:
-    case ExprKind::Symbol: fail(e.loc, "strings are not supported in numeric expressions yet");
+    case ExprKind::Symbol: return intern(e.str, e.loc);
     case ExprKind::Var: {
       double v = varRef(fr, *curFn, e, false);
       if (isUnset(v))
@@ -395,15 +411,27 @@ struct Evaluator::Impl {
       return v;
     }
     case ExprKind::Unary: {
-      double r;
-      if (applyUnary(e.op, ev(fr, *e.args[0]), r) != OpStatus::Ok) fail(e.loc, "bad unary operator");
+      double r, a = ev(fr, *e.args[0]);
+      if (isString(a)) fail(e.loc, operatorOnStringMessage(opCodeName(e.op)));
+      if (applyUnary(e.op, a, r) != OpStatus::Ok) fail(e.loc, "bad unary operator");
       return r;
     }
     case ExprKind::Binary: {
+      if (e.op == OpCode::Concat) {  // the text of the whole concat chain, one new string
+        std::string t;
+        appendStr(fr, e, t);
+        return intern(t, e.loc);
+      }
       // Both sides are always evaluated (no short-circuit in Macro B).
       double a = ev(fr, *e.args[0]);
       double b = ev(fr, *e.args[1]);
       double r;
+      if (isString(a) || isString(b)) {
+        std::string err;
+        if (e.op < OpCode::Eq || e.op > OpCode::Ge) fail(e.loc, operatorOnStringMessage(opCodeName(e.op)));
+        if (!compareStrings(pool, (int)e.op - (int)OpCode::Eq, a, b, r, err)) fail(e.loc, err);
+        return r;
+      }
       switch (applyBinary(e.op, a, b, r)) {
       case OpStatus::Ok: return r;
       case OpStatus::DivByZero: fail(e.loc, "division by zero");
@@ -417,16 +445,40 @@ struct Evaluator::Impl {
       if (isExistsCall(e.str, e.args.size()) && e.args[0]) return exists(fr, *e.args[0]) ? 1.0 : 0.0;
       const BuiltinInfo *b = findBuiltin(e.str);
       if (!b) fail(e.loc, fmt::format("unknown function '{}'", e.str));
-      if (b->arity != e.args.size())
-        fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, b->arity, e.args.size()));
+      if (!b->accepts(e.args.size()))
+        fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, builtinArity(*b), e.args.size()));
       double args[4] = {0, 0, 0, 0};
-      for (size_t i = 0; i < e.args.size() && i < 4; ++i) args[i] = num(ev(fr, *e.args[i]));
-      double r = b->fn(args);
+      for (size_t i = 0; i < e.args.size() && i < 4; ++i) args[i] = ev(fr, *e.args[i]);
+      double r;
+      if (b->sfn) {  // string builtins take the values as they are
+        std::string err;
+        if (!b->sfn(pool, args, (unsigned)e.args.size(), r, err)) fail(e.loc, err);
+        return r;
+      }
+      for (double &a : args) {
+        if (isString(a)) fail(e.loc, builtinOnStringMessage(b->name));
+        a = num(a);
+      }
+      r = b->fn(args);
       if (std::isnan(r)) fail(e.loc, fmt::format("'{}' argument out of domain", b->name));
       return r;
     }
     }
     fail(e.loc, "bad expression");
+  }
+
+  double intern(std::string_view s, SourceLoc loc) {
+    double h;
+    std::string err;
+    if (!pool.intern(s, h, err)) fail(loc, err);
+    return h;
+  }
+
+  // A value used as a number (conditions, counts, indices, words): a string is an error.
+  double number(Frame &fr, const Expr &e) {
+    double v = ev(fr, e);
+    if (isString(v)) fail(e.loc, stringAsNumberMessage());
+    return v;
   }
 
   // A string expression's text; numeric operands as numberText, or fixedNumberText (ir/Value.h).
@@ -437,14 +489,15 @@ struct Evaluator::Impl {
       appendStr(fr, *e.args[1], out, fixed);
     } else if (fixed && !exists(fr, e)) {
       out += fixedNumberText(unsetValue());  // LinuxCNC prints an unknown parameter as ######
-    } else out += fixed ? fixedNumberText(ev(fr, e)) : numberText(ev(fr, e));
+    } else out += valueText(pool, ev(fr, e), fixed);
   }
 
   // The function a callee expression names: a string, or a number meaning the program O<n>.
   const Function &callee(Frame &fr, const Expr &e, SourceLoc loc) {
     std::string name;
     if (e.isStringExpr()) appendStr(fr, e, name);
-    else if (double v = ev(fr, e); !programName(v, name)) fail(loc, badProgramNumberMessage(v));
+    else if (double v = ev(fr, e); isString(v)) name = pool.text(v);
+    else if (!programName(v, name)) fail(loc, badProgramNumberMessage(v));
     const Function *f = module->find(name);
     if (!f) fail(loc, unknownProgramMessage(name));
     return *f;
@@ -469,7 +522,7 @@ struct Evaluator::Impl {
       cmd.text = text.c_str();
     }
     for (const CmdSlot &s : t.slots) {
-      double v = ev(fr, *s.expr);
+      double v = number(fr, *s.expr);
       if (isVacant(v)) continue;
       if (!std::isfinite(v)) fail(s.expr->loc, "value is not a finite number");
       cmd.set(s.word, v);
@@ -483,9 +536,56 @@ struct Evaluator::Impl {
   }
 
   void execAssign(const Expr *target, const Expr *value, bool declare, Frame &fr, CompiledFn &cf) {
-    double v = value ? ev(fr, *value) : (declare ? 0.0 : vacantValue());
+    const VarDecl *d = decls.find(*cf.fn, *target);
+    double v = value ? ev(fr, *value) : declare ? initialValue(d ? d->type : ValueType::Real) : vacantValue();
     if (isUnset(v)) v = vacantValue();
+    v = convert(d, *target, v, target->loc);
+    if (declare && d && d->rank) {  // an array declaration sets every element
+      auto &arrays = target->space == VarSpace::Global ? globalArrays : fr.arrays;
+      arrays[target->str].assign(d->size(), v);
+      return;
+    }
     varRef(fr, cf, *target, true) = v;
+  }
+
+  // What a store into `target` keeps: converted to its declared type; numeric parameters take
+  // no strings.
+  double convert(const VarDecl *d, const Expr &target, double v, SourceLoc loc) {
+    if (d) {
+      std::string err;
+      if (!convertForStore(pool, d->type, d->len, target.str, v, v, err)) fail(loc, err);
+    } else if (isString(v) && (target.space == VarSpace::Numbered || target.space == VarSpace::RParam ||
+                               (target.space == VarSpace::QParam && target.str != "QS"))) {
+      fail(loc, stringInParameterMessage());
+    }
+    return v;
+  }
+
+  // Declared variables hold their type's initial value from the start of their scope: locals
+  // at each activation, globals from the start of the run.
+  std::unordered_map<std::string, bool> globalsStarted;
+  void startDeclared(const Function &f, CompiledFn &cf, Frame &fr) {
+    auto it = decls.locals.find(&f);
+    if (it != decls.locals.end())
+      for (auto &[name, d] : it->second) {
+        if (d.param) continue;
+        if (d.rank) fr.arrays[name].assign(d.size(), initialValue(d.type));
+        else {
+          uint32_t slot = localSlot(cf, name);
+          if (fr.named.size() <= slot) fr.named.resize((*cf.names).size(), unsetValue());
+          fr.named[slot] = initialValue(d.type);
+        }
+      }
+    for (auto &[name, d] : decls.globals) {
+      if (globalsStarted[name]) continue;
+      globalsStarted[name] = true;
+      if (d.rank) globalArrays[name].assign(d.size(), initialValue(d.type));
+      else {
+        auto g = globalNames.emplace(name, (uint32_t)globalNames.size());
+        if (g.second) globalNamed.push_back(unsetValue());
+        globalNamed[g.first->second] = initialValue(d.type);
+      }
+    }
   }
 
   // Straight-line code (a streamed chunk, a flat program) runs op by op without linearising:
@@ -501,6 +601,7 @@ struct Evaluator::Impl {
     cf.fn = &f;
     cf.names = &mainLocalNames;
     curFn = &cf;
+    startDeclared(f, cf, fr);
     CmdTemplate t;
     for (const Op &op : f.body) {
       if (isMachineOp(op.kind)) {
@@ -521,6 +622,7 @@ struct Evaluator::Impl {
     CompiledFn *saved = curFn;
     curFn = &cf;
     fr.slots.assign(cf.slots, 0.0);
+    startDeclared(f, cf, fr);
     const auto &code = cf.code;
     uint32_t pc = 0;
     while (true) {
@@ -535,7 +637,7 @@ struct Evaluator::Impl {
         execAssign(in.target, in.expr, in.kind == IK::Declare, fr, cf);
         ++pc;
         break;
-      case IK::JumpIfFalse: pc = truthy(ev(fr, *in.expr)) ? pc + 1 : in.jump; break;
+      case IK::JumpIfFalse: pc = truthy(number(fr, *in.expr)) ? pc + 1 : in.jump; break;
       case IK::Jump:
         if (in.backward) {
           if (++fr.backJumps > limits.maxLoopIterations)
@@ -554,7 +656,7 @@ struct Evaluator::Impl {
         pc = in.jump;
         break;
       case IK::CountInit:
-        fr.slots[in.slot] = in.expr ? std::round(num(ev(fr, *in.expr))) : -1.0;
+        fr.slots[in.slot] = in.expr ? std::round(num(number(fr, *in.expr))) : -1.0;
         ++pc;
         break;
       case IK::CountTest: {
@@ -578,7 +680,7 @@ struct Evaluator::Impl {
     if (!calleeE) fail(op.loc, unknownProgramMessage("?"));
     const Function *f = &callee(fr, *calleeE, op.loc);
     const Expr *countE = op.get("count");
-    double count = countE ? num(ev(fr, *countE)) : 1;
+    double count = countE ? num(number(fr, *countE)) : 1;
     const Expr *frameE = op.get("frame");
     bool newFrame = frameE && frameE->str == "new";
     if (depth + 1 > limits.maxCallDepth)
@@ -590,8 +692,17 @@ struct Evaluator::Impl {
       if (a.key.rfind("a.", 0) != 0) continue;
       std::string k = a.key.substr(2);
       double v = ev(fr, *a.value);
-      if (!k.empty() && k[0] >= '0' && k[0] <= '9') numberedArgs.push_back({std::atol(k.c_str()), v});
-      else namedArgs.push_back({k, v});
+      if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
+        if (isString(v)) fail(op.loc, stringInParameterMessage());
+        numberedArgs.push_back({std::atol(k.c_str()), v});
+      } else {
+        // A typed parameter converts its argument (ir/Strings.h convertForStore).
+        if (const VarDecl *d = decls.find(*f, VarSpace::Local, k)) {
+          std::string err;
+          if (!convertForStore(pool, d->type, d->len, k, v, v, err)) fail(op.loc, err);
+        }
+        namedArgs.push_back({k, v});
+      }
     }
     ++depth;
     for (long i = 0; i < (long)std::llround(count); ++i) {
@@ -602,11 +713,9 @@ struct Evaluator::Impl {
         for (auto &[n, v] : numberedArgs)
           if (n >= 1 && n <= kMacroLocals) nf.locals[n] = v;
         CompiledFn &cf = compile(*f);
+        for (auto &[n, v] : namedArgs) localSlot(cf, n);  // the callee may only read it
         nf.named.assign((*cf.names).size(), unsetValue());
-        for (auto &[n, v] : namedArgs) {
-          auto it = (*cf.names).find(n);
-          if (it != (*cf.names).end()) nf.named[it->second] = v;
-        }
+        for (auto &[n, v] : namedArgs) nf.named[(*cf.names).at(n)] = v;
         runFunction(*f, nf);
       } else {
         Frame shared;
@@ -629,6 +738,8 @@ struct Evaluator::Impl {
     compiled.clear();  // a new module (or chunk) may reuse addresses of the last one
     if (m.functions.empty()) return true;
     if (!trusted && !verifyRunnable(m, diags)) return false;
+    decls = DeclTable();
+    collectDecls(m, decls, nullptr);
     if (!started) {
       start = std::chrono::steady_clock::now();
       for (double &l : mainFrame.locals) l = vacantValue();

@@ -39,7 +39,7 @@ static void fold(ExprPtr &e) {
     break;
   case ExprKind::Call: {
     const BuiltinInfo *bi = findBuiltin(e->str);
-    if (!bi || bi->arity != e->args.size() || e->args.size() > 4) return;
+    if (!bi || !bi->fn || bi->arity != e->args.size() || e->args.size() > 4) return;
     double args[4] = {};
     for (size_t i = 0; i < e->args.size(); ++i)
       if (!constValue(*e->args[i], args[i])) return;

@@ -2,6 +2,7 @@
 // and reports what no engine could run: unknown functions, wrong arity, strings in arithmetic,
 // calls to programs the module does not have.
 #include "ir/Builtins.h"
+#include "ir/Decls.h"
 #include "passes/Pass.h"
 
 #include <fmt/format.h>
@@ -13,6 +14,26 @@ namespace {
 struct Sema {
   const Module &m;
   Diagnostics &diags;
+  DeclTable decls;
+  const Function *fn = nullptr;
+
+  // A variable's type: from its declaration (or typed parameter); undeclared named variables
+  // and QS parameters hold what was assigned (Unknown); numbered, R and Q parameters are REAL.
+  Type varType(const Expr &e) const {
+    if (e.space == VarSpace::QParam) return e.str == "QS" ? Type::Unknown : Type::Real;
+    if (e.space != VarSpace::Local && e.space != VarSpace::Global) return Type::Real;
+    const VarDecl *d = fn ? decls.find(*fn, e) : nullptr;
+    switch (d ? d->type : ValueType::Any) {
+    case ValueType::Int: return Type::Int;
+    case ValueType::Real: return Type::Real;
+    case ValueType::Bool: return Type::Bool;
+    case ValueType::Char:
+    case ValueType::String: return Type::String;
+    case ValueType::Axis: return Type::Axis;
+    case ValueType::Any: break;
+    }
+    return Type::Unknown;
+  }
 
   static bool numeric(Type t) { return t == Type::Int || t == Type::Real || t == Type::Bool || t == Type::Unknown; }
 
@@ -26,10 +47,10 @@ struct Sema {
     case ExprKind::Vacant: e.type = Type::Real; break;
     case ExprKind::Var:
       // System variables may be indexed by axis name ($AA_IM[X]); others by number.
-      if (!e.args.empty() && !numeric(e.args[0]->type) &&
-          !(e.space == VarSpace::System && e.args[0]->kind == ExprKind::Symbol))
-        diags.error(e.loc, "variable index must be a number");
-      if (e.type == Type::Unknown) e.type = Type::Real;
+      for (auto &i : e.args)
+        if (i && !numeric(i->type) && !(e.space == VarSpace::System && i->kind == ExprKind::Symbol))
+          diags.error(e.loc, "variable index must be a number");
+      e.type = e.space == VarSpace::System ? Type::Real : varType(e);
       break;
     case ExprKind::Unary:
       if (!numeric(e.args[0]->type)) diags.error(e.loc, fmt::format("operand of '{}' must be a number", opCodeName(e.op)));
@@ -42,7 +63,11 @@ struct Sema {
         break;
       }
       bool cmp = e.op >= OpCode::Eq && e.op <= OpCode::Ge;
-      if (!(numeric(a) && numeric(b)) && !(cmp && a == Type::String && b == Type::String))
+      auto str = [](Type t) { return t == Type::String || t == Type::Unknown || t == Type::Symbol || t == Type::Axis; };
+      auto known = [](Type t) { return t != Type::Unknown; };
+      if (cmp && ((str(a) && known(a) && numeric(b) && known(b)) || (numeric(a) && known(a) && str(b) && known(b))))
+        diags.error(e.loc, "cannot compare a string with a number");
+      else if (!(numeric(a) && numeric(b)) && !(cmp && str(a) && str(b)))
         diags.error(e.loc, fmt::format("operands of '{}' must be numbers", opCodeName(e.op)));
       if (cmp || e.op == OpCode::And || e.op == OpCode::Or || e.op == OpCode::Xor) e.type = Type::Bool;
       else if (a == Type::Int && b == Type::Int && e.op != OpCode::Div && e.op != OpCode::Pow) e.type = Type::Int;
@@ -52,11 +77,16 @@ struct Sema {
     case ExprKind::Call: {
       const BuiltinInfo *b = findBuiltin(e.str);
       if (!b) diags.error(e.loc, fmt::format("unknown function '{}'", e.str));
-      else if (b->arity != e.args.size())
-        diags.error(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, b->arity, e.args.size()));
-      for (auto &a : e.args)
-        if (!numeric(a->type)) diags.error(a->loc, "function argument must be a number");
-      e.type = Type::Real;
+      else if (!b->accepts(e.args.size()))
+        diags.error(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, builtinArity(*b), e.args.size()));
+      for (size_t i = 0; i < e.args.size(); ++i) {
+        char want = b ? b->argKind(i) : 'n';
+        Type t = e.args[i]->type;
+        if (want == 'n' && !numeric(t)) diags.error(e.args[i]->loc, "function argument must be a number");
+        if (want == 's' && numeric(t) && t != Type::Unknown)
+          diags.error(e.args[i]->loc, "function argument must be a string");
+      }
+      e.type = b && b->result == 's' ? Type::String : Type::Real;
       break;
     }
     }
@@ -74,6 +104,17 @@ struct Sema {
         if (!computed && (!c || !constantCallee(*c, name) || !m.find(name)))
           diags.error(op.loc, fmt::format("call to unknown program '{}'", name));
       }
+      if (op.kind == OpKind::Assign || op.kind == OpKind::Declare) {  // stores the declared type refuses
+        bool assign = op.kind == OpKind::Assign;
+        const Expr *t = op.get(assign ? "target" : "var"), *v = op.get(assign ? "value" : "init");
+        const VarDecl *d = t && v && fn ? decls.find(*fn, *t) : nullptr;
+        bool strValue = v && (v->type == Type::String || v->type == Type::Symbol);
+        bool numValue = v && v->type != Type::Unknown && numeric(v->type);
+        if (d && strValue && (d->type == ValueType::Int || d->type == ValueType::Real))
+          diags.error(op.loc, fmt::format("cannot assign a string to {} variable '{}'", valueTypeName(d->type), t->str));
+        if (d && numValue && (d->type == ValueType::String || d->type == ValueType::Axis))
+          diags.error(op.loc, fmt::format("cannot assign a number to {} variable '{}'", valueTypeName(d->type), t->str));
+      }
       if ((op.kind == OpKind::If || op.kind == OpKind::While)) {
         const Expr *c = op.get("cond");
         if (c && !numeric(c->type)) diags.error(c->loc, "condition must be a number or boolean");
@@ -86,8 +127,12 @@ struct Sema {
 
 bool runSema(Module &m, Diagnostics &diags, PassContext &) {
   unsigned before = diags.errorCount();
-  Sema s{m, diags};
-  for (auto &f : m.functions) s.region(f.body);
+  Sema s{m, diags, {}, nullptr};
+  collectDecls(m, s.decls, nullptr);
+  for (auto &f : m.functions) {
+    s.fn = &f;
+    s.region(f.body);
+  }
   return diags.errorCount() == before;
 }
 

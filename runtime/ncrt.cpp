@@ -2,6 +2,7 @@
 #include "runtime/ncrt.h"
 
 #include "ir/Arith.h"
+#include "ir/Builtins.h"
 #include "ir/Diagnostics.h"
 #include "ir/SystemVars.h"
 
@@ -201,13 +202,14 @@ double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id) {
 
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
-void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += numberText(v); }
-void ncrt_str_num_fixed(ncrt_ctx *ctx, double v) { ctx->text += fixedNumberText(v); }
+void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v); }
+void ncrt_str_num_fixed(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v, true); }
 const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
 
 int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
                     uint32_t file, uint32_t line, uint32_t col) {
-  if (numeric && !programName(value, ctx->text)) {
+  if (numeric && isString(value)) ctx->text = ctx->pool.text(value);
+  else if (numeric && !programName(value, ctx->text)) {
     ctx->diags.error({file, line, col}, badProgramNumberMessage(value));
     return -1;
   }
@@ -215,6 +217,54 @@ int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const 
     if (ctx->text == names[i]) return (int64_t)i;
   ctx->diags.error({file, line, col}, unknownProgramMessage(ctx->text));
   return -1;
+}
+
+// An error reported at the loc: the result generated code recognises.
+static double failed(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const std::string &msg) {
+  ctx->diags.error({file, line, col}, msg);
+  return unsetValue();
+}
+
+double ncrt_str_const(ncrt_ctx *ctx, const char *s, uint64_t len, uint32_t file, uint32_t line, uint32_t col) {
+  double h;
+  std::string err;
+  return ctx->pool.intern(std::string_view(s, len), h, err) ? h : failed(ctx, file, line, col, err);
+}
+
+double ncrt_str_intern(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  double h;
+  std::string err;
+  return ctx->pool.intern(ctx->text, h, err) ? h : failed(ctx, file, line, col, err);
+}
+
+double ncrt_strfn(ncrt_ctx *ctx, uint32_t index, const double *args, uint32_t n, uint32_t file, uint32_t line,
+                  uint32_t col) {
+  unsigned count = 0;
+  const BuiltinInfo *tab = builtinTable(count);
+  double r;
+  std::string err;
+  if (index >= count || !tab[index].sfn) return failed(ctx, file, line, col, "internal error: not a string builtin");
+  return tab[index].sfn(ctx->pool, args, n, r, err) ? r : failed(ctx, file, line, col, err);
+}
+
+double ncrt_compare(ncrt_ctx *ctx, int32_t op, double a, double b, uint32_t file, uint32_t line, uint32_t col) {
+  double r;
+  std::string err;
+  return compareStrings(ctx->pool, op, a, b, r, err) ? r : failed(ctx, file, line, col, err);
+}
+
+double ncrt_convert(ncrt_ctx *ctx, uint32_t type, uint32_t len, const char *name, double v, uint32_t file,
+                    uint32_t line, uint32_t col) {
+  double r;
+  std::string err;
+  return convertForStore(ctx->pool, (ValueType)type, len, name, v, r, err) ? r : failed(ctx, file, line, col, err);
+}
+
+void ncrt_fill(double *p, uint64_t n, double v) { std::fill_n(p, n, v); }
+
+void ncrt_bad_index(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const char *name, double index,
+                    uint32_t dim, uint32_t rank, uint32_t extent) {
+  failed(ctx, file, line, col, declaredIndexMessage(name, index, dim, rank, extent));
 }
 
 double ncrt_mod(double a, double b) { return arithMod(a, b); }

@@ -15,6 +15,7 @@
 
 #ifdef __cplusplus
 #include "ir/MachineCmd.h"
+#include "ir/Strings.h"
 #include "passes/Eval.h"  // CmdSink: where commands go (the Executor, or a recorder in tests)
 #include "passes/ExecLimits.h"
 
@@ -47,13 +48,14 @@ enum {
 };
 
 /* Variable storage and limits, laid out for direct access from generated code. Numbered slots
- * start vacant, R and Q parameters as ir/Value.h says (0; QS vacant); named globals start unset
- * (NCRT_UNSET_BITS). */
+ * start vacant, R and Q parameters as ir/Value.h says (0; QS the empty string); named globals
+ * start unset (NCRT_UNSET_BITS), declared ones with their type's initial value (set by the
+ * generated entry). */
 typedef struct ncrt_storage {
   double *numbered;   /* #0 .. #(NCRT_NUMBERED-1); #1..#33 are never used here (frame locals) */
   double *rparam;     /* R0 .. R(NCRT_RPARAMS-1) */
   double *qparam;     /* q_spaces arrays of NCRT_QPARAMS, array i for Q prefix i (qPrefixIndex) */
-  double *named;      /* named globals (%%name), then the global arrays (kArrayElements each) */
+  double *named;      /* named globals (%%name), then the global arrays (declared size, else kArrayElements) */
   uint64_t max_loop;  /* ExecLimits::maxLoopIterations */
   uint32_t max_depth; /* ExecLimits::maxCallDepth */
   uint32_t depth;     /* current call depth; main = 0 */
@@ -89,9 +91,10 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 /* Called when storage->poll runs out: resets it and checks the run-time limit. Returns
  * NCRT_ERROR (reported at the given loc) when the limit is exceeded, else NCRT_OK. */
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
-/* Run-time strings (message texts, computed callees): generated code clears the context's text
- * buffer, appends the leaves of a string expression in order, then reads it. Numbers are
- * appended as ncc::numberText (ir/Value.h). */
+/* Run-time texts (message texts, computed callees, concat before ncrt_str_intern): generated
+ * code clears the context's text buffer, appends the leaves of a string expression in order,
+ * then reads it. Values are appended as ncc::valueText (ir/Strings.h): strings as they are,
+ * numbers as numberText (ncrt_str_num_fixed: fixedNumberText). */
 void ncrt_str_clear(ncrt_ctx *ctx);
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
 void ncrt_str_num(ncrt_ctx *ctx, double v);
@@ -104,6 +107,25 @@ const char *ncrt_str(ncrt_ctx *ctx);
  * when there is no such function. */
 int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
                     uint32_t file, uint32_t line, uint32_t col);
+/* Typed values (ir/Strings.h). Functions returning a double return NCRT_UNSET_BITS after
+ * reporting an error at the loc; generated code then returns NCRT_ERROR.
+ *  ncrt_str_const   the handle of a string constant (len bytes)
+ *  ncrt_str_intern  the handle of the text buffer (a concat built with ncrt_str_cat/num)
+ *  ncrt_strfn       string builtin `index` of ir/Builtins.h builtinTable on n raw arguments
+ *  ncrt_compare     a comparison (op eq..ge = 0..5) where an operand is a string
+ *  ncrt_convert     a store into a variable of ValueType `type` (STRING: at most len bytes)
+ *  ncrt_fill        n doubles set to v (declared arrays)
+ *  ncrt_bad_index   reports declaredIndexMessage */
+double ncrt_str_const(ncrt_ctx *ctx, const char *s, uint64_t len, uint32_t file, uint32_t line, uint32_t col);
+double ncrt_str_intern(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
+double ncrt_strfn(ncrt_ctx *ctx, uint32_t index, const double *args, uint32_t n, uint32_t file, uint32_t line,
+                  uint32_t col);
+double ncrt_compare(ncrt_ctx *ctx, int32_t op, double a, double b, uint32_t file, uint32_t line, uint32_t col);
+double ncrt_convert(ncrt_ctx *ctx, uint32_t type, uint32_t len, const char *name, double v, uint32_t file,
+                    uint32_t line, uint32_t col);
+void ncrt_fill(double *p, uint64_t n, double v);
+void ncrt_bad_index(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const char *name, double index,
+                    uint32_t dim, uint32_t rank, uint32_t extent);
 /* Arithmetic of ir/Arith.h on num() operands (the divisor is checked by the caller). */
 double ncrt_mod(double a, double b);
 double ncrt_bitwise(int32_t op, double a, double b);  /* arithBitwise: NaN on non-integers */
@@ -132,6 +154,7 @@ struct ncrt_ctx {
   std::vector<double> numbered, rparam, qparam, named;
   bool ended = false;  // a stop kind=end|end_rewind was executed
   std::string text;    // the run-time string being built (ncrt_str_*)
+  ncc::StringPool pool;  // the run's string values
 };
 #endif
 

@@ -74,6 +74,13 @@ void Codegen::declareRuntime() {
   fStrNumFixed = decl("ncrt_str_num_fixed", voidTy, {ptrTy, dblTy});
   fStr = decl("ncrt_str", ptrTy, {ptrTy});
   fCallee = decl("ncrt_callee", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty});
+  fStrConst = decl("ncrt_str_const", dblTy, {ptrTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty});
+  fStrIntern = decl("ncrt_str_intern", dblTy, {ptrTy, i32Ty, i32Ty, i32Ty});
+  fStrFn = decl("ncrt_strfn", dblTy, {ptrTy, i32Ty, ptrTy, i32Ty, i32Ty, i32Ty, i32Ty});
+  fCompare = decl("ncrt_compare", dblTy, {ptrTy, i32Ty, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
+  fConvert = decl("ncrt_convert", dblTy, {ptrTy, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
+  fFill = decl("ncrt_fill", voidTy, {ptrTy, i64Ty, dblTy});
+  fBadIndex = decl("ncrt_bad_index", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   // Pure arithmetic helpers: lets LLVM keep variables in registers across them.
   for (auto *fc : {&fMod, &fIDiv, &fPow, &fBitwise}) {
     auto *fn = cast<Function>(fc->getCallee());
@@ -81,10 +88,11 @@ void Codegen::declareRuntime() {
     fn->setDoesNotThrow();
     fn->addFnAttr(Attribute::WillReturn);
   }
-  for (auto *fc : {&fError, &fFault}) cast<Function>(fc->getCallee())->addFnAttr(Attribute::Cold);
+  for (auto *fc : {&fError, &fFault, &fBadIndex}) cast<Function>(fc->getCallee())->addFnAttr(Attribute::Cold);
   unsigned n = 0;
   const BuiltinInfo *tab = builtinTable(n);
   for (unsigned i = 0; i < n; ++i) {
+    if (!tab[i].fn) continue;  // string builtins go through ncrt_strfn
     auto fc = decl(tab[i].symbol, dblTy, {ptrTy});
     auto *fn = cast<Function>(fc.getCallee());
     fn->setMemoryEffects(MemoryEffects::argMemOnly(ModRefInfo::Ref));  // reads only its arguments
@@ -99,10 +107,21 @@ void Codegen::declareRuntime() {
 // eval engine); named globals and Q prefixes get module-wide slots.
 void Codegen::scanExprNames(FnInfo &fi, const Expr &e) {
   if (e.kind == ExprKind::Var) {
+    // Arrays: declared ones (a declare op's var has the dimensions as indices) with their size,
+    // undeclared ones with kArrayElements.
     bool indexed = !e.args.empty();
-    if (e.space == ir::VarSpace::Local && indexed) fi.arrays.emplace(e.str, (unsigned)fi.arrays.size());
+    const VarDecl *d = decls_.find(*fi.fn, e);
+    uint64_t size = d && d->rank ? d->size() : kArrayElements;
+    if (d && d->rank) indexed = true;
+    if (e.space == ir::VarSpace::Local && indexed && !fi.arrays.count(e.str)) {
+      fi.arrays[e.str] = {fi.arraySlots, size};
+      fi.arraySlots += size;
+    }
     if (e.space == ir::VarSpace::Local && !indexed) fi.locals.emplace(e.str, (unsigned)fi.locals.size());
-    if (e.space == ir::VarSpace::Global && indexed) globalArrays_.emplace(e.str, (unsigned)globalArrays_.size());
+    if (e.space == ir::VarSpace::Global && indexed && !globalArrays_.count(e.str)) {
+      globalArrays_[e.str] = {globalArraySlots_, size};
+      globalArraySlots_ += size;
+    }
     if (e.space == ir::VarSpace::Global && !indexed) globalNames_.emplace(e.str, (unsigned)globalNames_.size());
     if (e.space == ir::VarSpace::QParam) qSpaces_ = std::max(qSpaces_, (unsigned)(qPrefixIndex(e.str) + 1));
   }
@@ -229,11 +248,23 @@ void Codegen::emitFunction(FnInfo &fi) {
   scratch = B.CreateAlloca(dblTy, nullptr, "scratch");
   B.CreateStore(B.getInt64(0), backJumps);
   localArrays = nullptr;
-  if (!fi.arrays.empty()) {  // fresh, unset arrays per activation
-    uint64_t n = (uint64_t)fi.arrays.size() * kArrayElements;
+  if (!fi.arrays.empty()) {  // fresh arrays per activation: unset, declared ones initial values
+    uint64_t n = fi.arraySlots;
     localArrays = B.CreateAlloca(ArrayType::get(dblTy, n), nullptr, "arrays");
     B.CreateCall(fUnset, {localArrays, B.getInt64(n)});
   }
+  // Declared locals hold their type's initial value from the start of each activation.
+  if (auto it = decls_.locals.find(fi.fn); it != decls_.locals.end())
+    for (auto &[name, d] : it->second) {
+      if (d.param) continue;
+      Constant *init = ConstantFP::get(dblTy, initialValue(d.type));
+      if (d.rank) {
+        auto &a = fi.arrays.at(name);
+        B.CreateCall(fFill, {B.CreateConstGEP1_64(dblTy, localArrays, a.offset), B.getInt64(a.size), init});
+      } else if (auto l = fi.locals.find(name); l != fi.locals.end()) {
+        B.CreateStore(init, B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + l->second));
+      }
+    }
   failBB = newBlock("fail");
   exitBB = newBlock("exit");
   BasicBlock *body = newBlock("body");
@@ -274,9 +305,22 @@ void Codegen::emitEntry() {
   entryBB = newBlock("entry");
   B.SetInsertPoint(entryBB);
   Value *ctx = main->getArg(0);
-  uint64_t named = globalNames_.size() + (uint64_t)globalArrays_.size() * kArrayElements;
+  uint64_t named = globalNames_.size() + globalArraySlots_;
   Value *st = B.CreateCall(fBegin, {ctx, B.getInt32((uint32_t)named),
                                     B.getInt32(qSpaces_)});
+  // Declared globals hold their type's initial value from the start of the run.
+  Value *namedPtr = B.CreateLoad(ptrTy, B.CreateStructGEP(storageTy, st, 3));
+  for (auto &[name, d] : decls_.globals) {
+    Constant *init = ConstantFP::get(dblTy, initialValue(d.type));
+    if (d.rank) {
+      auto it = globalArrays_.find(name);
+      if (it == globalArrays_.end()) continue;
+      B.CreateCall(fFill, {B.CreateConstGEP1_64(dblTy, namedPtr, globalNames_.size() + it->second.offset),
+                           B.getInt64(it->second.size), init});
+    } else if (auto it = globalNames_.find(name); it != globalNames_.end()) {
+      B.CreateStore(init, B.CreateConstGEP1_64(dblTy, namedPtr, it->second));
+    }
+  }
   FnInfo &fi = functions_.at(src_.functions[0].name);
   Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
   initFrame(frame, fi.frameSize, 0);
@@ -285,6 +329,7 @@ void Codegen::emitEntry() {
 
 std::unique_ptr<Module> Codegen::run() {
   if (!ir::verifyRunnable(src_, diags_)) return nullptr;
+  ir::collectDecls(src_, decls_, nullptr);
   declareRuntime();
   for (auto &fn : src_.functions) {
     if (functions_.count(fn.name)) {

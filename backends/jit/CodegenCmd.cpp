@@ -4,6 +4,7 @@
 // with computed operands are built in a stack slot and passed to ncrt_exec.
 #include "backends/jit/CodegenImpl.h"
 
+#include "ir/Strings.h"
 #include "runtime/ncrt.h"
 
 #include <llvm/IR/Intrinsics.h>
@@ -84,6 +85,7 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
   Constant *inf = ConstantFP::getInfinity(dblTy);
   for (auto &slot : t.slots) {
     Val v = expr(*slot.expr);
+    checkNotString(v, slot.expr->loc, stringAsNumberMessage());
     Value *finite = B.CreateFCmpOLT(B.CreateUnaryIntrinsic(Intrinsic::fabs, v.v), inf);
     Value *vacant = v.mayVacant ? isVacant(v.v) : B.getFalse();
     failIf(B.CreateAnd(B.CreateNot(vacant), B.CreateNot(finite)), slot.expr->loc, "value is not a finite number");

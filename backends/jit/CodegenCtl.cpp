@@ -3,6 +3,7 @@
 // function activation, calls sharing or renewing the #1..#33 frame.
 #include "backends/jit/CodegenImpl.h"
 
+#include "ir/Strings.h"
 #include "ir/Value.h"
 #include "runtime/ncrt.h"
 
@@ -168,13 +169,22 @@ void Codegen::emitOp(const Op &op) {
   switch (op.kind) {
   case OpKind::Assign: {
     const Expr *value = op.get("value");
-    Value *v = value ? expr(*value).v : ConstantFP::get(dblTy, vacantValue());
-    storeVar(*op.get("target"), v);
+    storeVar(*op.get("target"), value ? expr(*value) : Val{ConstantFP::get(dblTy, vacantValue()), true});
     return;
   }
-  case OpKind::Declare: {
-    const Expr *init = op.get("init");
-    storeVar(*op.get("var"), init ? expr(*init).v : ConstantFP::get(dblTy, 0.0));
+  case OpKind::Declare: {  // the init value (or the type's initial value); arrays: every element
+    const Expr *init = op.get("init"), &var = *op.get("var");
+    const VarDecl *d = declOf(var);
+    Val v = init ? expr(*init) : Val{ConstantFP::get(dblTy, initialValue(d ? d->type : ValueType::Real)), false};
+    if (d && d->rank) {
+      Value *c = convertFor(var, d, v);
+      Value *base = var.space == ir::VarSpace::Global
+                        ? B.CreateConstGEP1_64(dblTy, namedBase, globalNames_.size() + globalArrays_.at(var.str).offset)
+                        : B.CreateConstGEP1_64(dblTy, localArrays, cur_->arrays.at(var.str).offset);
+      B.CreateCall(fFill, {base, B.getInt64(d->size()), c});
+      return;
+    }
+    storeVar(var, v);
     return;
   }
   case OpKind::If: emitIf(op); return;
@@ -302,7 +312,14 @@ void Codegen::emitCall(const Op &op) {
   faultIf(B.CreateICmpUGE(depth, maxDepth), op.loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
   std::vector<std::pair<std::string, Value *>> args;  // key after "a.", value
   for (auto &a : op.args)
-    if (a.key.rfind("a.", 0) == 0 && a.value) args.push_back({a.key.substr(2), expr(*a.value).v});
+    if (a.key.rfind("a.", 0) == 0 && a.value) {
+      std::string k = a.key.substr(2);
+      Val v = expr(*a.value);
+      if (!k.empty() && k[0] >= '0' && k[0] <= '9') checkNotString(v, op.loc, stringInParameterMessage());
+      else if (fixed)  // a typed parameter converts its argument (ir/Strings.h convertForStore)
+        v.v = convertArg(*fixed, k, v, op.loc);
+      args.push_back({k, v.v});
+    }
   B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
 
   Value *counter = nullptr, *limit = nullptr;
@@ -333,7 +350,11 @@ void Codegen::emitCall(const Op &op) {
       BasicBlock *bb = newBlock("call.case");
       sw->addCase(B.getInt64(i), bb);
       B.SetInsertPoint(bb);
-      emitInvoke(functions_.at(src_.functions[i].name), args, newFrame);
+      FnInfo &fi = functions_.at(src_.functions[i].name);
+      auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
+      for (auto &[k, v] : converted)
+        if (k.empty() || k[0] < '0' || k[0] > '9') v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
+      emitInvoke(fi, converted, newFrame);
       B.CreateBr(joined);
     }
     B.SetInsertPoint(joined);
@@ -343,6 +364,17 @@ void Codegen::emitCall(const Op &op) {
     B.SetInsertPoint(done);
   }
   B.CreateStore(depth, depthPtr);
+}
+
+// An argument for the named parameter `key` of `fi`, converted when the parameter is typed.
+Value *Codegen::convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc) {
+  const VarDecl *d = decls_.find(*fi.fn, ir::VarSpace::Local, key);
+  if (!d) return v.v;
+  ir::Expr param;
+  param.kind = ExprKind::Var;
+  param.str = key;
+  param.loc = loc;
+  return convertFor(param, d, v);
 }
 
 // One activation of `fi` with the caller's evaluated arguments.

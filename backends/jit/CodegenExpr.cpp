@@ -4,6 +4,7 @@
 
 #include "ir/Value.h"
 #include "ir/Builtins.h"
+#include "ir/Strings.h"
 #include "ir/SystemVars.h"
 #include "runtime/ncrt.h"
 
@@ -27,13 +28,40 @@ Value *Codegen::isVacant(Value *v) {
   return B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, kVacantBits));
 }
 
-Value *Codegen::numOf(Val v) {
+Value *Codegen::isStr(Value *v) {
+  return B.CreateICmpEQ(B.CreateAnd(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, kStringTagMask)),
+                        ConstantInt::get(i64Ty, kStringTag));
+}
+
+void Codegen::checkNotString(Val v, SourceLoc loc, const std::string &message) {
+  if (v.mayString) failIf(isStr(v.v), loc, message);
+}
+
+Value *Codegen::numOf(Val v) { return numOf(v, v.loc, stringAsNumberMessage()); }
+
+Value *Codegen::numOf(Val v, SourceLoc loc, const std::string &stringError) {
+  checkNotString(v, loc, stringError);
   if (!v.mayVacant) return v.v;
   return B.CreateSelect(isVacant(v.v), ConstantFP::get(dblTy, 0.0), v.v);
 }
 
-// truthy = not vacant and != 0 (a NaN is true, as `v != 0.0` is in C++).
+// A runtime call's result: the unset bits mean it reported an error.
+Value *Codegen::checked(Value *r) {
+  BasicBlock *ok = newBlock("ok");
+  B.CreateCondBr(B.CreateICmpEQ(B.CreateBitCast(r, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS)), failBB, ok);
+  B.SetInsertPoint(ok);
+  return r;
+}
+
+Val Codegen::stringConst(const std::string &s, SourceLoc loc) {
+  auto l = locArgs(loc);
+  Value *h = checked(B.CreateCall(fStrConst, {ctxArg, cstring(s), B.getInt64(s.size()), l[0], l[1], l[2]}));
+  return {h, false, true, loc};
+}
+
+// truthy = not vacant and != 0 (a NaN is true, as `v != 0.0` is in C++); a string is an error.
 Value *Codegen::truthy(Val v) {
+  checkNotString(v, v.loc, stringAsNumberMessage());
   Value *nz = B.CreateFCmpUNE(v.v, ConstantFP::get(dblTy, 0.0));
   if (!v.mayVacant) return nz;
   return B.CreateAnd(nz, B.CreateNot(isVacant(v.v)));
@@ -122,12 +150,41 @@ Value *Codegen::elemPtr(const Expr &var, Value *base) {
   return B.CreateGEP(dblTy, base, B.CreateFPToSI(x, i64Ty));
 }
 
+// Element of a declared array: each index an integer within its dimension, row-major.
+Value *Codegen::declaredElemPtr(const Expr &var, Value *base, const VarDecl &d) {
+  Value *flat = B.getInt64(0);
+  for (unsigned k = 0; k < d.rank; ++k) {
+    Value *x = numOf(expr(*var.args[k]));
+    Value *ok = B.CreateAnd(B.CreateAnd(B.CreateFCmpOGE(x, ConstantFP::get(dblTy, 0.0)),
+                                        B.CreateFCmpOLT(x, ConstantFP::get(dblTy, (double)d.dims[k]))),
+                            B.CreateFCmpOEQ(x, B.CreateUnaryIntrinsic(Intrinsic::trunc, x)));
+    BasicBlock *err = newBlock("bad.index"), *cont = newBlock("cont");
+    B.CreateCondBr(ok, cont, err);
+    B.SetInsertPoint(err);
+    auto l = locArgs(var.loc);
+    B.CreateCall(fBadIndex, {ctxArg, l[0], l[1], l[2], cstring(var.str), x, B.getInt32(k + 1), B.getInt32(d.rank),
+                             B.getInt32(d.dims[k])});
+    B.CreateBr(failBB);
+    B.SetInsertPoint(cont);
+    flat = B.CreateAdd(B.CreateMul(flat, B.getInt64(d.dims[k])), B.CreateFPToSI(x, i64Ty));
+  }
+  return B.CreateGEP(dblTy, base, flat);
+}
+
+const VarDecl *Codegen::declOf(const Expr &var) { return decls_.find(*cur_->fn, var); }
+
 Value *Codegen::varPtr(const Expr &var, bool write) {
+  const VarDecl *d = declOf(var);
+  if (d && d->rank) {
+    Value *base = var.space == VarSpace::Global
+                      ? B.CreateConstGEP1_64(dblTy, namedBase, globalNames_.size() + globalArrays_.at(var.str).offset)
+                      : B.CreateConstGEP1_64(dblTy, localArrays, cur_->arrays.at(var.str).offset);
+    return declaredElemPtr(var, base, *d);
+  }
   if (!var.args.empty() && var.space == VarSpace::Local)
-    return elemPtr(var, B.CreateConstGEP1_64(dblTy, localArrays, (uint64_t)cur_->arrays.at(var.str) * kArrayElements));
+    return elemPtr(var, B.CreateConstGEP1_64(dblTy, localArrays, cur_->arrays.at(var.str).offset));
   if (!var.args.empty() && var.space == VarSpace::Global)
-    return elemPtr(var, B.CreateConstGEP1_64(dblTy, namedBase, globalNames_.size() + (uint64_t)globalArrays_.at(var.str) *
-                                                                                   kArrayElements));
+    return elemPtr(var, B.CreateConstGEP1_64(dblTy, namedBase, globalNames_.size() + globalArrays_.at(var.str).offset));
   switch (var.space) {
   case VarSpace::Numbered: return numberedPtr(var, write);
   case VarSpace::RParam: return paramPtr(var, rBase, NCRT_RPARAMS, NCRT_FAULT_RPARAM);
@@ -157,39 +214,125 @@ Val Codegen::loadVar(const Expr &var) {
     return {v, false};
   }
   Value *v = B.CreateLoad(dblTy, varPtr(var, false));
+  bool mayString = var.space == VarSpace::QParam && var.str == "QS";
   if (var.space == VarSpace::Local || var.space == VarSpace::Global) {
+    const VarDecl *d = declOf(var);
+    mayString = !d || holdsString(d->type);
+    if (d && !d->param) return {v, d->type == ValueType::Real, mayString, var.loc};  // never unset
     Value *unset = B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
     if (var.args.empty()) faultIf(unset, var.loc, NCRT_FAULT_UNSET_VAR, var.str, nullptr);
     else faultIf(unset, var.loc, NCRT_FAULT_UNSET_ELEM, var.str, lastIndex);
   }
-  return {v, true};
+  return {v, true, mayString, var.loc};
 }
 
-void Codegen::storeVar(const Expr &var, Value *value) {
+// The value a store keeps (ir/Strings.h convertForStore, as the eval engine): converted to the
+// declared type; numeric parameters take no strings. REAL stores of numbers stay inline.
+Value *Codegen::convertFor(const Expr &var, const VarDecl *d, Val value) {
+  bool numericSpace = var.space == VarSpace::Numbered || var.space == VarSpace::RParam ||
+                      (var.space == VarSpace::QParam && var.str != "QS");
+  if (!d || d->type == ValueType::Any) {
+    if (numericSpace) checkNotString(value, var.loc, stringInParameterMessage());
+    return value.v;
+  }
+  if (d->type == ValueType::Real && !value.mayString) return value.v;
+  auto l = locArgs(var.loc);
+  return checked(B.CreateCall(fConvert, {ctxArg, B.getInt32((uint32_t)d->type), B.getInt32(d->len), cstring(var.str),
+                                         value.v, l[0], l[1], l[2]}));
+}
+
+void Codegen::storeVar(const Expr &var, Val value) {
   if (var.space == VarSpace::System) {
     fail(var.loc, fmt::format("system variable '{}' is read-only", var.str));
     return;
   }
-  B.CreateStore(value, varPtr(var, true));
+  Value *v = convertFor(var, declOf(var), value);
+  B.CreateStore(v, varPtr(var, true));
 }
 
-// String expressions (ir/Value.h): the leaves are appended to the runtime's text buffer.
+// The leaves of a concat chain, in order.
+void Codegen::collectLeaves(const Expr &e, std::vector<const Expr *> &out) {
+  if (e.kind == ExprKind::Binary && e.op == OpCode::Concat && e.args.size() == 2) {
+    collectLeaves(*e.args[0], out);
+    collectLeaves(*e.args[1], out);
+  } else {
+    out.push_back(&e);
+  }
+}
+
+// String expressions (ir/Strings.h): the leaves that are not constants are evaluated first (they
+// may build strings of their own), then all are appended to the runtime's text buffer: strings
+// as they are, numbers as numberText (fixed: fixedNumberText).
 void Codegen::appendString(const Expr &e, bool fixed) {
-  if (e.kind == ExprKind::String) B.CreateCall(fStrCat, {ctxArg, cstring(e.str)});
-  else if (e.kind == ExprKind::Binary && e.op == OpCode::Concat) {
-    appendString(*e.args[0], fixed);
-    appendString(*e.args[1], fixed);
-  } else if (fixed && e.kind == ExprKind::Var && e.args.empty() &&
-             (e.space == VarSpace::Local || e.space == VarSpace::Global)) {
-    // LinuxCNC prints an unset named parameter as ###### (fixedNumberText): the raw slot.
-    B.CreateCall(fStrNumFixed, {ctxArg, B.CreateLoad(dblTy, varPtr(e, false))});
-  } else B.CreateCall(fixed ? fStrNumFixed : fStrNum, {ctxArg, expr(e).v});
+  std::vector<const Expr *> leaves;
+  collectLeaves(e, leaves);
+  std::vector<Value *> vals;
+  for (const Expr *l : leaves) {
+    if (l->kind == ExprKind::String) vals.push_back(nullptr);
+    else if (fixed && l->kind == ExprKind::Var && l->args.empty() &&
+             (l->space == VarSpace::Local || l->space == VarSpace::Global))
+      // LinuxCNC prints an unset named parameter as ###### (fixedNumberText): the raw slot.
+      vals.push_back(B.CreateLoad(dblTy, varPtr(*l, false)));
+    else vals.push_back(expr(*l).v);
+  }
+  B.CreateCall(fStrClear, {ctxArg});
+  for (size_t i = 0; i < leaves.size(); ++i)
+    if (!vals[i]) B.CreateCall(fStrCat, {ctxArg, cstring(leaves[i]->str)});
+    else B.CreateCall(fixed ? fStrNumFixed : fStrNum, {ctxArg, vals[i]});
 }
 
 Value *Codegen::stringValue(const Expr &e, bool fixed) {
-  B.CreateCall(fStrClear, {ctxArg});
   appendString(e, fixed);
   return B.CreateCall(fStr, {ctxArg});
+}
+
+// A concat as a value: the text of the whole chain, one new string.
+Val Codegen::concat(const Expr &e) {
+  appendString(e, false);
+  auto l = locArgs(e.loc);
+  return {checked(B.CreateCall(fStrIntern, {ctxArg, l[0], l[1], l[2]})), false, true, e.loc};
+}
+
+// A comparison where an operand may be a string: strings go to ncrt_compare, numbers stay
+// inline (valueEq for eq/ne).
+Val Codegen::compare(const Expr &e, Val a, Val b) {
+  auto numeric = [&]() -> Value * {
+    switch (e.op) {
+    case OpCode::Eq:
+    case OpCode::Ne: {
+      Value *eq = B.CreateFCmpOEQ(a.v, b.v);
+      if (a.mayVacant || b.mayVacant) {
+        Value *va = a.mayVacant ? isVacant(a.v) : B.getFalse();
+        Value *vb = b.mayVacant ? isVacant(b.v) : B.getFalse();
+        eq = B.CreateSelect(B.CreateOr(va, vb), B.CreateAnd(va, vb), eq);
+      }
+      return toDouble(e.op == OpCode::Eq ? eq : B.CreateNot(eq));
+    }
+    case OpCode::Lt: return toDouble(B.CreateFCmpOLT(numOf({a.v, a.mayVacant}), numOf({b.v, b.mayVacant})));
+    case OpCode::Le: return toDouble(B.CreateFCmpOLE(numOf({a.v, a.mayVacant}), numOf({b.v, b.mayVacant})));
+    case OpCode::Gt: return toDouble(B.CreateFCmpOGT(numOf({a.v, a.mayVacant}), numOf({b.v, b.mayVacant})));
+    default: return toDouble(B.CreateFCmpOGE(numOf({a.v, a.mayVacant}), numOf({b.v, b.mayVacant})));
+    }
+  };
+  if (!a.mayString && !b.mayString) return {numeric(), false};
+  Value *anyStr = B.CreateOr(a.mayString ? isStr(a.v) : B.getFalse(), b.mayString ? isStr(b.v) : B.getFalse());
+  BasicBlock *strBB = newBlock("cmp.str"), *numBB = newBlock("cmp.num"), *done = newBlock("cmp.done");
+  B.CreateCondBr(anyStr, strBB, numBB);
+  B.SetInsertPoint(strBB);
+  auto l = locArgs(e.loc);
+  Value *rs = checked(B.CreateCall(
+      fCompare, {ctxArg, B.getInt32((int)e.op - (int)OpCode::Eq), a.v, b.v, l[0], l[1], l[2]}));
+  BasicBlock *strEnd = B.GetInsertBlock();
+  B.CreateBr(done);
+  B.SetInsertPoint(numBB);
+  Value *rn = numeric();
+  BasicBlock *numEnd = B.GetInsertBlock();
+  B.CreateBr(done);
+  B.SetInsertPoint(done);
+  PHINode *phi = B.CreatePHI(dblTy, 2);
+  phi->addIncoming(rs, strEnd);
+  phi->addIncoming(rn, numEnd);
+  return {phi, false};
 }
 
 Val Codegen::expr(const Expr &e) {
@@ -198,11 +341,13 @@ Val Codegen::expr(const Expr &e) {
   case ExprKind::Bool: return {ConstantFP::get(dblTy, e.num), false};
   case ExprKind::Vacant: return {ConstantFP::get(dblTy, vacantValue()), true};
   case ExprKind::String:
-  case ExprKind::Symbol: fail(e.loc, "strings are not supported in numeric expressions yet"); break;
+  case ExprKind::Symbol: return stringConst(e.str, e.loc);
   case ExprKind::Var: return loadVar(e);
   case ExprKind::Unary: {
     if (e.args.size() != 1) break;
     Val a = expr(*e.args[0]);
+    checkNotString(a, e.loc, operatorOnStringMessage(ir::opCodeName(e.op)));
+    a.mayString = false;
     if (e.op == OpCode::Neg) return {B.CreateFNeg(numOf(a)), false};
     if (e.op == OpCode::Not) return {toDouble(B.CreateNot(truthy(a))), false};
     fail(e.loc, "bad unary operator");
@@ -218,7 +363,14 @@ Val Codegen::expr(const Expr &e) {
 }
 
 Val Codegen::binary(const Expr &e) {
+  if (e.op == OpCode::Concat) return concat(e);
   Val a = expr(*e.args[0]), b = expr(*e.args[1]);
+  if (e.op >= OpCode::Eq && e.op <= OpCode::Ge) return compare(e, a, b);
+  // Any other operator on a string is an error (the eval engine checks both after evaluating).
+  std::string msg = operatorOnStringMessage(ir::opCodeName(e.op));
+  checkNotString(a, e.loc, msg);
+  checkNotString(b, e.loc, msg);
+  a.mayString = b.mayString = false;
   auto divisor = [&]() {
     Value *nb = numOf(b);
     failIf(B.CreateFCmpOEQ(nb, ConstantFP::get(dblTy, 0.0)), e.loc, "division by zero");
@@ -241,21 +393,6 @@ Val Codegen::binary(const Expr &e) {
     return {B.CreateCall(fIDiv, {numOf(a), nb}), false};
   }
   case OpCode::Pow: return {B.CreateCall(fPow, {numOf(a), numOf(b)}), false};
-  case OpCode::Eq:
-  case OpCode::Ne: {
-    // valueEq: vacant equals only vacant.
-    Value *eq = B.CreateFCmpOEQ(a.v, b.v);
-    if (a.mayVacant || b.mayVacant) {
-      Value *va = a.mayVacant ? isVacant(a.v) : B.getFalse();
-      Value *vb = b.mayVacant ? isVacant(b.v) : B.getFalse();
-      eq = B.CreateSelect(B.CreateOr(va, vb), B.CreateAnd(va, vb), eq);
-    }
-    return {toDouble(e.op == OpCode::Eq ? eq : B.CreateNot(eq)), false};
-  }
-  case OpCode::Lt: return {toDouble(B.CreateFCmpOLT(numOf(a), numOf(b))), false};
-  case OpCode::Le: return {toDouble(B.CreateFCmpOLE(numOf(a), numOf(b))), false};
-  case OpCode::Gt: return {toDouble(B.CreateFCmpOGT(numOf(a), numOf(b))), false};
-  case OpCode::Ge: return {toDouble(B.CreateFCmpOGE(numOf(a), numOf(b))), false};
   case OpCode::And: return {toDouble(B.CreateAnd(truthy(a), truthy(b))), false};
   case OpCode::Or: return {toDouble(B.CreateOr(truthy(a), truthy(b))), false};
   case OpCode::Xor: return {toDouble(B.CreateXor(truthy(a), truthy(b))), false};
@@ -287,13 +424,28 @@ Val Codegen::callBuiltin(const Expr &e) {
     fail(e.loc, fmt::format("unknown function '{}'", e.str));
     return {ConstantFP::get(dblTy, 0.0), false};
   }
-  if (e.args.size() != bi->arity) {
-    fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", bi->name, bi->arity, e.args.size()));
+  if (!bi->accepts(e.args.size())) {
+    fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", bi->name, builtinArity(*bi), e.args.size()));
     return {ConstantFP::get(dblTy, 0.0), false};
   }
-  std::vector<Value *> vals;
-  for (auto &a : e.args) vals.push_back(numOf(expr(*a)));
+  std::vector<Val> raw;
+  for (auto &a : e.args) raw.push_back(expr(*a));
   if (!argSlot) argSlot = allocaEntry(ArrayType::get(dblTy, 4), "args");
+  if (bi->sfn) {  // string builtins: raw values through ncrt_strfn (ir/Builtins.h table index)
+    unsigned count = 0;
+    const BuiltinInfo *tab = builtinTable(count);
+    for (unsigned i = 0; i < raw.size() && i < 4; ++i) B.CreateStore(raw[i].v, B.CreateConstGEP1_32(dblTy, argSlot, i));
+    auto l = locArgs(e.loc);
+    Value *r = checked(B.CreateCall(fStrFn, {ctxArg, B.getInt32((uint32_t)(bi - tab)), argSlot,
+                                             B.getInt32((uint32_t)raw.size()), l[0], l[1], l[2]}));
+    return {r, false, bi->result == 's', e.loc};
+  }
+  std::vector<Value *> vals;
+  for (auto &a : raw) checkNotString(a, e.loc, builtinOnStringMessage(bi->name));
+  for (auto &a : raw) {
+    a.mayString = false;
+    vals.push_back(numOf(a));
+  }
   for (unsigned i = 0; i < vals.size() && i < 4; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
   Value *r = B.CreateCall(builtins_.at(bi->name), {argSlot});
   failIf(B.CreateFCmpUNO(r, r), e.loc, fmt::format("'{}' argument out of domain", bi->name));

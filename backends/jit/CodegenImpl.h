@@ -6,6 +6,7 @@
 // command stream, same run-time errors with the same texts, at the same points of execution.
 #pragma once
 #include "ir/Value.h"
+#include "ir/Decls.h"
 #include "ir/NCIR.h"
 #include "passes/CmdTemplate.h"
 
@@ -21,12 +22,24 @@ namespace ncc::jit {
 
 // Frame layout: slot 0 unused, #1..#33 Macro B locals, then named locals.
 constexpr int kFrameLocals = kMacroLocals;
+using ir::DeclTable;
+using ir::VarDecl;
 
 // A value of an expression and whether it can be vacant at run time (variable reads);
 // arithmetic results never are, so most vacant checks fold away at compile time.
+// mayString: the value can be a string handle (ir/Value.h isString): loads of named variables
+// that are not declared numeric, QS parameters, string constants and string results. Only such
+// values get a string check where a number is needed, at `loc` (where the value came from).
 struct Val {
   llvm::Value *v;
   bool mayVacant;
+  bool mayString = false;
+  SourceLoc loc = {};
+};
+
+// A named array's storage: its first slot and its number of elements.
+struct ArraySlots {
+  uint64_t offset = 0, size = 0;
 };
 
 // One NC function: its LLVM function, its frame layout and the errors the eval engine would
@@ -35,7 +48,8 @@ struct FnInfo {
   const ir::Function *fn = nullptr;
   llvm::Function *F = nullptr;
   std::map<std::string, unsigned> locals;  // named locals: frame slot 34 + index
-  std::map<std::string, unsigned> arrays;  // named local arrays: number in the activation's array block
+  std::map<std::string, ArraySlots> arrays;  // named local arrays in the activation's array block
+  uint64_t arraySlots = 0;                   // doubles in that block
   unsigned frameSize = 34;                 // #0..#33 then the named locals
   std::vector<std::pair<SourceLoc, std::string>> compileErrors;
 };
@@ -62,6 +76,7 @@ private:
   void emitLoop(const ir::Op &op);
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
+  llvm::Value *convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc);
   void emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
   const ir::Op *resolveTarget(const ir::Op &go);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
@@ -83,7 +98,17 @@ private:
   Val expr(const ir::Expr &e);
   Val binary(const ir::Expr &e);
   Val callBuiltin(const ir::Expr &e);
-  llvm::Value *numOf(Val v);
+  llvm::Value *numOf(Val v);  // a string is the error stringAsNumberMessage() at v.loc
+  llvm::Value *numOf(Val v, SourceLoc loc, const std::string &stringError);
+  llvm::Value *isStr(llvm::Value *v);
+  void checkNotString(Val v, SourceLoc loc, const std::string &message);
+  llvm::Value *checked(llvm::Value *result);  // unset bits (a reported error) -> fail
+  Val stringConst(const std::string &s, SourceLoc loc);
+  Val concat(const ir::Expr &e);
+  Val compare(const ir::Expr &e, Val a, Val b);
+  llvm::Value *convertFor(const ir::Expr &var, const VarDecl *d, Val value);
+  const VarDecl *declOf(const ir::Expr &var);
+  void collectLeaves(const ir::Expr &e, std::vector<const ir::Expr *> &out);
   llvm::Value *truthy(Val v);  // i1
   llvm::Value *isVacant(llvm::Value *v);
   llvm::Value *toDouble(llvm::Value *i1);
@@ -91,12 +116,13 @@ private:
   llvm::Value *varPtr(const ir::Expr &var, bool write);
   llvm::Value *numberedPtr(const ir::Expr &var, bool write);
   llvm::Value *elemPtr(const ir::Expr &var, llvm::Value *base);
+  llvm::Value *declaredElemPtr(const ir::Expr &var, llvm::Value *base, const VarDecl &d);
   llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
   Val loadVar(const ir::Expr &var);
   // Builds a string expression; ptr to its text. fixed: numbers as fixedNumberText.
   llvm::Value *stringValue(const ir::Expr &e, bool fixed = false);
   void appendString(const ir::Expr &e, bool fixed);
-  void storeVar(const ir::Expr &var, llvm::Value *value);
+  void storeVar(const ir::Expr &var, Val value);
   // ------------------------------------------------ commands (CodegenCmd.cpp)
   void emitMachineOp(const ir::Op &op);
   void appendToRun(const MachineCmd &c);
@@ -117,12 +143,15 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar;
+  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
   llvm::GlobalVariable *calleeNames = nullptr;  // names of the module's functions, for ncrt_callee
   std::map<std::string, unsigned> globalNames_;   // module-wide slots
-  std::map<std::string, unsigned> globalArrays_;  // numbers of global arrays, stored after the scalars
+  std::map<std::string, ArraySlots> globalArrays_;  // global arrays, stored after the scalars
+  uint64_t globalArraySlots_ = 0;
+  DeclTable decls_;
   unsigned qSpaces_ = 0;                          // Q prefix arrays: 1 + highest qPrefixIndex used
 
   // ------------------------------------------------ per function

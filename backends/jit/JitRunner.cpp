@@ -112,9 +112,17 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_str_num_fixed", &ncrt_str_num_fixed);
   add("ncrt_str", &ncrt_str);
   add("ncrt_callee", &ncrt_callee);
+  add("ncrt_str_const", &ncrt_str_const);
+  add("ncrt_str_intern", &ncrt_str_intern);
+  add("ncrt_strfn", &ncrt_strfn);
+  add("ncrt_compare", &ncrt_compare);
+  add("ncrt_convert", &ncrt_convert);
+  add("ncrt_fill", &ncrt_fill);
+  add("ncrt_bad_index", &ncrt_bad_index);
   unsigned n = 0;
   const BuiltinInfo *tab = builtinTable(n);
-  for (unsigned i = 0; i < n; ++i) add(tab[i].symbol, tab[i].fn);
+  for (unsigned i = 0; i < n; ++i)
+    if (tab[i].fn) add(tab[i].symbol, tab[i].fn);
   return syms;
 }
 

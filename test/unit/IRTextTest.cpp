@@ -118,6 +118,12 @@ TEST(IRText, ExprSpelling) {
   EXPECT_EQ(printExpr(*Expr::var(VarSpace::Local, "count")), "%count");
   EXPECT_EQ(printExpr(*Expr::var(VarSpace::Local, "arr", Expr::number(3, Type::Int))), "%arr[3]");
   EXPECT_EQ(printExpr(*Expr::var(VarSpace::Global, "_g")), "%%_g");
+  {
+    ExprPtr m = Expr::var(VarSpace::Local, "M", Expr::number(1, Type::Int));
+    m->args.push_back(Expr::var(VarSpace::Numbered, "", Expr::number(2, Type::Int)));
+    m->args.push_back(Expr::number(0, Type::Int));
+    EXPECT_EQ(printExpr(*m), "%M[1, #2, 0]");
+  }
   EXPECT_EQ(printExpr(*Expr::var(VarSpace::System, "AA_IM", Expr::symbol("X"))), "$AA_IM[X]");
   EXPECT_EQ(printExpr(*Expr::unary(OpCode::Neg, Expr::var(VarSpace::Numbered, "", Expr::number(3, Type::Int)))),
             "(neg #3)");
@@ -234,7 +240,10 @@ private:
       ExprPtr idx;
       if (sp == VarSpace::Numbered || sp == VarSpace::RParam || sp == VarSpace::QParam || r(2))
         idx = r(2) ? Expr::number(r(1000), Type::Int) : leafNumber();
-      return Expr::var(sp, name, std::move(idx));
+      ExprPtr v = Expr::var(sp, name, std::move(idx));
+      if ((sp == VarSpace::Local || sp == VarSpace::Global) && !v->args.empty())  // declared arrays: 1-3 indices
+        for (unsigned extra = r(3); extra > 0; --extra) v->args.push_back(leafNumber());
+      return v;
     }
     }
   }
@@ -399,7 +408,7 @@ TEST(IRVerifier, EnumeratedValuesAndVariables) {
   EXPECT_EQ(verify("assign target=5 value=1\n"), "'assign' argument 'target' must be a variable");
   EXPECT_EQ(verify("declare var=%x type=REAL init=0.5\n"), "");
   EXPECT_EQ(verify("declare var=%x type=float\n"),
-            "'declare' argument 'type' must be one of: int real bool string symbol axis frame");
+            "'declare' argument 'type' must be one of: int real bool char string symbol axis frame");
   EXPECT_EQ(verify("block n=#1\n"), "'block' argument 'n' must be a non-negative integer constant");
   EXPECT_EQ(verify("declare var=#1 type=REAL\n"), "'declare' argument 'var' must be a named variable (%name or %%name)");
   EXPECT_EQ(verify("declare var=%%g type=INT\n"), "");
