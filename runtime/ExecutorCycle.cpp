@@ -18,6 +18,24 @@ std::string lower(const char *code) {
   for (char &ch : s) ch = (char)std::tolower((unsigned char)ch);
   return s;
 }
+// CycleBegin's named numbers (docs/IR.md "Motion IR text"), in mm: the first hole's position in
+// program coordinates (offset-frame step position minus the frame offsets), the drilling-axis
+// bottom and R as programmed (G91: increments), Q and P when the cycle uses them, L the repeats.
+void cycleParams(MotionRecord &r, const CycleInput &in, const std::vector<CycleStep> &steps,
+                 const std::array<double, 3> &frameOffset, double z, double rLevel, int d) {
+  for (const CycleStep &s : steps)
+    if (!s.preMove) {
+      for (int i = 0; i < 3; ++i)
+        if (i != d) r.setParam(std::string_view(&kWordLetters[i], 1), s.pos[i] - frameOffset[i]);
+      break;
+    }
+  r.setParam(std::string_view(&kWordLetters[d], 1), z);
+  r.setParam("R", rLevel);
+  if (in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak) r.setParam("Q", in.q);
+  if (in.cycle == ModeValue::DrillDwell || in.cycle == ModeValue::BoreStop || in.cycle == ModeValue::BoreDwell)
+    r.setParam("P", in.p);
+  r.setParam("L", in.repeats);
+}
 }  // namespace
 
 bool Executor::Impl::cycle(const MachineCmd &c) {
@@ -109,6 +127,10 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   std::string err;
   if (!expandCycle(in, steps, err)) return error(err, "cycle-invalid");
   lastCycle = cyc;
+  MotionRecord begin = record(RecordKind::CycleBegin);
+  begin.text = std::string("iso.") + code;
+  cycleParams(begin, in, steps, {frameOffset(0), frameOffset(1), frameOffset(2)}, cycleZ, cycleR, d);
+  emit(begin);
 
   // rs274 runs the holes of a block in exact-path mode and restores the path mode after.
   bool bracketOpen = false;
@@ -138,6 +160,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     }
   }
   if (bracketOpen) emit(pathModeRecord());
+  emit(record(RecordKind::CycleEnd));
   return true;
 }
 

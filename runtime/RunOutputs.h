@@ -42,6 +42,7 @@ private:
   std::unique_ptr<CsvSampler> csv_;
   std::unique_ptr<SvgPlot> svg_;
   bool finished_ = false;
+  TiltedArcCheck tilted_{"the planner"};
 };
 
 }  // namespace ncc
