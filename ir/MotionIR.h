@@ -156,8 +156,8 @@ private:
   std::vector<MotionSink *> sinks_;
 };
 
-// For sinks whose output has only the three principal planes (canonical trace, emitters, the
-// planner): remembers the first arc in a tilted plane and reports it at finish(), where
+// For sinks whose output has only the three principal planes (the canonical trace; the emitters
+// use message()): remembers the first arc in a tilted plane and reports it at finish(), where
 // diagnostics are at hand. The sink writes nothing wrong meanwhile: it skips the record.
 class TiltedArcCheck {
 public:

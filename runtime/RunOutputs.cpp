@@ -30,7 +30,6 @@ void RunOutputs::setProgramName(const std::string &name) {
 }
 
 void RunOutputs::record(const MotionRecord &r) {
-  if (tilted_.reject(r)) return;  // planner, summary and plot compute arcs in G17/G18/G19
   summary_.record(r);
   planner_.record(r);
   if (svg_) svg_->record(r);
@@ -40,7 +39,6 @@ bool RunOutputs::finish(Diagnostics &diags) {
   if (finished_) return true;
   finished_ = true;
   bool ok = planner_.finish(diags);
-  ok &= tilted_.report(diags);
   summary_.setTimes(planner_.stats());
   std::string err;
   if (csvFile_) {

@@ -42,7 +42,6 @@ private:
   std::unique_ptr<CsvSampler> csv_;
   std::unique_ptr<SvgPlot> svg_;
   bool finished_ = false;
-  TiltedArcCheck tilted_{"the planner"};
 };
 
 }  // namespace ncc
