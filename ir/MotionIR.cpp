@@ -154,6 +154,20 @@ std::string printMotionRecord(const MotionRecord &r) {
   return s;
 }
 
+static const char *const kFrameKeys[12] = {"m00", "m01", "m02", "m03", "m10", "m11",
+                                           "m12", "m13", "m20", "m21", "m22", "m23"};
+
+void setFrameMatrix(MotionRecord &r, const FrameMatrix &m) {
+  for (int i = 0; i < 12; ++i) r.setParam(kFrameKeys[i], m[i]);
+}
+
+FrameMatrix frameMatrix(const MotionRecord &r) {
+  FrameMatrix m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  for (int i = 0; i < 12; ++i)
+    if (const double *v = r.param(kFrameKeys[i])) m[i] = *v;
+  return m;
+}
+
 std::string TiltedArcCheck::message(const char *consumer, const MotionRecord &r) {
   return fmt::format("{} cannot handle an arc in a tilted plane (only normals along X, Y or Z): {}", consumer,
                      printMotionRecord(r));

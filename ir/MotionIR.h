@@ -126,6 +126,13 @@ struct MotionRecord {
   const double *param(std::string_view key) const;
 };
 
+// FrameChange's transform: the 3x4 matrix that maps program XYZ to machine XYZ, row-major
+// (machine_i = m_i0 x + m_i1 y + m_i2 z + m_i3), as the named numbers m00..m23.
+using FrameMatrix = std::array<double, 12>;
+void setFrameMatrix(MotionRecord &r, const FrameMatrix &m);
+// Reads m00..m23; an entry the record lacks is the identity's.
+FrameMatrix frameMatrix(const MotionRecord &r);
+
 // The plane's own unit normal (+Z, +Y, +X for XY, ZX, YZ).
 std::array<double, 3> planeNormal(Plane p);
 const char *planeName(Plane p);  // "xy", "zx", "yz"

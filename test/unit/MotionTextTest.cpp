@@ -124,6 +124,21 @@ TEST(MotionText, ExtraIsCopiedDeeply) {
   EXPECT_EQ(plain.arcNormal(), (std::array<double, 3>{0, 1, 0}));
 }
 
+TEST(MotionText, FrameMatrixAsNamedNumbers) {
+  MotionRecord r;
+  r.kind = RecordKind::FrameChange;
+  r.text = "G68";
+  FrameMatrix m{0, -1, 0, 10, 1, 0, 0, 20, 0, 0, 1, -5};
+  setFrameMatrix(r, m);
+  EXPECT_EQ(printMotionRecord(r),
+            "frame_change \"G68\" m00=0 m01=-1 m02=0 m03=10 m10=1 m11=0 m12=0 m13=20 m20=0 m21=0 m22=1 m23=-5");
+  auto back = parse(printMotionRecord(r) + "\n");
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(frameMatrix(back[0]), m);
+  auto partial = parse("frame_change m03=7\n");
+  EXPECT_EQ(frameMatrix(partial[0]), (FrameMatrix{1, 0, 0, 7, 0, 1, 0, 0, 0, 0, 1, 0}));
+}
+
 // Damaged text (bytes flipped, lines cut) must give diagnostics or records, never a crash.
 TEST(MotionText, DamagedTextNeverCrashes) {
   const std::string good =
