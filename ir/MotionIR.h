@@ -24,7 +24,8 @@ enum class Plane : uint8_t { XY, ZX, YZ };  // G17, G18, G19
 enum class RecordKind : uint8_t {
   Rapid,         // straight traverse to `end`
   Linear,        // straight feed to `end` at `feed`
-  Arc,           // circular/helical feed: `center`, `plane`, `turns` (+ccw, -cw), to `end`
+  Arc,           // circular/helical feed: `center`, `plane`, `turns` (+ccw, -cw), to `end`;
+                 // arcNormal() (a tilted plane when set, see MotionExtra)
   Dwell,         // `value` seconds
   ToolSelect,    // `ivalue` tool number (T word)
   ToolChange,    // `ivalue` tool number now in the spindle (M6)
@@ -71,27 +72,37 @@ struct MotionExtra {
   std::vector<NamedNumber> params;
 };
 
-// A copyable owning pointer to MotionExtra (deep copy; null for ordinary records).
-class MotionExtraPtr {
+// A copyable owning pointer (deep copy), null by default: keeps the rarely used part of a hot,
+// often copied structure out of line (MotionRecord::extra, ArcGeometry's tilted frame).
+template <class T>
+class CopyPtr {
 public:
-  MotionExtraPtr() = default;
-  MotionExtraPtr(const MotionExtraPtr &o) : p_(o.p_ ? std::make_unique<MotionExtra>(*o.p_) : nullptr) {}
-  MotionExtraPtr(MotionExtraPtr &&) noexcept = default;
-  MotionExtraPtr &operator=(const MotionExtraPtr &o) {
-    if (this != &o) p_ = o.p_ ? std::make_unique<MotionExtra>(*o.p_) : nullptr;
+  CopyPtr() = default;
+  CopyPtr(const CopyPtr &o) : p_(o.p_ ? std::make_unique<T>(*o.p_) : nullptr) {}
+  CopyPtr(CopyPtr &&) noexcept = default;
+  // Both null (the common case) costs two tests.
+  CopyPtr &operator=(const CopyPtr &o) {
+    if ((p_ || o.p_) && this != &o) p_ = o.p_ ? std::make_unique<T>(*o.p_) : nullptr;
     return *this;
   }
-  MotionExtraPtr &operator=(MotionExtraPtr &&) noexcept = default;
-  const MotionExtra *get() const { return p_.get(); }
-  MotionExtra &make() {
-    if (!p_) p_ = std::make_unique<MotionExtra>();
+  CopyPtr &operator=(CopyPtr &&o) noexcept {
+    if (p_ || o.p_) p_ = std::move(o.p_);
+    return *this;
+  }
+  const T *get() const { return p_.get(); }
+  const T &operator*() const { return *p_; }
+  const T *operator->() const { return p_.get(); }
+  explicit operator bool() const { return p_ != nullptr; }
+  T &make() {
+    if (!p_) p_ = std::make_unique<T>();
     return *p_;
   }
   void reset() { p_.reset(); }
 
 private:
-  std::unique_ptr<MotionExtra> p_;
+  std::unique_ptr<T> p_;
 };
+using MotionExtraPtr = CopyPtr<MotionExtra>;
 
 struct MotionRecord {
   RecordKind kind = RecordKind::Rapid;

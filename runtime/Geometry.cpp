@@ -16,7 +16,7 @@ PlaneAxes planeAxes(Plane p) {
 
 namespace {
 // The sweep and length from the start and end in plane coordinates relative to the centre.
-void finishArc(ArcGeometry &g, double su, double sv, double eu, double ev, double helix, int turns) {
+[[gnu::always_inline]] inline void finishArc(ArcGeometry &g, double su, double sv, double eu, double ev, double helix, int turns) {
   g.r0 = std::hypot(su, sv);
   g.r1 = std::hypot(eu, ev);
   g.startAngle = std::atan2(sv, su);
@@ -57,26 +57,26 @@ ArcGeometry arcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &ce
 ArcGeometry tiltedArcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, const Vec3 &normal,
                               int turns) {
   ArcGeometry g;
-  g.tilted = true;
-  g.c = center;
-  g.n = normal;
+  TiltedFrame &f = g.tilted.make();
+  f.c = center;
+  f.n = normal;
   Vec3 s{start[0] - center[0], start[1] - center[1], start[2] - center[2]};
   Vec3 e{end[0] - center[0], end[1] - center[1], end[2] - center[2]};
-  g.n0 = dot(s, g.n);
-  Vec3 sp{s[0] - g.n0 * g.n[0], s[1] - g.n0 * g.n[1], s[2] - g.n0 * g.n[2]};
+  f.n0 = dot(s, f.n);
+  Vec3 sp{s[0] - f.n0 * f.n[0], s[1] - f.n0 * f.n[1], s[2] - f.n0 * f.n[2]};
   double r0 = std::sqrt(dot(sp, sp));
   if (r0 > 0) {
-    g.u = {sp[0] / r0, sp[1] / r0, sp[2] / r0};
+    f.u = {sp[0] / r0, sp[1] / r0, sp[2] / r0};
   } else {  // start on the axis: any direction in the plane
-    int k = std::fabs(g.n[0]) < 0.9 ? 0 : 1;
+    int k = std::fabs(f.n[0]) < 0.9 ? 0 : 1;
     Vec3 a{};
     a[k] = 1;
-    g.u = cross(cross(g.n, a), g.n);
-    double l = std::sqrt(dot(g.u, g.u));
-    for (double &x : g.u) x /= l;
+    f.u = cross(cross(f.n, a), f.n);
+    double l = std::sqrt(dot(f.u, f.u));
+    for (double &x : f.u) x /= l;
   }
-  g.v = cross(g.n, g.u);
-  finishArc(g, r0, 0, dot(e, g.u), dot(e, g.v), dot(e, g.n) - g.n0, turns);
+  f.v = cross(f.n, f.u);
+  finishArc(g, r0, 0, dot(e, f.u), dot(e, f.v), dot(e, f.n) - f.n0, turns);
   return g;
 }
 
@@ -96,7 +96,8 @@ Vec3 arcAxisShare(const ArcGeometry &g) {
     return share;
   }
   // The planar velocity turns through the plane: on axis i it peaks at |(u_i, v_i)|.
-  for (int i = 0; i < 3; ++i) share[i] = planar * std::hypot(g.u[i], g.v[i]) + helix * std::fabs(g.n[i]);
+  const TiltedFrame &f = *g.tilted;
+  for (int i = 0; i < 3; ++i) share[i] = planar * std::hypot(f.u[i], f.v[i]) + helix * std::fabs(f.n[i]);
   return share;
 }
 
@@ -123,8 +124,9 @@ AxisVec arcPoint(const ArcGeometry &g, const AxisVec &start, const AxisVec &end,
   double a = g.startAngle + g.sweep * s;
   double r = g.r0 + (g.r1 - g.r0) * s;
   if (g.tilted) {
-    double pu = r * std::cos(a), pv = r * std::sin(a), pn = g.n0 + g.helix * s;
-    for (int i = 0; i < 3; ++i) p[i] = g.c[i] + pu * g.u[i] + pv * g.v[i] + pn * g.n[i];
+    const TiltedFrame &f = *g.tilted;
+    double pu = r * std::cos(a), pv = r * std::sin(a), pn = f.n0 + g.helix * s;
+    for (int i = 0; i < 3; ++i) p[i] = f.c[i] + pu * f.u[i] + pv * f.v[i] + pn * f.n[i];
     return p;
   }
   p[g.ax.u] = g.cu + r * std::cos(a);
@@ -140,7 +142,8 @@ Vec3 arcTangent(const ArcGeometry &g, double s) {
   Vec3 t{};
   double tu = dr * c - r * sn * g.sweep, tv = dr * sn + r * c * g.sweep;
   if (g.tilted) {
-    for (int i = 0; i < 3; ++i) t[i] = tu * g.u[i] + tv * g.v[i] + g.helix * g.n[i];
+    const TiltedFrame &f = *g.tilted;
+    for (int i = 0; i < 3; ++i) t[i] = tu * f.u[i] + tv * f.v[i] + g.helix * f.n[i];
   } else {
     t[g.ax.u] = tu;
     t[g.ax.v] = tv;
@@ -168,7 +171,7 @@ void arcBounds(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, V
   if (g.tilted) {
     // Axis i is extreme where the circle's direction is across it: angle atan2(v_i, u_i) (+ pi).
     for (int k = 0; k < 6; ++k) {
-      double a = std::atan2(g.v[k / 2], g.u[k / 2]) + (k % 2) * (kTwoPi / 2);
+      double a = std::atan2(g.tilted->v[k / 2], g.tilted->u[k / 2]) + (k % 2) * (kTwoPi / 2);
       double delta = std::fmod(g.sweep >= 0 ? a - g.startAngle : g.startAngle - a, kTwoPi);
       if (delta < 0) delta += kTwoPi;
       if (delta > span || span <= 0) continue;

@@ -20,14 +20,19 @@ struct PlaneAxes {
 };
 PlaneAxes planeAxes(Plane p);
 
-struct ArcGeometry {
-  PlaneAxes ax{0, 1, 2};       // principal planes: the axes; unused when tilted
-  // An arc in a tilted plane (MotionRecord::tiltedArc): plane coordinates are taken along the
-  // orthonormal frame u (centre to start), v = n x u, n (the normal), about the centre `c`;
-  // then cu = cv = 0 and startAngle = 0, and `n0` is the start's height above the centre.
-  bool tilted = false;
+// The plane of an arc in a tilted plane (MotionRecord::tiltedArc): plane coordinates are taken
+// along the orthonormal frame u (centre to start), v = n x u, n (the normal), about the centre
+// `c`; `n0` is the start's height above the centre.
+struct TiltedFrame {
   Vec3 c{}, u{}, v{}, n{};
   double n0 = 0;
+};
+
+struct ArcGeometry {
+  PlaneAxes ax{0, 1, 2};       // principal planes: the axes; unused when tilted
+  // Tilted plane: its frame (then cu = cv = 0 and startAngle = 0). Null, so no cost in size or
+  // copies, for the principal planes.
+  CopyPtr<TiltedFrame> tilted;
   double cu = 0, cv = 0;       // centre in plane coordinates
   double r0 = 0, r1 = 0;       // start and end radius
   double startAngle = 0;       // radians, atan2(v - cv, u - cu) at the start
