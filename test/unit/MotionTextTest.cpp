@@ -50,7 +50,9 @@ TEST(MotionText, RoundTripsOddNumbersAndStrings) {
   }
   MotionRecord c;
   c.kind = RecordKind::Comment;
-  c.text = std::string("q\"b\\n\nt\tr\rx\x01\x7f end \xc3\xa9", 22);
+  c.text = "q\"b\\n\nt\tr\rx\x01\x7f end \xc3\xa9";
+  c.text += '\0';  // a NUL byte too
+  c.text += "after";
   c.start = c.end = pos;
   in.push_back(c);
   MotionRecord a;
