@@ -20,6 +20,7 @@ static const SourceKindInfo kKinds[] = {
     {SourceKind::Heidenhain, "heidenhain", ".h"},
     {SourceKind::CLData, "cldata", ".cls .cld .apt .aptsource"},
     {SourceKind::NCIR, "ncir", ".ncir"},
+    {SourceKind::Motion, "motion", ".motion"},
 };
 
 const char *sourceKindName(SourceKind k) {
@@ -71,6 +72,11 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
   switch (kind) {
   case SourceKind::ISO: return iso::parseIsoProgram(sm, file, isoOptions(opts), diags, out);
   case SourceKind::NCIR: return ir::parseModule(sm.text(file), file, sm, diags, out);
+  case SourceKind::Motion:
+    diags.error({}, fmt::format("{}: Motion IR text is an executed program without NC IR: only ncc run, ncc "
+                                "translate and ncc compile --emit=motion read it",
+                                sm.name(file)));
+    return false;
   default:
     diags.error({}, fmt::format("{}: the {} front end is not implemented yet", sm.name(file), sourceKindName(kind)));
     return false;

@@ -1,5 +1,6 @@
 #include "ir/Diagnostics.h"
 #include "ir/LintRules.h"
+#include "ir/TextQuote.h"
 
 #include <cstdlib>
 #include <fmt/format.h>
@@ -70,20 +71,7 @@ static const char *severityName(Severity s) {
   return "error";
 }
 
-void appendJsonEscaped(std::string &o, std::string_view s) {
-  for (unsigned char c : s) {
-    switch (c) {
-    case '"': o += "\\\""; break;
-    case '\\': o += "\\\\"; break;
-    case '\n': o += "\\n"; break;
-    case '\t': o += "\\t"; break;
-    case '\r': o += "\\r"; break;
-    default:
-      if (c < 0x20) o += fmt::format("\\u{:04x}", c);
-      else o += (char)c;
-    }
-  }
-}
+void appendJsonEscaped(std::string &o, std::string_view s) { text::appendEscaped(o, s, true); }
 
 static std::string jsonEscape(std::string_view s) {
   std::string o;

@@ -102,6 +102,8 @@ static const LintRule kRules[] = {
      "the emitted program cannot say what the source does (a number outside the word format, an auxiliary B on a machine with a B axis) or cannot be written"},
     {"bad-offset-index", Severity::Error, "executor",
      "G10 without P0..P9, a work offset outside G54..G59.3"},
+    {"tilted-arc", Severity::Error, "sinks",
+     "an arc whose plane normal is not along X, Y or Z (Motion IR `normal=`) reached an output that knows only G17/G18/G19 arcs: the canonical trace, the emitters"},
 };
 
 const LintRule *lintRules(size_t &count) {

@@ -41,6 +41,9 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
       for (int k = 0; k < 3 && why.empty(); ++k)
         if (std::fabs(x.center[k] - y.center[k]) > opts.tolerance) why = "arc centres differ";
       if (why.empty() && (x.turns != y.turns || x.plane != y.plane)) why = "arc direction, turns or plane differ";
+      auto nx = x.arcNormal(), ny = y.arcNormal();
+      for (int k = 0; k < 3 && why.empty(); ++k)
+        if (std::fabs(nx[k] - ny[k]) > 1e-9) why = "arc plane normals differ";
     }
     if (why.empty() && x.kind == RecordKind::Dwell && std::fabs(x.value - y.value) > 1e-6) why = "dwell times differ";
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&

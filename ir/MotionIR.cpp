@@ -1,6 +1,9 @@
 #include "ir/MotionIR.h"
+#include "ir/TextQuote.h"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace ncc {
 
@@ -10,59 +13,182 @@ const char *recordKindName(RecordKind k) {
                                 "spindle_cw",   "spindle_ccw",   "spindle_stop", "coolant_flood",
                                 "coolant_mist", "feed_rate",     "feed_mode",    "path_mode",
                                 "plane",        "comment",       "message",      "optional_stop",
-                                "program_stop", "program_end",   "aux"};
+                                "program_stop", "program_end",   "aux",          "cycle_begin",
+                                "cycle_end",    "frame_change"};
   static_assert(sizeof(names) / sizeof(names[0]) == (size_t)RecordKind::Count);
   return names[(unsigned)k];
 }
 
-std::string printMotionRecord(const MotionRecord &r) {
-  std::string s = recordKindName(r.kind);
+const char *planeName(Plane p) {
+  static const char *names[] = {"xy", "zx", "yz"};
+  return names[(unsigned)p % 3];
+}
+
+std::array<double, 3> planeNormal(Plane p) {
+  switch (p) {
+  case Plane::ZX: return {0, 1, 0};
+  case Plane::YZ: return {1, 0, 0};
+  default: return {0, 0, 1};
+  }
+}
+
+bool isNamedNumberKey(std::string_view key) {
+  if (key.empty() || key.size() > NamedNumber::kMaxKey) return false;
+  auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (!alpha(key[0])) return false;
+  return std::all_of(key.begin(), key.end(), [&](char c) { return alpha(c) || (c >= '0' && c <= '9'); });
+}
+
+std::array<double, 3> MotionRecord::arcNormal() const {
+  return tiltedArc() ? extra.get()->normal : planeNormal(plane);
+}
+
+void MotionRecord::setNormal(const std::array<double, 3> &n) {
+  if (n == planeNormal(plane)) {
+    if (extra.get()) {
+      MotionExtra &e = extra.make();
+      e.hasNormal = false;
+      e.normal = {};
+      if (e.params.empty()) extra.reset();
+    }
+    return;
+  }
+  MotionExtra &e = extra.make();
+  e.hasNormal = true;
+  e.normal = n;
+}
+
+const std::vector<NamedNumber> &MotionRecord::params() const {
+  static const std::vector<NamedNumber> none;
+  return extra.get() ? extra.get()->params : none;
+}
+
+bool MotionRecord::setParam(std::string_view key, double value) {
+  if (!isNamedNumberKey(key)) return false;
+  auto &ps = extra.make().params;
+  for (auto &p : ps)
+    if (p.name() == key) {
+      p.value = value;
+      return true;
+    }
+  NamedNumber n;
+  std::copy(key.begin(), key.end(), n.key.begin());
+  n.value = value;
+  ps.push_back(n);
+  return true;
+}
+
+const double *MotionRecord::param(std::string_view key) const {
+  for (auto &p : params())
+    if (p.name() == key) return &p.value;
+  return nullptr;
+}
+
+void appendMotionRecord(std::string &s, const MotionRecord &r) {
+  auto out = std::back_inserter(s);
+  s += recordKindName(r.kind);
   auto axes = [&](const AxisVec &v) {
     static const char L[] = "XYZABC";
-    for (int i = 0; i < kAxes; ++i) s += fmt::format(" {}{}", L[i], v[i]);
+    for (int i = 0; i < kAxes; ++i) fmt::format_to(out, " {}{}", L[i], v[i]);
+  };
+  auto named = [&] {
+    if (!r.text.empty()) {
+      s += ' ';
+      text::appendQuoted(s, r.text);
+    }
+    for (auto &p : r.params()) fmt::format_to(out, " {}={}", p.name(), p.value);
   };
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
     axes(r.end);
-    if (r.kind == RecordKind::Linear) s += fmt::format(" F{}", r.feed);
+    if (r.kind == RecordKind::Linear) fmt::format_to(out, " F{}", r.feed);
     break;
   case RecordKind::Arc:
     axes(r.end);
-    s += fmt::format(" center({}, {}, {}) plane={} turns={} F{}", r.center[0], r.center[1], r.center[2],
-                     r.plane == Plane::XY ? "xy" : r.plane == Plane::ZX ? "zx" : "yz", r.turns, r.feed);
+    fmt::format_to(out, " center({}, {}, {}) plane={}", r.center[0], r.center[1], r.center[2], planeName(r.plane));
+    if (r.tiltedArc()) {
+      auto n = r.arcNormal();
+      fmt::format_to(out, " normal=({}, {}, {})", n[0], n[1], n[2]);
+    }
+    fmt::format_to(out, " turns={} F{}", r.turns, r.feed);
     break;
   case RecordKind::Comment:
   case RecordKind::Message:
-    s += fmt::format(" \"{}\"", r.text);
+    s += ' ';
+    text::appendQuoted(s, r.text);
     break;
   case RecordKind::Dwell:
   case RecordKind::SpindleSpeed:
   case RecordKind::FeedRate:
+    fmt::format_to(out, " {}", r.value);
+    break;
   case RecordKind::ToolLength:
-    s += fmt::format(" {}", r.value);
+    fmt::format_to(out, " {} H{}", r.value, r.ivalue);
     break;
   case RecordKind::Aux:
-    s += fmt::format(" {}{}", r.text.empty() ? "M" : r.text, r.ivalue);
+    fmt::format_to(out, " {}{}", r.text.empty() ? "M" : r.text, r.ivalue);
     break;
   case RecordKind::PathMode:
-    s += fmt::format(" {} {}", r.ivalue, r.value);
-    if (r.ivalue == 2) s += fmt::format(" {}", r.value2);
+    fmt::format_to(out, " {} {}", r.ivalue, r.value);
+    if (r.ivalue == 2) fmt::format_to(out, " {}", r.value2);
+    break;
+  case RecordKind::CycleBegin:
+  case RecordKind::FrameChange:
+    named();
+    break;
+  case RecordKind::CycleEnd:
     break;
   default:
-    s += fmt::format(" {}", r.ivalue);
+    fmt::format_to(out, " {}", r.ivalue);
     break;
   }
   if (r.exactStop) s += " exact_stop";
-  if (r.blockNumber >= 0) s += fmt::format(" N{}", r.blockNumber);
-  if (r.loc.line) s += fmt::format(" @{}:{}", r.loc.line, r.loc.col);
+  if (r.blockNumber >= 0) fmt::format_to(out, " N{}", r.blockNumber);
+  if (r.loc.line) fmt::format_to(out, " @{}:{}", r.loc.line, r.loc.col);
+}
+
+std::string printMotionRecord(const MotionRecord &r) {
+  std::string s;
+  appendMotionRecord(s, r);
   return s;
 }
 
+static const char *const kFrameKeys[12] = {"m00", "m01", "m02", "m03", "m10", "m11",
+                                           "m12", "m13", "m20", "m21", "m22", "m23"};
+
+void setFrameMatrix(MotionRecord &r, const FrameMatrix &m) {
+  for (int i = 0; i < 12; ++i) r.setParam(kFrameKeys[i], m[i]);
+}
+
+FrameMatrix frameMatrix(const MotionRecord &r) {
+  FrameMatrix m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  for (int i = 0; i < 12; ++i)
+    if (const double *v = r.param(kFrameKeys[i])) m[i] = *v;
+  return m;
+}
+
+std::string TiltedArcCheck::message(const char *consumer, const MotionRecord &r) {
+  return fmt::format("{} cannot handle an arc in a tilted plane (only normals along X, Y or Z): {}", consumer,
+                     printMotionRecord(r));
+}
+
+bool TiltedArcCheck::report(Diagnostics &diags) const {
+  if (!seen_) return true;
+  diags.error(first_.loc, message(consumer_, first_), "tilted-arc");
+  return false;
+}
+
 void MotionTextWriter::record(const MotionRecord &r) {
-  std::string s = printMotionRecord(r);
-  s += '\n';
-  std::fputs(s.c_str(), out_);
+  if (text_) {
+    appendMotionRecord(*text_, r);
+    *text_ += '\n';
+    return;
+  }
+  line_.clear();
+  appendMotionRecord(line_, r);
+  line_ += '\n';
+  std::fwrite(line_.data(), 1, line_.size(), out_);
 }
 
 }  // namespace ncc

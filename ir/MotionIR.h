@@ -7,7 +7,10 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ncc {
@@ -21,11 +24,12 @@ enum class Plane : uint8_t { XY, ZX, YZ };  // G17, G18, G19
 enum class RecordKind : uint8_t {
   Rapid,         // straight traverse to `end`
   Linear,        // straight feed to `end` at `feed`
-  Arc,           // circular/helical feed: `center`, `plane`, `turns` (+ccw, -cw), to `end`
+  Arc,           // circular/helical feed: `center`, `plane`, `turns` (+ccw, -cw), to `end`;
+                 // arcNormal() (a tilted plane when set, see MotionExtra)
   Dwell,         // `value` seconds
   ToolSelect,    // `ivalue` tool number (T word)
   ToolChange,    // `ivalue` tool number now in the spindle (M6)
-  ToolLength,    // `value` active tool length offset (mm) along the tool axis
+  ToolLength,    // `value` active tool length offset (mm) along the tool axis, `ivalue` the H number
   SpindleSpeed,  // `value` rpm (or m/min with CSS)
   SpindleCW,
   SpindleCCW,
@@ -42,10 +46,63 @@ enum class RecordKind : uint8_t {
   ProgramStop,   // M0
   ProgramEnd,    // M2/M30 (ivalue 30 for M30)
   Aux,           // other M code, B or H auxiliary function: text the letter, ivalue the number
+  CycleBegin,    // a canned cycle's expansion follows: text the cycle (`iso.G81`), params its words
+  CycleEnd,      // closes the innermost CycleBegin
+  FrameChange,   // the work->machine transform changed: params m00..m23, text what changed (`G54`)
   Count
 };
 
 const char *recordKindName(RecordKind k);
+
+// One named number of a CycleBegin or FrameChange record, `key=value` in the text form.
+// Keys are 1..7 characters [A-Za-z_][A-Za-z0-9_]*, stored inline (no allocation per key).
+struct NamedNumber {
+  static constexpr size_t kMaxKey = 7;
+  std::array<char, kMaxKey + 1> key{};
+  double value = 0;
+  std::string_view name() const { return std::string_view(key.data()); }
+};
+bool isNamedNumberKey(std::string_view key);
+
+// The rarely used content of a record, kept out of line so that ordinary records (every move
+// of a program) stay small and copy as before: a tilted arc's normal, the named numbers.
+struct MotionExtra {
+  bool hasNormal = false;
+  std::array<double, 3> normal{};  // unit normal of a tilted arc (see MotionRecord::arcNormal)
+  std::vector<NamedNumber> params;
+};
+
+// A copyable owning pointer (deep copy), null by default: keeps the rarely used part of a hot,
+// often copied structure out of line (MotionRecord::extra, ArcGeometry's tilted frame).
+template <class T>
+class CopyPtr {
+public:
+  CopyPtr() = default;
+  CopyPtr(const CopyPtr &o) : p_(o.p_ ? std::make_unique<T>(*o.p_) : nullptr) {}
+  CopyPtr(CopyPtr &&) noexcept = default;
+  // Both null (the common case) costs two tests.
+  CopyPtr &operator=(const CopyPtr &o) {
+    if ((p_ || o.p_) && this != &o) p_ = o.p_ ? std::make_unique<T>(*o.p_) : nullptr;
+    return *this;
+  }
+  CopyPtr &operator=(CopyPtr &&o) noexcept {
+    if (p_ || o.p_) p_ = std::move(o.p_);
+    return *this;
+  }
+  const T *get() const { return p_.get(); }
+  const T &operator*() const { return *p_; }
+  const T *operator->() const { return p_.get(); }
+  explicit operator bool() const { return p_ != nullptr; }
+  T &make() {
+    if (!p_) p_ = std::make_unique<T>();
+    return *p_;
+  }
+  void reset() { p_.reset(); }
+
+private:
+  std::unique_ptr<T> p_;
+};
+using MotionExtraPtr = CopyPtr<MotionExtra>;
 
 struct MotionRecord {
   RecordKind kind = RecordKind::Rapid;
@@ -62,7 +119,34 @@ struct MotionRecord {
   double value = 0;
   double value2 = 0;        // PathMode continuous: naive-CAM tolerance (G64 Q), mm
   std::string text;
+  MotionExtraPtr extra;     // null unless tiltedArc() or params() (see MotionExtra)
+
+  // Arcs: the unit normal of the arc's plane; `turns` > 0 is counter-clockwise seen from its
+  // tip (a right-handed rotation about it). Unless set, the plane's own axis: +Z for XY (G17),
+  // +Y for ZX (G18, from Z towards X), +X for YZ (G19, from Y towards Z), as rs274's ARC_FEED.
+  std::array<double, 3> arcNormal() const;
+  // True when an arc's normal was set and is not its plane's axis: it lies in a tilted plane.
+  bool tiltedArc() const { return extra.get() && extra.get()->hasNormal; }
+  // Sets the normal; the plane's own axis (exactly) clears it, so a record has one spelling.
+  void setNormal(const std::array<double, 3> &n);
+  // CycleBegin / FrameChange: the named numbers in order.
+  const std::vector<NamedNumber> &params() const;
+  // Appends (or replaces) a named number; false when the key is not a valid key.
+  bool setParam(std::string_view key, double value);
+  // The value of a named number, or nullptr.
+  const double *param(std::string_view key) const;
 };
+
+// FrameChange's transform: the 3x4 matrix that maps program XYZ to machine XYZ, row-major
+// (machine_i = m_i0 x + m_i1 y + m_i2 z + m_i3), as the named numbers m00..m23.
+using FrameMatrix = std::array<double, 12>;
+void setFrameMatrix(MotionRecord &r, const FrameMatrix &m);
+// Reads m00..m23; an entry the record lacks is the identity's.
+FrameMatrix frameMatrix(const MotionRecord &r);
+
+// The plane's own unit normal (+Z, +Y, +X for XY, ZX, YZ).
+std::array<double, 3> planeNormal(Plane p);
+const char *planeName(Plane p);  // "xy", "zx", "yz"
 
 // Receives the record stream. Sinks are chained: a sink may forward to `next`.
 class MotionSink {
@@ -90,6 +174,30 @@ private:
   std::vector<MotionSink *> sinks_;
 };
 
+// For sinks whose output has only the three principal planes (the canonical trace; the emitters
+// use message()): remembers the first arc in a tilted plane and reports it at finish(), where
+// diagnostics are at hand. The sink writes nothing wrong meanwhile: it skips the record.
+class TiltedArcCheck {
+public:
+  explicit TiltedArcCheck(const char *consumer) : consumer_(consumer) {}
+  // True (and noted) when r is a tilted arc the sink must not write.
+  bool reject(const MotionRecord &r) {
+    if (!r.tiltedArc()) return false;
+    if (!seen_) first_ = r, seen_ = true;
+    return true;
+  }
+  bool seen() const { return seen_; }
+  // Reports the first rejected arc as an error; false when there was one.
+  bool report(Diagnostics &diags) const;
+  // The message (also used directly by sinks that have diagnostics at hand).
+  static std::string message(const char *consumer, const MotionRecord &r);
+
+private:
+  const char *consumer_;
+  bool seen_ = false;
+  MotionRecord first_;
+};
+
 // Collects records in memory (tests, --emit=motion of small programs, translate).
 class MotionBuffer : public MotionSink {
 public:
@@ -97,16 +205,29 @@ public:
   std::vector<MotionRecord> records;
 };
 
-// Textual Motion IR: one record per line, `%.4f`-free full precision (shortest round-trip).
+// Textual Motion IR (docs/IR.md "Motion IR text"): one record per line, numbers in shortest
+// round-trip form, strings quoted and escaped. The one printer; parseMotionText reads it back.
 std::string printMotionRecord(const MotionRecord &r);
-// Prints records as text to a stream (`ncc compile --emit=motion`).
+void appendMotionRecord(std::string &out, const MotionRecord &r);
+// Prints records as text, one line each, to a stream or into a string (`ncc compile
+// --emit=motion`, the lower-motion pass).
 class MotionTextWriter : public MotionSink {
 public:
   explicit MotionTextWriter(std::FILE *out) : out_(out) {}
+  explicit MotionTextWriter(std::string &text) : text_(&text) {}
   void record(const MotionRecord &r) override;
 
 private:
-  std::FILE *out_;
+  std::FILE *out_ = nullptr;
+  std::string *text_ = nullptr;
+  std::string line_;
 };
+
+// Parses Motion IR text (file `file` of sm) into records pushed to `sink`, in order. Starts
+// at the machine origin in the XY plane; each record's start is the previous record's end, its
+// plane the last plane record's. Records keep the source positions written in them (`@l:c`,
+// file 0: they point into the program the text came from). Errors are reported at their place
+// in the text; returns false after an error (records before it have been pushed).
+bool parseMotionText(const SourceManager &sm, uint32_t file, MotionSink &sink, Diagnostics &diags);
 
 }  // namespace ncc

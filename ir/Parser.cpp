@@ -2,6 +2,7 @@
 // Bad input gives one diagnostic at the offending line:col of the .ncir text and `false`;
 // nesting depth is bounded so hostile input cannot exhaust the stack.
 #include "ir/IRText.h"
+#include "ir/TextQuote.h"
 #include "ir/NCIR.h"
 
 #include <fmt/format.h>
@@ -131,13 +132,6 @@ private:
     t.num = std::strtod(t.text.c_str(), nullptr);  // overflow gives ±inf, which is what we want
   }
 
-  static int hexValue(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-  }
-
   // At the opening quote; returns the decoded text.
   std::string readString(const Token &t) {
     std::string o;
@@ -151,23 +145,8 @@ private:
         continue;
       }
       uint32_t ecol = (uint32_t)(pos_ - lineStart_);
-      char e = pos_ < s_.size() ? s_[pos_++] : '\0';
-      switch (e) {
-      case '"': o += '"'; break;
-      case '\\': o += '\\'; break;
-      case 'n': o += '\n'; break;
-      case 't': o += '\t'; break;
-      case 'r': o += '\r'; break;
-      case 'x': {
-        int h = pos_ + 1 < s_.size() ? hexValue(s_[pos_]) : -1;
-        int l = h >= 0 ? hexValue(s_[pos_ + 1]) : -1;
-        if (l < 0) throw ParseError{line_, ecol, "'\\x' needs two hex digits"};
-        o += (char)(h * 16 + l);
-        pos_ += 2;
-        break;
-      }
-      default: throw ParseError{line_, ecol, "unknown escape in string"};
-      }
+      const char *error = nullptr;
+      if (!ncc::text::decodeEscape(s_, pos_, o, error)) throw ParseError{line_, ecol, error};
     }
   }
 };

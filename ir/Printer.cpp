@@ -1,6 +1,7 @@
 // Prints NC IR in its generic text form (see docs/IR.md, "Text form"). The printer has no
 // per-op code: every op prints as `name key=expr... loc(K:line:col) { region } else { region }`.
 #include "ir/IRText.h"
+#include "ir/TextQuote.h"
 #include "ir/NCIR.h"
 
 #include <fmt/format.h>
@@ -13,22 +14,7 @@ namespace ncc::ir {
 
 namespace {
 
-std::string quote(std::string_view s) {
-  std::string o = "\"";
-  for (unsigned char c : s) {
-    switch (c) {
-    case '"': o += "\\\""; break;
-    case '\\': o += "\\\\"; break;
-    case '\n': o += "\\n"; break;
-    case '\t': o += "\\t"; break;
-    case '\r': o += "\\r"; break;
-    default:
-      if (c < 0x20 || c == 0x7f) o += fmt::format("\\x{:02x}", c);
-      else o += (char)c;
-    }
-  }
-  return o + "\"";
-}
+std::string quote(std::string_view s) { return ncc::text::quoted(s); }
 
 // A name after a sigil (%, %%, $, @) or as a key: bare when it is an identifier.
 std::string nameText(std::string_view s) { return text::isIdent(s) ? std::string(s) : quote(s); }

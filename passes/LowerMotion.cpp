@@ -6,25 +6,11 @@
 
 namespace ncc {
 
-namespace {
-class TextSink : public MotionSink {
-public:
-  explicit TextSink(std::string &out) : out_(out) {}
-  void record(const MotionRecord &r) override {
-    out_ += printMotionRecord(r);
-    out_ += '\n';
-  }
-
-private:
-  std::string &out_;
-};
-}  // namespace
-
 bool runLowerMotion(ir::Module &m, Diagnostics &diags, PassContext &ctx) {
   std::string local;
   std::string &out = ctx.motionText ? *ctx.motionText : local;
   out.clear();
-  TextSink sink(out);
+  MotionTextWriter sink(out);
   Executor exec(ctx.machine ? *ctx.machine : Machine::builtinDefault(), sink, diags);
   ExecutorSink es(exec);
   Evaluator ev(es, diags, ctx.limits);

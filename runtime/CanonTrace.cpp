@@ -137,7 +137,7 @@ void CanonTraceWriter::epilogue(const MotionRecord &r) {
 }
 
 void CanonTraceWriter::record(const MotionRecord &r) {
-  if (finished_) return;
+  if (finished_ || halted_) return;
   if (!started_) preamble();
   const int64_t n = r.blockNumber;
   switch (r.kind) {
@@ -150,6 +150,11 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     end();
     break;
   case RecordKind::Arc: {
+    // After a tilted arc nothing more is written: the trace would no longer be the path.
+    if (tilted_.reject(r)) {
+      halted_ = true;
+      return;
+    }
     const int *ax = kArcAxes[(int)r.plane];
     begin(n);
     buf_.append("ARC_FEED(");
@@ -235,13 +240,20 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   case RecordKind::ProgramStop: line(n, "PROGRAM_STOP()"); break;
   case RecordKind::ProgramEnd: epilogue(r); break;
   case RecordKind::Aux:  // user M codes have no canonical command in rs274's standalone canon
+  case RecordKind::CycleBegin:  // the expanded moves are the trace; rs274 has no bracket
+  case RecordKind::CycleEnd:
+  case RecordKind::FrameChange:  // positions are already machine coordinates
   case RecordKind::Count: break;
   }
 }
 
-bool CanonTraceWriter::finish(Diagnostics &) {
+bool CanonTraceWriter::finish(Diagnostics &diags) {
   if (finished_) return !ioError_;
   finished_ = true;
+  if (!tilted_.report(diags)) {
+    flush();
+    return false;
+  }
   if (!started_) preamble();
   line(-1, "ON_RESET()");
   line(-1, "ON_RESET()");

@@ -37,8 +37,10 @@ private:
   std::string buf_;
   int64_t seq_ = 0;
   bool started_ = false, finished_ = false, ioError_ = false;
+  bool halted_ = false;  // a record it cannot write (tilted arc) stopped the trace
   Plane plane_ = Plane::XY;
   bool flood_ = false, mist_ = false;
+  TiltedArcCheck tilted_{"the canonical trace (rs274 ARC_FEED)"};
 };
 
 }  // namespace ncc

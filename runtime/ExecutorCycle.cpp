@@ -18,6 +18,24 @@ std::string lower(const char *code) {
   for (char &ch : s) ch = (char)std::tolower((unsigned char)ch);
   return s;
 }
+// CycleBegin's named numbers (docs/IR.md "Motion IR text"), in mm: the first hole's position in
+// program coordinates (offset-frame step position minus the frame offsets), the drilling-axis
+// bottom and R as programmed (G91: increments), Q and P when the cycle uses them, L the repeats.
+void cycleParams(MotionRecord &r, const CycleInput &in, const std::vector<CycleStep> &steps,
+                 const std::array<double, 3> &frameOffset, double z, double rLevel, int d) {
+  for (const CycleStep &s : steps)
+    if (!s.preMove) {
+      for (int i = 0; i < 3; ++i)
+        if (i != d) r.setParam(std::string_view(&kWordLetters[i], 1), s.pos[i] - frameOffset[i]);
+      break;
+    }
+  r.setParam(std::string_view(&kWordLetters[d], 1), z);
+  r.setParam("R", rLevel);
+  if (in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak) r.setParam("Q", in.q);
+  if (in.cycle == ModeValue::DrillDwell || in.cycle == ModeValue::BoreStop || in.cycle == ModeValue::BoreDwell)
+    r.setParam("P", in.p);
+  r.setParam("L", in.repeats);
+}
 }  // namespace
 
 bool Executor::Impl::cycle(const MachineCmd &c) {
@@ -117,6 +135,10 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   std::string err;
   if (!expandCycle(in, steps, err)) return error(err, "cycle-invalid");
   lastCycle = cyc;
+  MotionRecord begin = record(RecordKind::CycleBegin);
+  begin.text = std::string("iso.") + code;
+  cycleParams(begin, in, steps, {frameOffset(0), frameOffset(1), frameOffset(2)}, cycleZ, cycleR, d);
+  emit(begin);
   return runSteps(steps);
 }
 
@@ -164,6 +186,7 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
     emit(r);
   }
   if (bracketOpen) emit(pathModeRecord());
+  emit(record(RecordKind::CycleEnd));
   return true;
 }
 
@@ -194,6 +217,13 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
     if (s.kind == CycleStepKind::Feed && s.feed <= 0 && !x.checkFeed(cycle.name)) return false;
   for (CycleStep &s : steps)  // program coordinates -> the offset frame
     for (int i = 0; i < 3; ++i) s.pos[i] += x.frameOffset(i);
+  // The bracket names the cycle (and the pattern it runs on) with the arguments as given.
+  MotionRecord begin = x.record(RecordKind::CycleBegin);
+  begin.text = pattern ? std::string(pattern->name) + "+" + cycle.name : cycle.name;
+  for (auto &[k, v] : args.num) begin.setParam(k, v);
+  if (pattern)
+    for (auto &[k, v] : patternArgs->num) begin.setParam(k, v);
+  x.emit(begin);
   return x.runSteps(steps);
 }
 

@@ -14,14 +14,9 @@ PlaneAxes planeAxes(Plane p) {
   return table[(unsigned)p];
 }
 
-ArcGeometry arcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, Plane plane,
-                        int turns) {
-  ArcGeometry g;
-  g.ax = planeAxes(plane);
-  g.cu = center[g.ax.u];
-  g.cv = center[g.ax.v];
-  double su = start[g.ax.u] - g.cu, sv = start[g.ax.v] - g.cv;
-  double eu = end[g.ax.u] - g.cu, ev = end[g.ax.v] - g.cv;
+namespace {
+// The sweep and length from the start and end in plane coordinates relative to the centre.
+[[gnu::always_inline]] inline void finishArc(ArcGeometry &g, double su, double sv, double eu, double ev, double helix, int turns) {
   g.r0 = std::hypot(su, sv);
   g.r1 = std::hypot(eu, ev);
   g.startAngle = std::atan2(sv, su);
@@ -37,14 +32,73 @@ ArcGeometry arcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &ce
   }
   int extra = std::abs(turns) > 1 ? std::abs(turns) - 1 : 0;
   g.sweep = d + (ccw ? 1 : -1) * extra * kTwoPi;
-  g.helix = end[g.ax.n] - start[g.ax.n];
+  g.helix = helix;
   double planar = 0.5 * (g.r0 + g.r1) * std::fabs(g.sweep);
   g.length = std::hypot(planar, g.helix);
+}
+
+double dot(const Vec3 &a, const Vec3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3 &a, const Vec3 &b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+}  // namespace
+
+ArcGeometry arcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, Plane plane,
+                        int turns) {
+  ArcGeometry g;
+  g.ax = planeAxes(plane);
+  g.cu = center[g.ax.u];
+  g.cv = center[g.ax.v];
+  finishArc(g, start[g.ax.u] - g.cu, start[g.ax.v] - g.cv, end[g.ax.u] - g.cu, end[g.ax.v] - g.cv,
+            end[g.ax.n] - start[g.ax.n], turns);
+  return g;
+}
+
+ArcGeometry tiltedArcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, const Vec3 &normal,
+                              int turns) {
+  ArcGeometry g;
+  TiltedFrame &f = g.tilted.make();
+  f.c = center;
+  f.n = normal;
+  Vec3 s{start[0] - center[0], start[1] - center[1], start[2] - center[2]};
+  Vec3 e{end[0] - center[0], end[1] - center[1], end[2] - center[2]};
+  f.n0 = dot(s, f.n);
+  Vec3 sp{s[0] - f.n0 * f.n[0], s[1] - f.n0 * f.n[1], s[2] - f.n0 * f.n[2]};
+  double r0 = std::sqrt(dot(sp, sp));
+  if (r0 > 0) {
+    f.u = {sp[0] / r0, sp[1] / r0, sp[2] / r0};
+  } else {  // start on the axis: any direction in the plane
+    int k = std::fabs(f.n[0]) < 0.9 ? 0 : 1;
+    Vec3 a{};
+    a[k] = 1;
+    f.u = cross(cross(f.n, a), f.n);
+    double l = std::sqrt(dot(f.u, f.u));
+    for (double &x : f.u) x /= l;
+  }
+  f.v = cross(f.n, f.u);
+  finishArc(g, r0, 0, dot(e, f.u), dot(e, f.v), dot(e, f.n) - f.n0, turns);
   return g;
 }
 
 ArcGeometry arcGeometry(const MotionRecord &r) {
+  if (r.tiltedArc()) return tiltedArcGeometry(r.start, r.end, r.center, r.arcNormal(), r.turns);
   return arcGeometry(r.start, r.end, r.center, r.plane, r.turns);
+}
+
+Vec3 arcAxisShare(const ArcGeometry &g) {
+  Vec3 share{};
+  if (g.length <= 0) return share;
+  double planar = 0.5 * (g.r0 + g.r1) * std::fabs(g.sweep) / g.length;
+  double helix = std::fabs(g.helix) / g.length;
+  if (!g.tilted) {
+    share[g.ax.u] = share[g.ax.v] = planar;
+    share[g.ax.n] = helix;
+    return share;
+  }
+  // The planar velocity turns through the plane: on axis i it peaks at |(u_i, v_i)|.
+  const TiltedFrame &f = *g.tilted;
+  for (int i = 0; i < 3; ++i) share[i] = planar * std::hypot(f.u[i], f.v[i]) + helix * std::fabs(f.n[i]);
+  return share;
 }
 
 double linearLength(const AxisVec &a, const AxisVec &b) {
@@ -69,6 +123,12 @@ AxisVec arcPoint(const ArcGeometry &g, const AxisVec &start, const AxisVec &end,
   for (int i = 0; i < kAxes; ++i) p[i] = start[i] + (end[i] - start[i]) * s;
   double a = g.startAngle + g.sweep * s;
   double r = g.r0 + (g.r1 - g.r0) * s;
+  if (g.tilted) {
+    const TiltedFrame &f = *g.tilted;
+    double pu = r * std::cos(a), pv = r * std::sin(a), pn = f.n0 + g.helix * s;
+    for (int i = 0; i < 3; ++i) p[i] = f.c[i] + pu * f.u[i] + pv * f.v[i] + pn * f.n[i];
+    return p;
+  }
   p[g.ax.u] = g.cu + r * std::cos(a);
   p[g.ax.v] = g.cv + r * std::sin(a);
   return p;
@@ -80,9 +140,15 @@ Vec3 arcTangent(const ArcGeometry &g, double s) {
   double c = std::cos(a), sn = std::sin(a);
   double dr = g.r1 - g.r0;
   Vec3 t{};
-  t[g.ax.u] = dr * c - r * sn * g.sweep;
-  t[g.ax.v] = dr * sn + r * c * g.sweep;
-  t[g.ax.n] = g.helix;
+  double tu = dr * c - r * sn * g.sweep, tv = dr * sn + r * c * g.sweep;
+  if (g.tilted) {
+    const TiltedFrame &f = *g.tilted;
+    for (int i = 0; i < 3; ++i) t[i] = tu * f.u[i] + tv * f.v[i] + g.helix * f.n[i];
+  } else {
+    t[g.ax.u] = tu;
+    t[g.ax.v] = tv;
+    t[g.ax.n] = g.helix;
+  }
   double l = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
   if (l <= 0) return Vec3{};
   for (double &x : t) x /= l;
@@ -102,6 +168,21 @@ void arcBounds(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, V
     hi[i] = std::fmax(start[i], end[i]);
   }
   double span = std::fabs(g.sweep);
+  if (g.tilted) {
+    // Axis i is extreme where the circle's direction is across it: angle atan2(v_i, u_i) (+ pi).
+    for (int k = 0; k < 6; ++k) {
+      double a = std::atan2(g.tilted->v[k / 2], g.tilted->u[k / 2]) + (k % 2) * (kTwoPi / 2);
+      double delta = std::fmod(g.sweep >= 0 ? a - g.startAngle : g.startAngle - a, kTwoPi);
+      if (delta < 0) delta += kTwoPi;
+      if (delta > span || span <= 0) continue;
+      AxisVec p = arcPoint(g, start, end, delta / span);
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::fmin(lo[i], p[i]);
+        hi[i] = std::fmax(hi[i], p[i]);
+      }
+    }
+    return;
+  }
   for (int k = 0; k < 4; ++k) {
     double a = k * (kTwoPi / 4);
     // Angular distance from the start to this extreme, in the direction of travel.

@@ -1,6 +1,6 @@
 // Move geometry shared by the planner, the samplers and the plot: lengths, arc sweep, points
-// and tangents along a move. Arcs are circular in their plane (G17 XY, G18 ZX, G19 YZ) with an
-// optional linear (helical) component along the plane normal; rotary axes and any other axis
+// and tangents along a move. Arcs are circular in their plane (G17 XY, G18 ZX, G19 YZ, or a
+// tilted plane given by its normal) with an optional linear (helical) component along the normal; rotary axes and any other axis
 // move linearly with the arc parameter. A start/end radius mismatch (within arc_tolerance) is
 // absorbed by letting the radius vary linearly along the sweep (a short spiral).
 #pragma once
@@ -20,8 +20,19 @@ struct PlaneAxes {
 };
 PlaneAxes planeAxes(Plane p);
 
+// The plane of an arc in a tilted plane (MotionRecord::tiltedArc): plane coordinates are taken
+// along the orthonormal frame u (centre to start), v = n x u, n (the normal), about the centre
+// `c`; `n0` is the start's height above the centre.
+struct TiltedFrame {
+  Vec3 c{}, u{}, v{}, n{};
+  double n0 = 0;
+};
+
 struct ArcGeometry {
-  PlaneAxes ax{0, 1, 2};
+  PlaneAxes ax{0, 1, 2};       // principal planes: the axes; unused when tilted
+  // Tilted plane: its frame (then cu = cv = 0 and startAngle = 0). Null, so no cost in size or
+  // copies, for the principal planes.
+  CopyPtr<TiltedFrame> tilted;
   double cu = 0, cv = 0;       // centre in plane coordinates
   double r0 = 0, r1 = 0;       // start and end radius
   double startAngle = 0;       // radians, atan2(v - cv, u - cu) at the start
@@ -34,7 +45,14 @@ struct ArcGeometry {
 // extra full turns (0 is read as 1). Start == end gives a full circle.
 ArcGeometry arcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, Plane plane,
                         int turns);
+// The same about a unit normal in any direction (turns > 0: counter-clockwise seen from its tip).
+ArcGeometry tiltedArcGeometry(const AxisVec &start, const AxisVec &end, const Vec3 &center, const Vec3 &normal,
+                              int turns);
+// Either, as the record says (a tilted arc when it has a normal of its own).
 ArcGeometry arcGeometry(const MotionRecord &r);
+// How much of the path speed axis i (0..2) can carry on the arc at most, per unit of path
+// speed: planar part on the plane axes plus the helix part on the normal.
+Vec3 arcAxisShare(const ArcGeometry &g);
 
 // Length of a straight move: the XYZ distance, or, for a rotary-only move, the rotary distance
 // (degrees) so that feed-rate timing stays meaningful.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 
 namespace ncc {
 
@@ -189,10 +190,8 @@ void Planner::limits(Pending &p) const {
   // Fraction of the path speed each axis carries (its worst case over the move).
   AxisVec share{};
   if (r.kind == RecordKind::Arc && p.length > 0) {
-    const ArcGeometry &g = p.seg.arc;
-    double planar = 0.5 * (g.r0 + g.r1) * std::fabs(g.sweep) / p.length;
-    share[g.ax.u] = share[g.ax.v] = planar;
-    share[g.ax.n] = std::fabs(g.helix) / p.length;
+    Vec3 s3 = arcAxisShare(p.seg.arc);
+    for (int i = 0; i < 3; ++i) share[i] = s3[i];
     for (int i = 3; i < kAxes; ++i) share[i] = std::fabs(r.end[i] - r.start[i]) / p.length;
   } else {
     for (int i = 0; i < kAxes; ++i) share[i] = std::fabs(p.tIn[i]);
@@ -207,9 +206,20 @@ void Planner::limits(Pending &p) const {
   if (std::isinf(a)) a = 1e6;  // no limiting axis moves: effectively instantaneous
   if (r.kind == RecordKind::Arc) {
     double k = arcCurvature(p.seg.arc);
-    const PlaneAxes &pa = p.seg.arc.ax;
-    double an = std::min(machine_.axes[pa.u].maxAccel, machine_.axes[pa.v].maxAccel);
-    double jn = std::min(machine_.axes[pa.u].maxJerk, machine_.axes[pa.v].maxJerk);
+    const ArcGeometry &g = p.seg.arc;
+    double an, jn;
+    if (!g.tilted) {
+      const PlaneAxes &pa = g.ax;
+      an = std::min(machine_.axes[pa.u].maxAccel, machine_.axes[pa.v].maxAccel);
+      jn = std::min(machine_.axes[pa.u].maxJerk, machine_.axes[pa.v].maxJerk);
+    } else {  // the centripetal acceleration turns through the plane: every axis in it carries it
+      an = jn = kInf;
+      for (int i = 0; i < 3; ++i)
+        if (std::hypot(g.tilted->u[i], g.tilted->v[i]) > 1e-12) {
+          an = std::min(an, machine_.axes[i].maxAccel);
+          jn = std::min(jn, machine_.axes[i].maxJerk);
+        }
+    }
     if (k > 0 && an > 0) v = std::min(v, std::sqrt(an / k));                // v^2 / r <= a
     if (k > 0 && jn > 0) v = std::min(v, std::cbrt(jn / (k * k)));           // v^3 / r^2 <= j
   }
@@ -236,7 +246,9 @@ double Planner::junctionSpeed(const Pending &prev, const Pending &next) const {
 void Planner::push(const MotionRecord &r) {
   if (count_ == ring_.size()) emitFront();  // cannot happen with the pop below; kept as a guard
   Pending &p = at(count_);
-  p = Pending{};
+  // Reset in place: cheaper than assigning a temporary (one zeroing, no move, no second destructor).
+  p.~Pending();
+  new (&p) Pending{};
   p.seg.record = r;
   p.seg.record.text.clear();
   lastPos_ = r.end;

@@ -28,11 +28,6 @@ void str(std::string &s, const std::string &t) {
   s += '"';
 }
 
-const char *planeName(Plane p) {
-  static const char *names[] = {"xy", "zx", "yz"};
-  return names[(unsigned)p];
-}
-
 }  // namespace
 
 std::string motionRecordJson(const MotionRecord &r) {
@@ -58,7 +53,26 @@ std::string motionRecordJson(const MotionRecord &r) {
       s += ",\"center\":";
       vec(s, r.center.data(), 3);
       fmt::format_to(std::back_inserter(s), ",\"plane\":\"{}\",\"turns\":{}", planeName(r.plane), r.turns);
+      if (r.tiltedArc()) {
+        s += ",\"normal\":";
+        vec(s, r.arcNormal().data(), 3);
+      }
     }
+    break;
+  case RecordKind::CycleBegin:
+  case RecordKind::CycleEnd:
+  case RecordKind::FrameChange:
+    s += ",\"text\":";
+    str(s, r.text);
+    s += ",\"params\":{";
+    for (auto &p : r.params()) {
+      if (&p != &r.params().front()) s += ',';
+      s += '"';
+      s += p.name();
+      s += "\":";
+      num(s, p.value);
+    }
+    s += '}';
     break;
   case RecordKind::Comment:
   case RecordKind::Message:

@@ -23,9 +23,9 @@ void SummaryCollector::Box::add(const AxisVec &l, const AxisVec &h) {
 void SummaryCollector::record(const MotionRecord &r) {
   // A block is counted when the source position changes: consecutive records of one block
   // (a move and its feed/tool state records) count once, a loop body counts per execution.
+  // Columns are not compared: the records of one block point at its different words.
   bool hasPlace = r.loc.line != 0 || r.blockNumber >= 0;
-  if (hasPlace && (r.loc.file != lastLoc_.file || r.loc.line != lastLoc_.line ||
-                   r.loc.col != lastLoc_.col || r.blockNumber != lastN_)) {
+  if (hasPlace && (r.loc.file != lastLoc_.file || r.loc.line != lastLoc_.line || r.blockNumber != lastN_)) {
     ++blocks_;
     lastLoc_ = r.loc;
     lastN_ = r.blockNumber;

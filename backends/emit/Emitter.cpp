@@ -407,7 +407,15 @@ void Emitter::record(const MotionRecord &r) {
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear: move(r); break;
-  case RecordKind::Arc: arc(r); break;
+  case RecordKind::Arc:
+    if (r.tiltedArc()) {
+      diags_.error(r.loc, TiltedArcCheck::message(("the [" + st_.section + "] emitter").c_str(), r),
+                   "tilted-arc");
+      errors_ = true;
+      break;
+    }
+    arc(r);
+    break;
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:
     addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, st_.toolDigits), r);
@@ -492,6 +500,9 @@ void Emitter::record(const MotionRecord &r) {
     writeBlock({letter + std::to_string(r.ivalue)}, r.blockNumber);
     break;
   }
+  case RecordKind::CycleBegin:  // the expanded moves are written (no cycle output yet)
+  case RecordKind::CycleEnd:
+  case RecordKind::FrameChange:  // positions are machine coordinates: frames are not written
   case RecordKind::Count: break;
   }
 }

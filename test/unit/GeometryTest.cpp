@@ -125,3 +125,59 @@ TEST(Geometry, LinearLengthFallsBackToRotary) {
   EXPECT_DOUBLE_EQ(u[0], 0.6);
   EXPECT_DOUBLE_EQ(u[1], 0.8);
 }
+
+// A tilted arc follows the same rules about its own normal: about +Y/+X/+Z it is exactly the
+// principal plane's arc, and a tilted helix stays on its cylinder with tangents across the normal.
+TEST(Geometry, TiltedArcMatchesPrincipalPlanesAndStaysOnItsCircle) {
+  struct Case {
+    Plane plane;
+    Vec3 normal;
+  } cases[] = {{Plane::XY, {0, 0, 1}}, {Plane::ZX, {0, 1, 0}}, {Plane::YZ, {1, 0, 0}}};
+  for (auto &c : cases) {
+    for (int turns : {1, -1, 2}) {
+      AxisVec s = P(3, 4, 5), e = P(5, 3, 4);
+      Vec3 center{4, 4, 4};
+      ArcGeometry a = arcGeometry(s, e, center, c.plane, turns);
+      ArcGeometry t = tiltedArcGeometry(s, e, center, c.normal, turns);
+      EXPECT_NEAR(a.sweep, t.sweep, 1e-12);
+      EXPECT_NEAR(a.length, t.length, 1e-12);
+      for (double f : {0.25, 0.5, 0.75}) {
+        AxisVec pa = arcPoint(a, s, e, f), pt = arcPoint(t, s, e, f);
+        Vec3 ta = arcTangent(a, f), tt = arcTangent(t, f);
+        for (int i = 0; i < 3; ++i) {
+          EXPECT_NEAR(pa[i], pt[i], 1e-12) << (int)c.plane << " " << turns << " " << f;
+          EXPECT_NEAR(ta[i], tt[i], 1e-12);
+        }
+      }
+    }
+  }
+  // Normal (0, 0.6, 0.8), centre (5, 0, 0), from the origin with 2 mm of helix, counter-clockwise.
+  Vec3 n{0, 0.6, 0.8};
+  AxisVec s = P(0, 0, 0), e = P(10, 1.2, 1.6);
+  ArcGeometry g = tiltedArcGeometry(s, e, {5, 0, 0}, n, 1);
+  EXPECT_NEAR(g.sweep, kPi, 1e-12);
+  EXPECT_NEAR(g.helix, 2, 1e-12);
+  EXPECT_NEAR(g.length, std::hypot(5 * kPi, 2), 1e-12);
+  for (double f = 0; f <= 1; f += 0.125) {
+    AxisVec p = arcPoint(g, s, e, f);
+    Vec3 d{p[0] - 5, p[1], p[2]};
+    double h = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    EXPECT_NEAR(h, 2 * f, 1e-12);
+    EXPECT_NEAR(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - h * h), 5, 1e-12);
+  }
+  // Half way round, at the far side: v = n x u = (0, -0.8, 0.6) with u = (-1, 0, 0).
+  AxisVec mid = arcPoint(g, s, e, 0.5);
+  EXPECT_NEAR(mid[0], 5, 1e-12);
+  EXPECT_NEAR(mid[1], -4 + 0.6, 1e-12);
+  EXPECT_NEAR(mid[2], 3 + 0.8, 1e-12);
+  Vec3 lo, hi;
+  ArcGeometry flat = tiltedArcGeometry(s, P(10, 0, 0), {5, 0, 0}, n, 1);
+  arcBounds(flat, s, P(10, 0, 0), lo, hi);
+  EXPECT_NEAR(lo[1], -4, 1e-12);
+  EXPECT_NEAR(hi[2], 3, 1e-12);
+  EXPECT_NEAR(hi[0], 10, 1e-12);
+  Vec3 share = arcAxisShare(flat);
+  EXPECT_NEAR(share[0], 1, 1e-12);
+  EXPECT_NEAR(share[1], 0.8, 1e-12);
+  EXPECT_NEAR(share[2], 0.6, 1e-12);
+}

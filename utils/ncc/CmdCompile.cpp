@@ -11,15 +11,6 @@
 namespace ncc::driver {
 
 namespace {
-class StringMotionWriter : public MotionSink {
-public:
-  std::string text;
-  void record(const MotionRecord &r) override {
-    text += printMotionRecord(r);
-    text += '\n';
-  }
-};
-
 std::vector<std::string> splitList(const std::string &s) {
   std::vector<std::string> out;
   std::stringstream ss(s);
@@ -55,13 +46,18 @@ int cmdCompile(int argc, char **argv) {
   uint32_t f = s.start(file);
   if (!f) return kExitErrors;
   ir::Module m;
+  if (emit == "motion") {
+    // Motion IR text is parsed and printed again (a round trip); a program runs whole.
+    std::string text;
+    MotionTextWriter w(text);
+    bool motionText = s.kindOf(f) == SourceKind::Motion;
+    if (motionText ? !s.execute(f, w) : !(s.load(f, m) && s.executeModule(m, w))) return kExitErrors;
+    writeOutput(s, out, text);
+    return s.exitCode();
+  }
   if (!s.load(f, m)) return kExitErrors;
   if (emit == "ir") {
     writeOutput(s, out, ir::printModule(m, s.sm));
-  } else if (emit == "motion") {
-    StringMotionWriter w;
-    if (!s.executeModule(m, w)) return kExitErrors;
-    writeOutput(s, out, w.text);
   } else if (emit == "llvm") {
     std::string text;
     if (!jit::emitLLVM(m, text, s.diags)) return kExitErrors;

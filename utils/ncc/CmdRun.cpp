@@ -66,7 +66,8 @@ int cmdRun(int argc, char **argv) {
 
   uint64_t blocks = 0;
   bool ok = s.execute(f, tee, &blocks);
-  outputs.setBlockCount(blocks);
+  // Motion IR text has no blocks to count: the summary counts the source positions of the records.
+  if (s.kindOf(f) != SourceKind::Motion) outputs.setBlockCount(blocks);
   ok &= tee.finish(s.diags);
   std::fflush(stdout);
   if (ok && traceFile) {

@@ -16,7 +16,7 @@ namespace ncc::driver {
 void addCommonOptions(po::options_description &desc, CommonOptions &o) {
   desc.add_options()
       ("machine", po::value(&o.machine)->default_value("default"), "machine description: 'default' or a file")
-      ("dialect", po::value(&o.dialect), "source dialect: iso|sinumerik|heidenhain|cldata|ncir (default: from the file)")
+      ("dialect", po::value(&o.dialect), "source dialect: iso|sinumerik|heidenhain|cldata|ncir|motion (default: from the file)")
       ("engine", po::value(&o.engine)->default_value("eval"), "execution engine: eval|jit")
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
@@ -136,6 +136,10 @@ bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blo
 }
 
 bool Session::execute(uint32_t file, MotionSink &sink, uint64_t *blocks) {
+  if (kindOf(file) == SourceKind::Motion) {  // already executed: the records go to the sink as read
+    if (blocks) *blocks = 0;
+    return parseMotionText(sm, file, sink, diags) && !diags.hasErrors();
+  }
   if (opts.engine == "eval") {
     bool streamed = false;
     bool ok = executeStreamed(file, sink, blocks, streamed);

@@ -58,7 +58,8 @@ public:
   bool load(uint32_t file, ir::Module &out);
   // Runs a program to a Motion IR sink with the chosen engine. Flat programs are streamed
   // block by block (eval engine) so memory stays bounded.
-  // `blocks` receives the number of source blocks executed.
+  // `blocks` receives the number of source blocks executed. Motion IR text (.motion,
+  // --dialect=motion) is not executed: its records go to the sink as parsed (blocks = 0).
   bool execute(uint32_t file, MotionSink &sink, uint64_t *blocks = nullptr);
   // Flat programs with the eval engine, a chunk of blocks at a time, so memory stays bounded. `streamed` is false when the program needs whole-program parsing.
   bool executeStreamed(uint32_t file, MotionSink &sink, uint64_t *blocks, bool &streamed);
