@@ -55,6 +55,31 @@ AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
   return m;
 }
 
+void Executor::Impl::noteFrame(const char *what) {
+  auto toMachine = [&](double x, double y, double z) {
+    AxisVec p{};
+    p[0] = x, p[1] = y, p[2] = z;
+    for (int i = 0; i < 3; ++i) p[i] += frameOffset(i);
+    AxisVec m = frameOut(p);
+    m[2] -= toolLength;
+    return m;
+  };
+  AxisVec o = toMachine(0, 0, 0), ex = toMachine(1, 0, 0), ey = toMachine(0, 1, 0), ez = toMachine(0, 0, 1);
+  FrameMatrix f;
+  for (int i = 0; i < 3; ++i) {
+    f[i * 4 + 0] = ex[i] - o[i];
+    f[i * 4 + 1] = ey[i] - o[i];
+    f[i * 4 + 2] = ez[i] - o[i];
+    f[i * 4 + 3] = o[i];
+  }
+  if (f == lastFrame) return;
+  lastFrame = f;
+  MotionRecord r = record(RecordKind::FrameChange);
+  r.text = what;
+  setFrameMatrix(r, f);
+  emit(r);
+}
+
 bool Executor::Impl::frameForbids(const char *what) {
   if (!pf.linear) return true;
   return error(std::string(what) + " is not allowed while a programmable rotation, scaling or mirror (G68, G51, "
@@ -477,6 +502,7 @@ Executor::Executor(const Machine &machine, MotionSink &sink, Diagnostics &diags)
   for (ModeValue m : ctl.startup)
     if (modes.nmodes < kMaxModes) modes.modes[modes.nmodes++] = m;
   if (modes.nmodes) impl_->execMode(modes);
+  impl_->noteFrame("start");  // a machine whose G54 offset is not zero
 }
 
 Executor::~Executor() { delete impl_; }
@@ -602,14 +628,32 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::MachineMove: return x.execMachineMove(c);
   case CmdKind::ToolLength: return x.execToolLength(c);
   case CmdKind::CutterComp: return x.execCutterComp(c);
-  case CmdKind::Frame: return x.execFrame(c);
-  case CmdKind::WorkOffset:
+  case CmdKind::Frame: {
+    // FrameSlot order; set, cancel (ISO names: the only dialect with frame ops so far).
+    static const char *kSlots[][2] = {{"G52", "G52"}, {"G68", "G69"}, {"G51", "G50"}, {"G51.1", "G50.1"}};
+    if (!x.execFrame(c)) return false;
+    bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
+    x.noteFrame(c.sub < 4 ? kSlots[c.sub][set ? 0 : 1] : "frame");
+    return true;
+  }
+  case CmdKind::WorkOffset: {
+    static const char *kSystems[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
     if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
     if (c.sub != x.st.workOffset && !x.frameForbids("changing the work offset")) return false;
     x.st.workOffset = c.sub;
+    x.noteFrame(kSystems[c.sub - 1]);
     return true;
-  case CmdKind::SetOffset: return x.execSetOffset(c);
-  case CmdKind::Stop: return x.execStop(c);
+  }
+  case CmdKind::SetOffset: {
+    static const char *kKinds[] = {"G92", "G92.1", "G10 L2", "G10 L20", "G92.2", "G92.3", "G28.1", "G30.1", "G52"};
+    if (!x.execSetOffset(c)) return false;
+    x.noteFrame(c.sub < 9 ? kKinds[c.sub] : "offset");
+    return true;
+  }
+  case CmdKind::Stop:
+    if (!x.execStop(c)) return false;
+    if (x.st.ended) x.noteFrame("reset");
+    return true;
   case CmdKind::Aux: {
     MotionRecord r = x.record(RecordKind::Aux);
     double p = c.get(Word::P);

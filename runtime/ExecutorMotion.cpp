@@ -115,11 +115,32 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   const ArcAxes &ax = kArcAxes[(int)plane()];
   const char *code = cw ? "G2" : "G3";
   if (!checkFeed(code)) return false;
-  bool flip = false;  // a mirrored frame turns the arc the other way on the machine
-  if (!frameKeepsPlane(plane(), flip))
-    return error(rotated() ? "arcs outside the XY plane with a rotated coordinate system are not supported"
-                           : "an arc under a frame that tilts its plane or scales its axes unequally is not supported",
-                 "unsupported-code");
+  // Under a programmable frame the arc may land in another principal plane, or in a tilted one
+  // (3-D G68): its machine plane and normal, and whether it turns the other way (a mirror).
+  bool flip = false;
+  Plane outPlane = plane();
+  bool tilted = false;
+  std::array<double, 3> machineNormal = planeNormal(plane());
+  if (!frameKeepsPlane(plane(), flip)) {
+    if (rotated() || !pf.similar())
+      return error(rotated() ? "arcs outside the XY plane with a rotated coordinate system are not supported"
+                             : "an arc under a frame that scales its axes unequally is not supported",
+                   "unsupported-code");
+    Vec3 n = pf.composite.applyLinear(planeNormal(plane()));
+    double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double &v : n) v /= len;
+    flip = pf.composite.det() < 0;  // a mirror reverses the turn about the mapped normal
+    machineNormal = n;
+    tilted = true;
+    for (int i = 0; i < 3; ++i)  // a principal axis after all: that plane, turning about +axis
+      if (n[(i + 1) % 3] == 0 && n[(i + 2) % 3] == 0) {
+        static const Plane kAxisPlane[] = {Plane::YZ, Plane::ZX, Plane::XY};
+        outPlane = kAxisPlane[i];
+        if (n[i] < 0) flip = !flip;
+        machineNormal = planeNormal(outPlane);
+        tilted = false;
+      }
+  }
   const AxisVec end = target(c);
   // Computed in the offset frame (ExecutorImpl.h): I J K and R are program values.
   const AxisVec start = frameIn(st.position), fend = frameIn(end);
@@ -188,6 +209,8 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
     turns = (int)p;
   }
   MotionRecord r = record(RecordKind::Arc);
+  r.plane = outPlane;
+  if (tilted) r.setNormal(machineNormal);
   r.end = end;
   AxisVec centre = start;
   centre[ax.a1] = c1;
@@ -203,9 +226,11 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   if (sweep <= 1e-12) sweep += 2 * M_PI;
   sweep += 2 * M_PI * (turns - 1);
   double radius = std::hypot(s1 - c1, s2 - c2), height = end[ax.d] - start[ax.d];
-  if (pf.linear) {
-    radius = std::hypot(st.position[ax.a1] - centre[ax.a1], st.position[ax.a2] - centre[ax.a2]);
-    height = end[ax.d] - st.position[ax.d];
+  if (pf.linear) {  // on the machine: the centre lies in the start's plane, the helix along the normal
+    radius = std::sqrt(std::pow(st.position[0] - centre[0], 2) + std::pow(st.position[1] - centre[1], 2) +
+                       std::pow(st.position[2] - centre[2], 2));
+    height = 0;
+    for (int i = 0; i < 3; ++i) height += (end[i] - st.position[i]) * machineNormal[i];
   }
   r.feed = moveFeed(std::hypot(sweep * radius, height));
   inverseTimeRate(r.feed);

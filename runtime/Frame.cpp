@@ -105,6 +105,17 @@ void ProgrammableFrame::update() {
   inverseComposite = c.inverse();
 }
 
+bool ProgrammableFrame::similar() const {
+  const auto &m = composite.m;
+  double col[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) col[j][i] = m[i][j];
+  auto dot = [&](int a, int b) { return col[a][0] * col[b][0] + col[a][1] * col[b][1] + col[a][2] * col[b][2]; };
+  double k = dot(0, 0), tol = 1e-12 * k;
+  return std::fabs(dot(1, 1) - k) <= tol && std::fabs(dot(2, 2) - k) <= tol && std::fabs(dot(0, 1)) <= tol &&
+         std::fabs(dot(0, 2)) <= tol && std::fabs(dot(1, 2)) <= tol;
+}
+
 AxisVec ProgrammableFrame::out(const AxisVec &p) const {
   AxisVec r = p;
   Vec3 x = composite.apply({p[0], p[1], p[2]});

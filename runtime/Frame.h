@@ -51,6 +51,8 @@ struct ProgrammableFrame {
   bool linear = false;  // a mirror, scaling or rotation is active (else only the local shift)
 
   void update();
+  // The linear part is a rotation times one scale factor (a mirror allowed): circles stay circles.
+  bool similar() const;
   bool mirrorOn() const { return mirrorAxes[0] || mirrorAxes[1] || mirrorAxes[2]; }
   void clearMirror() { mirrorAxes = {}, mirrorAt = {}; }
   void clearScale() { scaleOn = false, scaleFactors = {1, 1, 1}, scaleCentre = {}; }

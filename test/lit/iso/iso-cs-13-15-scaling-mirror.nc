@@ -29,11 +29,15 @@ M30
 ; IR: frame slot=mirror action=set X=10 loc(1:8:1)
 ; IR: frame slot=mirror action=cancel X=0 loc(1:11:1)
 ; RUN: %ncc compile %s --emit=motion | FileCheck %s
-; CHECK: linear X40 Y0 Z0 {{.*}}@4:1
+; CHECK: frame_change "G51" m00=2 m01=0 m02=0 m03=0 m10=0 m11=2 m12=0 m13=0 m20=0 m21=0 m22=2 m23=0 @3:1
+; CHECK-NEXT: linear X40 Y0 Z0 {{.*}}@4:1
 ; CHECK-NEXT: arc X0 Y40 Z0 A0 B0 C0 center({{[0-9.e-]+}}, {{[0-9.e-]+}}, 0) plane=xy turns=1 {{.*}}@5:1
+; CHECK-NEXT: frame_change "G50"
 ; CHECK-NEXT: rapid X0 Y0 Z0 {{.*}}@7:1
+; CHECK-NEXT: frame_change "G51.1" m00=-1 m01=0 m02=0 m03=20 {{.*}}@8:1
 ; CHECK-NEXT: linear X0 Y5 Z0 {{.*}}@9:1
 ; CHECK-NEXT: arc X-5 Y10 Z0 A0 B0 C0 center(0, 10, 0) plane=xy turns=1 {{.*}}@10:1
+; CHECK-NEXT: frame_change "G50.1"
 ; CHECK-NEXT: rapid X0 Y0 Z0 {{.*}}@12:1
 ; CHECK: arc X10 Y-15 Z0 A0 B0 C0 center(10, -10, 0) {{.*}}@16:1
 ; CHECK-NEXT: linear X20 Y-15 Z0 {{.*}}@16:1
