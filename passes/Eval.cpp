@@ -19,8 +19,6 @@
 namespace ncc {
 using namespace ir;
 
-bool ExecutorSink::exec(const MachineCmd &cmd) { return exec_.exec(cmd); }
-bool ExecutorSink::readSystem(SysVar v, double &out) { return exec_.readSystem(v, out); }
 
 namespace {
 

@@ -4,36 +4,13 @@
 // Functions are first linearised into a small instruction list (jumps for if/while/loop/goto),
 // so gotos out of nested loops need no special cases.
 #pragma once
-#include "ir/MachineCmd.h"
+#include "ir/CmdSink.h"
+#include "ir/ExecLimits.h"
 #include "ir/NCIR.h"
-#include "ir/SystemVars.h"
-#include "passes/ExecLimits.h"
 
 #include <memory>
 
 namespace ncc {
-
-class Executor;
-
-class CmdSink {
-public:
-  virtual ~CmdSink() = default;
-  // Returns false to stop the program (the sink has reported why).
-  virtual bool exec(const MachineCmd &cmd) = 0;
-  // A system variable's current value (ir/SystemVars.h); false when this sink has none.
-  virtual bool readSystem(SysVar v, double &out) { return false; }
-};
-
-// Forwards commands to an Executor.
-class ExecutorSink : public CmdSink {
-public:
-  explicit ExecutorSink(Executor &e) : exec_(e) {}
-  bool exec(const MachineCmd &cmd) override;
-  bool readSystem(SysVar v, double &out) override;
-
-private:
-  Executor &exec_;
-};
 
 class Evaluator {
 public:

@@ -2,7 +2,7 @@
 // (like LLVM's opt) and each is testable alone.
 #pragma once
 #include "ir/NCIR.h"
-#include "passes/ExecLimits.h"
+#include "ir/ExecLimits.h"
 
 #include <string>
 #include <vector>

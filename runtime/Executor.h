@@ -3,6 +3,7 @@
 // values, applies work and tool offsets, and pushes Motion IR records into a sink.
 // Both engines feed it: the eval engine (passes/Eval) and JIT-compiled code (through ncrt_*).
 #pragma once
+#include "ir/CmdSink.h"
 #include "ir/MachineCmd.h"
 #include "ir/MotionIR.h"
 #include "ir/SystemVars.h"
@@ -57,6 +58,17 @@ public:
 
 private:
   Impl *impl_;
+};
+
+// Forwards an engine's commands to an Executor.
+class ExecutorSink : public CmdSink {
+public:
+  explicit ExecutorSink(Executor &e) : exec_(e) {}
+  bool exec(const MachineCmd &cmd) override { return exec_.exec(cmd); }
+  bool readSystem(SysVar v, double &out) override { return exec_.readSystem(v, out); }
+
+private:
+  Executor &exec_;
 };
 
 }  // namespace ncc

@@ -16,8 +16,8 @@
 #ifdef __cplusplus
 #include "ir/MachineCmd.h"
 #include "ir/Strings.h"
-#include "passes/Eval.h"  // CmdSink: where commands go (the Executor, or a recorder in tests)
-#include "passes/ExecLimits.h"
+#include "ir/CmdSink.h"  // where commands go (the Executor, or a recorder in tests)
+#include "ir/ExecLimits.h"
 
 #include <chrono>
 #include <string>

@@ -4,7 +4,7 @@
 // Semantics match the eval engine (ir/Value.h, ir/Arith.h, docs/JIT.md).
 #pragma once
 #include "ir/NCIR.h"
-#include "passes/ExecLimits.h"
+#include "ir/ExecLimits.h"
 
 #include <string>
 

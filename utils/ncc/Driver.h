@@ -6,7 +6,7 @@
 #include "ir/Diagnostics.h"
 #include "ir/MotionIR.h"
 #include "ir/NCIR.h"
-#include "passes/ExecLimits.h"
+#include "ir/ExecLimits.h"
 #include "runtime/Machine.h"
 
 #include <boost/program_options.hpp>

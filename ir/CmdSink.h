@@ -1,0 +1,19 @@
+// CmdSink: where an engine sends the machine commands of a running program (the Executor, a
+// recorder in tests) and asks for controller state. The boundary between the engines (passes/Eval,
+// backends/jit) and the executor (runtime/), so that runtime/ depends on ir/ only.
+#pragma once
+#include "ir/MachineCmd.h"
+#include "ir/SystemVars.h"
+
+namespace ncc {
+
+class CmdSink {
+public:
+  virtual ~CmdSink() = default;
+  // Returns false to stop the program (the sink has reported why).
+  virtual bool exec(const MachineCmd &cmd) = 0;
+  // A system variable's current value (ir/SystemVars.h); false when this sink has none.
+  virtual bool readSystem(SysVar v, double &out) { return false; }
+};
+
+}  // namespace ncc
