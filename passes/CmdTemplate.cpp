@@ -80,6 +80,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Aux, "b", Word::P},            {OpKind::Aux, "h", Word::P},
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
     {OpKind::Move, "polar_r", Word::PolarR}, {OpKind::Move, "polar_a", Word::PolarA},
+    {OpKind::Move, "chamfer", Word::Chamfer}, {OpKind::Move, "round", Word::Round},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -304,7 +305,7 @@ Op cmdToOp(const MachineCmd &c) {
       Word w = (Word)i;
       if (!c.has(w)) continue;
       if (op.kind == OpKind::SetOffset && w == Word::P) continue;
-      if (w == Word::PolarR || w == Word::PolarA) continue;  // named keys, above
+      if (w >= Word::PolarR) continue;  // named keys, above
       op.set(std::string(1, kWordLetters[i]), real(c.get(w)));
     }
   return op;

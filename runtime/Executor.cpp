@@ -169,6 +169,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
       }
       break;
     case ModeGroup::Plane: {
+      if (v != st.plane) cornerFlush("the plane changes");
       if (comp.active() && v != st.plane)
         return error("Cannot change planes with cutter radius compensation on", "cutcomp-conflict");
       st.plane = v;
@@ -473,6 +474,7 @@ bool Executor::Impl::execStop(const MachineCmd &c) {
   case StopKind::Optional: emit(record(RecordKind::OptionalStop)); break;
   case StopKind::End:
   case StopKind::EndRewind: {
+    cornerFlush("no move follows");
     comp.stop();  // flush the pending compensated move
     compExit = false;
     MotionRecord r = record(RecordKind::ProgramEnd);
@@ -534,6 +536,8 @@ bool Executor::exec(const MachineCmd &c) {
   }
   switch (c.kind) {
   case CmdKind::Block:
+    x.prevBlockFrame = x.curBlockFrame;
+    x.curBlockFrame = false;
     ++x.blocks;
     x.blockNumber = c.blockNumber;
     x.blockLoc = c.loc;
@@ -624,7 +628,7 @@ bool Executor::exec(const MachineCmd &c) {
     return true;
   }
   case CmdKind::Move: return x.execMove(c);
-  case CmdKind::Home: return x.execHome(c);
+  case CmdKind::Home: x.curBlockFrame = true; return x.execHome(c);
   case CmdKind::MachineMove: return x.execMachineMove(c);
   case CmdKind::ToolLength: return x.execToolLength(c);
   case CmdKind::CutterComp: return x.execCutterComp(c);
@@ -632,6 +636,7 @@ bool Executor::exec(const MachineCmd &c) {
     // FrameSlot order; set, cancel (ISO names: the only dialect with frame ops so far).
     static const char *kSlots[][2] = {{"G52", "G52"}, {"G68", "G69"}, {"G51", "G50"}, {"G51.1", "G50.1"}};
     if (!x.execFrame(c)) return false;
+    x.curBlockFrame = true;
     bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
     x.noteFrame(c.sub < 4 ? kSlots[c.sub][set ? 0 : 1] : "frame");
     return true;
@@ -641,12 +646,14 @@ bool Executor::exec(const MachineCmd &c) {
     if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
     if (c.sub != x.st.workOffset && !x.frameForbids("changing the work offset")) return false;
     x.st.workOffset = c.sub;
+    x.curBlockFrame = true;
     x.noteFrame(kSystems[c.sub - 1]);
     return true;
   }
   case CmdKind::SetOffset: {
     static const char *kKinds[] = {"G92", "G92.1", "G10 L2", "G10 L20", "G92.2", "G92.3", "G28.1", "G30.1", "G52"};
     if (!x.execSetOffset(c)) return false;
+    x.curBlockFrame = true;
     x.noteFrame(c.sub < 9 ? kKinds[c.sub] : "offset");
     return true;
   }
@@ -773,6 +780,7 @@ bool Executor::readSystem(SysVar v, double &out) const {
 
 bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
+  if (ranToEnd) x.cornerFlush("no move follows");
   x.comp.stop();
   // A run stopped by an error did not reach its end: no warning about how it ends.
   if (ranToEnd && !x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");

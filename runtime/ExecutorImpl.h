@@ -88,7 +88,25 @@ struct Executor::Impl {
   AxisVec frameOut(const AxisVec &framePos) const;
   Plane plane() const;
   MotionRecord record(RecordKind k) const;
-  void emit(const MotionRecord &r) { sink.record(r); }
+  // While a corner (chamfer/rounding) waits for its second move, records are held back.
+  void emit(const MotionRecord &r) {
+    if (corner.active) corner.held.push_back(r);
+    else sink.record(r);
+  }
+  // A chamfer or rounding between a move and the next (ExecutorCorner.cpp): `requested` by the
+  // move being executed, `active` while its first move waits for the second.
+  struct Corner {
+    bool requested = false, active = false;
+    bool reqRound = false, round = false;  // requested by the move being executed / of the active corner
+    double reqSize = 0, size = 0;          // mm
+    MotionRecord move;
+    std::vector<MotionRecord> held;
+  } corner;
+  bool prevBlockFrame = false, curBlockFrame = false;  // a coordinate change in the last/this block
+  bool cornerRequest(const MachineCmd &c);
+  bool cornerNext(const MotionRecord &next);
+  // Not inserted (the manual's cases): the first move as programmed, then what was held.
+  void cornerFlush(const char *why);
   // Emits a programmed motion record, through cutter compensation when it is on.
   bool emitMove(const MotionRecord &r);
   bool error(std::string msg, std::string rule) {

@@ -76,6 +76,18 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop, dou
 }
 
 bool Executor::Impl::emitMove(const MotionRecord &r) {
+  if (corner.active) return cornerNext(r);
+  if (corner.requested) {
+    corner.requested = false;
+    if (r.kind != RecordKind::Linear)
+      return error(r.kind == RecordKind::Arc ? "a chamfer or rounding next to an arc is not supported yet"
+                                             : "a chamfer or rounding needs a G1, G2 or G3 move",
+                   "unsupported-code");
+    corner.active = true;
+    corner.move = r;
+    corner.round = corner.reqRound, corner.size = corner.reqSize;
+    return true;
+  }
   if (comp.active()) return comp.add(r) || error(comp.error(), comp.rule());
   if (compExit) {
     compExit = false;
@@ -92,6 +104,7 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
 }
 
 bool Executor::Impl::execMove(const MachineCmd &c) {
+  if ((c.has(Word::Chamfer) || c.has(Word::Round)) && !cornerRequest(c)) return false;
   switch (st.motion) {
   case ModeValue::Rapid:
     if (!(c.mask & kTargetMask)) return true;

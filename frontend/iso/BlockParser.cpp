@@ -426,6 +426,20 @@ bool BlockParser::parseItems(ParsedBlock &out) {
       out.words.push_back(std::move(w));
       continue;
     }
+    if (c == ',' && flavour_ == Flavour::Fanuc) {  // ,C chamfer  ,R rounding  ,A angle (808D 2.3.1.5)
+      ++p_;
+      char l = p_ < end_ ? (char)std::toupper((unsigned char)*p_) : 0;
+      if (l == 'A') return fail(at, ",A (a line given by its angle) is not supported yet", "unsupported-code");
+      if (l != 'C' && l != 'R') return fail(at, "',' starts a chamfer ,C or a rounding ,R", "syntax");
+      if (!out.corner.empty()) return fail(at, "one chamfer or rounding per block", "duplicate-word");
+      ++p_;
+      IsoWord w;
+      w.letter = l;
+      w.loc = locAt(at);
+      if (!parseWordValue(w)) return false;
+      out.corner.push_back(std::move(w));
+      continue;
+    }
     if (!isLetter(c)) return fail(p_, "unexpected character " + showChar(c), "syntax");
     std::string_view letters = readLetters();
     if (letters.size() >= 2) {

@@ -239,6 +239,7 @@ struct BlockLowerer::Block {
 
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level
+  bool cornerTaken = false;  // a ,C / ,R went to the move
   bool coordinateOps();  // G10/G92, G28/G30, G53
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();
@@ -690,8 +691,18 @@ bool BlockLowerer::Block::motion() {
       if (bw.has('Q') && params.find('Q') != std::string_view::npos) op.set("Q", take('Q', Scale::Linear));
       // The repeat count: K (Fanuc/808D) or L; rs274 has L only.
       if (cycle && (bw.has('L') || (bw.has('K') && !rs274))) op.set("L", take(bw.has('L') ? 'L' : 'K', Scale::None));
+      if (!b.corner.empty() && (arc || L.motion_ == ModeValue::Linear)) {
+        const IsoWord &w = b.corner.front();
+        op.set(w.letter == 'C' ? "chamfer" : "round", literal(w, factor(Scale::Linear)));
+        cornerTaken = true;
+      }
       out.push_back(std::move(op));
     }
+  }
+  if (!b.corner.empty() && !cornerTaken) {
+    L.diags_.error(b.corner.front().loc, "a chamfer ,C or rounding ,R needs a G1, G2 or G3 move in its block",
+                   "unused-word");
+    return false;
   }
   return true;
 }

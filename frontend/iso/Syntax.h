@@ -66,6 +66,7 @@ struct ParsedBlock {
   int skip = -1;             // leading `/n` whose level is not active
   int64_t programNumber = -1;  // a Fanuc `O1234` line
   std::vector<IsoWord> words;
+  std::vector<IsoWord> corner;  // `,C` chamfer / `,R` rounding (letter 'C' or 'R'), at most one
   std::vector<IsoComment> comments;
   std::vector<IsoAssign> assigns;
   StmtKind stmt = StmtKind::None;
@@ -85,6 +86,7 @@ struct ParsedBlock {
     skip = -1;
     programNumber = -1;
     words.clear();
+    corner.clear();
     comments.clear();
     assigns.clear();
     stmt = StmtKind::None;
