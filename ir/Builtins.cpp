@@ -35,6 +35,17 @@ double ncc_builtin_fix(const double *a) { return std::floor(num(a[0])); }
 double ncc_builtin_fup(const double *a) { return std::ceil(num(a[0])); }
 double ncc_builtin_awayfromzero(const double *a) { return arithAwayFromZero(num(a[0])); }
 double ncc_builtin_trunc(const double *a) { return std::trunc(num(a[0])); }
+// A computed parameter number of LinuxCNC (#1-#5000, #5599-#5601) or Fanuc Macro B (#0-#33,
+// #100-#999): the number itself, NaN (out of domain: a run-time error) for the controller-state
+// numbers a constant #n reads as System variables (frontend/iso/SystemParams.cpp).
+double ncc_builtin_ngc_parameter(const double *a) {
+  double n = num(a[0]);
+  return (n >= 0 && n < 5001) || (n >= 5599 && n < 5602) ? n : NAN;
+}
+double ncc_builtin_macro_variable(const double *a) {
+  double n = num(a[0]);
+  return (n >= 0 && n < 34) || (n >= 100 && n < 1000) ? n : NAN;
+}
 double ncc_builtin_ln(const double *a) { return std::log(num(a[0])); }
 double ncc_builtin_exp(const double *a) { return std::exp(num(a[0])); }
 double ncc_builtin_pow(const double *a) { return std::pow(num(a[0]), num(a[1])); }
@@ -217,6 +228,8 @@ static const BuiltinInfo kBuiltins[] = {
     {"EXP", 1, ncc_builtin_exp, "ncc_builtin_exp"},       {"POT", 2, ncc_builtin_pow, "ncc_builtin_pow"},
     {"MINVAL", 2, ncc_builtin_min, "ncc_builtin_min"},    {"MAXVAL", 2, ncc_builtin_max, "ncc_builtin_max"},
     {"EXISTS", 1, ncc_builtin_exists, "ncc_builtin_exists"},
+    {"NGC_PARAMETER", 1, ncc_builtin_ngc_parameter, "ncc_builtin_ngc_parameter"},
+    {"MACRO_VARIABLE", 1, ncc_builtin_macro_variable, "ncc_builtin_macro_variable"},
     {"AWAYFROMZERO", 1, ncc_builtin_awayfromzero, "ncc_builtin_awayfromzero"},
     {"TOLEQ", 3, ncc_builtin_toleq, "ncc_builtin_toleq"},   {"TOLNE", 3, ncc_builtin_tolne, "ncc_builtin_tolne"},
     {"TOLLT", 3, ncc_builtin_tollt, "ncc_builtin_tollt"},   {"TOLLE", 3, ncc_builtin_tolle, "ncc_builtin_tolle"},

@@ -738,6 +738,11 @@ ExprPtr BlockParser::parseVariable(bool target) {
     ExprPtr idx = *p_ == '[' ? parseBracket() : parseVariable();
     --depth_;
     if (!idx) return nullptr;
+    // A computed number must be a plain parameter when the program runs: the controller-state
+    // numbers are read through System variables (constant #n only), never as empty storage.
+    std::vector<ExprPtr> arg;
+    arg.push_back(std::move(idx));
+    idx = Expr::call(flavour_ == Flavour::RS274 ? "NGC_PARAMETER" : "MACRO_VARIABLE", std::move(arg), locAt(at));
     return Expr::var(ir::VarSpace::Numbered, "", std::move(idx), locAt(at));
   }
   if (*p_ == '<' && flavour_ == Flavour::RS274) {

@@ -45,3 +45,9 @@ N900 M30
 ; ERR: :2:1: error: #5221 (work offset 1 X) cannot be assigned: ncc reads controller state only [unsupported-code]
 ; ERR: :3:4: error: #50 does not exist in Custom Macro B (#1-#33 local, #100-#999 common) [unsupported-code]
 ; ERR: :4:4: error: #3000 can only be assigned (alarm and message stop) [unsupported-code]
+; A computed number reaching controller state when the program runs is a run-time error too
+; (both engines), not an empty parameter.
+; RUN: printf '#1=5000\n#2=#[#1+41]\nM30\n' > %t.run.nc
+; RUN: not %ncc run %t.run.nc 2>&1 | FileCheck %s --check-prefix=RUNTIME
+; RUN: not %ncc run %t.run.nc --engine=jit 2>&1 | FileCheck %s --check-prefix=RUNTIME
+; RUNTIME: :2:4: error: 'MACRO_VARIABLE' argument out of domain

@@ -12,10 +12,11 @@ G1 X#0
 ; RUN: %ncc compile %s --emit=ir | FileCheck %s
 ; CHECK: assign target=#1 value=5 loc(1:1:1)
 ; CHECK: assign target=#100 value=(add (mul #1 2) 3) loc(1:2:1)
-; CHECK: assign target=#[(add #1 1)] value=vacant loc(1:3:1)
-; CHECK: assign target=#[#1] value=(neg #1) loc(1:4:1)
+; A computed number is checked when the program runs: a plain variable, not controller state.
+; CHECK: assign target=#[(MACRO_VARIABLE (add #1 1))] value=vacant loc(1:3:1)
+; CHECK: assign target=#[(MACRO_VARIABLE #1)] value=(neg #1) loc(1:4:1)
 ; CHECK: assign target=#500 value=#1
 ; CHECK: feed value=#9
 ; CHECK-NEXT: mode motion=linear
-; CHECK-NEXT: move X=(neg #1) Y=(add #2 1) Z=#[#1] loc(1:6:1)
+; CHECK-NEXT: move X=(neg #1) Y=(add #2 1) Z=#[(MACRO_VARIABLE #1)] loc(1:6:1)
 ; CHECK: move X=vacant loc(1:7:1)
