@@ -67,17 +67,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
       return error(std::string("Cannot put ") + (i == 3 ? "an " : "a ") + (char)std::tolower(kWordLetters[i]) +
                        " in canned cycle",
                    "cycle-invalid");
-  if (rotated() && pl != 0)
-    return error("canned cycles outside the XY plane with a rotated coordinate system are not supported",
-                 "unsupported-code");
-  if (pf.linear) {  // only a rotation about the drilling axis keeps the cycle's geometry
-    const auto &m = pf.composite.m;
-    bool flip = false;
-    if (!frameKeepsPlane(plane(), flip) || flip || m[d][d] != 1 || pf.scaleOn)
-      return error("canned cycles under scaling, mirroring or a rotation that tilts the drilling axis are not "
-                   "supported",
-                   "unsupported-code");
-  }
+  if (!cycleFrameOk()) return false;
   bool peck = cyc == ModeValue::Peck || cyc == ModeValue::PeckChipBreak;
   if (peck && !haveQ) return error(std::string("Q word missing with ") + lower(code), "cycle-missing-word");
   int repeats = 1;
@@ -142,6 +132,21 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   return runSteps(steps);
 }
 
+bool Executor::Impl::cycleFrameOk() {
+  if (rotated() && plane() != Plane::XY)
+    return error("canned cycles outside the XY plane with a rotated coordinate system are not supported",
+                 "unsupported-code");
+  if (!pf.linear) return true;
+  // Only a rotation about the drilling axis keeps the cycle's geometry.
+  const auto &m = pf.composite.m;
+  const int d = kDrillAxis[(int)plane()];
+  bool flip = false;
+  if (!frameKeepsPlane(plane(), flip) || flip || m[d][d] != 1 || pf.scaleOn)
+    return error("canned cycles under scaling, mirroring or a rotation that tilts the drilling axis are not supported",
+                 "unsupported-code");
+  return true;
+}
+
 bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
   // rs274 runs the holes of a block in exact-path mode and restores the path mode after.
   bool bracketOpen = false;
@@ -199,8 +204,7 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
     return x.error(err, "cycle-invalid");
   if (x.st.units != ModeValue::MM) return x.error("library cycles run in mm (G21) only", "unsupported-code");
   if (!x.compForbids("Cannot use canned cycles with cutter compensation on")) return false;
-  if (x.pf.linear || x.rotated())
-    return x.error("library cycles under a rotation, scaling or mirror are not supported yet", "unsupported-code");
+  if (!x.cycleFrameOk()) return false;
   CycleContext ctx;
   ctx.plane = (int)x.plane();
   AxisVec here = x.frameIn(x.st.position);

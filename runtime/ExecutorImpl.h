@@ -152,6 +152,8 @@ struct Executor::Impl {
   void inverseTimeRate(double mmPerMin);
   bool arc(const MachineCmd &c, bool cw);
   bool cycle(const MachineCmd &c);
+  // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
+  bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.
   bool runSteps(const std::vector<CycleStep> &steps);
 };

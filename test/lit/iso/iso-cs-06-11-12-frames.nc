@@ -71,3 +71,11 @@ M30
 ; The canonical trace cannot say a tilted arc: an error, no file.
 ; RUN: not %ncc run %t.nc --trace=canon -o %t.canon 2>&1 | FileCheck %s --check-prefix=CANON
 ; CANON: error: {{.*}}tilted plane
+; A drilling cycle under a rotation about its drilling axis: the hole is rotated, the levels not.
+; RUN: printf 'G17 G90 G21 G94 F100\nG0 X0 Y0 Z10\nG68 X0 Y0 R90\nG81 X10 Y0 Z-2 R1\nG80\nG69\nM30\n' > %t.cyc.nc
+; RUN: %ncc compile %t.cyc.nc --emit=motion | FileCheck %s --check-prefix=CYC
+; CYC: cycle_begin "iso.G81" X=10 Y=0 Z=-2 R=1 L=1 @4:1
+; CYC: rapid X0 Y10 Z10 {{.*}}exact_stop @4:1
+; CYC-NEXT: rapid X0 Y10 Z1
+; CYC-NEXT: linear X0 Y10 Z-2
+; CYC-NEXT: rapid X0 Y10 Z10
