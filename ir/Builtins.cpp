@@ -260,6 +260,15 @@ std::string builtinArity(const BuiltinInfo &b) {
   return lo == b.arity ? fmt::format("{}", b.arity) : fmt::format("{} or {}", lo, b.arity);
 }
 
+std::string builtinDomainError(const BuiltinInfo &b) {
+  std::string_view n = b.name;
+  if (n == "NGC_PARAMETER" || n == "MACRO_VARIABLE")  // a computed #[…] number
+    return std::string("computed parameter number is ") +
+           (n == "NGC_PARAMETER" ? "not #1-#5000 or #5599-#5601" : "not #0-#33 or #100-#999") +
+           ": controller state is read with a constant number (#5221), other numbers do not exist";
+  return "'" + std::string(n) + "' argument out of domain";
+}
+
 const BuiltinInfo *findBuiltin(std::string_view name) {
   for (auto &b : kBuiltins) {
     std::string_view n = b.name;

@@ -33,6 +33,8 @@ struct BuiltinInfo {
 // Returns null for an unknown name (the name is compared case-insensitively).
 const BuiltinInfo *findBuiltin(std::string_view name);
 const BuiltinInfo *builtinTable(unsigned &count);
+// The run-time error of a numeric builtin whose result is NaN (both engines report this text).
+std::string builtinDomainError(const BuiltinInfo &b);
 // The arity text of error messages: "1", "2 or 3".
 std::string builtinArity(const BuiltinInfo &b);
 // EXISTS[var]: 1 when the variable has a value (a named variable that was assigned; numbered,

@@ -458,7 +458,7 @@ struct Evaluator::Impl {
         a = num(a);
       }
       r = b->fn(args);
-      if (std::isnan(r)) fail(e.loc, fmt::format("'{}' argument out of domain", b->name));
+      if (std::isnan(r)) fail(e.loc, builtinDomainError(*b));
       return r;
     }
     }

@@ -448,7 +448,7 @@ Val Codegen::callBuiltin(const Expr &e) {
   }
   for (unsigned i = 0; i < vals.size() && i < 4; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
   Value *r = B.CreateCall(builtins_.at(bi->name), {argSlot});
-  failIf(B.CreateFCmpUNO(r, r), e.loc, fmt::format("'{}' argument out of domain", bi->name));
+  failIf(B.CreateFCmpUNO(r, r), e.loc, builtinDomainError(*bi));
   return {r, false};
 }
 

@@ -50,4 +50,4 @@ N900 M30
 ; RUN: printf '#1=5000\n#2=#[#1+41]\nM30\n' > %t.run.nc
 ; RUN: not %ncc run %t.run.nc 2>&1 | FileCheck %s --check-prefix=RUNTIME
 ; RUN: not %ncc run %t.run.nc --engine=jit 2>&1 | FileCheck %s --check-prefix=RUNTIME
-; RUNTIME: :2:4: error: 'MACRO_VARIABLE' argument out of domain
+; RUNTIME: :2:4: error: computed parameter number is not #0-#33 or #100-#999: controller state is read with a constant number (#5221), other numbers do not exist
