@@ -105,6 +105,7 @@ struct Executor::Impl {
   bool prevBlockFrame = false, curBlockFrame = false;  // a coordinate change in the last/this block
   bool cornerRequest(const MachineCmd &c);
   bool cornerNext(const MotionRecord &next);
+  bool cornerWithArc(MotionRecord first, MotionRecord next);
   // Not inserted (the manual's cases): the first move as programmed, then what was held.
   void cornerFlush(const char *why);
   // Emits a programmed motion record, through cutter compensation when it is on.

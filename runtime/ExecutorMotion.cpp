@@ -79,10 +79,8 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
   if (corner.active) return cornerNext(r);
   if (corner.requested) {
     corner.requested = false;
-    if (r.kind != RecordKind::Linear)
-      return error(r.kind == RecordKind::Arc ? "a chamfer or rounding next to an arc is not supported yet"
-                                             : "a chamfer or rounding needs a G1, G2 or G3 move",
-                   "unsupported-code");
+    if (r.kind != RecordKind::Linear && r.kind != RecordKind::Arc)
+      return error("a chamfer or rounding needs a G1, G2 or G3 move", "unsupported-code");
     corner.active = true;
     corner.move = r;
     corner.round = corner.reqRound, corner.size = corner.reqSize;
