@@ -1,4 +1,5 @@
-// Cutter radius compensation (G41/G42, G40) in the XY plane, as LinuxCNC's rs274 computes it:
+// Cutter radius compensation (G41/G42, G40) in the XY plane, as LinuxCNC's rs274 computes it (the
+// executor hands G18/G19 paths over with their axes turned, ExecutorImpl.h toCompPlane):
 // each programmed line or arc is offset by the tool radius to the left (G41) or right (G42) of
 // the direction of travel; a convex corner gets an arc of the tool radius around the programmed
 // corner, a concave corner is cut at the intersection of the two offset paths, and a turn of

@@ -317,17 +317,19 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
   const ToolData *t = tool(cutterD, "D");
   if (!t) return false;
   double radius = cutterD == 0 ? 0 : t->radius;
-  if (radius > 0 && plane() != Plane::XY)
-    return error("cutter radius compensation is only supported in the XY plane (G17)", "cutcomp-plane");
-  // Compensation works on the machine path: a mirrored frame swaps the sides (G41 <-> G42, as
-  // the 808D manual's table 2-12 says); a frame that tilts the XY plane is not supported.
+  // Compensation works on the machine path, in the active plane: a mirrored frame swaps the
+  // sides (G41 <-> G42, as the 808D manual's table 2-12 says); a frame that tilts the plane is
+  // not supported.
+  if (radius > 0 && plane() == Plane::YZ && machine.controller.family == "linuxcnc")  // rs274's limit
+    return error("Cutter radius compensation allowed only in XY, XZ planes", "cutcomp-plane");
   bool flip = false;
-  if (radius > 0 && !frameKeepsPlane(Plane::XY, flip))
-    return error("cutter radius compensation under a rotation that tilts the XY plane is not supported",
+  if (radius > 0 && !frameKeepsPlane(plane(), flip))
+    return error("cutter radius compensation under a rotation that tilts its plane is not supported",
                  "unsupported-code");
   st.cutterComp = c.sub;
   compExit = false;
-  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, st.position);
+  compOut.plane = plane();
+  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, toCompPlane(st.position, plane()));
   return true;
 }
 
@@ -624,7 +626,7 @@ bool Executor::exec(const MachineCmd &c) {
     if (p < 0) return x.error("Dwell time must not be negative", "bad-dwell");
     MotionRecord r = x.record(RecordKind::Dwell);
     r.value = p;
-    if (!x.comp.hold(r)) x.emit(r);  // with compensation on it waits for the pending move
+    if (!x.comp.hold(toCompPlane(r, x.compOut.plane))) x.emit(r);  // with compensation on it waits for the pending move
     return true;
   }
   case CmdKind::Move: return x.execMove(c);

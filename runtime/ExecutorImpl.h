@@ -12,11 +12,28 @@ namespace ncc {
 
 constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // the X Y Z A B C words of a MachineCmd
 
+// Cutter compensation computes in XY: records of a G18/G19 path reach it with their axes turned
+// so that the plane's first and second axes are X and Y (a cyclic permutation, which keeps the
+// turning sense: G18 Z->X, X->Y, Y->Z), and come back turned back through CompPlaneSink.
+MotionRecord toCompPlane(const MotionRecord &r, Plane p);
+MotionRecord fromCompPlane(const MotionRecord &r, Plane p);
+AxisVec toCompPlane(const AxisVec &v, Plane p);
+AxisVec fromCompPlane(const AxisVec &v, Plane p);
+class CompPlaneSink : public MotionSink {
+public:
+  explicit CompPlaneSink(MotionSink &out) : out_(out) {}
+  Plane plane = Plane::XY;
+  void record(const MotionRecord &r) override { out_.record(plane == Plane::XY ? r : fromCompPlane(r, plane)); }
+
+private:
+  MotionSink &out_;
+};
+
 // The [controller] reset list as bits (Executor.cpp: kResetGroups).
 uint32_t resetGroupMask(const std::vector<std::string> &groups);
 
 struct Executor::Impl {
-  Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), comp(s) {
+  Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), compOut(s), comp(compOut) {
     g5x = m.workOffsets;
     home[0] = m.home1;
     home[1] = m.home2;
@@ -60,6 +77,7 @@ struct Executor::Impl {
   int cutterD = 0;
   // Cutter radius compensation: moves go through `comp` while it is active (radius > 0);
   // compExit marks the move after G40, which starts from the compensated position.
+  CompPlaneSink compOut;  // declared before comp, which writes to it
   CutterComp comp;
   bool compExit = false;
   bool warnedAfterEnd = false;

@@ -86,14 +86,14 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
     corner.round = corner.reqRound, corner.size = corner.reqSize;
     return true;
   }
-  if (comp.active()) return comp.add(r) || error(comp.error(), comp.rule());
+  if (comp.active()) return comp.add(toCompPlane(r, compOut.plane)) || error(comp.error(), comp.rule());
   if (compExit) {
     compExit = false;
     if (r.kind == RecordKind::Arc)
       return error("The move just after exiting cutter compensation mode must be straight, not an arc",
                    "cutcomp-exit-arc");
     MotionRecord x = r;
-    x.start = comp.toolPosition();
+    x.start = fromCompPlane(comp.toolPosition(), compOut.plane);
     emit(x);
     return true;
   }
@@ -276,5 +276,36 @@ bool Executor::Impl::execMachineMove(const MachineCmd &c) {
   }
   return moveTo(RecordKind::Rapid, t);
 }
+
+AxisVec toCompPlane(const AxisVec &v, Plane p) {
+  AxisVec o = v;
+  if (p == Plane::ZX) o[0] = v[2], o[1] = v[0], o[2] = v[1];
+  else if (p == Plane::YZ) o[0] = v[1], o[1] = v[2], o[2] = v[0];
+  return o;
+}
+
+AxisVec fromCompPlane(const AxisVec &v, Plane p) {
+  AxisVec o = v;
+  if (p == Plane::ZX) o[2] = v[0], o[0] = v[1], o[1] = v[2];
+  else if (p == Plane::YZ) o[1] = v[0], o[2] = v[1], o[0] = v[2];
+  return o;
+}
+
+static MotionRecord turned(const MotionRecord &r, Plane p, bool in) {
+  if (p == Plane::XY) return r;
+  MotionRecord o = r;
+  auto f = [&](const AxisVec &v) { return in ? toCompPlane(v, p) : fromCompPlane(v, p); };
+  o.start = f(r.start);
+  o.end = f(r.end);
+  AxisVec c{};
+  c[0] = r.center[0], c[1] = r.center[1], c[2] = r.center[2];
+  c = f(c);
+  o.center = {c[0], c[1], c[2]};
+  o.plane = in ? Plane::XY : p;
+  return o;
+}
+
+MotionRecord toCompPlane(const MotionRecord &r, Plane p) { return turned(r, p, true); }
+MotionRecord fromCompPlane(const MotionRecord &r, Plane p) { return turned(r, p, false); }
 
 }  // namespace ncc

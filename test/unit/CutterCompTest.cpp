@@ -291,11 +291,11 @@ TEST(CutterCompExecutor, ProgramEndFlushesAndRulesHold) {
   CompRun negative;
   EXPECT_FALSE(negative({cmd(CmdKind::CutterComp, {{Word::D, -1}}, 2)}));
   EXPECT_TRUE(negative.hasRule("unknown-tool"));
-  CompRun xz;
+  CompRun xz;  // G18 compensates (the path reaches the XY computation with its axes turned)
   MachineCmd g18 = linear();
   g18.modes[0] = ModeValue::ZX;
-  EXPECT_FALSE(xz({g18, cmd(CmdKind::CutterComp, {{Word::D, 1}}, 1)}));
-  EXPECT_TRUE(xz.hasRule("cutcomp-plane"));
+  EXPECT_TRUE(xz({g18, cmd(CmdKind::CutterComp, {{Word::D, 1}}, 1)}));
+  EXPECT_FALSE(xz.hasRule("cutcomp-plane"));
 }
 
 }  // namespace
