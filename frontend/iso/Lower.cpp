@@ -268,6 +268,8 @@ bool BlockLowerer::Block::classify() {
         long long c10 = std::llround(t);
         if (std::fabs(t - (double)c10) < 1e-6) gi = findGCode((int32_t)c10);
       }
+      if (gi && L.flavour_ != Flavour::RS274 && (gi->code10 == 70 || gi->code10 == 80))
+        gi = nullptr;  // LinuxCNC's lathe diameter/radius modes; no such code in the 808D table
       if (!gi) {
         L.diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
         ok = false;
