@@ -61,7 +61,7 @@ static const LintRule kRules[] = {
     {"cutcomp-conflict", Severity::Error, "executor",
      "G28/G30, G53, a canned cycle or a plane change while compensation is on"},
     {"cutcomp-plane", Severity::Error, "executor",
-     "compensation with a tool radius in G18/G19 (ncc compensates in G17 only)"},
+     "compensation with a tool radius in G19 on a linuxcnc-family machine (rs274 compensates in XY and XZ only)"},
     {"unknown-tool", Severity::Error, "executor",
      "T, H or D number neither in the machine's tool table nor within its `free_tools` (a machine without a tool table accepts every number); a D that is not a whole number"},
     {"abort", Severity::Error, "executor",
