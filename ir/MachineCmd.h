@@ -36,7 +36,8 @@ enum class CmdKind : uint8_t {
   Spindle,      // sub: 0 stop, 1 cw, 2 ccw
   Coolant,      // sub: bit0 flood on, bit1 mist on; sub2 = bit0 flood given, bit1 mist given
   Dwell,        // w[P] seconds
-  Move,         // words in mask
+  Move,         // words in mask; sub / sub2: bits (1 << axis, X..C) of the axis words that are
+                //   incremental / absolute whatever G90/G91 says (Sinumerik IC()/AC(), Heidenhain IX)
   Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words
   MachineMove,  // sub: 0 rapid, 1 feed; G53 target in mask words
   ToolLength,   // w[H] offset number, 0 cancels

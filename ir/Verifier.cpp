@@ -402,6 +402,7 @@ private:
         (op.kind == OpKind::Call && key.rfind("a.", 0) == 0 && !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
       return Ctx::Any;
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
+    if (op.kind == OpKind::Move && (key == "ic" || key == "ac")) return Ctx::Symbol;  // axis letters (CmdTemplate)
     if (op.kind == OpKind::Call && key == "callee") return Ctx::Callee;
     if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||
         (op.kind == OpKind::Goto && key == "label"))

@@ -220,6 +220,22 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     for (const char *key : {"b", "h"})
       if (op.get(key)) c.sub = (uint8_t)(key[0] - 'a' + 'A');
     break;
+  case OpKind::Move:
+    // ic=XZ / ac=Y: the axis words that are incremental / absolute whatever the mode is.
+    for (const char *key : {"ic", "ac"}) {
+      const Expr *e = op.get(key);
+      if (!e) continue;
+      uint8_t &bits = key[0] == 'i' ? c.sub : c.sub2;
+      for (char l : e->str) {
+        Word w;
+        if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || (int)w >= 6) {
+          diags.error(op.loc, fmt::format("'move' {}= names the axes X Y Z A B C (as in {}=XZ)", key, key));
+          return false;
+        }
+        bits |= (uint8_t)(1u << (unsigned)w);
+      }
+    }
+    break;
   case OpKind::Home: {
     double v = 1;
     constNumber(op.get("ref"), v);
@@ -285,6 +301,15 @@ Op cmdToOp(const MachineCmd &c) {
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;
   case CmdKind::Home: op.set("ref", Expr::number(c.sub, Type::Int)); break;
+  case CmdKind::Move:
+    for (int k = 0; k < 2; ++k) {
+      uint8_t bits = k == 0 ? c.sub : c.sub2;
+      std::string axes;
+      for (int i = 0; i < 6; ++i)
+        if (bits & (1u << i)) axes += kWordLetters[i];
+      if (!axes.empty()) op.set(k == 0 ? "ic" : "ac", Expr::symbol(axes));
+    }
+    break;
   case CmdKind::Coolant:
     if (c.sub2 & 1) op.set("flood", Expr::symbol(c.sub & 1 ? "on" : "off"));
     if (c.sub2 & 2) op.set("mist", Expr::symbol(c.sub & 2 ? "on" : "off"));

@@ -106,11 +106,14 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
   // Axes without a word keep their program position (under a rotation that moves X and Y).
   AxisVec t = frameIn(st.position);
   bool inc = st.distance == ModeValue::Incremental;
+  // A move's own absolute/incremental axes (sub/sub2, MachineCmd.h) override the mode.
+  uint8_t incAxes = c.kind == CmdKind::Move ? c.sub : 0, absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
   for (int i = 0; i < kAxes; ++i) {
     Word w = (Word)i;  // X Y Z A B C are the first six words
     if (!c.has(w)) continue;
     double v = c.get(w) * axisScale(i);
-    double prog = inc ? t[i] - frameOffset(i) + v : v;
+    bool axisInc = (incAxes >> i) & 1 ? true : (absAxes >> i) & 1 ? false : inc;
+    double prog = axisInc ? t[i] - frameOffset(i) + v : v;
     t[i] = prog + frameOffset(i);
   }
   if (c.has(Word::PolarR) || c.has(Word::PolarA)) {  // X and Y from @ ^ (exec rejects X/Y with them)

@@ -118,6 +118,7 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
     return error("Cannot use axis values with G80", "motion-mode-none");
   default:
     if (!compForbids("Cannot use canned cycles with cutter compensation on")) return false;
+    if (c.sub || c.sub2) return error("per-axis absolute/incremental words in a canned cycle are not supported", "unsupported-code");
     return cycle(c);
   }
 }
