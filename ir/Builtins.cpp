@@ -1,6 +1,7 @@
 #include "ir/Builtins.h"
 #include "ir/Arith.h"
 #include "ir/Strings.h"
+#include "ir/SystemVars.h"
 #include "ir/Value.h"
 
 #include <fmt/format.h>
@@ -40,11 +41,11 @@ double ncc_builtin_trunc(const double *a) { return std::trunc(num(a[0])); }
 // numbers a constant #n reads as System variables (frontend/iso/SystemParams.cpp).
 double ncc_builtin_ngc_parameter(const double *a) {
   double n = num(a[0]);
-  return (n >= 0 && n < 5001) || (n >= 5599 && n < 5602) ? n : NAN;
+  return plainNgcParameter(n) ? n : NAN;
 }
 double ncc_builtin_macro_variable(const double *a) {
   double n = num(a[0]);
-  return (n >= 0 && n < 34) || (n >= 100 && n < 1000) ? n : NAN;
+  return plainMacroVariable(n) ? n : NAN;
 }
 double ncc_builtin_ln(const double *a) { return std::log(num(a[0])); }
 double ncc_builtin_exp(const double *a) { return std::exp(num(a[0])); }

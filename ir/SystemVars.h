@@ -29,6 +29,11 @@ struct SysVarInfo {
   int axis = 0;    // 0..5 X..C, 6 = R (WorkOffset)
 };
 SysVarInfo sysVarInfo(SysVar v);
+// Numbered parameters that are plain storage, not controller state: LinuxCNC #0-#5000 and
+// #5599-#5601; Fanuc Macro B #0-#33 and #100-#999. The ISO front end (constant #n) and the
+// NGC_PARAMETER / MACRO_VARIABLE builtins (computed #[n]) ask these.
+inline bool plainNgcParameter(double n) { return (n >= 0 && n < 5001) || (n >= 5599 && n < 5602); }
+inline bool plainMacroVariable(double n) { return (n >= 0 && n < 34) || (n >= 100 && n < 1000); }
 // The id of a family member; SysVar::Count when out of range.
 SysVar sysVarOf(SysFamily f, int system, int axis);
 constexpr int kSysVarIds = (int)SysVar::Count + 9 * 7 + 5 * 6;

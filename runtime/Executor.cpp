@@ -91,8 +91,8 @@ bool Executor::Impl::frameKeepsPlane(Plane pl, bool &flip) const {
   flip = false;
   if (!linearFrame()) return true;
   if (rotated()) return pl == Plane::XY;  // rs274's Rz (pf is never linear with it: no G68 in .ngc)
-  static const int kA1[] = {0, 2, 1}, kA2[] = {1, 0, 2}, kD[] = {2, 1, 0};
-  int a1 = kA1[(int)pl], a2 = kA2[(int)pl], d = kD[(int)pl];
+  const PlaneAxes ax = planeAxes(pl);
+  const int a1 = ax.u, a2 = ax.v, d = ax.n;
   const auto &m = pf.composite.m;
   if (m[d][a1] != 0 || m[d][a2] != 0 || m[a1][d] != 0 || m[a2][d] != 0) return false;
   double n1 = m[a1][a1] * m[a1][a1] + m[a2][a1] * m[a2][a1], n2 = m[a1][a2] * m[a1][a2] + m[a2][a2] * m[a2][a2];
@@ -340,37 +340,36 @@ namespace {
 // The modal groups a controller may reset at M2/M30 (machine key [controller] reset) and what
 // resetting each means. The names are the machine file's (docs/MACHINE.md).
 struct ResetGroup {
-  const char *name;
-  uint32_t bit;
+  const char *name;  // bit i of Impl::resetMask is kResetGroups[i]
   void (*reset)(Executor::Impl &x);
 };
 using X = Executor::Impl;
 const ResetGroup kResetGroups[] = {
-    {"motion", 1u << 0, [](X &x) { x.st.motion = ModeValue::Linear; }},
-    {"plane", 1u << 1, [](X &x) { x.st.plane = ModeValue::XY; }},
-    {"distance", 1u << 2, [](X &x) { x.st.distance = ModeValue::Absolute; }},
-    {"feed_mode", 1u << 3, [](X &x) { x.st.feedMode = ModeValue::PerMinute; }},
-    {"units", 1u << 4, [](X &x) { x.st.units = ModeValue::MM; }},
-    {"cutter_comp", 1u << 5, [](X &x) { x.st.cutterComp = 0; }},
-    {"tool_length", 1u << 6, [](X &x) { x.toolLength = 0, x.st.toolLengthH = 0; }},
-    {"work_offset", 1u << 7, [](X &x) { x.st.workOffset = 1; }},
-    {"g92", 1u << 8, [](X &x) { x.g92 = {}; }},
-    {"feed", 1u << 9, [](X &x) { x.st.feed = x.feedMM = 0; }},
-    {"spindle", 1u << 10, [](X &x) { x.st.spindle = 0; }},
-    {"coolant", 1u << 11, [](X &x) { x.st.flood = x.st.mist = false; }},
-    {"path_mode", 1u << 12, [](X &x) { x.st.pathMode = ModalState{}.pathMode; }},
-    {"rotation", 1u << 13, [](X &x) { x.pf.clearRotation(), x.pf.update(); }},
-    {"scaling", 1u << 14, [](X &x) { x.pf.clearScale(), x.pf.update(); }},
-    {"mirror", 1u << 15, [](X &x) { x.pf.clearMirror(), x.pf.update(); }},
-    {"local_offset", 1u << 16, [](X &x) { x.pf.local = {}, x.pf.update(); }},
+    {"motion", [](X &x) { x.st.motion = ModeValue::Linear; }},
+    {"plane", [](X &x) { x.st.plane = ModeValue::XY; }},
+    {"distance", [](X &x) { x.st.distance = ModeValue::Absolute; }},
+    {"feed_mode", [](X &x) { x.st.feedMode = ModeValue::PerMinute; }},
+    {"units", [](X &x) { x.st.units = ModeValue::MM; }},
+    {"cutter_comp", [](X &x) { x.st.cutterComp = 0; }},
+    {"tool_length", [](X &x) { x.toolLength = 0, x.st.toolLengthH = 0; }},
+    {"work_offset", [](X &x) { x.st.workOffset = 1; }},
+    {"g92", [](X &x) { x.g92 = {}; }},
+    {"feed", [](X &x) { x.st.feed = x.feedMM = 0; }},
+    {"spindle", [](X &x) { x.st.spindle = 0; }},
+    {"coolant", [](X &x) { x.st.flood = x.st.mist = false; }},
+    {"path_mode", [](X &x) { x.st.pathMode = ModalState{}.pathMode; }},
+    {"rotation", [](X &x) { x.pf.clearRotation(), x.pf.update(); }},
+    {"scaling", [](X &x) { x.pf.clearScale(), x.pf.update(); }},
+    {"mirror", [](X &x) { x.pf.clearMirror(), x.pf.update(); }},
+    {"local_offset", [](X &x) { x.pf.local = {}, x.pf.update(); }},
 };
 }  // namespace
 
 uint32_t resetGroupMask(const std::vector<std::string> &groups) {
   uint32_t mask = 0;
   for (auto &name : groups)
-    for (auto &g : kResetGroups)
-      if (name == g.name) mask |= g.bit;
+    for (size_t i = 0; i < std::size(kResetGroups); ++i)
+      if (name == kResetGroups[i].name) mask |= 1u << i;
   return mask;
 }
 
@@ -378,11 +377,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
   auto slot = (FrameSlot)c.sub;
   bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
   if (comp.active()) return error("Cannot change the programmable frame with cutter radius comp on", "cutcomp-conflict");
-  const AxisVec program = [&] {  // the current position in program coordinates
-    AxisVec f = frameIn(st.position);
-    for (int i = 0; i < kAxes; ++i) f[i] -= frameOffset(i);
-    return f;
-  }();
+  const AxisVec program = programPosition();
   auto word = [&](int axis, double def) { return c.has((Word)axis) ? c.get((Word)axis) * axisScale(axis) : def; };
   switch (slot) {
   case FrameSlot::Local:  // G52: the named axes' shift (G52 X0 Y0 cancels); cancel = all
@@ -398,8 +393,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
     if (pf.scaleOn || pf.mirrorOn())
       return error("G68 together with scaling or mirroring (G51, G51.1) is not supported", "unsupported-code");
     bool axisForm = c.sub2 & kFrameFormAxis;
-    static const int kA1[] = {0, 2, 1}, kA2[] = {1, 0, 2}, kD[] = {2, 1, 0};
-    const int pl = (int)plane();
+    const PlaneAxes ax = planeAxes(plane());
     double angle = c.has(Word::R) ? c.get(Word::R) : 0;  // R omitted: SD42150, 0 by default
     Vec3 axis{}, centre{};
     if (axisForm) {  // 3-D: about I J K through X Y Z (absolute, omitted = 0), R absolute
@@ -409,26 +403,23 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
                      "frame-invalid");
       for (int i = 0; i < 3; ++i) centre[i] = word(i, 0);
     } else {  // 2-D: about the plane's normal through the plane-axis words (omitted: here)
-      if (c.has((Word)kD[pl]))
-        return error(std::string("G68 in the ") + kWordLetters[kA1[pl]] + kWordLetters[kA2[pl]] + " plane takes no " +
-                         kWordLetters[kD[pl]] + " word (a 3-D rotation needs I J K)",
+      if (c.has((Word)ax.n))
+        return error(std::string("G68 in the ") + kWordLetters[ax.u] + kWordLetters[ax.v] + " plane takes no " +
+                         kWordLetters[ax.n] + " word (a 3-D rotation needs I J K)",
                      "frame-invalid");
-      axis[kD[pl]] = 1;
+      axis[ax.n] = 1;
       centre = {program[0], program[1], program[2]};
-      centre[kA1[pl]] = word(kA1[pl], program[kA1[pl]]);
-      centre[kA2[pl]] = word(kA2[pl], program[kA2[pl]]);
-      if (st.distance == ModeValue::Incremental) {
-        if (pf.rotationLevels > 0)
-          return error("an incremental G68 R while a rotation is active is not supported: cancel it with G69 first",
-                       "unsupported-code");
-      }
+      centre[ax.u] = word(ax.u, program[ax.u]);
+      centre[ax.v] = word(ax.v, program[ax.v]);
+      if (st.distance == ModeValue::Incremental && pf.rotationLevels > 0)  // R relative to what?
+        return error("an incremental G68 R while a rotation is active is not supported: cancel it with G69 first",
+                     "unsupported-code");
     }
     if (pf.rotationLevels == 2)
       return error("a third G68 rotation (two are active; cancel them with G69)", "frame-invalid");
     // A G68 while one is active is the second level, in the rotated system (808D 2.4.1.10).
     int level = pf.rotationLevels;
     pf.rotation[level] = Affine::rotation(axis, angle, centre);
-    pf.rotationPlanar[level] = !axisForm;
     pf.rotationLevels = level + 1;
     break;
   }
@@ -486,8 +477,8 @@ bool Executor::Impl::execStop(const MachineCmd &c) {
     r.ivalue = (StopKind)c.sub == StopKind::EndRewind ? 30 : 2;
     emit(r);
     // What M2/M30 reset: the machine's [controller] reset list (rs274's set by default).
-    for (const ResetGroup &g : kResetGroups)
-      if (resetMask & g.bit) g.reset(*this);
+    for (size_t i = 0; i < std::size(kResetGroups); ++i)
+      if (resetMask & (1u << i)) kResetGroups[i].reset(*this);
     initialLevelValid = false;
     lastCycle = ModeValue::CycleOff;
     st.ended = true;
@@ -778,8 +769,7 @@ bool Executor::readSystem(SysVar v, double &out) const {
   case SysVar::Count: return false;
   }
   // Positions: program coordinates (all offsets applied), in program units.
-  AxisVec f = x.frameIn(st.position);
-  out = (f[axis] - x.frameOffset(axis)) / x.axisScale(axis);
+  out = x.programPosition()[axis] / x.axisScale(axis);
   return true;
 }
 

@@ -3,14 +3,13 @@
 // move waits until the second arrives; both are trimmed and the corner element goes between them.
 // Chamfers between lines of the active plane; roundings also next to arcs (cornerWithArc).
 #include "runtime/ExecutorImpl.h"
+#include "runtime/Geometry.h"
 
 #include <cmath>
 
 namespace ncc {
 
 namespace {
-constexpr int kA1[] = {0, 2, 1}, kA2[] = {1, 0, 2}, kD[] = {2, 1, 0};  // per Plane
-
 // One element of the corner in plane coordinates: a line, or an arc about (c1, c2) of radius r
 // turning dir (+1 counter-clockwise).
 struct Elem {
@@ -61,19 +60,25 @@ bool Executor::Impl::cornerRequest(const MachineCmd &c) {
   return true;
 }
 
+void Executor::Impl::cornerRelease(const MotionRecord &first, const MotionRecord *elem) {
+  corner.active = false;
+  sink.record(first);
+  if (elem) sink.record(*elem);
+  for (auto &h : corner.held) sink.record(h);
+  corner.held.clear();
+}
+
 void Executor::Impl::cornerFlush(const char *why) {
   if (!corner.active) return;
-  corner.active = false;
   diags.warning(corner.move.loc, std::string(corner.round ? "rounding" : "chamfer") + " not inserted: " + why,
                 "corner-not-inserted");
-  sink.record(corner.move);
-  for (auto &r : corner.held) sink.record(r);
-  corner.held.clear();
+  cornerRelease(corner.move, nullptr);
 }
 
 bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
   MotionRecord first = corner.move, next = nextIn;
-  const int pl = (int)first.plane, a1 = kA1[pl], a2 = kA2[pl], d = kD[pl];
+  const PlaneAxes ax = planeAxes(first.plane);
+  const int a1 = ax.u, a2 = ax.v, d = ax.n;
   for (auto &h : corner.held)
     if (h.kind != RecordKind::Comment && h.kind != RecordKind::Message)
       return error("commands between a chamfer or rounding and the next move are not supported", "unsupported-code");
@@ -109,7 +114,6 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
                   corner.round ? "rounding" : "chamfer", dist, l1, l2);
     return error(buf, "corner-invalid");
   }
-  corner.active = false;
   const AxisVec p = first.end;
   first.end[a1] = p[a1] - u1 * dist, first.end[a2] = p[a2] - u2 * dist;
   next.start[a1] = p[a1] + v1 * dist, next.start[a2] = p[a2] + v2 * dist;
@@ -126,10 +130,7 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
     elem.center[d] = p[d];
     elem.turns = cross > 0 ? 1 : -1;  // a left turn runs counter-clockwise
   }
-  sink.record(first);
-  sink.record(elem);
-  for (auto &h : corner.held) sink.record(h);
-  corner.held.clear();
+  cornerRelease(first, &elem);
   return emitMove(next);  // it may carry a corner request of its own
 }
 
@@ -138,7 +139,8 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
 // corner); it touches each element at the foot of that centre. A chamfer next to an arc is an
 // error until the bevel's definition on a curve is settled.
 bool Executor::Impl::cornerWithArc(MotionRecord first, MotionRecord next) {
-  const int pl = (int)first.plane, a1 = kA1[pl], a2 = kA2[pl];
+  const PlaneAxes ax = planeAxes(first.plane);
+  const int a1 = ax.u, a2 = ax.v;
   if (!corner.round) return error("a chamfer next to an arc is not supported yet", "unsupported-code");
   for (const MotionRecord *m : {&first, &next})
     if (m->kind == RecordKind::Arc && (m->tiltedArc() || m->plane != first.plane || std::abs(m->turns) != 1))
@@ -223,7 +225,6 @@ bool Executor::Impl::cornerWithArc(MotionRecord first, MotionRecord next) {
   foot(B, ob, qb1, qb2);
   if (!A.contains(qa1, qa2) || !B.contains(qb1, qb2))
     return error("the rounding does not fit: it would reach past the end of a move", "corner-invalid");
-  corner.active = false;
   first.end[a1] = qa1, first.end[a2] = qa2;
   next.start[a1] = qb1, next.start[a2] = qb2;
   MotionRecord elem2 = first;
@@ -233,10 +234,7 @@ bool Executor::Impl::cornerWithArc(MotionRecord first, MotionRecord next) {
   elem2.center = {first.end[0], first.end[1], first.end[2]};
   elem2.center[a1] = best[0], elem2.center[a2] = best[1];
   elem2.turns = side;
-  sink.record(first);
-  sink.record(elem2);
-  for (auto &h : corner.held) sink.record(h);
-  corner.held.clear();
+  cornerRelease(first, &elem2);
   return emitMove(next);
 }
 

@@ -1,6 +1,7 @@
 // Executor: canned-cycle blocks. Keeps the cycle's modal data (R, Z, Q, P, the initial level),
 // resolves the words into the machine frame and turns the steps of expandCycle into records.
 #include "runtime/ExecutorImpl.h"
+#include "runtime/Geometry.h"
 
 #include <cctype>
 #include <cmath>
@@ -139,7 +140,7 @@ bool Executor::Impl::cycleFrameOk() {
   if (!pf.linear) return true;
   // Only a rotation about the drilling axis keeps the cycle's geometry.
   const auto &m = pf.composite.m;
-  const int d = kDrillAxis[(int)plane()];
+  const int d = planeAxes(plane()).n;
   bool flip = false;
   if (!frameKeepsPlane(plane(), flip) || flip || m[d][d] != 1 || pf.scaleOn)
     return error("canned cycles under scaling, mirroring or a rotation that tilts the drilling axis are not supported",
@@ -207,8 +208,8 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
   if (!x.cycleFrameOk()) return false;
   CycleContext ctx;
   ctx.plane = (int)x.plane();
-  AxisVec here = x.frameIn(x.st.position);
-  for (int i = 0; i < 3; ++i) ctx.position[i] = here[i] - x.frameOffset(i);
+  AxisVec here = x.programPosition();
+  for (int i = 0; i < 3; ++i) ctx.position[i] = here[i];
   ctx.feed = x.st.feedMode == ModeValue::PerMinute ? x.feedMM : 0;
   ctx.spindle = x.st.spindle;
   ctx.speed = x.st.speed;

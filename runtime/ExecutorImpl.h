@@ -90,7 +90,6 @@ struct Executor::Impl {
   double offset(int axis) const {
     return g5x[st.workOffset - 1][axis] + g92[axis] + pf.local[axis] + (axis == 2 ? toolLength : 0.0);
   }
-  double programPos(int axis) const { return st.position[axis] - offset(axis); }
   double rotation() const { return g5xRotation[st.workOffset - 1]; }
   // The "offset frame": program coordinates plus G92. Without rotation it is the machine frame
   // (frameOffset = every offset), so unrotated programs compute exactly as before; with a
@@ -103,6 +102,12 @@ struct Executor::Impl {
     return pf.linear ? 0.0 : rotated() ? g92[axis] + pf.local[axis] : offset(axis);
   }
   AxisVec frameIn(const AxisVec &machinePos) const;
+  // The current position in program coordinates (mm), every offset and frame applied.
+  AxisVec programPosition() const {
+    AxisVec f = frameIn(st.position);
+    for (int i = 0; i < kAxes; ++i) f[i] -= frameOffset(i);
+    return f;
+  }
   AxisVec frameOut(const AxisVec &framePos) const;
   Plane plane() const;
   MotionRecord record(RecordKind k) const;
@@ -126,6 +131,8 @@ struct Executor::Impl {
   bool cornerWithArc(MotionRecord first, MotionRecord next);
   // Not inserted (the manual's cases): the first move as programmed, then what was held.
   void cornerFlush(const char *why);
+  // Sends the first move (trimmed or not), the corner element if any, and what was held.
+  void cornerRelease(const MotionRecord &first, const MotionRecord *elem);
   // Emits a programmed motion record, through cutter compensation when it is on.
   bool emitMove(const MotionRecord &r);
   bool error(std::string msg, std::string rule) {

@@ -53,24 +53,11 @@ bool Affine::linearIdentity() const {
   return true;
 }
 
-// Exact values at multiples of 90 degrees, so a G68 R90 maps X10 to Y10, not to Y10 plus 6e-16.
-static void sinCos(double degrees, double &s, double &c) {
-  double q = degrees / 90;
-  if (q == std::floor(q)) {
-    static const double kS[] = {0, 1, 0, -1}, kC[] = {1, 0, -1, 0};
-    int k = (int)std::fmod(std::fmod(q, 4) + 4, 4);
-    s = kS[k], c = kC[k];
-    return;
-  }
-  double r = degrees * M_PI / 180;
-  s = std::sin(r), c = std::cos(r);
-}
-
 Affine Affine::rotation(Vec3 u, double degrees, const Vec3 &centre) {
   double n = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
   for (double &x : u) x /= n;
   double s, c;
-  sinCos(degrees, s, c);
+  sinCosDegrees(degrees, s, c);
   double k = 1 - c;
   Affine a;  // Rodrigues: counter-clockwise seen from the tip of u
   a.m[0][0] = c + u[0] * u[0] * k, a.m[0][1] = u[0] * u[1] * k - u[2] * s, a.m[0][2] = u[0] * u[2] * k + u[1] * s;

@@ -10,12 +10,9 @@
 // by rs274's (machine = Rz(program + G92) + G5x + tool length).
 #pragma once
 #include "ir/MotionIR.h"
-
-#include <array>
+#include "runtime/Geometry.h"
 
 namespace ncc {
-
-using Vec3 = std::array<double, 3>;
 
 // p' = m p + t on X Y Z (rotary axes are not transformed by a frame).
 struct Affine {
@@ -42,8 +39,6 @@ struct ProgrammableFrame {
   Vec3 scaleFactors{1, 1, 1}, scaleCentre{};
   int rotationLevels = 0;    // 0, 1 or 2 stacked G68 rotations
   Affine rotation[2];        // level 1 (outer, the first G68), level 2 (inner)
-  bool rotationPlanar[2] = {};  // the level is a 2-D G68 (incremental R adds to its angle)
-  double planarAngle = 0;       // degrees of the 2-D level 1 rotation
   AxisVec local{};
 
   // The composite of the linear slots and the local shift, and its inverse (update() sets them).
@@ -56,7 +51,7 @@ struct ProgrammableFrame {
   bool mirrorOn() const { return mirrorAxes[0] || mirrorAxes[1] || mirrorAxes[2]; }
   void clearMirror() { mirrorAxes = {}, mirrorAt = {}; }
   void clearScale() { scaleOn = false, scaleFactors = {1, 1, 1}, scaleCentre = {}; }
-  void clearRotation() { rotationLevels = 0, rotation[0] = rotation[1] = Affine{}, planarAngle = 0; }
+  void clearRotation() { rotationLevels = 0, rotation[0] = rotation[1] = Affine{}; }
 
   // Program coordinates -> the input of the G92 slot, and back (all six axes; A B C shift only).
   AxisVec out(const AxisVec &program) const;

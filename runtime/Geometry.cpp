@@ -9,6 +9,18 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 constexpr double kFullCircleChord = 1e-9;  // mm: end this close to start means a full circle
 }  // namespace
 
+void sinCosDegrees(double degrees, double &s, double &c) {
+  double q = degrees / 90;
+  if (q == std::floor(q)) {
+    static const double kS[] = {0, 1, 0, -1}, kC[] = {1, 0, -1, 0};
+    int k = (int)std::fmod(std::fmod(q, 4) + 4, 4);
+    s = kS[k], c = kC[k];
+    return;
+  }
+  double r = degrees * M_PI / 180;
+  s = std::sin(r), c = std::cos(r);
+}
+
 PlaneAxes planeAxes(Plane p) {
   static const PlaneAxes table[] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};  // XY, ZX, YZ
   return table[(unsigned)p];

@@ -54,19 +54,11 @@ const ParamRange kRanges[] = {
 };
 constexpr SysVar kPositions[] = {SysVar::PosX, SysVar::PosY, SysVar::PosZ, SysVar::PosA, SysVar::PosB, SysVar::PosC};
 
-// Plain parameters: LinuxCNC #1-#5000 (above, rs274 stops at #5602) and #5599-#5601 (the DEBUG
-// output flag and the tool changer's fault flags, which stand-alone rs274 never sets; ncc prints
-// DEBUG messages whatever #5599 holds: no motion depends on it); Fanuc locals #1-#33 and commons
-// #100-#999 (#100-#499 with the common-variable option).
-bool plainParameter(Flavour f, long n) {
-  if (f == Flavour::RS274) return (n >= 1 && n <= 5000) || (n >= 5599 && n <= 5601);
-  return (n >= 1 && n <= 33) || (n >= 100 && n <= 999);
-}
 }  // namespace
 
 SystemParam classifyParameter(Flavour f, long n) {
   SystemParam p;
-  if (plainParameter(f, n)) return p;
+  if (f == Flavour::RS274 ? plainNgcParameter((double)n) : plainMacroVariable((double)n)) return p;
   for (const ParamRange &r : kRanges) {
     if (r.flavour != f || n < r.first || n > r.last) continue;
     int off = n - r.first, sys = r.stride ? off / r.stride + 1 : 1, axis = r.stride ? off % r.stride : off;

@@ -1,4 +1,5 @@
 #include "runtime/cycles/Library.h"
+#include "runtime/Geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,6 @@ namespace ncc {
 
 namespace {
 
-// Plane axis indices: first and second plane axis, tool (drilling) axis.
-constexpr int kA1[] = {0, 2, 1}, kA2[] = {1, 0, 2}, kD[] = {2, 1, 0};
 
 bool fail(std::string &err, std::string msg) {
   err = std::move(msg);
@@ -31,7 +30,8 @@ int sinPlane(const CycleArgs &a, const CycleContext &ctx) {
 
 // The steps of one hole: rapid to the start level above the hole, then the HoleSpec.
 void hole(const HoleSpec &h, int plane, const CycleContext &ctx, std::vector<CycleStep> &out) {
-  int a1 = kA1[plane], a2 = kA2[plane], d = kD[plane];
+  const PlaneAxes ax = planeAxes((Plane)plane);
+  const int a1 = ax.u, a2 = ax.v, d = ax.n;
   if (ctx.position[d] != h.start) {  // a pattern may already be there
     CycleStep st;
     st.pos = ctx.position;
@@ -344,7 +344,8 @@ bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef 
     return fail(err, "a pattern runs the cycles of its own controller");
   std::vector<PlanePoint> pts;
   if (!pattern.positions(pa, pts, err)) return false;
-  int plane = ctx.plane, a1 = kA1[plane], a2 = kA2[plane], d = kD[plane];
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  const int a1 = ax.u, a2 = ax.v, d = ax.n;
   std::array<double, 3> here = ctx.position;
   double between = here[d];  // Sinumerik: from hole to hole at the level the cycle retracts to
   if (hei) {

@@ -1,28 +1,15 @@
 #include "runtime/cycles/Pattern.h"
+#include "runtime/Geometry.h"
 
 #include <cmath>
 #include <set>
 
 namespace ncc {
 
-namespace {
-// cos/sin with exact values at multiples of 90 degrees (a hole at 90 degrees has X exactly 0).
-void dir(double degrees, double &c, double &s) {
-  double q = degrees / 90;
-  if (q == std::floor(q)) {
-    static const double kC[] = {1, 0, -1, 0}, kS[] = {0, 1, 0, -1};
-    int k = (int)std::fmod(std::fmod(q, 4) + 4, 4);
-    c = kC[k], s = kS[k];
-    return;
-  }
-  double r = degrees * M_PI / 180;
-  c = std::cos(r), s = std::sin(r);
-}
-}  // namespace
 
 std::vector<PlanePoint> linePattern(PlanePoint o, double degrees, double first, double spacing, int count) {
   double c, s;
-  dir(degrees, c, s);
+  sinCosDegrees(degrees, s, c);
   std::vector<PlanePoint> out;
   for (int i = 0; i < count; ++i) {
     double d = first + i * spacing;
@@ -35,7 +22,7 @@ std::vector<PlanePoint> circlePattern(PlanePoint centre, double radius, double s
   std::vector<PlanePoint> out;
   for (int i = 0; i < count; ++i) {
     double c, s;
-    dir(start + i * step, c, s);
+    sinCosDegrees(start + i * step, s, c);
     out.push_back({centre[0] + radius * c, centre[1] + radius * s});
   }
   return out;
@@ -44,7 +31,7 @@ std::vector<PlanePoint> circlePattern(PlanePoint centre, double radius, double s
 std::vector<PlanePoint> gridPattern(PlanePoint o, double degrees, double d1, double d2, int n1, int n2, bool meander,
                                     bool frameOnly) {
   double c, s;
-  dir(degrees, c, s);
+  sinCosDegrees(degrees, s, c);
   std::vector<PlanePoint> out;
   for (int j = 0; j < n2; ++j)
     for (int k = 0; k < n1; ++k) {

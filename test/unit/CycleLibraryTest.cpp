@@ -111,11 +111,15 @@ TEST(Clearing, IslandStays) {
   std::vector<Polygon> rings;
   std::string err;
   ASSERT_TRUE(clearingRings(s, rings, err)) << err;
+  ASSERT_GE(rings.size(), 4u);  // rings about the island, not only the outer wall's
+  bool nearIsland = false;
   for (auto &r : rings)  // no tool centre comes within the radius of the island
     for (auto &q : r) {
       double dx = std::max({20 - q[0], 0.0, q[0] - 40}), dy = std::max({20 - q[1], 0.0, q[1] - 40});
       EXPECT_GE(std::hypot(dx, dy), 4 - 1e-3);
+      nearIsland |= std::hypot(dx, dy) < 4 + 1e-3;  // the first ring about it touches at the radius
     }
+  EXPECT_TRUE(nearIsland);
 }
 
 TEST(Frame, RotationInverseAndStacking) {

@@ -22,12 +22,6 @@ bool addArg(const std::string &tok, CycleArgs &args) {
   else args.text[k] = v.size() >= 2 && v.front() == '"' && v.back() == '"' ? v.substr(1, v.size() - 2) : v;
   return true;
 }
-
-class TextSink : public MotionSink {
-public:
-  std::string text;
-  void record(const MotionRecord &r) override { text += printMotionRecord(r) + "\n"; }
-};
 }  // namespace
 
 int cmdCycle(int argc, char **argv) {
@@ -98,7 +92,8 @@ int cmdCycle(int argc, char **argv) {
     return kExitUsage;
   }
   if (!s.setUp()) return kExitErrors;
-  TextSink sink;
+  std::string text;
+  MotionTextWriter sink(text);  // the one Motion IR printer
   Executor exec(s.machine, sink, s.diags);
   // The state before the cycle: plane, feed, spindle, position.
   MachineCmd c;
@@ -121,7 +116,7 @@ int cmdCycle(int argc, char **argv) {
   ok = ok && exec.runCycle(*cycle, cycleArgs, pattern, pattern ? &patternArgs : nullptr, {});
   exec.finish(false);
   if (!ok || s.diags.hasErrors()) return kExitErrors;
-  return writeOutput(s, out, sink.text) ? kExitOk : kExitErrors;
+  return writeOutput(s, out, text) ? kExitOk : kExitErrors;
 }
 
 }  // namespace ncc::driver
