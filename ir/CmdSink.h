@@ -5,6 +5,8 @@
 #include "ir/MachineCmd.h"
 #include "ir/SystemVars.h"
 
+#include <string>
+
 namespace ncc {
 
 class CmdSink {
@@ -14,6 +16,12 @@ public:
   virtual bool exec(const MachineCmd &cmd) = 0;
   // A system variable's current value (ir/SystemVars.h); false when this sink has none.
   virtual bool readSystem(SysVar v, double &out) { return false; }
+  // Assigns one (sysVarWritable) by the assignment at `loc`; false with the reason in err, which
+  // the engine reports.
+  virtual bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) {
+    err = std::string("system variable '") + sysVarName(v) + "' cannot be written here";
+    return false;
+  }
 };
 
 }  // namespace ncc

@@ -435,7 +435,9 @@ private:
     if (c == '$') {
       next();
       std::string name = expectName("system variable name");
-      return Expr::var(VarSpace::System, std::move(name), parseIndexOpt());
+      ExprPtr v = Expr::var(VarSpace::System, std::move(name));
+      parseIndices(*v);  // a family's indices ($_work_offset[1, X])
+      return v;
     }
     fail(t, fmt::format("expected an expression, found {}", describe(t)));
   }

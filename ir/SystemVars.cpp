@@ -1,5 +1,7 @@
 #include "ir/SystemVars.h"
+#include "ir/Value.h"
 
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -48,7 +50,7 @@ bool sysVarFromName(std::string_view name, SysVar &out) {
   return false;
 }
 
-const char *sysVarName(SysVar v) { return allNames()[(size_t)v].c_str(); }
+const char *sysVarName(SysVar v) { return (size_t)v < allNames().size() ? allNames()[(size_t)v].c_str() : "?"; }
 
 SysVarInfo sysVarInfo(SysVar v) {
   int id = (int)v - (int)SysVar::Count;
@@ -64,7 +66,53 @@ SysVar sysVarOf(SysFamily f, int system, int axis) {
     return (SysVar)(base + (system - 1) * 7 + axis);
   if (f >= SysFamily::G92 && f <= SysFamily::ToolOffset && axis >= 0 && axis < 6)
     return (SysVar)(base + kWorkOffsetIds + ((int)f - (int)SysFamily::G92) * 6 + axis);
-  return SysVar::Count;
+  return kNoSysVar;
+}
+
+namespace {
+// Base names of the indexed families, in SysFamily order from WorkOffset on.
+constexpr const char *kFamilyBase[] = {"_work_offset", "_g92", "_home1", "_home2", "_abs", "_tool_offsets"};
+bool wholeIn(double x, int lo, int hi) { return x >= lo && x <= hi && x == (double)(int)x; }
+}  // namespace
+
+int sysFamilyFromName(std::string_view name, SysFamily &out) {
+  for (size_t i = 0; i < std::size(kFamilyBase); ++i)
+    if (name == kFamilyBase[i]) {
+      out = (SysFamily)(i + 1);
+      return out == SysFamily::WorkOffset ? 2 : 1;
+    }
+  return 0;
+}
+
+SysVar sysVarAt(SysFamily f, double i, double j) {
+  if (f == SysFamily::WorkOffset) return wholeIn(i, 1, 9) && wholeIn(j, 0, 6) ? sysVarOf(f, (int)i, (int)j) : kNoSysVar;
+  return wholeIn(i, 0, 5) ? sysVarOf(f, 0, (int)i) : kNoSysVar;
+}
+
+std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, double j) {
+  int dims = f == SysFamily::WorkOffset ? 2 : 1;
+  std::string idx = dims == 2 ? numberText(i) + ", " + numberText(j) : numberText(i);
+  std::string range = dims == 2 ? "system 1..9, axis 0..6" : "axis 0..5";
+  return "system variable '$" + std::string(name) + "[" + idx + "]': index out of range (" + range + ")";
+}
+
+int axisIndex(std::string_view name) {
+  static const char kAxes[] = "xyzabc";
+  if (name.size() != 1) return -1;
+  char c = (char)(name[0] | 0x20);
+  for (int i = 0; i < 6; ++i)
+    if (kAxes[i] == c) return i;
+  return -1;
+}
+
+bool sysVarWritable(SysVar v) {
+  switch (sysVarInfo(v).family) {
+  case SysFamily::WorkOffset:
+  case SysFamily::G92:
+  case SysFamily::Home1:
+  case SysFamily::Home2: return true;
+  default: return false;
+  }
 }
 
 }  // namespace ncc

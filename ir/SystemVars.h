@@ -5,6 +5,7 @@
 // when the program runs, so both engines read the same state.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace ncc {
@@ -34,9 +35,31 @@ SysVarInfo sysVarInfo(SysVar v);
 // NGC_PARAMETER / MACRO_VARIABLE builtins (computed #[n]) ask these.
 inline bool plainNgcParameter(double n) { return (n >= 0 && n < 5001) || (n >= 5599 && n < 5602); }
 inline bool plainMacroVariable(double n) { return (n >= 0 && n < 34) || (n >= 100 && n < 1000); }
-// The id of a family member; SysVar::Count when out of range.
+// No system variable: what the lookups below return for an id out of range (family members
+// start at SysVar::Count, so Count itself is the first work offset).
+constexpr SysVar kNoSysVar = (SysVar)0xff;
+// The id of a family member; kNoSysVar when out of range.
 SysVar sysVarOf(SysFamily f, int system, int axis);
 constexpr int kSysVarIds = (int)SysVar::Count + 9 * 7 + 5 * 6;
+static_assert(kSysVarIds < (int)kNoSysVar);
+
+// Indexed access: a family's base name with run-time indices, `$_work_offset[s, a]` (system s
+// 1..9, axis a 0..5 = X..C or 6 = the XY rotation R) and `$_g92[a]`, `$_home1[a]`, `$_home2[a]`,
+// `$_abs[a]`, `$_tool_offsets[a]` (a 0..5; `$_tool_offset` is LinuxCNC's "length offset on").
+// An index may be an axis symbol (X … C), resolved when the program is compiled (axisIndex).
+// Returns the number of indices the family takes, 0 when `name` is not a family.
+int sysFamilyFromName(std::string_view name, SysFamily &out);
+// The member at run-time indices (i = the system for work offsets, else the axis); kNoSysVar
+// when an index is out of range or not an integer. The message for that case, shared by the engines.
+SysVar sysVarAt(SysFamily f, double i, double j);
+std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, double j);
+// The axis index of an axis name used as an index (X Y Z A B C -> 0..5), -1 for any other name.
+int axisIndex(std::string_view name);
+
+// Writes: the ids a program may assign (work offsets with their rotation, G92 offsets, the
+// reference points). The executor decides when a written work offset takes effect (the
+// controller's `offset_write`, docs/MACHINE.md).
+bool sysVarWritable(SysVar v);
 
 // The IR name of a system variable (LinuxCNC's parameter name, e.g. "_metric"); false when
 // `name` is none. Names are lower case.

@@ -327,8 +327,9 @@ private:
         break;
       case Ctx::Var:
         if (v->kind != ExprKind::Var) break;  // reported by kVarRules
-        if (v->space == VarSpace::System) {  // controller state: read-only
-          error(op.loc, fmt::format("{}: system variable '{}' is read-only", where.text(), v->str));
+        if (v->space == VarSpace::System) {  // controller state: only some of it may be written
+          if (variable(*v, op.loc, where) && !systemWritable(*v))
+            error(op.loc, fmt::format("{}: system variable '${}' is read-only", where.text(), v->str));
           break;
         }
         if (variable(*v, op.loc, where) && op.kind != OpKind::Declare)
@@ -447,7 +448,7 @@ private:
     if (e.kind == ExprKind::Var && !variable(e, l, where)) return false;
     if (e.kind == ExprKind::Var) {
       for (auto &i : e.args)
-        if (i && !numericExpr(*i, l, where)) return false;
+        if (i && !systemAxisIndex(e, *i) && !numericExpr(*i, l, where)) return false;
       return true;
     }
     if (e.kind == ExprKind::Binary && e.args.size() == 2 && e.args[0] && e.args[1]) {
@@ -488,12 +489,40 @@ private:
     return anyExpr(e, l, where);
   }
 
+  // A system variable is a name of ir/SystemVars.h, or a family's base name with its indices.
   bool variable(const Expr &e, SourceLoc l, const Where &where) {
+    if (e.space != VarSpace::System) return true;
     SysVar sv;
-    if (e.space == VarSpace::System && !sysVarFromName(e.str, sv))
+    SysFamily f;
+    int dims = sysFamilyFromName(e.str, f);
+    if (!dims && !sysVarFromName(e.str, sv)) {
       error(l, fmt::format("{}: system variable '${}' is not supported yet", where.text(), e.str));
-    else return true;
-    return false;
+      return false;
+    }
+    if ((int)e.args.size() != dims) {
+      error(l, fmt::format("{}: system variable '${}' takes {} ind{}", where.text(), e.str, dims == 0 ? "no" : std::to_string(dims),
+                           dims == 1 ? "ex" : "ices"));
+      return false;
+    }
+    for (auto &i : e.args) {
+      if (i->kind == ExprKind::Symbol && axisIndex(i->str) < 0) {
+        error(l, fmt::format("{}: '{}' is not an axis (X Y Z A B C) in '${}'", where.text(), i->str, e.str));
+        return false;
+      }
+      if (!systemAxisIndex(e, *i) && !numericExpr(*i, l, where)) return false;
+    }
+    return true;
+  }
+  // An axis name as a system variable's index ($_work_offset[1, X]): a number when compiled.
+  static bool systemAxisIndex(const Expr &var, const Expr &index) {
+    return var.space == VarSpace::System && index.kind == ExprKind::Symbol;
+  }
+  static bool systemWritable(const Expr &e) {
+    SysFamily f;
+    SysVar sv = kNoSysVar;
+    if (sysFamilyFromName(e.str, f)) sv = sysVarOf(f, 1, 0);  // writability is per family
+    else sysVarFromName(e.str, sv);
+    return sv != kNoSysVar && sysVarWritable(sv);
   }
 
   void verifyExpr(const Expr *e, SourceLoc l, const std::string &where) {
@@ -539,6 +568,7 @@ private:
 
   void verifyVar(const Expr &e, SourceLoc l, const std::string &where) {
     bool named = e.space == VarSpace::Local || e.space == VarSpace::Global;
+    if (e.space == VarSpace::System) return;  // a family's indices: variable()
     if (e.args.size() > (named ? kMaxArrayRank : 1))
       error(l, fmt::format("{}: a variable has more than {} ind{}", where, named ? kMaxArrayRank : 1,
                            named ? "ices" : "ex"));

@@ -349,6 +349,24 @@ struct Evaluator::Impl {
     return true;
   }
 
+  // The id a system variable names: `$_metric`, or a family with run-time indices
+  // (`$_work_offset[s, a]`, an axis symbol as index).
+  SysVar systemVar(Frame &fr, const Expr &v) {
+    SysVar sv = kNoSysVar;
+    SysFamily f;
+    int dims = sysFamilyFromName(v.str, f);
+    if (!dims) {
+      sysVarFromName(v.str, sv);
+      return sv;
+    }
+    double ix[2] = {0, 0};
+    for (int k = 0; k < dims && k < (int)v.args.size(); ++k)
+      ix[k] = v.args[k]->kind == ExprKind::Symbol ? axisIndex(v.args[k]->str) : num(number(fr, *v.args[k]));
+    sv = sysVarAt(f, ix[0], ix[1]);
+    if (sv == kNoSysVar) fail(v.loc, sysVarIndexMessage(v.str, f, ix[0], ix[1]));
+    return sv;
+  }
+
   double &varRef(Frame &fr, CompiledFn &cf, const Expr &v, bool write) {
     if (!v.args.empty() && v.space == VarSpace::Local) return elemRef(fr.arrays, fr, v);
     if (!v.args.empty() && v.space == VarSpace::Global) return elemRef(globalArrays, fr, v);
@@ -380,11 +398,9 @@ struct Evaluator::Impl {
       }
       return globalNamed[it->second];
     }
-    case VarSpace::System: {
-      if (write) fail(v.loc, fmt::format("system variable '{}' is read-only", v.str));
+    case VarSpace::System: {  // read here; execAssign writes
       static double value;
-      SysVar sv;
-      if (!sysVarFromName(v.str, sv) || !sink.readSystem(sv, value))
+      if (!sink.readSystem(systemVar(fr, v), value))
         fail(v.loc, fmt::format("system variable '{}' is not available here", v.str));
       return value;
     }
@@ -541,6 +557,11 @@ struct Evaluator::Impl {
     if (declare && d && d->rank) {  // an array declaration sets every element
       auto &arrays = target->space == VarSpace::Global ? globalArrays : fr.arrays;
       arrays[target->str].assign(d->size(), v);
+      return;
+    }
+    if (target->space == VarSpace::System) {
+      std::string err;
+      if (!sink.writeSystem(systemVar(fr, *target), v, target->loc, err)) fail(target->loc, err);
       return;
     }
     varRef(fr, cf, *target, true) = v;

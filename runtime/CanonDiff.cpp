@@ -212,7 +212,9 @@ bool MachineReader::next(Motion &m, std::string &err) {
     if (m.kind != MotionKind::Dwell) {
       // A straight move to where the machine already is moves nothing (rs274 prints one for a
       // bare `G0` after a tool change): not motion at machine level.
-      bool still = (m.kind == MotionKind::Traverse || m.kind == MotionKind::Feed) && m.pos == pos_;
+      // Positions computed through a rotation differ in the last bits: "where it is" within 1e-9.
+      bool still = m.kind == MotionKind::Traverse || m.kind == MotionKind::Feed;
+      for (int i = 0; i < 6 && still; ++i) still = std::fabs(m.pos[i] - pos_[i]) <= 1e-9;
       pos_ = m.pos;
       if (still) continue;
     }

@@ -3,7 +3,10 @@
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
 
+#include "ir/Value.h"
+
 #include <cmath>
+#include <fmt/format.h>
 
 namespace ncc {
 
@@ -34,7 +37,7 @@ static void rotateXY(AxisVec &p, double degrees) {
 AxisVec Executor::Impl::frameIn(const AxisVec &m) const {
   if (!linearFrame()) return m;
   AxisVec f;
-  const AxisVec &o = g5x[st.workOffset - 1];
+  const AxisVec &o = g5xActive;
   for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - (i == 2 ? toolLength : 0.0);
   if (rotated()) rotateXY(f, -rotation());
   if (!pf.linear) return f;
@@ -50,7 +53,7 @@ AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
     for (int i = 0; i < kAxes; ++i) m[i] += g92[i];
   }
   if (rotated()) rotateXY(m, rotation());
-  const AxisVec &o = g5x[st.workOffset - 1];
+  const AxisVec &o = g5xActive;
   for (int i = 0; i < kAxes; ++i) m[i] += o[i] + (i == 2 ? toolLength : 0.0);
   return m;
 }
@@ -235,14 +238,16 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
       if (c.has((Word)i) && c.get((Word)i) != 0) return error("G92.1 axis values must be 0", "bad-number");
       g92[i] = g92Saved[i] = pf.local[i] = 0;
     }
+    g92On = false;
     pf.update();
     return true;
   case SetOffsetKind::G52:  // rs274: the named axes' G92 offsets (one register for G52 and G92)
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i)) g92[i] = g92Saved[i] = c.get((Word)i) * axisScale(i);
+    g92On = true;
     return true;
-  case SetOffsetKind::G92Suspend: g92 = {}; return true;
-  case SetOffsetKind::G92Restore: g92 = g92Saved; return true;
+  case SetOffsetKind::G92Suspend: g92 = {}, g92On = false; return true;
+  case SetOffsetKind::G92Restore: g92 = g92Saved, g92On = true; return true;
   case SetOffsetKind::StoreHome1: home[0] = st.position; return true;
   case SetOffsetKind::StoreHome2: home[1] = st.position; return true;
   default: break;
@@ -255,10 +260,11 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i)) {
         pf.local[i] = 0;
-        double before = rotated() ? f[i] : st.position[i] - g5x[st.workOffset - 1][i] - (i == 2 ? toolLength : 0.0);
+        double before = rotated() ? f[i] : st.position[i] - g5xActive[i] - (i == 2 ? toolLength : 0.0);
         g92[i] = before - c.get((Word)i) * axisScale(i);
       }
     g92Saved = g92;
+    g92On = true;
     pf.update();
     return true;
   }
@@ -272,6 +278,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i)) sys[i] = c.get((Word)i) * axisScale(i);  // the origin in machine coordinates
     if (c.has(Word::R)) g5xRotation[n - 1] = c.get(Word::R);      // the system's XY rotation
+    if (n == st.workOffset) applyWorkOffset();  // with any written values of the system (rs274)
     return true;
   }
   if (!frameForbids("G10 L20")) return false;
@@ -282,6 +289,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i))
         sys[i] = st.position[i] - g92[i] - pf.local[i] - (i == 2 ? toolLength : 0.0) - c.get((Word)i) * axisScale(i);
+    if (n == st.workOffset) applyWorkOffset();
     return true;
   }
   AxisVec rel;  // machine position less tool length and the system's origin
@@ -292,6 +300,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     if (c.has((Word)i)) q[i] = c.get((Word)i) * axisScale(i) + g92[i] + pf.local[i];
   rotateXY(q, rot);
   for (int i = 0; i < kAxes; ++i) sys[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - q[i];
+  if (n == st.workOffset) applyWorkOffset();
   return true;
 }
 
@@ -352,8 +361,8 @@ const ResetGroup kResetGroups[] = {
     {"units", [](X &x) { x.st.units = ModeValue::MM; }},
     {"cutter_comp", [](X &x) { x.st.cutterComp = 0; }},
     {"tool_length", [](X &x) { x.toolLength = 0, x.st.toolLengthH = 0; }},
-    {"work_offset", [](X &x) { x.st.workOffset = 1; }},
-    {"g92", [](X &x) { x.g92 = {}; }},
+    {"work_offset", [](X &x) { x.st.workOffset = 1, x.applyWorkOffset(); }},
+    {"g92", [](X &x) { x.g92 = {}, x.g92On = false; }},
     {"feed", [](X &x) { x.st.feed = x.feedMM = 0; }},
     {"spindle", [](X &x) { x.st.spindle = 0; }},
     {"coolant", [](X &x) { x.st.flood = x.st.mist = false; }},
@@ -641,7 +650,10 @@ bool Executor::exec(const MachineCmd &c) {
     static const char *kSystems[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
     if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
     if (c.sub != x.st.workOffset && !x.frameForbids("changing the work offset")) return false;
+    // LinuxCNC re-reads the tables only when the system changes; Sinumerik on every G54….
+    bool apply = c.sub != x.st.workOffset || x.offsetWrite != OffsetWrite::OnChange;
     x.st.workOffset = c.sub;
+    if (apply) x.applyWorkOffset();
     x.curBlockFrame = true;
     x.noteFrame(kSystems[c.sub - 1]);
     return true;
@@ -690,18 +702,16 @@ bool Executor::readSystem(SysVar v, double &out) const {
     return -1;
   };
   static const double kCoordSystems[] = {540, 550, 560, 570, 580, 590, 591, 592, 593};
-  // Offsets and reference points in machine units (mm), as LinuxCNC keeps its parameters.
   SysVarInfo info = sysVarInfo(v);
-  switch (info.family) {
-  case SysFamily::WorkOffset:
-    out = info.axis == 6 ? x.g5xRotation[info.system - 1] : x.g5x[info.system - 1][info.axis];
+  double unit;
+  if (const double *p = x.storedOffset(info, unit)) {
+    out = *p / unit;
     return true;
-  case SysFamily::G92: out = x.g92[info.axis]; return true;
-  case SysFamily::Home1: out = x.home[0][info.axis]; return true;
-  case SysFamily::Home2: out = x.home[1][info.axis]; return true;
+  }
+  switch (info.family) {
   case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
-  case SysFamily::ToolOffset: out = info.axis == 2 ? x.toolLength : 0; return true;  // length along Z only
-  case SysFamily::None: break;
+  case SysFamily::ToolOffset: out = info.axis == 2 ? x.toolLength / x.paramUnit : 0; return true;  // along Z only
+  default: break;
   }
   int axis = -1;
   switch (v) {
@@ -752,12 +762,7 @@ bool Executor::readSystem(SysVar v, double &out) const {
   case SysVar::SelectedPocket: out = st.toolSelected; return true;
   case SysVar::RemapLevel:
   case SysVar::Task: out = 0; return true;
-  case SysVar::G92On: {
-    bool on = false;
-    for (int i = 0; i < kAxes; ++i) on |= x.g92[i] != 0;
-    out = is(on);
-    return true;
-  }
+  case SysVar::G92On: out = is(x.g92On); return true;
   case SysVar::CoordSystemNumber: out = st.workOffset; return true;
   case SysVar::ToolDiameter: {
     const ToolData *t = st.toolInSpindle > 0 ? x.machine.findTool(st.toolInSpindle) : nullptr;
@@ -770,6 +775,45 @@ bool Executor::readSystem(SysVar v, double &out) const {
   }
   // Positions: program coordinates (all offsets applied), in program units.
   out = x.programPosition()[axis] / x.axisScale(axis);
+  return true;
+}
+
+// The stored value behind a writable family member, in mm (degrees for rotary axes and the
+// rotation), and the unit programs read and write it in. The G92 values are the stored ones
+// (rs274's #5211…: G92.2 zeroes the applied offsets only).
+double *Executor::Impl::storedOffset(const SysVarInfo &info, double &unit) const {
+  Impl &x = const_cast<Impl &>(*this);  // one lookup for readSystem and writeSystem
+  unit = info.axis < 3 ? paramUnit : 1.0;
+  switch (info.family) {
+  case SysFamily::WorkOffset: return info.axis == 6 ? &x.g5xRotation[info.system - 1] : &x.g5x[info.system - 1][info.axis];
+  case SysFamily::G92: return &x.g92Saved[info.axis];
+  case SysFamily::Home1: return &x.home[0][info.axis];
+  case SysFamily::Home2: return &x.home[1][info.axis];
+  default: return nullptr;
+  }
+}
+
+bool Executor::writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) {
+  Impl &x = *impl_;
+  SysVarInfo info = sysVarInfo(v);
+  double unit;
+  double *p = sysVarWritable(v) ? x.storedOffset(info, unit) : nullptr;
+  if (!p) {
+    err = fmt::format("system variable '${}' is read-only", sysVarName(v));
+    return false;
+  }
+  if (!std::isfinite(value) || std::fabs(value) > 1e9) {
+    err = fmt::format("system variable '${}': {} is not a valid offset", sysVarName(v), numberText(value));
+    return false;
+  }
+  *p = value * unit;
+  // G92 values wait for G92.3 and reference points for G28/G30, as in rs274; a work offset of
+  // the active system applies now only where the controller says so.
+  if (info.family == SysFamily::WorkOffset && info.system == x.st.workOffset && x.offsetWrite == OffsetWrite::Immediate) {
+    x.applyWorkOffset();
+    x.loc = loc;
+    x.noteFrame("offset write");
+  }
   return true;
 }
 

@@ -35,6 +35,9 @@ uint32_t resetGroupMask(const std::vector<std::string> &groups);
 struct Executor::Impl {
   Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), compOut(s), comp(compOut) {
     g5x = m.workOffsets;
+    offsetWrite = m.controller.offsetWritePolicy();
+    paramUnit = m.controller.parameterUnits == "inch" ? 25.4 : 1.0;
+    applyWorkOffset();
     home[0] = m.home1;
     home[1] = m.home2;
     // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
@@ -52,10 +55,19 @@ struct Executor::Impl {
   // mm, where P is the programmable frame (G52 G68 G51 G51.1) and Rz the XY rotation of the
   // active coordinate system (G10 L2 R), rs274's order after P.
   ProgrammableFrame pf;
+  // The work offset tables (what G10 L2 and parameter writes change) and the active system's
+  // origin as applied: a written offset takes effect when the controller says (offset_write).
   std::array<AxisVec, 9> g5x{};
   std::array<double, 9> g5xRotation{};  // degrees
+  AxisVec g5xActive{};
+  double g5xRotActive = 0;
+  OffsetWrite offsetWrite = OffsetWrite::Immediate;
+  double paramUnit = 1;  // mm per unit of offsets as programs read and write them
+  double *storedOffset(const SysVarInfo &info, double &unit) const;
+  void applyWorkOffset() { g5xActive = g5x[st.workOffset - 1], g5xRotActive = g5xRotation[st.workOffset - 1]; }
   AxisVec g92{};
   AxisVec g92Saved{};  // what G92.3 restores (G92.2 zeroes g92 only)
+  bool g92On = false;  // G92 offsets applied (rs274 #5210)
   AxisVec home[2];     // G28 / G30 reference points (machine), G28.1 / G30.1 store them
   double toolLength = 0;
   double feedMM = 0;
@@ -88,9 +100,9 @@ struct Executor::Impl {
   double scale() const { return st.units == ModeValue::Inch ? 25.4 : 1.0; }
   double axisScale(int axis) const { return axis < 3 ? scale() : 1.0; }
   double offset(int axis) const {
-    return g5x[st.workOffset - 1][axis] + g92[axis] + pf.local[axis] + (axis == 2 ? toolLength : 0.0);
+    return g5xActive[axis] + g92[axis] + pf.local[axis] + (axis == 2 ? toolLength : 0.0);
   }
-  double rotation() const { return g5xRotation[st.workOffset - 1]; }
+  double rotation() const { return g5xRotActive; }
   // The "offset frame": program coordinates plus G92. Without rotation it is the machine frame
   // (frameOffset = every offset), so unrotated programs compute exactly as before; with a
   // rotation it is the frame before Rz, where only G92 offsets. Targets, arc centres and

@@ -276,6 +276,8 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"axes_scale_enable", &Controller::axesScaleEnable},
     {"scale_weighting", &Controller::scaleWeighting, 1e-5, 1e-3},
     {"macro_calls", NodeReader(readMacroCalls)},
+    {"offset_write", &Controller::offsetWrite, 0, 0, false, "immediate on-select on-change"},
+    {"parameter_units", &Controller::parameterUnits, 0, 0, false, "mm inch"},
 };
 
 void readAxisKind(Ctx &c, const toml::node &n, void *obj) {
@@ -536,6 +538,13 @@ const Machine &Machine::builtinDefault() {
     return r;
   }();
   return m;
+}
+
+OffsetWrite Controller::offsetWritePolicy() const {
+  const std::string &k = offsetWrite.empty() ? family : offsetWrite;
+  if (k == "on-change" || k == "linuxcnc") return OffsetWrite::OnChange;
+  if (k == "on-select" || k == "sinumerik" || k == "heidenhain") return OffsetWrite::OnSelect;
+  return OffsetWrite::Immediate;
 }
 
 const ToolData *Machine::findTool(int n) const {

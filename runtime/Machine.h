@@ -37,6 +37,13 @@ struct Tool {
   std::map<int, ToolEdge> edges;  // by D number
 };
 
+// When a work offset written by a program (LinuxCNC #5221, Fanuc #5221, Sinumerik $P_UIFR)
+// takes effect for the active system: at once (Fanuc); when a G54… is next programmed, the
+// active one included (Sinumerik settable frames); when another system is selected or at reset
+// (LinuxCNC, whose G54 in G54 "continues to use the same coordinate system"). G10 L2/L20 of the
+// active system applies its table at once in every profile.
+enum class OffsetWrite : uint8_t { Immediate, OnSelect, OnChange };
+
 // The controller profile: data for the dialect front ends (docs/MACHINE.md says which are used).
 struct Controller {
   std::string family = "iso";        // iso fanuc linuxcnc sinumerik heidenhain cldata
@@ -59,6 +66,13 @@ struct Controller {
   // group, e.g. LinuxCNC's stand-alone G80 and G99. Groups not named start as ncc's default
   // (G0 G90 G91.1 G94 G98 G21 G64).
   std::vector<ModeValue> startup;
+  // Key offset_write: "immediate", "on-select", "on-change"; empty = the family's (linuxcnc:
+  // on-change, sinumerik and heidenhain: on-select, others: immediate).
+  std::string offsetWrite;
+  OffsetWrite offsetWritePolicy() const;
+  // The length unit of offsets, G92 values and reference points as programs read and write
+  // them (LinuxCNC #5161-#5390: the machine's LINEAR_UNITS; stand-alone rs274: inch).
+  std::string parameterUnits = "mm";
 };
 
 // One problem of a machine description; line 0 = not located (an unreadable file).

@@ -200,6 +200,24 @@ double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id) {
   return id < (uint32_t)kSysVarIds && ctx->sink.readSystem((SysVar)id, v) ? v : unsetValue();
 }
 
+// An error reported at the loc: the result generated code recognises.
+static double failed(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const std::string &msg) {
+  ctx->diags.error({file, line, col}, msg);
+  return unsetValue();
+}
+
+double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, const char *name, uint32_t file,
+                      uint32_t line, uint32_t col) {
+  SysVar v = sysVarAt((SysFamily)family, i, j);
+  if (v == kNoSysVar) return failed(ctx, file, line, col, sysVarIndexMessage(name, (SysFamily)family, i, j));
+  return (double)v;
+}
+
+double ncrt_sysvar_set(ncrt_ctx *ctx, uint32_t id, double v, uint32_t file, uint32_t line, uint32_t col) {
+  std::string err;
+  return ctx->sink.writeSystem((SysVar)id, v, {file, line, col}, err) ? 0.0 : failed(ctx, file, line, col, err);
+}
+
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
 void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v); }
@@ -217,12 +235,6 @@ int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const 
     if (ctx->text == names[i]) return (int64_t)i;
   ctx->diags.error({file, line, col}, unknownProgramMessage(ctx->text));
   return -1;
-}
-
-// An error reported at the loc: the result generated code recognises.
-static double failed(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const std::string &msg) {
-  ctx->diags.error({file, line, col}, msg);
-  return unsetValue();
 }
 
 double ncrt_str_const(ncrt_ctx *ctx, const char *s, uint64_t len, uint32_t file, uint32_t line, uint32_t col) {

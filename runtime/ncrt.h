@@ -100,6 +100,12 @@ void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
 void ncrt_str_num(ncrt_ctx *ctx, double v);
 /* A system variable (ncc::SysVar id) from the sink; the unset bits when it has none. */
 double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id);
+/* The id of member (i, j) of family `family` (ir/SystemVars.h sysVarAt) as a number, or unset
+   after an error at the loc. */
+double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, const char *name, uint32_t file,
+                      uint32_t line, uint32_t col);
+/* Writes system variable `id`: 0, or unset after an error at the loc. */
+double ncrt_sysvar_set(ncrt_ctx *ctx, uint32_t id, double v, uint32_t file, uint32_t line, uint32_t col);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
 /* A computed callee: the index in names[0..n) of the function named by the text buffer, or when

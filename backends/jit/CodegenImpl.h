@@ -96,6 +96,7 @@ private:
   std::vector<llvm::Value *> locArgs(SourceLoc loc);
   // ------------------------------------------------ expressions (CodegenExpr.cpp)
   Val expr(const ir::Expr &e);
+  llvm::Value *sysVarId(const ir::Expr &var);
   Val binary(const ir::Expr &e);
   Val callBuiltin(const ir::Expr &e);
   llvm::Value *numOf(Val v);  // a string is the error stringAsNumberMessage() at v.loc
@@ -142,7 +143,7 @@ private:
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
-  llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar;
+  llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar, fSysVarAt, fSysVarSet;
   llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;

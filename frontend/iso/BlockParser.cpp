@@ -718,9 +718,10 @@ ExprPtr BlockParser::parseVariable(bool target) {
     if (v == 0) return Expr::vacant(locAt(at));
     long n = v > 1e9 ? 1000000000L : (long)v;
     SystemParam sp = classifyParameter(flavour_, n);
-    if (target && sp.kind == SystemParam::System) {
-      fail(at, fmt::format("#{} ({}) cannot be assigned: ncc reads controller state only", n, sp.what),
-           "unsupported-code");
+    // Offsets and reference points are written through the executor, which applies them when
+    // the controller would (docs/MACHINE.md offset_write); the rest is read-only, as in rs274.
+    if (target && sp.kind == SystemParam::System && !sysVarWritable(sp.var)) {
+      fail(at, fmt::format("#{} ({}) is read-only", n, sp.what), "read-only-parameter");
       return nullptr;
     }
     if (target && sp.kind == SystemParam::Alarm)

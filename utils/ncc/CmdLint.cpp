@@ -30,6 +30,9 @@ public:
     return true;
   }
   bool readSystem(SysVar v, double &out) override { return exec_.readSystem(v, out); }
+  bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) override {
+    return exec_.writeSystem(v, value, loc, err);
+  }
 
 private:
   Executor &exec_;

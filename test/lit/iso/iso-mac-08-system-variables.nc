@@ -38,11 +38,12 @@ N900 M30
 ; IRA: message text=(concat (concat "macro alarm #3000 = " 2) " (TOOL BROKEN)") kind=abort
 ; RUN: not %ncc run %t.alarm.nc 2>&1 | FileCheck %s --check-prefix=ALARM
 ; ALARM: alarm.nc:2:1: error: macro alarm #3000 = 2.000000 (TOOL BROKEN) [abort]
-; Variables ncc does not provide are errors, and so are writes to controller state.
-; RUN: printf '#1=#4001\n#5221=3\n#2=#50\n#3=#3000\nM30\n' > %t.nc
+; Variables ncc does not provide are errors, and so are writes to read-only state (offset
+; writes: iso-mac-08-offset-writes.nc).
+; RUN: printf '#1=#4001\n#5041=3\n#2=#50\n#3=#3000\nM30\n' > %t.nc
 ; RUN: not %ncc compile %t.nc --emit=ir 2>&1 | FileCheck %s --check-prefix=ERR
 ; ERR: :1:4: error: Fanuc system variable #4001 is not supported [unsupported-code]
-; ERR: :2:1: error: #5221 (work offset 1 X) cannot be assigned: ncc reads controller state only [unsupported-code]
+; ERR: :2:1: error: #5041 (current position X) is read-only [read-only-parameter]
 ; ERR: :3:4: error: #50 does not exist in Custom Macro B (#1-#33 local, #100-#999 common) [unsupported-code]
 ; ERR: :4:4: error: #3000 can only be assigned (alarm and message stop) [unsupported-code]
 ; A computed number reaching controller state when the program runs is a run-time error too
