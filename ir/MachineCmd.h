@@ -57,7 +57,13 @@ enum class MessageKind : uint8_t { Msg, Debug, Print, Abort };
 // G92.2 zeroes the G92 offsets but keeps them for G92.3 to restore; G28.1/G30.1 store the
 // current position as reference point 1/2.
 // G52 in RS274NGC sets the G92 offsets of the named axes (LinuxCNC keeps both in one register).
-enum class SetOffsetKind : uint8_t { G92, G92Cancel, G10L2, G10L20, G92Suspend, G92Restore, StoreHome1, StoreHome2, G52 };
+// Tool offsets (T/H/D number in w[P]): ToolSet is LinuxCNC's G10 L1 (Z length, R radius);
+// ToolTouch/ToolTouchG593 its G10 L10/L11 (the length that makes the current position the Z word
+// in the current system / in G59.3); ToolLength… the Fanuc/808D G10 L10-L13 (one value, R).
+enum class SetOffsetKind : uint8_t {
+  G92, G92Cancel, G10L2, G10L20, G92Suspend, G92Restore, StoreHome1, StoreHome2, G52,
+  ToolSet, ToolTouch, ToolTouchG593, ToolLength, ToolLengthWear, ToolRadius, ToolRadiusWear
+};
 // The programmable frame (runtime/Frame.h): its slots, what a `frame` op does to one, and how a
 // rotation reads its words. form=plane is the ISO 2-D G68 (about the active plane's normal axis,
 // R absolute or incremental by G90/G91, an omitted centre word = the current position); form=axis

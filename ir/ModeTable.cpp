@@ -24,6 +24,7 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::BoreDwell, ModeGroup::Motion, "bore_dwell"},
     {ModeValue::BoreBack, ModeGroup::Motion, "bore_back"},
     {ModeValue::BoreFine, ModeGroup::Motion, "bore_fine"},
+    {ModeValue::CycleCancel, ModeGroup::Motion, "cycle_cancel"},
     {ModeValue::XY, ModeGroup::Plane, "xy"},
     {ModeValue::ZX, ModeGroup::Plane, "zx"},
     {ModeValue::YZ, ModeGroup::Plane, "yz"},

@@ -16,6 +16,9 @@ enum class ModeValue : uint8_t {
   Rapid, Linear, ArcCW, ArcCCW, CycleOff,
   Drill, DrillDwell, Peck, PeckChipBreak, Tap, TapLeft, BoreFeed, BoreStop, BoreDwell,
   BoreBack, BoreFine,
+  // Fanuc's G80 (cycles are group 09, beside group 01): the cycle ends and the G0-G3 mode that
+  // was active before it resumes. RS274NGC's G80 is CycleOff: no motion mode until one is given.
+  CycleCancel,
   // Plane
   XY, ZX, YZ,
   // Units

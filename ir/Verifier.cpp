@@ -32,7 +32,9 @@ const EnumRule kEnumRules[] = {
     {OpKind::CutterComp, "d_default", "modal tool"},
     {OpKind::Message, "kind", "msg debug print abort"},
     {OpKind::Stop, "kind", "program optional end end_rewind"},
-    {OpKind::SetOffset, "kind", "g92 g92_1 g92_2 g92_3 g10l2 g10l20 g28_1 g30_1 g52"},
+    {OpKind::SetOffset, "kind",
+     "g92 g92_1 g92_2 g92_3 g10l2 g10l20 g28_1 g30_1 g52 tool_set tool_touch tool_touch_g593 tool_length tool_length_wear "
+     "tool_radius tool_radius_wear"},
     {OpKind::Frame, "slot", "local rotation scale mirror"},
     {OpKind::Frame, "action", "set cancel"},
     {OpKind::Frame, "form", "plane axis"},

@@ -129,8 +129,14 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
   return frameOut(t);
 }
 
+const ToolData *Executor::Impl::findTool(double n) const {
+  if (!(n >= 0 && n <= 1e9 && n == std::floor(n))) return nullptr;
+  auto it = toolEdits.find((int)n);
+  return it != toolEdits.end() ? &it->second.data : machine.findTool((int)n);
+}
+
 const ToolData *Executor::Impl::tool(double n, const char *word) {
-  const ToolData *t = n >= 0 && n <= 1e9 && n == std::floor(n) ? machine.findTool((int)n) : nullptr;
+  const ToolData *t = findTool(n);
   if (!t) {
     if (n < 0 || n > 1e9 || n != std::floor(n))
       error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
@@ -167,6 +173,8 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
     case ModeGroup::Motion:
+      if (v == ModeValue::CycleCancel) v = st.pathMotion;
+      if (v <= ModeValue::ArcCCW) st.pathMotion = v;
       st.motion = v;
       if (!isCycleMotion(v)) {
         // Leaving the cycles: the next cycle takes a new initial level.
@@ -228,8 +236,58 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   return true;
 }
 
+// The geometry and wear behind number n (a valid tool number): edited, the machine's edge, or
+// zero for a number the table lacks (free_tools).
+ToolEdge Executor::Impl::edgeOf(int n) const {
+  if (auto it = toolEdits.find(n); it != toolEdits.end()) return it->second.edge;
+  auto t = machine.toolTable.find(n);
+  if (t == machine.toolTable.end() || t->second.edges.empty()) return {};
+  auto e = t->second.edges.find(1);  // T/H/D numbers use edge 1, or the only edge (Machine.cpp)
+  return e != t->second.edges.end() ? e->second : t->second.edges.begin()->second;
+}
+
+bool Executor::Impl::execToolOffset(const MachineCmd &c) {
+  auto kind = (SetOffsetKind)c.sub;
+  if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
+  if (!tool(c.get(Word::P), "P")) return false;  // existing numbers only (808D: none can be created)
+  int n = (int)c.get(Word::P);
+  if (n == 0) return error("tool 0 (no tool) has no offsets", "unknown-tool");
+  ToolEdge e = edgeOf(n);
+  double r = c.get(Word::R) * scale();
+  switch (kind) {
+  case SetOffsetKind::ToolSet:  // LinuxCNC's table holds one length and radius: no wear
+    if (c.has(Word::Z)) e.length = c.get(Word::Z) * scale(), e.lengthWear = 0;
+    if (c.has(Word::R)) e.radius = r, e.radiusWear = 0;
+    break;
+  case SetOffsetKind::ToolTouch:
+  case SetOffsetKind::ToolTouchG593: {
+    if (!frameForbids(kind == SetOffsetKind::ToolTouch ? "G10 L10" : "G10 L11")) return false;
+    // rs274: the length that puts the tool tip at Z in the current system (L10) or in G59.3
+    // (L11, where G92 does not count), from the machine position.
+    double z0 = kind == SetOffsetKind::ToolTouch ? g5xActive[2] + g92[2] + pf.local[2] : g5x[8][2];
+    if (c.has(Word::Z)) e.length = st.position[2] - z0 - c.get(Word::Z) * scale(), e.lengthWear = 0;
+    if (c.has(Word::R)) e.radius = r, e.radiusWear = 0;
+    break;
+  }
+  default: {
+    // Fanuc adds the value in G91; the 808D manual does not say: only G90 is certain.
+    if (st.distance == ModeValue::Incremental)
+      return error("G10 L10-L13 in G91: whether R is added is not documented for this controller; program it in G90",
+                   "unsupported-code");
+    static constexpr double ToolEdge::*kField[] = {&ToolEdge::length, &ToolEdge::lengthWear, &ToolEdge::radius,
+                                                   &ToolEdge::radiusWear};  // ToolLength … ToolRadiusWear
+    e.*kField[(int)kind - (int)SetOffsetKind::ToolLength] = r;
+    break;
+  }
+  }
+  if (e.radius + e.radiusWear < 0) return error("tool radius (geometry + wear) would be negative", "bad-number");
+  toolEdits[n] = {e, ToolData{e.length + e.lengthWear, e.radius + e.radiusWear}};
+  return true;
+}
+
 bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
+  if (kind >= SetOffsetKind::ToolSet) return execToolOffset(c);
   switch (kind) {
   case SetOffsetKind::G92Cancel:  // all axes, or those named (Fanuc G92.1 X0 Y0); G52 too
     if (!frameForbids("G92.1")) return false;
@@ -710,7 +768,11 @@ bool Executor::readSystem(SysVar v, double &out) const {
   }
   switch (info.family) {
   case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
-  case SysFamily::ToolOffset: out = info.axis == 2 ? x.toolLength / x.paramUnit : 0; return true;  // along Z only
+  case SysFamily::ToolOffset: {  // rs274 #5401…: the table entry of the tool in the spindle (not G43's)
+    const ToolData *t = info.axis == 2 && st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
+    out = t ? t->length / x.paramUnit : 0;
+    return true;
+  }
   default: break;
   }
   int axis = -1;
@@ -765,8 +827,8 @@ bool Executor::readSystem(SysVar v, double &out) const {
   case SysVar::G92On: out = is(x.g92On); return true;
   case SysVar::CoordSystemNumber: out = st.workOffset; return true;
   case SysVar::ToolDiameter: {
-    const ToolData *t = st.toolInSpindle > 0 ? x.machine.findTool(st.toolInSpindle) : nullptr;
-    out = t ? 2 * t->radius : 0;
+    const ToolData *t = st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
+    out = t ? 2 * t->radius / x.paramUnit : 0;
     return true;
   }
   case SysVar::ToolLengthH: out = st.toolLengthH; return true;

@@ -14,6 +14,7 @@ namespace ncc {
 
 struct ModalState {
   ModeValue motion = ModeValue::Rapid;
+  ModeValue pathMotion = ModeValue::Rapid;  // the last G0-G3 mode (what Fanuc's G80 returns to)
   ModeValue plane = ModeValue::XY;
   ModeValue units = ModeValue::MM;
   ModeValue distance = ModeValue::Absolute;

@@ -171,7 +171,18 @@ struct Executor::Impl {
   // (so an arc stays a circle in that plane); `flip` when it mirrors the plane.
   bool frameKeepsPlane(Plane pl, bool &flip) const;
   // Tool data of a T/H/D number; an error naming it when the machine has no such tool.
-  const ToolData *tool(double n, const char *word);
+  const ToolData *tool(double n, const char *word);  // findTool, or an error naming `word`
+  const ToolData *findTool(double n) const;
+  // Tool offsets as the program changed them (G10 L1/L10/L11, Fanuc G10 L10-L13), over the
+  // machine's table: geometry and wear of the number's edge, and `data`, their sum, which tool()
+  // returns. A change applies at the next G43/H or D, as in rs274.
+  struct EditedTool {
+    ToolEdge edge;
+    ToolData data;
+  };
+  std::map<int, EditedTool> toolEdits;
+  ToolEdge edgeOf(int n) const;
+  bool execToolOffset(const MachineCmd &c);
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.
   bool checkAxisWords(const MachineCmd &c);
   MotionRecord pathModeRecord() const;

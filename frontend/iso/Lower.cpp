@@ -63,6 +63,7 @@ BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics 
     else if (g == ModeGroup::FeedMode) feedMode_ = m;
     else if (g == ModeGroup::Motion) motion_ = m;
   }
+  if (motion_ <= ModeValue::ArcCCW) pathMotion_ = motion_;
 }
 
 Op BlockLowerer::blockOp(const ParsedBlock &b) const {
@@ -198,12 +199,16 @@ struct BlockLowerer::Block {
     return out.back();
   }
   void modeOp(GGroup g, const char *key) {
-    if (auto *gi = G(g); gi && gi->kind == GKind::Mode)
-      emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(gi->mode).name, gloc(g)));
+    auto *gi = G(g);
+    if (!gi || gi->kind != GKind::Mode) return;
+    // Fanuc's G80 returns to the group-01 mode before the cycle; LinuxCNC's leaves none.
+    ModeValue m = gi->mode == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc ? ModeValue::CycleCancel : gi->mode;
+    emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(m).name, gloc(g)));
   }
   // Keys are unique here, so args are appended directly (Op::set would search).
   static void add(Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); }
   static void add(Op &op, const char *key, ExprPtr v) { op.args.push_back({key, std::move(v)}); }
+  bool toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc);
   void axisWords(Op &op, const char *axes) {
     for (const char *a = axes; *a; ++a)
       if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
@@ -368,7 +373,11 @@ bool BlockLowerer::Block::setup() {
   // The block's own units and feed mode apply to its words.
   if (auto *gi = G(GGroup::Units)) L.units_ = gi->mode;
   if (auto *gi = G(GGroup::FeedMode)) L.feedMode_ = gi->mode;
-  if (auto *gi = G(GGroup::Motion)) L.motion_ = gi->mode;
+  if (auto *gi = G(GGroup::Motion)) {
+    L.motion_ = gi->mode;
+    if (L.motion_ <= ModeValue::ArcCCW) L.pathMotion_ = L.motion_;
+    if (L.motion_ == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc) L.motion_ = L.pathMotion_;  // as the executor
+  }
   nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
 
@@ -479,6 +488,59 @@ bool BlockLowerer::Block::setup() {
   return true;
 }
 
+// G10 forms that write tool offsets (P = tool or offset number). LinuxCNC: L1 sets length Z and
+// radius R, L10/L11 the length that makes the current position Z in the current system / G59.3.
+// Fanuc/808D milling: L10-L13 = length, length wear, radius, radius wear, the value in R; L1 = L11.
+bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc) {
+  static const struct {
+    Flavour flavour;
+    int l;
+    const char *kind;
+    bool axes;  // Z (and R) as LinuxCNC reads them; else R is the one value
+  } kForms[] = {
+      {Flavour::RS274, 1, "tool_set", true},          {Flavour::RS274, 10, "tool_touch", true},
+      {Flavour::RS274, 11, "tool_touch_g593", true},  {Flavour::Fanuc, 10, "tool_length", false},
+      {Flavour::Fanuc, 11, "tool_length_wear", false}, {Flavour::Fanuc, 1, "tool_length_wear", false},
+      {Flavour::Fanuc, 12, "tool_radius", false},     {Flavour::Fanuc, 13, "tool_radius_wear", false},
+  };
+  const char *kind = nullptr;
+  bool axes = false;
+  for (auto &f : kForms)
+    if (f.flavour == L.flavour_ && f.l == lv) kind = f.kind, axes = f.axes;
+  if (!kind) {
+    const char *known = L.flavour_ == Flavour::RS274 ? "L1, L2, L10, L11 and L20" : "L1, L2, L10-L13 and L20";
+    L.diags_.error(l ? l->loc : loc,
+                   l ? fmt::format("G10 L{} is not supported (only {})", l->value, known)
+                     : fmt::format("G10 needs an L word ({})", known),
+                   l ? "unsupported-code" : "missing-word");
+    return false;
+  }
+  if (!bw.has('P')) {
+    L.diags_.error(loc, "G10 needs a P word (the tool or offset number)", "missing-word");
+    return false;
+  }
+  // ncc's tools have a length along Z and a radius: LinuxCNC's other table columns (X for
+  // lathes, I J Q) would be silently dropped.
+  for (char c : std::string_view(axes ? "XYABCIJQ" : "XYZABCIJQ"))
+    if (bw.has(c)) {
+      L.diags_.error(bw.get(c)->loc, fmt::format("G10 L{}: {} is not a tool offset ncc keeps (length Z, radius R)", lv, c),
+                     "unsupported-code");
+      return false;
+    }
+  if (!axes && !bw.has('R')) {
+    L.diags_.error(loc, fmt::format("G10 L{} needs an R word (the offset value)", lv), "missing-word");
+    return false;
+  }
+  bw.used |= 1u << ('L' - 'A');
+  op.set("kind", Expr::symbol(kind, loc));
+  op.set("index", take('P', Scale::None));
+  if (bw.has('Z')) op.set("Z", take('Z', Scale::Linear));
+  if (bw.has('R')) op.set("R", take('R', Scale::Linear));
+  out.push_back(std::move(op));
+  axesTaken = true;
+  return true;
+}
+
 // Non-modal codes that take the axis words for themselves: G10/G92, G28/G30, G53.
 bool BlockLowerer::Block::coordinateOps() {
   // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
@@ -487,16 +549,10 @@ bool BlockLowerer::Block::coordinateOps() {
   if (nonModal && nonModal->kind == GKind::SetOffset) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::SetOffset, loc);
-    if (nonModal->arg == 0) {  // G10 L2 / L20 P<n>
+    if (nonModal->arg == 0) {  // G10 L<n> P<n>
       IsoWord *l = bw.get('L');
       int lv = l && !l->expr && l->value >= 0 && l->value < 100 ? (int)l->value : -1;
-      if (lv != 2 && lv != 20) {
-        L.diags_.error(l ? l->loc : loc,
-                     l ? fmt::format("G10 L{} is not supported (only L2 and L20)", l->value)
-                       : std::string("G10 needs L2 or L20"),
-                     l ? "unsupported-code" : "missing-word");
-        return false;
-      }
+      if (lv != 2 && lv != 20) return toolOffsetOp(op, lv, l, loc);
       if (!bw.has('P')) {
         L.diags_.error(loc, "G10 needs a P word (work offset number)", "missing-word");
         return false;
@@ -650,8 +706,7 @@ bool BlockLowerer::Block::frameOps() {
 
 // The motion mode and the move (axis words, arc or cycle words).
 bool BlockLowerer::Block::motion() {
-  if (auto *gi = G(GGroup::Motion))
-    emit(OpKind::Mode, gloc(GGroup::Motion)).set("motion", Expr::symbol(modeValueInfo(gi->mode).name, gloc(GGroup::Motion)));
+  modeOp(GGroup::Motion, "motion");
   if (!axesTaken) {
     bool cycle = isCycleMotion(L.motion_);
     bool arc = L.motion_ == ModeValue::ArcCW || L.motion_ == ModeValue::ArcCCW;

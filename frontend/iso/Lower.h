@@ -34,6 +34,7 @@ private:
   bool axesScaleEnable_ = false;  // G51 factors: I J K (else P)
   double scaleWeighting_ = 0.001;
   ModeValue motion_ = ModeValue::Rapid;
+  ModeValue pathMotion_ = ModeValue::Rapid;  // the last G0-G3 (Fanuc's G80 returns to it)
   ModeValue feedMode_ = ModeValue::PerMinute;
   ModeValue units_ = ModeValue::MM;
 };

@@ -20,7 +20,8 @@ G90 G1 X0
 ; FEATURES: ISO-CYM-09 ISO-CYM-10 ISO-CYM-11 ISO-CYM-12 ISO-CYM-13 ISO-CYM-14 ISO-CYM-15 ISO-CYM-16
 ; FEATURES: ISO-CYT-15
 ; Milling canned cycles: the motion mode names, the cycle words (dwell P in seconds: Fanuc P
-; is milliseconds), K repeats become L, G98/G99 return level, modal repetition, G80 cancel.
+; is milliseconds), K repeats become L, G98/G99 return level, modal repetition, G80 cancel
+; (cycle_cancel: the G0-G3 mode before the cycle resumes, as on Fanuc; iso-cym-15-g80-resume.nc).
 ; RUN: %ncc compile %s --emit=ir | FileCheck %s
 ; CHECK: mode retract=retract_initial
 ; CHECK: mode motion=drill loc(1:2:1)
@@ -51,5 +52,5 @@ G90 G1 X0
 ; CHECK-NEXT: block
 ; CHECK-NEXT: move Y=-500.0
 ; CHECK-NEXT: block
-; CHECK-NEXT: mode motion=cycle_off
+; CHECK-NEXT: mode motion=cycle_cancel
 ; CHECK-NEXT: block
