@@ -14,12 +14,15 @@ namespace ncc {
 // The address words a machine op can carry, in a fixed order (a word's slot in `w`). PolarR and
 // PolarA are RS274NGC's `@` (polar radius) and `^` (polar angle, degrees), keys polar_r/polar_a;
 // Chamfer and Round the corner after a move (ISO `,C` `,R`, Sinumerik CHF RND, Heidenhain CHF
-// RND), keys chamfer/round (letters c, r: no address letter).
+// RND), keys chamfer/round (letters c, r: no address letter). ViaX ViaY ViaZ are the
+// intermediate point of an arc through three points (Sinumerik CIP I1 J1 K1), keys via_x via_y
+// via_z (letters x y z), read like X Y Z.
 enum class Word : uint8_t {
-  X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, PolarR, PolarA, Chamfer, Round, Count
+  X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, PolarR, PolarA, Chamfer, Round,
+  ViaX, ViaY, ViaZ, Count
 };
 constexpr int kWords = (int)Word::Count;
-constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE@^cr";
+constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE@^crxyz";
 inline uint32_t wordBit(Word w) { return 1u << (unsigned)w; }
 // Returns false for letters that are not words of a machine op.
 bool wordFromLetter(char c, Word &out);

@@ -12,6 +12,8 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::Linear, ModeGroup::Motion, "linear"},
     {ModeValue::ArcCW, ModeGroup::Motion, "arc_cw"},
     {ModeValue::ArcCCW, ModeGroup::Motion, "arc_ccw"},
+    {ModeValue::ArcThrough, ModeGroup::Motion, "arc_through"},
+    {ModeValue::ArcTangent, ModeGroup::Motion, "arc_tangent"},
     {ModeValue::CycleOff, ModeGroup::Motion, "cycle_off"},
     {ModeValue::Drill, ModeGroup::Motion, "drill"},
     {ModeValue::DrillDwell, ModeGroup::Motion, "drill_dwell"},

@@ -13,7 +13,9 @@ enum class ModeGroup : uint8_t {
 // Values are unique across groups so a value alone identifies its group.
 enum class ModeValue : uint8_t {
   // Motion
-  Rapid, Linear, ArcCW, ArcCCW, CycleOff,
+  // ArcThrough: an arc through an intermediate point (Sinumerik CIP); ArcTangent: an arc
+  // tangent to the path so far (Sinumerik and Heidenhain CT). Both are path motions (group 01).
+  Rapid, Linear, ArcCW, ArcCCW, ArcThrough, ArcTangent, CycleOff,
   Drill, DrillDwell, Peck, PeckChipBreak, Tap, TapLeft, BoreFeed, BoreStop, BoreDwell,
   BoreBack, BoreFine,
   // Fanuc's G80 (cycles are group 09, beside group 01): the cycle ends and the G0-G3 mode that
@@ -44,6 +46,7 @@ const char *modeGroupName(ModeGroup g);
 bool modeGroupFromName(std::string_view s, ModeGroup &out);
 const ModeValueInfo &modeValueInfo(ModeValue v);
 bool modeValueFromName(std::string_view s, ModeValue &out);
+inline bool isPathMotion(ModeValue v) { return v <= ModeValue::ArcTangent; }
 inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= ModeValue::BoreFine; }
 
 }  // namespace ncc

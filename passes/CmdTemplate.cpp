@@ -88,6 +88,8 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
     {OpKind::Move, "polar_r", Word::PolarR}, {OpKind::Move, "polar_a", Word::PolarA},
     {OpKind::Move, "chamfer", Word::Chamfer}, {OpKind::Move, "round", Word::Round},
+    {OpKind::Move, "via_x", Word::ViaX},     {OpKind::Move, "via_y", Word::ViaY},
+    {OpKind::Move, "via_z", Word::ViaZ},
 };
 
 static CmdKind cmdKindOf(OpKind k) {

@@ -174,7 +174,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
     switch (modeValueInfo(v).group) {
     case ModeGroup::Motion:
       if (v == ModeValue::CycleCancel) v = st.pathMotion;
-      if (v <= ModeValue::ArcCCW) st.pathMotion = v;
+      if (isPathMotion(v)) st.pathMotion = v;
       st.motion = v;
       if (!isCycleMotion(v)) {
         // Leaving the cycles: the next cycle takes a new initial level.

@@ -200,6 +200,14 @@ struct Executor::Impl {
   // In inverse time each feed move gets its own rate record (mm/min), as rs274 prints it.
   void inverseTimeRate(double mmPerMin);
   bool arc(const MachineCmd &c, bool cw);
+  // CIP and CT (ExecutorArcs.cpp): the circle is found from three points or from the tangent
+  // the path leaves with, then emitted as any arc (emitArc, machine coordinates).
+  bool arcThrough(const MachineCmd &c);
+  bool arcTangent(const MachineCmd &c);
+  bool emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 &normal, int turns);
+  void notePathTangent(const MotionRecord &r);
+  bool haveTangent = false;
+  Vec3 pathTangent{};  // unit direction the path leaves its last point (machine XYZ)
   bool cycle(const MachineCmd &c);
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
   bool cycleFrameOk();

@@ -76,6 +76,7 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop, dou
 }
 
 bool Executor::Impl::emitMove(const MotionRecord &r) {
+  notePathTangent(r);
   if (corner.active) return cornerNext(r);
   if (corner.requested) {
     corner.requested = false;
@@ -113,6 +114,8 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
     return moveTo(RecordKind::Linear, target(c));
   case ModeValue::ArcCW:
   case ModeValue::ArcCCW: return arc(c, st.motion == ModeValue::ArcCW);
+  case ModeValue::ArcThrough: return arcThrough(c);
+  case ModeValue::ArcTangent: return arcTangent(c);
   case ModeValue::CycleOff:
     if (!(c.mask & kTargetMask)) return true;
     return error("Cannot use axis values with G80", "motion-mode-none");

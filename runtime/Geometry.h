@@ -23,6 +23,8 @@ PlaneAxes planeAxes(Plane p);
 // sin and cos of an angle in degrees, exact at multiples of 90 degrees (a G68 R90 maps X10 to
 // Y10, not to Y10 plus 6e-16; a hole at 90 degrees has X exactly on the centre).
 void sinCosDegrees(double degrees, double &s, double &c);
+double dot(const Vec3 &a, const Vec3 &b);
+Vec3 cross(const Vec3 &a, const Vec3 &b);
 
 // The plane of an arc in a tilted plane (MotionRecord::tiltedArc): plane coordinates are taken
 // along the orthonormal frame u (centre to start), v = n x u, n (the normal), about the centre

@@ -63,7 +63,7 @@ BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics 
     else if (g == ModeGroup::FeedMode) feedMode_ = m;
     else if (g == ModeGroup::Motion) motion_ = m;
   }
-  if (motion_ <= ModeValue::ArcCCW) pathMotion_ = motion_;
+  if (isPathMotion(motion_)) pathMotion_ = motion_;
 }
 
 Op BlockLowerer::blockOp(const ParsedBlock &b) const {
@@ -375,7 +375,7 @@ bool BlockLowerer::Block::setup() {
   if (auto *gi = G(GGroup::FeedMode)) L.feedMode_ = gi->mode;
   if (auto *gi = G(GGroup::Motion)) {
     L.motion_ = gi->mode;
-    if (L.motion_ <= ModeValue::ArcCCW) L.pathMotion_ = L.motion_;
+    if (isPathMotion(L.motion_)) L.pathMotion_ = L.motion_;
     if (L.motion_ == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc) L.motion_ = L.pathMotion_;  // as the executor
   }
   nonModal = G(GGroup::NonModal);
