@@ -24,6 +24,8 @@ enum class Word : uint8_t {
 constexpr int kWords = (int)Word::Count;
 constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE@^crxyz";
 inline uint32_t wordBit(Word w) { return 1u << (unsigned)w; }
+// The words a move may make absolute or incremental on their own (MachineCmd sub/sub2).
+constexpr uint32_t kPerWordDistance = 0x3f | 1u << (unsigned)Word::I | 1u << (unsigned)Word::J | 1u << (unsigned)Word::K;
 // Returns false for letters that are not words of a machine op.
 bool wordFromLetter(char c, Word &out);
 
@@ -39,8 +41,9 @@ enum class CmdKind : uint8_t {
   Spindle,      // sub: 0 stop, 1 cw, 2 ccw
   Coolant,      // sub: bit0 flood on, bit1 mist on; sub2 = bit0 flood given, bit1 mist given
   Dwell,        // w[P] seconds
-  Move,         // words in mask; sub / sub2: bits (1 << axis, X..C) of the axis words that are
-                //   incremental / absolute whatever G90/G91 says (Sinumerik IC()/AC(), Heidenhain IX)
+  Move,         // words in mask; sub / sub2: bits (wordBit, X..C and I J K) of the words that are
+                //   incremental / absolute whatever G90/G91 (G90.1/G91.1 for I J K) says
+                //   (Sinumerik IC()/AC(), Heidenhain IX)
   Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words
   MachineMove,  // sub: 0 rapid, 1 feed; G53 target in mask words
   ToolLength,   // w[H] offset number, 0 cancels
@@ -81,8 +84,8 @@ constexpr int kMaxModes = (int)ModeGroup::Count;
 
 struct MachineCmd {
   CmdKind kind = CmdKind::Block;
-  uint8_t sub = 0;
-  uint8_t sub2 = 0;
+  uint16_t sub = 0;
+  uint16_t sub2 = 0;
   uint8_t nmodes = 0;
   ModeValue modes[kMaxModes] = {};
   uint32_t mask = 0;        // wordBit(...) of the words present

@@ -145,7 +145,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     else if (e && e->kind == ExprKind::Vacant) return;  // a vacant word is not programmed
     else out.slots.push_back({w, e});
   };
-  auto symbolArg = [&](const char *key, uint8_t &dst) -> bool {
+  auto symbolArg = [&](const char *key, uint16_t &dst) -> bool {
     const Expr *e = op.get(key);
     if (!e) return true;
     std::string_view s = e->str;
@@ -194,9 +194,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     if (!symbolArg("kind", c.sub)) return false;
     break;
   case OpKind::Frame: {
-    uint8_t action = 0, form = 0;
+    uint16_t action = 0, form = 0;
     if (!symbolArg("slot", c.sub) || !symbolArg("action", action) || !symbolArg("form", form)) return false;
-    c.sub2 = action | form;
+    c.sub2 = (uint16_t)(action | form);
     break;
   }
   case OpKind::WorkOffset: {
@@ -234,14 +234,14 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     for (const char *key : {"ic", "ac"}) {
       const Expr *e = op.get(key);
       if (!e) continue;
-      uint8_t &bits = key[0] == 'i' ? c.sub : c.sub2;
+      uint16_t &bits = key[0] == 'i' ? c.sub : c.sub2;
       for (char l : e->str) {
         Word w;
-        if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || (int)w >= 6) {
-          diags.error(op.loc, fmt::format("'move' {}= names the axes X Y Z A B C (as in {}=XZ)", key, key));
+        if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || !(wordBit(w) & kPerWordDistance)) {
+          diags.error(op.loc, fmt::format("'move' {}= names the words X Y Z A B C I J K (as in {}=XZ)", key, key));
           return false;
         }
-        bits |= (uint8_t)(1u << (unsigned)w);
+        bits |= (uint16_t)wordBit(w);
       }
     }
     break;
@@ -312,10 +312,10 @@ Op cmdToOp(const MachineCmd &c) {
   case CmdKind::Home: op.set("ref", Expr::number(c.sub, Type::Int)); break;
   case CmdKind::Move:
     for (int k = 0; k < 2; ++k) {
-      uint8_t bits = k == 0 ? c.sub : c.sub2;
+      uint16_t bits = k == 0 ? c.sub : c.sub2;
       std::string axes;
-      for (int i = 0; i < 6; ++i)
-        if (bits & (1u << i)) axes += kWordLetters[i];
+      for (int i = 0; i < kWords; ++i)
+        if (bits & wordBit((Word)i) & kPerWordDistance) axes += kWordLetters[i];
       if (!axes.empty()) op.set(k == 0 ? "ic" : "ac", Expr::symbol(axes));
     }
     break;

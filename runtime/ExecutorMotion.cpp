@@ -189,13 +189,12 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
     c2 = (s2 + e2) / 2 + side * h * dx / chord;
   } else {
     double o1 = c.get(ax.o1) * scale(), o2 = c.get(ax.o2) * scale();
-    if (st.arcDistance == ModeValue::ArcAbsolute) {
-      c1 = o1 + frameOffset(ax.a1);
-      c2 = o2 + frameOffset(ax.a2);
-    } else {
-      c1 = s1 + o1;
-      c2 = s2 + o2;
-    }
+    // G90.1/G91.1, unless the word is absolute or incremental on its own (Sinumerik I=AC(..)).
+    auto absolute = [&](Word w) {
+      return c.sub & wordBit(w) ? false : c.sub2 & wordBit(w) ? true : st.arcDistance == ModeValue::ArcAbsolute;
+    };
+    c1 = absolute(ax.o1) ? o1 + frameOffset(ax.a1) : s1 + o1;
+    c2 = absolute(ax.o2) ? o2 + frameOffset(ax.a2) : s2 + o2;
     double r1 = std::hypot(s1 - c1, s2 - c2), r2 = std::hypot(e1 - c1, e2 - c2);
     if (r1 == 0) return error("Zero-radius arc", "arc-invalid");
     double absErr = std::fabs(r1 - r2), relErr = absErr / std::max(r1, r2);

@@ -56,8 +56,7 @@ static bool getVarint(const uint8_t *&p, const uint8_t *end, uint64_t &v) {
 namespace ncc::ncrt {
 void packCmd(const MachineCmd &c, const char *text, std::string &out) {
   out.push_back((char)c.kind);
-  out.push_back((char)c.sub);
-  out.push_back((char)c.sub2);
+  for (uint16_t s : {c.sub, c.sub2}) out.push_back((char)(s & 0xff)), out.push_back((char)(s >> 8));
   out.push_back((char)c.nmodes);
   for (unsigned i = 0; i < c.nmodes; ++i) out.push_back((char)c.modes[i]);
   putVarint(c.mask, out);
@@ -78,13 +77,13 @@ void packCmd(const MachineCmd &c, const char *text, std::string &out) {
 
 // Decodes one command; false on a malformed stream (a compiler bug, reported as such).
 static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
-  if (end - p < 4) return false;
+  if (end - p < 6) return false;
   c = MachineCmd();
   c.kind = (CmdKind)p[0];
-  c.sub = p[1];
-  c.sub2 = p[2];
-  c.nmodes = p[3];
-  p += 4;
+  c.sub = (uint16_t)(p[1] | p[2] << 8);
+  c.sub2 = (uint16_t)(p[3] | p[4] << 8);
+  c.nmodes = p[5];
+  p += 6;
   if (c.kind >= CmdKind::Count || c.nmodes > kMaxModes || end - p < c.nmodes) return false;
   for (unsigned i = 0; i < c.nmodes; ++i) c.modes[i] = (ModeValue)*p++;
   uint64_t v;

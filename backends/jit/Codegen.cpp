@@ -25,9 +25,9 @@ using ir::OpKind;
 
 
 // The LLVM struct types below mirror these C++ layouts.
-static_assert(offsetof(MachineCmd, modes) == 4 && offsetof(MachineCmd, mask) == 12 &&
-              offsetof(MachineCmd, blockNumber) == 16 && offsetof(MachineCmd, loc) == 24 &&
-              offsetof(MachineCmd, text) == 40 && offsetof(MachineCmd, w) == 48 && sizeof(MachineCmd) == 48 + 8 * kWords,
+static_assert(offsetof(MachineCmd, sub) == 2 && offsetof(MachineCmd, modes) == 7 && offsetof(MachineCmd, mask) == 16 &&
+              offsetof(MachineCmd, blockNumber) == 24 && offsetof(MachineCmd, loc) == 32 &&
+              offsetof(MachineCmd, text) == 48 && offsetof(MachineCmd, w) == 56 && sizeof(MachineCmd) == 56 + 8 * kWords,
               "MachineCmd layout changed: update cmdTy");
 static_assert(offsetof(ncrt_storage, max_loop) == 32 && offsetof(ncrt_storage, depth) == 44 &&
               offsetof(ncrt_storage, poll) == 48 && sizeof(ncrt_storage) == 56,
@@ -38,12 +38,13 @@ Codegen::Codegen(const ir::Module &src, LLVMContext &ctx, Diagnostics &diags)
       B(ctx) {
   dblTy = Type::getDoubleTy(C);
   i8Ty = Type::getInt8Ty(C);
+  i16Ty = Type::getInt16Ty(C);
   i32Ty = Type::getInt32Ty(C);
   i64Ty = Type::getInt64Ty(C);
   i1Ty = Type::getInt1Ty(C);
   ptrTy = PointerType::getUnqual(C);
   cmdTy = StructType::create(C,
-                             {i8Ty, i8Ty, i8Ty, i8Ty, ArrayType::get(i8Ty, kMaxModes), i32Ty, i64Ty,
+                             {i8Ty, i16Ty, i16Ty, i8Ty, ArrayType::get(i8Ty, kMaxModes), i32Ty, i64Ty,
                               ArrayType::get(i32Ty, 3), ptrTy, ArrayType::get(dblTy, kWords)},
                              "ncrt_cmd");
   storageTy = StructType::create(C, {ptrTy, ptrTy, ptrTy, ptrTy, i64Ty, i32Ty, i32Ty, i64Ty}, "ncrt_storage");

@@ -24,7 +24,7 @@ Constant *Codegen::cmdConstant(const MachineCmd &c) {
   uint32_t loc[3] = {c.loc.file, c.loc.line, c.loc.col};
   Constant *text = hasText(c) && c.text ? cstring(c.text) : ConstantPointerNull::get(ptrTy);
   return ConstantStruct::get(
-      cmdTy, {B.getInt8((uint8_t)c.kind), B.getInt8(c.sub), B.getInt8(c.sub2), B.getInt8(c.nmodes),
+      cmdTy, {B.getInt8((uint8_t)c.kind), B.getInt16(c.sub), B.getInt16(c.sub2), B.getInt8(c.nmodes),
               ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, kMaxModes)), B.getInt32(c.mask),
               B.getInt64((uint64_t)c.blockNumber), ConstantDataArray::get(C, ArrayRef<uint32_t>(loc, 3)), text,
               ConstantDataArray::get(C, ArrayRef<double>(c.w, kWords))});

@@ -138,7 +138,7 @@ private:
   llvm::IRBuilder<> B;
   bool failed_ = false;
 
-  llvm::Type *dblTy, *i8Ty, *i32Ty, *i64Ty, *i1Ty;
+  llvm::Type *dblTy, *i8Ty, *i16Ty, *i32Ty, *i64Ty, *i1Ty;
   llvm::PointerType *ptrTy;
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
