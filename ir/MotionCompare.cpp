@@ -8,7 +8,7 @@ namespace ncc {
 
 static bool isPath(const MotionRecord &r) {
   return r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-         r.kind == RecordKind::Dwell;
+         r.kind == RecordKind::Spline || r.kind == RecordKind::Dwell;
 }
 
 // Zero-length moves carry no path: translators may drop them.
@@ -44,6 +44,16 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
       auto nx = x.arcNormal(), ny = y.arcNormal();
       for (int k = 0; k < 3 && why.empty(); ++k)
         if (std::fabs(nx[k] - ny[k]) > 1e-9) why = "arc plane normals differ";
+    }
+    if (why.empty() && x.kind == RecordKind::Spline) {
+      const SplineData &sx = x.spline(), &sy = y.spline();
+      auto near = [&](double u, double v) { return std::fabs(u - v) <= opts.tolerance; };
+      if (sx.degree != sy.degree || sx.points.size() != sy.points.size() || sx.weights != sy.weights ||
+          sx.knots != sy.knots)
+        why = "spline degree, control point count, weights or knots differ";
+      for (size_t i = 0; i < sx.points.size() && why.empty(); ++i)
+        for (int k = 0; k < 3; ++k)
+          if (!near(sx.points[i][k], sy.points[i][k])) why = "spline control points differ";
     }
     if (why.empty() && x.kind == RecordKind::Dwell && std::fabs(x.value - y.value) > 1e-6) why = "dwell times differ";
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&

@@ -1,5 +1,6 @@
 #include "runtime/Geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ncc {
@@ -225,6 +226,68 @@ void polarStep(double &x, double &y, bool incremental, bool hasRadius, double ra
   }
   x = r * std::cos(a);
   y = r * std::sin(a);
+}
+
+SplineCurve::SplineCurve(const MotionRecord &r) : degree_(r.spline().degree) {
+  const SplineData &s = r.spline();
+  size_t n = s.count();
+  knots_ = s.knots.empty() ? splineDefaultKnots(n, degree_) : s.knots;
+  end_ = {r.end[0], r.end[1], r.end[2]};
+  cp_.reserve(n);
+  for (size_t i = 0; i < n; ++i) {
+    Vec3 p = i == 0 ? Vec3{r.start[0], r.start[1], r.start[2]} : i + 1 == n ? end_ : s.points[i - 1];
+    double w = s.weights.empty() ? 1 : s.weights[i];
+    cp_.push_back({p[0] * w, p[1] * w, p[2] * w, w});
+  }
+}
+
+Vec3 SplineCurve::at(double u) const {
+  const int p = degree_;
+  // The span [k_s, k_s+1) holding u; u at (or past) the end uses the last non-empty span.
+  size_t s = (size_t)p;
+  size_t last = cp_.size() - 1;
+  if (u >= knots_[last + 1]) s = last;
+  else
+    while (s < last && knots_[s + 1] <= u) ++s;
+  std::array<std::array<double, 4>, 16> d;
+  for (int j = 0; j <= p; ++j) d[j] = cp_[s - p + j];
+  for (int r = 1; r <= p; ++r)
+    for (int j = p; j >= r; --j) {
+      double a0 = knots_[s - p + j], a1 = knots_[s + 1 + j - r];
+      double alpha = a1 > a0 ? (u - a0) / (a1 - a0) : 0;
+      for (int c = 0; c < 4; ++c) d[j][c] = (1 - alpha) * d[j - 1][c] + alpha * d[j][c];
+    }
+  return {d[p][0] / d[p][3], d[p][1] / d[p][3], d[p][2] / d[p][3]};
+}
+
+double SplineCurve::chordError(double ua, const Vec3 &pa, double ub, const Vec3 &pb) const {
+  Vec3 ch{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+  double len2 = ch[0] * ch[0] + ch[1] * ch[1] + ch[2] * ch[2], worst = 0;
+  for (double f : {0.25, 0.5, 0.75}) {
+    Vec3 q = at(ua + (ub - ua) * f);
+    Vec3 d{q[0] - pa[0], q[1] - pa[1], q[2] - pa[2]};
+    double t = len2 > 0 ? std::clamp((d[0] * ch[0] + d[1] * ch[1] + d[2] * ch[2]) / len2, 0.0, 1.0) : 0;
+    double e = std::hypot(d[0] - t * ch[0], d[1] - t * ch[1], d[2] - t * ch[2]);
+    worst = std::max(worst, e);
+  }
+  return worst;
+}
+
+double splineLength(const MotionRecord &r) {
+  double len = 0;
+  Vec3 p{r.start[0], r.start[1], r.start[2]};
+  SplineCurve(r).flatten(kSplineTolerance, [&](const Vec3 &q) {
+    len += std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+    p = q;
+  });
+  return len;
+}
+
+void splineBounds(const MotionRecord &r, Vec3 &lo, Vec3 &hi) {
+  for (int i = 0; i < 3; ++i) lo[i] = hi[i] = r.start[i];
+  SplineCurve(r).flatten(kSplineTolerance, [&](const Vec3 &q) {
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], q[i]), hi[i] = std::max(hi[i], q[i]);
+  });
 }
 
 }  // namespace ncc

@@ -235,7 +235,9 @@ double Planner::junctionSpeed(const Pending &prev, const Pending &next) const {
   if (prev.stopAfter) return 0;
   double c = dot(prev.nOut, next.nIn);
   if (c >= 1 - 1e-12) return cap;  // tangent
-  double delta = pathMode_ == 2 ? tolerance_ : 0;
+  // Between two chords of a spline the path is the smooth curve, not a corner: the chords'
+  // own deviation stands for it, so the speed follows the curvature (v^2 / R <= a, roughly).
+  double delta = next.inCurve ? kSplineTolerance : pathMode_ == 2 ? tolerance_ : 0;
   double sinHalf = std::sqrt(std::max(0.0, 0.5 * (1 + c)));  // sin of half the inner angle
   if (sinHalf >= 1) return cap;
   double radius = delta * sinHalf / (1 - sinHalf);
@@ -243,7 +245,7 @@ double Planner::junctionSpeed(const Pending &prev, const Pending &next) const {
   return std::min(cap, std::sqrt(a * radius));
 }
 
-void Planner::push(const MotionRecord &r) {
+void Planner::push(const MotionRecord &r, bool inCurve, bool curveGoesOn) {
   if (count_ == ring_.size()) emitFront();  // cannot happen with the pop below; kept as a guard
   Pending &p = at(count_);
   // Reset in place: cheaper than assigning a temporary (one zeroing, no move, no second destructor).
@@ -266,7 +268,8 @@ void Planner::push(const MotionRecord &r) {
   if (!std::isfinite(p.length)) p.length = 0;  // absurd coordinates: no time rather than inf/NaN
   p.nIn = normalized(p.tIn);
   p.nOut = normalized(p.tOut);
-  p.stopAfter = r.exactStop || pathMode_ == 1;
+  p.stopAfter = !curveGoesOn && (r.exactStop || pathMode_ == 1);
+  p.inCurve = inCurve;
   Pending *prev = count_ ? &at(count_ - 1) : nullptr;
   if (p.length < kMinLength) {
     // Zero-length move: transparent to the junction between its neighbours.
@@ -341,6 +344,25 @@ void Planner::record(const MotionRecord &r) {
   case RecordKind::Arc:
     push(r);
     return;
+  case RecordKind::Spline: {
+    // Planned as its chords within kSplineTolerance of the curve (docs/PLANNER.md): each a
+    // segment of kind spline, without the curve data, the last one keeping the exact stop.
+    // One chord behind, so that the last one is known when pushed.
+    MotionRecord piece = r;
+    piece.extra.reset();
+    int pushed = 0;
+    bool have = false;
+    SplineCurve(r).flatten(kSplineTolerance, [&](const Vec3 &q) {
+      if (have) {
+        push(piece, pushed++ > 0, true);
+        piece.start = piece.end;
+      }
+      for (int i = 0; i < 3; ++i) piece.end[i] = q[i];
+      have = true;
+    });
+    if (have) push(piece, pushed > 0, false);
+    return;
+  }
   case RecordKind::Dwell: {
     flush();
     PlannedSegment s;

@@ -90,8 +90,11 @@ private:
     double vJunction = 0;   // entry speed limit from the junction with the previous move
     double vBack = 0;       // backward pass: highest entry speed that can still stop in time
     bool stopAfter = false;
+    bool inCurve = false;   // a spline's chord after its first: the junction is on a smooth curve
   };
-  void push(const MotionRecord &r);
+  // inCurve: the junction before r lies on a spline; curveGoesOn: a spline chord other than the
+  // last (no exact stop after it).
+  void push(const MotionRecord &r, bool inCurve = false, bool curveGoesOn = false);
   void limits(Pending &p) const;
   double junctionSpeed(const Pending &prev, const Pending &next) const;
   void emitFront();

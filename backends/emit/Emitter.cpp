@@ -416,6 +416,13 @@ void Emitter::record(const MotionRecord &r) {
     }
     arc(r);
     break;
+  case RecordKind::Spline:
+    // Neither printer has a spline syntax yet (G5.2 for LinuxCNC, BSPLINE for Sinumerik): refuse
+    // rather than write chords, which would be a silent approximation.
+    diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write a spline: " + printMotionRecord(r),
+                 "unsupported-code");
+    errors_ = true;
+    break;
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:
     addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, st_.toolDigits), r);
