@@ -507,4 +507,21 @@ TEST(CanonDiff, MovesThatStayPutAreNoMotion) {
   EXPECT_FALSE(canonDiff(c, d, CanonDiffOptions(), report));
 }
 
+TEST(CanonDiff, NurbsFeedComparesTheControlPointCount) {
+  // rs274 prints only the count; after it a straight move back to the curve's start still moves.
+  const char *a =
+      "STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "NURBS_FEED(4, ...)\n"
+      "STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n";
+  std::string report;
+  EXPECT_TRUE(canonDiff(a, a, CanonDiffOptions(), report)) << report;
+  EXPECT_NE(report.find("3 motion commands"), std::string::npos) << report;
+  std::string b = a;
+  b.replace(b.find("(4,"), 3, "(3,");
+  EXPECT_FALSE(canonDiff(a, b, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("NURBS control point count differs: 4 vs 3"), std::string::npos) << report;
+  EXPECT_FALSE(canonDiff(a, "NURBS_FEED(x, ...)\n", CanonDiffOptions(), report));
+  EXPECT_NE(report.find("cannot read the arguments of NURBS_FEED"), std::string::npos) << report;
+}
+
 }  // namespace
