@@ -16,6 +16,9 @@ enum class ModeValue : uint8_t {
   Rapid, Linear, ArcCW, ArcCCW, CycleOff,
   Drill, DrillDwell, Peck, PeckChipBreak, Tap, TapLeft, BoreFeed, BoreStop, BoreDwell,
   BoreBack, BoreFine,
+  // LinuxCNC splines: G5 cubic and G5.1 quadratic (one block each; the motion mode before them
+  // stays), G5.2 NURBS control points, G5.3 NURBS end (runtime/ExecutorMotion.cpp)
+  SplineCubic, SplineQuadratic, Nurbs, NurbsEnd,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -42,5 +45,6 @@ bool modeGroupFromName(std::string_view s, ModeGroup &out);
 const ModeValueInfo &modeValueInfo(ModeValue v);
 bool modeValueFromName(std::string_view s, ModeValue &out);
 inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= ModeValue::BoreFine; }
+inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && v <= ModeValue::NurbsEnd; }
 
 }  // namespace ncc
