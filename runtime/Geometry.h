@@ -92,10 +92,10 @@ public:
   double u0() const { return knots_.front(); }
   double u1() const { return knots_.back(); }
   Vec3 at(double u) const;
-  // Calls out(p) for points along the curve after the start (the last one exactly the record's
-  // end) such that no chord strays more than `tol` from the curve (checked at the quarter points
-  // of every chord, spans split at least 4 times and at most 2^14 times, which bounds the work
-  // for absurd curves).
+  // Calls out(p, u) for points p = at(u) along the curve after the start (the last one exactly
+  // the record's end) such that no chord strays more than `tol` from the curve (checked at the quarter points
+  // of every chord, spans split at least 4 times and at most 2^14 times, and at most 2^16 chords
+  // in all, which bounds the work and memory for absurd curves).
   template <class F> void flatten(double tol, F &&out) const {
     for (size_t k = 0; k + 1 < knots_.size(); ++k) {
       double a = knots_[k], b = knots_[k + 1];
@@ -113,23 +113,36 @@ public:
 private:
   template <class F> void refine(double ua, const Vec3 &pa, double ub, const Vec3 &pb, double tol, int depth, F &out) const {
     double um = 0.5 * (ua + ub);
-    if (depth < 12 && chordError(ua, pa, ub, pb) > tol) {
+    if (depth < maxDepth_ && chordError(ua, pa, ub, pb) > tol) {
       Vec3 pm = at(um);
       refine(ua, pa, um, pm, tol, depth + 1, out);
       refine(um, pm, ub, pb, tol, depth + 1, out);
       return;
     }
-    out(ub >= u1() ? end_ : pb);
+    out(ub >= u1() ? end_ : pb, ub);
   }
   double chordError(double ua, const Vec3 &pa, double ub, const Vec3 &pb) const;
   int degree_;
   std::vector<std::array<double, 4>> cp_;  // w*x, w*y, w*z, w
   std::vector<double> knots_;
   Vec3 end_;
+  int maxDepth_ = 12;  // halvings of each quarter span
 };
+// A spline as the planner moves along it: its chords within kSplineTolerance, by arc length.
+struct SplinePath {
+  std::vector<Vec3> pts;     // the start, then the chords' ends (the last one the record's end)
+  std::vector<double> cum;   // curve length at each point (cum[0] = 0): each chord's arc by
+                             // Richardson on its halves, so the length is exact to O(chord^5)
+  Vec3 share{};              // the largest |direction component| of any chord, per axis
+  double maxCurvature = 0;   // 1/mm: the largest 2 sin(turn / 2) / mean chord length at a joint
+  double length() const { return cum.back(); }
+  Vec3 at(double s) const;   // the point at path length s (clamped)
+  Vec3 startTangent() const, endTangent() const;  // unit, along the first and the last chord
+};
+SplinePath splinePath(const MotionRecord &r);
 // Chord tolerance of the flattened curve wherever a spline is sampled (planner, summary, plot).
 constexpr double kSplineTolerance = 0.001;  // mm
-// Length of a spline record's curve (its flattening within kSplineTolerance).
+// Length of a spline record's curve (splinePath's).
 double splineLength(const MotionRecord &r);
 // Axis-aligned bounds (XYZ) of a spline's curve (its flattening).
 void splineBounds(const MotionRecord &r, Vec3 &lo, Vec3 &hi);

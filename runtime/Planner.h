@@ -43,8 +43,9 @@ VelocityProfile planProfile(double len, double v0, double v1, double vmax, doubl
 
 // One planned move (or dwell), handed to listeners in time order.
 struct PlannedSegment {
-  MotionRecord record;    // Rapid, Linear, Arc or Dwell
+  MotionRecord record;    // Rapid, Linear, Arc, Spline or Dwell
   ArcGeometry arc;        // valid for arcs
+  CopyPtr<SplinePath> spline;  // splines: the curve by arc length (null otherwise)
   uint64_t index = 0;     // 0-based count of segments
   double t0 = 0;          // start time, s
   double vmax = 0;        // speed cap of the move, mm/s
@@ -90,11 +91,8 @@ private:
     double vJunction = 0;   // entry speed limit from the junction with the previous move
     double vBack = 0;       // backward pass: highest entry speed that can still stop in time
     bool stopAfter = false;
-    bool inCurve = false;   // a spline's chord after its first: the junction is on a smooth curve
   };
-  // inCurve: the junction before r lies on a spline; curveGoesOn: a spline chord other than the
-  // last (no exact stop after it).
-  void push(const MotionRecord &r, bool inCurve = false, bool curveGoesOn = false);
+  void push(const MotionRecord &r);
   void limits(Pending &p) const;
   double junctionSpeed(const Pending &prev, const Pending &next) const;
   void emitFront();

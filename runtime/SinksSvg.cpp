@@ -90,7 +90,7 @@ void SvgPlot::record(const MotionRecord &r) {
   }
   case RecordKind::Spline:
     add(false, r.start[0], r.start[1], true);
-    SplineCurve(r).flatten(std::max(tol_, kSplineTolerance), [&](const Vec3 &p) { add(false, p[0], p[1], false); });
+    SplineCurve(r).flatten(std::max(tol_, kSplineTolerance), [&](const Vec3 &p, double) { add(false, p[0], p[1], false); });
     return;
   default:
     return;
