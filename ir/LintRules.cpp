@@ -37,7 +37,7 @@ static const LintRule kRules[] = {
     {"arc-invalid", Severity::Error, "executor",
      "arc without centre words, zero radius, centre on the end point"},
     {"spline-invalid", Severity::Error, "executor",
-     "LinuxCNC G5/G5.1/G5.2/G5.3 as rs274 rejects them (missing I J, P Q or weights, too few NURBS control points for the order L, G5.3 without G5.2, motion in Z A B C, outside G17, under cutter compensation) and what ncc refuses where rs274 would drop or garble the curve (a G5.2 sequence not ended by G5.3, G5.2 without P)"},
+     "LinuxCNC G5/G5.1/G5.2/G5.3 as rs274 rejects them (missing I J, P Q or weights, too few NURBS control points for the order L, G5.3 without G5.2, motion in Z A B C, outside G17, under cutter compensation) and what ncc refuses where rs274 would drop or garble the curve (a G5.2 sequence not ended by G5.3, a first G5.2 point without P, offsets or units changed before G5.3)"},
     {"arc-radius-too-small", Severity::Error, "lint / executor",
      "R-form arc with a radius below half the chord by more than rs274's 0.00128 mm; lint also checks arcs the run does not reach, where straight-line code fixes both end points"},
     {"cutcomp-without-d", Severity::Warning, "executor",

@@ -192,6 +192,8 @@ struct Executor::Impl {
     int order = 3;
     std::vector<std::array<double, 3>> points;  // the start first
     std::vector<double> weights;
+    FrameMatrix frame{};  // the program -> machine transform and units when the curve began
+    ModeValue units = ModeValue::MM;
   } nurbs;
   bool cycle(const MachineCmd &c);
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.

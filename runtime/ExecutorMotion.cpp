@@ -338,6 +338,8 @@ bool Executor::Impl::nurbsPoint(const MachineCmd &c) {
   if (!nurbs.open) {
     nurbs = Nurbs{};
     nurbs.open = true;
+    nurbs.frame = lastFrame;
+    nurbs.units = st.units;
     nurbs.points.push_back({st.position[0], st.position[1], st.position[2]});
     nurbs.weights.push_back(!x && p ? c.get(Word::P) : 1.0);
   }
@@ -359,6 +361,14 @@ bool Executor::Impl::nurbsPoint(const MachineCmd &c) {
 
 bool Executor::Impl::nurbsEnd() {
   if (st.motion != ModeValue::Nurbs || !nurbs.open) return error("Cannot use G5.3 without G5.2 first", "spline-invalid");
+  // rs274 keeps the points in program units and converts them at G5.3: a change of offsets or
+  // units in between would move the earlier points. Compensation, plane and frame must still
+  // allow the curve.
+  if (lastFrame != nurbs.frame || st.units != nurbs.units)
+    return error("the coordinate system or the units changed inside a G5.2 NURBS (rs274 would apply the new ones to "
+                 "every control point)",
+                 "spline-invalid");
+  if (!splineAllowed(MachineCmd{}, "G5.3")) return false;
   if (nurbs.points.size() < (size_t)nurbs.order)
     return error("You must specify a number of control points at least equal to the order L = " +
                      std::to_string(nurbs.order),
