@@ -183,6 +183,7 @@ struct Executor::Impl {
   bool bezier(const MachineCmd &c, bool cubic);
   bool nurbsPoint(const MachineCmd &c);
   bool nurbsEnd();
+  bool emitSpline(const std::vector<std::array<double, 3>> &pts, int order, std::vector<double> weights);
   // The checks every spline block passes (plane, compensation, frame, feed).
   bool splineAllowed(const MachineCmd &c, const char *code);
   ModeValue splineReturn = ModeValue::Rapid;

@@ -257,12 +257,11 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
 }
 
 bool Executor::Impl::splineAllowed(const MachineCmd &c, const char *code) {
-  if (c.mask & (wordBit(Word::Z) | wordBit(Word::A) | wordBit(Word::B) | wordBit(Word::C)))
-    return error(st.motion == ModeValue::Nurbs
-                     ? "G5.2 control points take X and Y only (rs274 ignores Z, A, B and C words there)"
-                     : "Splines may not have motion in Z, A, B, or C",
-                 "spline-invalid");
   const bool nurbsBlock = st.motion == ModeValue::Nurbs;
+  if (c.mask & (wordBit(Word::Z) | wordBit(Word::A) | wordBit(Word::B) | wordBit(Word::C)))
+    return error(nurbsBlock ? "G5.2 control points take X and Y only (rs274 ignores Z, A, B and C words there)"
+                            : "Splines may not have motion in Z, A, B, or C",
+                 "spline-invalid");
   if (!compForbids(nurbsBlock ? "Cannot convert spline with cutter radius compensation (rs274 would run a G5.2 NURBS "
                                 "uncompensated)"
                               : "Cannot convert spline with cutter radius compensation"))
@@ -283,17 +282,22 @@ bool Executor::Impl::splineAllowed(const MachineCmd &c, const char *code) {
   return checkFeed(code);
 }
 
-// The Spline record from the start (st.position) through `pts` (machine XYZ; the last one the
-// end) with order `order`; leaves the machine at the end.
-static MotionRecord splineRecord(MotionRecord r, const std::vector<std::array<double, 3>> &pts, int order,
-                                 std::vector<double> weights) {
+// Emits the Spline record from the start (st.position) through `pts` (machine XYZ; the last one
+// the end) of order `order`, and leaves the machine at its end. A curve Motion IR cannot hold
+// (a non-finite point or weight from computed words) is an error.
+bool Executor::Impl::emitSpline(const std::vector<std::array<double, 3>> &pts, int order, std::vector<double> weights) {
+  MotionRecord r = record(RecordKind::Spline);
   SplineData s;
   s.degree = order - 1;
   s.points.assign(pts.begin() + 1, pts.end() - 1);
   s.weights = std::move(weights);
   for (int i = 0; i < 3; ++i) r.end[i] = pts.back()[i];
   r.setSpline(std::move(s));
-  return r;
+  if (std::string why = splineError(r); !why.empty()) return error(why, "spline-invalid");
+  r.exactStop = st.pathMode == ModeValue::ExactStop;
+  r.feed = moveFeed(splineLength(r));
+  st.position = r.end;
+  return emitMove(r);
 }
 
 bool Executor::Impl::bezier(const MachineCmd &c, bool cubic) {
@@ -316,11 +320,7 @@ bool Executor::Impl::bezier(const MachineCmd &c, bool cubic) {
     splineIJ = {-c.get(Word::P), -c.get(Word::Q)};
   }
   pts.push_back(e);
-  MotionRecord r = splineRecord(record(RecordKind::Spline), pts, cubic ? 4 : 3, {});
-  r.exactStop = st.pathMode == ModeValue::ExactStop;
-  r.feed = moveFeed(splineLength(r));
-  st.position = r.end;
-  return emitMove(r);
+  return emitSpline(pts, cubic ? 4 : 3, {});
 }
 
 bool Executor::Impl::nurbsPoint(const MachineCmd &c) {
@@ -341,7 +341,7 @@ bool Executor::Impl::nurbsPoint(const MachineCmd &c) {
     nurbs.frame = lastFrame;
     nurbs.units = st.units;
     nurbs.points.push_back({st.position[0], st.position[1], st.position[2]});
-    nurbs.weights.push_back(!x && p ? c.get(Word::P) : 1.0);
+    nurbs.weights.push_back(!x && p && c.get(Word::P) > 0 ? c.get(Word::P) : 1.0);  // rs274: else 1
   }
   if (c.has(Word::L)) {
     double l = c.get(Word::L);
@@ -373,12 +373,9 @@ bool Executor::Impl::nurbsEnd() {
     return error("You must specify a number of control points at least equal to the order L = " +
                      std::to_string(nurbs.order),
                  "spline-invalid");
-  MotionRecord r = splineRecord(record(RecordKind::Spline), nurbs.points, nurbs.order, std::move(nurbs.weights));
+  Nurbs n = std::move(nurbs);
   nurbs = Nurbs{};
-  r.exactStop = st.pathMode == ModeValue::ExactStop;
-  r.feed = moveFeed(splineLength(r));
-  st.position = r.end;
-  return emitMove(r);
+  return emitSpline(n.points, n.order, std::move(n.weights));
 }
 
 bool Executor::Impl::execHome(const MachineCmd &c) {
