@@ -21,6 +21,9 @@ enum class ModeValue : uint8_t {
   // Fanuc's G80 (cycles are group 09, beside group 01): the cycle ends and the G0-G3 mode that
   // was active before it resumes. RS274NGC's G80 is CycleOff: no motion mode until one is given.
   CycleCancel,
+  // LinuxCNC splines: G5 cubic and G5.1 quadratic (one block each; the motion mode before them
+  // stays), G5.2 NURBS control points, G5.3 NURBS end (runtime/ExecutorMotion.cpp)
+  SplineCubic, SplineQuadratic, Nurbs, NurbsEnd,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -48,5 +51,6 @@ const ModeValueInfo &modeValueInfo(ModeValue v);
 bool modeValueFromName(std::string_view s, ModeValue &out);
 inline bool isPathMotion(ModeValue v) { return v <= ModeValue::ArcTangent; }
 inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= ModeValue::BoreFine; }
+inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && v <= ModeValue::NurbsEnd; }
 
 }  // namespace ncc

@@ -8,7 +8,7 @@ namespace ncc {
 
 static bool isPath(const MotionRecord &r) {
   return r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-         r.kind == RecordKind::Dwell;
+         r.kind == RecordKind::Spline || r.kind == RecordKind::Dwell;
 }
 
 // Zero-length moves carry no path: translators may drop them.
@@ -44,6 +44,24 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
       auto nx = x.arcNormal(), ny = y.arcNormal();
       for (int k = 0; k < 3 && why.empty(); ++k)
         if (std::fabs(nx[k] - ny[k]) > 1e-9) why = "arc plane normals differ";
+    }
+    if (why.empty() && x.kind == RecordKind::Spline) {
+      const SplineData &sx = x.spline(), &sy = y.spline();
+      auto near = [&](double u, double v) { return std::fabs(u - v) <= opts.tolerance; };
+      // Weights and knots have no unit: relative, within what a printed 9-decimal value keeps.
+      auto same = [](const std::vector<double> &u, const std::vector<double> &v, size_t n) {
+        for (size_t i = 0; i < n; ++i) {
+          double a = u.empty() ? 1 : u[i], b = v.empty() ? 1 : v[i];
+          if (std::fabs(a - b) > 1e-8 * std::max(1.0, std::fabs(a))) return false;
+        }
+        return true;
+      };
+      if (sx.degree != sy.degree || sx.points.size() != sy.points.size() || !same(sx.weights, sy.weights, sx.count()) ||
+          sx.knots.size() != sy.knots.size() || !same(sx.knots, sy.knots, sx.knots.size()))
+        why = "spline degree, control point count, weights or knots differ";
+      for (size_t i = 0; i < sx.points.size() && why.empty(); ++i)
+        for (int k = 0; k < 3; ++k)
+          if (!near(sx.points[i][k], sy.points[i][k])) why = "spline control points differ";
     }
     if (why.empty() && x.kind == RecordKind::Dwell && std::fabs(x.value - y.value) > 1e-6) why = "dwell times differ";
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&

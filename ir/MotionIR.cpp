@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ncc {
 
@@ -14,7 +15,7 @@ const char *recordKindName(RecordKind k) {
                                 "coolant_mist", "feed_rate",     "feed_mode",    "path_mode",
                                 "plane",        "comment",       "message",      "optional_stop",
                                 "program_stop", "program_end",   "aux",          "cycle_begin",
-                                "cycle_end",    "frame_change"};
+                                "cycle_end",    "frame_change",  "spline"};
   static_assert(sizeof(names) / sizeof(names[0]) == (size_t)RecordKind::Count);
   return names[(unsigned)k];
 }
@@ -84,6 +85,58 @@ const double *MotionRecord::param(std::string_view key) const {
   return nullptr;
 }
 
+std::vector<double> splineDefaultKnots(size_t count, int degree) {
+  std::vector<double> k;
+  size_t order = (size_t)degree + 1;
+  for (size_t i = 0; i < count + order; ++i) k.push_back(i < order ? 0.0 : i < count ? double(i - order + 1) : double(count - order + 1));
+  return k;
+}
+
+std::string splineError(const MotionRecord &r) {
+  const SplineData &s = r.spline();
+  size_t n = s.count();
+  if (s.degree < 1 || s.degree > 15) return fmt::format("the spline degree {} is not between 1 and 15", s.degree);
+  if (n < (size_t)s.degree + 1)
+    return fmt::format("a spline of degree {} needs at least {} control points, not {}", s.degree, s.degree + 1, n);
+  for (auto &p : s.points)
+    for (double v : p)
+      if (!std::isfinite(v)) return "a spline control point is not finite";
+  if (!s.weights.empty()) {
+    if (s.weights.size() != n) return fmt::format("a spline with {} control points needs {} weights, not {}", n, n, s.weights.size());
+    for (double w : s.weights)
+      if (!(w > 0) || !std::isfinite(w)) return fmt::format("a spline weight must be positive and finite, not {}", w);
+  }
+  if (!s.knots.empty()) {
+    size_t want = n + s.degree + 1;
+    if (s.knots.size() != want) return fmt::format("a spline with {} control points of degree {} needs {} knots, not {}", n, s.degree, want, s.knots.size());
+    for (size_t i = 0; i < want; ++i) {
+      if (!std::isfinite(s.knots[i])) return "a spline knot is not finite";
+      if (i && s.knots[i] < s.knots[i - 1]) return "the spline knots must not decrease";
+    }
+    // Clamped: the curve starts at the first control point and ends at the last, as the record's
+    // start and end say.
+    for (int i = 1; i <= s.degree; ++i)
+      if (s.knots[i] != s.knots[0] || s.knots[want - 1 - i] != s.knots[want - 1])
+        return fmt::format("the spline knots must repeat the first and the last value {} times (a clamped curve)", s.degree + 1);
+    if (!(s.knots[want - 1] > s.knots[0])) return "the spline knots must span a non-empty interval";
+  }
+  for (int i = 3; i < kAxes; ++i)
+    if (r.start[i] != r.end[i]) return "a spline moves X, Y and Z only, not A, B or C";
+  return {};
+}
+
+const SplineData &MotionRecord::spline() const {
+  static const SplineData none;
+  return extra.get() ? extra.get()->spline : none;
+}
+
+void MotionRecord::setSpline(SplineData s) {
+  if (s.weights.size() == s.count() && std::all_of(s.weights.begin(), s.weights.end(), [](double w) { return w == 1; }))
+    s.weights.clear();
+  if (!s.knots.empty() && s.knots == splineDefaultKnots(s.count(), s.degree)) s.knots.clear();
+  extra.make().spline = std::move(s);
+}
+
 void appendMotionRecord(std::string &s, const MotionRecord &r) {
   auto out = std::back_inserter(s);
   s += recordKindName(r.kind);
@@ -113,6 +166,23 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
     }
     fmt::format_to(out, " turns={} F{}", r.turns, r.feed);
     break;
+  case RecordKind::Spline: {
+    axes(r.end);
+    const SplineData &sp = r.spline();
+    fmt::format_to(out, " degree={} points=(", sp.degree);
+    for (auto &p : sp.points) fmt::format_to(out, "{}({}, {}, {})", &p == sp.points.data() ? "" : ", ", p[0], p[1], p[2]);
+    s += ')';
+    auto list = [&](const char *key, const std::vector<double> &v) {
+      if (v.empty()) return;
+      fmt::format_to(out, " {}=(", key);
+      for (size_t i = 0; i < v.size(); ++i) fmt::format_to(out, "{}{}", i ? ", " : "", v[i]);
+      s += ')';
+    };
+    list("weights", sp.weights);
+    list("knots", sp.knots);
+    fmt::format_to(out, " F{}", r.feed);
+    break;
+  }
   case RecordKind::Comment:
   case RecordKind::Message:
     s += ' ';

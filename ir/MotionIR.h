@@ -49,6 +49,7 @@ enum class RecordKind : uint8_t {
   CycleBegin,    // a canned cycle's expansion follows: text the cycle (`iso.G81`), params its words
   CycleEnd,      // closes the innermost CycleBegin
   FrameChange,   // the work->machine transform changed: params m00..m23, text what changed (`G54`)
+  Spline,        // polynomial or NURBS curve fed to `end` at `feed`: spline() (SplineData)
   Count
 };
 
@@ -64,12 +65,34 @@ struct NamedNumber {
 };
 bool isNamedNumberKey(std::string_view key);
 
+// The curve of a Spline record: a clamped B-spline (rational when weighted) of `degree` whose
+// control points are the record's start, `points`, then its end (machine XYZ, as every record's
+// positions). Every dialect's spline maps onto it: LinuxCNC G5 (cubic Bezier: degree 3, two inner
+// points), G5.1 (quadratic, one), G5.2 (NURBS of order L, weights P), Sinumerik BSPLINE (degree
+// SD, weights PW, knots PL), Heidenhain SPL and CLData NURBS (explicit knots and weights).
+struct SplineData {
+  int degree = 3;
+  std::vector<std::array<double, 3>> points;  // the inner control points, in order
+  std::vector<double> weights;  // empty: all 1; else one per control point, the start's first
+  std::vector<double> knots;    // empty: splineDefaultKnots; else count + degree + 1 values
+  size_t count() const { return points.size() + 2; }  // control points with start and end
+};
+// The clamped uniform knot vector rs274 uses (knot_vector_creator): degree + 1 zeros, then
+// 1, 2, ..., then degree + 1 copies of count - degree.
+std::vector<double> splineDefaultKnots(size_t count, int degree);
+// Why the record's spline is not a valid curve (empty when it is): degree >= 1, enough points,
+// finite positive weights, a non-decreasing clamped knot vector of the right length, no motion
+// of A, B or C (a spline moves the tool point only).
+struct MotionRecord;
+std::string splineError(const MotionRecord &r);
+
 // The rarely used content of a record, kept out of line so that ordinary records (every move
 // of a program) stay small and copy as before: a tilted arc's normal, the named numbers.
 struct MotionExtra {
   bool hasNormal = false;
   std::array<double, 3> normal{};  // unit normal of a tilted arc (see MotionRecord::arcNormal)
   std::vector<NamedNumber> params;
+  SplineData spline;  // Spline records
 };
 
 // A copyable owning pointer (deep copy), null by default: keeps the rarely used part of a hot,
@@ -119,7 +142,7 @@ struct MotionRecord {
   double value = 0;
   double value2 = 0;        // PathMode continuous: naive-CAM tolerance (G64 Q), mm
   std::string text;
-  MotionExtraPtr extra;     // null unless tiltedArc() or params() (see MotionExtra)
+  MotionExtraPtr extra;     // null unless tiltedArc(), params() or a spline (see MotionExtra)
 
   // Arcs: the unit normal of the arc's plane; `turns` > 0 is counter-clockwise seen from its
   // tip (a right-handed rotation about it). Unless set, the plane's own axis: +Z for XY (G17),
@@ -129,6 +152,11 @@ struct MotionRecord {
   bool tiltedArc() const { return extra.get() && extra.get()->hasNormal; }
   // Sets the normal; the plane's own axis (exactly) clears it, so a record has one spelling.
   void setNormal(const std::array<double, 3> &n);
+  // Spline records: the curve (an empty degree-3 curve, a straight line, when never set).
+  const SplineData &spline() const;
+  // Sets the curve; unit weights and the default knot vector are dropped, so one curve has one
+  // spelling (as the text form prints it).
+  void setSpline(SplineData s);
   // CycleBegin / FrameChange: the named numbers in order.
   const std::vector<NamedNumber> &params() const;
   // Appends (or replaces) a named number; false when the key is not a valid key.

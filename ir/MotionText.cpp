@@ -94,6 +94,20 @@ public:
     }
     return expect(")", "')'");
   }
+  // `(a, b, ...)` numbers, or `(t, t, ...)` triples when `triples`; may be empty: `()`.
+  template <class T> bool list(std::vector<T> &out, bool (LineParser::*item)(T &)) {
+    if (!expect("(", "'('")) return false;
+    skipBlanks();
+    if (peek(")")) return ++p_, true;
+    while (true) {
+      skipBlanks();
+      out.emplace_back();
+      if (!(this->*item)(out.back())) return false;
+      skipBlanks();
+      if (peek(")")) return ++p_, true;
+      if (!expect(",", "',' or ')'")) return false;
+    }
+  }
   bool axes(AxisVec &v) {
     static const char L[] = "XYZABC";
     for (int i = 0; i < kAxes; ++i) {
@@ -240,6 +254,26 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
     if (!p.expect("F", "'F' and the feed") || !p.number(r.feed)) return false;
     break;
   }
+  case RecordKind::Spline: {
+    SplineData sp;
+    int64_t degree;
+    if (!p.axes(r.end) || !p.expect("degree=", "'degree='")) return false;
+    size_t db = p.pos();
+    if (!p.integer(degree)) return false;
+    if (degree < 1 || degree > 15) return p.error(db, fmt::format("the spline degree {} is not between 1 and 15", degree));
+    sp.degree = (int)degree;
+    if (!p.expect("points=", "'points='") || !p.list(sp.points, &LineParser::triple)) return false;
+    p.skipBlanks();
+    if (p.peek("weights=") && !(p.expect("weights=", "'weights='") && p.list(sp.weights, &LineParser::number)))
+      return false;
+    p.skipBlanks();
+    if (p.peek("knots=") && !(p.expect("knots=", "'knots='") && p.list(sp.knots, &LineParser::number)))
+      return false;
+    if (!p.expect("F", "'F' and the feed") || !p.number(r.feed)) return false;
+    r.setSpline(std::move(sp));
+    if (std::string why = splineError(r); !why.empty()) return p.error(at, why);
+    break;
+  }
   case RecordKind::Comment:
   case RecordKind::Message:
     if (!p.string(r.text)) return false;
@@ -291,7 +325,9 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
   }
   }
   if (!p.tail(r)) return false;
-  if (r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc) st.pos = r.end;
+  if (r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
+      r.kind == RecordKind::Spline)
+    st.pos = r.end;
   return true;
 }
 

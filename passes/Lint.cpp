@@ -162,7 +162,10 @@ private:
       for (auto &a : op.args) {
         ModeValue v;
         if (!a.value || !modeValueFromName(a.value->str, v)) continue;
-        if (a.key == "motion") motion_ = v;
+        // LinuxCNC G5/G5.1 give the motion mode before them back after their block.
+        if (a.key == "motion") {
+          if (v != ModeValue::SplineCubic && v != ModeValue::SplineQuadratic) motion_ = v;
+        }
         else if (a.key == "plane") plane_ = v;
         else if (a.key == "units") units_ = v, forget();
         else if (a.key == "distance") distance_ = v;

@@ -95,12 +95,12 @@ template <size_t N> int numbers(std::string_view args, std::array<double, N> &ou
   return count;
 }
 
-enum class MotionKind { Traverse, Feed, Arc, Probe, RigidTap, Dwell };
+enum class MotionKind { Traverse, Feed, Arc, Probe, RigidTap, Dwell, Nurbs };
 
 struct Motion {
   MotionKind kind;
   CanonLine line;
-  std::array<double, 6> pos{};  // machine mm / degrees (Dwell: pos[0] = seconds)
+  std::array<double, 6> pos{};  // machine mm / degrees (Dwell: pos[0] = seconds, Nurbs: the count)
   std::array<double, 2> center{};
   int plane = 0, rot = 0;
   double unitScale = 1;
@@ -201,6 +201,15 @@ bool MachineReader::next(Motion &m, std::string &err) {
       m.center = {cm[ax[0]], cm[ax[1]]};
       m.rot = (int)std::lround(v[4]);
       m.plane = plane_;
+    } else if (nm == "NURBS_FEED") {
+      // rs274 prints only the number of control points; the curve's end shows in the next
+      // motion's position.
+      size_t comma = l.args.find(',');
+      std::array<double, 1> c{};
+      if (comma == std::string_view::npos || numbers(l.args.substr(0, comma), c, ok) != 1 || !ok) return bad();
+      m = Motion();
+      m.kind = MotionKind::Nurbs;
+      m.pos[0] = c[0];
     } else if (nm == "DWELL") {
       if (numbers(l.args, v, ok) < 1 || !ok) return bad();
       m = Motion();
@@ -209,7 +218,9 @@ bool MachineReader::next(Motion &m, std::string &err) {
     } else {
       continue;
     }
-    if (m.kind != MotionKind::Dwell) {
+    if (m.kind == MotionKind::Nurbs) {
+      pos_.fill(NAN);  // unknown end: the next straight move is motion whatever its target
+    } else if (m.kind != MotionKind::Dwell) {
       // A straight move to where the machine already is moves nothing (rs274 prints one for a
       // bare `G0` after a tool change): not motion at machine level.
       // Positions computed through a rotation differ in the last bits: "where it is" within 1e-9.
@@ -225,7 +236,8 @@ bool MachineReader::next(Motion &m, std::string &err) {
   return false;
 }
 
-const char *kMotionNames[] = {"STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED", "STRAIGHT_PROBE", "RIGID_TAP", "DWELL"};
+const char *kMotionNames[] = {"STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED", "STRAIGHT_PROBE", "RIGID_TAP", "DWELL",
+                              "NURBS_FEED"};
 const char *kAxisNames[] = {"X", "Y", "Z", "A", "B", "C"};
 const char *kPlaneNames[] = {"XY", "XZ", "YZ"};
 
@@ -244,6 +256,11 @@ std::string compareMotion(const Motion &a, const Motion &b, double tol) {
   if (a.kind != b.kind)
     return std::string("command differs: ") + kMotionNames[(int)a.kind] + " vs " + kMotionNames[(int)b.kind];
   double t = tol * std::max(a.unitScale, b.unitScale) + 1e-9;
+  if (a.kind == MotionKind::Nurbs) {
+    if (a.pos[0] != b.pos[0])
+      return "NURBS control point count differs: " + std::to_string((long)a.pos[0]) + " vs " + std::to_string((long)b.pos[0]);
+    return {};
+  }
   if (a.kind == MotionKind::Dwell) {
     if (std::fabs(a.pos[0] - b.pos[0]) > tol + 1e-9)
       return "dwell differs: " + fmt(a.pos[0]) + " vs " + fmt(b.pos[0]) + " s";

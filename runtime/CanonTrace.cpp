@@ -171,6 +171,11 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     end();
     break;
   }
+  case RecordKind::Spline:
+    // rs274's standalone canon prints only the number of control points (start and end
+    // included) for G5, G5.1 and G5.2/G5.3 alike; the curve itself is in the Motion IR.
+    line(n, "NURBS_FEED(" + std::to_string(r.spline().count()) + ", ...)");
+    break;
   case RecordKind::Dwell:
     begin(n);
     buf_.append("DWELL(");

@@ -175,6 +175,11 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
     case ModeGroup::Motion:
       if (v == ModeValue::CycleCancel) v = st.pathMotion;
       if (isPathMotion(v)) st.pathMotion = v;
+      if (nurbs.open && v != ModeValue::Nurbs && v != ModeValue::NurbsEnd)
+        return error("a G5.2 NURBS must be ended with G5.3 before another motion (rs274 would drop its control points)",
+                     "spline-invalid");
+      if (v == ModeValue::NurbsEnd && !nurbsEnd()) return false;
+      if (v == ModeValue::SplineCubic || v == ModeValue::SplineQuadratic) splineReturn = st.motion;
       st.motion = v;
       if (!isCycleMotion(v)) {
         // Leaving the cycles: the next cycle takes a new initial level.
@@ -537,6 +542,9 @@ bool Executor::Impl::execStop(const MachineCmd &c) {
   case StopKind::Optional: emit(record(RecordKind::OptionalStop)); break;
   case StopKind::End:
   case StopKind::EndRewind: {
+    if (nurbs.open)
+      return error("a G5.2 NURBS must be ended with G5.3 before the program ends (rs274 would drop its control points)",
+                   "spline-invalid");
     cornerFlush("no move follows");
     comp.stop();  // flush the pending compensated move
     compExit = false;
@@ -754,7 +762,7 @@ bool Executor::readSystem(SysVar v, double &out) const {
         {ModeValue::DrillDwell, 820},  {ModeValue::Peck, 830},       {ModeValue::Tap, 840},
         {ModeValue::BoreFeed, 850},    {ModeValue::BoreStop, 860},   {ModeValue::BoreBack, 870},
         {ModeValue::BoreDwell, 890},   {ModeValue::XY, 170},         {ModeValue::ZX, 180},
-        {ModeValue::YZ, 190}};
+        {ModeValue::YZ, 190},          {ModeValue::Nurbs, 520}};
     for (auto &c : kCodes)
       if (c.m == m) return c.code;
     return -1;

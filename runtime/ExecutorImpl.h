@@ -208,6 +208,25 @@ struct Executor::Impl {
   void notePathTangent(const MotionRecord &r);
   bool haveTangent = false;
   Vec3 pathTangent{};  // unit direction the path leaves its last point (machine XYZ)
+  // LinuxCNC splines (ExecutorMotion.cpp), as rs274 (2.9) reads them: G5/G5.1 are one Spline
+  // record each and give the motion mode back (`splineReturn`: rs274 keeps its mode); G5.2
+  // blocks collect `nurbs` control points (machine XYZ) until G5.3 emits the curve.
+  bool bezier(const MachineCmd &c, bool cubic);
+  bool nurbsPoint(const MachineCmd &c);
+  bool nurbsEnd();
+  bool emitSpline(const std::vector<std::array<double, 3>> &pts, int order, std::vector<double> weights);
+  // The checks every spline block passes (plane, compensation, frame, feed).
+  bool splineAllowed(const MachineCmd &c, const char *code);
+  ModeValue splineReturn = ModeValue::Rapid;
+  std::array<double, 2> splineIJ{};  // G5 without I J: rs274's cycle_i/j, -P -Q of the last G5 (program units)
+  struct Nurbs {
+    bool open = false;
+    int order = 3;
+    std::vector<std::array<double, 3>> points;  // the start first
+    std::vector<double> weights;
+    FrameMatrix frame{};  // the program -> machine transform and units when the curve began
+    ModeValue units = ModeValue::MM;
+  } nurbs;
   bool cycle(const MachineCmd &c);
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
   bool cycleFrameOk();

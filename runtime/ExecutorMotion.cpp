@@ -119,6 +119,12 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::CycleOff:
     if (!(c.mask & kTargetMask)) return true;
     return error("Cannot use axis values with G80", "motion-mode-none");
+  case ModeValue::SplineCubic:
+  case ModeValue::SplineQuadratic: return bezier(c, st.motion == ModeValue::SplineCubic);
+  case ModeValue::Nurbs: return nurbsPoint(c);
+  case ModeValue::NurbsEnd:  // rs274 has no motion mode after G5.3
+    if (!(c.mask & kTargetMask)) return true;
+    return error("Cannot use axis values without a g code that uses them", "motion-mode-none");
   default:
     if (!compForbids("Cannot use canned cycles with cutter compensation on")) return false;
     if (c.sub || c.sub2) return error("per-axis absolute/incremental words in a canned cycle are not supported", "unsupported-code");
@@ -250,6 +256,128 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   inverseTimeRate(r.feed);
   st.position = end;
   return emitMove(r);
+}
+
+bool Executor::Impl::splineAllowed(const MachineCmd &c, const char *code) {
+  const bool nurbsBlock = st.motion == ModeValue::Nurbs;
+  if (c.mask & (wordBit(Word::Z) | wordBit(Word::A) | wordBit(Word::B) | wordBit(Word::C)))
+    return error(nurbsBlock ? "G5.2 control points take X and Y only (rs274 ignores Z, A, B and C words there)"
+                            : "Splines may not have motion in Z, A, B, or C",
+                 "spline-invalid");
+  if (!compForbids(nurbsBlock ? "Cannot convert spline with cutter radius compensation (rs274 would run a G5.2 NURBS "
+                                "uncompensated)"
+                              : "Cannot convert spline with cutter radius compensation"))
+    return false;
+  if (compExit) return error("The move just after exiting cutter compensation mode must be straight, not a spline", "cutcomp-exit-arc");
+  if (plane() != Plane::XY)
+    return error(nurbsBlock ? "Splines must be in the XY plane (rs274 would draw a G5.2 NURBS in XY whatever the plane)"
+                            : "Splines must be in the XY plane",
+                 "spline-invalid");
+  if (linearFrame())
+    return error("splines under a rotated, scaled or mirrored coordinate system are not supported", "unsupported-code");
+  if (st.feedMode == ModeValue::InverseTime)
+    return error(std::string(code) + " in inverse time feed (G93) is not supported: rs274 gives a spline no feed rate",
+                 "unsupported-code");
+  if (st.feedMode == ModeValue::PerMinute && !(feedMM > 0))  // rs274's messages
+    return error(nurbsBlock ? "Cannot make a NURBS with 0 feedrate" : "Cannot make arc with zero feed rate",
+                 "motion-without-feed");
+  return checkFeed(code);
+}
+
+// Emits the Spline record from the start (st.position) through `pts` (machine XYZ; the last one
+// the end) of order `order`, and leaves the machine at its end. A curve Motion IR cannot hold
+// (a non-finite point or weight from computed words) is an error.
+bool Executor::Impl::emitSpline(const std::vector<std::array<double, 3>> &pts, int order, std::vector<double> weights) {
+  MotionRecord r = record(RecordKind::Spline);
+  SplineData s;
+  s.degree = order - 1;
+  s.points.assign(pts.begin() + 1, pts.end() - 1);
+  s.weights = std::move(weights);
+  for (int i = 0; i < 3; ++i) r.end[i] = pts.back()[i];
+  r.setSpline(std::move(s));
+  if (std::string why = splineError(r); !why.empty()) return error(why, "spline-invalid");
+  r.exactStop = st.pathMode == ModeValue::ExactStop;
+  r.feed = moveFeed(splineLength(r));
+  st.position = r.end;
+  return emitMove(r);
+}
+
+bool Executor::Impl::bezier(const MachineCmd &c, bool cubic) {
+  const char *code = cubic ? "G5" : "G5.1";
+  st.motion = splineReturn;
+  if (!(c.mask & kTargetMask)) return error("All axes missing with motion code", "spline-invalid");
+  if (!splineAllowed(c, code)) return false;
+  const bool i = c.has(Word::I), j = c.has(Word::J);
+  if (!cubic && !(i && j)) return error("Must specify both I and J with G5.1", "spline-invalid");
+  if (i != j) return error("Must specify both I and J, or neither", "spline-invalid");
+  if (cubic && !(c.has(Word::P) && c.has(Word::Q))) return error("Must specify both P and Q with G5", "spline-invalid");
+  // Offsets in program units, translated like the positions (no frame turns them: splineAllowed).
+  const double k = scale();
+  const AxisVec end = target(c);
+  std::array<double, 3> s{st.position[0], st.position[1], st.position[2]}, e{end[0], end[1], end[2]};
+  double i1 = i ? c.get(Word::I) : splineIJ[0], j1 = i ? c.get(Word::J) : splineIJ[1];
+  std::vector<std::array<double, 3>> pts{s, {s[0] + i1 * k, s[1] + j1 * k, s[2]}};
+  if (cubic) {
+    pts.push_back({e[0] + c.get(Word::P) * k, e[1] + c.get(Word::Q) * k, e[2]});
+    splineIJ = {-c.get(Word::P), -c.get(Word::Q)};
+  }
+  pts.push_back(e);
+  return emitSpline(pts, cubic ? 4 : 3, {});
+}
+
+bool Executor::Impl::nurbsPoint(const MachineCmd &c) {
+  if (!splineAllowed(c, "G5.2")) return false;
+  const bool x = c.has(Word::X), y = c.has(Word::Y), p = c.has(Word::P);
+  if (x != y) return error("You must specify both X and Y coordinates for Control Points", "spline-invalid");
+  if (!x && p && nurbs.open) return error("Can specify P without X and Y only for the first control point", "spline-invalid");
+  // rs274 checks P only once the curve has points: a first G5.2 X Y without P gets the
+  // weight -1 there, which ncc refuses.
+  if (x && !(p && c.get(Word::P) > 0))
+    return error(nurbs.open || p ? "Must specify positive weight P for every Control Point"
+                                 : "Must specify positive weight P for every Control Point (rs274 gives a first point "
+                                   "without P the weight -1)",
+                 "spline-invalid");
+  if (!nurbs.open) {
+    nurbs = Nurbs{};
+    nurbs.open = true;
+    nurbs.frame = lastFrame;
+    nurbs.units = st.units;
+    nurbs.points.push_back({st.position[0], st.position[1], st.position[2]});
+    nurbs.weights.push_back(!x && p && c.get(Word::P) > 0 ? c.get(Word::P) : 1.0);  // rs274: else 1
+  }
+  if (c.has(Word::L)) {
+    double l = c.get(Word::L);
+    if (l != std::floor(l)) return error("L value not an integer with G5.2", "spline-invalid");
+    if (l > 16) return error("G5.2 L (the NURBS order) above 16 is not supported", "unsupported-code");
+    if (l > 3) nurbs.order = (int)l;  // rs274: L <= 3 keeps the order 3
+  }
+  if (x) {
+    // rs274 keeps the current position at the curve's start until G5.3, so G91 control points
+    // are relative to the start: target() does the same.
+    AxisVec t = target(c);
+    nurbs.points.push_back({t[0], t[1], t[2]});
+    nurbs.weights.push_back(c.get(Word::P));
+  }
+  return true;
+}
+
+bool Executor::Impl::nurbsEnd() {
+  if (st.motion != ModeValue::Nurbs || !nurbs.open) return error("Cannot use G5.3 without G5.2 first", "spline-invalid");
+  // rs274 keeps the points in program units and converts them at G5.3: a change of offsets or
+  // units in between would move the earlier points. Compensation, plane and frame must still
+  // allow the curve.
+  if (lastFrame != nurbs.frame || st.units != nurbs.units)
+    return error("the coordinate system or the units changed inside a G5.2 NURBS (rs274 would apply the new ones to "
+                 "every control point)",
+                 "spline-invalid");
+  if (!splineAllowed(MachineCmd{}, "G5.3")) return false;
+  if (nurbs.points.size() < (size_t)nurbs.order)
+    return error("You must specify a number of control points at least equal to the order L = " +
+                     std::to_string(nurbs.order),
+                 "spline-invalid");
+  Nurbs n = std::move(nurbs);
+  nurbs = Nurbs{};
+  return emitSpline(n.points, n.order, std::move(n.weights));
 }
 
 bool Executor::Impl::execHome(const MachineCmd &c) {

@@ -1,5 +1,6 @@
 #include "runtime/Geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ncc {
@@ -226,6 +227,120 @@ void polarStep(double &x, double &y, bool incremental, bool hasRadius, double ra
   }
   x = r * std::cos(a);
   y = r * std::sin(a);
+}
+
+SplineCurve::SplineCurve(const MotionRecord &r) : degree_(r.spline().degree) {
+  const SplineData &s = r.spline();
+  size_t n = s.count();
+  knots_ = s.knots.empty() ? splineDefaultKnots(n, degree_) : s.knots;
+  end_ = {r.end[0], r.end[1], r.end[2]};
+  cp_.reserve(n);
+  for (size_t i = 0; i < n; ++i) {
+    Vec3 p = i == 0 ? Vec3{r.start[0], r.start[1], r.start[2]} : i + 1 == n ? end_ : s.points[i - 1];
+    double w = s.weights.empty() ? 1 : s.weights[i];
+    cp_.push_back({p[0] * w, p[1] * w, p[2] * w, w});
+  }
+  size_t spans = 0;
+  for (size_t k = 0; k + 1 < knots_.size(); ++k) spans += knots_[k + 1] > knots_[k];
+  while (maxDepth_ > 0 && (spans << (maxDepth_ + 2)) > (size_t{1} << 16)) --maxDepth_;
+}
+
+Vec3 SplineCurve::at(double u) const {
+  const int p = degree_;
+  // The span [k_s, k_s+1) holding u; u at (or past) the end uses the last non-empty span.
+  size_t s = (size_t)p;
+  size_t last = cp_.size() - 1;
+  if (u >= knots_[last + 1]) s = last;
+  else
+    while (s < last && knots_[s + 1] <= u) ++s;
+  std::array<std::array<double, 4>, 16> d;
+  for (int j = 0; j <= p; ++j) d[j] = cp_[s - p + j];
+  for (int r = 1; r <= p; ++r)
+    for (int j = p; j >= r; --j) {
+      double a0 = knots_[s - p + j], a1 = knots_[s + 1 + j - r];
+      double alpha = a1 > a0 ? (u - a0) / (a1 - a0) : 0;
+      for (int c = 0; c < 4; ++c) d[j][c] = (1 - alpha) * d[j - 1][c] + alpha * d[j][c];
+    }
+  return {d[p][0] / d[p][3], d[p][1] / d[p][3], d[p][2] / d[p][3]};
+}
+
+double SplineCurve::chordError(double ua, const Vec3 &pa, double ub, const Vec3 &pb) const {
+  Vec3 ch{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+  double len2 = ch[0] * ch[0] + ch[1] * ch[1] + ch[2] * ch[2], worst = 0;
+  for (double f : {0.25, 0.5, 0.75}) {
+    Vec3 q = at(ua + (ub - ua) * f);
+    Vec3 d{q[0] - pa[0], q[1] - pa[1], q[2] - pa[2]};
+    double t = len2 > 0 ? std::clamp((d[0] * ch[0] + d[1] * ch[1] + d[2] * ch[2]) / len2, 0.0, 1.0) : 0;
+    double e = std::hypot(d[0] - t * ch[0], d[1] - t * ch[1], d[2] - t * ch[2]);
+    worst = std::max(worst, e);
+  }
+  return worst;
+}
+
+double splineLength(const MotionRecord &r) { return splinePath(r).length(); }
+
+void splineBounds(const MotionRecord &r, Vec3 &lo, Vec3 &hi) {
+  for (int i = 0; i < 3; ++i) lo[i] = hi[i] = r.start[i];
+  SplineCurve(r).flatten(kSplineTolerance, [&](const Vec3 &q, double) {
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], q[i]), hi[i] = std::max(hi[i], q[i]);
+  });
+}
+
+static Vec3 unitOf(const Vec3 &a, const Vec3 &b) {
+  Vec3 d{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  double l = std::hypot(d[0], d[1], d[2]);
+  if (l > 0)
+    for (double &v : d) v /= l;
+  return d;
+}
+
+SplinePath splinePath(const MotionRecord &r) {
+  SplinePath p;
+  p.pts.push_back({r.start[0], r.start[1], r.start[2]});
+  p.cum.push_back(0);
+  SplineCurve curve(r);
+  double ua = curve.u0();
+  auto dist = [](const Vec3 &a, const Vec3 &b) { return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]); };
+  curve.flatten(kSplineTolerance, [&](const Vec3 &q, double u) {
+    const Vec3 &a = p.pts.back();
+    double l = dist(a, q);
+    Vec3 m = curve.at(0.5 * (ua + u));
+    double arc = (4 * (dist(a, m) + dist(m, q)) - l) / 3;  // Richardson: the chord's error is O(h^2)
+    ua = u;
+    if (l > 0)
+      for (int i = 0; i < 3; ++i) p.share[i] = std::max(p.share[i], std::fabs(q[i] - a[i]) / l);
+    if (p.pts.size() >= 2 && l > 0) {
+      const Vec3 &z = p.pts[p.pts.size() - 2];
+      double l0 = p.cum.back() - p.cum[p.cum.size() - 2];
+      Vec3 u = unitOf(z, a), v = unitOf(a, q);
+      double c = std::clamp(u[0] * v[0] + u[1] * v[1] + u[2] * v[2], -1.0, 1.0);
+      if (l0 > 0) p.maxCurvature = std::max(p.maxCurvature, 2 * std::sqrt(0.5 * (1 - c)) / (0.5 * (l0 + l)));
+    }
+    p.pts.push_back(q);
+    p.cum.push_back(p.cum.back() + std::max(arc, l));
+  });
+  return p;
+}
+
+Vec3 SplinePath::at(double s) const {
+  if (!(s > 0)) return pts.front();
+  if (s >= cum.back()) return pts.back();
+  size_t i = (size_t)(std::upper_bound(cum.begin(), cum.end(), s) - cum.begin());  // cum[i-1] <= s < cum[i]
+  double f = (s - cum[i - 1]) / (cum[i] - cum[i - 1]);
+  const Vec3 &a = pts[i - 1], &b = pts[i];
+  return {a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f, a[2] + (b[2] - a[2]) * f};
+}
+
+Vec3 SplinePath::startTangent() const {
+  for (size_t i = 1; i < pts.size(); ++i)
+    if (cum[i] > 0) return unitOf(pts[0], pts[i]);
+  return {};
+}
+
+Vec3 SplinePath::endTangent() const {
+  for (size_t i = pts.size() - 1; i-- > 0;)
+    if (cum.back() > cum[i]) return unitOf(pts[i], pts.back());
+  return {};
 }
 
 }  // namespace ncc

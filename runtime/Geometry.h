@@ -7,6 +7,7 @@
 #include "ir/MotionIR.h"
 
 #include <array>
+#include <vector>
 
 namespace ncc {
 
@@ -84,6 +85,69 @@ Vec3 arcTangent(const ArcGeometry &g, double s);
 double arcCurvature(const ArcGeometry &g);
 // Axis-aligned bounds of the arc (XYZ), exact for circular arcs (quadrant crossings included).
 void arcBounds(const ArcGeometry &g, const AxisVec &start, const AxisVec &end, Vec3 &lo, Vec3 &hi);
+
+// The curve of a Spline record (ir/MotionIR.h SplineData), evaluated by de Boor's algorithm on
+// homogeneous control points (exact for NURBS).
+class SplineCurve {
+public:
+  explicit SplineCurve(const MotionRecord &r);
+  double u0() const { return knots_.front(); }
+  double u1() const { return knots_.back(); }
+  Vec3 at(double u) const;
+  // Calls out(p, u) for points p = at(u) along the curve after the start (the last one exactly
+  // the record's end) such that no chord strays more than `tol` from the curve (checked at the quarter points
+  // of every chord, spans split at least 4 times and at most 2^14 times, and at most 2^16 chords
+  // in all, which bounds the work and memory for absurd curves).
+  template <class F> void flatten(double tol, F &&out) const {
+    for (size_t k = 0; k + 1 < knots_.size(); ++k) {
+      double a = knots_[k], b = knots_[k + 1];
+      if (!(b > a)) continue;
+      Vec3 p = at(a);
+      for (int i = 1; i <= 4; ++i) {
+        double u = a + (b - a) * i / 4;
+        Vec3 q = at(u);
+        refine(a + (b - a) * (i - 1) / 4, p, u, q, tol, 0, out);
+        p = q;
+      }
+    }
+  }
+
+private:
+  template <class F> void refine(double ua, const Vec3 &pa, double ub, const Vec3 &pb, double tol, int depth, F &out) const {
+    double um = 0.5 * (ua + ub);
+    if (depth < maxDepth_ && chordError(ua, pa, ub, pb) > tol) {
+      Vec3 pm = at(um);
+      refine(ua, pa, um, pm, tol, depth + 1, out);
+      refine(um, pm, ub, pb, tol, depth + 1, out);
+      return;
+    }
+    out(ub >= u1() ? end_ : pb, ub);
+  }
+  double chordError(double ua, const Vec3 &pa, double ub, const Vec3 &pb) const;
+  int degree_;
+  std::vector<std::array<double, 4>> cp_;  // w*x, w*y, w*z, w
+  std::vector<double> knots_;
+  Vec3 end_;
+  int maxDepth_ = 12;  // halvings of each quarter span
+};
+// A spline as the planner moves along it: its chords within kSplineTolerance, by arc length.
+struct SplinePath {
+  std::vector<Vec3> pts;     // the start, then the chords' ends (the last one the record's end)
+  std::vector<double> cum;   // curve length at each point (cum[0] = 0): each chord's arc by
+                             // Richardson on its halves, so the length is exact to O(chord^5)
+  Vec3 share{};              // the largest |direction component| of any chord, per axis
+  double maxCurvature = 0;   // 1/mm: the largest 2 sin(turn / 2) / mean chord length at a joint
+  double length() const { return cum.back(); }
+  Vec3 at(double s) const;   // the point at path length s (clamped)
+  Vec3 startTangent() const, endTangent() const;  // unit, along the first and the last chord
+};
+SplinePath splinePath(const MotionRecord &r);
+// Chord tolerance of the flattened curve wherever a spline is sampled (planner, summary, plot).
+constexpr double kSplineTolerance = 0.001;  // mm
+// Length of a spline record's curve (splinePath's).
+double splineLength(const MotionRecord &r);
+// Axis-aligned bounds (XYZ) of a spline's curve (its flattening).
+void splineBounds(const MotionRecord &r, Vec3 &lo, Vec3 &hi);
 
 // Unit direction of a straight move in the 6-axis space the planner limits (XYZ in mm, rotary
 // in degrees, scaled by the move length); zero for zero-length moves.

@@ -164,6 +164,12 @@ AxisVec PlannedSegment::positionAt(double t) const {
   profile.at(t, s, v);
   double f = profile.length > 0 ? std::clamp(s / profile.length, 0.0, 1.0) : 1.0;
   if (record.kind == RecordKind::Arc) return arcPoint(arc, record.start, record.end, f);
+  if (spline) {
+    Vec3 q = spline->at(s);
+    AxisVec p = record.end;
+    for (int i = 0; i < 3; ++i) p[i] = f >= 1 ? record.end[i] : q[i];
+    return p;
+  }
   AxisVec p;
   for (int i = 0; i < kAxes; ++i) p[i] = record.start[i] + (record.end[i] - record.start[i]) * f;
   if (f >= 1) p = record.end;
@@ -189,7 +195,9 @@ void Planner::limits(Pending &p) const {
   double v = feed / 60, a = kInf, j = kInf;
   // Fraction of the path speed each axis carries (its worst case over the move).
   AxisVec share{};
-  if (r.kind == RecordKind::Arc && p.length > 0) {
+  if (p.seg.spline) {
+    for (int i = 0; i < 3; ++i) share[i] = p.seg.spline->share[i];
+  } else if (r.kind == RecordKind::Arc && p.length > 0) {
     Vec3 s3 = arcAxisShare(p.seg.arc);
     for (int i = 0; i < 3; ++i) share[i] = s3[i];
     for (int i = 3; i < kAxes; ++i) share[i] = std::fabs(r.end[i] - r.start[i]) / p.length;
@@ -222,6 +230,16 @@ void Planner::limits(Pending &p) const {
     }
     if (k > 0 && an > 0) v = std::min(v, std::sqrt(an / k));                // v^2 / r <= a
     if (k > 0 && jn > 0) v = std::min(v, std::cbrt(jn / (k * k)));           // v^3 / r^2 <= j
+  }
+  if (p.seg.spline) {  // the same limits at the sharpest point of the curve, from every axis it moves
+    double k = p.seg.spline->maxCurvature, an = kInf, jn = kInf;
+    for (int i = 0; i < 3; ++i)
+      if (share[i] > 1e-12 && machine_.axes[i].present) {
+        an = std::min(an, machine_.axes[i].maxAccel);
+        if (machine_.axes[i].maxJerk > 0) jn = std::min(jn, machine_.axes[i].maxJerk);
+      }
+    if (k > 0 && an > 0 && !std::isinf(an)) v = std::min(v, std::sqrt(an / k));
+    if (k > 0 && jn > 0 && !std::isinf(jn)) v = std::min(v, std::cbrt(jn / (k * k)));
   }
   p.vmax = v;
   p.accel = a;
@@ -259,6 +277,13 @@ void Planner::push(const MotionRecord &r) {
     for (int i = 0; i < 3; ++i) p.tIn[i] = t0[i], p.tOut[i] = t1[i];
     if (p.length > 0)
       for (int i = 3; i < kAxes; ++i) p.tIn[i] = p.tOut[i] = (r.end[i] - r.start[i]) / p.length;
+  } else if (r.kind == RecordKind::Spline) {
+    // One move along the curve's chords (docs/PLANNER.md, "Splines"); the curve data is not kept.
+    p.seg.spline.make() = splinePath(r);
+    p.seg.record.extra.reset();
+    p.length = p.seg.spline->length();
+    Vec3 t0 = p.seg.spline->startTangent(), t1 = p.seg.spline->endTangent();
+    for (int i = 0; i < 3; ++i) p.tIn[i] = t0[i], p.tOut[i] = t1[i];
   } else {
     p.length = linearLength(r.start, r.end);
     p.tIn = p.tOut = unitDirection(r.start, r.end, p.length);
@@ -339,6 +364,7 @@ void Planner::record(const MotionRecord &r) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
   case RecordKind::Arc:
+  case RecordKind::Spline:
     push(r);
     return;
   case RecordKind::Dwell: {

@@ -43,8 +43,9 @@ VelocityProfile planProfile(double len, double v0, double v1, double vmax, doubl
 
 // One planned move (or dwell), handed to listeners in time order.
 struct PlannedSegment {
-  MotionRecord record;    // Rapid, Linear, Arc or Dwell
+  MotionRecord record;    // Rapid, Linear, Arc, Spline or Dwell
   ArcGeometry arc;        // valid for arcs
+  CopyPtr<SplinePath> spline;  // splines: the curve by arc length (null otherwise)
   uint64_t index = 0;     // 0-based count of segments
   double t0 = 0;          // start time, s
   double vmax = 0;        // speed cap of the move, mm/s

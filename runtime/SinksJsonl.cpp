@@ -41,6 +41,7 @@ std::string motionRecordJson(const MotionRecord &r) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
   case RecordKind::Arc:
+  case RecordKind::Spline:
     s += ",\"start\":";
     vec(s, r.start.data(), kAxes);
     s += ",\"end\":";
@@ -57,6 +58,17 @@ std::string motionRecordJson(const MotionRecord &r) {
         s += ",\"normal\":";
         vec(s, r.arcNormal().data(), 3);
       }
+    }
+    if (r.kind == RecordKind::Spline) {
+      const SplineData &sp = r.spline();
+      fmt::format_to(std::back_inserter(s), ",\"degree\":{},\"points\":[", sp.degree);
+      for (auto &p : sp.points) {
+        if (&p != sp.points.data()) s += ',';
+        vec(s, p.data(), 3);
+      }
+      s += ']';
+      if (!sp.weights.empty()) s += ",\"weights\":", vec(s, sp.weights.data(), (int)sp.weights.size());
+      if (!sp.knots.empty()) s += ",\"knots\":", vec(s, sp.knots.data(), (int)sp.knots.size());
     }
     break;
   case RecordKind::CycleBegin:

@@ -55,6 +55,17 @@ void SummaryCollector::record(const MotionRecord &r) {
     feedLength += g.length;
     break;
   }
+  case RecordKind::Spline: {
+    Vec3 l3, h3;
+    splineBounds(r, l3, h3);
+    for (int i = 0; i < kAxes; ++i) {
+      lo[i] = i < 3 ? l3[i] : r.start[i];
+      hi[i] = i < 3 ? h3[i] : r.start[i];
+    }
+    ++splines;
+    feedLength += splineLength(r);
+    break;
+  }
   case RecordKind::Dwell:
     ++dwells;
     return;
@@ -98,8 +109,9 @@ std::string SummaryCollector::text() const {
   if (!program_.empty()) line("program", program_);
   if (!machine_.empty()) line("machine", machine_);
   line("blocks", std::to_string(blocks()));
-  line("moves", fmt::format("{} (rapid {}, linear {}, arc {}), dwells {}", rapids + linears + arcs, rapids,
-                            linears, arcs, dwells));
+  // Splines only when there are some: the summary of every other program stays as it was.
+  line("moves", fmt::format("{} (rapid {}, linear {}, arc {}{}), dwells {}", rapids + linears + arcs + splines, rapids,
+                            linears, arcs, splines ? fmt::format(", spline {}", splines) : "", dwells));
   line("path length", fmt::format("{:.3f} mm (feed {:.3f}, rapid {:.3f})", feedLength + rapidLength, feedLength,
                                   rapidLength));
   line("cycle time", fmt::format("{} ({:.3f} s)", formatDuration(times_.totalTime), times_.totalTime));

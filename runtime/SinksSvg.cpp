@@ -88,6 +88,10 @@ void SvgPlot::record(const MotionRecord &r) {
     add(false, r.end[0], r.end[1], false);
     return;
   }
+  case RecordKind::Spline:
+    add(false, r.start[0], r.start[1], true);
+    SplineCurve(r).flatten(std::max(tol_, kSplineTolerance), [&](const Vec3 &p, double) { add(false, p[0], p[1], false); });
+    return;
   default:
     return;
   }

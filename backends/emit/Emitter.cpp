@@ -79,6 +79,9 @@ private:
   void move(const MotionRecord &r);
   void arc(const MotionRecord &r);
   void arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull);
+  // Why this output cannot write the spline exactly (empty: it can, as LinuxCNC G5.2/G5.3).
+  std::string splineRefusal(const MotionRecord &r) const;
+  void spline(const MotionRecord &r);
   void planeWord(Plane p, Words &w);
   void dwell(const MotionRecord &r);
   void comment(const std::string &text);
@@ -345,6 +348,68 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
   writeBlock(w, r.blockNumber);
 }
 
+std::string Emitter::splineRefusal(const MotionRecord &r) const {
+  const SplineData &s = r.spline();
+  if (st_.target != Target::ISO || machine_.controller.family != "linuxcnc")
+    return "only LinuxCNC G5.2 NURBS are written: an ISO target on a machine of [controller] family \"linuxcnc\"";
+  if (!s.knots.empty()) return "G5.2 has rs274's uniform knots only";
+  if (s.degree < 2 || s.degree > 15) return "G5.2 has orders L 3 to 16 only";
+  for (auto &p : s.points)
+    if (p[2] != r.start[2]) return "G5.2 moves in X and Y only";
+  if (r.end[2] != r.start[2]) return "G5.2 moves in X and Y only";
+  if (feedMode_ == 2) return "rs274 gives a spline no feed rate in inverse time";
+  return {};
+}
+
+void Emitter::spline(const MotionRecord &r) {
+  // G5.2 X Y P<weight> [L<order>] ... G5.3; a start weight other than 1 is a G5.2 P block of its
+  // own (rs274's first-point form). Both X and Y in every block (rs274 requires them).
+  flushPending();
+  ensurePosition(r);
+  const SplineData &s = r.spline();
+  NumberFormat wf = fmt(WordClass::Center);
+  wf.decimals = 9;  // weights: no unit, more digits than lengths
+  auto weight = [&](size_t i, Words &w) {
+    std::string digits;
+    double v = s.weights.empty() ? 1.0 : s.weights[i];
+    if (formatNumber(v, wf, digits)) w.push_back("P" + digits);
+    else badNumber(v, "P", r);
+  };
+  auto point = [&](const std::array<double, 3> &p, Words &w) {
+    std::string word;
+    for (int i = 0; i < 2; ++i)
+      if (number(p[i], WordClass::Axis, std::string(1, kAxisLetters[i]), r, word)) w.push_back(word);
+  };
+  Words w;
+  planeWord(Plane::XY, w);
+  w.push_back("G5.2");
+  if (!s.weights.empty() && s.weights[0] != 1) {
+    weight(0, w);
+    writeBlock(w, r.blockNumber);
+    w.clear();
+  }
+  std::vector<std::array<double, 3>> pts = s.points;
+  pts.push_back({r.end[0], r.end[1], r.end[2]});
+  for (size_t i = 0; i < pts.size(); ++i) {
+    point(pts[i], w);
+    weight(i + 1, w);
+    if (i == 0) {
+      if (s.degree + 1 > 3) w.push_back("L" + std::to_string(s.degree + 1));
+      feedWord(r, w, 0);  // the length matters in inverse time only, which splineRefusal refuses
+    }
+    writeBlock(w, -1);
+    w.clear();
+  }
+  if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
+  w.push_back("G5.3");
+  writeBlock(w, -1);
+  motion_.clear();  // rs274 has no motion mode after G5.3
+  for (int i = 0; i < 2; ++i) {
+    formatNumber(r.end[i], fmt(WordClass::Axis), posText_[i]);
+    pos_[i] = roundTo(r.end[i], fmt(WordClass::Axis).decimals);
+  }
+}
+
 void Emitter::dwell(const MotionRecord &r) {
   flushPending();
   NumberFormat f = fmt(WordClass::Dwell);
@@ -415,6 +480,18 @@ void Emitter::record(const MotionRecord &r) {
       break;
     }
     arc(r);
+    break;
+  case RecordKind::Spline:
+    // Written exactly (LinuxCNC G5.2/G5.3) or refused, never as chords: those would be a silent
+    // approximation.
+    if (std::string why = splineRefusal(r); !why.empty()) {
+      diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write this spline (" + why + "): " +
+                              printMotionRecord(r),
+                   "unsupported-code");
+      errors_ = true;
+      break;
+    }
+    spline(r);
     break;
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:

@@ -42,6 +42,8 @@ struct GCodeInfo {
 
 // Null when the code is unknown.
 const GCodeInfo *findGCode(int32_t code10);
+// The RS274NGC meaning of a code whose number means something else in findGCode's (808D) table.
+const GCodeInfo *findRs274GCode(int32_t code10);
 
 // The parameter words a canned cycle reads besides X Y Z R F and the repeat count (K/L):
 // e.g. "P" or "PQ". A word the cycle does not read is an unused word (an error).

@@ -123,6 +123,21 @@ static const GCodeInfo kGCodes[] = {
     NOOP(2910, Language, "ISO language mode"),
 };
 
+// RS274NGC (.ngc) codes whose number means something else in the 808D table above (G05 call,
+// G05.1 ignored, G05.2/G05.3 unsupported there): LinuxCNC's splines.
+static const GCodeInfo kRs274GCodes[] = {
+    MODE(50, Motion, SplineCubic, "cubic spline"),
+    MODE(51, Motion, SplineQuadratic, "quadratic spline"),
+    MODE(52, Motion, Nurbs, "NURBS control point"),
+    MODE(53, Motion, NurbsEnd, "NURBS end"),
+};
+
+const GCodeInfo *findRs274GCode(int32_t code10) {
+  for (auto &g : kRs274GCodes)
+    if (g.code10 == code10) return &g;
+  return nullptr;
+}
+
 const GCodeInfo *findGCode(int32_t code10) {
   size_t lo = 0, hi = sizeof(kGCodes) / sizeof(kGCodes[0]);
   while (lo < hi) {

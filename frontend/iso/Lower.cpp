@@ -39,8 +39,6 @@ static Scale scaleOf(char letter) {
 // G codes that mean something else in RS274NGC than in the Fanuc table and are not lowered yet.
 static const char *rs274Meaning(int32_t code10) {
   switch (code10) {
-  case 50: return "RS274NGC cubic spline";
-  case 51: return "RS274NGC quadratic spline";
   case 760: return "RS274NGC threading cycle";
   case 500: case 510: case 511: case 680: return "not an RS274NGC code";
   default: return nullptr;
@@ -162,6 +160,7 @@ struct BlockLowerer::Block {
   bool macroCall = false;  // G65: every other address is an argument (M too)
   bool axesTaken = false;  // a non-modal code took the axis words
   bool dwellTookAxis = false;  // Fanuc G4 X<seconds>
+  ModeValue motionBefore = ModeValue::Rapid;  // the motion mode a G5/G5.1 block gives back
   const GCodeInfo *nonModal = nullptr;
 
   Block(BlockLowerer &l, ParsedBlock &blk, Region &o) : L(l), b(blk), out(o) {}
@@ -275,12 +274,14 @@ bool BlockLowerer::Block::classify() {
       }
       if (gi && L.flavour_ != Flavour::RS274 && (gi->code10 == 70 || gi->code10 == 80))
         gi = nullptr;  // LinuxCNC's lathe diameter/radius modes; no such code in the 808D table
+      if (gi && L.flavour_ == Flavour::RS274)
+        if (const GCodeInfo *r = findRs274GCode(gi->code10)) gi = r;
       if (!gi) {
         L.diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
         ok = false;
         continue;
       }
-      // Codes whose LinuxCNC meaning differs from Fanuc's: G76 threading, G5/G5.1 splines.
+      // Codes whose LinuxCNC meaning differs from Fanuc's and that are not lowered: G76 threading.
       if (const char *what = L.flavour_ == Flavour::RS274 ? rs274Meaning(gi->code10) : nullptr) {
         L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), what),
                        "unsupported-code");
@@ -374,6 +375,7 @@ bool BlockLowerer::Block::setup() {
   if (auto *gi = G(GGroup::Units)) L.units_ = gi->mode;
   if (auto *gi = G(GGroup::FeedMode)) L.feedMode_ = gi->mode;
   if (auto *gi = G(GGroup::Motion)) {
+    motionBefore = L.motion_;
     L.motion_ = gi->mode;
     if (isPathMotion(L.motion_)) L.pathMotion_ = L.motion_;
     if (L.motion_ == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc) L.motion_ = L.pathMotion_;  // as the executor
@@ -707,13 +709,27 @@ bool BlockLowerer::Block::frameOps() {
 // The motion mode and the move (axis words, arc or cycle words).
 bool BlockLowerer::Block::motion() {
   modeOp(GGroup::Motion, "motion");
+  // LinuxCNC G5/G5.1 do not change rs274's motion mode: the next block moves as before them.
+  const ModeValue m = L.motion_;
+  const bool bezier = m == ModeValue::SplineCubic || m == ModeValue::SplineQuadratic;
+  if (bezier) L.motion_ = motionBefore;
+  if (m == ModeValue::NurbsEnd && G(GGroup::Motion) && bw.hasAny(kMoveWords)) {
+    for (const char *c = kMoveWords; *c; ++c)
+      if (bw.has(*c)) {
+        L.diags_.error(bw.get(*c)->loc, "G5.3 takes no axis words (rs274 ignores them)", "unused-word");
+        return false;
+      }
+  }
   if (!axesTaken) {
-    bool cycle = isCycleMotion(L.motion_);
-    bool arc = L.motion_ == ModeValue::ArcCW || L.motion_ == ModeValue::ArcCCW;
-    bool moves = bw.hasAny(kMoveWords) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R'));
+    bool cycle = isCycleMotion(m);
+    bool arc = m == ModeValue::ArcCW || m == ModeValue::ArcCCW;
+    // G5/G5.1 always move (the executor reports missing axes as rs274 does); a G5.2 block
+    // may give the first point's weight alone (P).
+    bool moves = bw.hasAny(kMoveWords) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R')) ||
+                 (bezier && G(GGroup::Motion)) || (m == ModeValue::Nurbs && (G(GGroup::Motion) || bw.hasAny("PL")));
     if (moves) {
       const bool rs274 = L.flavour_ == Flavour::RS274;
-      std::string_view params = cycle ? cycleParamWords(L.motion_, rs274) : "";
+      std::string_view params = cycle ? cycleParamWords(m, rs274) : "";
       if (cycle && bw.has('K') && bw.has('L')) {
         L.diags_.error(bw.get('K')->loc, "K and L both give the cycle repeat count", "duplicate-word");
         return false;
@@ -725,12 +741,15 @@ bool BlockLowerer::Block::motion() {
       // RS274NGC polar coordinates: @ radius (a length), ^ angle in degrees, about the origin.
       if (bw.has('@')) add(op, "polar_r", take('@', Scale::Linear));
       if (bw.has('^')) add(op, "polar_a", take('^', Scale::None));
-      // Arcs read I J K R; cycles read R (the clearance plane) only.
-      for (char c : std::string_view(arc ? "IJKR" : cycle ? "R" : "")) {
+      // Arcs read I J K R; cycles read R (the clearance plane) only; G5/G5.1 I J (the first
+      // control point, relative to the start).
+      for (char c : std::string_view(arc ? "IJKR" : cycle ? "R" : bezier ? "IJ" : "")) {
         if (!bw.has(c)) continue;
         add(op, c, take(c, Scale::Linear));
       }
-      if (bw.has('P') && (arc || params.find('P') != std::string_view::npos)) {
+      // G5 P Q: the second control point relative to the end (lengths); G5.2 P: a weight.
+      if (m == ModeValue::SplineCubic && bw.has('P')) op.set("P", take('P', Scale::Linear));
+      if (bw.has('P') && (arc || m == ModeValue::Nurbs || params.find('P') != std::string_view::npos)) {
         IsoWord *p = bw.get('P');
         bw.used |= 1u << ('P' - 'A');
         // Cycle dwell: seconds (Fanuc P without a point is milliseconds); arc P = turns.
@@ -742,13 +761,15 @@ bool BlockLowerer::Block::motion() {
       }
       // Fanuc/808D G86 has no dwell word (spec table 2-22: G86 X Y Z R F K); the executor
       // follows rs274, whose G86 needs P, so the dialect's "no dwell" is written out here.
-      if (L.motion_ == ModeValue::BoreStop && L.flavour_ == Flavour::Fanuc && !bw.has('P') &&
+      if (m == ModeValue::BoreStop && L.flavour_ == Flavour::Fanuc && !bw.has('P') &&
           G(GGroup::Motion))
         op.set("P", Expr::number(0.0, ir::Type::Real, loc));
-      if (bw.has('Q') && params.find('Q') != std::string_view::npos) op.set("Q", take('Q', Scale::Linear));
+      if (bw.has('Q') && (m == ModeValue::SplineCubic || params.find('Q') != std::string_view::npos))
+        op.set("Q", take('Q', Scale::Linear));
+      if (m == ModeValue::Nurbs && bw.has('L')) op.set("L", take('L', Scale::None));  // the order
       // The repeat count: K (Fanuc/808D) or L; rs274 has L only.
       if (cycle && (bw.has('L') || (bw.has('K') && !rs274))) op.set("L", take(bw.has('L') ? 'L' : 'K', Scale::None));
-      if (!b.corner.empty() && (arc || L.motion_ == ModeValue::Linear)) {
+      if (!b.corner.empty() && (arc || m == ModeValue::Linear)) {
         const IsoWord &w = b.corner.front();
         op.set(w.letter == 'C' ? "chamfer" : "round", literal(w, factor(Scale::Linear)));
         cornerTaken = true;

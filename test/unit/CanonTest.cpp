@@ -280,8 +280,9 @@ TEST(OracleTest, EveryProgramIsListed) {
   size_t n = 0;
   for (auto &e : std::filesystem::directory_iterator(oracleDir())) n += e.path().extension() == ".ngc";
   // Listed above, plus the programs whose words the mini-parser here does not read (G10 L2 R,
-  // G41 without D, polar @ ^, G28.1 G92.2, G52, comp in G18, parameter and tool table writes): their lit tests run them through the real front end.
-  EXPECT_EQ(n, 32u + 8u);  // keep in step with the list above
+  // G41 without D, polar @ ^, G28.1 G92.2, G52, comp in G18, parameter and tool table writes, G5/G5.1
+  // splines, G5.2/G5.3 NURBS): their lit tests run them through the real front end.
+  EXPECT_EQ(n, 32u + 10u);  // keep in step with the list above
 }
 
 }  // namespace
@@ -505,6 +506,23 @@ TEST(CanonDiff, MovesThatStayPutAreNoMotion) {
       "STRAIGHT_TRAVERSE(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
       "ARC_FEED(0.0000, 1.0000, 0.0000, 0.0000, 1, 0.0000, 0.0000, 0.0000, 0.0000)\n";
   EXPECT_FALSE(canonDiff(c, d, CanonDiffOptions(), report));
+}
+
+TEST(CanonDiff, NurbsFeedComparesTheControlPointCount) {
+  // rs274 prints only the count; after it a straight move back to the curve's start still moves.
+  const char *a =
+      "STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "NURBS_FEED(4, ...)\n"
+      "STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n";
+  std::string report;
+  EXPECT_TRUE(canonDiff(a, a, CanonDiffOptions(), report)) << report;
+  EXPECT_NE(report.find("3 motion commands"), std::string::npos) << report;
+  std::string b = a;
+  b.replace(b.find("(4,"), 3, "(3,");
+  EXPECT_FALSE(canonDiff(a, b, CanonDiffOptions(), report));
+  EXPECT_NE(report.find("NURBS control point count differs: 4 vs 3"), std::string::npos) << report;
+  EXPECT_FALSE(canonDiff(a, "NURBS_FEED(x, ...)\n", CanonDiffOptions(), report));
+  EXPECT_NE(report.find("cannot read the arguments of NURBS_FEED"), std::string::npos) << report;
 }
 
 }  // namespace

@@ -181,3 +181,68 @@ TEST(Geometry, TiltedArcMatchesPrincipalPlanesAndStaysOnItsCircle) {
   EXPECT_NEAR(share[1], 0.8, 1e-12);
   EXPECT_NEAR(share[2], 0.6, 1e-12);
 }
+
+namespace {
+MotionRecord splineRec(AxisVec a, AxisVec b, int degree, std::vector<std::array<double, 3>> inner,
+                       std::vector<double> weights = {}, std::vector<double> knots = {}) {
+  MotionRecord r;
+  r.kind = RecordKind::Spline;
+  r.start = a;
+  r.end = b;
+  r.feed = 100;
+  SplineData s;
+  s.degree = degree;
+  s.points = std::move(inner);
+  s.weights = std::move(weights);
+  s.knots = std::move(knots);
+  r.setSpline(std::move(s));
+  return r;
+}
+}  // namespace
+
+TEST(Geometry, SplineBezierAndRationalCircle) {
+  // rs274's knot vector: degree + 1 zeros, 1 .. count - degree - 1, degree + 1 copies of the last.
+  EXPECT_EQ(splineDefaultKnots(4, 3), (std::vector<double>{0, 0, 0, 0, 1, 1, 1, 1}));
+  EXPECT_EQ(splineDefaultKnots(5, 2), (std::vector<double>{0, 0, 0, 1, 2, 3, 3, 3}));
+  // G5 from (0,0) with handles (1,0) and (2,2) to (3,2): the cubic Bezier, at t = 0.3.
+  MotionRecord b = splineRec(P(0, 0, 0), P(3, 2, 0), 3, {{1, 0, 0}, {2, 2, 0}});
+  SplineCurve c(b);
+  double t = 0.3, u = 1 - t;
+  auto bez = [&](double p0, double p1, double p2, double p3) {
+    return u * u * u * p0 + 3 * u * u * t * p1 + 3 * u * t * t * p2 + t * t * t * p3;
+  };
+  Vec3 q = c.at(c.u0() + t * (c.u1() - c.u0()));
+  EXPECT_NEAR(q[0], bez(0, 1, 2, 3), 1e-12);
+  EXPECT_NEAR(q[1], bez(0, 0, 2, 2), 1e-12);
+  Vec3 e = c.at(c.u1());
+  EXPECT_EQ(e[0], 3);
+  EXPECT_EQ(e[1], 2);
+  // The rational quadratic with middle weight sqrt(2)/2 is a quarter circle: every point of the
+  // curve is on it, the flattened length is 5 pi within the chord tolerance.
+  MotionRecord circle = splineRec(P(10, 0, 0), P(0, 10, 0), 2, {{10, 10, 0}}, {1, std::sqrt(0.5), 1});
+  SplineCurve cc(circle);
+  for (double f : {0.1, 0.37, 0.5, 0.9}) {
+    Vec3 p = cc.at(f);
+    EXPECT_NEAR(std::hypot(p[0], p[1]), 10, 1e-12) << f;
+  }
+  EXPECT_NEAR(splineLength(circle), 5 * kPi, 1e-5);
+  SplinePath path = splinePath(circle);
+  EXPECT_NEAR(path.maxCurvature, 0.1, 1e-3);
+  Vec3 mid = path.at(path.length() / 2);
+  EXPECT_NEAR(mid[0], 10 / std::sqrt(2.0), 1e-3);
+  EXPECT_NEAR(mid[1], 10 / std::sqrt(2.0), 1e-3);
+  Vec3 t0 = path.startTangent();
+  EXPECT_NEAR(t0[1], 1, 1e-4);
+  // Two spans with an inner knot: the curve passes the spans' joint continuously and the bounds
+  // hold the control polygon's hull.
+  MotionRecord two = splineRec(P(0, 0, 0), P(4, 0, 0), 2, {{1, 2, 0}, {3, -2, 0}}, {}, {0, 0, 0, 0.5, 1, 1, 1});
+  SplineCurve ct(two);
+  Vec3 l = ct.at(0.5 - 1e-12), r = ct.at(0.5);
+  EXPECT_NEAR(l[0], r[0], 1e-9);
+  EXPECT_NEAR(l[1], r[1], 1e-9);
+  Vec3 lo, hi;
+  splineBounds(two, lo, hi);
+  EXPECT_GT(hi[1], 0.5);
+  EXPECT_LT(lo[1], -0.5);
+  EXPECT_LE(hi[1], 2);
+}

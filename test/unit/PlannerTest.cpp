@@ -271,3 +271,38 @@ TEST(Planner, ProfileRespectsAccelAndJerk) {
     }
   }
 }
+
+TEST(Planner, SplineQuarterCircleTimesLikeTheArc) {
+  // One move along the curve: the same length, curvature limits and so the same time as the
+  // G3 it draws (docs/PLANNER.md, "Splines").
+  Machine m = testMachine(0);
+  MotionRecord arc;
+  arc.kind = RecordKind::Arc;
+  arc.start = P(10, 0);
+  arc.end = P(0, 10);
+  arc.center = {0, 0, 0};
+  arc.turns = 1;
+  arc.feed = 6000;
+  MotionRecord spl = arc;
+  spl.kind = RecordKind::Spline;
+  SplineData s;
+  s.degree = 2;
+  s.points = {{10, 10, 0}};
+  s.weights = {1, std::sqrt(0.5), 1};
+  spl.setSpline(s);
+  Recorder rec;
+  double ta = run(m, {line(P(0, 0), P(10, 0), 6000), arc}, nullptr);
+  double ts = run(m, {line(P(0, 0), P(10, 0), 6000), spl}, &rec);
+  EXPECT_NEAR(ts, ta, 1e-3 * ta);
+  ASSERT_EQ(rec.segs.size(), 2u);
+  const PlannedSegment &g = rec.segs[1];
+  EXPECT_EQ(g.record.kind, RecordKind::Spline);
+  EXPECT_NEAR(g.length(), 5 * M_PI, 1e-5);
+  for (double f : {0.2, 0.5, 0.8}) {
+    AxisVec p = g.positionAt(f * g.duration());
+    EXPECT_NEAR(std::hypot(p[0], p[1]), 10, 2e-3) << f;
+  }
+  AxisVec e = g.positionAt(g.duration());
+  EXPECT_EQ(e[0], 0);
+  EXPECT_EQ(e[1], 10);
+}
