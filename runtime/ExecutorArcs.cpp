@@ -19,17 +19,28 @@ Vec3 scaled(const Vec3 &a, double k) { return {a[0] * k, a[1] * k, a[2] * k}; }
 constexpr double kCollinearMM = 1e-9;
 }  // namespace
 
-// The direction the path leaves with after record r (programmed path, before corners and
-// compensation): what the next CT continues.
-void Executor::Impl::notePathTangent(const MotionRecord &r) {
-  if (r.kind == RecordKind::Arc) {
-    pathTangent = ncc::arcTangent(arcGeometry(r), 1.0);
-    haveTangent = true;
-  } else if (r.kind == RecordKind::Linear || r.kind == RecordKind::Rapid) {
-    Vec3 d = sub(xyz(r.end), xyz(r.start));
-    double n = norm(d);
-    if (n > kCollinearMM) pathTangent = scaled(d, 1 / n), haveTangent = true;  // a rotary-only move keeps it
+// The last path move (programmed, before corners and compensation): what the next CT continues.
+// A move that does not change XYZ (rotary only) keeps the one before.
+void Executor::Impl::notePath(const MotionRecord &r) {
+  bool line = r.kind == RecordKind::Linear || r.kind == RecordKind::Rapid;
+  if (r.kind != RecordKind::Arc && !(line && (r.end[0] != r.start[0] || r.end[1] != r.start[1] || r.end[2] != r.start[2])))
+    return;
+  lastPath.kind = r.kind, lastPath.start = r.start, lastPath.end = r.end;
+  if (r.kind != RecordKind::Arc) return;
+  lastPath.center = r.center, lastPath.turns = r.turns, lastPath.plane = r.plane, lastPath.normal = r.arcNormal();
+}
+
+// The unit direction the path leaves its last point with (machine XYZ); false before any.
+bool Executor::Impl::pathTangent(Vec3 &t) const {
+  const LastPath &p = lastPath;
+  if (p.kind == RecordKind::Arc) {
+    t = ncc::arcTangent(tiltedArcGeometry(p.start, p.end, p.center, p.normal, p.turns), 1.0);
+    return true;
   }
+  if (p.kind != RecordKind::Linear && p.kind != RecordKind::Rapid) return false;
+  t = sub(xyz(p.end), xyz(p.start));
+  t = scaled(t, 1 / norm(t));
+  return true;
 }
 
 bool Executor::Impl::emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 &normal, int turns) {
@@ -99,8 +110,10 @@ bool Executor::Impl::arcTangent(const MachineCmd &c) {
   const Vec3 nrm = pf.linear ? pf.composite.applyLinear(planeNormal(plane())) : planeNormal(plane());
   const Vec3 n = scaled(nrm, 1 / norm(nrm));
   // The tangent and the chord in the plane (their parts along the normal dropped).
-  Vec3 t = sub(pathTangent, scaled(n, dot(pathTangent, n)));
-  if (!haveTangent || norm(t) < 1e-9)
+  Vec3 t{};
+  bool have = pathTangent(t);
+  t = sub(t, scaled(n, dot(t, n)));
+  if (!have || norm(t) < 1e-9)
     return error("a tangential arc needs a path direction in its plane before it (a G1, G2 or G3 move)", "arc-invalid");
   t = scaled(t, 1 / norm(t));
   const AxisVec end = target(c);

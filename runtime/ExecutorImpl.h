@@ -205,9 +205,17 @@ struct Executor::Impl {
   bool arcThrough(const MachineCmd &c);
   bool arcTangent(const MachineCmd &c);
   bool emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 &normal, int turns);
-  void notePathTangent(const MotionRecord &r);
-  bool haveTangent = false;
-  Vec3 pathTangent{};  // unit direction the path leaves its last point (machine XYZ)
+  // The last programmed path move, kept as plain data (no strings, nothing computed per move):
+  // CT asks it for the direction the path leaves with (pathTangent).
+  struct LastPath {
+    RecordKind kind = RecordKind::Comment;  // Comment: none yet
+    AxisVec start{}, end{};
+    std::array<double, 3> center{}, normal{};
+    int turns = 0;
+    Plane plane = Plane::XY;
+  } lastPath;
+  void notePath(const MotionRecord &r);
+  bool pathTangent(Vec3 &t) const;
   // LinuxCNC splines (ExecutorMotion.cpp), as rs274 (2.9) reads them: G5/G5.1 are one Spline
   // record each and give the motion mode back (`splineReturn`: rs274 keeps its mode); G5.2
   // blocks collect `nurbs` control points (machine XYZ) until G5.3 emits the curve.

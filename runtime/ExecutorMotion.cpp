@@ -76,7 +76,7 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop, dou
 }
 
 bool Executor::Impl::emitMove(const MotionRecord &r) {
-  notePathTangent(r);
+  notePath(r);
   if (corner.active) return cornerNext(r);
   if (corner.requested) {
     corner.requested = false;
