@@ -174,6 +174,11 @@ struct Function {
   SourceLoc loc;
   std::vector<Param> params;
   Region body;
+  const Param *param(std::string_view name) const {  // null when there is no such parameter
+    for (auto &p : params)
+      if (p.name == name) return &p;
+    return nullptr;
+  }
 };
 
 enum class Dialect : uint8_t { ISO, Sinumerik, Heidenhain, CLData, Unknown };

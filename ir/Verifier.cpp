@@ -260,7 +260,14 @@ private:
       // at run time.
       std::string name;
       if (constantCallee(*c, name)) {
-        if (!m_.find(name)) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", name));
+        const Function *f = m_.find(name);
+        if (!f) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", name));
+        for (auto &a : op.args) {  // a VAR parameter aliases a variable of the caller
+          const Param *p = f && a.key.size() > 2 ? f->param(std::string_view(a.key).substr(2)) : nullptr;
+          if (p && p->byRef && a.value && (a.value->kind != ExprKind::Var || a.value->space == VarSpace::System))
+            error(op.loc, fmt::format("'call' argument '{}' must be a variable: parameter '{}' of '@{}' is VAR", a.key,
+                                      p->name, f->name));
+        }
       } else if (c->kind != ExprKind::Var && c->kind != ExprKind::Unary && c->kind != ExprKind::Binary &&
                  c->kind != ExprKind::Call) {
         error(op.loc, "'call' argument 'callee' must be a string or a program number");
@@ -280,9 +287,10 @@ public:
     collectDecls(m_, decls_, nullptr);
     for (auto &f : m_.functions) {
       fn_ = &f;
-      for (auto &p : f.params) {  // neither engine passes by reference or applies defaults
-        if (p.byRef) error(f.loc, fmt::format("function '@{}': VAR (by-reference) parameter '{}' is not supported yet", f.name, p.name));
-        if (p.defaultValue) error(f.loc, fmt::format("function '@{}': default of parameter '{}' is not supported yet", f.name, p.name));
+      for (auto &p : f.params) {
+        // Defaults are evaluated in the callee when it starts: no variables of either side.
+        if (p.defaultValue && usesVariable(*p.defaultValue))
+          error(f.loc, fmt::format("function '@{}': default of parameter '{}' must not use variables", f.name, p.name));
         if (p.type != Type::Real && p.type != Type::Bool && p.type != Type::Int && p.type != Type::String &&
             p.type != Type::Axis)
           error(f.loc, fmt::format("function '@{}': parameter '{}' of type {} is not supported yet (REAL, INT, BOOL, "
@@ -295,6 +303,13 @@ public:
   }
 
 private:
+  static bool usesVariable(const Expr &e) {
+    if (e.kind == ExprKind::Var) return true;
+    for (auto &a : e.args)
+      if (a && usesVariable(*a)) return true;
+    return false;
+  }
+
   void walk(const Region &r) {
     for (auto &op : r) {
       if ((unsigned)op.kind < (unsigned)OpKind::Count) checkSupported(op, opInfo(op.kind).name);
@@ -358,6 +373,15 @@ private:
     case OpKind::Call: {
       const Expr *f = op.get("frame");
       bool shared = !f || f->str != "new";
+      std::string calleeName;
+      if (const Expr *c = op.get("callee"); c && !constantCallee(*c, calleeName))
+        for (auto &a : op.args)  // the engines pass addresses only to a callee known when compiling
+          for (auto &fn : m_.functions)
+            if (const Param *p = a.key.size() > 2 ? fn.param(std::string_view(a.key).substr(2)) : nullptr; p && p->byRef) {
+              error(op.loc, fmt::format("'call' argument '{}': a computed callee cannot take VAR parameter '{}' of '@{}' "
+                                        "yet", a.key, p->name, fn.name));
+              break;
+            }
       for (auto &a : op.args) {
         if (a.key.rfind("a.", 0) != 0) continue;
         std::string k = a.key.substr(2);

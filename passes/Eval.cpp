@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <unordered_map>
 
 namespace ncc {
@@ -67,6 +68,8 @@ struct CompiledFn {
 struct Frame {
   double locals[kMacroLocals + 1];  // [0] unused: #0 is always vacant
   std::vector<double> named;
+  // By slot of `named`: the caller's variable a VAR parameter aliases (null: the own slot).
+  std::vector<double *> refs;
   std::unordered_map<std::string, std::vector<double>> arrays;  // named local arrays
   std::vector<double> slots;
   uint64_t backJumps = 0;
@@ -82,7 +85,7 @@ struct Evaluator::Impl {
   std::unordered_map<const Function *, std::unique_ptr<CompiledFn>> compiled;
   std::unordered_map<std::string, uint32_t> globalNames;
   std::unordered_map<std::string, uint32_t> mainLocalNames;
-  std::vector<double> globalNamed;
+  std::deque<double> globalNamed;  // a deque: VAR parameters keep pointers into it
   std::unordered_map<std::string, std::vector<double>> globalArrays;
   double lastIndex = 0;  // index of the last array element referenced (for the unset error)
   std::vector<double> numbered = std::vector<double>(100000, numberedStart());
@@ -340,7 +343,7 @@ struct Evaluator::Impl {
     if (v.space == VarSpace::Local) {
       auto &names = *curFn->names;
       auto it = names.find(v.str);
-      return it != names.end() && it->second < fr.named.size() && !isUnset(fr.named[it->second]);
+      return it != names.end() && it->second < fr.named.size() && !isUnset(namedSlot(fr, it->second));
     }
     if (v.space == VarSpace::Global) {
       auto it = globalNames.find(v.str);
@@ -369,7 +372,7 @@ struct Evaluator::Impl {
         it = (*cf.names).emplace(v.str, (uint32_t)(*cf.names).size()).first;
       }
       if (fr.named.size() <= it->second) fr.named.resize((*cf.names).size(), unsetValue());
-      return fr.named[it->second];
+      return namedSlot(fr, it->second);
     }
     case VarSpace::Global: {
       auto it = globalNames.find(v.str);
@@ -393,6 +396,10 @@ struct Evaluator::Impl {
   }
 
   CompiledFn *curFn = nullptr;
+
+  static double &namedSlot(Frame &fr, uint32_t slot) {
+    return slot < fr.refs.size() && fr.refs[slot] ? *fr.refs[slot] : fr.named[slot];
+  }
 
   double ev(Frame &fr, const Expr &e) {
     switch (e.kind) {
@@ -563,6 +570,16 @@ struct Evaluator::Impl {
   // at each activation, globals from the start of the run.
   std::unordered_map<std::string, bool> globalsStarted;
   void startDeclared(const Function &f, CompiledFn &cf, Frame &fr) {
+    // Parameters the call omitted (still unset, never aliased): the default, else the type's
+    // initial value (docs/IR.md §5.1).
+    for (auto &p : f.params) {
+      uint32_t slot = localSlot(cf, p.name);
+      if (fr.named.size() <= slot) fr.named.resize((*cf.names).size(), unsetValue());
+      if ((slot < fr.refs.size() && fr.refs[slot]) || !isUnset(fr.named[slot])) continue;
+      const VarDecl *d = decls.find(f, VarSpace::Local, p.name);
+      double v = p.defaultValue ? ev(fr, *p.defaultValue) : initialValue(d->type);
+      fr.named[slot] = convert(d, *Expr::var(VarSpace::Local, p.name), v, f.loc);
+    }
     auto it = decls.locals.find(&f);
     if (it != decls.locals.end())
       for (auto &[name, d] : it->second) {
@@ -686,9 +703,14 @@ struct Evaluator::Impl {
     // Arguments are evaluated once, in the caller's frame.
     std::vector<std::pair<long, double>> numberedArgs;
     std::vector<std::pair<std::string, double>> namedArgs;
+    std::vector<std::pair<std::string, double *>> refArgs;  // VAR parameters: the caller's variable
     for (auto &a : op.args) {
       if (a.key.rfind("a.", 0) != 0) continue;
       std::string k = a.key.substr(2);
+      if (const Param *p = f->param(k); p && p->byRef) {
+        refArgs.push_back({k, &varRef(fr, *curFn, *a.value, true)});
+        continue;
+      }
       double v = ev(fr, *a.value);
       if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
         if (isString(v)) fail(op.loc, stringInParameterMessage());
@@ -712,8 +734,11 @@ struct Evaluator::Impl {
           if (n >= 1 && n <= kMacroLocals) nf.locals[n] = v;
         CompiledFn &cf = compile(*f);
         for (auto &[n, v] : namedArgs) localSlot(cf, n);  // the callee may only read it
+        for (auto &[n, r] : refArgs) localSlot(cf, n);
         nf.named.assign((*cf.names).size(), unsetValue());
+        nf.refs.assign((*cf.names).size(), nullptr);
         for (auto &[n, v] : namedArgs) nf.named[(*cf.names).at(n)] = v;
+        for (auto &[n, r] : refArgs) nf.refs[(*cf.names).at(n)] = r;
         runFunction(*f, nf);
       } else {
         Frame shared;

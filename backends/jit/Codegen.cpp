@@ -291,11 +291,35 @@ void Codegen::emitFunction(FnInfo &fi) {
     }
     B.CreateBr(failBB);
   } else {
+    emitParamDefaults(fi);
     scanTargets(fi.fn->body);
     emitRegion(fi.fn->body);
     if (!B.GetInsertBlock()->getTerminator()) B.CreateRet(B.getInt32(NCRT_OK));
   }
   if (pred_empty(exitBB)) exitBB->eraseFromParent();
+}
+
+// Parameters the call omitted (their slot is still unset): the default, else the type's initial
+// value, converted; an omitted VAR parameter aliases a slot of this activation.
+void Codegen::emitParamDefaults(FnInfo &fi) {
+  for (auto &p : fi.fn->params) {
+    Value *slot = B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + fi.locals.at(p.name));
+    Value *omitted = B.CreateICmpEQ(B.CreateLoad(i64Ty, slot), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
+    BasicBlock *fill = newBlock("param.default"), *cont = newBlock("param.done");
+    B.CreateCondBr(omitted, fill, cont);
+    B.SetInsertPoint(fill);
+    const VarDecl *d = decls_.find(*fi.fn, ir::VarSpace::Local, p.name);
+    Val v = p.defaultValue ? expr(*p.defaultValue) : Val{ConstantFP::get(dblTy, initialValue(d->type)), false};
+    Value *c = convertArg(fi, p.name, v, fi.fn->loc);
+    if (p.byRef) {
+      Value *own = allocaEntry(dblTy, "param.own");
+      B.CreateStore(c, own);
+      c = B.CreateBitCast(B.CreatePtrToInt(own, i64Ty), dblTy);
+    }
+    B.CreateStore(c, slot);
+    B.CreateBr(cont);
+    B.SetInsertPoint(cont);
+  }
 }
 
 void Codegen::emitEntry() {

@@ -314,6 +314,11 @@ void Codegen::emitCall(const Op &op) {
   for (auto &a : op.args)
     if (a.key.rfind("a.", 0) == 0 && a.value) {
       std::string k = a.key.substr(2);
+      if (const ir::Param *p = fixed ? fixed->fn->param(k) : nullptr; p && p->byRef) {
+        // A VAR parameter gets the address of the caller's variable (in the frame slot's bits).
+        args.push_back({k, B.CreateBitCast(B.CreatePtrToInt(varPtr(*a.value, true), i64Ty), dblTy)});
+        continue;
+      }
       Val v = expr(*a.value);
       if (!k.empty() && k[0] >= '0' && k[0] <= '9') checkNotString(v, op.loc, stringInParameterMessage());
       else if (fixed)  // a typed parameter converts its argument (ir/Strings.h convertForStore)

@@ -66,6 +66,7 @@ private:
   void scanExprNames(FnInfo &fi, const ir::Expr &e);
   void emitFunction(FnInfo &fi);
   void emitEntry();
+  void emitParamDefaults(FnInfo &fi);
   void initFrame(llvm::Value *frame, unsigned size, unsigned from);
   // ------------------------------------------------ control flow (CodegenCtl.cpp)
   void validate(FnInfo &fi);
