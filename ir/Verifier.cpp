@@ -46,13 +46,13 @@ struct VarRule {
   OpKind kind;
   const char *key;
 };
-const VarRule kVarRules[] = {{OpKind::Declare, "var"}, {OpKind::Assign, "target"}};
+const VarRule kVarRules[] = {{OpKind::Declare, "var"}, {OpKind::Assign, "target"}, {OpKind::Call, "result"}};
 
 // Keys whose value must be a non-negative integer constant (source block numbers).
 const VarRule kIntConstRules[] = {{OpKind::Block, "n"}, {OpKind::Block, "skip"}};
 
 // Keys of `call` besides the `a.<name>` arguments.
-const char *kCallKeys = "callee count frame";
+const char *kCallKeys = "callee count frame result";
 
 bool inList(std::string_view list, std::string_view word) {
   size_t i = 0;
@@ -363,9 +363,6 @@ private:
         error(op.loc, fmt::format("'declare' type '{}' is not supported yet", t->str));
       break;
     }
-    case OpKind::Return:
-      if (op.get("value")) error(op.loc, "'return' with a value is not supported yet");
-      break;
     case OpKind::Goto:  // a computed label= is reported as not a string constant (argContext)
       if (const Expr *v = op.get("n"); v && !v->isConstant())
         error(op.loc, "'goto' argument 'n' must be a constant: computed jumps are not supported yet");
@@ -423,6 +420,7 @@ private:
   static Ctx argContext(const Op &op, const std::string &key) {
     if (op.kind == OpKind::Message && key == "text") return Ctx::Text;
     if ((op.kind == OpKind::Assign && key == "value") || (op.kind == OpKind::Declare && key == "init") ||
+        (op.kind == OpKind::Return && key == "value") ||
         (op.kind == OpKind::Call && key.rfind("a.", 0) == 0 && !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
       return Ctx::Any;
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)

@@ -73,6 +73,7 @@ struct Frame {
   std::unordered_map<std::string, std::vector<double>> arrays;  // named local arrays
   std::vector<double> slots;
   uint64_t backJumps = 0;
+  double ret = unsetValue();  // `return value=`: what the caller's `call result=` receives
 };
 
 }  // namespace
@@ -544,13 +545,19 @@ struct Evaluator::Impl {
     const VarDecl *d = decls.find(*cf.fn, *target);
     double v = value ? ev(fr, *value) : declare ? initialValue(d ? d->type : ValueType::Real) : vacantValue();
     if (isUnset(v)) v = vacantValue();
-    v = convert(d, *target, v, target->loc);
     if (declare && d && d->rank) {  // an array declaration sets every element
+      v = convert(d, *target, v, target->loc);
       auto &arrays = target->space == VarSpace::Global ? globalArrays : fr.arrays;
       arrays[target->str].assign(d->size(), v);
       return;
     }
-    varRef(fr, cf, *target, true) = v;
+    store(*target, v, fr, cf);
+  }
+
+  // A store into a variable: the value converted for it (its declared type, numeric spaces).
+  void store(const Expr &target, double v, Frame &fr, CompiledFn &cf) {
+    v = convert(decls.find(*cf.fn, target), target, v, target.loc);
+    varRef(fr, cf, target, true) = v;
   }
 
   // What a store into `target` keeps: converted to its declared type; numeric parameters take
@@ -685,7 +692,10 @@ struct Evaluator::Impl {
         break;
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
-      case IK::Return: curFn = saved; return;
+      case IK::Return:
+        if (const Expr *v = in.op ? in.op->get("value") : nullptr) fr.ret = ev(fr, *v);
+        curFn = saved;
+        return;
       }
     }
   }
@@ -725,6 +735,7 @@ struct Evaluator::Impl {
       }
     }
     ++depth;
+    double ret = unsetValue();  // the last repetition's return value
     for (long i = 0; i < (long)std::llround(count); ++i) {
       checkTime(op.loc);  // a huge repeat count must still stop at the run-time limit
       if (newFrame) {
@@ -740,14 +751,20 @@ struct Evaluator::Impl {
         for (auto &[n, v] : namedArgs) nf.named[(*cf.names).at(n)] = v;
         for (auto &[n, r] : refArgs) nf.refs[(*cf.names).at(n)] = r;
         runFunction(*f, nf);
+        ret = nf.ret;
       } else {
         Frame shared;
         std::memcpy(shared.locals, fr.locals, sizeof fr.locals);
         runFunction(*f, shared);
         std::memcpy(fr.locals, shared.locals, sizeof fr.locals);
+        ret = shared.ret;
       }
     }
     --depth;
+    if (const Expr *result = op.get("result")) {
+      if (isUnset(ret)) fail(op.loc, noReturnValueMessage());
+      store(*result, ret, fr, *curFn);
+    }
   }
 
   // The main program's frame outlives run() so a streamed program (run chunk by chunk) keeps

@@ -364,7 +364,7 @@ std::unique_ptr<Module> Codegen::run() {
     fi.fn = &fn;
     for (auto &p : fn.params) fi.locals.emplace(p.name, (unsigned)fi.locals.size());
     scanNames(fi, fn.body);
-    fi.frameSize = (unsigned)(kFrameLocals + 1 + fi.locals.size());
+    fi.frameSize = (unsigned)(kFrameLocals + 1 + fi.locals.size() + 1);  // the last slot: return value
     fi.F = Function::Create(ncFnTy, GlobalValue::InternalLinkage, "nc." + fn.name, M.get());
     validate(fi);
   }

@@ -194,7 +194,11 @@ void Codegen::emitOp(const Op &op) {
   case OpKind::Continue: B.CreateBr(loops_.back().cont); return;
   case OpKind::Goto: emitGoto(op); return;
   case OpKind::Call: emitCall(op); return;
-  case OpKind::Return: B.CreateRet(B.getInt32(NCRT_OK)); return;
+  case OpKind::Return:
+    if (const Expr *v = op.get("value"))
+      B.CreateStore(expr(*v).v, B.CreateConstGEP1_32(dblTy, frameArg, cur_->frameSize - 1));
+    B.CreateRet(B.getInt32(NCRT_OK));
+    return;
   default: return;  // rejected by validate()
   }
 }
@@ -326,6 +330,12 @@ void Codegen::emitCall(const Op &op) {
       args.push_back({k, v.v});
     }
   B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
+  const Expr *result = op.get("result");
+  Value *ret = nullptr;  // the last repetition's return value
+  if (result) {
+    ret = allocaEntry(dblTy, "call.ret");
+    B.CreateStore(ConstantExpr::getBitCast(ConstantInt::get(i64Ty, NCRT_UNSET_BITS), dblTy), ret);
+  }
 
   Value *counter = nullptr, *limit = nullptr;
   BasicBlock *head = nullptr, *done = nullptr;
@@ -347,7 +357,8 @@ void Codegen::emitCall(const Op &op) {
     emitTimeCheck(op.loc);  // count=1e308 must not outlive --max-seconds
   }
   if (fixed) {
-    emitInvoke(*fixed, args, newFrame);
+    Value *r = emitInvoke(*fixed, args, newFrame);
+    if (ret) B.CreateStore(r, ret);
   } else {
     BasicBlock *joined = newBlock("call.joined");
     SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)src_.functions.size());
@@ -359,7 +370,8 @@ void Codegen::emitCall(const Op &op) {
       auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
       for (auto &[k, v] : converted)
         if (k.empty() || k[0] < '0' || k[0] > '9') v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
-      emitInvoke(fi, converted, newFrame);
+      Value *r = emitInvoke(fi, converted, newFrame);
+      if (ret) B.CreateStore(r, ret);
       B.CreateBr(joined);
     }
     B.SetInsertPoint(joined);
@@ -369,6 +381,12 @@ void Codegen::emitCall(const Op &op) {
     B.SetInsertPoint(done);
   }
   B.CreateStore(depth, depthPtr);
+  if (result) {
+    Value *r = B.CreateLoad(dblTy, ret);
+    failIf(B.CreateICmpEQ(B.CreateBitCast(r, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS)), op.loc,
+           noReturnValueMessage());
+    storeVar(*result, {r, true, true, op.loc});
+  }
 }
 
 // An argument for the named parameter `key` of `fi`, converted when the parameter is typed.
@@ -383,7 +401,7 @@ Value *Codegen::convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc 
 }
 
 // One activation of `fi` with the caller's evaluated arguments.
-void Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame) {
+Value *Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame) {
   Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
   const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);
   if (newFrame) {
@@ -405,6 +423,7 @@ void Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Va
   Value *st = B.CreateCall(fi.F, {ctxArg, stArg, frame});
   checkStatus(st);
   if (!newFrame) B.CreateMemCpy(frameArg, MaybeAlign(8), frame, MaybeAlign(8), localsBytes);
+  return B.CreateLoad(dblTy, B.CreateConstGEP1_32(dblTy, frame, fi.frameSize - 1));
 }
 
 }  // namespace ncc::jit

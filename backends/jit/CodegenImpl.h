@@ -50,7 +50,7 @@ struct FnInfo {
   std::map<std::string, unsigned> locals;  // named locals: frame slot 34 + index
   std::map<std::string, ArraySlots> arrays;  // named local arrays in the activation's array block
   uint64_t arraySlots = 0;                   // doubles in that block
-  unsigned frameSize = 34;                 // #0..#33 then the named locals
+  unsigned frameSize = 35;                 // #0..#33, the named locals, the return value (unset: none)
   std::vector<std::pair<SourceLoc, std::string>> compileErrors;
 };
 
@@ -78,7 +78,8 @@ private:
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
   llvm::Value *convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc);
-  void emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
+  // Returns the callee's return value (unset bits when it returned none).
+  llvm::Value *emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
   const ir::Op *resolveTarget(const ir::Op &go);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
   void emitTimeCheck(SourceLoc loc);
