@@ -363,10 +363,6 @@ private:
         error(op.loc, fmt::format("'declare' type '{}' is not supported yet", t->str));
       break;
     }
-    case OpKind::Goto:  // a computed label= is reported as not a string constant (argContext)
-      if (const Expr *v = op.get("n"); v && !v->isConstant())
-        error(op.loc, "'goto' argument 'n' must be a constant: computed jumps are not supported yet");
-      break;
     case OpKind::Call: {
       const Expr *f = op.get("frame");
       bool shared = !f || f->str != "new";
@@ -426,8 +422,8 @@ private:
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
     if (op.kind == OpKind::Move && (key == "ic" || key == "ac")) return Ctx::Symbol;  // axis letters (CmdTemplate)
     if (op.kind == OpKind::Call && key == "callee") return Ctx::Callee;
-    if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||
-        (op.kind == OpKind::Goto && key == "label"))
+    if (op.kind == OpKind::Goto && key == "label") return Ctx::Text;  // a computed one: any value as text
+    if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name"))
       return Ctx::Constant;
     for (auto &r : kVarRules)
       if (r.kind == op.kind && key == r.key) return Ctx::Var;

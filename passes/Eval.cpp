@@ -3,6 +3,7 @@
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
 #include "ir/Decls.h"
+#include "ir/Jumps.h"
 #include "ir/Strings.h"
 #include "ir/Value.h"
 #include "passes/CmdTemplate.h"
@@ -36,6 +37,7 @@ enum class IK : uint8_t {
   Declare,      // target, expr (init, may be null)
   JumpIfFalse,  // expr -> jump
   Jump,         // -> jump; backward gotos count toward the loop limit
+  JumpComputed, // op: a goto whose target is computed when it runs (ir/Jumps.h)
   LoopEnter,    // slot: reset the iteration counter
   LoopBack,     // slot: count an iteration, then jump
   CountInit,    // slot: remaining = expr (null = endless)
@@ -59,6 +61,7 @@ struct CompiledFn {
   std::vector<Instr> code;
   std::vector<CmdTemplate> templates;
   uint32_t slots = 0;
+  std::vector<JumpEntry> jumps;  // block numbers and labels in code order (ir/Jumps.h)
   std::unordered_map<std::string, uint32_t> ownNames;
   // Slots of named locals: the function's own, or for the main program one map that outlives
   // the module, so a streamed program keeps its named locals from chunk to chunk.
@@ -112,9 +115,7 @@ struct Evaluator::Impl {
     const Op *op;
   };
 
-  void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops, std::vector<Fixup> &gotos,
-                     std::unordered_map<int64_t, std::vector<uint32_t>> &blocks,
-                     std::unordered_map<std::string, uint32_t> &labels) {
+  void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops, std::vector<Fixup> &gotos) {
     for (const Op &op : r) {
       auto emit = [&](Instr in) {
         cf.code.push_back(in);
@@ -124,7 +125,7 @@ struct Evaluator::Impl {
         CmdTemplate t;
         if (!buildCmdTemplate(op, t, diags)) fail(op.loc, "invalid machine operation");
         if (op.kind == OpKind::Block && t.base.blockNumber >= 0)
-          blocks[t.base.blockNumber].push_back((uint32_t)cf.code.size());
+          cf.jumps.push_back({(double)t.base.blockNumber, nullptr, (uint32_t)cf.code.size()});
         Instr in{IK::Machine};
         in.slot = (uint32_t)cf.templates.size();
         in.op = &op;
@@ -149,11 +150,11 @@ struct Evaluator::Impl {
         jf.expr = op.get("cond");
         jf.op = &op;
         uint32_t j = emit(jf);
-        compileRegion(cf, op.regions[0], loops, gotos, blocks, labels);
+        compileRegion(cf, op.regions[0], loops, gotos);
         if (op.regions.size() > 1) {
           uint32_t skip = emit(Instr{IK::Jump});
           cf.code[j].jump = (uint32_t)cf.code.size();
-          compileRegion(cf, op.regions[1], loops, gotos, blocks, labels);
+          compileRegion(cf, op.regions[1], loops, gotos);
           cf.code[skip].jump = (uint32_t)cf.code.size();
         } else {
           cf.code[j].jump = (uint32_t)cf.code.size();
@@ -187,7 +188,7 @@ struct Evaluator::Impl {
         }
         uint32_t head = test;
         loops.emplace_back();
-        compileRegion(cf, op.regions[0], loops, gotos, blocks, labels);
+        compileRegion(cf, op.regions[0], loops, gotos);
         uint32_t back = (uint32_t)cf.code.size();
         Instr lb{IK::LoopBack};
         lb.slot = slot;
@@ -209,12 +210,15 @@ struct Evaluator::Impl {
         break;
       }
       case OpKind::Label:
-        if (const Expr *e = op.get("name")) labels[e->str] = (uint32_t)cf.code.size();
+        if (const Expr *e = op.get("name")) cf.jumps.push_back({NAN, e->str.c_str(), (uint32_t)cf.code.size()});
         break;
       case OpKind::Goto: {
-        Instr j{IK::Jump};
+        const Expr *n = op.get("n"), *l = op.get("label");
+        Instr j{(n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String) ? IK::Jump : IK::JumpComputed};
         j.op = &op;
-        gotos.push_back({emit(j), &op});
+        j.expr = n ? n : l;
+        uint32_t i = emit(j);
+        if (j.kind == IK::Jump) gotos.push_back({i, &op});
         break;
       }
       case OpKind::Call: {
@@ -251,45 +255,17 @@ struct Evaluator::Impl {
     if (!module->functions.empty() && &f == &module->functions[0]) cf->names = &mainLocalNames;
     std::vector<LoopCtx> loops;
     std::vector<Fixup> gotos;
-    std::unordered_map<int64_t, std::vector<uint32_t>> blocks;
-    std::unordered_map<std::string, uint32_t> labels;
     for (auto &p : f.params) localSlot(*cf, p.name);
-    compileRegion(*cf, f.body, loops, gotos, blocks, labels);
+    compileRegion(*cf, f.body, loops, gotos);
     cf->code.push_back(Instr{IK::Return});
-    // Resolve gotos: a sequence number is searched forward from the goto, then from the start
-    // (Fanuc); dir=forward/backward restricts the search (Sinumerik GOTOF/GOTOB).
+    // Constant targets resolve now (ir/Jumps.h); a missing one fails the function's first call.
     for (auto &g : gotos) {
-      const Expr *n = g.op->get("n");
       const Expr *l = g.op->get("label");
-      const Expr *d = g.op->get("dir");
-      std::string dir = d ? d->str : "any";
-      std::vector<uint32_t> cands;
-      if (n && n->kind == ExprKind::Number) {
-        auto bit = blocks.find((int64_t)n->num);
-        if (bit != blocks.end()) cands = bit->second;
-      } else if (l) {
-        auto lit = labels.find(l->str);
-        if (lit != labels.end()) cands.push_back(lit->second);
-      } else {
-        fail(g.op->loc, "goto target must be a constant sequence number or a label");
-      }
-      int64_t pick = -1;
-      for (uint32_t c : cands)
-        if (c > g.instr && dir != "backward") {
-          pick = c;
-          break;
-        }
-      if (pick < 0 && dir != "forward")
-        for (uint32_t c : cands)
-          if (c <= g.instr) {
-            pick = c;
-            break;
-          }
-      if (pick < 0)
-        fail(g.op->loc, n ? fmt::format("jump to missing sequence number N{}", (int64_t)n->num)
-                          : fmt::format("jump to missing label '{}'", l->str));
-      cf->code[g.instr].jump = (uint32_t)pick;
-      cf->code[g.instr].backward = (uint32_t)pick <= g.instr;
+      double n = l ? NAN : g.op->get("n")->num;
+      int64_t t = findJump(cf->jumps.data(), cf->jumps.size(), l, n, l ? l->str : "", g.instr, jumpDir(*g.op));
+      if (t < 0) fail(g.op->loc, missingJumpMessage(l, n, l ? l->str : ""));
+      cf->code[g.instr].jump = cf->jumps[t].pos;
+      cf->code[g.instr].backward = cf->jumps[t].pos <= g.instr;
     }
     auto &ref = *cf;
     compiled.emplace(&f, std::move(cf));
@@ -661,14 +637,15 @@ struct Evaluator::Impl {
         break;
       case IK::JumpIfFalse: pc = truthy(number(fr, *in.expr)) ? pc + 1 : in.jump; break;
       case IK::Jump:
-        if (in.backward) {
-          if (++fr.backJumps > limits.maxLoopIterations)
-            fail(in.op->loc, fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)",
-                                         limits.maxLoopIterations));
-          checkTime(in.op->loc);
-        }
+        if (in.backward) countBackJump(fr, in.op->loc);
         pc = in.jump;
         break;
+      case IK::JumpComputed: {
+        uint32_t to = computedJump(cf, *in.op, *in.expr, pc, fr);
+        if (to <= pc) countBackJump(fr, in.op->loc);
+        pc = to;
+        break;
+      }
       case IK::LoopEnter: fr.slots[in.slot] = 0; ++pc; break;
       case IK::LoopBack:
         if (++fr.slots[in.slot] >= (double)limits.maxLoopIterations)
@@ -698,6 +675,25 @@ struct Evaluator::Impl {
         return;
       }
     }
+  }
+
+  void countBackJump(Frame &fr, SourceLoc loc) {
+    if (++fr.backJumps > limits.maxLoopIterations)
+      fail(loc, fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)",
+                            limits.maxLoopIterations));
+    checkTime(loc);
+  }
+
+  // A goto's target computed now: n= a number, label= any value as text (ir/Jumps.h).
+  uint32_t computedJump(CompiledFn &cf, const Op &go, const Expr &target, uint32_t pc, Frame &fr) {
+    bool label = go.get("label");
+    double n = NAN;
+    std::string name;
+    if (label) appendStr(fr, target, name);
+    else n = num(number(fr, target));
+    int64_t t = findJump(cf.jumps.data(), cf.jumps.size(), label, n, name, pc, jumpDir(go));
+    if (t < 0) fail(go.loc, missingJumpMessage(label, n, name));
+    return cf.jumps[t].pos;
   }
 
   void call(const Op &op, Frame &fr) {

@@ -1,5 +1,6 @@
 // The ncrt C ABI: storage, command execution and run-time errors for compiled NC programs.
 #include "runtime/ncrt.h"
+#include "ir/Jumps.h"
 
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
@@ -205,6 +206,16 @@ void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
 void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v); }
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v, true); }
 const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
+
+static_assert(sizeof(ncc::ir::JumpEntry) == 24, "JumpEntry layout changed: update the JIT's jump table type");
+
+int64_t ncrt_jump(ncrt_ctx *ctx, int label, double n, const void *entries, uint64_t count, uint32_t from, uint32_t dir,
+                  uint32_t file, uint32_t line, uint32_t col) {
+  int64_t t = ncc::ir::findJump(static_cast<const ncc::ir::JumpEntry *>(entries), count, label, n, ctx->text, from,
+                                (ncc::ir::JumpDir)dir);
+  if (t < 0) ctx->diags.error({file, line, col}, ncc::ir::missingJumpMessage(label, n, ctx->text));
+  return t;
+}
 
 int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
                     uint32_t file, uint32_t line, uint32_t col) {

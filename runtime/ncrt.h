@@ -102,6 +102,11 @@ void ncrt_str_num(ncrt_ctx *ctx, double v);
 double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
+/* A computed goto (ir/Jumps.h findJump over the function's `count` entries, an ir::JumpEntry
+ * array): label != 0 searches the label named by the text buffer, else block number n. Returns
+ * the entry's index, or -1 after reporting the missing target at the loc. */
+int64_t ncrt_jump(ncrt_ctx *ctx, int label, double n, const void *entries, uint64_t count, uint32_t from, uint32_t dir,
+                  uint32_t file, uint32_t line, uint32_t col);
 /* A computed callee: the index in names[0..n) of the function named by the text buffer, or when
  * `numeric` by the program number `value` (O<n>). Reports the error at the loc and returns -1
  * when there is no such function. */

@@ -80,6 +80,7 @@ void Codegen::declareRuntime() {
   fCompare = decl("ncrt_compare", dblTy, {ptrTy, i32Ty, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
   fConvert = decl("ncrt_convert", dblTy, {ptrTy, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   fFill = decl("ncrt_fill", voidTy, {ptrTy, i64Ty, dblTy});
+  fJump = decl("ncrt_jump", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty, i32Ty, i32Ty});
   fBadIndex = decl("ncrt_bad_index", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   // Pure arithmetic helpers: lets LLVM keep variables in registers across them.
   for (auto *fc : {&fMod, &fIDiv, &fPow, &fBitwise}) {
@@ -277,8 +278,8 @@ void Codegen::emitFunction(FnInfo &fi) {
   B.SetInsertPoint(body);
 
   order_.clear();
-  blocks_.clear();
-  labels_.clear();
+  jumps_.clear();
+  jumpOps_.clear();
   targetBBs_.clear();
   loops_.clear();
   run_.clear();

@@ -3,6 +3,7 @@
 // function activation, calls sharing or renewing the #1..#33 frame.
 #include "backends/jit/CodegenImpl.h"
 
+#include "ir/Jumps.h"
 #include "ir/Strings.h"
 #include "ir/Value.h"
 #include "runtime/ncrt.h"
@@ -21,52 +22,56 @@ using ir::Op;
 using ir::OpKind;
 
 
-// Numbers every op in pre-order (the eval engine's instruction order), records block numbers
-// and labels, and marks the ops gotos reach: they start a basic block (and end a constant run).
+// Numbers every op in pre-order (the eval engine's instruction order), lists block numbers and
+// labels as jump targets (ir/Jumps.h) and marks the ops gotos reach: they start a basic block
+// (and end a constant run). A computed goto may reach every target.
 void Codegen::scanTargets(const ir::Region &body) {
   order_.clear();
-  blocks_.clear();
-  labels_.clear();
+  jumps_.clear();
+  jumpOps_.clear();
   targetBBs_.clear();
+  jumpTable_ = nullptr;
   std::vector<const Op *> gotos;
+  bool computed = false;
   auto walk = [&](auto &self, const ir::Region &r) -> void {
     for (auto &op : r) {
-      order_[&op] = (unsigned)order_.size();
+      unsigned pos = order_[&op] = (unsigned)order_.size();
       if (op.kind == OpKind::Block)
         if (const Expr *n = op.get("n"); n && (n->kind == ExprKind::Number || n->kind == ExprKind::Bool) &&
-                                         (int64_t)n->num >= 0)
-          blocks_.push_back({(int64_t)n->num, &op});
+                                         (int64_t)n->num >= 0) {
+          jumps_.push_back({(double)(int64_t)n->num, nullptr, pos});
+          jumpOps_.push_back(&op);
+        }
       if (op.kind == OpKind::Label)
-        if (const Expr *l = op.get("name")) labels_[l->str] = &op;
-      if (op.kind == OpKind::Goto) gotos.push_back(&op);
+        if (const Expr *l = op.get("name")) {
+          jumps_.push_back({NAN, l->str.c_str(), pos});
+          jumpOps_.push_back(&op);
+        }
+      if (op.kind == OpKind::Goto) {
+        gotos.push_back(&op);
+        computed |= !constantJump(op);
+      }
       for (auto &sub : op.regions) self(self, sub);
     }
   };
   walk(walk, body);
   for (const Op *go : gotos)
-    if (const Op *t = resolveTarget(*go)) targetBBs_[t] = nullptr;
+    if (const Op *t = constantJump(*go) ? resolveTarget(*go) : nullptr) targetBBs_[t] = nullptr;
+  if (computed)
+    for (const Op *t : jumpOps_) targetBBs_[t] = nullptr;
 }
 
-// Fanuc search order: forward from the goto, then from the start of the function;
-// dir=forward|backward restricts it (Sinumerik GOTOF/GOTOB).
+bool Codegen::constantJump(const Op &go) {
+  const Expr *n = go.get("n"), *l = go.get("label");
+  return (n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String);
+}
+
+// A constant target, as the eval engine resolves it when it compiles the function.
 const Op *Codegen::resolveTarget(const Op &go) {
-  const Expr *n = go.get("n"), *l = go.get("label"), *d = go.get("dir");
-  std::string dir = d ? d->str : "any";
-  std::vector<const Op *> cands;
-  if (n && n->kind == ExprKind::Number) {
-    for (auto &b : blocks_)
-      if (b.first == (int64_t)n->num) cands.push_back(b.second);
-  } else if (l) {
-    if (auto it = labels_.find(l->str); it != labels_.end()) cands.push_back(it->second);
-  }
-  unsigned from = order_.at(&go);
-  if (dir != "backward")
-    for (const Op *c : cands)
-      if (order_[c] > from) return c;
-  if (dir != "forward")
-    for (const Op *c : cands)
-      if (order_[c] <= from) return c;
-  return nullptr;
+  const Expr *l = go.get("label");
+  double n = l ? NAN : go.get("n")->num;
+  int64_t t = findJump(jumps_.data(), jumps_.size(), l, n, l ? l->str : "", order_.at(&go), ir::jumpDir(go));
+  return t < 0 ? nullptr : jumpOps_[t];
 }
 
 // The errors the eval engine raises when it compiles a function (on its first call): invalid
@@ -128,14 +133,10 @@ void Codegen::validate(FnInfo &fi) {
   if (!walk(walk, fi.fn->body, 0)) return;
   scanTargets(fi.fn->body);
   for (const Op *go : gotos) {
-    const Expr *n = go->get("n"), *l = go->get("label");
-    if (!(n && n->kind == ExprKind::Number) && !l) {
-      errs.push_back({go->loc, "goto target must be a constant sequence number or a label"});
-      return;
-    }
+    if (!constantJump(*go)) continue;  // resolved when it runs
     if (!resolveTarget(*go)) {
-      errs.push_back({go->loc, n ? fmt::format("jump to missing sequence number N{}", (int64_t)n->num)
-                                 : fmt::format("jump to missing label '{}'", l->str)});
+      const Expr *l = go->get("label");
+      errs.push_back({go->loc, ir::missingJumpMessage(l, l ? NAN : go->get("n")->num, l ? l->str : "")});
       return;
     }
   }
@@ -259,8 +260,8 @@ void Codegen::emitLoop(const Op &op) {
   B.SetInsertPoint(done);
 }
 
-void Codegen::emitGoto(const Op &go) {
-  const Op *target = resolveTarget(go);  // validate() guarantees one
+// A jump to `target`: a backward one counts toward the loop limit (per activation).
+void Codegen::emitJumpTo(const Op &go, const Op *target) {
   if (order_[target] <= order_[&go]) {
     Value *n = B.CreateAdd(B.CreateLoad(i64Ty, backJumps), B.getInt64(1));
     B.CreateStore(n, backJumps);
@@ -268,6 +269,41 @@ void Codegen::emitGoto(const Op &go) {
     emitTimeCheck(go.loc);
   }
   B.CreateBr(targetBlock(target));
+}
+
+// A computed goto: ncrt_jump searches the function's target table (ir/Jumps.h, as the eval
+// engine does) and returns the entry's index, which a switch turns into its block.
+void Codegen::emitGoto(const Op &go) {
+  if (constantJump(go)) {
+    emitJumpTo(go, resolveTarget(go));  // validate() guarantees one
+    return;
+  }
+  if (!jumpTable_) {
+    auto *entryTy = StructType::get(C, {dblTy, ptrTy, i32Ty});
+    std::vector<Constant *> rows;
+    for (auto &e : jumps_)
+      rows.push_back(ConstantStruct::get(entryTy, {ConstantFP::get(dblTy, e.n),
+                                                   e.label ? cstring(e.label) : ConstantPointerNull::get(ptrTy),
+                                                   B.getInt32(e.pos)}));
+    auto *arrTy = ArrayType::get(entryTy, rows.size());
+    jumpTable_ = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage, ConstantArray::get(arrTy, rows),
+                                    "nc.jumps");
+  }
+  const Expr *l = go.get("label");
+  Value *n = ConstantFP::get(dblTy, NAN);
+  if (l) appendString(*l, false);
+  else n = numOf(expr(*go.get("n")));
+  auto loc = locArgs(go.loc);
+  Value *index = B.CreateCall(fJump, {ctxArg, B.getInt32(l != nullptr), n, jumpTable_, B.getInt64(jumps_.size()),
+                                      B.getInt32(order_.at(&go)), B.getInt32((uint32_t)ir::jumpDir(go)), loc[0], loc[1],
+                                      loc[2]});
+  SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)jumpOps_.size());
+  for (size_t i = 0; i < jumpOps_.size(); ++i) {
+    BasicBlock *bb = newBlock("jump.case");
+    sw->addCase(B.getInt64(i), bb);
+    B.SetInsertPoint(bb);
+    emitJumpTo(go, jumpOps_[i]);
+  }
 }
 
 // call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are

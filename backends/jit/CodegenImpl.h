@@ -7,6 +7,7 @@
 #pragma once
 #include "ir/Value.h"
 #include "ir/Decls.h"
+#include "ir/Jumps.h"
 #include "ir/NCIR.h"
 #include "passes/CmdTemplate.h"
 
@@ -81,6 +82,8 @@ private:
   // Returns the callee's return value (unset bits when it returned none).
   llvm::Value *emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
   const ir::Op *resolveTarget(const ir::Op &go);
+  static bool constantJump(const ir::Op &go);
+  void emitJumpTo(const ir::Op &go, const ir::Op *target);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
   void emitTimeCheck(SourceLoc loc);
   // ------------------------------------------------ helpers (Codegen.cpp)
@@ -145,7 +148,7 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar;
-  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex;
+  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
@@ -173,8 +176,9 @@ private:
   // Jump targets: every op in pre-order (the eval engine's instruction order), block numbers
   // and labels (the last definition of a label wins, as in the eval engine).
   std::unordered_map<const ir::Op *, unsigned> order_;
-  std::vector<std::pair<int64_t, const ir::Op *>> blocks_;
-  std::map<std::string, const ir::Op *> labels_;
+  std::vector<ir::JumpEntry> jumps_;      // block numbers and labels in pre-order (ir/Jumps.h)
+  std::vector<const ir::Op *> jumpOps_;   // the op of each entry
+  llvm::GlobalVariable *jumpTable_ = nullptr;  // jumps_ as a constant, once a computed goto needs it
   std::unordered_map<const ir::Op *, llvm::BasicBlock *> targetBBs_;
   std::vector<MachineCmd> run_;  // pending constant commands (text points into the IR)
   std::string packed_;           // or, for a long run, the packed encoding so far
