@@ -46,4 +46,42 @@ std::string missingJumpMessage(bool label, double n, std::string_view name) {
                : fmt::format("jump to missing sequence number N{}", numberText(n));
 }
 
+SectionEnds sectionEnds(const Function &f) {
+  SectionEnds out;
+  std::unordered_map<std::string, std::vector<const Op *>> byTo;  // `to` label -> its calls
+  auto calls = [&](auto &self, const Region &r) -> void {
+    for (auto &op : r) {
+      if (op.kind == OpKind::CallSection) {
+        if (const Expr *to = op.get("to")) byTo[to->str].push_back(&op);
+        else out.before[&op].push_back(&op);
+      }
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  calls(calls, f.body);
+  auto place = [&](auto &self, const Region &r) -> void {
+    const std::vector<const Op *> *pending = nullptr;  // calls whose `to` block is open
+    for (auto &op : r) {
+      if (pending && (op.kind == OpKind::Block || op.kind == OpKind::Label)) {
+        auto &v = out.before[&op];
+        v.insert(v.end(), pending->begin(), pending->end());
+        pending = nullptr;
+      }
+      if (op.kind == OpKind::Label)
+        if (const Expr *n = op.get("name"); n && byTo.count(n->str)) pending = &byTo[n->str];
+      for (auto &sub : op.regions) self(self, sub);
+    }
+    if (pending) {
+      auto &v = out.atEnd[&r];
+      v.insert(v.end(), pending->begin(), pending->end());
+    }
+  };
+  place(place, f.body);
+  return out;
+}
+
+std::string sectionDepthMessage() {
+  return fmt::format("section calls nested deeper than {} in one function", kMaxSectionDepth);
+}
+
 }  // namespace ncc::ir

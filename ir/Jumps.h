@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <vector>
 
 namespace ncc::ir {
 
@@ -32,5 +34,28 @@ int64_t findJump(const JumpEntry *entries, size_t count, bool label, double n, s
 
 // The run-time error for a target that findJump did not find.
 std::string missingJumpMessage(bool label, double n, std::string_view name);
+
+// Section calls (`call_section from= to= count=`, docs/IR.md §5.3): where each call's section
+// ends, in the places both engines mark. With `to`, after the block of the `to` label: before
+// the next `block` or `label` op of the label's region, else at the end of that region; without
+// `to`, just before the call itself (the section runs from the label up to the call).
+struct SectionEnds {
+  std::unordered_map<const Op *, std::vector<const Op *>> before;     // op -> calls ending before it
+  std::unordered_map<const Region *, std::vector<const Op *>> atEnd;  // region -> calls ending at its end
+  const std::vector<const Op *> *endingBefore(const Op &op) const {
+    auto it = before.find(&op);
+    return it == before.end() ? nullptr : &it->second;
+  }
+  const std::vector<const Op *> *endingAt(const Region &r) const {
+    auto it = atEnd.find(&r);
+    return it == atEnd.end() ? nullptr : &it->second;
+  }
+};
+SectionEnds sectionEnds(const Function &f);
+
+// At most this many section calls active in one function activation (a section calling a
+// section); one more is the run-time error sectionDepthMessage().
+constexpr unsigned kMaxSectionDepth = 16;
+std::string sectionDepthMessage();
 
 }  // namespace ncc::ir

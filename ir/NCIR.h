@@ -123,6 +123,7 @@ enum class OpKind : uint8_t {
   Goto,        // n=<int> | label=<string>  dir=forward|backward|any
   Call,        // callee=<string> count=<int>? frame=new|shared  a.<key>=<expr>… arguments
   Return,      // value=<expr>?
+  CallSection, // from=<label> to=<label>? count=<int>?  run a section of this function, then go on
   Count
 };
 

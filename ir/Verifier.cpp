@@ -253,6 +253,14 @@ private:
         error(op.loc, fmt::format("'goto' target label '{}' is not in this function", l->str));
       break;
     }
+    case OpKind::CallSection:  // the section's labels: constants of this function
+      for (const char *key : {"from", "to"})
+        if (const Expr *l = op.get(key)) {
+          if (l->kind != ExprKind::String) error(op.loc, fmt::format("'call_section' argument '{}' must be a label name (a string)", key));
+          else if (!targets_.labels.count(l->str))
+            error(op.loc, fmt::format("'call_section' label '{}' is not in this function", l->str));
+        }
+      break;
     case OpKind::Call: {
       const Expr *c = op.get("callee");
       if (!c) break;
@@ -423,7 +431,8 @@ private:
     if (op.kind == OpKind::Move && (key == "ic" || key == "ac")) return Ctx::Symbol;  // axis letters (CmdTemplate)
     if (op.kind == OpKind::Call && key == "callee") return Ctx::Callee;
     if (op.kind == OpKind::Goto && key == "label") return Ctx::Text;  // a computed one: any value as text
-    if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name"))
+    if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||
+        (op.kind == OpKind::CallSection && (key == "from" || key == "to")))
       return Ctx::Constant;
     for (auto &r : kVarRules)
       if (r.kind == op.kind && key == r.key) return Ctx::Var;

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -44,6 +45,8 @@ enum class IK : uint8_t {
   CountTest,    // slot: if remaining == 0 -> jump, else remaining -= 1
   Call,         // op
   Return,
+  SectionCall,  // op -> jump (the `from` label): push a section, run it (ir/Jumps.h)
+  SectionEnd,   // calls: the innermost active section, if one of these, repeats or returns
 };
 
 struct Instr {
@@ -54,6 +57,7 @@ struct Instr {
   const Op *op = nullptr;
   const Expr *expr = nullptr;
   const Expr *target = nullptr;
+  const std::vector<const Op *> *calls = nullptr;  // SectionEnd
 };
 
 struct CompiledFn {
@@ -62,6 +66,7 @@ struct CompiledFn {
   std::vector<CmdTemplate> templates;
   uint32_t slots = 0;
   std::vector<JumpEntry> jumps;  // block numbers and labels in code order (ir/Jumps.h)
+  SectionEnds sectionEnds;       // where call_section sections end
   std::unordered_map<std::string, uint32_t> ownNames;
   // Slots of named locals: the function's own, or for the main program one map that outlives
   // the module, so a streamed program keeps its named locals from chunk to chunk.
@@ -76,6 +81,12 @@ struct Frame {
   std::unordered_map<std::string, std::vector<double>> arrays;  // named local arrays
   std::vector<double> slots;
   uint64_t backJumps = 0;
+  struct Section {  // an active call_section
+    const Op *call;
+    uint32_t start, ret;
+    double remaining;
+  };
+  std::vector<Section> sections;
   double ret = unsetValue();  // `return value=`: what the caller's `call result=` receives
 };
 
@@ -116,11 +127,17 @@ struct Evaluator::Impl {
   };
 
   void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops, std::vector<Fixup> &gotos) {
+    auto emit = [&](Instr in) {
+      cf.code.push_back(in);
+      return (uint32_t)cf.code.size() - 1;
+    };
+    auto sectionEnd = [&](const std::vector<const Op *> *calls) {
+      Instr in{IK::SectionEnd};
+      in.calls = calls;
+      if (calls) emit(in);
+    };
     for (const Op &op : r) {
-      auto emit = [&](Instr in) {
-        cf.code.push_back(in);
-        return (uint32_t)cf.code.size() - 1;
-      };
+      sectionEnd(cf.sectionEnds.endingBefore(op));
       if (isMachineOp(op.kind)) {
         CmdTemplate t;
         if (!buildCmdTemplate(op, t, diags)) fail(op.loc, "invalid machine operation");
@@ -233,10 +250,18 @@ struct Evaluator::Impl {
         emit(r);
         break;
       }
+      case OpKind::CallSection: {
+        Instr c{IK::SectionCall};
+        c.op = &op;
+        c.expr = op.get("count");
+        gotos.push_back({emit(c), &op});  // `from` resolves like a goto's label
+        break;
+      }
       default:
         fail(op.loc, fmt::format("the eval engine cannot execute '{}'", opInfo(op.kind).name));
       }
     }
+    sectionEnd(cf.sectionEnds.endingAt(r));
   }
 
   uint32_t localSlot(CompiledFn &cf, const std::string &name) {
@@ -256,11 +281,12 @@ struct Evaluator::Impl {
     std::vector<LoopCtx> loops;
     std::vector<Fixup> gotos;
     for (auto &p : f.params) localSlot(*cf, p.name);
+    cf->sectionEnds = sectionEnds(f);
     compileRegion(*cf, f.body, loops, gotos);
     cf->code.push_back(Instr{IK::Return});
     // Constant targets resolve now (ir/Jumps.h); a missing one fails the function's first call.
     for (auto &g : gotos) {
-      const Expr *l = g.op->get("label");
+      const Expr *l = g.op->get(g.op->kind == OpKind::CallSection ? "from" : "label");
       double n = l ? NAN : g.op->get("n")->num;
       int64_t t = findJump(cf->jumps.data(), cf->jumps.size(), l, n, l ? l->str : "", g.instr, jumpDir(*g.op));
       if (t < 0) fail(g.op->loc, missingJumpMessage(l, n, l ? l->str : ""));
@@ -669,6 +695,33 @@ struct Evaluator::Impl {
         break;
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
+      case IK::SectionCall: {
+        double n = in.expr ? std::round(num(number(fr, *in.expr))) : 1;
+        if (!(n >= 1)) {
+          ++pc;
+          break;
+        }
+        if (fr.sections.size() >= kMaxSectionDepth) fail(in.op->loc, sectionDepthMessage());
+        fr.sections.push_back({in.op, in.jump, pc + 1, n});
+        pc = in.jump;
+        break;
+      }
+      case IK::SectionEnd: {
+        if (fr.sections.empty() ||
+            std::find(in.calls->begin(), in.calls->end(), fr.sections.back().call) == in.calls->end()) {
+          ++pc;
+          break;
+        }
+        auto &sec = fr.sections.back();
+        checkTime(sec.call->loc);
+        if (--sec.remaining > 0) {
+          pc = sec.start;
+        } else {
+          pc = sec.ret;
+          fr.sections.pop_back();
+        }
+        break;
+      }
       case IK::Return:
         if (const Expr *v = in.op ? in.op->get("value") : nullptr) fr.ret = ev(fr, *v);
         curFn = saved;

@@ -293,11 +293,30 @@ void Codegen::emitFunction(FnInfo &fi) {
     B.CreateBr(failBB);
   } else {
     emitParamDefaults(fi);
+    startSections(fi);
     scanTargets(fi.fn->body);
     emitRegion(fi.fn->body);
     if (!B.GetInsertBlock()->getTerminator()) B.CreateRet(B.getInt32(NCRT_OK));
   }
   if (pred_empty(exitBB)) exitBB->eraseFromParent();
+}
+
+// The section-call state of one activation (only functions with call_section get it).
+void Codegen::startSections(FnInfo &fi) {
+  sectionEnds_ = ir::sectionEnds(*fi.fn);
+  sectionIds_.clear();
+  sectionRet_.clear();
+  auto walk = [&](auto &self, const ir::Region &r) -> void {  // ids in program order
+    for (auto &op : r) {
+      if (op.kind == OpKind::CallSection) sectionIds_.emplace(&op, (unsigned)sectionIds_.size());
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  walk(walk, fi.fn->body);
+  if (sectionIds_.empty()) return;
+  sectionSp_ = allocaEntry(i32Ty, "section.sp", B.getInt32(0));
+  sectionCalls_ = allocaEntry(ArrayType::get(i32Ty, ir::kMaxSectionDepth), "section.calls");
+  sectionLeft_ = allocaEntry(ArrayType::get(dblTy, ir::kMaxSectionDepth), "section.left");
 }
 
 // Parameters the call omitted (their slot is still unset): the default, else the type's initial

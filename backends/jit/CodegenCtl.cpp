@@ -51,12 +51,14 @@ void Codegen::scanTargets(const ir::Region &body) {
         gotos.push_back(&op);
         computed |= !constantJump(op);
       }
+      if (op.kind == OpKind::CallSection) gotos.push_back(&op);  // its `from` label is a target
       for (auto &sub : op.regions) self(self, sub);
     }
   };
   walk(walk, body);
   for (const Op *go : gotos)
-    if (const Op *t = constantJump(*go) ? resolveTarget(*go) : nullptr) targetBBs_[t] = nullptr;
+    if (const Op *t = go->kind == OpKind::CallSection || constantJump(*go) ? resolveTarget(*go) : nullptr)
+      targetBBs_[t] = nullptr;
   if (computed)
     for (const Op *t : jumpOps_) targetBBs_[t] = nullptr;
 }
@@ -66,9 +68,10 @@ bool Codegen::constantJump(const Op &go) {
   return (n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String);
 }
 
-// A constant target, as the eval engine resolves it when it compiles the function.
+// A constant target (a call_section's `from`), as the eval engine resolves it when it compiles
+// the function.
 const Op *Codegen::resolveTarget(const Op &go) {
-  const Expr *l = go.get("label");
+  const Expr *l = go.get(go.kind == OpKind::CallSection ? "from" : "label");
   double n = l ? NAN : go.get("n")->num;
   int64_t t = findJump(jumps_.data(), jumps_.size(), l, n, l ? l->str : "", order_.at(&go), ir::jumpDir(go));
   return t < 0 ? nullptr : jumpOps_[t];
@@ -120,6 +123,7 @@ void Codegen::validate(FnInfo &fi) {
         }
         break;
       case OpKind::Goto: gotos.push_back(&op); break;
+      case OpKind::CallSection: gotos.push_back(&op); break;
       case OpKind::Label:
       case OpKind::Call:
       case OpKind::Return: break;
@@ -133,9 +137,9 @@ void Codegen::validate(FnInfo &fi) {
   if (!walk(walk, fi.fn->body, 0)) return;
   scanTargets(fi.fn->body);
   for (const Op *go : gotos) {
-    if (!constantJump(*go)) continue;  // resolved when it runs
+    if (go->kind == OpKind::Goto && !constantJump(*go)) continue;  // resolved when it runs
     if (!resolveTarget(*go)) {
-      const Expr *l = go->get("label");
+      const Expr *l = go->get(go->kind == OpKind::CallSection ? "from" : "label");
       errs.push_back({go->loc, ir::missingJumpMessage(l, l ? NAN : go->get("n")->num, l ? l->str : "")});
       return;
     }
@@ -150,6 +154,11 @@ BasicBlock *Codegen::targetBlock(const Op *op) {
 
 void Codegen::emitRegion(const ir::Region &r) {
   for (auto &op : r) {
+    if (auto *calls = sectionEnds_.endingBefore(op)) {  // before the op: a jump to it skips this
+      flushRun();
+      ensureOpen();
+      emitSectionEnd(*calls);
+    }
     if (targetBBs_.count(&op)) {
       flushRun();
       startBlock(targetBlock(&op));
@@ -164,6 +173,58 @@ void Codegen::emitRegion(const ir::Region &r) {
     emitOp(op);
   }
   flushRun();
+  if (auto *calls = sectionEnds_.endingAt(r)) {
+    ensureOpen();
+    emitSectionEnd(*calls);
+  }
+}
+
+// call_section (ir/Jumps.h): the activation's stack of active sections holds each one's call
+// (an index into sectionIds_) and repetitions left. count below 1 runs nothing.
+void Codegen::emitCallSection(const Op &op) {
+  const Expr *countE = op.get("count");
+  Value *n = countE ? roundOf(numOf(expr(*countE))) : ConstantFP::get(dblTy, 1.0);
+  BasicBlock *run = newBlock("section.call");
+  B.CreateCondBr(B.CreateFCmpOGE(n, ConstantFP::get(dblTy, 1.0)), run, sectionReturn(op));
+  B.SetInsertPoint(run);
+  Value *sp = B.CreateLoad(i32Ty, sectionSp_);
+  failIf(B.CreateICmpUGE(sp, B.getInt32(ir::kMaxSectionDepth)), op.loc, ir::sectionDepthMessage());
+  B.CreateStore(B.getInt32(sectionIds_.at(&op)), B.CreateGEP(i32Ty, sectionCalls_, sp));
+  B.CreateStore(n, B.CreateGEP(dblTy, sectionLeft_, sp));
+  B.CreateStore(B.CreateAdd(sp, B.getInt32(1)), sectionSp_);
+  B.CreateBr(targetBlock(resolveTarget(op)));
+  B.SetInsertPoint(sectionReturn(op));
+}
+
+// Where sections end: if the innermost active section is one of `calls`, count a repetition and
+// run it again from its label, or pop it and continue after its call.
+void Codegen::emitSectionEnd(const std::vector<const Op *> &calls) {
+  Value *sp = B.CreateLoad(i32Ty, sectionSp_);
+  BasicBlock *check = newBlock("section.check"), *cont = newBlock("section.cont");
+  B.CreateCondBr(B.CreateICmpSGT(sp, B.getInt32(0)), check, cont);
+  B.SetInsertPoint(check);
+  Value *top = B.CreateSub(sp, B.getInt32(1));
+  SwitchInst *sw = B.CreateSwitch(B.CreateLoad(i32Ty, B.CreateGEP(i32Ty, sectionCalls_, top)), cont);
+  for (const Op *call : calls) {
+    BasicBlock *bb = newBlock("section.end"), *done = newBlock("section.done");
+    sw->addCase(B.getInt32(sectionIds_.at(call)), bb);
+    B.SetInsertPoint(bb);
+    Value *leftPtr = B.CreateGEP(dblTy, sectionLeft_, top);
+    Value *left = B.CreateFSub(B.CreateLoad(dblTy, leftPtr), ConstantFP::get(dblTy, 1.0));
+    B.CreateStore(left, leftPtr);
+    emitTimeCheck(call->loc);
+    B.CreateCondBr(B.CreateFCmpOGT(left, ConstantFP::get(dblTy, 0.0)), targetBlock(resolveTarget(*call)), done);
+    B.SetInsertPoint(done);
+    B.CreateStore(top, sectionSp_);
+    B.CreateBr(sectionReturn(*call));
+  }
+  B.SetInsertPoint(cont);
+}
+
+BasicBlock *Codegen::sectionReturn(const Op &call) {
+  BasicBlock *&bb = sectionRet_[&call];
+  if (!bb) bb = newBlock("section.return");
+  return bb;
 }
 
 void Codegen::emitOp(const Op &op) {
@@ -195,6 +256,7 @@ void Codegen::emitOp(const Op &op) {
   case OpKind::Continue: B.CreateBr(loops_.back().cont); return;
   case OpKind::Goto: emitGoto(op); return;
   case OpKind::Call: emitCall(op); return;
+  case OpKind::CallSection: emitCallSection(op); return;
   case OpKind::Return:
     if (const Expr *v = op.get("value"))
       B.CreateStore(expr(*v).v, B.CreateConstGEP1_32(dblTy, frameArg, cur_->frameSize - 1));

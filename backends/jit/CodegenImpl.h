@@ -68,6 +68,7 @@ private:
   void emitFunction(FnInfo &fi);
   void emitEntry();
   void emitParamDefaults(FnInfo &fi);
+  void startSections(FnInfo &fi);
   void initFrame(llvm::Value *frame, unsigned size, unsigned from);
   // ------------------------------------------------ control flow (CodegenCtl.cpp)
   void validate(FnInfo &fi);
@@ -84,6 +85,9 @@ private:
   const ir::Op *resolveTarget(const ir::Op &go);
   static bool constantJump(const ir::Op &go);
   void emitJumpTo(const ir::Op &go, const ir::Op *target);
+  void emitCallSection(const ir::Op &op);
+  void emitSectionEnd(const std::vector<const ir::Op *> &calls);
+  llvm::BasicBlock *sectionReturn(const ir::Op &call);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
   void emitTimeCheck(SourceLoc loc);
   // ------------------------------------------------ helpers (Codegen.cpp)
@@ -179,6 +183,12 @@ private:
   std::vector<ir::JumpEntry> jumps_;      // block numbers and labels in pre-order (ir/Jumps.h)
   std::vector<const ir::Op *> jumpOps_;   // the op of each entry
   llvm::GlobalVariable *jumpTable_ = nullptr;  // jumps_ as a constant, once a computed goto needs it
+  // call_section: where sections end, an id per call, the block after each call, and the
+  // activation's section stack (depth, call ids, repetitions left).
+  ir::SectionEnds sectionEnds_;
+  std::unordered_map<const ir::Op *, unsigned> sectionIds_;
+  std::unordered_map<const ir::Op *, llvm::BasicBlock *> sectionRet_;
+  llvm::Value *sectionSp_ = nullptr, *sectionCalls_ = nullptr, *sectionLeft_ = nullptr;
   std::unordered_map<const ir::Op *, llvm::BasicBlock *> targetBBs_;
   std::vector<MachineCmd> run_;  // pending constant commands (text points into the IR)
   std::string packed_;           // or, for a long run, the packed encoding so far
