@@ -14,6 +14,11 @@ public:
   virtual bool exec(const MachineCmd &cmd) = 0;
   // A system variable's current value (ir/SystemVars.h); false when this sink has none.
   virtual bool readSystem(SysVar v, double &out) { return false; }
+  // A call of a function with the SAVE attribute: saveModal before it runs, restoreModal after
+  // it returned (nested calls nest), which puts the modal state back with the records that
+  // changes (docs/IR.md §5.4). Sinks without modal state ignore both. False: an error was reported.
+  virtual bool saveModal() { return true; }
+  virtual bool restoreModal(SourceLoc loc) { return true; }
 };
 
 }  // namespace ncc

@@ -174,6 +174,7 @@ struct Function {
   std::string name;        // "main" for the main program; "O1234", "L10", "SUB" for others
   SourceLoc loc;
   std::vector<Param> params;
+  bool save = false;       // Sinumerik SAVE: the caller's modal state comes back on return (docs/IR.md §5.4)
   Region body;
   const Param *param(std::string_view name) const {  // null when there is no such parameter
     for (auto &p : params)

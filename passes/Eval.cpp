@@ -787,6 +787,7 @@ struct Evaluator::Impl {
     double ret = unsetValue();  // the last repetition's return value
     for (long i = 0; i < (long)std::llround(count); ++i) {
       checkTime(op.loc);  // a huge repeat count must still stop at the run-time limit
+      if (f->save && !sink.saveModal()) throw ProgramEnd{};
       if (newFrame) {
         Frame nf;
         for (double &l : nf.locals) l = vacantValue();
@@ -808,6 +809,7 @@ struct Evaluator::Impl {
         std::memcpy(fr.locals, shared.locals, sizeof fr.locals);
         ret = shared.ret;
       }
+      if (f->save && !sink.restoreModal(op.loc)) throw ProgramEnd{};  // SAVE: the caller's modes again
     }
     --depth;
     if (const Expr *result = op.get("result")) {

@@ -48,6 +48,10 @@ public:
   // at `loc`.
   bool runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern, const CycleArgs *patternArgs,
                 SourceLoc loc);
+  // Sinumerik SAVE: remembers the modal groups and the feed; restoreModal puts back the last
+  // remembered ones (executing the mode and feed changes, so their records follow).
+  bool saveModal();
+  bool restoreModal(SourceLoc loc);
   // The value of a system variable (ir/SystemVars.h) in the current state.
   bool readSystem(SysVar v, double &out) const;
   const ModalState &state() const;
@@ -66,6 +70,8 @@ public:
   explicit ExecutorSink(Executor &e) : exec_(e) {}
   bool exec(const MachineCmd &cmd) override { return exec_.exec(cmd); }
   bool readSystem(SysVar v, double &out) override { return exec_.readSystem(v, out); }
+  bool saveModal() override { return exec_.saveModal(); }
+  bool restoreModal(SourceLoc loc) override { return exec_.restoreModal(loc); }
 
 private:
   Executor &exec_;

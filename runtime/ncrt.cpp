@@ -207,6 +207,11 @@ void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v, true); }
 const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
 
+int ncrt_save_modal(ncrt_ctx *ctx) { return ctx->sink.saveModal() ? NCRT_OK : NCRT_ERROR; }
+int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  return ctx->sink.restoreModal({file, line, col}) ? NCRT_OK : NCRT_ERROR;
+}
+
 static_assert(sizeof(ncc::ir::JumpEntry) == 24, "JumpEntry layout changed: update the JIT's jump table type");
 
 int64_t ncrt_jump(ncrt_ctx *ctx, int label, double n, const void *entries, uint64_t count, uint32_t from, uint32_t dir,

@@ -102,6 +102,9 @@ void ncrt_str_num(ncrt_ctx *ctx, double v);
 double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
+/* SAVE (CmdSink saveModal/restoreModal) around a call: NCRT_OK or NCRT_ERROR (reported). */
+int ncrt_save_modal(ncrt_ctx *ctx);
+int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 /* A computed goto (ir/Jumps.h findJump over the function's `count` entries, an ir::JumpEntry
  * array): label != 0 searches the label named by the text buffer, else block number n. Returns
  * the entry's index, or -1 after reporting the missing target at the loc. */

@@ -80,6 +80,8 @@ void Codegen::declareRuntime() {
   fCompare = decl("ncrt_compare", dblTy, {ptrTy, i32Ty, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
   fConvert = decl("ncrt_convert", dblTy, {ptrTy, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   fFill = decl("ncrt_fill", voidTy, {ptrTy, i64Ty, dblTy});
+  fSaveModal = decl("ncrt_save_modal", i32Ty, {ptrTy});
+  fRestoreModal = decl("ncrt_restore_modal", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
   fJump = decl("ncrt_jump", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty, i32Ty, i32Ty});
   fBadIndex = decl("ncrt_bad_index", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   // Pure arithmetic helpers: lets LLVM keep variables in registers across them.

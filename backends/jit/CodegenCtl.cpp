@@ -455,7 +455,7 @@ void Codegen::emitCall(const Op &op) {
     emitTimeCheck(op.loc);  // count=1e308 must not outlive --max-seconds
   }
   if (fixed) {
-    Value *r = emitInvoke(*fixed, args, newFrame);
+    Value *r = emitInvoke(*fixed, args, newFrame, op.loc);
     if (ret) B.CreateStore(r, ret);
   } else {
     BasicBlock *joined = newBlock("call.joined");
@@ -468,7 +468,7 @@ void Codegen::emitCall(const Op &op) {
       auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
       for (auto &[k, v] : converted)
         if (k.empty() || k[0] < '0' || k[0] > '9') v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
-      Value *r = emitInvoke(fi, converted, newFrame);
+      Value *r = emitInvoke(fi, converted, newFrame, op.loc);
       if (ret) B.CreateStore(r, ret);
       B.CreateBr(joined);
     }
@@ -499,7 +499,9 @@ Value *Codegen::convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc 
 }
 
 // One activation of `fi` with the caller's evaluated arguments.
-Value *Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame) {
+Value *Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame,
+                           SourceLoc loc) {
+  if (fi.fn->save) checkStatus(B.CreateCall(fSaveModal, {ctxArg}));  // SAVE (docs/IR.md §5.4)
   Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
   const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);
   if (newFrame) {
@@ -521,6 +523,10 @@ Value *Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, 
   Value *st = B.CreateCall(fi.F, {ctxArg, stArg, frame});
   checkStatus(st);
   if (!newFrame) B.CreateMemCpy(frameArg, MaybeAlign(8), frame, MaybeAlign(8), localsBytes);
+  if (fi.fn->save) {
+    auto l = locArgs(loc);
+    checkStatus(B.CreateCall(fRestoreModal, {ctxArg, l[0], l[1], l[2]}));
+  }
   return B.CreateLoad(dblTy, B.CreateConstGEP1_32(dblTy, frame, fi.frameSize - 1));
 }
 

@@ -81,7 +81,8 @@ private:
   void emitCall(const ir::Op &op);
   llvm::Value *convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc);
   // Returns the callee's return value (unset bits when it returned none).
-  llvm::Value *emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
+  llvm::Value *emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame,
+                          SourceLoc loc);
   const ir::Op *resolveTarget(const ir::Op &go);
   static bool constantJump(const ir::Op &go);
   void emitJumpTo(const ir::Op &go, const ir::Op *target);
@@ -152,7 +153,7 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar;
-  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump;
+  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;

@@ -30,6 +30,11 @@ public:
     return true;
   }
   bool readSystem(SysVar v, double &out) override { return exec_.readSystem(v, out); }
+  bool saveModal() override { return exec_.saveModal(); }
+  bool restoreModal(SourceLoc loc) override {
+    exec_.restoreModal(loc);
+    return true;
+  }
 
 private:
   Executor &exec_;
