@@ -160,6 +160,7 @@ static const OpInfo kOps[] = {
     {OpKind::Call, "call", 0, 0, "callee", "*"},
     {OpKind::Return, "return", 0, 0, "", "value"},
     {OpKind::CallSection, "call_section", 0, 0, "from", "to count"},
+    {OpKind::ModalCall, "modal_call", 0, 0, "", "*"},
 };
 static_assert(sizeof(kOps) / sizeof(kOps[0]) == (size_t)OpKind::Count, "op table out of sync");
 

@@ -124,6 +124,7 @@ enum class OpKind : uint8_t {
   Call,        // callee=<string> count=<int>? frame=new|shared  a.<key>=<expr>… arguments
   Return,      // value=<expr>?
   CallSection, // from=<label> to=<label>? count=<int>?  run a section of this function, then go on
+  ModalCall,   // callee=<string>? a.<key>=<expr>…  call after each following move; no callee: cancel
   Count
 };
 

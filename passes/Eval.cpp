@@ -44,6 +44,7 @@ enum class IK : uint8_t {
   CountInit,    // slot: remaining = expr (null = endless)
   CountTest,    // slot: if remaining == 0 -> jump, else remaining -= 1
   Call,         // op
+  ModalCall,    // op: set or cancel the modal call
   Return,
   SectionCall,  // op -> jump (the `from` label): push a section, run it (ir/Jumps.h)
   SectionEnd,   // calls: the innermost active section, if one of these, repeats or returns
@@ -248,6 +249,12 @@ struct Evaluator::Impl {
         Instr r{IK::Return};
         r.op = &op;
         emit(r);
+        break;
+      }
+      case OpKind::ModalCall: {
+        Instr c{IK::ModalCall};
+        c.op = &op;
+        emit(c);
         break;
       }
       case OpKind::CallSection: {
@@ -536,6 +543,7 @@ struct Evaluator::Impl {
       cmd.set(s.word, v);
     }
     if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
+    if (cmd.kind == CmdKind::Move && !modal.callee.empty() && !inModal) runModal(cmd.loc, fr);
     if (cmd.kind == CmdKind::Stop &&
         (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
       ended = true;
@@ -695,6 +703,7 @@ struct Evaluator::Impl {
         break;
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
+      case IK::ModalCall: setModal(*in.op, fr); ++pc; break;
       case IK::SectionCall: {
         double n = in.expr ? std::round(num(number(fr, *in.expr))) : 1;
         if (!(n >= 1)) {
@@ -749,6 +758,44 @@ struct Evaluator::Impl {
     return cf.jumps[t].pos;
   }
 
+  // The a.<key> arguments of a call, evaluated once in the caller's frame: numbered ones for
+  // #1..#33, named ones converted for the callee's typed parameters, VAR ones as the address of
+  // the caller's variable.
+  struct CallArgs {
+    std::vector<std::pair<long, double>> numbered;
+    std::vector<std::pair<std::string, double>> named;
+    std::vector<std::pair<std::string, double *>> refs;
+  };
+  CallArgs evalArgs(const Op &op, const Function &f, Frame &fr) {
+    CallArgs out;
+    for (auto &a : op.args) {
+      if (a.key.rfind("a.", 0) != 0) continue;
+      std::string k = a.key.substr(2);
+      if (const Param *p = f.param(k); p && p->byRef) {
+        out.refs.push_back({k, &varRef(fr, *curFn, *a.value, true)});
+        continue;
+      }
+      double v = ev(fr, *a.value);
+      if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
+        if (isString(v)) fail(op.loc, stringInParameterMessage());
+        out.numbered.push_back({std::atol(k.c_str()), v});
+      } else {
+        // A typed parameter converts its argument (ir/Strings.h convertForStore).
+        if (const VarDecl *d = decls.find(f, VarSpace::Local, k)) {
+          std::string err;
+          if (!convertForStore(pool, d->type, d->len, k, v, v, err)) fail(op.loc, err);
+        }
+        out.named.push_back({k, v});
+      }
+    }
+    return out;
+  }
+
+  void checkDepth(SourceLoc loc) {
+    if (depth + 1 > limits.maxCallDepth)
+      fail(loc, fmt::format("call depth limit {} exceeded (limit --max-call-depth)", limits.maxCallDepth));
+  }
+
   void call(const Op &op, Frame &fr) {
     const Expr *calleeE = op.get("callee");
     if (!calleeE) fail(op.loc, unknownProgramMessage("?"));
@@ -757,65 +804,75 @@ struct Evaluator::Impl {
     double count = countE ? num(number(fr, *countE)) : 1;
     const Expr *frameE = op.get("frame");
     bool newFrame = frameE && frameE->str == "new";
-    if (depth + 1 > limits.maxCallDepth)
-      fail(op.loc, fmt::format("call depth limit {} exceeded (limit --max-call-depth)", limits.maxCallDepth));
-    // Arguments are evaluated once, in the caller's frame.
-    std::vector<std::pair<long, double>> numberedArgs;
-    std::vector<std::pair<std::string, double>> namedArgs;
-    std::vector<std::pair<std::string, double *>> refArgs;  // VAR parameters: the caller's variable
-    for (auto &a : op.args) {
-      if (a.key.rfind("a.", 0) != 0) continue;
-      std::string k = a.key.substr(2);
-      if (const Param *p = f->param(k); p && p->byRef) {
-        refArgs.push_back({k, &varRef(fr, *curFn, *a.value, true)});
-        continue;
-      }
-      double v = ev(fr, *a.value);
-      if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
-        if (isString(v)) fail(op.loc, stringInParameterMessage());
-        numberedArgs.push_back({std::atol(k.c_str()), v});
-      } else {
-        // A typed parameter converts its argument (ir/Strings.h convertForStore).
-        if (const VarDecl *d = decls.find(*f, VarSpace::Local, k)) {
-          std::string err;
-          if (!convertForStore(pool, d->type, d->len, k, v, v, err)) fail(op.loc, err);
-        }
-        namedArgs.push_back({k, v});
-      }
-    }
-    ++depth;
-    double ret = unsetValue();  // the last repetition's return value
-    for (long i = 0; i < (long)std::llround(count); ++i) {
-      checkTime(op.loc);  // a huge repeat count must still stop at the run-time limit
-      if (f->save && !sink.saveModal()) throw ProgramEnd{};
-      if (newFrame) {
-        Frame nf;
-        for (double &l : nf.locals) l = vacantValue();
-        for (auto &[n, v] : numberedArgs)
-          if (n >= 1 && n <= kMacroLocals) nf.locals[n] = v;
-        CompiledFn &cf = compile(*f);
-        for (auto &[n, v] : namedArgs) localSlot(cf, n);  // the callee may only read it
-        for (auto &[n, r] : refArgs) localSlot(cf, n);
-        nf.named.assign((*cf.names).size(), unsetValue());
-        nf.refs.assign((*cf.names).size(), nullptr);
-        for (auto &[n, v] : namedArgs) nf.named[(*cf.names).at(n)] = v;
-        for (auto &[n, r] : refArgs) nf.refs[(*cf.names).at(n)] = r;
-        runFunction(*f, nf);
-        ret = nf.ret;
-      } else {
-        Frame shared;
-        std::memcpy(shared.locals, fr.locals, sizeof fr.locals);
-        runFunction(*f, shared);
-        std::memcpy(fr.locals, shared.locals, sizeof fr.locals);
-        ret = shared.ret;
-      }
-      if (f->save && !sink.restoreModal(op.loc)) throw ProgramEnd{};  // SAVE: the caller's modes again
-    }
-    --depth;
+    checkDepth(op.loc);
+    CallArgs args = evalArgs(op, *f, fr);
+    double ret = invoke(*f, args, newFrame, count, op.loc, fr);
     if (const Expr *result = op.get("result")) {
       if (isUnset(ret)) fail(op.loc, noReturnValueMessage());
       store(*result, ret, fr, *curFn);
     }
+  }
+
+  // Runs `f` llround(count) times with the evaluated arguments; the last repetition's return
+  // value (unset: none).
+  double invoke(const Function &f, const CallArgs &args, bool newFrame, double count, SourceLoc loc, Frame &fr) {
+    ++depth;
+    double ret = unsetValue();
+    for (long i = 0; i < (long)std::llround(count); ++i) {
+      checkTime(loc);  // a huge repeat count must still stop at the run-time limit
+      if (f.save && !sink.saveModal()) throw ProgramEnd{};
+      if (newFrame) {
+        Frame nf;
+        for (double &l : nf.locals) l = vacantValue();
+        for (auto &[n, v] : args.numbered)
+          if (n >= 1 && n <= kMacroLocals) nf.locals[n] = v;
+        CompiledFn &cf = compile(f);
+        for (auto &[n, v] : args.named) localSlot(cf, n);  // the callee may only read it
+        for (auto &[n, r] : args.refs) localSlot(cf, n);
+        nf.named.assign((*cf.names).size(), unsetValue());
+        nf.refs.assign((*cf.names).size(), nullptr);
+        for (auto &[n, v] : args.named) nf.named[(*cf.names).at(n)] = v;
+        for (auto &[n, r] : args.refs) nf.refs[(*cf.names).at(n)] = r;
+        runFunction(f, nf);
+        ret = nf.ret;
+      } else {
+        Frame shared;
+        std::memcpy(shared.locals, fr.locals, sizeof fr.locals);
+        runFunction(f, shared);
+        std::memcpy(fr.locals, shared.locals, sizeof fr.locals);
+        ret = shared.ret;
+      }
+      if (f.save && !sink.restoreModal(loc)) throw ProgramEnd{};  // SAVE: the caller's modes again
+    }
+    --depth;
+    return ret;
+  }
+
+  // modal_call (docs/IR.md §5.5): the callee and arguments set by the last one; after each move
+  // executed outside the modal callee, the callee runs with them in a new frame.
+  struct ModalCall {
+    std::string callee;  // empty: none (resolved again at each call: a streamed chunk is a new module)
+    CallArgs args;
+  };
+  ModalCall modal;
+  bool inModal = false;
+
+  void setModal(const Op &op, Frame &fr) {
+    modal = ModalCall();
+    const Expr *calleeE = op.get("callee");
+    if (!calleeE) return;
+    const Function &f = callee(fr, *calleeE, op.loc);
+    modal.args = evalArgs(op, f, fr);
+    modal.callee = f.name;
+  }
+
+  void runModal(SourceLoc loc, Frame &fr) {
+    const Function *f = module->find(modal.callee);
+    if (!f) fail(loc, unknownProgramMessage(modal.callee));
+    checkDepth(loc);
+    inModal = true;
+    invoke(*f, modal.args, true, 1, loc, fr);
+    inModal = false;
   }
 
   // The main program's frame outlives run() so a streamed program (run chunk by chunk) keeps

@@ -12,6 +12,7 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstddef>
 
@@ -303,6 +304,38 @@ void Codegen::emitFunction(FnInfo &fi) {
   if (pred_empty(exitBB)) exitBB->eraseFromParent();
 }
 
+// The module's modal calls: their argument keys, the functions they may call (all of them for a
+// computed callee), the globals that hold the setting.
+void Codegen::scanModalCalls() {
+  bool any = false, computed = false;
+  std::set<FnInfo *> callees;
+  auto walk = [&](auto &self, const ir::Region &r) -> void {
+    for (auto &op : r) {
+      if (op.kind == OpKind::ModalCall) {
+        any = true;
+        for (auto &a : op.args)
+          if (a.key.rfind("a.", 0) == 0) modalKeys_.emplace(a.key.substr(2), (unsigned)modalKeys_.size());
+        std::string name;
+        if (const Expr *c = op.get("callee"); c && c->kind == ExprKind::String && src_.find(c->str))
+          callees.insert(&functions_.at(c->str));
+        else if (c) computed = true;
+      }
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  for (auto &fn : src_.functions) walk(walk, fn.body);
+  if (!any) return;
+  for (auto &fn : src_.functions)
+    if (computed || callees.count(&functions_.at(fn.name))) modalCallees_.push_back(&functions_.at(fn.name));
+  auto global = [&](Type *t, Constant *init, const char *name) {
+    return new GlobalVariable(*M, t, false, GlobalValue::PrivateLinkage, init, name);
+  };
+  modalFn_ = global(i64Ty, B.getInt64(-1), "nc.modal.fn");
+  modalIn_ = global(i32Ty, B.getInt32(0), "nc.modal.in");
+  auto *argsTy = ArrayType::get(dblTy, std::max<size_t>(1, modalKeys_.size()));
+  modalArgs_ = global(argsTy, ConstantAggregateZero::get(argsTy), "nc.modal.args");
+}
+
 // The section-call state of one activation (only functions with call_section get it).
 void Codegen::startSections(FnInfo &fi) {
   sectionEnds_ = ir::sectionEnds(*fi.fn);
@@ -367,6 +400,10 @@ void Codegen::emitEntry() {
       B.CreateStore(init, B.CreateConstGEP1_64(dblTy, namedPtr, it->second));
     }
   }
+  if (modalFn_) {  // no modal call at the start of each run
+    B.CreateStore(B.getInt64(-1), modalFn_);
+    B.CreateStore(B.getInt32(0), modalIn_);
+  }
   FnInfo &fi = functions_.at(src_.functions[0].name);
   Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
   initFrame(frame, fi.frameSize, 0);
@@ -397,6 +434,7 @@ std::unique_ptr<Module> Codegen::run() {
     B.SetInsertPoint(BasicBlock::Create(C, "entry", main));
     B.CreateRet(B.getInt32(NCRT_OK));
   } else {
+    scanModalCalls();
     for (auto &fn : src_.functions) emitFunction(functions_.at(fn.name));
     emitEntry();
   }

@@ -124,6 +124,7 @@ void Codegen::validate(FnInfo &fi) {
         break;
       case OpKind::Goto: gotos.push_back(&op); break;
       case OpKind::CallSection: gotos.push_back(&op); break;
+      case OpKind::ModalCall:
       case OpKind::Label:
       case OpKind::Call:
       case OpKind::Return: break;
@@ -257,6 +258,7 @@ void Codegen::emitOp(const Op &op) {
   case OpKind::Goto: emitGoto(op); return;
   case OpKind::Call: emitCall(op); return;
   case OpKind::CallSection: emitCallSection(op); return;
+  case OpKind::ModalCall: emitModalCall(op); return;
   case OpKind::Return:
     if (const Expr *v = op.get("value"))
       B.CreateStore(expr(*v).v, B.CreateConstGEP1_32(dblTy, frameArg, cur_->frameSize - 1));
@@ -368,21 +370,17 @@ void Codegen::emitGoto(const Op &go) {
   }
 }
 
-// call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are
-// evaluated once in the caller; frame=new gives each repetition fresh #1..#33 holding the
-// numbered arguments (and the callee's named locals that are named arguments); otherwise
-// (shared, the default) the callee works on the caller's #1..#33. Named locals are per call.
-// A computed callee (a string expression, or a number meaning O<n>) is looked up at run time
-// by ncrt_callee and dispatched by a switch over the module's functions.
-void Codegen::emitCall(const Op &op) {
+// The callee of a call or modal_call: a constant one as `fixed`, else `index` (into the
+// module's functions) looked up at run time by ncrt_callee (an unknown one fails there).
+bool Codegen::calleeOf(const Op &op, FnInfo *&fixed, Value *&index) {
   const Expr *callee = op.get("callee");
-  FnInfo *fixed = nullptr;
-  Value *index = nullptr;
+  fixed = nullptr;
+  index = nullptr;
   if (callee && callee->kind == ExprKind::String) {
     const ir::Function *target = src_.find(callee->str);
     if (!target) {
       fail(op.loc, unknownProgramMessage(callee->str));
-      return;
+      return false;
     }
     fixed = &functions_.at(target->name);
   } else if (callee) {
@@ -403,8 +401,106 @@ void Codegen::emitCall(const Op &op) {
     B.SetInsertPoint(found);
   } else {
     fail(op.loc, unknownProgramMessage("?"));
+    return false;
+  }
+  return true;
+}
+
+// A switch on a function index (into the module's functions) with `body` emitted for each of
+// `fns`; other indices fail. Continues after the switch.
+void Codegen::switchOnFunction(Value *index, const std::vector<FnInfo *> &fns, const std::function<void(FnInfo &)> &body) {
+  BasicBlock *joined = newBlock("fn.joined");
+  SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)fns.size());
+  for (FnInfo *fi : fns) {
+    BasicBlock *bb = newBlock("fn.case");
+    sw->addCase(B.getInt64(functionIndex(*fi)), bb);
+    B.SetInsertPoint(bb);
+    body(*fi);
+    B.CreateBr(joined);
+  }
+  B.SetInsertPoint(joined);
+}
+
+std::vector<FnInfo *> Codegen::allFunctions() {
+  std::vector<FnInfo *> out;
+  for (auto &fn : src_.functions) out.push_back(&functions_.at(fn.name));
+  return out;
+}
+
+// modal_call (docs/IR.md §5.5): the callee's index and every argument slot of the module's
+// modal calls go to module globals (a slot this op does not set: vacant for #n, unset for a
+// named parameter, so its default applies). Named arguments convert for the callee now.
+void Codegen::emitModalCall(const Op &op) {
+  if (!op.get("callee")) {
+    B.CreateStore(B.getInt64(-1), modalFn_);
     return;
   }
+  FnInfo *fixed = nullptr;
+  Value *index = nullptr;
+  if (!calleeOf(op, fixed, index)) return;
+  std::vector<std::pair<std::string, Val>> args;
+  for (auto &a : op.args)
+    if (a.key.rfind("a.", 0) == 0 && a.value) {
+      std::string k = a.key.substr(2);
+      Val v = expr(*a.value);
+      if (numberedKey(k)) checkNotString(v, op.loc, stringInParameterMessage());
+      else if (fixed) v = {convertArg(*fixed, k, v, op.loc), false};
+      args.push_back({k, v});
+    }
+  auto store = [&](FnInfo *fi) {  // every slot, converted for `fi` when the callee is computed
+    Constant *vac = ConstantFP::get(dblTy, vacantValue());
+    Constant *unset = ConstantExpr::getBitCast(ConstantInt::get(i64Ty, NCRT_UNSET_BITS), dblTy);
+    for (auto &[k, slot] : modalKeys_) {
+      Value *v = numberedKey(k) ? vac : unset;
+      for (auto &[ak, av] : args)
+        if (ak == k) v = fi && !numberedKey(k) ? convertArg(*fi, k, {av.v, true, true, op.loc}, op.loc) : av.v;
+      B.CreateStore(v, B.CreateConstGEP2_64(modalArgs_->getValueType(), modalArgs_, 0, slot));
+    }
+  };
+  if (fixed) {
+    store(nullptr);
+    B.CreateStore(B.getInt64(functionIndex(*fixed)), modalFn_);
+    return;
+  }
+  switchOnFunction(index, allFunctions(), [&](FnInfo &fi) { store(&fi); });
+  B.CreateStore(index, modalFn_);
+}
+
+// After a move: the modal callee, if one is set and none is running, in a new frame with the
+// stored arguments (as the eval engine's runModal).
+void Codegen::emitModalTrigger(SourceLoc loc) {
+  Value *fn = B.CreateLoad(i64Ty, modalFn_);
+  Value *go = B.CreateAnd(B.CreateICmpSGE(fn, B.getInt64(0)), B.CreateICmpEQ(B.CreateLoad(i32Ty, modalIn_), B.getInt32(0)));
+  BasicBlock *run = newBlock("modal.run"), *cont = newBlock("modal.cont");
+  B.CreateCondBr(go, run, cont);
+  B.SetInsertPoint(run);
+  Value *depth = B.CreateLoad(i32Ty, depthPtr);
+  Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
+  faultIf(B.CreateICmpUGE(depth, maxDepth), loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
+  B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
+  B.CreateStore(B.getInt32(1), modalIn_);
+  switchOnFunction(fn, modalCallees_, [&](FnInfo &fi) {
+    std::vector<std::pair<std::string, Value *>> args;
+    for (auto &[k, slot] : modalKeys_)
+      args.push_back({k, B.CreateLoad(dblTy, B.CreateConstGEP2_64(modalArgs_->getValueType(), modalArgs_, 0, slot))});
+    emitInvoke(fi, args, true, loc);
+  });
+  B.CreateStore(B.getInt32(0), modalIn_);
+  B.CreateStore(depth, depthPtr);
+  B.CreateBr(cont);
+  B.SetInsertPoint(cont);
+}
+
+// call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are
+// evaluated once in the caller; frame=new gives each repetition fresh #1..#33 holding the
+// numbered arguments (and the callee's named locals that are named arguments); otherwise
+// (shared, the default) the callee works on the caller's #1..#33. Named locals are per call.
+// A computed callee (a string expression, or a number meaning O<n>) is looked up at run time
+// by ncrt_callee and dispatched by a switch over the module's functions.
+void Codegen::emitCall(const Op &op) {
+  FnInfo *fixed = nullptr;
+  Value *index = nullptr;
+  if (!calleeOf(op, fixed, index)) return;
   const Expr *countE = op.get("count");
   Value *count = countE ? numOf(expr(*countE)) : nullptr;
   const Expr *frameE = op.get("frame");
@@ -458,21 +554,13 @@ void Codegen::emitCall(const Op &op) {
     Value *r = emitInvoke(*fixed, args, newFrame, op.loc);
     if (ret) B.CreateStore(r, ret);
   } else {
-    BasicBlock *joined = newBlock("call.joined");
-    SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)src_.functions.size());
-    for (size_t i = 0; i < src_.functions.size(); ++i) {
-      BasicBlock *bb = newBlock("call.case");
-      sw->addCase(B.getInt64(i), bb);
-      B.SetInsertPoint(bb);
-      FnInfo &fi = functions_.at(src_.functions[i].name);
+    switchOnFunction(index, allFunctions(), [&](FnInfo &fi) {
       auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
       for (auto &[k, v] : converted)
-        if (k.empty() || k[0] < '0' || k[0] > '9') v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
+        if (!numberedKey(k)) v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
       Value *r = emitInvoke(fi, converted, newFrame, op.loc);
       if (ret) B.CreateStore(r, ret);
-      B.CreateBr(joined);
-    }
-    B.SetInsertPoint(joined);
+    });
   }
   if (count) {
     B.CreateBr(head);

@@ -14,6 +14,7 @@
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Module.h>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -87,6 +88,14 @@ private:
   static bool constantJump(const ir::Op &go);
   void emitJumpTo(const ir::Op &go, const ir::Op *target);
   void emitCallSection(const ir::Op &op);
+  void scanModalCalls();
+  void emitModalCall(const ir::Op &op);
+  void emitModalTrigger(SourceLoc loc);
+  bool calleeOf(const ir::Op &op, FnInfo *&fixed, llvm::Value *&index);
+  void switchOnFunction(llvm::Value *index, const std::vector<FnInfo *> &fns, const std::function<void(FnInfo &)> &body);
+  std::vector<FnInfo *> allFunctions();
+  unsigned functionIndex(const FnInfo &fi) const { return (unsigned)(fi.fn - src_.functions.data()); }
+  static bool numberedKey(const std::string &k) { return !k.empty() && k[0] >= '0' && k[0] <= '9'; }
   void emitSectionEnd(const std::vector<const ir::Op *> &calls);
   llvm::BasicBlock *sectionReturn(const ir::Op &call);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
@@ -157,6 +166,11 @@ private:
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
+  // modal_call: the callee set (index into the module's functions, -1 none), whether a modal
+  // callee runs, one argument slot per key any modal_call passes; the functions it may call.
+  llvm::GlobalVariable *modalFn_ = nullptr, *modalIn_ = nullptr, *modalArgs_ = nullptr;
+  std::map<std::string, unsigned> modalKeys_;
+  std::vector<FnInfo *> modalCallees_;
   llvm::GlobalVariable *calleeNames = nullptr;  // names of the module's functions, for ncrt_callee
   std::map<std::string, unsigned> globalNames_;   // module-wide slots
   std::map<std::string, ArraySlots> globalArrays_;  // global arrays, stored after the scalars
