@@ -42,7 +42,7 @@ static const char *rs274Meaning(int32_t code10) {
   case 50: return "RS274NGC cubic spline";
   case 51: return "RS274NGC quadratic spline";
   case 760: return "RS274NGC threading cycle";
-  case 500: case 510: case 511: case 680: return "not an RS274NGC code";
+  case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
   default: return nullptr;
   }
 }
@@ -158,7 +158,7 @@ struct BlockLowerer::Block {
   GUse gs[(size_t)GGroup::Count];
   MUse ms[8];
   int nm = 0;
-  bool macroCall = false;  // G65: every other address is an argument (M too)
+  bool macroCall = false;  // G65, G66: every other address is an argument (M too)
   bool axesTaken = false;  // a non-modal code took the axis words
   bool dwellTookAxis = false;  // Fanuc G4 X<seconds>
   const GCodeInfo *nonModal = nullptr;
@@ -237,6 +237,17 @@ struct BlockLowerer::Block {
     return op;
   }
 
+  Op &modalCallOp(SourceLoc loc, long long prog) {
+    std::string callee = fmt::format("O{}", prog);
+    L.calls.push_back({callee, loc});
+    Op &op = emit(OpKind::ModalCall, loc);
+    op.set("callee", Expr::string(callee, loc));
+    return op;
+  }
+  const char *macroName() const { return b.words.end() != std::find_if(b.words.begin(), b.words.end(), [](auto &w) {
+                                           return w.letter == 'G' && !w.expr && w.value == 66;
+                                         }) ? "G66" : "G65"; }
+
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level
   bool cornerTaken = false;  // a ,C / ,R went to the move
@@ -251,9 +262,9 @@ struct BlockLowerer::Block {
 // G and M codes through the tables; group conflicts, duplicate words.
 bool BlockLowerer::Block::classify() {
   bool ok = true;
-  macroCall = false;  // G65: every other address is an argument (M too)
+  macroCall = false;  // G65, G66: every other address is an argument (M too)
   for (auto &w : b.words)
-    if (w.letter == 'G' && !w.expr && w.value == 65) macroCall = true;
+    if (w.letter == 'G' && !w.expr && (w.value == 65 || w.value == 66)) macroCall = true;
 
   for (auto &w : b.words) {
     if (w.letter == 'G') {
@@ -377,10 +388,11 @@ bool BlockLowerer::Block::setup() {
     return false;
   }
   if (macroCall) {
-    // G65 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
+    // G65/G66 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
-      if (gs[g].info && gs[g].info->kind != GKind::MacroCall) {
-        L.diags_.error(gs[g].word->loc, "G65 must not share its block with other G codes", "syntax");
+      if (gs[g].info && gs[g].info->kind != GKind::MacroCall && gs[g].info->kind != GKind::ModalMacro) {
+        L.diags_.error(gs[g].word->loc, fmt::format("{} must not share its block with other G codes", macroName()),
+                       "syntax");
         return false;
       }
   }
@@ -768,16 +780,22 @@ bool BlockLowerer::Block::callsAndReturn() {
       bw.used |= (1u << ('P' - 'A')) | (1u << ('L' - 'A'));
     }
   }
+  if (auto *g67 = G(GGroup::MacroModal); g67 && g67->arg == 1) emit(OpKind::ModalCall, gloc(GGroup::MacroModal));
   if (macroCall) {
-    SourceLoc loc = gloc(GGroup::NonModal);
+    bool modal = !G(GGroup::NonModal);  // G66: a modal_call, after each following move (docs/IR.md §5.5)
+    SourceLoc loc = gloc(modal ? GGroup::MacroModal : GGroup::NonModal);
     if (!L.allowCalls) {
-      L.diags_.error(loc, "G65 needs the whole program (not streamable)", "not-streamable");
+      L.diags_.error(loc, fmt::format("{} needs the whole program (not streamable)", macroName()), "not-streamable");
       return false;
     }
     long long prog;
-    if (!programNumber(loc, "G65", prog)) return false;
+    if (!programNumber(loc, macroName(), prog)) return false;
+    if (modal && bw.has('L')) {
+      L.diags_.error(bw.get('L')->loc, "G66 L (repetitions of the modal macro) is not supported", "unsupported-code");
+      return false;
+    }
     ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);
-    Op &op = callOp(loc, prog, std::move(count), "new");
+    Op &op = modal ? modalCallOp(loc, prog) : callOp(loc, prog, std::move(count), "new");
     // Argument specification II when I, J or K repeats: up to 10 sets I J K -> #4+3s, #5+3s,
     // #6+3s; a set ends when an address repeats or comes out of I-J-K order.
     int ijkCount[3] = {0, 0, 0};

@@ -1,3 +1,14 @@
+G21 G90 G1 F100
+#1=0
+#2=30
+N10 #1=#1+1
+X#1
+IF [#1 LT 3] GOTO [#2-20]
+GOTO #2
+N20 X99
+N30 Y5
+M30
+%
 ; FEATURES: ISO-MAC-08
 ; Macro B `GOTO #n` and `IF [...] GOTO [expr]` jump to the block number the value gives, at run
 ; time, in both engines; a block number that does not exist is a run-time error at the GOTO.
@@ -16,13 +27,3 @@
 ; MISS: computed-goto-macro.nc.tmp.miss.nc:{{[0-9]+}}:1: error: jump to missing sequence number N15
 ; MISS-NEXT: IF [#1 LT 3] GOTO [#2-20]
 ; MISS-NEXT: {{^}}^
-G21 G90 G1 F100
-#1=0
-#2=30
-N10 #1=#1+1
-X#1
-IF [#1 LT 3] GOTO [#2-20]
-GOTO #2
-N20 X99
-N30 Y5
-M30
