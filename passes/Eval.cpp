@@ -4,6 +4,7 @@
 #include "ir/Builtins.h"
 #include "ir/Decls.h"
 #include "ir/Jumps.h"
+#include "ir/RunErrors.h"
 #include "ir/Strings.h"
 #include "ir/Value.h"
 #include "passes/CmdTemplate.h"
@@ -316,13 +317,13 @@ struct Evaluator::Impl {
       vac = vacantValue();
       return vac;
     }
-    if (n < 0 || n >= (long)numbered.size()) fail(v.loc, fmt::format("parameter number #{} out of range", n));
+    if (n < 0 || n >= (long)numbered.size()) fail(v.loc, runErrorMessage(RunError::Numbered, limits, {}, (double)n));
     return numbered[n];
   }
 
-  double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, const char *what) {
+  double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, RunError outOfRange) {
     long n = v.args.empty() ? 0 : std::lround(num(number(fr, *v.args[0])));
-    if (n < 0 || n >= (long)arr.size()) fail(v.loc, fmt::format("{} index {} out of range", what, n));
+    if (n < 0 || n >= (long)arr.size()) fail(v.loc, runErrorMessage(outOfRange, limits, {}, (double)n));
     return arr[n];
   }
 
@@ -367,18 +368,18 @@ struct Evaluator::Impl {
     if (!v.args.empty() && v.space == VarSpace::Global) return elemRef(globalArrays, fr, v);
     switch (v.space) {
     case VarSpace::Numbered: return numberedRef(fr, v, write);
-    case VarSpace::RParam: return arrayRef(rparams, fr, v, "R parameter");
+    case VarSpace::RParam: return arrayRef(rparams, fr, v, RunError::RParam);
     case VarSpace::QParam: {
       int q = qPrefixIndex(v.str);
       if (q < 0) fail(v.loc, fmt::format("unknown Q parameter prefix '{}'", v.str));
       auto &arr = qparams[q];
       if (arr.empty()) arr.assign(2000, qParamStart(q));
-      return arrayRef(arr, fr, v, "Q parameter");
+      return arrayRef(arr, fr, v, RunError::QParam);
     }
     case VarSpace::Local: {
       auto it = (*cf.names).find(v.str);
       if (it == (*cf.names).end()) {
-        if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
+        if (!write) fail(v.loc, runErrorMessage(RunError::UnsetVar, limits, v.str));
         it = (*cf.names).emplace(v.str, (uint32_t)(*cf.names).size()).first;
       }
       if (fr.named.size() <= it->second) fr.named.resize((*cf.names).size(), unsetValue());
@@ -387,7 +388,7 @@ struct Evaluator::Impl {
     case VarSpace::Global: {
       auto it = globalNames.find(v.str);
       if (it == globalNames.end()) {
-        if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
+        if (!write) fail(v.loc, runErrorMessage(RunError::UnsetVar, limits, v.str));
         it = globalNames.emplace(v.str, (uint32_t)globalNames.size()).first;
         globalNamed.push_back(unsetValue());
       }
@@ -398,7 +399,7 @@ struct Evaluator::Impl {
       static double value;
       SysVar sv;
       if (!sysVarFromName(v.str, sv) || !sink.readSystem(sv, value))
-        fail(v.loc, fmt::format("system variable '{}' is not available here", v.str));
+        fail(v.loc, runErrorMessage(RunError::SysVar, limits, v.str));
       return value;
     }
     }
@@ -421,7 +422,7 @@ struct Evaluator::Impl {
     case ExprKind::Var: {
       double v = varRef(fr, *curFn, e, false);
       if (isUnset(v))
-        fail(e.loc, e.args.empty() ? fmt::format("variable '{}' used before assignment", e.str)
+        fail(e.loc, e.args.empty() ? runErrorMessage(RunError::UnsetVar, limits, e.str)
                                    : unsetElementMessage(e.str, lastIndex));
       return v;
     }
@@ -523,7 +524,7 @@ struct Evaluator::Impl {
     if ((++steps & 0xffff) == 0 && limits.maxSeconds > 0) {
       double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (s > limits.maxSeconds)
-        fail(loc, fmt::format("run time limit of {} s exceeded (limit --max-seconds)", limits.maxSeconds));
+        fail(loc, runErrorMessage(RunError::TimeLimit, limits));
     }
   }
 
@@ -683,8 +684,7 @@ struct Evaluator::Impl {
       case IK::LoopEnter: fr.slots[in.slot] = 0; ++pc; break;
       case IK::LoopBack:
         if (++fr.slots[in.slot] >= (double)limits.maxLoopIterations)
-          fail(in.op->loc, fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)",
-                                       limits.maxLoopIterations));
+          fail(in.op->loc, runErrorMessage(RunError::LoopLimit, limits));
         checkTime(in.op->loc);
         pc = in.jump;
         break;
@@ -741,8 +741,7 @@ struct Evaluator::Impl {
 
   void countBackJump(Frame &fr, SourceLoc loc) {
     if (++fr.backJumps > limits.maxLoopIterations)
-      fail(loc, fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)",
-                            limits.maxLoopIterations));
+      fail(loc, runErrorMessage(RunError::BackJump, limits));
     checkTime(loc);
   }
 
@@ -793,7 +792,7 @@ struct Evaluator::Impl {
 
   void checkDepth(SourceLoc loc) {
     if (depth + 1 > limits.maxCallDepth)
-      fail(loc, fmt::format("call depth limit {} exceeded (limit --max-call-depth)", limits.maxCallDepth));
+      fail(loc, runErrorMessage(RunError::CallDepth, limits));
   }
 
   void call(const Op &op, Frame &fr) {

@@ -1,6 +1,7 @@
 // The ncrt C ABI: storage, command execution and run-time errors for compiled NC programs.
 #include "runtime/ncrt.h"
 #include "ir/Jumps.h"
+#include "ir/RunErrors.h"
 
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
@@ -161,30 +162,16 @@ void ncrt_error(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const
   ctx->diags.error({file, line, col}, msg);
 }
 
+static_assert(NCRT_FAULT_LOOP_LIMIT == (unsigned)RunError::LoopLimit && NCRT_FAULT_BACKJUMP == (unsigned)RunError::BackJump &&
+                  NCRT_FAULT_CALL_DEPTH == (unsigned)RunError::CallDepth && NCRT_FAULT_UNSET_VAR == (unsigned)RunError::UnsetVar &&
+                  NCRT_FAULT_NUMBERED == (unsigned)RunError::Numbered && NCRT_FAULT_RPARAM == (unsigned)RunError::RParam &&
+                  NCRT_FAULT_QPARAM == (unsigned)RunError::QParam && NCRT_FAULT_INDEX == (unsigned)RunError::Index &&
+                  NCRT_FAULT_UNSET_ELEM == (unsigned)RunError::UnsetElem && NCRT_FAULT_SYSVAR == (unsigned)RunError::SysVar,
+              "NCRT_FAULT_* must number the kinds as ir/RunErrors.h");
+
 void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint32_t kind,
                 const char *name, double value) {
-  std::string msg;
-  const ExecLimits &l = ctx->limits;
-  switch (kind) {
-  case NCRT_FAULT_LOOP_LIMIT:
-    msg = fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)", l.maxLoopIterations);
-    break;
-  case NCRT_FAULT_BACKJUMP:
-    msg = fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)", l.maxLoopIterations);
-    break;
-  case NCRT_FAULT_CALL_DEPTH:
-    msg = fmt::format("call depth limit {} exceeded (limit --max-call-depth)", l.maxCallDepth);
-    break;
-  case NCRT_FAULT_UNSET_VAR: msg = fmt::format("variable '{}' used before assignment", name); break;
-  case NCRT_FAULT_NUMBERED: msg = fmt::format("parameter number #{} out of range", std::lround(value)); break;
-  case NCRT_FAULT_RPARAM: msg = fmt::format("R parameter index {} out of range", std::lround(value)); break;
-  case NCRT_FAULT_INDEX: msg = arrayIndexMessage(name, value); break;
-  case NCRT_FAULT_UNSET_ELEM: msg = unsetElementMessage(name, value); break;
-  case NCRT_FAULT_QPARAM: msg = fmt::format("Q parameter index {} out of range", std::lround(value)); break;
-  case NCRT_FAULT_SYSVAR: msg = fmt::format("system variable '{}' is not available here", name); break;
-  default: msg = "internal error: unknown run-time fault"; break;
-  }
-  ctx->diags.error({file, line, col}, msg);
+  ctx->diags.error({file, line, col}, runErrorMessage((RunError)kind, ctx->limits, name ? name : "", value));
 }
 
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
@@ -192,7 +179,7 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx->start).count();
   if (ctx->limits.maxSeconds <= 0 || secs <= ctx->limits.maxSeconds) return NCRT_OK;
   ctx->diags.error({file, line, col},
-                   fmt::format("run time limit of {} s exceeded (limit --max-seconds)", ctx->limits.maxSeconds));
+                   runErrorMessage(RunError::TimeLimit, ctx->limits));
   return NCRT_ERROR;
 }
 
