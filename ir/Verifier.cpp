@@ -175,7 +175,7 @@ private:
       if (!seen.insert(a.key).second) error(op.loc, fmt::format("'{}' has argument '{}' twice", info.name, a.key));
       bool ok;
       if (op.kind == OpKind::Call || op.kind == OpKind::ModalCall)
-        ok = inList(op.kind == OpKind::Call ? kCallKeys : "callee", a.key) ||
+        ok = inList(op.kind == OpKind::Call ? kCallKeys : "callee count", a.key) ||
              (a.key.size() > 2 && a.key.compare(0, 2, "a.") == 0);
       else ok = std::string_view(info.allowed) == "*" || inList(info.required, a.key) || inList(info.allowed, a.key);
       if (!ok) error(op.loc, fmt::format("'{}' has unknown argument '{}'", info.name, a.key));

@@ -851,6 +851,7 @@ struct Evaluator::Impl {
   // executed outside the modal callee, the callee runs with them in a new frame.
   struct ModalCall {
     std::string callee;  // empty: none (resolved again at each call: a streamed chunk is a new module)
+    double count = 1;    // calls per move (Fanuc G66 L)
     CallArgs args;
   };
   ModalCall modal;
@@ -861,6 +862,8 @@ struct Evaluator::Impl {
     const Expr *calleeE = op.get("callee");
     if (!calleeE) return;
     const Function &f = callee(fr, *calleeE, op.loc);
+    const Expr *countE = op.get("count");
+    modal.count = countE ? num(number(fr, *countE)) : 1;
     modal.args = evalArgs(op, f, fr);
     modal.callee = f.name;
   }
@@ -870,7 +873,7 @@ struct Evaluator::Impl {
     if (!f) fail(loc, unknownProgramMessage(modal.callee));
     checkDepth(loc);
     inModal = true;
-    invoke(*f, modal.args, true, 1, loc, fr);
+    invoke(*f, modal.args, true, modal.count, loc, fr);
     inModal = false;
   }
 

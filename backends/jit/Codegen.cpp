@@ -332,6 +332,7 @@ void Codegen::scanModalCalls() {
   };
   modalFn_ = global(i64Ty, B.getInt64(-1), "nc.modal.fn");
   modalIn_ = global(i32Ty, B.getInt32(0), "nc.modal.in");
+  modalCount_ = global(dblTy, ConstantFP::get(dblTy, 1.0), "nc.modal.count");
   auto *argsTy = ArrayType::get(dblTy, std::max<size_t>(1, modalKeys_.size()));
   modalArgs_ = global(argsTy, ConstantAggregateZero::get(argsTy), "nc.modal.args");
 }

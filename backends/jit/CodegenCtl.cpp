@@ -406,6 +406,31 @@ bool Codegen::calleeOf(const Op &op, FnInfo *&fixed, Value *&index) {
   return true;
 }
 
+// `body` llround(count) times (null count: once); NaN and counts below 1 run none. Each
+// repetition checks the run-time limit (count=1e308 must not outlive --max-seconds).
+void Codegen::emitRepeated(Value *count, SourceLoc loc, const std::function<void()> &body) {
+  if (!count) {
+    body();
+    return;
+  }
+  Value *r = roundOf(count);
+  Value *c = B.CreateSelect(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 1.0)), r, ConstantFP::get(dblTy, 0.0));
+  c = B.CreateSelect(B.CreateFCmpOGT(c, ConstantFP::get(dblTy, 0x1p62)), ConstantFP::get(dblTy, 0x1p62), c);
+  Value *limit = B.CreateFPToSI(c, i64Ty);
+  Value *counter = allocaEntry(i64Ty, "repeat.count");
+  B.CreateStore(B.getInt64(0), counter);
+  BasicBlock *head = newBlock("repeat.head"), *done = newBlock("repeat.end"), *bodyBB = newBlock("repeat.body");
+  startBlock(head);
+  Value *i = B.CreateLoad(i64Ty, counter);
+  B.CreateCondBr(B.CreateICmpSLT(i, limit), bodyBB, done);
+  B.SetInsertPoint(bodyBB);
+  B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
+  emitTimeCheck(loc);
+  body();
+  B.CreateBr(head);
+  B.SetInsertPoint(done);
+}
+
 // A switch on a function index (into the module's functions) with `body` emitted for each of
 // `fns`; other indices fail. Continues after the switch.
 void Codegen::switchOnFunction(Value *index, const std::vector<FnInfo *> &fns, const std::function<void(FnInfo &)> &body) {
@@ -438,6 +463,8 @@ void Codegen::emitModalCall(const Op &op) {
   FnInfo *fixed = nullptr;
   Value *index = nullptr;
   if (!calleeOf(op, fixed, index)) return;
+  const Expr *countE = op.get("count");  // calls per move (Fanuc G66 L)
+  B.CreateStore(countE ? numOf(expr(*countE)) : ConstantFP::get(dblTy, 1.0), modalCount_);
   std::vector<std::pair<std::string, Val>> args;
   for (auto &a : op.args)
     if (a.key.rfind("a.", 0) == 0 && a.value) {
@@ -479,11 +506,13 @@ void Codegen::emitModalTrigger(SourceLoc loc) {
   faultIf(B.CreateICmpUGE(depth, maxDepth), loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
   B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
   B.CreateStore(B.getInt32(1), modalIn_);
-  switchOnFunction(fn, modalCallees_, [&](FnInfo &fi) {
-    std::vector<std::pair<std::string, Value *>> args;
-    for (auto &[k, slot] : modalKeys_)
-      args.push_back({k, B.CreateLoad(dblTy, B.CreateConstGEP2_64(modalArgs_->getValueType(), modalArgs_, 0, slot))});
-    emitInvoke(fi, args, true, loc);
+  emitRepeated(B.CreateLoad(dblTy, modalCount_), loc, [&] {
+    switchOnFunction(fn, modalCallees_, [&](FnInfo &fi) {
+      std::vector<std::pair<std::string, Value *>> args;
+      for (auto &[k, slot] : modalKeys_)
+        args.push_back({k, B.CreateLoad(dblTy, B.CreateConstGEP2_64(modalArgs_->getValueType(), modalArgs_, 0, slot))});
+      emitInvoke(fi, args, true, loc);
+    });
   });
   B.CreateStore(B.getInt32(0), modalIn_);
   B.CreateStore(depth, depthPtr);
@@ -531,29 +560,12 @@ void Codegen::emitCall(const Op &op) {
     B.CreateStore(ConstantExpr::getBitCast(ConstantInt::get(i64Ty, NCRT_UNSET_BITS), dblTy), ret);
   }
 
-  Value *counter = nullptr, *limit = nullptr;
-  BasicBlock *head = nullptr, *done = nullptr;
-  if (count) {  // repetitions: llround(count); NaN and counts below 1 run none
-    Value *r = roundOf(count);
-    Value *c = B.CreateSelect(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 1.0)), r, ConstantFP::get(dblTy, 0.0));
-    c = B.CreateSelect(B.CreateFCmpOGT(c, ConstantFP::get(dblTy, 0x1p62)), ConstantFP::get(dblTy, 0x1p62), c);
-    limit = B.CreateFPToSI(c, i64Ty);
-    counter = allocaEntry(i64Ty, "call.count");
-    B.CreateStore(B.getInt64(0), counter);
-    head = newBlock("call.head");
-    done = newBlock("call.end");
-    BasicBlock *body = newBlock("call.body");
-    startBlock(head);
-    Value *i = B.CreateLoad(i64Ty, counter);
-    B.CreateCondBr(B.CreateICmpSLT(i, limit), body, done);
-    B.SetInsertPoint(body);
-    B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
-    emitTimeCheck(op.loc);  // count=1e308 must not outlive --max-seconds
-  }
-  if (fixed) {
-    Value *r = emitInvoke(*fixed, args, newFrame, op.loc);
-    if (ret) B.CreateStore(r, ret);
-  } else {
+  emitRepeated(count, op.loc, [&] {
+    if (fixed) {
+      Value *r = emitInvoke(*fixed, args, newFrame, op.loc);
+      if (ret) B.CreateStore(r, ret);
+      return;
+    }
     switchOnFunction(index, allFunctions(), [&](FnInfo &fi) {
       auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
       for (auto &[k, v] : converted)
@@ -561,11 +573,7 @@ void Codegen::emitCall(const Op &op) {
       Value *r = emitInvoke(fi, converted, newFrame, op.loc);
       if (ret) B.CreateStore(r, ret);
     });
-  }
-  if (count) {
-    B.CreateBr(head);
-    B.SetInsertPoint(done);
-  }
+  });
   B.CreateStore(depth, depthPtr);
   if (result) {
     Value *r = B.CreateLoad(dblTy, ret);

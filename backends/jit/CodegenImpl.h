@@ -92,6 +92,7 @@ private:
   void emitModalCall(const ir::Op &op);
   void emitModalTrigger(SourceLoc loc);
   bool calleeOf(const ir::Op &op, FnInfo *&fixed, llvm::Value *&index);
+  void emitRepeated(llvm::Value *count, SourceLoc loc, const std::function<void()> &body);
   void switchOnFunction(llvm::Value *index, const std::vector<FnInfo *> &fns, const std::function<void(FnInfo &)> &body);
   std::vector<FnInfo *> allFunctions();
   unsigned functionIndex(const FnInfo &fi) const { return (unsigned)(fi.fn - src_.functions.data()); }
@@ -168,7 +169,7 @@ private:
   std::map<std::string, llvm::Constant *> strings_;
   // modal_call: the callee set (index into the module's functions, -1 none), whether a modal
   // callee runs, one argument slot per key any modal_call passes; the functions it may call.
-  llvm::GlobalVariable *modalFn_ = nullptr, *modalIn_ = nullptr, *modalArgs_ = nullptr;
+  llvm::GlobalVariable *modalFn_ = nullptr, *modalIn_ = nullptr, *modalArgs_ = nullptr, *modalCount_ = nullptr;
   std::map<std::string, unsigned> modalKeys_;
   std::vector<FnInfo *> modalCallees_;
   llvm::GlobalVariable *calleeNames = nullptr;  // names of the module's functions, for ncrt_callee

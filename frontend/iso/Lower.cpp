@@ -237,11 +237,12 @@ struct BlockLowerer::Block {
     return op;
   }
 
-  Op &modalCallOp(SourceLoc loc, long long prog) {
+  Op &modalCallOp(SourceLoc loc, long long prog, ExprPtr count) {
     std::string callee = fmt::format("O{}", prog);
     L.calls.push_back({callee, loc});
     Op &op = emit(OpKind::ModalCall, loc);
     op.set("callee", Expr::string(callee, loc));
+    op.set("count", std::move(count));
     return op;
   }
   const char *macroName() const { return b.words.end() != std::find_if(b.words.begin(), b.words.end(), [](auto &w) {
@@ -790,12 +791,8 @@ bool BlockLowerer::Block::callsAndReturn() {
     }
     long long prog;
     if (!programNumber(loc, macroName(), prog)) return false;
-    if (modal && bw.has('L')) {
-      L.diags_.error(bw.get('L')->loc, "G66 L (repetitions of the modal macro) is not supported", "unsupported-code");
-      return false;
-    }
     ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);
-    Op &op = modal ? modalCallOp(loc, prog) : callOp(loc, prog, std::move(count), "new");
+    Op &op = modal ? modalCallOp(loc, prog, std::move(count)) : callOp(loc, prog, std::move(count), "new");
     // Argument specification II when I, J or K repeats: up to 10 sets I J K -> #4+3s, #5+3s,
     // #6+3s; a set ends when an address repeats or comes out of I-J-K order.
     int ijkCount[3] = {0, 0, 0};
