@@ -595,7 +595,7 @@ struct Evaluator::Impl {
       if (fr.named.size() <= slot) fr.named.resize((*cf.names).size(), unsetValue());
       if ((slot < fr.refs.size() && fr.refs[slot]) || !isUnset(fr.named[slot])) continue;
       const VarDecl *d = decls.find(f, VarSpace::Local, p.name);
-      double v = p.defaultValue ? ev(fr, *p.defaultValue) : initialValue(d->type);
+      double v = p.defaultValue ? ev(fr, *p.defaultValue) : initialValue(d ? d->type : ValueType::Real);
       fr.named[slot] = convert(d, *Expr::var(VarSpace::Local, p.name), v, f.loc);
     }
     auto it = decls.locals.find(&f);

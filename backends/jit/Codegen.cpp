@@ -365,7 +365,8 @@ void Codegen::emitParamDefaults(FnInfo &fi) {
     B.CreateCondBr(omitted, fill, cont);
     B.SetInsertPoint(fill);
     const VarDecl *d = decls_.find(*fi.fn, ir::VarSpace::Local, p.name);
-    Val v = p.defaultValue ? expr(*p.defaultValue) : Val{ConstantFP::get(dblTy, initialValue(d->type)), false};
+    Val v = p.defaultValue ? expr(*p.defaultValue)
+                           : Val{ConstantFP::get(dblTy, initialValue(d ? d->type : ValueType::Real)), false};
     Value *c = convertArg(fi, p.name, v, fi.fn->loc);
     if (p.byRef) {
       Value *own = allocaEntry(dblTy, "param.own");
