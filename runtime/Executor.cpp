@@ -676,8 +676,9 @@ bool Executor::saveModal() {
   return true;
 }
 
-// The groups that differ, as one mode command, then the feed: the executor's own handling
-// (checks, records) applies, and nothing is recorded when nothing changed.
+// The groups that differ, as one mode command: the executor's own handling (checks, records)
+// applies, and nothing is recorded when nothing changed. Sinumerik restores the modal G
+// functions only (the F value stays as the subprogram left it).
 bool Executor::restoreModal(SourceLoc loc) {
   if (impl_->savedModal.empty()) return true;
   Impl::SavedModal s = impl_->savedModal.back();
@@ -699,13 +700,7 @@ bool Executor::restoreModal(SourceLoc loc) {
     c.set(Word::P, s.pathTolerance / unit);
     c.set(Word::Q, s.naiveTolerance / unit);
   }
-  if (c.nmodes && !exec(c)) return false;
-  if (s.st.feed == now.feed) return true;
-  MachineCmd f;
-  f.kind = CmdKind::Feed;
-  f.loc = loc;
-  f.set(Word::F, s.st.feed);
-  return exec(f);
+  return !c.nmodes || exec(c);
 }
 
 bool Executor::readSystem(SysVar v, double &out) const {

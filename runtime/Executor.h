@@ -48,8 +48,8 @@ public:
   // at `loc`.
   bool runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern, const CycleArgs *patternArgs,
                 SourceLoc loc);
-  // Sinumerik SAVE: remembers the modal groups and the feed; restoreModal puts back the last
-  // remembered ones (executing the mode and feed changes, so their records follow).
+  // Sinumerik SAVE: remembers the modal G groups; restoreModal puts back the last remembered ones
+  // (executing the mode changes, so their records follow).
   bool saveModal();
   bool restoreModal(SourceLoc loc);
   // The value of a system variable (ir/SystemVars.h) in the current state.
