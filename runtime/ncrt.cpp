@@ -33,6 +33,8 @@ static int execOne(ncrt_ctx *ctx, const MachineCmd &c) {
     ctx->ended = true;
     return NCRT_END;
   }
+  if (c.kind == CmdKind::Move && ctx->modal_hook)
+    return ctx->modal_hook(ctx, &ctx->storage, c.loc.file, c.loc.line, c.loc.col);
   return NCRT_OK;
 }
 
@@ -193,6 +195,10 @@ void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
 void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v); }
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v, true); }
 const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
+
+void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn) {
+  ctx->modal_hook = reinterpret_cast<int (*)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t)>(fn);
+}
 
 int ncrt_save_modal(ncrt_ctx *ctx) { return ctx->sink.saveModal() ? NCRT_OK : NCRT_ERROR; }
 int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {

@@ -102,6 +102,10 @@ void ncrt_str_num(ncrt_ctx *ctx, double v);
 double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
+/* modal_call: the program's modal-call function (i32 (ctx, storage, file, line, col)), which the
+ * runtime calls after every move command it executes; it returns at once when no modal call is
+ * set or one runs (docs/IR.md §5.5). Moves stay in constant runs. */
+void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn);
 /* SAVE (CmdSink saveModal/restoreModal) around a call: NCRT_OK or NCRT_ERROR (reported). */
 int ncrt_save_modal(ncrt_ctx *ctx);
 int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
@@ -161,6 +165,8 @@ struct ncrt_ctx {
   ncrt_storage storage{};
   std::vector<double> numbered, rparam, qparam, named;
   bool ended = false;  // a stop kind=end|end_rewind was executed
+  // A program with modal_call: its nc.modal.run, called after every move command executed.
+  int (*modal_hook)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t) = nullptr;
   std::string text;    // the run-time string being built (ncrt_str_*)
   ncc::StringPool pool;  // the run's string values
 };

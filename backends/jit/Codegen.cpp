@@ -81,6 +81,7 @@ void Codegen::declareRuntime() {
   fCompare = decl("ncrt_compare", dblTy, {ptrTy, i32Ty, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
   fConvert = decl("ncrt_convert", dblTy, {ptrTy, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   fFill = decl("ncrt_fill", voidTy, {ptrTy, i64Ty, dblTy});
+  fSetModalHook = decl("ncrt_set_modal_hook", Type::getVoidTy(C), {ptrTy, ptrTy});
   fSaveModal = decl("ncrt_save_modal", i32Ty, {ptrTy});
   fRestoreModal = decl("ncrt_restore_modal", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
   fJump = decl("ncrt_jump", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty, i32Ty, i32Ty});
@@ -169,6 +170,7 @@ Constant *Codegen::cstring(const std::string &s) {
 }
 
 std::vector<Value *> Codegen::locArgs(SourceLoc loc) {
+  if (!dynLoc_.empty()) return dynLoc_;  // inside nc.modal.run: the caller's location
   return {B.getInt32(loc.file), B.getInt32(loc.line), B.getInt32(loc.col)};
 }
 
@@ -231,6 +233,21 @@ void Codegen::emitTimeCheck(SourceLoc loc) {
 }
 
 // ---------------------------------------------------------------- functions
+// After the entry block's set-up: the shared fail (returns NCRT_ERROR) and exit (returns the
+// status checkStatus passes on) blocks, then the body, where emission continues.
+void Codegen::startBody() {
+  failBB = newBlock("fail");
+  exitBB = newBlock("exit");
+  BasicBlock *body = newBlock("body");
+  B.CreateBr(body);
+  B.SetInsertPoint(failBB);
+  B.CreateRet(B.getInt32(NCRT_ERROR));
+  B.SetInsertPoint(exitBB);
+  exitPhi = B.CreatePHI(i32Ty, 4, "status");
+  B.CreateRet(exitPhi);
+  B.SetInsertPoint(body);
+}
+
 void Codegen::emitFunction(FnInfo &fi) {
   cur_ = &fi;
   F = fi.F;
@@ -269,16 +286,7 @@ void Codegen::emitFunction(FnInfo &fi) {
         B.CreateStore(init, B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + l->second));
       }
     }
-  failBB = newBlock("fail");
-  exitBB = newBlock("exit");
-  BasicBlock *body = newBlock("body");
-  B.CreateBr(body);
-  B.SetInsertPoint(failBB);
-  B.CreateRet(B.getInt32(NCRT_ERROR));
-  B.SetInsertPoint(exitBB);
-  exitPhi = B.CreatePHI(i32Ty, 4, "status");
-  B.CreateRet(exitPhi);
-  B.SetInsertPoint(body);
+  startBody();
 
   order_.clear();
   jumps_.clear();
@@ -402,9 +410,10 @@ void Codegen::emitEntry() {
       B.CreateStore(init, B.CreateConstGEP1_64(dblTy, namedPtr, it->second));
     }
   }
-  if (modalFn_) {  // no modal call at the start of each run
+  if (modalFn_) {  // no modal call at the start of each run; the runtime calls nc.modal.run
     B.CreateStore(B.getInt64(-1), modalFn_);
     B.CreateStore(B.getInt32(0), modalIn_);
+    B.CreateCall(fSetModalHook, {ctx, modalRun_});
   }
   FnInfo &fi = functions_.at(src_.functions[0].name);
   Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
@@ -437,6 +446,7 @@ std::unique_ptr<Module> Codegen::run() {
     B.CreateRet(B.getInt32(NCRT_OK));
   } else {
     scanModalCalls();
+    if (modalFn_) emitModalRun();
     for (auto &fn : src_.functions) emitFunction(functions_.at(fn.name));
     emitEntry();
   }

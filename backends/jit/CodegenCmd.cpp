@@ -37,16 +37,11 @@ void Codegen::emitMachineOp(const ir::Op &op) {
   if (!buildCmdTemplate(op, t, quiet)) return;
   if (t.slots.empty() && !t.text) {
     appendToRun(t.base);
-  } else {
-    flushRun();
-    ensureOpen();
-    emitDynamicCmd(t);
+    return;
   }
-  if (op.kind == ir::OpKind::Move && modalFn_) {  // a modal call may follow each move
-    flushRun();
-    ensureOpen();
-    emitModalTrigger(op.loc);
-  }
+  flushRun();
+  ensureOpen();
+  emitDynamicCmd(t);
 }
 
 // Short runs stay MachineCmds; once a run is longer it is packed as it grows (a flat program

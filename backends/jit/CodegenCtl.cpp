@@ -495,17 +495,38 @@ void Codegen::emitModalCall(const Op &op) {
 
 // After a move: the modal callee, if one is set and none is running, in a new frame with the
 // stored arguments (as the eval engine's runModal).
-void Codegen::emitModalTrigger(SourceLoc loc) {
-  Value *fn = B.CreateLoad(i64Ty, modalFn_);
-  Value *go = B.CreateAnd(B.CreateICmpSGE(fn, B.getInt64(0)), B.CreateICmpEQ(B.CreateLoad(i32Ty, modalIn_), B.getInt32(0)));
-  BasicBlock *run = newBlock("modal.run"), *cont = newBlock("modal.cont");
-  B.CreateCondBr(go, run, cont);
+// After a move: the modal callee, if one is set and none is running, in a new frame with the
+// stored arguments (as the eval engine's runModal). One function per module, which the runtime
+// calls after each move command (ncrt_set_modal_hook), so moves stay in constant runs:
+// i32 @nc.modal.run(ctx, storage, file, line, col), the move's location as arguments (locArgs
+// reads them while this is emitted).
+void Codegen::emitModalRun() {
+  modalRun_ = Function::Create(FunctionType::get(i32Ty, {ptrTy, ptrTy, i32Ty, i32Ty, i32Ty}, false),
+                               GlobalValue::InternalLinkage, "nc.modal.run", M.get());
+  F = modalRun_;
+  ctxArg = F->getArg(0);
+  stArg = F->getArg(1);
+  frameArg = nullptr;  // the modal callee always gets a new frame
+  dynLoc_ = {F->getArg(2), F->getArg(3), F->getArg(4)};
+  entryBB = newBlock("entry");
+  B.SetInsertPoint(entryBB);
+  depthPtr = B.CreateStructGEP(storageTy, stArg, 6);
+  pollPtr = B.CreateStructGEP(storageTy, stArg, 7);
+  startBody();
+  SourceLoc loc;  // unused: dynLoc_
+  BasicBlock *run = newBlock("modal.run"), *none = newBlock("modal.none");
+  B.CreateCondBr(B.CreateAnd(B.CreateICmpSGE(B.CreateLoad(i64Ty, modalFn_), B.getInt64(0)),
+                             B.CreateICmpEQ(B.CreateLoad(i32Ty, modalIn_), B.getInt32(0))),
+                 run, none);
+  B.SetInsertPoint(none);
+  B.CreateRet(B.getInt32(NCRT_OK));
   B.SetInsertPoint(run);
   Value *depth = B.CreateLoad(i32Ty, depthPtr);
   Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
   faultIf(B.CreateICmpUGE(depth, maxDepth), loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
   B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
   B.CreateStore(B.getInt32(1), modalIn_);
+  Value *fn = B.CreateLoad(i64Ty, modalFn_);
   emitRepeated(B.CreateLoad(dblTy, modalCount_), loc, [&] {
     switchOnFunction(fn, modalCallees_, [&](FnInfo &fi) {
       std::vector<std::pair<std::string, Value *>> args;
@@ -516,8 +537,9 @@ void Codegen::emitModalTrigger(SourceLoc loc) {
   });
   B.CreateStore(B.getInt32(0), modalIn_);
   B.CreateStore(depth, depthPtr);
-  B.CreateBr(cont);
-  B.SetInsertPoint(cont);
+  B.CreateRet(B.getInt32(NCRT_OK));
+  if (pred_empty(exitBB)) exitBB->eraseFromParent();
+  dynLoc_.clear();
 }
 
 // call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are

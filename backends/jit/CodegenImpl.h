@@ -90,7 +90,8 @@ private:
   void emitCallSection(const ir::Op &op);
   void scanModalCalls();
   void emitModalCall(const ir::Op &op);
-  void emitModalTrigger(SourceLoc loc);
+  void emitModalRun();
+  void startBody();
   bool calleeOf(const ir::Op &op, FnInfo *&fixed, llvm::Value *&index);
   void emitRepeated(llvm::Value *count, SourceLoc loc, const std::function<void()> &body);
   void switchOnFunction(llvm::Value *index, const std::vector<FnInfo *> &fns, const std::function<void(FnInfo &)> &body);
@@ -163,7 +164,7 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar;
-  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal;
+  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
@@ -171,6 +172,8 @@ private:
   // callee runs, one argument slot per key any modal_call passes; the functions it may call.
   llvm::GlobalVariable *modalFn_ = nullptr, *modalIn_ = nullptr, *modalArgs_ = nullptr, *modalCount_ = nullptr;
   std::map<std::string, unsigned> modalKeys_;
+  llvm::Function *modalRun_ = nullptr;  // nc.modal.run
+  std::vector<llvm::Value *> dynLoc_;   // while emitting nc.modal.run: its location arguments
   std::vector<FnInfo *> modalCallees_;
   llvm::GlobalVariable *calleeNames = nullptr;  // names of the module's functions, for ncrt_callee
   std::map<std::string, unsigned> globalNames_;   // module-wide slots
