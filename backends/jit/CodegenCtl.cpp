@@ -326,13 +326,15 @@ void Codegen::emitLoop(const Op &op) {
 
 // A jump to `target`: a backward one counts toward the loop limit (per activation).
 void Codegen::emitJumpTo(const Op &go, const Op *target) {
-  if (order_[target] <= order_[&go]) {
-    Value *n = B.CreateAdd(B.CreateLoad(i64Ty, backJumps), B.getInt64(1));
-    B.CreateStore(n, backJumps);
-    faultIf(B.CreateICmpUGT(n, maxLoop), go.loc, NCRT_FAULT_BACKJUMP, "", nullptr);
-    emitTimeCheck(go.loc);
-  }
+  if (order_[target] <= order_[&go]) emitBackJump(go.loc);
   B.CreateBr(targetBlock(target));
+}
+
+void Codegen::emitBackJump(SourceLoc loc) {
+  Value *n = B.CreateAdd(B.CreateLoad(i64Ty, backJumps), B.getInt64(1));
+  B.CreateStore(n, backJumps);
+  faultIf(B.CreateICmpUGT(n, maxLoop), loc, NCRT_FAULT_BACKJUMP, "", nullptr);
+  emitTimeCheck(loc);
 }
 
 // A computed goto: ncrt_jump searches the function's target table (ir/Jumps.h, as the eval
@@ -361,13 +363,20 @@ void Codegen::emitGoto(const Op &go) {
   Value *index = B.CreateCall(fJump, {ctxArg, B.getInt32(l != nullptr), n, jumpTable_, B.getInt64(jumps_.size()),
                                       B.getInt32(order_.at(&go)), B.getInt32((uint32_t)ir::jumpDir(go)), loc[0], loc[1],
                                       loc[2]});
+  // One backward check for the target found (its pos at or before the goto's), then a switch
+  // that branches straight to the target blocks: a computed goto stays small in a long program.
+  BasicBlock *found = newBlock("jump.found"), *back = newBlock("jump.back"), *go2 = newBlock("jump.go");
+  B.CreateCondBr(B.CreateICmpSLT(index, B.getInt64(0)), failBB, found);
+  B.SetInsertPoint(found);
+  Value *pos = B.CreateLoad(i32Ty, B.CreateInBoundsGEP(jumpTable_->getValueType(), jumpTable_,
+                                                         {B.getInt64(0), index, B.getInt32(2)}));
+  B.CreateCondBr(B.CreateICmpULE(pos, B.getInt32(order_.at(&go))), back, go2);
+  B.SetInsertPoint(back);
+  emitBackJump(go.loc);
+  B.CreateBr(go2);
+  B.SetInsertPoint(go2);
   SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)jumpOps_.size());
-  for (size_t i = 0; i < jumpOps_.size(); ++i) {
-    BasicBlock *bb = newBlock("jump.case");
-    sw->addCase(B.getInt64(i), bb);
-    B.SetInsertPoint(bb);
-    emitJumpTo(go, jumpOps_[i]);
-  }
+  for (size_t i = 0; i < jumpOps_.size(); ++i) sw->addCase(B.getInt64(i), targetBlock(jumpOps_[i]));
 }
 
 // The callee of a call or modal_call: a constant one as `fixed`, else `index` (into the

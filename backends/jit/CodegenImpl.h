@@ -87,6 +87,7 @@ private:
   const ir::Op *resolveTarget(const ir::Op &go);
   static bool constantJump(const ir::Op &go);
   void emitJumpTo(const ir::Op &go, const ir::Op *target);
+  void emitBackJump(SourceLoc loc);  // counts a backward jump toward the loop limit
   void emitCallSection(const ir::Op &op);
   void scanModalCalls();
   void emitModalCall(const ir::Op &op);
