@@ -22,6 +22,11 @@ public:
     err = std::string("system variable '") + sysVarName(v) + "' cannot be written here";
     return false;
   }
+  // A call of a function with the SAVE attribute: saveModal before it runs, restoreModal after
+  // it returned (nested calls nest), which puts the modal state back with the records that
+  // changes (docs/IR.md §5.4). Sinks without modal state ignore both. False: an error was reported.
+  virtual bool saveModal() { return true; }
+  virtual bool restoreModal(SourceLoc loc) { return true; }
 };
 
 }  // namespace ncc

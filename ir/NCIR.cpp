@@ -159,6 +159,8 @@ static const OpInfo kOps[] = {
     {OpKind::Goto, "goto", 0, 0, "", "n label dir"},
     {OpKind::Call, "call", 0, 0, "callee", "*"},
     {OpKind::Return, "return", 0, 0, "", "value"},
+    {OpKind::CallSection, "call_section", 0, 0, "from", "to count"},
+    {OpKind::ModalCall, "modal_call", 0, 0, "", "*"},
 };
 static_assert(sizeof(kOps) / sizeof(kOps[0]) == (size_t)OpKind::Count, "op table out of sync");
 

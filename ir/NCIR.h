@@ -123,6 +123,8 @@ enum class OpKind : uint8_t {
   Goto,        // n=<int> | label=<string>  dir=forward|backward|any
   Call,        // callee=<string> count=<int>? frame=new|shared  a.<key>=<expr>… arguments
   Return,      // value=<expr>?
+  CallSection, // from=<label> to=<label>? count=<int>?  run a section of this function, then go on
+  ModalCall,   // callee=<string>? a.<key>=<expr>…  call after each following move; no callee: cancel
   Count
 };
 
@@ -173,7 +175,13 @@ struct Function {
   std::string name;        // "main" for the main program; "O1234", "L10", "SUB" for others
   SourceLoc loc;
   std::vector<Param> params;
+  bool save = false;       // Sinumerik SAVE: the caller's modal state comes back on return (docs/IR.md §5.4)
   Region body;
+  const Param *param(std::string_view name) const {  // null when there is no such parameter
+    for (auto &p : params)
+      if (p.name == name) return &p;
+    return nullptr;
+  }
 };
 
 enum class Dialect : uint8_t { ISO, Sinumerik, Heidenhain, CLData, Unknown };

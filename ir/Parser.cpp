@@ -317,6 +317,10 @@ private:
       }
       expectPunct(')');
     }
+    if (isIdent("save")) {  // function attributes
+      next();
+      f.save = true;
+    }
     f.loc = parseLocOpt();
     f.body = parseRegion();
     return f;

@@ -165,6 +165,7 @@ private:
       }
     }
     if (!f.params.empty()) out_ += ')';
+    if (f.save) out_ += " save";
     printLoc(f.loc);
     out_ += " {\n";
     printRegion(f.body, 1);

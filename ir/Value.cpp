@@ -34,6 +34,7 @@ bool programName(double v, std::string &out) {
 std::string unknownProgramMessage(std::string_view name) {
   return fmt::format("call to unknown program '{}'", name);
 }
+std::string noReturnValueMessage() { return "the called function returned no value for 'result'"; }
 std::string badProgramNumberMessage(double v) {
   return fmt::format("call target {} is not a program number (a non-negative integer)", numberText(v));
 }

@@ -106,6 +106,8 @@ bool programName(double v, std::string &out);
 // Run-time errors of computed calls, the same in both engines.
 std::string unknownProgramMessage(std::string_view name);
 std::string badProgramNumberMessage(double v);
+// `call result=` after a callee that ended without `return value=`.
+std::string noReturnValueMessage();
 // Run-time errors of named arrays, the same in both engines.
 std::string arrayIndexMessage(std::string_view name, double index);
 std::string unsetElementMessage(std::string_view name, double index);

@@ -48,13 +48,13 @@ struct VarRule {
   OpKind kind;
   const char *key;
 };
-const VarRule kVarRules[] = {{OpKind::Declare, "var"}, {OpKind::Assign, "target"}};
+const VarRule kVarRules[] = {{OpKind::Declare, "var"}, {OpKind::Assign, "target"}, {OpKind::Call, "result"}};
 
 // Keys whose value must be a non-negative integer constant (source block numbers).
 const VarRule kIntConstRules[] = {{OpKind::Block, "n"}, {OpKind::Block, "skip"}};
 
 // Keys of `call` besides the `a.<name>` arguments.
-const char *kCallKeys = "callee count frame";
+const char *kCallKeys = "callee count frame result";
 
 bool inList(std::string_view list, std::string_view word) {
   size_t i = 0;
@@ -176,7 +176,9 @@ private:
     for (auto &a : op.args) {
       if (!seen.insert(a.key).second) error(op.loc, fmt::format("'{}' has argument '{}' twice", info.name, a.key));
       bool ok;
-      if (op.kind == OpKind::Call) ok = inList(kCallKeys, a.key) || (a.key.size() > 2 && a.key.compare(0, 2, "a.") == 0);
+      if (op.kind == OpKind::Call || op.kind == OpKind::ModalCall)
+        ok = inList(op.kind == OpKind::Call ? kCallKeys : "callee count", a.key) ||
+             (a.key.size() > 2 && a.key.compare(0, 2, "a.") == 0);
       else ok = std::string_view(info.allowed) == "*" || inList(info.required, a.key) || inList(info.allowed, a.key);
       if (!ok) error(op.loc, fmt::format("'{}' has unknown argument '{}'", info.name, a.key));
     }
@@ -237,11 +239,11 @@ private:
     }
   }
 
-  void checkControl(const Op &op, const std::string &name) {
+  void checkControl(const Op &op, const std::string &name_) {
     switch (op.kind) {
     case OpKind::Break:
     case OpKind::Continue:
-      if (loopDepth_ == 0) error(op.loc, fmt::format("'{}' outside of a 'while' or 'loop'", name));
+      if (loopDepth_ == 0) error(op.loc, fmt::format("'{}' outside of a 'while' or 'loop'", name_));
       break;
     case OpKind::Goto: {
       const Expr *n = op.get("n"), *l = op.get("label");
@@ -255,6 +257,15 @@ private:
         error(op.loc, fmt::format("'goto' target label '{}' is not in this function", l->str));
       break;
     }
+    case OpKind::CallSection:  // the section's labels: constants of this function
+      for (const char *key : {"from", "to"})
+        if (const Expr *l = op.get(key)) {
+          if (l->kind != ExprKind::String) error(op.loc, fmt::format("'call_section' argument '{}' must be a label name (a string)", key));
+          else if (!targets_.labels.count(l->str))
+            error(op.loc, fmt::format("'call_section' label '{}' is not in this function", l->str));
+        }
+      break;
+    case OpKind::ModalCall:
     case OpKind::Call: {
       const Expr *c = op.get("callee");
       if (!c) break;
@@ -262,10 +273,17 @@ private:
       // at run time.
       std::string name;
       if (constantCallee(*c, name)) {
-        if (!m_.find(name)) error(op.loc, fmt::format("'call' target '{}' is not a function of this module", name));
+        const Function *f = m_.find(name);
+        if (!f) error(op.loc, fmt::format("'{}' target '{}' is not a function of this module", name_, name));
+        for (auto &a : op.args) {  // a VAR parameter aliases a variable of the caller
+          const Param *p = f && a.key.size() > 2 ? f->param(std::string_view(a.key).substr(2)) : nullptr;
+          if (p && p->byRef && a.value && (a.value->kind != ExprKind::Var || a.value->space == VarSpace::System))
+            error(op.loc, fmt::format("'{}' argument '{}' must be a variable: parameter '{}' of '@{}' is VAR", name_,
+                                      a.key, p->name, f->name));
+        }
       } else if (c->kind != ExprKind::Var && c->kind != ExprKind::Unary && c->kind != ExprKind::Binary &&
                  c->kind != ExprKind::Call) {
-        error(op.loc, "'call' argument 'callee' must be a string or a program number");
+        error(op.loc, fmt::format("'{}' argument 'callee' must be a string or a program number", name_));
       }
       break;
     }
@@ -282,9 +300,10 @@ public:
     collectDecls(m_, decls_, nullptr);
     for (auto &f : m_.functions) {
       fn_ = &f;
-      for (auto &p : f.params) {  // neither engine passes by reference or applies defaults
-        if (p.byRef) error(f.loc, fmt::format("function '@{}': VAR (by-reference) parameter '{}' is not supported yet", f.name, p.name));
-        if (p.defaultValue) error(f.loc, fmt::format("function '@{}': default of parameter '{}' is not supported yet", f.name, p.name));
+      for (auto &p : f.params) {
+        // Defaults are evaluated in the callee when it starts: no variables of either side.
+        if (p.defaultValue && usesVariable(*p.defaultValue))
+          error(f.loc, fmt::format("function '@{}': default of parameter '{}' must not use variables", f.name, p.name));
         if (p.type != Type::Real && p.type != Type::Bool && p.type != Type::Int && p.type != Type::String &&
             p.type != Type::Axis)
           error(f.loc, fmt::format("function '@{}': parameter '{}' of type {} is not supported yet (REAL, INT, BOOL, "
@@ -297,6 +316,13 @@ public:
   }
 
 private:
+  static bool usesVariable(const Expr &e) {
+    if (e.kind == ExprKind::Var) return true;
+    for (auto &a : e.args)
+      if (a && usesVariable(*a)) return true;
+    return false;
+  }
+
   void walk(const Region &r) {
     for (auto &op : r) {
       if ((unsigned)op.kind < (unsigned)OpKind::Count) checkSupported(op, opInfo(op.kind).name);
@@ -351,16 +377,20 @@ private:
         error(op.loc, fmt::format("'declare' type '{}' is not supported yet", t->str));
       break;
     }
-    case OpKind::Return:
-      if (op.get("value")) error(op.loc, "'return' with a value is not supported yet");
-      break;
-    case OpKind::Goto:  // a computed label= is reported as not a string constant (argContext)
-      if (const Expr *v = op.get("n"); v && !v->isConstant())
-        error(op.loc, "'goto' argument 'n' must be a constant: computed jumps are not supported yet");
-      break;
+    case OpKind::ModalCall:
     case OpKind::Call: {
       const Expr *f = op.get("frame");
-      bool shared = !f || f->str != "new";
+      bool modal = op.kind == OpKind::ModalCall;  // always a new frame
+      bool shared = !modal && (!f || f->str != "new");
+      std::string calleeName;
+      if (const Expr *c = op.get("callee"); c && (modal || !constantCallee(*c, calleeName)))
+        for (auto &a : op.args)  // the engines pass addresses only to a callee known when compiling
+          for (auto &fn : m_.functions)
+            if (const Param *p = a.key.size() > 2 ? fn.param(std::string_view(a.key).substr(2)) : nullptr; p && p->byRef) {
+              error(op.loc, fmt::format("'{}' argument '{}': {} cannot take VAR parameter '{}' of '@{}' yet", name,
+                                        a.key, modal ? "a modal call" : "a computed callee", p->name, fn.name));
+              break;
+            }
       for (auto &a : op.args) {
         if (a.key.rfind("a.", 0) != 0) continue;
         std::string k = a.key.substr(2);
@@ -369,9 +399,11 @@ private:
           char *end;
           long n = std::strtol(k.c_str(), &end, 10);
           if (*end || n < 1 || n > kMacroLocals)
-            error(op.loc, fmt::format("'call' argument '{}' must name a local #1..#{}", a.key, kMacroLocals));
+            error(op.loc, fmt::format("'{}' argument '{}' must name a local #1..#{}", name, a.key, kMacroLocals));
         }
       }
+      if (modal && !op.get("callee") && op.args.size())
+        error(op.loc, "'modal_call' without a callee (a cancel) takes no arguments");
       break;
     }
     case OpKind::Move:
@@ -402,13 +434,16 @@ private:
   static Ctx argContext(const Op &op, const std::string &key) {
     if (op.kind == OpKind::Message && key == "text") return Ctx::Text;
     if ((op.kind == OpKind::Assign && key == "value") || (op.kind == OpKind::Declare && key == "init") ||
-        (op.kind == OpKind::Call && key.rfind("a.", 0) == 0 && !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
+        (op.kind == OpKind::Return && key == "value") ||
+        ((op.kind == OpKind::Call || op.kind == OpKind::ModalCall) && key.rfind("a.", 0) == 0 &&
+         !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
       return Ctx::Any;
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
     if (op.kind == OpKind::Move && (key == "ic" || key == "ac")) return Ctx::Symbol;  // axis letters (CmdTemplate)
-    if (op.kind == OpKind::Call && key == "callee") return Ctx::Callee;
+    if ((op.kind == OpKind::Call || op.kind == OpKind::ModalCall) && key == "callee") return Ctx::Callee;
+    if (op.kind == OpKind::Goto && key == "label") return Ctx::Text;  // a computed one: any value as text
     if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||
-        (op.kind == OpKind::Goto && key == "label"))
+        (op.kind == OpKind::CallSection && (key == "from" || key == "to")))
       return Ctx::Constant;
     for (auto &r : kVarRules)
       if (r.kind == op.kind && key == r.key) return Ctx::Var;

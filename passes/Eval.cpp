@@ -3,6 +3,8 @@
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
 #include "ir/Decls.h"
+#include "ir/Jumps.h"
+#include "ir/RunErrors.h"
 #include "ir/Strings.h"
 #include "ir/Value.h"
 #include "passes/CmdTemplate.h"
@@ -11,9 +13,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <unordered_map>
 
 namespace ncc {
@@ -35,12 +39,16 @@ enum class IK : uint8_t {
   Declare,      // target, expr (init, may be null)
   JumpIfFalse,  // expr -> jump
   Jump,         // -> jump; backward gotos count toward the loop limit
+  JumpComputed, // op: a goto whose target is computed when it runs (ir/Jumps.h)
   LoopEnter,    // slot: reset the iteration counter
   LoopBack,     // slot: count an iteration, then jump
   CountInit,    // slot: remaining = expr (null = endless)
   CountTest,    // slot: if remaining == 0 -> jump, else remaining -= 1
   Call,         // op
+  ModalCall,    // op: set or cancel the modal call
   Return,
+  SectionCall,  // op -> jump (the `from` label): push a section, run it (ir/Jumps.h)
+  SectionEnd,   // calls: the innermost active section, if one of these, repeats or returns
 };
 
 struct Instr {
@@ -51,6 +59,7 @@ struct Instr {
   const Op *op = nullptr;
   const Expr *expr = nullptr;
   const Expr *target = nullptr;
+  const std::vector<const Op *> *calls = nullptr;  // SectionEnd
 };
 
 struct CompiledFn {
@@ -58,6 +67,8 @@ struct CompiledFn {
   std::vector<Instr> code;
   std::vector<CmdTemplate> templates;
   uint32_t slots = 0;
+  std::vector<JumpEntry> jumps;  // block numbers and labels in code order (ir/Jumps.h)
+  SectionEnds sectionEnds;       // where call_section sections end
   std::unordered_map<std::string, uint32_t> ownNames;
   // Slots of named locals: the function's own, or for the main program one map that outlives
   // the module, so a streamed program keeps its named locals from chunk to chunk.
@@ -67,9 +78,18 @@ struct CompiledFn {
 struct Frame {
   double locals[kMacroLocals + 1];  // [0] unused: #0 is always vacant
   std::vector<double> named;
+  // By slot of `named`: the caller's variable a VAR parameter aliases (null: the own slot).
+  std::vector<double *> refs;
   std::unordered_map<std::string, std::vector<double>> arrays;  // named local arrays
   std::vector<double> slots;
   uint64_t backJumps = 0;
+  struct Section {  // an active call_section
+    const Op *call;
+    uint32_t start, ret;
+    double remaining;
+  };
+  std::vector<Section> sections;
+  double ret = unsetValue();  // `return value=`: what the caller's `call result=` receives
 };
 
 }  // namespace
@@ -82,7 +102,7 @@ struct Evaluator::Impl {
   std::unordered_map<const Function *, std::unique_ptr<CompiledFn>> compiled;
   std::unordered_map<std::string, uint32_t> globalNames;
   std::unordered_map<std::string, uint32_t> mainLocalNames;
-  std::vector<double> globalNamed;
+  std::deque<double> globalNamed;  // a deque: VAR parameters keep pointers into it
   std::unordered_map<std::string, std::vector<double>> globalArrays;
   double lastIndex = 0;  // index of the last array element referenced (for the unset error)
   std::vector<double> numbered = std::vector<double>(100000, numberedStart());
@@ -108,19 +128,23 @@ struct Evaluator::Impl {
     const Op *op;
   };
 
-  void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops, std::vector<Fixup> &gotos,
-                     std::unordered_map<int64_t, std::vector<uint32_t>> &blocks,
-                     std::unordered_map<std::string, uint32_t> &labels) {
+  void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops, std::vector<Fixup> &gotos) {
+    auto emit = [&](Instr in) {
+      cf.code.push_back(in);
+      return (uint32_t)cf.code.size() - 1;
+    };
+    auto sectionEnd = [&](const std::vector<const Op *> *calls) {
+      Instr in{IK::SectionEnd};
+      in.calls = calls;
+      if (calls) emit(in);
+    };
     for (const Op &op : r) {
-      auto emit = [&](Instr in) {
-        cf.code.push_back(in);
-        return (uint32_t)cf.code.size() - 1;
-      };
+      sectionEnd(cf.sectionEnds.endingBefore(op));
       if (isMachineOp(op.kind)) {
         CmdTemplate t;
         if (!buildCmdTemplate(op, t, diags)) fail(op.loc, "invalid machine operation");
         if (op.kind == OpKind::Block && t.base.blockNumber >= 0)
-          blocks[t.base.blockNumber].push_back((uint32_t)cf.code.size());
+          cf.jumps.push_back({(double)t.base.blockNumber, nullptr, (uint32_t)cf.code.size()});
         Instr in{IK::Machine};
         in.slot = (uint32_t)cf.templates.size();
         in.op = &op;
@@ -145,11 +169,11 @@ struct Evaluator::Impl {
         jf.expr = op.get("cond");
         jf.op = &op;
         uint32_t j = emit(jf);
-        compileRegion(cf, op.regions[0], loops, gotos, blocks, labels);
+        compileRegion(cf, op.regions[0], loops, gotos);
         if (op.regions.size() > 1) {
           uint32_t skip = emit(Instr{IK::Jump});
           cf.code[j].jump = (uint32_t)cf.code.size();
-          compileRegion(cf, op.regions[1], loops, gotos, blocks, labels);
+          compileRegion(cf, op.regions[1], loops, gotos);
           cf.code[skip].jump = (uint32_t)cf.code.size();
         } else {
           cf.code[j].jump = (uint32_t)cf.code.size();
@@ -183,7 +207,7 @@ struct Evaluator::Impl {
         }
         uint32_t head = test;
         loops.emplace_back();
-        compileRegion(cf, op.regions[0], loops, gotos, blocks, labels);
+        compileRegion(cf, op.regions[0], loops, gotos);
         uint32_t back = (uint32_t)cf.code.size();
         Instr lb{IK::LoopBack};
         lb.slot = slot;
@@ -205,12 +229,15 @@ struct Evaluator::Impl {
         break;
       }
       case OpKind::Label:
-        if (const Expr *e = op.get("name")) labels[e->str] = (uint32_t)cf.code.size();
+        if (const Expr *e = op.get("name")) cf.jumps.push_back({NAN, e->str.c_str(), (uint32_t)cf.code.size()});
         break;
       case OpKind::Goto: {
-        Instr j{IK::Jump};
+        const Expr *n = op.get("n"), *l = op.get("label");
+        Instr j{(n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String) ? IK::Jump : IK::JumpComputed};
         j.op = &op;
-        gotos.push_back({emit(j), &op});
+        j.expr = n ? n : l;
+        uint32_t i = emit(j);
+        if (j.kind == IK::Jump) gotos.push_back({i, &op});
         break;
       }
       case OpKind::Call: {
@@ -225,10 +252,24 @@ struct Evaluator::Impl {
         emit(r);
         break;
       }
+      case OpKind::ModalCall: {
+        Instr c{IK::ModalCall};
+        c.op = &op;
+        emit(c);
+        break;
+      }
+      case OpKind::CallSection: {
+        Instr c{IK::SectionCall};
+        c.op = &op;
+        c.expr = op.get("count");
+        gotos.push_back({emit(c), &op});  // `from` resolves like a goto's label
+        break;
+      }
       default:
         fail(op.loc, fmt::format("the eval engine cannot execute '{}'", opInfo(op.kind).name));
       }
     }
+    sectionEnd(cf.sectionEnds.endingAt(r));
   }
 
   uint32_t localSlot(CompiledFn &cf, const std::string &name) {
@@ -247,45 +288,18 @@ struct Evaluator::Impl {
     if (!module->functions.empty() && &f == &module->functions[0]) cf->names = &mainLocalNames;
     std::vector<LoopCtx> loops;
     std::vector<Fixup> gotos;
-    std::unordered_map<int64_t, std::vector<uint32_t>> blocks;
-    std::unordered_map<std::string, uint32_t> labels;
     for (auto &p : f.params) localSlot(*cf, p.name);
-    compileRegion(*cf, f.body, loops, gotos, blocks, labels);
+    cf->sectionEnds = sectionEnds(f);
+    compileRegion(*cf, f.body, loops, gotos);
     cf->code.push_back(Instr{IK::Return});
-    // Resolve gotos: a sequence number is searched forward from the goto, then from the start
-    // (Fanuc); dir=forward/backward restricts the search (Sinumerik GOTOF/GOTOB).
+    // Constant targets resolve now (ir/Jumps.h); a missing one fails the function's first call.
     for (auto &g : gotos) {
-      const Expr *n = g.op->get("n");
-      const Expr *l = g.op->get("label");
-      const Expr *d = g.op->get("dir");
-      std::string dir = d ? d->str : "any";
-      std::vector<uint32_t> cands;
-      if (n && n->kind == ExprKind::Number) {
-        auto bit = blocks.find((int64_t)n->num);
-        if (bit != blocks.end()) cands = bit->second;
-      } else if (l) {
-        auto lit = labels.find(l->str);
-        if (lit != labels.end()) cands.push_back(lit->second);
-      } else {
-        fail(g.op->loc, "goto target must be a constant sequence number or a label");
-      }
-      int64_t pick = -1;
-      for (uint32_t c : cands)
-        if (c > g.instr && dir != "backward") {
-          pick = c;
-          break;
-        }
-      if (pick < 0 && dir != "forward")
-        for (uint32_t c : cands)
-          if (c <= g.instr) {
-            pick = c;
-            break;
-          }
-      if (pick < 0)
-        fail(g.op->loc, n ? fmt::format("jump to missing sequence number N{}", (int64_t)n->num)
-                          : fmt::format("jump to missing label '{}'", l->str));
-      cf->code[g.instr].jump = (uint32_t)pick;
-      cf->code[g.instr].backward = (uint32_t)pick <= g.instr;
+      const Expr *l = g.op->get(g.op->kind == OpKind::CallSection ? "from" : "label");
+      double n = l ? NAN : g.op->get("n")->num;
+      int64_t t = findJump(cf->jumps.data(), cf->jumps.size(), l, n, l ? l->str : "", g.instr, jumpDir(*g.op));
+      if (t < 0) fail(g.op->loc, missingJumpMessage(l, n, l ? l->str : ""));
+      cf->code[g.instr].jump = cf->jumps[t].pos;
+      cf->code[g.instr].backward = cf->jumps[t].pos <= g.instr;
     }
     auto &ref = *cf;
     compiled.emplace(&f, std::move(cf));
@@ -303,13 +317,13 @@ struct Evaluator::Impl {
       vac = vacantValue();
       return vac;
     }
-    if (n < 0 || n >= (long)numbered.size()) fail(v.loc, fmt::format("parameter number #{} out of range", n));
+    if (n < 0 || n >= (long)numbered.size()) fail(v.loc, runErrorMessage(RunError::Numbered, limits, {}, (double)n));
     return numbered[n];
   }
 
-  double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, const char *what) {
+  double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, RunError outOfRange) {
     long n = v.args.empty() ? 0 : std::lround(num(number(fr, *v.args[0])));
-    if (n < 0 || n >= (long)arr.size()) fail(v.loc, fmt::format("{} index {} out of range", what, n));
+    if (n < 0 || n >= (long)arr.size()) fail(v.loc, runErrorMessage(outOfRange, limits, {}, (double)n));
     return arr[n];
   }
 
@@ -340,7 +354,7 @@ struct Evaluator::Impl {
     if (v.space == VarSpace::Local) {
       auto &names = *curFn->names;
       auto it = names.find(v.str);
-      return it != names.end() && it->second < fr.named.size() && !isUnset(fr.named[it->second]);
+      return it != names.end() && it->second < fr.named.size() && !isUnset(namedSlot(fr, it->second));
     }
     if (v.space == VarSpace::Global) {
       auto it = globalNames.find(v.str);
@@ -372,27 +386,27 @@ struct Evaluator::Impl {
     if (!v.args.empty() && v.space == VarSpace::Global) return elemRef(globalArrays, fr, v);
     switch (v.space) {
     case VarSpace::Numbered: return numberedRef(fr, v, write);
-    case VarSpace::RParam: return arrayRef(rparams, fr, v, "R parameter");
+    case VarSpace::RParam: return arrayRef(rparams, fr, v, RunError::RParam);
     case VarSpace::QParam: {
       int q = qPrefixIndex(v.str);
       if (q < 0) fail(v.loc, fmt::format("unknown Q parameter prefix '{}'", v.str));
       auto &arr = qparams[q];
       if (arr.empty()) arr.assign(2000, qParamStart(q));
-      return arrayRef(arr, fr, v, "Q parameter");
+      return arrayRef(arr, fr, v, RunError::QParam);
     }
     case VarSpace::Local: {
       auto it = (*cf.names).find(v.str);
       if (it == (*cf.names).end()) {
-        if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
+        if (!write) fail(v.loc, runErrorMessage(RunError::UnsetVar, limits, v.str));
         it = (*cf.names).emplace(v.str, (uint32_t)(*cf.names).size()).first;
       }
       if (fr.named.size() <= it->second) fr.named.resize((*cf.names).size(), unsetValue());
-      return fr.named[it->second];
+      return namedSlot(fr, it->second);
     }
     case VarSpace::Global: {
       auto it = globalNames.find(v.str);
       if (it == globalNames.end()) {
-        if (!write) fail(v.loc, fmt::format("variable '{}' used before assignment", v.str));
+        if (!write) fail(v.loc, runErrorMessage(RunError::UnsetVar, limits, v.str));
         it = globalNames.emplace(v.str, (uint32_t)globalNames.size()).first;
         globalNamed.push_back(unsetValue());
       }
@@ -401,7 +415,7 @@ struct Evaluator::Impl {
     case VarSpace::System: {  // read here; execAssign writes
       static double value;
       if (!sink.readSystem(systemVar(fr, v), value))
-        fail(v.loc, fmt::format("system variable '{}' is not available here", v.str));
+        fail(v.loc, runErrorMessage(RunError::SysVar, limits, v.str));
       return value;
     }
     }
@@ -409,6 +423,10 @@ struct Evaluator::Impl {
   }
 
   CompiledFn *curFn = nullptr;
+
+  static double &namedSlot(Frame &fr, uint32_t slot) {
+    return slot < fr.refs.size() && fr.refs[slot] ? *fr.refs[slot] : fr.named[slot];
+  }
 
   double ev(Frame &fr, const Expr &e) {
     switch (e.kind) {
@@ -420,7 +438,7 @@ struct Evaluator::Impl {
     case ExprKind::Var: {
       double v = varRef(fr, *curFn, e, false);
       if (isUnset(v))
-        fail(e.loc, e.args.empty() ? fmt::format("variable '{}' used before assignment", e.str)
+        fail(e.loc, e.args.empty() ? runErrorMessage(RunError::UnsetVar, limits, e.str)
                                    : unsetElementMessage(e.str, lastIndex));
       return v;
     }
@@ -522,7 +540,7 @@ struct Evaluator::Impl {
     if ((++steps & 0xffff) == 0 && limits.maxSeconds > 0) {
       double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (s > limits.maxSeconds)
-        fail(loc, fmt::format("run time limit of {} s exceeded (limit --max-seconds)", limits.maxSeconds));
+        fail(loc, runErrorMessage(RunError::TimeLimit, limits));
     }
   }
 
@@ -542,6 +560,7 @@ struct Evaluator::Impl {
       cmd.set(s.word, v);
     }
     if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
+    if (cmd.kind == CmdKind::Move && !modal.callee.empty() && !inModal) runModal(cmd.loc, fr);
     if (cmd.kind == CmdKind::Stop &&
         (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
       ended = true;
@@ -553,18 +572,25 @@ struct Evaluator::Impl {
     const VarDecl *d = decls.find(*cf.fn, *target);
     double v = value ? ev(fr, *value) : declare ? initialValue(d ? d->type : ValueType::Real) : vacantValue();
     if (isUnset(v)) v = vacantValue();
-    v = convert(d, *target, v, target->loc);
     if (declare && d && d->rank) {  // an array declaration sets every element
+      v = convert(d, *target, v, target->loc);
       auto &arrays = target->space == VarSpace::Global ? globalArrays : fr.arrays;
       arrays[target->str].assign(d->size(), v);
       return;
     }
-    if (target->space == VarSpace::System) {
+    store(*target, v, fr, cf);
+  }
+
+  // A store into a variable: the value converted for it (its declared type, numeric spaces);
+  // a system variable goes to the executor.
+  void store(const Expr &target, double v, Frame &fr, CompiledFn &cf) {
+    if (target.space == VarSpace::System) {
       std::string err;
-      if (!sink.writeSystem(systemVar(fr, *target), v, target->loc, err)) fail(target->loc, err);
+      if (!sink.writeSystem(systemVar(fr, target), v, target.loc, err)) fail(target.loc, err);
       return;
     }
-    varRef(fr, cf, *target, true) = v;
+    v = convert(decls.find(*cf.fn, target), target, v, target.loc);
+    varRef(fr, cf, target, true) = v;
   }
 
   // What a store into `target` keeps: converted to its declared type; numeric parameters take
@@ -584,6 +610,16 @@ struct Evaluator::Impl {
   // at each activation, globals from the start of the run.
   std::unordered_map<std::string, bool> globalsStarted;
   void startDeclared(const Function &f, CompiledFn &cf, Frame &fr) {
+    // Parameters the call omitted (still unset, never aliased): the default, else the type's
+    // initial value (docs/IR.md §5.1).
+    for (auto &p : f.params) {
+      uint32_t slot = localSlot(cf, p.name);
+      if (fr.named.size() <= slot) fr.named.resize((*cf.names).size(), unsetValue());
+      if ((slot < fr.refs.size() && fr.refs[slot]) || !isUnset(fr.named[slot])) continue;
+      const VarDecl *d = decls.find(f, VarSpace::Local, p.name);
+      double v = p.defaultValue ? ev(fr, *p.defaultValue) : initialValue(d ? d->type : ValueType::Real);
+      fr.named[slot] = convert(d, *Expr::var(VarSpace::Local, p.name), v, f.loc);
+    }
     auto it = decls.locals.find(&f);
     if (it != decls.locals.end())
       for (auto &[name, d] : it->second) {
@@ -658,19 +694,19 @@ struct Evaluator::Impl {
         break;
       case IK::JumpIfFalse: pc = truthy(number(fr, *in.expr)) ? pc + 1 : in.jump; break;
       case IK::Jump:
-        if (in.backward) {
-          if (++fr.backJumps > limits.maxLoopIterations)
-            fail(in.op->loc, fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)",
-                                         limits.maxLoopIterations));
-          checkTime(in.op->loc);
-        }
+        if (in.backward) countBackJump(fr, in.op->loc);
         pc = in.jump;
         break;
+      case IK::JumpComputed: {
+        uint32_t to = computedJump(cf, *in.op, *in.expr, pc, fr);
+        if (to <= pc) countBackJump(fr, in.op->loc);
+        pc = to;
+        break;
+      }
       case IK::LoopEnter: fr.slots[in.slot] = 0; ++pc; break;
       case IK::LoopBack:
         if (++fr.slots[in.slot] >= (double)limits.maxLoopIterations)
-          fail(in.op->loc, fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)",
-                                       limits.maxLoopIterations));
+          fail(in.op->loc, runErrorMessage(RunError::LoopLimit, limits));
         checkTime(in.op->loc);
         pc = in.jump;
         break;
@@ -689,9 +725,96 @@ struct Evaluator::Impl {
         break;
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
-      case IK::Return: curFn = saved; return;
+      case IK::ModalCall: setModal(*in.op, fr); ++pc; break;
+      case IK::SectionCall: {
+        double n = in.expr ? std::round(num(number(fr, *in.expr))) : 1;
+        if (!(n >= 1)) {
+          ++pc;
+          break;
+        }
+        if (fr.sections.size() >= kMaxSectionDepth) fail(in.op->loc, sectionDepthMessage());
+        fr.sections.push_back({in.op, in.jump, pc + 1, n});
+        pc = in.jump;
+        break;
+      }
+      case IK::SectionEnd: {
+        if (fr.sections.empty() ||
+            std::find(in.calls->begin(), in.calls->end(), fr.sections.back().call) == in.calls->end()) {
+          ++pc;
+          break;
+        }
+        auto &sec = fr.sections.back();
+        checkTime(sec.call->loc);
+        if (--sec.remaining > 0) {
+          pc = sec.start;
+        } else {
+          pc = sec.ret;
+          fr.sections.pop_back();
+        }
+        break;
+      }
+      case IK::Return:
+        if (const Expr *v = in.op ? in.op->get("value") : nullptr) fr.ret = ev(fr, *v);
+        curFn = saved;
+        return;
       }
     }
+  }
+
+  void countBackJump(Frame &fr, SourceLoc loc) {
+    if (++fr.backJumps > limits.maxLoopIterations)
+      fail(loc, runErrorMessage(RunError::BackJump, limits));
+    checkTime(loc);
+  }
+
+  // A goto's target computed now: n= a number, label= any value as text (ir/Jumps.h).
+  uint32_t computedJump(CompiledFn &cf, const Op &go, const Expr &target, uint32_t pc, Frame &fr) {
+    bool label = go.get("label");
+    double n = NAN;
+    std::string name;
+    if (label) appendStr(fr, target, name);
+    else n = num(number(fr, target));
+    int64_t t = findJump(cf.jumps.data(), cf.jumps.size(), label, n, name, pc, jumpDir(go));
+    if (t < 0) fail(go.loc, missingJumpMessage(label, n, name));
+    return cf.jumps[t].pos;
+  }
+
+  // The a.<key> arguments of a call, evaluated once in the caller's frame: numbered ones for
+  // #1..#33, named ones converted for the callee's typed parameters, VAR ones as the address of
+  // the caller's variable.
+  struct CallArgs {
+    std::vector<std::pair<long, double>> numbered;
+    std::vector<std::pair<std::string, double>> named;
+    std::vector<std::pair<std::string, double *>> refs;
+  };
+  CallArgs evalArgs(const Op &op, const Function &f, Frame &fr) {
+    CallArgs out;
+    for (auto &a : op.args) {
+      if (a.key.rfind("a.", 0) != 0) continue;
+      std::string k = a.key.substr(2);
+      if (const Param *p = f.param(k); p && p->byRef) {
+        out.refs.push_back({k, &varRef(fr, *curFn, *a.value, true)});
+        continue;
+      }
+      double v = ev(fr, *a.value);
+      if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
+        if (isString(v)) fail(op.loc, stringInParameterMessage());
+        out.numbered.push_back({std::atol(k.c_str()), v});
+      } else {
+        // A typed parameter converts its argument (ir/Strings.h convertForStore).
+        if (const VarDecl *d = decls.find(f, VarSpace::Local, k)) {
+          std::string err;
+          if (!convertForStore(pool, d->type, d->len, k, v, v, err)) fail(op.loc, err);
+        }
+        out.named.push_back({k, v});
+      }
+    }
+    return out;
+  }
+
+  void checkDepth(SourceLoc loc) {
+    if (depth + 1 > limits.maxCallDepth)
+      fail(loc, runErrorMessage(RunError::CallDepth, limits));
   }
 
   void call(const Op &op, Frame &fr) {
@@ -702,48 +825,78 @@ struct Evaluator::Impl {
     double count = countE ? num(number(fr, *countE)) : 1;
     const Expr *frameE = op.get("frame");
     bool newFrame = frameE && frameE->str == "new";
-    if (depth + 1 > limits.maxCallDepth)
-      fail(op.loc, fmt::format("call depth limit {} exceeded (limit --max-call-depth)", limits.maxCallDepth));
-    // Arguments are evaluated once, in the caller's frame.
-    std::vector<std::pair<long, double>> numberedArgs;
-    std::vector<std::pair<std::string, double>> namedArgs;
-    for (auto &a : op.args) {
-      if (a.key.rfind("a.", 0) != 0) continue;
-      std::string k = a.key.substr(2);
-      double v = ev(fr, *a.value);
-      if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
-        if (isString(v)) fail(op.loc, stringInParameterMessage());
-        numberedArgs.push_back({std::atol(k.c_str()), v});
-      } else {
-        // A typed parameter converts its argument (ir/Strings.h convertForStore).
-        if (const VarDecl *d = decls.find(*f, VarSpace::Local, k)) {
-          std::string err;
-          if (!convertForStore(pool, d->type, d->len, k, v, v, err)) fail(op.loc, err);
-        }
-        namedArgs.push_back({k, v});
-      }
+    checkDepth(op.loc);
+    CallArgs args = evalArgs(op, *f, fr);
+    double ret = invoke(*f, args, newFrame, count, op.loc, fr);
+    if (const Expr *result = op.get("result")) {
+      if (isUnset(ret)) fail(op.loc, noReturnValueMessage());
+      store(*result, ret, fr, *curFn);
     }
+  }
+
+  // Runs `f` llround(count) times with the evaluated arguments; the last repetition's return
+  // value (unset: none).
+  double invoke(const Function &f, const CallArgs &args, bool newFrame, double count, SourceLoc loc, Frame &fr) {
     ++depth;
+    double ret = unsetValue();
     for (long i = 0; i < (long)std::llround(count); ++i) {
-      checkTime(op.loc);  // a huge repeat count must still stop at the run-time limit
+      checkTime(loc);  // a huge repeat count must still stop at the run-time limit
+      if (f.save && !sink.saveModal()) throw ProgramEnd{};
       if (newFrame) {
         Frame nf;
         for (double &l : nf.locals) l = vacantValue();
-        for (auto &[n, v] : numberedArgs)
+        for (auto &[n, v] : args.numbered)
           if (n >= 1 && n <= kMacroLocals) nf.locals[n] = v;
-        CompiledFn &cf = compile(*f);
-        for (auto &[n, v] : namedArgs) localSlot(cf, n);  // the callee may only read it
+        CompiledFn &cf = compile(f);
+        for (auto &[n, v] : args.named) localSlot(cf, n);  // the callee may only read it
+        for (auto &[n, r] : args.refs) localSlot(cf, n);
         nf.named.assign((*cf.names).size(), unsetValue());
-        for (auto &[n, v] : namedArgs) nf.named[(*cf.names).at(n)] = v;
-        runFunction(*f, nf);
+        nf.refs.assign((*cf.names).size(), nullptr);
+        for (auto &[n, v] : args.named) nf.named[(*cf.names).at(n)] = v;
+        for (auto &[n, r] : args.refs) nf.refs[(*cf.names).at(n)] = r;
+        runFunction(f, nf);
+        ret = nf.ret;
       } else {
         Frame shared;
         std::memcpy(shared.locals, fr.locals, sizeof fr.locals);
-        runFunction(*f, shared);
+        runFunction(f, shared);
         std::memcpy(fr.locals, shared.locals, sizeof fr.locals);
+        ret = shared.ret;
       }
+      if (f.save && !sink.restoreModal(loc)) throw ProgramEnd{};  // SAVE: the caller's modes again
     }
     --depth;
+    return ret;
+  }
+
+  // modal_call (docs/IR.md §5.5): the callee and arguments set by the last one; after each move
+  // executed outside the modal callee, the callee runs with them in a new frame.
+  struct ModalCall {
+    std::string callee;  // empty: none (resolved again at each call: a streamed chunk is a new module)
+    double count = 1;    // calls per move (Fanuc G66 L)
+    CallArgs args;
+  };
+  ModalCall modal;
+  bool inModal = false;
+
+  void setModal(const Op &op, Frame &fr) {
+    modal = ModalCall();
+    const Expr *calleeE = op.get("callee");
+    if (!calleeE) return;
+    const Function &f = callee(fr, *calleeE, op.loc);
+    const Expr *countE = op.get("count");
+    modal.count = countE ? num(number(fr, *countE)) : 1;
+    modal.args = evalArgs(op, f, fr);
+    modal.callee = f.name;
+  }
+
+  void runModal(SourceLoc loc, Frame &fr) {
+    const Function *f = module->find(modal.callee);
+    if (!f) fail(loc, unknownProgramMessage(modal.callee));
+    checkDepth(loc);
+    inModal = true;
+    invoke(*f, modal.args, true, modal.count, loc, fr);
+    inModal = false;
   }
 
   // The main program's frame outlives run() so a streamed program (run chunk by chunk) keeps

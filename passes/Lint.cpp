@@ -18,12 +18,14 @@ namespace {
 struct Targets {
   std::set<int64_t> numbers;
   std::set<std::string> labels;
+  bool anyNumber = false;  // a computed goto n=: every numbered block may be its target
 };
 
 void collectTargets(const Region &r, Targets &t) {
   for (const Op &op : r) {
     if (op.kind == OpKind::Goto) {
       if (const Expr *n = op.get("n"); n && n->kind == ExprKind::Number) t.numbers.insert((int64_t)n->num);
+      else if (n) t.anyNumber = true;
       if (const Expr *l = op.get("label")) t.labels.insert(l->str);
     }
     for (auto &sub : op.regions) collectTargets(sub, t);
@@ -33,7 +35,7 @@ void collectTargets(const Region &r, Targets &t) {
 bool isTarget(const Op &op, const Targets &t) {
   if (op.kind == OpKind::Label) return true;
   if (op.kind == OpKind::Block)
-    if (const Expr *n = op.get("n"); n && t.numbers.count((int64_t)n->num)) return true;
+    if (const Expr *n = op.get("n"); n && (t.anyNumber || t.numbers.count((int64_t)n->num))) return true;
   return false;
 }
 

@@ -749,6 +749,38 @@ bool Executor::exec(const MachineCmd &c) {
   }
 }
 
+bool Executor::saveModal() {
+  impl_->savedModal.push_back({impl_->st, impl_->pathTolerance, impl_->naiveTolerance});
+  return true;
+}
+
+// The groups that differ, as one mode command: the executor's own handling (checks, records)
+// applies, and nothing is recorded when nothing changed. Sinumerik restores the modal G
+// functions only (the F value stays as the subprogram left it).
+bool Executor::restoreModal(SourceLoc loc) {
+  if (impl_->savedModal.empty()) return true;
+  Impl::SavedModal s = impl_->savedModal.back();
+  impl_->savedModal.pop_back();
+  const ModalState &now = impl_->st;
+  MachineCmd c;
+  c.kind = CmdKind::Mode;
+  c.loc = loc;
+  const ModeValue saved[] = {s.st.motion, s.st.plane, s.st.units, s.st.distance, s.st.arcDistance, s.st.feedMode,
+                             s.st.retract, s.st.pathMode};
+  const ModeValue cur[] = {now.motion, now.plane, now.units, now.distance, now.arcDistance, now.feedMode,
+                           now.retract, now.pathMode};
+  for (unsigned i = 0; i < 8 && c.nmodes < kMaxModes; ++i)
+    if (saved[i] != cur[i] || (i == 7 && (s.pathTolerance != impl_->pathTolerance ||
+                                          s.naiveTolerance != impl_->naiveTolerance)))
+      c.modes[c.nmodes++] = saved[i];
+  if (s.st.pathMode == ModeValue::Continuous) {  // G64 P Q in the restored program units
+    double unit = s.st.units == ModeValue::Inch ? 25.4 : 1.0;
+    c.set(Word::P, s.pathTolerance / unit);
+    c.set(Word::Q, s.naiveTolerance / unit);
+  }
+  return !c.nmodes || exec(c);
+}
+
 bool Executor::readSystem(SysVar v, double &out) const {
   const Impl &x = *impl_;
   const ModalState &st = x.st;

@@ -49,6 +49,10 @@ public:
   // at `loc`.
   bool runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern, const CycleArgs *patternArgs,
                 SourceLoc loc);
+  // Sinumerik SAVE: remembers the modal G groups; restoreModal puts back the last remembered ones
+  // (executing the mode changes, so their records follow).
+  bool saveModal();
+  bool restoreModal(SourceLoc loc);
   // The value of a system variable (ir/SystemVars.h) in the current state.
   bool readSystem(SysVar v, double &out) const;
   // Writes one (ir/SystemVars.h sysVarWritable); false with the reason in err.
@@ -72,6 +76,8 @@ public:
   bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) override {
     return exec_.writeSystem(v, value, loc, err);
   }
+  bool saveModal() override { return exec_.saveModal(); }
+  bool restoreModal(SourceLoc loc) override { return exec_.restoreModal(loc); }
 
 private:
   Executor &exec_;

@@ -93,6 +93,11 @@ struct Executor::Impl {
   CutterComp comp;
   bool compExit = false;
   bool warnedAfterEnd = false;
+  struct SavedModal {  // Sinumerik SAVE (Executor::saveModal)
+    ModalState st;
+    double pathTolerance, naiveTolerance;
+  };
+  std::vector<SavedModal> savedModal;
   double pathTolerance = 0;   // G64 P (mm)
   double naiveTolerance = 0;  // G64 Q (mm)
 

@@ -1,5 +1,7 @@
 // The ncrt C ABI: storage, command execution and run-time errors for compiled NC programs.
 #include "runtime/ncrt.h"
+#include "ir/Jumps.h"
+#include "ir/RunErrors.h"
 
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
@@ -31,6 +33,8 @@ static int execOne(ncrt_ctx *ctx, const MachineCmd &c) {
     ctx->ended = true;
     return NCRT_END;
   }
+  if (c.kind == CmdKind::Move && ctx->modal_hook)
+    return ctx->modal_hook(ctx, &ctx->storage, c.loc.file, c.loc.line, c.loc.col);
   return NCRT_OK;
 }
 
@@ -159,30 +163,16 @@ void ncrt_error(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const
   ctx->diags.error({file, line, col}, msg);
 }
 
+static_assert(NCRT_FAULT_LOOP_LIMIT == (unsigned)RunError::LoopLimit && NCRT_FAULT_BACKJUMP == (unsigned)RunError::BackJump &&
+                  NCRT_FAULT_CALL_DEPTH == (unsigned)RunError::CallDepth && NCRT_FAULT_UNSET_VAR == (unsigned)RunError::UnsetVar &&
+                  NCRT_FAULT_NUMBERED == (unsigned)RunError::Numbered && NCRT_FAULT_RPARAM == (unsigned)RunError::RParam &&
+                  NCRT_FAULT_QPARAM == (unsigned)RunError::QParam && NCRT_FAULT_INDEX == (unsigned)RunError::Index &&
+                  NCRT_FAULT_UNSET_ELEM == (unsigned)RunError::UnsetElem && NCRT_FAULT_SYSVAR == (unsigned)RunError::SysVar,
+              "NCRT_FAULT_* must number the kinds as ir/RunErrors.h");
+
 void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint32_t kind,
                 const char *name, double value) {
-  std::string msg;
-  const ExecLimits &l = ctx->limits;
-  switch (kind) {
-  case NCRT_FAULT_LOOP_LIMIT:
-    msg = fmt::format("loop did not terminate after {} iterations (limit --max-loop-iterations)", l.maxLoopIterations);
-    break;
-  case NCRT_FAULT_BACKJUMP:
-    msg = fmt::format("backward jump repeated more than {} times (limit --max-loop-iterations)", l.maxLoopIterations);
-    break;
-  case NCRT_FAULT_CALL_DEPTH:
-    msg = fmt::format("call depth limit {} exceeded (limit --max-call-depth)", l.maxCallDepth);
-    break;
-  case NCRT_FAULT_UNSET_VAR: msg = fmt::format("variable '{}' used before assignment", name); break;
-  case NCRT_FAULT_NUMBERED: msg = fmt::format("parameter number #{} out of range", std::lround(value)); break;
-  case NCRT_FAULT_RPARAM: msg = fmt::format("R parameter index {} out of range", std::lround(value)); break;
-  case NCRT_FAULT_INDEX: msg = arrayIndexMessage(name, value); break;
-  case NCRT_FAULT_UNSET_ELEM: msg = unsetElementMessage(name, value); break;
-  case NCRT_FAULT_QPARAM: msg = fmt::format("Q parameter index {} out of range", std::lround(value)); break;
-  case NCRT_FAULT_SYSVAR: msg = fmt::format("system variable '{}' is not available here", name); break;
-  default: msg = "internal error: unknown run-time fault"; break;
-  }
-  ctx->diags.error({file, line, col}, msg);
+  ctx->diags.error({file, line, col}, runErrorMessage((RunError)kind, ctx->limits, name ? name : "", value));
 }
 
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
@@ -190,7 +180,7 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx->start).count();
   if (ctx->limits.maxSeconds <= 0 || secs <= ctx->limits.maxSeconds) return NCRT_OK;
   ctx->diags.error({file, line, col},
-                   fmt::format("run time limit of {} s exceeded (limit --max-seconds)", ctx->limits.maxSeconds));
+                   runErrorMessage(RunError::TimeLimit, ctx->limits));
   return NCRT_ERROR;
 }
 
@@ -222,6 +212,25 @@ void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
 void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v); }
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v, true); }
 const char *ncrt_str(ncrt_ctx *ctx) { return ctx->text.c_str(); }
+
+void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn) {
+  ctx->modal_hook = reinterpret_cast<int (*)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t)>(fn);
+}
+
+int ncrt_save_modal(ncrt_ctx *ctx) { return ctx->sink.saveModal() ? NCRT_OK : NCRT_ERROR; }
+int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  return ctx->sink.restoreModal({file, line, col}) ? NCRT_OK : NCRT_ERROR;
+}
+
+static_assert(sizeof(ncc::ir::JumpEntry) == 24, "JumpEntry layout changed: update the JIT's jump table type");
+
+int64_t ncrt_jump(ncrt_ctx *ctx, int label, double n, const void *entries, uint64_t count, uint32_t from, uint32_t dir,
+                  uint32_t file, uint32_t line, uint32_t col) {
+  int64_t t = ncc::ir::findJump(static_cast<const ncc::ir::JumpEntry *>(entries), count, label, n, ctx->text, from,
+                                (ncc::ir::JumpDir)dir);
+  if (t < 0) ctx->diags.error({file, line, col}, ncc::ir::missingJumpMessage(label, n, ctx->text));
+  return t;
+}
 
 int64_t ncrt_callee(ncrt_ctx *ctx, int numeric, double value, const char *const *names, uint64_t n,
                     uint32_t file, uint32_t line, uint32_t col) {

@@ -108,6 +108,18 @@ double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, const 
 double ncrt_sysvar_set(ncrt_ctx *ctx, uint32_t id, double v, uint32_t file, uint32_t line, uint32_t col);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
+/* modal_call: the program's modal-call function (i32 (ctx, storage, file, line, col)), which the
+ * runtime calls after every move command it executes; it returns at once when no modal call is
+ * set or one runs (docs/IR.md §5.5). Moves stay in constant runs. */
+void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn);
+/* SAVE (CmdSink saveModal/restoreModal) around a call: NCRT_OK or NCRT_ERROR (reported). */
+int ncrt_save_modal(ncrt_ctx *ctx);
+int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
+/* A computed goto (ir/Jumps.h findJump over the function's `count` entries, an ir::JumpEntry
+ * array): label != 0 searches the label named by the text buffer, else block number n. Returns
+ * the entry's index, or -1 after reporting the missing target at the loc. */
+int64_t ncrt_jump(ncrt_ctx *ctx, int label, double n, const void *entries, uint64_t count, uint32_t from, uint32_t dir,
+                  uint32_t file, uint32_t line, uint32_t col);
 /* A computed callee: the index in names[0..n) of the function named by the text buffer, or when
  * `numeric` by the program number `value` (O<n>). Reports the error at the loc and returns -1
  * when there is no such function. */
@@ -159,6 +171,8 @@ struct ncrt_ctx {
   ncrt_storage storage{};
   std::vector<double> numbered, rparam, qparam, named;
   bool ended = false;  // a stop kind=end|end_rewind was executed
+  // A program with modal_call: its nc.modal.run, called after every move command executed.
+  int (*modal_hook)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t) = nullptr;
   std::string text;    // the run-time string being built (ncrt_str_*)
   ncc::StringPool pool;  // the run's string values
 };

@@ -12,6 +12,7 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstddef>
 
@@ -83,6 +84,10 @@ void Codegen::declareRuntime() {
   fCompare = decl("ncrt_compare", dblTy, {ptrTy, i32Ty, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
   fConvert = decl("ncrt_convert", dblTy, {ptrTy, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   fFill = decl("ncrt_fill", voidTy, {ptrTy, i64Ty, dblTy});
+  fSetModalHook = decl("ncrt_set_modal_hook", Type::getVoidTy(C), {ptrTy, ptrTy});
+  fSaveModal = decl("ncrt_save_modal", i32Ty, {ptrTy});
+  fRestoreModal = decl("ncrt_restore_modal", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
+  fJump = decl("ncrt_jump", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty, i32Ty, i32Ty});
   fBadIndex = decl("ncrt_bad_index", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});
   // Pure arithmetic helpers: lets LLVM keep variables in registers across them.
   for (auto *fc : {&fMod, &fIDiv, &fPow, &fBitwise}) {
@@ -168,6 +173,7 @@ Constant *Codegen::cstring(const std::string &s) {
 }
 
 std::vector<Value *> Codegen::locArgs(SourceLoc loc) {
+  if (!dynLoc_.empty()) return dynLoc_;  // inside nc.modal.run: the caller's location
   return {B.getInt32(loc.file), B.getInt32(loc.line), B.getInt32(loc.col)};
 }
 
@@ -230,6 +236,21 @@ void Codegen::emitTimeCheck(SourceLoc loc) {
 }
 
 // ---------------------------------------------------------------- functions
+// After the entry block's set-up: the shared fail (returns NCRT_ERROR) and exit (returns the
+// status checkStatus passes on) blocks, then the body, where emission continues.
+void Codegen::startBody() {
+  failBB = newBlock("fail");
+  exitBB = newBlock("exit");
+  BasicBlock *body = newBlock("body");
+  B.CreateBr(body);
+  B.SetInsertPoint(failBB);
+  B.CreateRet(B.getInt32(NCRT_ERROR));
+  B.SetInsertPoint(exitBB);
+  exitPhi = B.CreatePHI(i32Ty, 4, "status");
+  B.CreateRet(exitPhi);
+  B.SetInsertPoint(body);
+}
+
 void Codegen::emitFunction(FnInfo &fi) {
   cur_ = &fi;
   F = fi.F;
@@ -268,20 +289,11 @@ void Codegen::emitFunction(FnInfo &fi) {
         B.CreateStore(init, B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + l->second));
       }
     }
-  failBB = newBlock("fail");
-  exitBB = newBlock("exit");
-  BasicBlock *body = newBlock("body");
-  B.CreateBr(body);
-  B.SetInsertPoint(failBB);
-  B.CreateRet(B.getInt32(NCRT_ERROR));
-  B.SetInsertPoint(exitBB);
-  exitPhi = B.CreatePHI(i32Ty, 4, "status");
-  B.CreateRet(exitPhi);
-  B.SetInsertPoint(body);
+  startBody();
 
   order_.clear();
-  blocks_.clear();
-  labels_.clear();
+  jumps_.clear();
+  jumpOps_.clear();
   targetBBs_.clear();
   loops_.clear();
   run_.clear();
@@ -294,11 +306,88 @@ void Codegen::emitFunction(FnInfo &fi) {
     }
     B.CreateBr(failBB);
   } else {
+    emitParamDefaults(fi);
+    startSections(fi);
     scanTargets(fi.fn->body);
     emitRegion(fi.fn->body);
     if (!B.GetInsertBlock()->getTerminator()) B.CreateRet(B.getInt32(NCRT_OK));
   }
   if (pred_empty(exitBB)) exitBB->eraseFromParent();
+}
+
+// The module's modal calls: their argument keys, the functions they may call (all of them for a
+// computed callee), the globals that hold the setting.
+void Codegen::scanModalCalls() {
+  bool any = false, computed = false;
+  std::set<FnInfo *> callees;
+  auto walk = [&](auto &self, const ir::Region &r) -> void {
+    for (auto &op : r) {
+      if (op.kind == OpKind::ModalCall) {
+        any = true;
+        for (auto &a : op.args)
+          if (a.key.rfind("a.", 0) == 0) modalKeys_.emplace(a.key.substr(2), (unsigned)modalKeys_.size());
+        std::string name;
+        if (const Expr *c = op.get("callee"); c && c->kind == ExprKind::String && src_.find(c->str))
+          callees.insert(&functions_.at(c->str));
+        else if (c) computed = true;
+      }
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  for (auto &fn : src_.functions) walk(walk, fn.body);
+  if (!any) return;
+  for (auto &fn : src_.functions)
+    if (computed || callees.count(&functions_.at(fn.name))) modalCallees_.push_back(&functions_.at(fn.name));
+  auto global = [&](Type *t, Constant *init, const char *name) {
+    return new GlobalVariable(*M, t, false, GlobalValue::PrivateLinkage, init, name);
+  };
+  modalFn_ = global(i64Ty, B.getInt64(-1), "nc.modal.fn");
+  modalIn_ = global(i32Ty, B.getInt32(0), "nc.modal.in");
+  modalCount_ = global(dblTy, ConstantFP::get(dblTy, 1.0), "nc.modal.count");
+  auto *argsTy = ArrayType::get(dblTy, std::max<size_t>(1, modalKeys_.size()));
+  modalArgs_ = global(argsTy, ConstantAggregateZero::get(argsTy), "nc.modal.args");
+}
+
+// The section-call state of one activation (only functions with call_section get it).
+void Codegen::startSections(FnInfo &fi) {
+  sectionEnds_ = ir::sectionEnds(*fi.fn);
+  sectionIds_.clear();
+  sectionRet_.clear();
+  auto walk = [&](auto &self, const ir::Region &r) -> void {  // ids in program order
+    for (auto &op : r) {
+      if (op.kind == OpKind::CallSection) sectionIds_.emplace(&op, (unsigned)sectionIds_.size());
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  walk(walk, fi.fn->body);
+  if (sectionIds_.empty()) return;
+  sectionSp_ = allocaEntry(i32Ty, "section.sp", B.getInt32(0));
+  sectionCalls_ = allocaEntry(ArrayType::get(i32Ty, ir::kMaxSectionDepth), "section.calls");
+  sectionLeft_ = allocaEntry(ArrayType::get(dblTy, ir::kMaxSectionDepth), "section.left");
+}
+
+// Parameters the call omitted (their slot is still unset): the default, else the type's initial
+// value, converted; an omitted VAR parameter aliases a slot of this activation.
+void Codegen::emitParamDefaults(FnInfo &fi) {
+  for (auto &p : fi.fn->params) {
+    Value *slot = B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + fi.locals.at(p.name));
+    Value *omitted = B.CreateICmpEQ(B.CreateLoad(i64Ty, slot), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
+    BasicBlock *fill = newBlock("param.default"), *cont = newBlock("param.done");
+    B.CreateCondBr(omitted, fill, cont);
+    B.SetInsertPoint(fill);
+    const VarDecl *d = decls_.find(*fi.fn, ir::VarSpace::Local, p.name);
+    Val v = p.defaultValue ? expr(*p.defaultValue)
+                           : Val{ConstantFP::get(dblTy, initialValue(d ? d->type : ValueType::Real)), false};
+    Value *c = convertArg(fi, p.name, v, fi.fn->loc);
+    if (p.byRef) {
+      Value *own = allocaEntry(dblTy, "param.own");
+      B.CreateStore(c, own);
+      c = B.CreateBitCast(B.CreatePtrToInt(own, i64Ty), dblTy);
+    }
+    B.CreateStore(c, slot);
+    B.CreateBr(cont);
+    B.SetInsertPoint(cont);
+  }
 }
 
 void Codegen::emitEntry() {
@@ -324,6 +413,11 @@ void Codegen::emitEntry() {
       B.CreateStore(init, B.CreateConstGEP1_64(dblTy, namedPtr, it->second));
     }
   }
+  if (modalFn_) {  // no modal call at the start of each run; the runtime calls nc.modal.run
+    B.CreateStore(B.getInt64(-1), modalFn_);
+    B.CreateStore(B.getInt32(0), modalIn_);
+    B.CreateCall(fSetModalHook, {ctx, modalRun_});
+  }
   FnInfo &fi = functions_.at(src_.functions[0].name);
   Value *frame = B.CreateAlloca(ArrayType::get(dblTy, fi.frameSize), nullptr, "frame");
   initFrame(frame, fi.frameSize, 0);
@@ -343,7 +437,7 @@ std::unique_ptr<Module> Codegen::run() {
     fi.fn = &fn;
     for (auto &p : fn.params) fi.locals.emplace(p.name, (unsigned)fi.locals.size());
     scanNames(fi, fn.body);
-    fi.frameSize = (unsigned)(kFrameLocals + 1 + fi.locals.size());
+    fi.frameSize = (unsigned)(kFrameLocals + 1 + fi.locals.size() + 1);  // the last slot: return value
     fi.F = Function::Create(ncFnTy, GlobalValue::InternalLinkage, "nc." + fn.name, M.get());
     validate(fi);
   }
@@ -354,6 +448,8 @@ std::unique_ptr<Module> Codegen::run() {
     B.SetInsertPoint(BasicBlock::Create(C, "entry", main));
     B.CreateRet(B.getInt32(NCRT_OK));
   } else {
+    scanModalCalls();
+    if (modalFn_) emitModalRun();
     for (auto &fn : src_.functions) emitFunction(functions_.at(fn.name));
     emitEntry();
   }

@@ -3,6 +3,7 @@
 // function activation, calls sharing or renewing the #1..#33 frame.
 #include "backends/jit/CodegenImpl.h"
 
+#include "ir/Jumps.h"
 #include "ir/Strings.h"
 #include "ir/Value.h"
 #include "runtime/ncrt.h"
@@ -21,52 +22,59 @@ using ir::Op;
 using ir::OpKind;
 
 
-// Numbers every op in pre-order (the eval engine's instruction order), records block numbers
-// and labels, and marks the ops gotos reach: they start a basic block (and end a constant run).
+// Numbers every op in pre-order (the eval engine's instruction order), lists block numbers and
+// labels as jump targets (ir/Jumps.h) and marks the ops gotos reach: they start a basic block
+// (and end a constant run). A computed goto may reach every target.
 void Codegen::scanTargets(const ir::Region &body) {
   order_.clear();
-  blocks_.clear();
-  labels_.clear();
+  jumps_.clear();
+  jumpOps_.clear();
   targetBBs_.clear();
+  jumpTable_ = nullptr;
   std::vector<const Op *> gotos;
+  bool computed = false;
   auto walk = [&](auto &self, const ir::Region &r) -> void {
     for (auto &op : r) {
-      order_[&op] = (unsigned)order_.size();
+      unsigned pos = order_[&op] = (unsigned)order_.size();
       if (op.kind == OpKind::Block)
         if (const Expr *n = op.get("n"); n && (n->kind == ExprKind::Number || n->kind == ExprKind::Bool) &&
-                                         (int64_t)n->num >= 0)
-          blocks_.push_back({(int64_t)n->num, &op});
+                                         (int64_t)n->num >= 0) {
+          jumps_.push_back({(double)(int64_t)n->num, nullptr, pos});
+          jumpOps_.push_back(&op);
+        }
       if (op.kind == OpKind::Label)
-        if (const Expr *l = op.get("name")) labels_[l->str] = &op;
-      if (op.kind == OpKind::Goto) gotos.push_back(&op);
+        if (const Expr *l = op.get("name")) {
+          jumps_.push_back({NAN, l->str.c_str(), pos});
+          jumpOps_.push_back(&op);
+        }
+      if (op.kind == OpKind::Goto) {
+        gotos.push_back(&op);
+        computed |= !constantJump(op);
+      }
+      if (op.kind == OpKind::CallSection) gotos.push_back(&op);  // its `from` label is a target
       for (auto &sub : op.regions) self(self, sub);
     }
   };
   walk(walk, body);
   for (const Op *go : gotos)
-    if (const Op *t = resolveTarget(*go)) targetBBs_[t] = nullptr;
+    if (const Op *t = go->kind == OpKind::CallSection || constantJump(*go) ? resolveTarget(*go) : nullptr)
+      targetBBs_[t] = nullptr;
+  if (computed)
+    for (const Op *t : jumpOps_) targetBBs_[t] = nullptr;
 }
 
-// Fanuc search order: forward from the goto, then from the start of the function;
-// dir=forward|backward restricts it (Sinumerik GOTOF/GOTOB).
+bool Codegen::constantJump(const Op &go) {
+  const Expr *n = go.get("n"), *l = go.get("label");
+  return (n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String);
+}
+
+// A constant target (a call_section's `from`), as the eval engine resolves it when it compiles
+// the function.
 const Op *Codegen::resolveTarget(const Op &go) {
-  const Expr *n = go.get("n"), *l = go.get("label"), *d = go.get("dir");
-  std::string dir = d ? d->str : "any";
-  std::vector<const Op *> cands;
-  if (n && n->kind == ExprKind::Number) {
-    for (auto &b : blocks_)
-      if (b.first == (int64_t)n->num) cands.push_back(b.second);
-  } else if (l) {
-    if (auto it = labels_.find(l->str); it != labels_.end()) cands.push_back(it->second);
-  }
-  unsigned from = order_.at(&go);
-  if (dir != "backward")
-    for (const Op *c : cands)
-      if (order_[c] > from) return c;
-  if (dir != "forward")
-    for (const Op *c : cands)
-      if (order_[c] <= from) return c;
-  return nullptr;
+  const Expr *l = go.get(go.kind == OpKind::CallSection ? "from" : "label");
+  double n = l ? NAN : go.get("n")->num;
+  int64_t t = findJump(jumps_.data(), jumps_.size(), l, n, l ? l->str : "", order_.at(&go), ir::jumpDir(go));
+  return t < 0 ? nullptr : jumpOps_[t];
 }
 
 // The errors the eval engine raises when it compiles a function (on its first call): invalid
@@ -115,6 +123,8 @@ void Codegen::validate(FnInfo &fi) {
         }
         break;
       case OpKind::Goto: gotos.push_back(&op); break;
+      case OpKind::CallSection: gotos.push_back(&op); break;
+      case OpKind::ModalCall:
       case OpKind::Label:
       case OpKind::Call:
       case OpKind::Return: break;
@@ -128,14 +138,10 @@ void Codegen::validate(FnInfo &fi) {
   if (!walk(walk, fi.fn->body, 0)) return;
   scanTargets(fi.fn->body);
   for (const Op *go : gotos) {
-    const Expr *n = go->get("n"), *l = go->get("label");
-    if (!(n && n->kind == ExprKind::Number) && !l) {
-      errs.push_back({go->loc, "goto target must be a constant sequence number or a label"});
-      return;
-    }
+    if (go->kind == OpKind::Goto && !constantJump(*go)) continue;  // resolved when it runs
     if (!resolveTarget(*go)) {
-      errs.push_back({go->loc, n ? fmt::format("jump to missing sequence number N{}", (int64_t)n->num)
-                                 : fmt::format("jump to missing label '{}'", l->str)});
+      const Expr *l = go->get(go->kind == OpKind::CallSection ? "from" : "label");
+      errs.push_back({go->loc, ir::missingJumpMessage(l, l ? NAN : go->get("n")->num, l ? l->str : "")});
       return;
     }
   }
@@ -149,6 +155,11 @@ BasicBlock *Codegen::targetBlock(const Op *op) {
 
 void Codegen::emitRegion(const ir::Region &r) {
   for (auto &op : r) {
+    if (auto *calls = sectionEnds_.endingBefore(op)) {  // before the op: a jump to it skips this
+      flushRun();
+      ensureOpen();
+      emitSectionEnd(*calls);
+    }
     if (targetBBs_.count(&op)) {
       flushRun();
       startBlock(targetBlock(&op));
@@ -163,6 +174,58 @@ void Codegen::emitRegion(const ir::Region &r) {
     emitOp(op);
   }
   flushRun();
+  if (auto *calls = sectionEnds_.endingAt(r)) {
+    ensureOpen();
+    emitSectionEnd(*calls);
+  }
+}
+
+// call_section (ir/Jumps.h): the activation's stack of active sections holds each one's call
+// (an index into sectionIds_) and repetitions left. count below 1 runs nothing.
+void Codegen::emitCallSection(const Op &op) {
+  const Expr *countE = op.get("count");
+  Value *n = countE ? roundOf(numOf(expr(*countE))) : ConstantFP::get(dblTy, 1.0);
+  BasicBlock *run = newBlock("section.call");
+  B.CreateCondBr(B.CreateFCmpOGE(n, ConstantFP::get(dblTy, 1.0)), run, sectionReturn(op));
+  B.SetInsertPoint(run);
+  Value *sp = B.CreateLoad(i32Ty, sectionSp_);
+  failIf(B.CreateICmpUGE(sp, B.getInt32(ir::kMaxSectionDepth)), op.loc, ir::sectionDepthMessage());
+  B.CreateStore(B.getInt32(sectionIds_.at(&op)), B.CreateGEP(i32Ty, sectionCalls_, sp));
+  B.CreateStore(n, B.CreateGEP(dblTy, sectionLeft_, sp));
+  B.CreateStore(B.CreateAdd(sp, B.getInt32(1)), sectionSp_);
+  B.CreateBr(targetBlock(resolveTarget(op)));
+  B.SetInsertPoint(sectionReturn(op));
+}
+
+// Where sections end: if the innermost active section is one of `calls`, count a repetition and
+// run it again from its label, or pop it and continue after its call.
+void Codegen::emitSectionEnd(const std::vector<const Op *> &calls) {
+  Value *sp = B.CreateLoad(i32Ty, sectionSp_);
+  BasicBlock *check = newBlock("section.check"), *cont = newBlock("section.cont");
+  B.CreateCondBr(B.CreateICmpSGT(sp, B.getInt32(0)), check, cont);
+  B.SetInsertPoint(check);
+  Value *top = B.CreateSub(sp, B.getInt32(1));
+  SwitchInst *sw = B.CreateSwitch(B.CreateLoad(i32Ty, B.CreateGEP(i32Ty, sectionCalls_, top)), cont);
+  for (const Op *call : calls) {
+    BasicBlock *bb = newBlock("section.end"), *done = newBlock("section.done");
+    sw->addCase(B.getInt32(sectionIds_.at(call)), bb);
+    B.SetInsertPoint(bb);
+    Value *leftPtr = B.CreateGEP(dblTy, sectionLeft_, top);
+    Value *left = B.CreateFSub(B.CreateLoad(dblTy, leftPtr), ConstantFP::get(dblTy, 1.0));
+    B.CreateStore(left, leftPtr);
+    emitTimeCheck(call->loc);
+    B.CreateCondBr(B.CreateFCmpOGT(left, ConstantFP::get(dblTy, 0.0)), targetBlock(resolveTarget(*call)), done);
+    B.SetInsertPoint(done);
+    B.CreateStore(top, sectionSp_);
+    B.CreateBr(sectionReturn(*call));
+  }
+  B.SetInsertPoint(cont);
+}
+
+BasicBlock *Codegen::sectionReturn(const Op &call) {
+  BasicBlock *&bb = sectionRet_[&call];
+  if (!bb) bb = newBlock("section.return");
+  return bb;
 }
 
 void Codegen::emitOp(const Op &op) {
@@ -194,7 +257,13 @@ void Codegen::emitOp(const Op &op) {
   case OpKind::Continue: B.CreateBr(loops_.back().cont); return;
   case OpKind::Goto: emitGoto(op); return;
   case OpKind::Call: emitCall(op); return;
-  case OpKind::Return: B.CreateRet(B.getInt32(NCRT_OK)); return;
+  case OpKind::CallSection: emitCallSection(op); return;
+  case OpKind::ModalCall: emitModalCall(op); return;
+  case OpKind::Return:
+    if (const Expr *v = op.get("value"))
+      B.CreateStore(expr(*v).v, B.CreateConstGEP1_32(dblTy, frameArg, cur_->frameSize - 1));
+    B.CreateRet(B.getInt32(NCRT_OK));
+    return;
   default: return;  // rejected by validate()
   }
 }
@@ -255,32 +324,72 @@ void Codegen::emitLoop(const Op &op) {
   B.SetInsertPoint(done);
 }
 
-void Codegen::emitGoto(const Op &go) {
-  const Op *target = resolveTarget(go);  // validate() guarantees one
-  if (order_[target] <= order_[&go]) {
-    Value *n = B.CreateAdd(B.CreateLoad(i64Ty, backJumps), B.getInt64(1));
-    B.CreateStore(n, backJumps);
-    faultIf(B.CreateICmpUGT(n, maxLoop), go.loc, NCRT_FAULT_BACKJUMP, "", nullptr);
-    emitTimeCheck(go.loc);
-  }
+// A jump to `target`: a backward one counts toward the loop limit (per activation).
+void Codegen::emitJumpTo(const Op &go, const Op *target) {
+  if (order_[target] <= order_[&go]) emitBackJump(go.loc);
   B.CreateBr(targetBlock(target));
 }
 
-// call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are
-// evaluated once in the caller; frame=new gives each repetition fresh #1..#33 holding the
-// numbered arguments (and the callee's named locals that are named arguments); otherwise
-// (shared, the default) the callee works on the caller's #1..#33. Named locals are per call.
-// A computed callee (a string expression, or a number meaning O<n>) is looked up at run time
-// by ncrt_callee and dispatched by a switch over the module's functions.
-void Codegen::emitCall(const Op &op) {
+void Codegen::emitBackJump(SourceLoc loc) {
+  Value *n = B.CreateAdd(B.CreateLoad(i64Ty, backJumps), B.getInt64(1));
+  B.CreateStore(n, backJumps);
+  faultIf(B.CreateICmpUGT(n, maxLoop), loc, NCRT_FAULT_BACKJUMP, "", nullptr);
+  emitTimeCheck(loc);
+}
+
+// A computed goto: ncrt_jump searches the function's target table (ir/Jumps.h, as the eval
+// engine does) and returns the entry's index, which a switch turns into its block.
+void Codegen::emitGoto(const Op &go) {
+  if (constantJump(go)) {
+    emitJumpTo(go, resolveTarget(go));  // validate() guarantees one
+    return;
+  }
+  if (!jumpTable_) {
+    auto *entryTy = StructType::get(C, {dblTy, ptrTy, i32Ty});
+    std::vector<Constant *> rows;
+    for (auto &e : jumps_)
+      rows.push_back(ConstantStruct::get(entryTy, {ConstantFP::get(dblTy, e.n),
+                                                   e.label ? cstring(e.label) : ConstantPointerNull::get(ptrTy),
+                                                   B.getInt32(e.pos)}));
+    auto *arrTy = ArrayType::get(entryTy, rows.size());
+    jumpTable_ = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage, ConstantArray::get(arrTy, rows),
+                                    "nc.jumps");
+  }
+  const Expr *l = go.get("label");
+  Value *n = ConstantFP::get(dblTy, NAN);
+  if (l) appendString(*l, false);
+  else n = numOf(expr(*go.get("n")));
+  auto loc = locArgs(go.loc);
+  Value *index = B.CreateCall(fJump, {ctxArg, B.getInt32(l != nullptr), n, jumpTable_, B.getInt64(jumps_.size()),
+                                      B.getInt32(order_.at(&go)), B.getInt32((uint32_t)ir::jumpDir(go)), loc[0], loc[1],
+                                      loc[2]});
+  // One backward check for the target found (its pos at or before the goto's), then a switch
+  // that branches straight to the target blocks: a computed goto stays small in a long program.
+  BasicBlock *found = newBlock("jump.found"), *back = newBlock("jump.back"), *go2 = newBlock("jump.go");
+  B.CreateCondBr(B.CreateICmpSLT(index, B.getInt64(0)), failBB, found);
+  B.SetInsertPoint(found);
+  Value *pos = B.CreateLoad(i32Ty, B.CreateInBoundsGEP(jumpTable_->getValueType(), jumpTable_,
+                                                         {B.getInt64(0), index, B.getInt32(2)}));
+  B.CreateCondBr(B.CreateICmpULE(pos, B.getInt32(order_.at(&go))), back, go2);
+  B.SetInsertPoint(back);
+  emitBackJump(go.loc);
+  B.CreateBr(go2);
+  B.SetInsertPoint(go2);
+  SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)jumpOps_.size());
+  for (size_t i = 0; i < jumpOps_.size(); ++i) sw->addCase(B.getInt64(i), targetBlock(jumpOps_[i]));
+}
+
+// The callee of a call or modal_call: a constant one as `fixed`, else `index` (into the
+// module's functions) looked up at run time by ncrt_callee (an unknown one fails there).
+bool Codegen::calleeOf(const Op &op, FnInfo *&fixed, Value *&index) {
   const Expr *callee = op.get("callee");
-  FnInfo *fixed = nullptr;
-  Value *index = nullptr;
+  fixed = nullptr;
+  index = nullptr;
   if (callee && callee->kind == ExprKind::String) {
     const ir::Function *target = src_.find(callee->str);
     if (!target) {
       fail(op.loc, unknownProgramMessage(callee->str));
-      return;
+      return false;
     }
     fixed = &functions_.at(target->name);
   } else if (callee) {
@@ -301,8 +410,157 @@ void Codegen::emitCall(const Op &op) {
     B.SetInsertPoint(found);
   } else {
     fail(op.loc, unknownProgramMessage("?"));
+    return false;
+  }
+  return true;
+}
+
+// `body` llround(count) times (null count: once); NaN and counts below 1 run none. Each
+// repetition checks the run-time limit (count=1e308 must not outlive --max-seconds).
+void Codegen::emitRepeated(Value *count, SourceLoc loc, const std::function<void()> &body) {
+  if (!count) {
+    body();
     return;
   }
+  Value *r = roundOf(count);
+  Value *c = B.CreateSelect(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 1.0)), r, ConstantFP::get(dblTy, 0.0));
+  c = B.CreateSelect(B.CreateFCmpOGT(c, ConstantFP::get(dblTy, 0x1p62)), ConstantFP::get(dblTy, 0x1p62), c);
+  Value *limit = B.CreateFPToSI(c, i64Ty);
+  Value *counter = allocaEntry(i64Ty, "repeat.count");
+  B.CreateStore(B.getInt64(0), counter);
+  BasicBlock *head = newBlock("repeat.head"), *done = newBlock("repeat.end"), *bodyBB = newBlock("repeat.body");
+  startBlock(head);
+  Value *i = B.CreateLoad(i64Ty, counter);
+  B.CreateCondBr(B.CreateICmpSLT(i, limit), bodyBB, done);
+  B.SetInsertPoint(bodyBB);
+  B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
+  emitTimeCheck(loc);
+  body();
+  B.CreateBr(head);
+  B.SetInsertPoint(done);
+}
+
+// A switch on a function index (into the module's functions) with `body` emitted for each of
+// `fns`; other indices fail. Continues after the switch.
+void Codegen::switchOnFunction(Value *index, const std::vector<FnInfo *> &fns, const std::function<void(FnInfo &)> &body) {
+  BasicBlock *joined = newBlock("fn.joined");
+  SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)fns.size());
+  for (FnInfo *fi : fns) {
+    BasicBlock *bb = newBlock("fn.case");
+    sw->addCase(B.getInt64(functionIndex(*fi)), bb);
+    B.SetInsertPoint(bb);
+    body(*fi);
+    B.CreateBr(joined);
+  }
+  B.SetInsertPoint(joined);
+}
+
+std::vector<FnInfo *> Codegen::allFunctions() {
+  std::vector<FnInfo *> out;
+  for (auto &fn : src_.functions) out.push_back(&functions_.at(fn.name));
+  return out;
+}
+
+// modal_call (docs/IR.md §5.5): the callee's index and every argument slot of the module's
+// modal calls go to module globals (a slot this op does not set: vacant for #n, unset for a
+// named parameter, so its default applies). Named arguments convert for the callee now.
+void Codegen::emitModalCall(const Op &op) {
+  if (!op.get("callee")) {
+    B.CreateStore(B.getInt64(-1), modalFn_);
+    return;
+  }
+  FnInfo *fixed = nullptr;
+  Value *index = nullptr;
+  if (!calleeOf(op, fixed, index)) return;
+  const Expr *countE = op.get("count");  // calls per move (Fanuc G66 L)
+  B.CreateStore(countE ? numOf(expr(*countE)) : ConstantFP::get(dblTy, 1.0), modalCount_);
+  std::vector<std::pair<std::string, Val>> args;
+  for (auto &a : op.args)
+    if (a.key.rfind("a.", 0) == 0 && a.value) {
+      std::string k = a.key.substr(2);
+      Val v = expr(*a.value);
+      if (numberedKey(k)) checkNotString(v, op.loc, stringInParameterMessage());
+      else if (fixed) v = {convertArg(*fixed, k, v, op.loc), false};
+      args.push_back({k, v});
+    }
+  auto store = [&](FnInfo *fi) {  // every slot, converted for `fi` when the callee is computed
+    Constant *vac = ConstantFP::get(dblTy, vacantValue());
+    Constant *unset = ConstantExpr::getBitCast(ConstantInt::get(i64Ty, NCRT_UNSET_BITS), dblTy);
+    for (auto &[k, slot] : modalKeys_) {
+      Value *v = numberedKey(k) ? vac : unset;
+      for (auto &[ak, av] : args)
+        if (ak == k) v = fi && !numberedKey(k) ? convertArg(*fi, k, {av.v, true, true, op.loc}, op.loc) : av.v;
+      B.CreateStore(v, B.CreateConstGEP2_64(modalArgs_->getValueType(), modalArgs_, 0, slot));
+    }
+  };
+  if (fixed) {
+    store(nullptr);
+    B.CreateStore(B.getInt64(functionIndex(*fixed)), modalFn_);
+    return;
+  }
+  switchOnFunction(index, allFunctions(), [&](FnInfo &fi) { store(&fi); });
+  B.CreateStore(index, modalFn_);
+}
+
+// After a move: the modal callee, if one is set and none is running, in a new frame with the
+// stored arguments (as the eval engine's runModal).
+// After a move: the modal callee, if one is set and none is running, in a new frame with the
+// stored arguments (as the eval engine's runModal). One function per module, which the runtime
+// calls after each move command (ncrt_set_modal_hook), so moves stay in constant runs:
+// i32 @nc.modal.run(ctx, storage, file, line, col), the move's location as arguments (locArgs
+// reads them while this is emitted).
+void Codegen::emitModalRun() {
+  modalRun_ = Function::Create(FunctionType::get(i32Ty, {ptrTy, ptrTy, i32Ty, i32Ty, i32Ty}, false),
+                               GlobalValue::InternalLinkage, "nc.modal.run", M.get());
+  F = modalRun_;
+  ctxArg = F->getArg(0);
+  stArg = F->getArg(1);
+  frameArg = nullptr;  // the modal callee always gets a new frame
+  dynLoc_ = {F->getArg(2), F->getArg(3), F->getArg(4)};
+  entryBB = newBlock("entry");
+  B.SetInsertPoint(entryBB);
+  depthPtr = B.CreateStructGEP(storageTy, stArg, 6);
+  pollPtr = B.CreateStructGEP(storageTy, stArg, 7);
+  startBody();
+  SourceLoc loc;  // unused: dynLoc_
+  BasicBlock *run = newBlock("modal.run"), *none = newBlock("modal.none");
+  B.CreateCondBr(B.CreateAnd(B.CreateICmpSGE(B.CreateLoad(i64Ty, modalFn_), B.getInt64(0)),
+                             B.CreateICmpEQ(B.CreateLoad(i32Ty, modalIn_), B.getInt32(0))),
+                 run, none);
+  B.SetInsertPoint(none);
+  B.CreateRet(B.getInt32(NCRT_OK));
+  B.SetInsertPoint(run);
+  Value *depth = B.CreateLoad(i32Ty, depthPtr);
+  Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
+  faultIf(B.CreateICmpUGE(depth, maxDepth), loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
+  B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
+  B.CreateStore(B.getInt32(1), modalIn_);
+  Value *fn = B.CreateLoad(i64Ty, modalFn_);
+  emitRepeated(B.CreateLoad(dblTy, modalCount_), loc, [&] {
+    switchOnFunction(fn, modalCallees_, [&](FnInfo &fi) {
+      std::vector<std::pair<std::string, Value *>> args;
+      for (auto &[k, slot] : modalKeys_)
+        args.push_back({k, B.CreateLoad(dblTy, B.CreateConstGEP2_64(modalArgs_->getValueType(), modalArgs_, 0, slot))});
+      emitInvoke(fi, args, true, loc);
+    });
+  });
+  B.CreateStore(B.getInt32(0), modalIn_);
+  B.CreateStore(depth, depthPtr);
+  B.CreateRet(B.getInt32(NCRT_OK));
+  if (pred_empty(exitBB)) exitBB->eraseFromParent();
+  dynLoc_.clear();
+}
+
+// call callee=<name> count=<n>? frame=new|shared a.<key>=<expr>...: count and arguments are
+// evaluated once in the caller; frame=new gives each repetition fresh #1..#33 holding the
+// numbered arguments (and the callee's named locals that are named arguments); otherwise
+// (shared, the default) the callee works on the caller's #1..#33. Named locals are per call.
+// A computed callee (a string expression, or a number meaning O<n>) is looked up at run time
+// by ncrt_callee and dispatched by a switch over the module's functions.
+void Codegen::emitCall(const Op &op) {
+  FnInfo *fixed = nullptr;
+  Value *index = nullptr;
+  if (!calleeOf(op, fixed, index)) return;
   const Expr *countE = op.get("count");
   Value *count = countE ? numOf(expr(*countE)) : nullptr;
   const Expr *frameE = op.get("frame");
@@ -314,6 +572,11 @@ void Codegen::emitCall(const Op &op) {
   for (auto &a : op.args)
     if (a.key.rfind("a.", 0) == 0 && a.value) {
       std::string k = a.key.substr(2);
+      if (const ir::Param *p = fixed ? fixed->fn->param(k) : nullptr; p && p->byRef) {
+        // A VAR parameter gets the address of the caller's variable (in the frame slot's bits).
+        args.push_back({k, B.CreateBitCast(B.CreatePtrToInt(varPtr(*a.value, true), i64Ty), dblTy)});
+        continue;
+      }
       Val v = expr(*a.value);
       if (!k.empty() && k[0] >= '0' && k[0] <= '9') checkNotString(v, op.loc, stringInParameterMessage());
       else if (fixed)  // a typed parameter converts its argument (ir/Strings.h convertForStore)
@@ -321,49 +584,34 @@ void Codegen::emitCall(const Op &op) {
       args.push_back({k, v.v});
     }
   B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
-
-  Value *counter = nullptr, *limit = nullptr;
-  BasicBlock *head = nullptr, *done = nullptr;
-  if (count) {  // repetitions: llround(count); NaN and counts below 1 run none
-    Value *r = roundOf(count);
-    Value *c = B.CreateSelect(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 1.0)), r, ConstantFP::get(dblTy, 0.0));
-    c = B.CreateSelect(B.CreateFCmpOGT(c, ConstantFP::get(dblTy, 0x1p62)), ConstantFP::get(dblTy, 0x1p62), c);
-    limit = B.CreateFPToSI(c, i64Ty);
-    counter = allocaEntry(i64Ty, "call.count");
-    B.CreateStore(B.getInt64(0), counter);
-    head = newBlock("call.head");
-    done = newBlock("call.end");
-    BasicBlock *body = newBlock("call.body");
-    startBlock(head);
-    Value *i = B.CreateLoad(i64Ty, counter);
-    B.CreateCondBr(B.CreateICmpSLT(i, limit), body, done);
-    B.SetInsertPoint(body);
-    B.CreateStore(B.CreateAdd(i, B.getInt64(1)), counter);
-    emitTimeCheck(op.loc);  // count=1e308 must not outlive --max-seconds
+  const Expr *result = op.get("result");
+  Value *ret = nullptr;  // the last repetition's return value
+  if (result) {
+    ret = allocaEntry(dblTy, "call.ret");
+    B.CreateStore(ConstantExpr::getBitCast(ConstantInt::get(i64Ty, NCRT_UNSET_BITS), dblTy), ret);
   }
-  if (fixed) {
-    emitInvoke(*fixed, args, newFrame);
-  } else {
-    BasicBlock *joined = newBlock("call.joined");
-    SwitchInst *sw = B.CreateSwitch(index, failBB, (unsigned)src_.functions.size());
-    for (size_t i = 0; i < src_.functions.size(); ++i) {
-      BasicBlock *bb = newBlock("call.case");
-      sw->addCase(B.getInt64(i), bb);
-      B.SetInsertPoint(bb);
-      FnInfo &fi = functions_.at(src_.functions[i].name);
+
+  emitRepeated(count, op.loc, [&] {
+    if (fixed) {
+      Value *r = emitInvoke(*fixed, args, newFrame, op.loc);
+      if (ret) B.CreateStore(r, ret);
+      return;
+    }
+    switchOnFunction(index, allFunctions(), [&](FnInfo &fi) {
       auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
       for (auto &[k, v] : converted)
-        if (k.empty() || k[0] < '0' || k[0] > '9') v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
-      emitInvoke(fi, converted, newFrame);
-      B.CreateBr(joined);
-    }
-    B.SetInsertPoint(joined);
-  }
-  if (count) {
-    B.CreateBr(head);
-    B.SetInsertPoint(done);
-  }
+        if (!numberedKey(k)) v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
+      Value *r = emitInvoke(fi, converted, newFrame, op.loc);
+      if (ret) B.CreateStore(r, ret);
+    });
+  });
   B.CreateStore(depth, depthPtr);
+  if (result) {
+    Value *r = B.CreateLoad(dblTy, ret);
+    failIf(B.CreateICmpEQ(B.CreateBitCast(r, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS)), op.loc,
+           noReturnValueMessage());
+    storeVar(*result, {r, true, true, op.loc});
+  }
 }
 
 // An argument for the named parameter `key` of `fi`, converted when the parameter is typed.
@@ -378,7 +626,9 @@ Value *Codegen::convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc 
 }
 
 // One activation of `fi` with the caller's evaluated arguments.
-void Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame) {
+Value *Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame,
+                           SourceLoc loc) {
+  if (fi.fn->save) checkStatus(B.CreateCall(fSaveModal, {ctxArg}));  // SAVE (docs/IR.md §5.4)
   Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
   const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);
   if (newFrame) {
@@ -400,6 +650,11 @@ void Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Va
   Value *st = B.CreateCall(fi.F, {ctxArg, stArg, frame});
   checkStatus(st);
   if (!newFrame) B.CreateMemCpy(frameArg, MaybeAlign(8), frame, MaybeAlign(8), localsBytes);
+  if (fi.fn->save) {
+    auto l = locArgs(loc);
+    checkStatus(B.CreateCall(fRestoreModal, {ctxArg, l[0], l[1], l[2]}));
+  }
+  return B.CreateLoad(dblTy, B.CreateConstGEP1_32(dblTy, frame, fi.frameSize - 1));
 }
 
 }  // namespace ncc::jit

@@ -197,7 +197,12 @@ Value *Codegen::varPtr(const Expr &var, bool write) {
     Value *base = B.CreateConstGEP1_64(dblTy, qBase, (uint64_t)q * NCRT_QPARAMS);
     return paramPtr(var, base, NCRT_QPARAMS, NCRT_FAULT_QPARAM);
   }
-  case VarSpace::Local: return B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + cur_->locals.at(var.str));
+  case VarSpace::Local: {
+    Value *slot = B.CreateConstGEP1_64(dblTy, frameArg, kFrameLocals + 1 + cur_->locals.at(var.str));
+    if (const ir::Param *p = cur_->fn->param(var.str); p && p->byRef)  // the slot holds the address
+      return B.CreateIntToPtr(B.CreateLoad(i64Ty, slot), ptrTy);
+    return slot;
+  }
   case VarSpace::Global: return B.CreateConstGEP1_64(dblTy, namedBase, globalNames_.at(var.str));
   case VarSpace::System: break;
   }

@@ -7,12 +7,14 @@
 #pragma once
 #include "ir/Value.h"
 #include "ir/Decls.h"
+#include "ir/Jumps.h"
 #include "ir/NCIR.h"
 #include "passes/CmdTemplate.h"
 
 #include <llvm/IR/IRBuilder.h>
 #include <llvm/IR/Module.h>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -50,7 +52,7 @@ struct FnInfo {
   std::map<std::string, unsigned> locals;  // named locals: frame slot 34 + index
   std::map<std::string, ArraySlots> arrays;  // named local arrays in the activation's array block
   uint64_t arraySlots = 0;                   // doubles in that block
-  unsigned frameSize = 34;                 // #0..#33 then the named locals
+  unsigned frameSize = 35;                 // #0..#33, the named locals, the return value (unset: none)
   std::vector<std::pair<SourceLoc, std::string>> compileErrors;
 };
 
@@ -66,6 +68,8 @@ private:
   void scanExprNames(FnInfo &fi, const ir::Expr &e);
   void emitFunction(FnInfo &fi);
   void emitEntry();
+  void emitParamDefaults(FnInfo &fi);
+  void startSections(FnInfo &fi);
   void initFrame(llvm::Value *frame, unsigned size, unsigned from);
   // ------------------------------------------------ control flow (CodegenCtl.cpp)
   void validate(FnInfo &fi);
@@ -77,8 +81,26 @@ private:
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
   llvm::Value *convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc);
-  void emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame);
+  // Returns the callee's return value (unset bits when it returned none).
+  llvm::Value *emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame,
+                          SourceLoc loc);
   const ir::Op *resolveTarget(const ir::Op &go);
+  static bool constantJump(const ir::Op &go);
+  void emitJumpTo(const ir::Op &go, const ir::Op *target);
+  void emitBackJump(SourceLoc loc);  // counts a backward jump toward the loop limit
+  void emitCallSection(const ir::Op &op);
+  void scanModalCalls();
+  void emitModalCall(const ir::Op &op);
+  void emitModalRun();
+  void startBody();
+  bool calleeOf(const ir::Op &op, FnInfo *&fixed, llvm::Value *&index);
+  void emitRepeated(llvm::Value *count, SourceLoc loc, const std::function<void()> &body);
+  void switchOnFunction(llvm::Value *index, const std::vector<FnInfo *> &fns, const std::function<void(FnInfo &)> &body);
+  std::vector<FnInfo *> allFunctions();
+  unsigned functionIndex(const FnInfo &fi) const { return (unsigned)(fi.fn - src_.functions.data()); }
+  static bool numberedKey(const std::string &k) { return !k.empty() && k[0] >= '0' && k[0] <= '9'; }
+  void emitSectionEnd(const std::vector<const ir::Op *> &calls);
+  llvm::BasicBlock *sectionReturn(const ir::Op &call);
   llvm::BasicBlock *targetBlock(const ir::Op *op);
   void emitTimeCheck(SourceLoc loc);
   // ------------------------------------------------ helpers (Codegen.cpp)
@@ -144,10 +166,17 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar, fSysVarAt, fSysVarSet;
-  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex;
+  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
+  // modal_call: the callee set (index into the module's functions, -1 none), whether a modal
+  // callee runs, one argument slot per key any modal_call passes; the functions it may call.
+  llvm::GlobalVariable *modalFn_ = nullptr, *modalIn_ = nullptr, *modalArgs_ = nullptr, *modalCount_ = nullptr;
+  std::map<std::string, unsigned> modalKeys_;
+  llvm::Function *modalRun_ = nullptr;  // nc.modal.run
+  std::vector<llvm::Value *> dynLoc_;   // while emitting nc.modal.run: its location arguments
+  std::vector<FnInfo *> modalCallees_;
   llvm::GlobalVariable *calleeNames = nullptr;  // names of the module's functions, for ncrt_callee
   std::map<std::string, unsigned> globalNames_;   // module-wide slots
   std::map<std::string, ArraySlots> globalArrays_;  // global arrays, stored after the scalars
@@ -172,8 +201,15 @@ private:
   // Jump targets: every op in pre-order (the eval engine's instruction order), block numbers
   // and labels (the last definition of a label wins, as in the eval engine).
   std::unordered_map<const ir::Op *, unsigned> order_;
-  std::vector<std::pair<int64_t, const ir::Op *>> blocks_;
-  std::map<std::string, const ir::Op *> labels_;
+  std::vector<ir::JumpEntry> jumps_;      // block numbers and labels in pre-order (ir/Jumps.h)
+  std::vector<const ir::Op *> jumpOps_;   // the op of each entry
+  llvm::GlobalVariable *jumpTable_ = nullptr;  // jumps_ as a constant, once a computed goto needs it
+  // call_section: where sections end, an id per call, the block after each call, and the
+  // activation's section stack (depth, call ids, repetitions left).
+  ir::SectionEnds sectionEnds_;
+  std::unordered_map<const ir::Op *, unsigned> sectionIds_;
+  std::unordered_map<const ir::Op *, llvm::BasicBlock *> sectionRet_;
+  llvm::Value *sectionSp_ = nullptr, *sectionCalls_ = nullptr, *sectionLeft_ = nullptr;
   std::unordered_map<const ir::Op *, llvm::BasicBlock *> targetBBs_;
   std::vector<MachineCmd> run_;  // pending constant commands (text points into the IR)
   std::string packed_;           // or, for a long run, the packed encoding so far

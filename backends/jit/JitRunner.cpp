@@ -114,6 +114,10 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_str_num_fixed", &ncrt_str_num_fixed);
   add("ncrt_str", &ncrt_str);
   add("ncrt_callee", &ncrt_callee);
+  add("ncrt_jump", &ncrt_jump);
+  add("ncrt_save_modal", &ncrt_save_modal);
+  add("ncrt_set_modal_hook", &ncrt_set_modal_hook);
+  add("ncrt_restore_modal", &ncrt_restore_modal);
   add("ncrt_str_const", &ncrt_str_const);
   add("ncrt_str_intern", &ncrt_str_intern);
   add("ncrt_strfn", &ncrt_strfn);

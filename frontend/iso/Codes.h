@@ -18,9 +18,10 @@ enum class GKind : uint8_t {
   ToolLength,    // G43 (arg 1) / G49 (arg 0)
   WorkOffset,    // G54..G59.3 (arg: index)
   MacroCall,     // G65
+  ModalMacro,    // G66 (arg 0: set a modal macro call, after each move) / G67 (arg 1: cancel)
   SubCall,       // G05 P<program> L<count>: subprogram call (808D); G05 without P, P0, P01 ignored
   Frame,         // G52 (local shift), G68/G69 (rotation), G51/G50 (scaling), G51.1/G50.1 (mirror); arg 1 on, 0 off
-  NoOp,          // cancels a function ncc does not model and is always off (G15, G67, G97, G291)
+  NoOp,          // cancels a function ncc does not model and is always off (G15, G97, G291)
   Unsupported,   // known code that is not lowered yet: error with the description
 };
 

@@ -40,7 +40,7 @@ static Scale scaleOf(char letter) {
 static const char *rs274Meaning(int32_t code10) {
   switch (code10) {
   case 760: return "RS274NGC threading cycle";
-  case 500: case 510: case 511: case 680: return "not an RS274NGC code";
+  case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
   default: return nullptr;
   }
 }
@@ -157,7 +157,7 @@ struct BlockLowerer::Block {
   GUse gs[(size_t)GGroup::Count];
   MUse ms[8];
   int nm = 0;
-  bool macroCall = false;  // G65: every other address is an argument (M too)
+  bool macroCall = false;  // G65, G66: every other address is an argument (M too)
   bool axesTaken = false;  // a non-modal code took the axis words
   bool dwellTookAxis = false;  // Fanuc G4 X<seconds>
   ModeValue motionBefore = ModeValue::Rapid;  // the motion mode a G5/G5.1 block gives back
@@ -241,6 +241,18 @@ struct BlockLowerer::Block {
     return op;
   }
 
+  Op &modalCallOp(SourceLoc loc, long long prog, ExprPtr count) {
+    std::string callee = fmt::format("O{}", prog);
+    L.calls.push_back({callee, loc});
+    Op &op = emit(OpKind::ModalCall, loc);
+    op.set("callee", Expr::string(callee, loc));
+    op.set("count", std::move(count));
+    return op;
+  }
+  const char *macroName() const { return b.words.end() != std::find_if(b.words.begin(), b.words.end(), [](auto &w) {
+                                           return w.letter == 'G' && !w.expr && w.value == 66;
+                                         }) ? "G66" : "G65"; }
+
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level
   bool cornerTaken = false;  // a ,C / ,R went to the move
@@ -255,9 +267,9 @@ struct BlockLowerer::Block {
 // G and M codes through the tables; group conflicts, duplicate words.
 bool BlockLowerer::Block::classify() {
   bool ok = true;
-  macroCall = false;  // G65: every other address is an argument (M too)
+  macroCall = false;  // G65, G66: every other address is an argument (M too)
   for (auto &w : b.words)
-    if (w.letter == 'G' && !w.expr && w.value == 65) macroCall = true;
+    if (w.letter == 'G' && !w.expr && (w.value == 65 || w.value == 66)) macroCall = true;
 
   for (auto &w : b.words) {
     if (w.letter == 'G') {
@@ -388,10 +400,11 @@ bool BlockLowerer::Block::setup() {
     return false;
   }
   if (macroCall) {
-    // G65 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
+    // G65/G66 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
-      if (gs[g].info && gs[g].info->kind != GKind::MacroCall) {
-        L.diags_.error(gs[g].word->loc, "G65 must not share its block with other G codes", "syntax");
+      if (gs[g].info && gs[g].info->kind != GKind::MacroCall && gs[g].info->kind != GKind::ModalMacro) {
+        L.diags_.error(gs[g].word->loc, fmt::format("{} must not share its block with other G codes", macroName()),
+                       "syntax");
         return false;
       }
   }
@@ -844,16 +857,18 @@ bool BlockLowerer::Block::callsAndReturn() {
       bw.used |= (1u << ('P' - 'A')) | (1u << ('L' - 'A'));
     }
   }
+  if (auto *g67 = G(GGroup::MacroModal); g67 && g67->arg == 1) emit(OpKind::ModalCall, gloc(GGroup::MacroModal));
   if (macroCall) {
-    SourceLoc loc = gloc(GGroup::NonModal);
+    bool modal = !G(GGroup::NonModal);  // G66: a modal_call, after each following move (docs/IR.md §5.5)
+    SourceLoc loc = gloc(modal ? GGroup::MacroModal : GGroup::NonModal);
     if (!L.allowCalls) {
-      L.diags_.error(loc, "G65 needs the whole program (not streamable)", "not-streamable");
+      L.diags_.error(loc, fmt::format("{} needs the whole program (not streamable)", macroName()), "not-streamable");
       return false;
     }
     long long prog;
-    if (!programNumber(loc, "G65", prog)) return false;
+    if (!programNumber(loc, macroName(), prog)) return false;
     ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);
-    Op &op = callOp(loc, prog, std::move(count), "new");
+    Op &op = modal ? modalCallOp(loc, prog, std::move(count)) : callOp(loc, prog, std::move(count), "new");
     // Argument specification II when I, J or K repeats: up to 10 sets I J K -> #4+3s, #5+3s,
     // #6+3s; a set ends when an address repeats or comes out of I-J-K order.
     int ijkCount[3] = {0, 0, 0};

@@ -33,6 +33,11 @@ public:
   bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) override {
     return exec_.writeSystem(v, value, loc, err);
   }
+  bool saveModal() override { return exec_.saveModal(); }
+  bool restoreModal(SourceLoc loc) override {
+    exec_.restoreModal(loc);
+    return true;
+  }
 
 private:
   Executor &exec_;
