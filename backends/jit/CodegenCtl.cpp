@@ -2,6 +2,7 @@
 // eval engine's semantics: loop limits counted at the back edge, backward jumps counted per
 // function activation, calls sharing or renewing the #1..#33 frame.
 #include "backends/jit/CodegenImpl.h"
+#include "backends/jit/Jit.h"
 
 #include "ir/Jumps.h"
 #include "ir/Strings.h"
@@ -61,6 +62,27 @@ void Codegen::scanTargets(const ir::Region &body) {
       targetBBs_[t] = nullptr;
   if (computed)
     for (const Op *t : jumpOps_) targetBBs_[t] = nullptr;
+}
+
+bool compilesQuickly(const ir::Module &m, std::string &why) {
+  for (const ir::Function &f : m.functions) {
+    size_t targets = 0;
+    bool computed = false;
+    auto walk = [&](auto &self, const ir::Region &r) -> void {
+      for (auto &op : r) {
+        targets += (op.kind == OpKind::Block && op.get("n")) || op.kind == OpKind::Label;
+        computed |= op.kind == OpKind::Goto && !Codegen::constantJump(op);
+        for (auto &sub : op.regions) self(self, sub);
+      }
+    };
+    walk(walk, f.body);
+    if (computed && targets > kMaxComputedGotoTargets) {
+      why = fmt::format("'{}' has a computed goto over {} numbered blocks and labels (more than {})", f.name, targets,
+                        kMaxComputedGotoTargets);
+      return false;
+    }
+  }
+  return true;
 }
 
 bool Codegen::constantJump(const Op &go) {

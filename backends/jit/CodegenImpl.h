@@ -60,6 +60,8 @@ class Codegen {
 public:
   Codegen(const ir::Module &src, llvm::LLVMContext &ctx, Diagnostics &diags);
   std::unique_ptr<llvm::Module> run();
+  static bool constantJump(const ir::Op &go);
+  // A goto whose target is a constant (resolved when compiled); else computed when it runs.
 
 private:
   // ------------------------------------------------ module level (Codegen.cpp)
@@ -85,7 +87,6 @@ private:
   llvm::Value *emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, llvm::Value *>> &args, bool newFrame,
                           SourceLoc loc);
   const ir::Op *resolveTarget(const ir::Op &go);
-  static bool constantJump(const ir::Op &go);
   void emitJumpTo(const ir::Op &go, const ir::Op *target);
   void emitBackJump(SourceLoc loc);  // counts a backward jump toward the loop limit
   void emitCallSection(const ir::Op &op);

@@ -27,6 +27,13 @@ bool runModule(const ir::Module &m, Executor &exec, Diagnostics &diags, const Ji
 // The same with any command sink (tests record the command stream).
 bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const JitOptions &opts);
 
+// A computed goto may reach every numbered block and label of its function, and LLVM's code
+// generator takes minutes over such a switch (1000 blocks: over 2 min even at -O0's 11 s). Above
+// this many targets the driver runs the program with the eval engine, which is equivalent.
+constexpr size_t kMaxComputedGotoTargets = 64;
+// False, with the function and its target count in `why`, when `m` has such a function.
+bool compilesQuickly(const ir::Module &m, std::string &why);
+
 // Loads an object file written by emitObject into the JIT and runs it (checks AOT output
 // without a system linker).
 bool runObjectFile(const std::string &path, CmdSink &sink, Diagnostics &diags, const JitOptions &opts);

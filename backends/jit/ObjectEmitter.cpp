@@ -3,6 +3,8 @@
 #include "backends/jit/Codegen.h"
 #include "backends/jit/Jit.h"
 
+#include <fmt/format.h>
+
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/LegacyPassManager.h>
 #include <llvm/IR/Module.h>
@@ -14,6 +16,10 @@ namespace ncc::jit {
 using namespace llvm;
 
 bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags) {
+  if (std::string why; !compilesQuickly(m, why)) {  // no engine to fall back to here
+    diags.error({}, fmt::format("cannot compile ahead of time: {}, which takes LLVM minutes", why), "unsupported-code");
+    return false;
+  }
   auto tm = hostTargetMachine(diags);
   if (!tm) return false;
   LLVMContext ctx;

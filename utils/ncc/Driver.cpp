@@ -121,7 +121,10 @@ bool Session::load(uint32_t file, ir::Module &out) {
 bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blocks) {
   Executor exec(machine, sink, diags);
   bool ok;
-  if (opts.engine == "jit") {
+  std::string why;
+  if (opts.engine == "jit" && !jit::compilesQuickly(m, why))
+    diags.note({}, fmt::format("running with the eval engine: {}, which the JIT compiles too slowly", why));
+  if (opts.engine == "jit" && why.empty()) {
     jit::JitOptions jo;
     jo.limits = opts.limits;
     ok = jit::runModule(m, exec, diags, jo);
