@@ -127,8 +127,12 @@ bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks) {
       continue;
     }
     if (!b.content) continue;
-    if (b.programNumber >= 0 && !s.content) {
+    if (b.programNumber >= 0 && !s.content) {  // names the program; its comments stay (Program.cpp)
       s.content = true;
+      if (!b.comments.empty()) {
+        out.push_back(s.lower.blockOp(b));
+        s.lower.lowerComments(b, out);
+      }
       continue;
     }
     if (b.programNumber >= 0 || b.stmt != StmtKind::None) {
