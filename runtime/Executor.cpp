@@ -1,5 +1,5 @@
 // Executor: command dispatch, modal state, offsets and program stops. Motion lives in
-// ExecutorMotion.cpp. The semantics follow LinuxCNC's rs274 at machine level (the oracle).
+// ExecutorMotion.cpp, tool data and system variables in ExecutorState.cpp. The semantics follow LinuxCNC's rs274 at machine level (the oracle).
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
 
@@ -129,23 +129,6 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
   return frameOut(t);
 }
 
-const ToolData *Executor::Impl::findTool(double n) const {
-  if (!(n >= 0 && n <= 1e9 && n == std::floor(n))) return nullptr;
-  auto it = toolEdits.find((int)n);
-  return it != toolEdits.end() ? &it->second.data : machine.findTool((int)n);
-}
-
-const ToolData *Executor::Impl::tool(double n, const char *word) {
-  const ToolData *t = findTool(n);
-  if (!t) {
-    if (n < 0 || n > 1e9 || n != std::floor(n))
-      error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
-    else
-      error("Requested tool " + std::to_string((long long)n) + " not found in the tool table", "unknown-tool");
-  }
-  return t;
-}
-
 bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
   for (int i = 0; i < kAxes && axesDescribed; ++i)
     if (c.has((Word)i) && !machine.axes[i].present)
@@ -238,55 +221,6 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   r.value = toolLength;
   r.ivalue = h;
   emit(r);
-  return true;
-}
-
-// The geometry and wear behind number n (a valid tool number): edited, the machine's edge, or
-// zero for a number the table lacks (free_tools).
-ToolEdge Executor::Impl::edgeOf(int n) const {
-  if (auto it = toolEdits.find(n); it != toolEdits.end()) return it->second.edge;
-  auto t = machine.toolTable.find(n);
-  if (t == machine.toolTable.end() || t->second.edges.empty()) return {};
-  auto e = t->second.edges.find(1);  // T/H/D numbers use edge 1, or the only edge (Machine.cpp)
-  return e != t->second.edges.end() ? e->second : t->second.edges.begin()->second;
-}
-
-bool Executor::Impl::execToolOffset(const MachineCmd &c) {
-  auto kind = (SetOffsetKind)c.sub;
-  if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
-  if (!tool(c.get(Word::P), "P")) return false;  // existing numbers only (808D: none can be created)
-  int n = (int)c.get(Word::P);
-  if (n == 0) return error("tool 0 (no tool) has no offsets", "unknown-tool");
-  ToolEdge e = edgeOf(n);
-  double r = c.get(Word::R) * scale();
-  switch (kind) {
-  case SetOffsetKind::ToolSet:  // LinuxCNC's table holds one length and radius: no wear
-    if (c.has(Word::Z)) e.length = c.get(Word::Z) * scale(), e.lengthWear = 0;
-    if (c.has(Word::R)) e.radius = r, e.radiusWear = 0;
-    break;
-  case SetOffsetKind::ToolTouch:
-  case SetOffsetKind::ToolTouchG593: {
-    if (!frameForbids(kind == SetOffsetKind::ToolTouch ? "G10 L10" : "G10 L11")) return false;
-    // rs274: the length that puts the tool tip at Z in the current system (L10) or in G59.3
-    // (L11, where G92 does not count), from the machine position.
-    double z0 = kind == SetOffsetKind::ToolTouch ? g5xActive[2] + g92[2] + pf.local[2] : g5x[8][2];
-    if (c.has(Word::Z)) e.length = st.position[2] - z0 - c.get(Word::Z) * scale(), e.lengthWear = 0;
-    if (c.has(Word::R)) e.radius = r, e.radiusWear = 0;
-    break;
-  }
-  default: {
-    // Fanuc adds the value in G91; the 808D manual does not say: only G90 is certain.
-    if (st.distance == ModeValue::Incremental)
-      return error("G10 L10-L13 in G91: whether R is added is not documented for this controller; program it in G90",
-                   "unsupported-code");
-    static constexpr double ToolEdge::*kField[] = {&ToolEdge::length, &ToolEdge::lengthWear, &ToolEdge::radius,
-                                                   &ToolEdge::radiusWear};  // ToolLength … ToolRadiusWear
-    e.*kField[(int)kind - (int)SetOffsetKind::ToolLength] = r;
-    break;
-  }
-  }
-  if (e.radius + e.radiusWear < 0) return error("tool radius (geometry + wear) would be negative", "bad-number");
-  toolEdits[n] = {e, ToolData{e.length + e.lengthWear, e.radius + e.radiusWear}};
   return true;
 }
 
@@ -779,144 +713,6 @@ bool Executor::restoreModal(SourceLoc loc) {
     c.set(Word::Q, s.naiveTolerance / unit);
   }
   return !c.nmodes || exec(c);
-}
-
-bool Executor::readSystem(SysVar v, double &out) const {
-  const Impl &x = *impl_;
-  const ModalState &st = x.st;
-  auto is = [&](bool b) { return b ? 1.0 : 0.0; };
-  // G code x 10 of a mode value, as LinuxCNC reports modes (_motion_mode 800 = G80).
-  auto code10 = [](ModeValue m) -> double {
-    static const struct { ModeValue m; int code; } kCodes[] = {
-        {ModeValue::Rapid, 0},         {ModeValue::Linear, 10},      {ModeValue::ArcCW, 20},
-        {ModeValue::ArcCCW, 30},       {ModeValue::CycleOff, 800},   {ModeValue::PeckChipBreak, 730},
-        {ModeValue::TapLeft, 740},     {ModeValue::BoreFine, 760},   {ModeValue::Drill, 810},
-        {ModeValue::DrillDwell, 820},  {ModeValue::Peck, 830},       {ModeValue::Tap, 840},
-        {ModeValue::BoreFeed, 850},    {ModeValue::BoreStop, 860},   {ModeValue::BoreBack, 870},
-        {ModeValue::BoreDwell, 890},   {ModeValue::XY, 170},         {ModeValue::ZX, 180},
-        {ModeValue::YZ, 190},          {ModeValue::Nurbs, 520}};
-    for (auto &c : kCodes)
-      if (c.m == m) return c.code;
-    return -1;
-  };
-  static const double kCoordSystems[] = {540, 550, 560, 570, 580, 590, 591, 592, 593};
-  SysVarInfo info = sysVarInfo(v);
-  double unit;
-  if (const double *p = x.storedOffset(info, unit)) {
-    out = *p / unit;
-    return true;
-  }
-  switch (info.family) {
-  case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
-  case SysFamily::ToolOffset: {  // rs274 #5401…: the table entry of the tool in the spindle (not G43's)
-    const ToolData *t = info.axis == 2 && st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
-    out = t ? t->length / x.paramUnit : 0;
-    return true;
-  }
-  default: break;
-  }
-  int axis = -1;
-  switch (v) {
-  case SysVar::VersionMajor: out = 2.9; return true;  // the LinuxCNC interpreter ncc follows
-  case SysVar::VersionMinor: out = 0; return true;
-  case SysVar::Line: out = x.blockLoc.line; return true;
-  case SysVar::MotionMode: out = code10(st.motion); return true;
-  case SysVar::Plane: out = code10(st.plane); return true;
-  case SysVar::CutterComp: out = 400 + 10 * st.cutterComp; return true;
-  case SysVar::Metric: out = is(st.units == ModeValue::MM); return true;
-  case SysVar::Imperial: out = is(st.units == ModeValue::Inch); return true;
-  case SysVar::Absolute: out = is(st.distance == ModeValue::Absolute); return true;
-  case SysVar::Incremental: out = is(st.distance == ModeValue::Incremental); return true;
-  case SysVar::InverseTime: out = is(st.feedMode == ModeValue::InverseTime); return true;
-  case SysVar::UnitsPerMinute: out = is(st.feedMode == ModeValue::PerMinute); return true;
-  case SysVar::UnitsPerRev: out = is(st.feedMode == ModeValue::PerRev); return true;
-  case SysVar::CoordSystem: out = kCoordSystems[st.workOffset - 1]; return true;
-  case SysVar::ToolOffset: out = is(st.toolLengthH != 0); return true;
-  case SysVar::RetractR: out = is(st.retract == ModeValue::RetractR); return true;
-  case SysVar::RetractOldZ: out = is(st.retract == ModeValue::RetractInitial); return true;
-  case SysVar::SpindleRpmMode: out = 1; return true;  // constant surface speed is not modelled
-  case SysVar::SpindleCssMode: out = 0; return true;
-  case SysVar::IjkAbsolute: out = is(st.arcDistance == ModeValue::ArcAbsolute); return true;
-  case SysVar::LatheDiameter: out = 0; return true;
-  case SysVar::LatheRadius: out = 1; return true;
-  case SysVar::SpindleOn: out = is(st.spindle != 0); return true;
-  case SysVar::SpindleCw: out = is(st.spindle == 1); return true;
-  case SysVar::Mist: out = is(st.mist); return true;
-  case SysVar::Flood: out = is(st.flood); return true;
-  case SysVar::SpeedOverride:
-  case SysVar::FeedOverride:
-  case SysVar::FeedHold: out = 1; return true;  // enabled, as in rs274's stand-alone set-up
-  case SysVar::AdaptiveFeed: out = 0; return true;
-  case SysVar::Feed: out = st.feed; return true;
-  case SysVar::Rpm: out = st.speed; return true;
-  case SysVar::PosX: axis = 0; break;
-  case SysVar::PosY: axis = 1; break;
-  case SysVar::PosZ: axis = 2; break;
-  case SysVar::PosA: axis = 3; break;
-  case SysVar::PosB: axis = 4; break;
-  case SysVar::PosC: axis = 5; break;
-  case SysVar::PosU:
-  case SysVar::PosV:
-  case SysVar::PosW: out = 0; return true;  // no U V W axes
-  case SysVar::CurrentTool:
-  case SysVar::CurrentPocket: out = st.toolInSpindle; return true;  // pocket = tool number here
-  case SysVar::SelectedTool:
-  case SysVar::SelectedPocket: out = st.toolSelected; return true;
-  case SysVar::RemapLevel:
-  case SysVar::Task: out = 0; return true;
-  case SysVar::G92On: out = is(x.g92On); return true;
-  case SysVar::CoordSystemNumber: out = st.workOffset; return true;
-  case SysVar::ToolDiameter: {
-    const ToolData *t = st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
-    out = t ? 2 * t->radius / x.paramUnit : 0;
-    return true;
-  }
-  case SysVar::ToolLengthH: out = st.toolLengthH; return true;
-  case SysVar::CutterD: out = x.cutterD; return true;
-  case SysVar::Count: return false;
-  }
-  // Positions: program coordinates (all offsets applied), in program units.
-  out = x.programPosition()[axis] / x.axisScale(axis);
-  return true;
-}
-
-// The stored value behind a writable family member, in mm (degrees for rotary axes and the
-// rotation), and the unit programs read and write it in. The G92 values are the stored ones
-// (rs274's #5211…: G92.2 zeroes the applied offsets only).
-double *Executor::Impl::storedOffset(const SysVarInfo &info, double &unit) const {
-  Impl &x = const_cast<Impl &>(*this);  // one lookup for readSystem and writeSystem
-  unit = info.axis < 3 ? paramUnit : 1.0;
-  switch (info.family) {
-  case SysFamily::WorkOffset: return info.axis == 6 ? &x.g5xRotation[info.system - 1] : &x.g5x[info.system - 1][info.axis];
-  case SysFamily::G92: return &x.g92Saved[info.axis];
-  case SysFamily::Home1: return &x.home[0][info.axis];
-  case SysFamily::Home2: return &x.home[1][info.axis];
-  default: return nullptr;
-  }
-}
-
-bool Executor::writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) {
-  Impl &x = *impl_;
-  SysVarInfo info = sysVarInfo(v);
-  double unit;
-  double *p = sysVarWritable(v) ? x.storedOffset(info, unit) : nullptr;
-  if (!p) {
-    err = fmt::format("system variable '${}' is read-only", sysVarName(v));
-    return false;
-  }
-  if (!std::isfinite(value) || std::fabs(value) > 1e9) {
-    err = fmt::format("system variable '${}': {} is not a valid offset", sysVarName(v), numberText(value));
-    return false;
-  }
-  *p = value * unit;
-  // G92 values wait for G92.3 and reference points for G28/G30, as in rs274; a work offset of
-  // the active system applies now only where the controller says so.
-  if (info.family == SysFamily::WorkOffset && info.system == x.st.workOffset && x.offsetWrite == OffsetWrite::Immediate) {
-    x.applyWorkOffset();
-    x.loc = loc;
-    x.noteFrame("offset write");
-  }
-  return true;
 }
 
 bool Executor::finish(bool ranToEnd) {

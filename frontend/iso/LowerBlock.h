@@ -1,0 +1,177 @@
+// Private to the ISO front end's lowering (Lower.cpp, LowerFrames.cpp): one block being lowered.
+#pragma once
+#include "frontend/iso/Lower.h"
+#include "ir/MachineCmd.h"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace ncc::iso {
+
+using ir::Expr;
+using ir::ExprPtr;
+using ir::Op;
+using ir::OpKind;
+using ir::Region;
+
+inline constexpr char kOffsetAxes[] = "XYZABC";
+
+enum class Scale : uint8_t { None, Linear, Rotary, Feed, DwellX };
+
+inline Scale scaleOf(char letter) {
+  switch (letter) {
+  case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W': case 'I': case 'J': case 'K': case 'Q': case 'R':
+    return Scale::Linear;
+  case 'A': case 'B': case 'C': return Scale::Rotary;
+  case 'F': return Scale::Feed;
+  default: return Scale::None;
+  }
+}
+
+// "G5.1", "G68": a code for messages.
+std::string gName(int32_t code10);
+
+// One block being lowered: its words by letter, the G and M codes found, the phases that emit
+// ops in execution order. Members of BlockLowerer (modal tracking, diagnostics) are reached via L.
+struct BlockLowerer::Block {
+  struct GUse {
+    const GCodeInfo *info = nullptr;
+    const IsoWord *word = nullptr;
+  };
+  struct MUse {
+    MCodeInfo info;
+    const IsoWord *word;
+  };
+  // Which words are present, which were consumed. Slots: A-Z, then RS274NGC's polar `@` `^`.
+  struct Words {
+    static int slot(char c) { return c == '@' ? 26 : c == '^' ? 27 : c - 'A'; }
+    static char letter(int slot) { return slot == 26 ? '@' : slot == 27 ? '^' : (char)('A' + slot); }
+    static uint32_t bit(char c) { return 1u << slot(c); }
+    static uint32_t bits(const char *letters) {
+      uint32_t m = 0;
+      for (; *letters; ++letters) m |= bit(*letters);
+      return m;
+    }
+    IsoWord *w[28] = {};
+    uint32_t used = 0, present = 0;
+    IsoWord *get(char c) { return w[slot(c)]; }
+    bool has(char c) const { return w[slot(c)] != nullptr; }
+    bool hasAny(const char *letters) const { return (present & bits(letters)) != 0; }
+  };
+
+  BlockLowerer &L;
+  ParsedBlock &b;
+  Region &out;
+  Words bw;
+  GUse gs[(size_t)GGroup::Count];
+  MUse ms[8];
+  int nm = 0;
+  bool macroCall = false;  // G65, G66: every other address is an argument (M too)
+  bool axesTaken = false;  // a non-modal code took the axis words
+  bool dwellTookAxis = false;  // Fanuc G4 X<seconds>
+  ModeValue motionBefore = ModeValue::Rapid;  // the motion mode a G5/G5.1 block gives back
+  const GCodeInfo *nonModal = nullptr;
+
+  Block(BlockLowerer &l, ParsedBlock &blk, Region &o) : L(l), b(blk), out(o) {}
+
+  // Divisor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1). Dividing
+  // by a power of ten keeps X1234 in IS-B exactly 1.234.
+  double factor(Scale s) const {
+    if (L.decimal_ == 0) return 1.0;
+    bool inch = L.units_ == ModeValue::Inch;
+    switch (s) {
+    case Scale::Linear: return L.decimal_ == 1 ? (inch ? 1e4 : 1e3) : (inch ? 1e5 : 1e4);
+    case Scale::Rotary: return L.decimal_ == 1 ? 1e3 : 1e4;
+    case Scale::DwellX: return 1e3;
+    case Scale::Feed:
+      if (L.feedMode_ == ModeValue::PerRev) return inch ? 1e4 : 1e2;
+      if (L.feedMode_ == ModeValue::PerMinute) return inch ? 1e2 : 1.0;
+      return 1.0;
+    default: return 1.0;
+    }
+  }
+  static ExprPtr literal(const IsoWord &w, double f) {
+    if (w.expr) return w.expr->clone();
+    if (!w.hasPoint && f != 1.0) return Expr::number(w.value / f, ir::Type::Real, w.loc);
+    return Expr::number(w.value, w.hasPoint ? ir::Type::Real : ir::Type::Int, w.loc);
+  }
+  const GCodeInfo *G(GGroup g) const { return gs[(size_t)g].info; }
+  SourceLoc gloc(GGroup g) const { return gs[(size_t)g].word->loc; }
+  ExprPtr take(char c, Scale s) {
+    IsoWord *w = bw.get(c);
+    bw.used |= Words::bit(c);
+    return literal(*w, factor(s));
+  }
+  Op &emit(OpKind k, SourceLoc loc) {
+    out.emplace_back(k, loc);
+    return out.back();
+  }
+  void modeOp(GGroup g, const char *key) {
+    auto *gi = G(g);
+    if (!gi || gi->kind != GKind::Mode) return;
+    // Fanuc's G80 returns to the group-01 mode before the cycle; LinuxCNC's leaves none.
+    ModeValue m = gi->mode == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc ? ModeValue::CycleCancel : gi->mode;
+    emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(m).name, gloc(g)));
+  }
+  // Keys are unique here, so args are appended directly (Op::set would search).
+  static void add(Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); }
+  static void add(Op &op, const char *key, ExprPtr v) { op.args.push_back({key, std::move(v)}); }
+  bool toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc);
+  void axisWords(Op &op, const char *axes) {
+    for (const char *a = axes; *a; ++a)
+      if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
+  }
+  const MUse *findM(MKind k) const {
+    for (int i = 0; i < nm; ++i)
+      if (ms[i].info.kind == k) return &ms[i];
+    return nullptr;
+  }
+  bool programNumber(SourceLoc at, const char *what, long long &prog) {
+    IsoWord *p = bw.get('P');
+    if (!p) {
+      L.diags_.error(at, fmt::format("{} needs a P word (program number)", what), "missing-word");
+      return false;
+    }
+    if (p->expr || p->value < 0 || p->value != std::floor(p->value) || p->value > 99999999) {
+      L.diags_.error(p->loc, fmt::format("{} P must be a constant program number", what), "syntax");
+      return false;
+    }
+    bw.used |= 1u << ('P' - 'A');
+    prog = (long long)p->value;
+    return true;
+  }
+  Op &callOp(SourceLoc loc, long long prog, ExprPtr count, const char *frame) {
+    std::string callee = fmt::format("O{}", prog);
+    L.calls.push_back({callee, loc});
+    Op &op = emit(OpKind::Call, loc);
+    op.set("callee", Expr::string(callee, loc));
+    op.set("count", std::move(count));
+    op.set("frame", Expr::symbol(frame, loc));
+    return op;
+  }
+
+  Op &modalCallOp(SourceLoc loc, long long prog, ExprPtr count) {
+    std::string callee = fmt::format("O{}", prog);
+    L.calls.push_back({callee, loc});
+    Op &op = emit(OpKind::ModalCall, loc);
+    op.set("callee", Expr::string(callee, loc));
+    op.set("count", std::move(count));
+    return op;
+  }
+  const char *macroName() const { return b.words.end() != std::find_if(b.words.begin(), b.words.end(), [](auto &w) {
+                                           return w.letter == 'G' && !w.expr && w.value == 66;
+                                         }) ? "G66" : "G65"; }
+
+  bool classify();       // G and M codes through the tables; conflicts and duplicates
+  bool setup();          // feed mode ... return level
+  bool cornerTaken = false;  // a ,C / ,R went to the move
+  bool coordinateOps();  // G10/G92, G28/G30, G53
+  bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
+  bool motion();
+  bool stops();
+  bool callsAndReturn();
+  bool finish();         // assignments, unused words
+};
+
+// G and M codes through the tables; group conflicts, duplicate words.
+}  // namespace ncc::iso

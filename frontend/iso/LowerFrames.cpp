@@ -1,0 +1,226 @@
+// The ISO lowering of coordinate codes (LowerBlock.h): G10 offset and tool-offset writes,
+// G92 and its variants, G28/G30, G53, and the programmable frame (G52 G68 G51 G51.1).
+#include "frontend/iso/LowerBlock.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace ncc::iso {
+
+// G10 forms that write tool offsets (P = tool or offset number). LinuxCNC: L1 sets length Z and
+// radius R, L10/L11 the length that makes the current position Z in the current system / G59.3.
+// Fanuc/808D milling: L10-L13 = length, length wear, radius, radius wear, the value in R; L1 = L11.
+bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc) {
+  static const struct {
+    Flavour flavour;
+    int l;
+    const char *kind;
+    bool axes;  // Z (and R) as LinuxCNC reads them; else R is the one value
+  } kForms[] = {
+      {Flavour::RS274, 1, "tool_set", true},          {Flavour::RS274, 10, "tool_touch", true},
+      {Flavour::RS274, 11, "tool_touch_g593", true},  {Flavour::Fanuc, 10, "tool_length", false},
+      {Flavour::Fanuc, 11, "tool_length_wear", false}, {Flavour::Fanuc, 1, "tool_length_wear", false},
+      {Flavour::Fanuc, 12, "tool_radius", false},     {Flavour::Fanuc, 13, "tool_radius_wear", false},
+  };
+  const char *kind = nullptr;
+  bool axes = false;
+  for (auto &f : kForms)
+    if (f.flavour == L.flavour_ && f.l == lv) kind = f.kind, axes = f.axes;
+  if (!kind) {
+    const char *known = L.flavour_ == Flavour::RS274 ? "L1, L2, L10, L11 and L20" : "L1, L2, L10-L13 and L20";
+    L.diags_.error(l ? l->loc : loc,
+                   l ? fmt::format("G10 L{} is not supported (only {})", l->value, known)
+                     : fmt::format("G10 needs an L word ({})", known),
+                   l ? "unsupported-code" : "missing-word");
+    return false;
+  }
+  if (!bw.has('P')) {
+    L.diags_.error(loc, "G10 needs a P word (the tool or offset number)", "missing-word");
+    return false;
+  }
+  // ncc's tools have a length along Z and a radius: LinuxCNC's other table columns (X for
+  // lathes, I J Q) would be silently dropped.
+  for (char c : std::string_view(axes ? "XYABCIJQ" : "XYZABCIJQ"))
+    if (bw.has(c)) {
+      L.diags_.error(bw.get(c)->loc, fmt::format("G10 L{}: {} is not a tool offset ncc keeps (length Z, radius R)", lv, c),
+                     "unsupported-code");
+      return false;
+    }
+  if (!axes && !bw.has('R')) {
+    L.diags_.error(loc, fmt::format("G10 L{} needs an R word (the offset value)", lv), "missing-word");
+    return false;
+  }
+  bw.used |= 1u << ('L' - 'A');
+  op.set("kind", Expr::symbol(kind, loc));
+  op.set("index", take('P', Scale::None));
+  if (bw.has('Z')) op.set("Z", take('Z', Scale::Linear));
+  if (bw.has('R')) op.set("R", take('R', Scale::Linear));
+  out.push_back(std::move(op));
+  axesTaken = true;
+  return true;
+}
+
+// Non-modal codes that take the axis words for themselves: G10/G92, G28/G30, G53.
+bool BlockLowerer::Block::coordinateOps() {
+  // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
+  // unless Fanuc's G4 X took X as the time.
+  axesTaken = macroCall || dwellTookAxis;
+  if (nonModal && nonModal->kind == GKind::SetOffset) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    Op op(OpKind::SetOffset, loc);
+    if (nonModal->arg == 0) {  // G10 L<n> P<n>
+      IsoWord *l = bw.get('L');
+      int lv = l && !l->expr && l->value >= 0 && l->value < 100 ? (int)l->value : -1;
+      if (lv != 2 && lv != 20) return toolOffsetOp(op, lv, l, loc);
+      if (!bw.has('P')) {
+        L.diags_.error(loc, "G10 needs a P word (work offset number)", "missing-word");
+        return false;
+      }
+      bw.used |= 1u << ('L' - 'A');
+      op.set("kind", Expr::symbol(lv == 2 ? "g10l2" : "g10l20", loc));
+      op.set("index", take('P', Scale::None));
+      // RS274NGC G10 L2 R<degrees>: the system's rotation about the Z axis (Fanuc has none).
+      if (L.flavour_ == Flavour::RS274 && bw.has('R')) {
+        if (lv == 20) {
+          L.diags_.error(bw.get('R')->loc, "R not allowed in G10 L20", "syntax");
+          return false;
+        }
+        op.set("R", take('R', Scale::None));
+      }
+    } else {
+      static const char *kSetOffsetKinds[] = {"g10", "g92", "g92_1", "g92_2", "g92_3", "g28_1", "g30_1"};
+      op.set("kind", Expr::symbol(kSetOffsetKinds[nonModal->arg], loc));
+    }
+    // G10 and G92 take axis values; Fanuc's G92.1 X0 Y0 names the axes to reset; otherwise the
+    // block's axis words are a move in the current mode (rs274: `G92.1 X0` resets, then moves).
+    bool takesAxes = nonModal->arg <= 1 || (nonModal->arg == 2 && L.flavour_ == Flavour::Fanuc);
+    if (takesAxes) axisWords(op, kOffsetAxes);
+    out.push_back(std::move(op));
+    axesTaken = takesAxes;
+  }
+  if (nonModal && nonModal->kind == GKind::Home) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    Op op(OpKind::Home, loc);
+    ExprPtr ref = Expr::number(nonModal->arg, ir::Type::Int, loc);
+    if (nonModal->arg == 2 && bw.has('P')) ref = take('P', Scale::None);  // G30 P3
+    op.set("ref", std::move(ref));
+    axisWords(op, kOffsetAxes);
+    out.push_back(std::move(op));
+    axesTaken = true;
+  }
+  if (nonModal && nonModal->kind == GKind::MachineCoord) {
+    SourceLoc loc = gloc(GGroup::NonModal);
+    Op op(OpKind::MachineMove, loc);
+    op.set("rapid", Expr::boolean(L.motion_ == ModeValue::Rapid, loc));
+    axisWords(op, kOffsetAxes);
+    out.push_back(std::move(op));
+    axesTaken = true;
+  }
+  return frameOps();
+}
+
+// The programmable frame (runtime/Frame.h). Each code takes the block's axis words; the 808D
+// manual (2.4.1.9-2.4.2.4) gives the formats: G52 X Y Z; G68 X Y R (2-D) or X Y Z I J K R (3-D);
+// G69; G51 X Y Z P or X Y Z I J K (machine key axes_scale_enable), factors x scale_weighting;
+// G50; G51.1 X Y Z (mirror positions); G50.1 X Y Z (the axes to cancel).
+bool BlockLowerer::Block::frameOps() {
+  static const GGroup kGroups[] = {GGroup::Mirror, GGroup::Scaling, GGroup::Rotation, GGroup::NonModal};
+  const GCodeInfo *gi = nullptr;
+  GGroup group = GGroup::Count;
+  for (GGroup g : kGroups) {
+    if (!G(g) || G(g)->kind != GKind::Frame) continue;
+    if (gi) {
+      L.diags_.error(gloc(g), fmt::format("{} and {} in one block: each takes the axis words", gName(gi->code10),
+                                          gName(G(g)->code10)),
+                     "modal-group-conflict");
+      return false;
+    }
+    gi = G(g), group = g;
+  }
+  if (!gi) return true;
+  SourceLoc loc = gloc(group);
+  const bool on = gi->arg == 1;
+  axesTaken = true;  // stray axis words are unused words, never a move
+  if (L.flavour_ == Flavour::RS274) {
+    if (gi->code10 != 520) {  // G69, G50.1: LinuxCNC has no rotation or mirror to cancel
+      axesTaken = false;
+      return true;
+    }
+    Op &op = emit(OpKind::SetOffset, loc);  // LinuxCNC's G52: the G92 register
+    op.set("kind", Expr::symbol("g52", loc));
+    axisWords(op, kOffsetAxes);
+    return true;
+  }
+  if (group == GGroup::Rotation)  // 808D: G68 and G69 blocks hold no other G code
+    for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
+      if (gs[g].info && (GGroup)g != GGroup::Rotation) {
+        L.diags_.error(gs[g].word->loc,
+                       fmt::format("{} must not share its block with other G codes", gName(gi->code10)), "syntax");
+        return false;
+      }
+  static const char *kSlots[] = {"mirror", "scale", "rotation", "local"};  // by kGroups
+  Op op(OpKind::Frame, loc);
+  op.set("slot", Expr::symbol(kSlots[std::find(kGroups, kGroups + 4, group) - kGroups], loc));
+  op.set("action", Expr::symbol(on ? "set" : "cancel", loc));
+  switch (gi->code10) {
+  case 680:
+    op.set("form", Expr::symbol(bw.hasAny("IJK") ? "axis" : "plane", loc));
+    axisWords(op, "XYZ");
+    for (char c : std::string_view("IJK"))
+      if (bw.has(c)) add(op, c, take(c, Scale::None));
+    if (bw.has('R')) add(op, 'R', take('R', Scale::Rotary));
+    break;
+  case 510: {
+    // The factor unit of the machine; P is one factor for all axes, I J K one per axis.
+    const char *words = L.axesScaleEnable_ ? "IJK" : "P";
+    const char *other = L.axesScaleEnable_ ? "P" : "IJK";
+    if (bw.hasAny(other)) {
+      char c = 0;
+      for (const char *o = other; *o && !c; ++o)
+        if (bw.has(*o)) c = *o;
+      L.diags_.error(bw.get(c)->loc,
+                     L.axesScaleEnable_
+                         ? "G51 P on a machine with per-axis scaling (axes_scale_enable = true): program I J K"
+                         : fmt::format("G51 {} needs per-axis scaling (machine [controller] axes_scale_enable = true)", c),
+                     "unsupported-code");
+      return false;
+    }
+    if (!bw.hasAny(words)) {
+      L.diags_.error(loc, fmt::format("G51 needs {} (the setting-data default factor is not modelled)",
+                                      L.axesScaleEnable_ ? "I, J or K" : "P"),
+                     "missing-word");
+      return false;
+    }
+    axisWords(op, "XYZ");
+    for (const char *w = words; *w; ++w) {
+      if (!bw.has(*w)) continue;
+      IsoWord *f = bw.get(*w);
+      if (!f->expr && (f->hasPoint || (*w == 'P' && f->value <= 0))) {
+        L.diags_.error(f->loc,
+                       f->hasPoint ? fmt::format("G51 {} is an integer in units of the scale weighting", *w)
+                                   : std::string("G51 P must be greater than zero"),
+                       "bad-number");
+        return false;
+      }
+      ExprPtr e = take(*w, Scale::None);
+      auto scaled = [&] {
+        if (e->kind == ir::ExprKind::Number) return Expr::number(e->num * L.scaleWeighting_, ir::Type::Real, f->loc);
+        return Expr::binary(ir::OpCode::Mul, e->clone(), Expr::number(L.scaleWeighting_, ir::Type::Real, f->loc),
+                            f->loc);
+      };
+      if (*w == 'P')
+        for (char c : std::string_view("IJK")) add(op, c, scaled());
+      else
+        add(op, *w, scaled());
+    }
+    break;
+  }
+  case 511: case 501: axisWords(op, "XYZ"); break;
+  case 520: axisWords(op, kOffsetAxes); break;
+  default: break;  // G69, G50
+  }
+  out.push_back(std::move(op));
+  return true;
+}
+
+}  // namespace ncc::iso
