@@ -10,6 +10,11 @@
 
 namespace ncc::ir {
 
+bool constantJump(const Op &go) {
+  const Expr *n = go.get("n"), *l = go.get("label");
+  return (n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String);
+}
+
 JumpDir jumpDir(const Op &go) {
   const Expr *d = go.get("dir");
   if (!d) return JumpDir::Any;

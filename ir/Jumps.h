@@ -25,6 +25,9 @@ struct JumpEntry {
 
 enum class JumpDir : uint8_t { Any, Forward, Backward };
 JumpDir jumpDir(const Op &go);  // its dir= (absent: any)
+// A goto whose target is a constant (n= a number, label= a string): resolved before the run;
+// any other is computed when it runs.
+bool constantJump(const Op &go);
 
 // The index of the entry `go` reaches from `from` among `entries` (sorted by pos), or -1. A block
 // number n matches blocks with that number; a label name matches that label, and when no label

@@ -122,28 +122,18 @@ void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops,
       if (const Expr *e = op.get("name")) cf.jumps.push_back({NAN, e->str.c_str(), (uint32_t)cf.code.size()});
       break;
     case OpKind::Goto: {
-      const Expr *n = op.get("n"), *l = op.get("label");
-      Instr j{(n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String) ? IK::Jump : IK::JumpComputed};
+      const Expr *n = op.get("n");
+      Instr j{constantJump(op) ? IK::Jump : IK::JumpComputed};
       j.op = &op;
-      j.expr = n ? n : l;
+      j.expr = n ? n : op.get("label");
       uint32_t i = emit(j);
       if (j.kind == IK::Jump) gotos.push_back({i, &op});
       break;
     }
-    case OpKind::Call: {
-      Instr c{IK::Call};
-      c.op = &op;
-      emit(c);
-      break;
-    }
-    case OpKind::Return: {
-      Instr r{IK::Return};
-      r.op = &op;
-      emit(r);
-      break;
-    }
-    case OpKind::ModalCall: {
-      Instr c{IK::ModalCall};
+    case OpKind::Call:
+    case OpKind::Return:
+    case OpKind::ModalCall: {  // the op is all they need
+      Instr c{op.kind == OpKind::Call ? IK::Call : op.kind == OpKind::Return ? IK::Return : IK::ModalCall};
       c.op = &op;
       emit(c);
       break;

@@ -50,7 +50,7 @@ void Codegen::scanTargets(const ir::Region &body) {
         }
       if (op.kind == OpKind::Goto) {
         gotos.push_back(&op);
-        computed |= !constantJump(op);
+        computed |= !ir::constantJump(op);
       }
       if (op.kind == OpKind::CallSection) gotos.push_back(&op);  // its `from` label is a target
       for (auto &sub : op.regions) self(self, sub);
@@ -58,7 +58,7 @@ void Codegen::scanTargets(const ir::Region &body) {
   };
   walk(walk, body);
   for (const Op *go : gotos)
-    if (const Op *t = go->kind == OpKind::CallSection || constantJump(*go) ? resolveTarget(*go) : nullptr)
+    if (const Op *t = go->kind == OpKind::CallSection || ir::constantJump(*go) ? resolveTarget(*go) : nullptr)
       targetBBs_[t] = nullptr;
   if (computed)
     for (const Op *t : jumpOps_) targetBBs_[t] = nullptr;
@@ -71,7 +71,7 @@ bool compilesQuickly(const ir::Module &m, std::string &why) {
     auto walk = [&](auto &self, const ir::Region &r) -> void {
       for (auto &op : r) {
         targets += (op.kind == OpKind::Block && op.get("n")) || op.kind == OpKind::Label;
-        computed |= op.kind == OpKind::Goto && !Codegen::constantJump(op);
+        computed |= op.kind == OpKind::Goto && !ir::constantJump(op);
         for (auto &sub : op.regions) self(self, sub);
       }
     };
@@ -83,11 +83,6 @@ bool compilesQuickly(const ir::Module &m, std::string &why) {
     }
   }
   return true;
-}
-
-bool Codegen::constantJump(const Op &go) {
-  const Expr *n = go.get("n"), *l = go.get("label");
-  return (n && n->kind == ExprKind::Number) || (l && l->kind == ExprKind::String);
 }
 
 // A constant target (a call_section's `from`), as the eval engine resolves it when it compiles
@@ -160,7 +155,7 @@ void Codegen::validate(FnInfo &fi) {
   if (!walk(walk, fi.fn->body, 0)) return;
   scanTargets(fi.fn->body);
   for (const Op *go : gotos) {
-    if (go->kind == OpKind::Goto && !constantJump(*go)) continue;  // resolved when it runs
+    if (go->kind == OpKind::Goto && !ir::constantJump(*go)) continue;  // resolved when it runs
     if (!resolveTarget(*go)) {
       const Expr *l = go->get(go->kind == OpKind::CallSection ? "from" : "label");
       errs.push_back({go->loc, ir::missingJumpMessage(l, l ? NAN : go->get("n")->num, l ? l->str : "")});
@@ -362,7 +357,7 @@ void Codegen::emitBackJump(SourceLoc loc) {
 // A computed goto: ncrt_jump searches the function's target table (ir/Jumps.h, as the eval
 // engine does) and returns the entry's index, which a switch turns into its block.
 void Codegen::emitGoto(const Op &go) {
-  if (constantJump(go)) {
+  if (ir::constantJump(go)) {
     emitJumpTo(go, resolveTarget(go));  // validate() guarantees one
     return;
   }

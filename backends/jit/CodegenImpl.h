@@ -60,7 +60,6 @@ class Codegen {
 public:
   Codegen(const ir::Module &src, llvm::LLVMContext &ctx, Diagnostics &diags);
   std::unique_ptr<llvm::Module> run();
-  static bool constantJump(const ir::Op &go);
   // A goto whose target is a constant (resolved when compiled); else computed when it runs.
 
 private:
