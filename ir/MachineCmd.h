@@ -38,7 +38,7 @@ enum class CmdKind : uint8_t {
   Speed,        // w[S]
   ToolSelect,   // w[T]
   ToolChange,
-  Spindle,      // sub: 0 stop, 1 cw, 2 ccw
+  Spindle,      // sub: 0 stop, 1 cw, 2 ccw, 3 orient (w[R] angle, w[Q] wait s, sub2 way 0 cw 1 ccw 2 shortest)
   Coolant,      // sub: bit0 flood on, bit1 mist on; sub2 = bit0 flood given, bit1 mist given
   Dwell,        // w[P] seconds
   Move,         // words in mask; sub / sub2: bits (wordBit, X..C and I J K) of the words that are

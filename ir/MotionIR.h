@@ -50,6 +50,8 @@ enum class RecordKind : uint8_t {
   CycleEnd,      // closes the innermost CycleBegin
   FrameChange,   // the work->machine transform changed: params m00..m23, text what changed (`G54`)
   Spline,        // polynomial or NURBS curve fed to `end` at `feed`: spline() (SplineData)
+  SpindleOrient, // oriented spindle stop: `value` angle (degrees), `ivalue` way (0 cw, 1 ccw,
+                 // 2 shortest), `value2` seconds to wait for it (0: no wait)
   Count
 };
 

@@ -305,6 +305,19 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
       if (!p.number(r.value2)) return false;
     }
     break;
+  case RecordKind::SpindleOrient: {
+    p.skipBlanks();
+    if (!p.number(r.value)) return false;
+    p.skipBlanks();
+    size_t b = p.pos();
+    if (!p.integer(r.ivalue)) return false;
+    if (r.ivalue < 0 || r.ivalue > 2) return p.error(b, "an orientation way is 0 (cw), 1 (ccw) or 2 (shortest)");
+    p.skipBlanks();
+    b = p.pos();
+    if (!p.number(r.value2)) return false;
+    if (!(r.value2 >= 0)) return p.error(b, "the wait for the orientation must not be negative");
+    break;
+  }
   case RecordKind::CycleBegin:
   case RecordKind::FrameChange:
     p.skipBlanks();

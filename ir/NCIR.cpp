@@ -135,7 +135,7 @@ static const OpInfo kOps[] = {
     {OpKind::Speed, "speed", 0, 0, "value", ""},
     {OpKind::ToolSelect, "tool_select", 0, 0, "value", ""},
     {OpKind::ToolChange, "tool_change", 0, 0, "", ""},
-    {OpKind::Spindle, "spindle", 0, 0, "dir", ""},
+    {OpKind::Spindle, "spindle", 0, 0, "dir", "angle way wait"},
     {OpKind::Coolant, "coolant", 0, 0, "", "flood mist"},
     {OpKind::Dwell, "dwell", 0, 0, "seconds", ""},
     {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L polar_r polar_a chamfer round via_x via_y via_z ic ac"},

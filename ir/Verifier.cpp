@@ -25,7 +25,8 @@ struct EnumRule {
   const char *values;  // space-separated
 };
 const EnumRule kEnumRules[] = {
-    {OpKind::Spindle, "dir", "cw ccw stop"},
+    {OpKind::Spindle, "dir", "cw ccw stop orient"},
+    {OpKind::Spindle, "way", "cw ccw shortest"},
     {OpKind::Coolant, "flood", "on off"},
     {OpKind::Coolant, "mist", "on off"},
     {OpKind::CutterComp, "side", "off left right"},
@@ -216,6 +217,11 @@ private:
     // One aux op is one auxiliary function: its letter is the key.
     if (op.kind == OpKind::Aux && !!op.get("m") + !!op.get("b") + !!op.get("h") != 1)
       error(op.loc, "'aux' needs exactly one of m=, b=, h=");
+    // The orientation's angle, way and wait belong to dir=orient only.
+    if (op.kind == OpKind::Spindle && (op.get("angle") || op.get("way") || op.get("wait"))) {
+      const Expr *d = op.get("dir");
+      if (!d || d->str != "orient") error(op.loc, "'spindle' angle=, way= and wait= need dir=orient");
+    }
     // DEF declares named variables; numbered parameters exist without a declaration.
     if (const Expr *v = op.kind == OpKind::Declare ? op.get("var") : nullptr)
       if (v->kind == ExprKind::Var && v->space != VarSpace::Local && v->space != VarSpace::Global)

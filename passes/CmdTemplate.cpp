@@ -29,7 +29,9 @@ struct SymbolCode {
 };
 static const SymbolCode kSymbols[] = {
     {OpKind::Spindle, "dir", "stop", 0},         {OpKind::Spindle, "dir", "cw", 1},
-    {OpKind::Spindle, "dir", "ccw", 2},          {OpKind::CutterComp, "side", "off", 0},
+    {OpKind::Spindle, "dir", "ccw", 2},          {OpKind::Spindle, "dir", "orient", 3},
+    {OpKind::Spindle, "way", "cw", 0},           {OpKind::Spindle, "way", "ccw", 1},  // sub2
+    {OpKind::Spindle, "way", "shortest", 2},     {OpKind::CutterComp, "side", "off", 0},
     {OpKind::CutterComp, "side", "left", 1},     {OpKind::CutterComp, "side", "right", 2},
     {OpKind::Stop, "kind", "program", (uint8_t)StopKind::Program},
     {OpKind::Stop, "kind", "optional", (uint8_t)StopKind::Optional},
@@ -89,7 +91,8 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Move, "polar_r", Word::PolarR}, {OpKind::Move, "polar_a", Word::PolarA},
     {OpKind::Move, "chamfer", Word::Chamfer}, {OpKind::Move, "round", Word::Round},
     {OpKind::Move, "via_x", Word::ViaX},     {OpKind::Move, "via_y", Word::ViaY},
-    {OpKind::Move, "via_z", Word::ViaZ},
+    {OpKind::Move, "via_z", Word::ViaZ},     {OpKind::Spindle, "angle", Word::R},
+    {OpKind::Spindle, "wait", Word::Q},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -185,7 +188,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
       c.modes[c.nmodes++] = v;
     }
     break;
-  case OpKind::Spindle: return symbolArg("dir", c.sub);
+  case OpKind::Spindle:
+    if (!symbolArg("dir", c.sub) || !symbolArg("way", c.sub2)) return false;
+    break;  // an orientation's angle and wait: words, below
   case OpKind::CutterComp:
     if (!symbolArg("side", c.sub) || !symbolArg("d_default", c.sub2)) return false;
     break;
@@ -294,7 +299,11 @@ Op cmdToOp(const MachineCmd &c) {
       op.set(modeGroupName(info.group), Expr::symbol(info.name));
     }
     break;  // G64 tolerances below
-  case CmdKind::Spindle: op.set("dir", Expr::symbol(symbolFor(op.kind, "dir", c.sub))); return op;
+  case CmdKind::Spindle:
+    op.set("dir", Expr::symbol(symbolFor(op.kind, "dir", c.sub)));
+    if (c.sub != 3) return op;
+    op.set("way", Expr::symbol(symbolFor(op.kind, "way", c.sub2)));
+    break;
   case CmdKind::Stop: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); return op;
   case CmdKind::CutterComp:
     op.set("side", Expr::symbol(symbolFor(op.kind, "side", c.sub)));

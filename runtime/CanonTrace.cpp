@@ -204,6 +204,22 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   case RecordKind::SpindleCW: line(n, "START_SPINDLE_CLOCKWISE(0)"); break;
   case RecordKind::SpindleCCW: line(n, "START_SPINDLE_COUNTERCLOCKWISE(0)"); break;
   case RecordKind::SpindleStop: line(n, "STOP_SPINDLE_TURNING(0)"); break;
+  case RecordKind::SpindleOrient:  // rs274's M19: the orientation, then the wait when Q is given
+    begin(n);
+    buf_.append("ORIENT_SPINDLE(0, ");
+    num(r.value);
+    buf_.append(", ");
+    buf_.append(std::to_string(r.ivalue));
+    buf_.push_back(')');
+    end();
+    if (r.value2 > 0) {
+      begin(n);
+      buf_.append("SPINDLE.0.WAIT_ORIENT_COMPLETE(");
+      num(r.value2);
+      buf_.push_back(')');
+      end();
+    }
+    break;
   case RecordKind::CoolantFlood:
     flood_ = r.ivalue != 0;
     line(n, flood_ ? "FLOOD_ON()" : "FLOOD_OFF()");

@@ -25,6 +25,16 @@ constexpr CycleInfo kCycles[] = {
     {ModeValue::BoreBack, "G87"},  {ModeValue::BoreFine, "G76"},
 };
 
+// The move off the wall of G76/G87: Q along the plane axis the lift setting names (808D _ZSFI[5]:
+// 1 +a1, 0 or 2 -a1, 3 +a2, 4 -a2).
+void liftShift(const CycleInput &in, double out[2]) {
+  static const int kAxis[] = {0, 0, 0, 1, 1};
+  static const double kSign[] = {-1, 1, -1, 1, -1};
+  int l = in.lift >= 0 && in.lift <= 4 ? in.lift : 0;
+  out[0] = out[1] = 0;
+  out[kAxis[l]] = kSign[l] * in.q;
+}
+
 // The hole of an ISO cycle (rs274's expansion): pecks from R by Q (G83 back to R and down to
 // `peckClearance` above the last depth, G73 back by peckClearance), dwell P, the exit.
 HoleSpec isoHole(const CycleInput &in, double r, double bottom, double clear) {
@@ -48,9 +58,42 @@ HoleSpec isoHole(const CycleInput &in, double r, double bottom, double clear) {
   case ModeValue::BoreFeed: h.exit = HoleExit::Feed, h.exitLevel = r; break;
   case ModeValue::BoreStop: h.exit = HoleExit::SpindleStopRapid, h.dwellBottom = in.p; break;
   case ModeValue::BoreDwell: h.exit = HoleExit::Feed, h.exitLevel = clear, h.exitRapid = false, h.dwellBottom = in.p; break;
+  case ModeValue::BoreFine:
+    h.exit = HoleExit::OrientShift, h.dwellBottom = in.p, h.orientAngle = in.orientAngle;
+    liftShift(in, h.shift);
+    break;
   default: break;
   }
   return h;
+}
+
+// G87: from the initial level, off centre down through the hole to R (the back face), cut up to Z.
+bool backBore(const CycleInput &in, const DrillAxes &ax, double r, double top, std::vector<CycleStep> &out,
+              std::string &err) {
+  const double il = in.initialLevel;
+  if (in.retractToR) return err = "G87 back boring returns to the initial level: G99 is not allowed", false;
+  if (!(r < top) || !(top < il))
+    return err = "G87 needs R (the back face) below Z (the cut's top) below the initial level", false;
+  BackBoreSpec b;
+  b.start = il, b.bottom = r, b.cutLevel = top;
+  b.dwell = in.p > 0 ? in.p : -1;
+  b.orientAngle = in.orientAngle;
+  b.spindle = in.spindle;
+  liftShift(in, b.shift);
+  double a1 = in.current[ax.a1], a2 = in.current[ax.a2];
+  for (int k = 0; k < in.repeats; ++k) {
+    if (in.incremental) a1 += in.target[ax.a1], a2 += in.target[ax.a2];
+    else a1 = in.target[ax.a1], a2 = in.target[ax.a2];
+    CycleStep st;
+    st.pos[ax.a1] = a1, st.pos[ax.a2] = a2, st.pos[ax.d] = std::max(il, in.current[ax.d]);
+    out.push_back(st);
+    if (st.pos[ax.d] != il) {
+      st.pos[ax.d] = il;
+      out.push_back(st);
+    }
+    backBoreSteps(b, ax.a1, ax.a2, ax.d, a1, a2, out);
+  }
+  return true;
 }
 
 }  // namespace
@@ -63,7 +106,8 @@ const char *cycleCodeName(ModeValue cycle) {
 
 bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string &err) {
   const DrillAxes &ax = kDrillAxes[(int)in.plane];
-  if (in.cycle == ModeValue::BoreBack || in.cycle == ModeValue::BoreFine || !isCycleMotion(in.cycle)) {
+  const bool boring = in.cycle == ModeValue::BoreBack || in.cycle == ModeValue::BoreFine;
+  if (!isCycleMotion(in.cycle)) {
     err = std::string(cycleCodeName(in.cycle)) + " canned cycle is not supported";
     return false;
   }
@@ -74,6 +118,14 @@ bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string 
   const double il = in.initialLevel;
   const double r = in.incremental ? il + in.r : in.r;
   const double bottom = in.incremental ? r + in.z : in.z;
+  if (boring && in.q < 0) {
+    err = std::string("Q (the shift off the wall) must not be negative in ") + cycleCodeName(in.cycle);
+    return false;
+  }
+  if (in.cycle == ModeValue::BoreBack) {
+    if (in.polar) return err = "polar hole positions with G87 are not supported", false;
+    return backBore(in, ax, r, bottom, out, err);
+  }
   if (r < bottom) {
     err = std::string("R less than z in cycle in ") + ax.name + " plane";
     return false;

@@ -1,6 +1,7 @@
 // Canned drilling cycles (G73 G74 G81-G86 G89) expanded into elementary steps, the way LinuxCNC's
-// rs274 expands them (the reference the oracle tests compare against): the ISO entry of the
-// cycle library, positioning and repeats here, each hole a HoleSpec (runtime/cycles/Hole.h).
+// rs274 expands them (the reference the oracle tests compare against), and the 808D/Fanuc boring
+// cycles G76 and G87: the ISO entry of the cycle library, positioning and repeats here, each hole
+// a HoleSpec or BackBoreSpec (runtime/cycles/Hole.h).
 // A pure function: the executor calls it with offset-frame values.
 #pragma once
 #include "ir/ModeTable.h"
@@ -14,7 +15,7 @@
 namespace ncc {
 
 struct CycleInput {
-  ModeValue cycle = ModeValue::Drill;  // Drill .. BoreDwell (not BoreBack/BoreFine)
+  ModeValue cycle = ModeValue::Drill;  // Drill .. BoreDwell, BoreFine, BoreBack
   Plane plane = Plane::XY;             // drilling axis: XY -> Z, ZX -> Y, YZ -> X
   bool retractToR = false;             // G99 (else G98: back to max(initial level, R))
   bool incremental = false;            // G91: target = increments, R from the initial level,
@@ -38,6 +39,10 @@ struct CycleInput {
   bool polar = false, polarHasR = false, polarHasA = false;
   double polarR = 0, polarA = 0;  // radius (position units), angle (degrees)
   std::array<double, 2> origin{};
+  // 808D/Fanuc G76 fine boring and G87 back boring (the .ngc front end rejects both): the
+  // oriented stop's angle and the side the tool moves off the wall by Q (Controller::boringLift).
+  double orientAngle = 0;
+  int lift = 0;
 };
 
 // Appends the steps of one cycle block to `out`. Returns false with an rs274-like message in

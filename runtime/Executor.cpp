@@ -83,6 +83,16 @@ void Executor::Impl::noteFrame(const char *what) {
   emit(r);
 }
 
+bool Executor::Impl::orientSpindle(double angle, int way, double wait) {
+  if (way < 0 || way > 2) return error("bad spindle orientation way", "bad-command");
+  if (!std::isfinite(angle) || !(wait >= 0)) return error("bad spindle orientation angle or wait", "bad-command");
+  MotionRecord r = record(RecordKind::SpindleOrient);
+  r.value = angle, r.ivalue = way, r.value2 = wait;
+  st.spindle = 0;  // oriented = stopped: M3/M4 start it again
+  emit(r);
+  return true;
+}
+
 bool Executor::Impl::frameForbids(const char *what) {
   if (!pf.linear) return true;
   return error(std::string(what) + " is not allowed while a programmable rotation, scaling or mirror (G68, G51, "
@@ -603,6 +613,9 @@ bool Executor::exec(const MachineCmd &c) {
   }
   case CmdKind::Spindle: {
     static const RecordKind kinds[] = {RecordKind::SpindleStop, RecordKind::SpindleCW, RecordKind::SpindleCCW};
+    if (c.sub == 3)  // without an angle: the machine's M19 position (808D SD43240)
+      return x.orientSpindle(c.has(Word::R) ? c.get(Word::R) : x.machine.controller.m19Angle, c.sub2,
+                             c.has(Word::Q) ? c.get(Word::Q) : 0);
     if (c.sub > 2) return x.error("bad spindle command", "bad-command");
     x.st.spindle = c.sub;
     x.emit(x.record(kinds[c.sub]));

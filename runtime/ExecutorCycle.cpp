@@ -32,8 +32,10 @@ void cycleParams(MotionRecord &r, const CycleInput &in, const std::vector<CycleS
     }
   r.setParam(std::string_view(&kWordLetters[d], 1), z);
   r.setParam("R", rLevel);
-  if (in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak) r.setParam("Q", in.q);
-  if (in.cycle == ModeValue::DrillDwell || in.cycle == ModeValue::BoreStop || in.cycle == ModeValue::BoreDwell)
+  const bool boring = in.cycle == ModeValue::BoreFine || in.cycle == ModeValue::BoreBack;
+  if (in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak || boring) r.setParam("Q", in.q);
+  if (in.cycle == ModeValue::DrillDwell || in.cycle == ModeValue::BoreStop || in.cycle == ModeValue::BoreDwell ||
+      boring)
     r.setParam("P", in.p);
   r.setParam("L", in.repeats);
 }
@@ -69,6 +71,10 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
                        " in canned cycle",
                    "cycle-invalid");
   if (!cycleFrameOk()) return false;
+  if ((cyc == ModeValue::BoreFine || cyc == ModeValue::BoreBack) && (rotated() || pf.linear))
+    return error(std::string(code) + " under a coordinate rotation, scaling or mirror is not supported: the shift "
+                                     "off the wall would no longer point away from the oriented cutting edge",
+                 "unsupported-code");
   bool peck = cyc == ModeValue::Peck || cyc == ModeValue::PeckChipBreak;
   if (peck && !haveQ) return error(std::string("Q word missing with ") + lower(code), "cycle-missing-word");
   int repeats = 1;
@@ -83,6 +89,8 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   if (cyc == ModeValue::TapLeft && st.spindle != 2)
     return error("Spindle not turning counterclockwise in G74", "cycle-spindle");
   if (cyc == ModeValue::BoreStop && st.spindle == 0) return error("Spindle not turning in G86", "cycle-spindle");
+  if ((cyc == ModeValue::BoreFine || cyc == ModeValue::BoreBack) && st.spindle == 0)
+    return error(std::string("Spindle not turning in ") + code, "cycle-spindle");
   if (!checkFeed(code)) return false;
 
   if (!initialLevelValid) {
@@ -107,6 +115,8 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   in.p = cycleP;
   in.repeats = repeats;
   in.spindle = st.spindle;
+  in.orientAngle = machine.controller.boringOrientAngle;
+  in.lift = machine.controller.boringLift;
   for (int i = 0; i < 3; ++i) {
     if (i == d) continue;
     bool has = c.has((Word)i);
@@ -184,6 +194,12 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
     case CycleStepKind::SpindleStop: emit(record(RecordKind::SpindleStop)); break;
     case CycleStepKind::SpindleCW: emit(record(RecordKind::SpindleCW)); break;
     case CycleStepKind::SpindleCCW: emit(record(RecordKind::SpindleCCW)); break;
+    case CycleStepKind::SpindleOrient: {  // the cycle turns the spindle on again before it ends
+      MotionRecord r = record(RecordKind::SpindleOrient);
+      r.value = s.angle, r.ivalue = 2;
+      emit(r);
+      break;
+    }
     }
   }
   if (rate != feedMM) {

@@ -278,6 +278,9 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"macro_calls", NodeReader(readMacroCalls)},
     {"offset_write", &Controller::offsetWrite, 0, 0, false, "immediate on-select on-change"},
     {"parameter_units", &Controller::parameterUnits, 0, 0, false, "mm inch"},
+    {"m19_angle", &Controller::m19Angle, 0, 360},
+    {"boring_orient_angle", &Controller::boringOrientAngle, 0, 360},
+    {"boring_lift", &Controller::boringLift, 0, 4},
 };
 
 void readAxisKind(Ctx &c, const toml::node &n, void *obj) {

@@ -73,6 +73,12 @@ struct Controller {
   // The length unit of offsets, G92 values and reference points as programs read and write
   // them (LinuxCNC #5161-#5390: the machine's LINEAR_UNITS; stand-alone rs274: inch).
   std::string parameterUnits = "mm";
+  // Oriented spindle stops the program does not give an angle for (808D SD43240 $SA_M19_SPOS for
+  // M19; the GUD _ZSFR[2] of the G76/G87 boring cycles) and the side the boring tool moves off
+  // the wall (_ZSFI[5]: 1 +a1, 0 or 2 -a1, 3 +a2, 4 -a2 of the plane's axes, e.g. +X -X +Y -Y in G17).
+  double m19Angle = 0;
+  double boringOrientAngle = 0;
+  int boringLift = 0;
 };
 
 // One problem of a machine description; line 0 = not located (an unreadable file).

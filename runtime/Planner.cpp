@@ -386,6 +386,7 @@ void Planner::record(const MotionRecord &r) {
   case RecordKind::SpindleCW:
   case RecordKind::SpindleCCW:
   case RecordKind::SpindleStop:
+  case RecordKind::SpindleOrient:
   case RecordKind::OptionalStop:
   case RecordKind::ProgramStop:
   case RecordKind::ProgramEnd:

@@ -5,6 +5,7 @@
 #include "backends/emit/ArcGeometry.h"
 #include "backends/emit/ControllerTable.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -81,6 +82,7 @@ private:
   void arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull);
   // Why this output cannot write the spline exactly (empty: it can, as LinuxCNC G5.2/G5.3).
   std::string splineRefusal(const MotionRecord &r) const;
+  void spindleOrient(const MotionRecord &r);
   void spline(const MotionRecord &r);
   void planeWord(Plane p, Words &w);
   void dwell(const MotionRecord &r);
@@ -410,6 +412,37 @@ void Emitter::spline(const MotionRecord &r) {
   }
 }
 
+// An oriented spindle stop at an angle: LinuxCNC `M19 R P [Q]`, Sinumerik `SPOS=ACP|ACN|DC()`.
+// Fanuc's M19 turns to the angle of a machine parameter, so no other ISO target can write one.
+void Emitter::spindleOrient(const MotionRecord &r) {
+  flushPending();
+  double a = std::fmod(r.value, 360.0);
+  if (a < 0) a += 360;  // the same orientation; M19 R takes 0..360
+  std::string angle;
+  if (!number(a, WordClass::Rotary, "", r, angle)) return;
+  if (st_.target == Target::Sinumerik) {
+    static const char *ways[] = {"ACP", "ACN", "DC"};
+    writeBlock({"SPOS=" + std::string(ways[std::clamp<int64_t>(r.ivalue, 0, 2)]) + "(" + angle + ")"},
+               r.blockNumber);
+    return;
+  }
+  if (machine_.controller.family != "linuxcnc") {
+    diags_.error(r.loc,
+                 "the [" + st_.section + "] emitter writes an oriented spindle stop at an angle only for LinuxCNC "
+                 "(M19 R P; Fanuc's M19 turns to a parameter angle): " + printMotionRecord(r),
+                 "unsupported-code");
+    errors_ = true;
+    return;
+  }
+  Words w{"M19", "R" + angle, "P" + std::to_string(r.ivalue)};
+  if (r.value2 > 0) {
+    std::string q;
+    if (!number(r.value2, WordClass::Dwell, "Q", r, q)) return;
+    w.push_back(q);
+  }
+  writeBlock(w, r.blockNumber);
+}
+
 void Emitter::dwell(const MotionRecord &r) {
   flushPending();
   NumberFormat f = fmt(WordClass::Dwell);
@@ -514,6 +547,7 @@ void Emitter::record(const MotionRecord &r) {
   case RecordKind::SpindleCW: addPending(PendingGroup::Spindle, code(Code::SpindleCW), r); break;
   case RecordKind::SpindleCCW: addPending(PendingGroup::Spindle, code(Code::SpindleCCW), r); break;
   case RecordKind::SpindleStop: addPending(PendingGroup::Spindle, code(Code::SpindleStop), r); break;
+  case RecordKind::SpindleOrient: spindleOrient(r); break;
   case RecordKind::CoolantFlood: coolant(r, true); break;
   case RecordKind::CoolantMist: coolant(r, false); break;
   case RecordKind::FeedRate:

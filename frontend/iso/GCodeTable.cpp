@@ -175,6 +175,7 @@ static const MCodeInfo kMCodes[] = {
     {3, MKind::Spindle, MGroup::Spindle, 1},
     {4, MKind::Spindle, MGroup::Spindle, 2},
     {5, MKind::Spindle, MGroup::Spindle, 0},
+    {19, MKind::Spindle, MGroup::Spindle, 3},  // LinuxCNC M19 R P Q; 808D: to SD43240
     {6, MKind::ToolChange, MGroup::ToolChange, 0},
     {7, MKind::Coolant, MGroup::Coolant, 7},
     {8, MKind::Coolant, MGroup::Coolant, 8},
@@ -184,7 +185,6 @@ static const MCodeInfo kMCodes[] = {
     {99, MKind::Return, MGroup::Sub, 0},
     // Codes that move the machine or change what it does, not modelled yet: an error, never
     // an aux code whose words are quietly dropped.
-    {19, MKind::Unsupported, MGroup::None, 0, "spindle orientation"},
     {61, MKind::Unsupported, MGroup::None, 0, "set the current tool number", true},
     {62, MKind::Unsupported, MGroup::None, 0, "digital output on, synchronized with motion", true},
     {63, MKind::Unsupported, MGroup::None, 0, "digital output off, synchronized with motion", true},

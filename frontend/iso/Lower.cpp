@@ -20,6 +20,7 @@ static const char kMoveWords[] = "XYZABCUVW@^";  // words that make a block a mo
 static const char *rs274Meaning(int32_t code10) {
   switch (code10) {
   case 760: return "RS274NGC threading cycle";
+  case 870: return "RS274NGC back boring with I J K";
   case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
   default: return nullptr;
   }
@@ -219,6 +220,46 @@ bool BlockLowerer::Block::classify() {
 
 // Feed mode, F, S, T, M6, spindle, coolant, dwell, plane, units, compensation, work offset,
 // path mode, distance, return level (the first part of the rs274 order).
+// LinuxCNC M19 R<angle 0..360> P<0 cw, 1 ccw, 2 shortest> Q<seconds to wait>. rs274 orients only
+// when R or P is given (a bare M19 or M19 Q issues no orientation): an error here, not a no-op.
+bool BlockLowerer::Block::orientWords(Op &op, SourceLoc loc) {
+  if (!bw.has('R') && !bw.has('P')) {
+    L.diags_.error(loc, "M19 needs R (the angle) or P (the direction): LinuxCNC does not orient the spindle without them",
+                   "missing-word");
+    return false;
+  }
+  struct Check {
+    char letter;
+    const char *key;
+    double lo, hi;
+    bool integer, open;  // open: lo excluded
+    const char *msg;
+  };
+  static const Check kChecks[] = {{'R', "angle", 0, 360, false, false, "R value must be within 0..360 with M19"},
+                                  {'P', "way", 0, 2, true, false, "P value must be 0,1,or 2 with M19"},
+                                  {'Q', "wait", 0, 1e9, false, true, "Q word with M19 requires a value > 0"}};
+  for (const Check &c : kChecks) {
+    if (!bw.has(c.letter)) continue;
+    IsoWord *w = bw.get(c.letter);
+    double v = w->value;
+    if (!w->expr && (v < c.lo || v > c.hi || (c.open && v == c.lo) || (c.integer && v != std::floor(v)))) {
+      L.diags_.error(w->loc, c.msg, "bad-command");
+      return false;
+    }
+    if (c.letter == 'P') {
+      if (w->expr) {
+        L.diags_.error(w->loc, "M19 P (the direction) must be a constant 0, 1 or 2", "bad-command");
+        return false;
+      }
+      static const char *ways[] = {"cw", "ccw", "shortest"};
+      bw.used |= Words::bit('P');
+      op.set(c.key, Expr::symbol(ways[(int)v], w->loc));
+    } else
+      op.set(c.key, take(c.letter, Scale::None));
+  }
+  return true;
+}
+
 bool BlockLowerer::Block::setup() {
   // The block's own units and feed mode apply to its words.
   if (auto *gi = G(GGroup::Units)) L.units_ = gi->mode;
@@ -263,8 +304,14 @@ bool BlockLowerer::Block::setup() {
     emit(OpKind::ToolChange, m->word->loc);
   }
   if (auto *m = findM(MKind::Spindle)) {
-    static const char *dirs[] = {"stop", "cw", "ccw"};
-    emit(OpKind::Spindle, m->word->loc).set("dir", Expr::symbol(dirs[m->info.arg], m->word->loc));
+    static const char *dirs[] = {"stop", "cw", "ccw", "orient"};
+    Op &op = emit(OpKind::Spindle, m->word->loc);
+    op.set("dir", Expr::symbol(dirs[m->info.arg], m->word->loc));
+    if (m->info.arg == 3) {
+      // 808D M19 takes no words: the angle is the machine's (SD43240), reached the shortest way.
+      if (L.flavour_ == Flavour::Fanuc) op.set("way", Expr::symbol("shortest", m->word->loc));
+      else if (!orientWords(op, m->word->loc)) return false;
+    }
   }
   if (auto *m = findM(MKind::Coolant)) {
     Op &op = emit(OpKind::Coolant, m->word->loc);

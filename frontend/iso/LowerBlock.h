@@ -117,6 +117,7 @@ struct BlockLowerer::Block {
   static void add(Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); }
   static void add(Op &op, const char *key, ExprPtr v) { op.args.push_back({key, std::move(v)}); }
   bool toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc);
+  bool orientWords(Op &op, SourceLoc loc);
   void axisWords(Op &op, const char *axes) {
     for (const char *a = axes; *a; ++a)
       if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));

@@ -25,6 +25,29 @@ public:
     st.kind = k;
     out_.push_back(st);
   }
+  void spindleOn(int dir) { spindle(dir == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW); }
+  void orient(double angle) {
+    CycleStep st;
+    st.kind = CycleStepKind::SpindleOrient;
+    st.angle = angle;
+    out_.push_back(st);
+  }
+  // A rapid to `level` at `shift` from the hole centre (nullptr: the centre). `always` = false:
+  // only when the shift is not zero (a move off or back to the centre at one level).
+  void rapidAt(double level, const double *shift, bool always, const double *nonZero) {
+    if (!always && nonZero[0] == 0 && nonZero[1] == 0) return;
+    CycleStep st;
+    st.pos[a1_] = p1_ + (shift ? shift[0] : 0);
+    st.pos[a2_] = p2_ + (shift ? shift[1] : 0);
+    st.pos[d_] = level;
+    out_.push_back(st);
+  }
+  // Off the wall at `from`, rapid to `to` there, back to the centre.
+  void liftOut(double from, double to, const double shift[2]) {
+    rapidAt(from, shift, false, shift);
+    rapidAt(to, shift, true, shift);
+    rapidAt(to, nullptr, false, shift);
+  }
 
 private:
   void move(CycleStepKind k, double level, double f) {
@@ -88,7 +111,13 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
     w.dwell(h.dwellBottom);
     w.spindle(CycleStepKind::SpindleStop);
     w.rapid(h.retract);
-    w.spindle(h.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW);
+    w.spindleOn(h.spindle);
+    break;
+  case HoleExit::OrientShift:
+    w.dwell(h.dwellBottom);
+    w.orient(h.orientAngle);
+    w.liftOut(h.bottom, h.retract, h.shift);
+    w.spindleOn(h.spindle);
     break;
   case HoleExit::Tap: {
     // Reverse at the bottom, feed straight out, restore the direction (rs274 order: the dwell
@@ -103,6 +132,18 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
     break;
   }
   }
+}
+
+void backBoreSteps(const BackBoreSpec &b, int a1, int a2, int d, double p1, double p2, std::vector<CycleStep> &out) {
+  Writer w(out, a1, a2, d, p1, p2);
+  w.orient(b.orientAngle);
+  w.liftOut(b.start, b.bottom, b.shift);  // down through the hole off centre
+  w.spindleOn(b.spindle);
+  w.feed(b.cutLevel, b.feed);
+  w.dwell(b.dwell);
+  w.orient(b.orientAngle);
+  w.liftOut(b.cutLevel, b.start, b.shift);
+  w.spindleOn(b.spindle);
 }
 
 }  // namespace ncc

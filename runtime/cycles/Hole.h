@@ -8,13 +8,14 @@
 
 namespace ncc {
 
-enum class CycleStepKind : uint8_t { Rapid, Feed, Dwell, SpindleStop, SpindleCW, SpindleCCW };
+enum class CycleStepKind : uint8_t { Rapid, Feed, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient };
 
 struct CycleStep {
   CycleStepKind kind = CycleStepKind::Rapid;
   std::array<double, 3> pos{};  // X Y Z target of Rapid/Feed
   double seconds = 0;           // Dwell
   double feed = 0;              // Feed: mm/min, 0 = the programmed feed
+  double angle = 0;             // SpindleOrient: degrees (the shortest way)
   // The move to the R level made before the holes when the initial level is below R: rs274
   // makes it outside the exact-path bracket of the holes.
   bool preMove = false;
@@ -26,6 +27,8 @@ enum class HoleExit : uint8_t {
   Feed,             // feed to `exitLevel` at exitFeed, then (exitRapid) rapid to `retract` (G85, G89, 201)
   SpindleStopRapid, // spindle stop, rapid to `retract`, spindle on again (G86)
   Tap,              // spindle reverse, feed to `retract`, spindle forward again (G84, G74)
+  OrientShift,      // oriented stop at `orientAngle`, shift by `shift` off the wall, rapid to
+                    // `retract`, shift back, spindle on again (808D/Fanuc G76, Sinumerik CYCLE86)
 };
 
 struct HoleSpec {
@@ -55,7 +58,24 @@ struct HoleSpec {
   double exitLevel = 0, exitFeed = 0;
   bool exitRapid = true;
   int spindle = 1;  // direction before the cycle (1 cw, 2 ccw): G86 restart, tapping
+  double orientAngle = 0;        // OrientShift: the spindle angle that turns the edge off the wall
+  double shift[2] = {0, 0};      // OrientShift: the move off the wall along the plane axes a1, a2
 };
+
+// Back boring (808D/Fanuc G87, Heidenhain 204): at the `start` level above the hole the spindle
+// stops at `orientAngle` and the tool moves off centre by `shift`, goes down through the hole at
+// rapid to `bottom` (the back face, below), returns to the centre, starts the spindle (`spindle`)
+// and cuts back up to `cutLevel` at `feed`, dwells, stops oriented again, moves off centre and
+// rapids out to `start`, back to the centre, spindle on again.
+struct BackBoreSpec {
+  double start = 0, bottom = 0, cutLevel = 0;
+  double feed = 0;     // 0: the programmed feed
+  double dwell = -1;   // seconds at cutLevel (< 0: none)
+  double orientAngle = 0;
+  double shift[2] = {0, 0};
+  int spindle = 1;     // 1 cw, 2 ccw
+};
+void backBoreSteps(const BackBoreSpec &b, int a1, int a2, int d, double p1, double p2, std::vector<CycleStep> &out);
 
 // Appends the steps of one hole at plane position (p1, p2): axes a1, a2 in the plane and d the
 // drilling axis (indices into X Y Z). Starts with the feed from `start`; the caller positions.

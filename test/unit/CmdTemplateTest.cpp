@@ -27,7 +27,7 @@ std::vector<std::string> words(const char *list) {
 ExprPtr valueFor(OpKind op, const std::string &key) {
   static const std::map<std::string, const char *> kSymbols = {
       {"dir", "ccw"},       {"flood", "on"},   {"mist", "on"},   {"side", "left"}, {"d_default", "tool"},
-      {"slot", "rotation"}, {"action", "set"}, {"form", "axis"}, {"ic", "X"}, {"ac", "Y"},
+      {"slot", "rotation"}, {"action", "set"}, {"form", "axis"}, {"ic", "X"}, {"ac", "Y"}, {"way", "shortest"},
   };
   if (key == "text") return Expr::string("x");
   if (key == "rapid") return Expr::boolean(false);

@@ -311,6 +311,7 @@ std::string steps(const std::vector<CycleStep> &s) {
     case CycleStepKind::SpindleStop: std::snprintf(b, sizeof b, "S0 "); break;
     case CycleStepKind::SpindleCW: std::snprintf(b, sizeof b, "CW "); break;
     case CycleStepKind::SpindleCCW: std::snprintf(b, sizeof b, "CCW "); break;
+    case CycleStepKind::SpindleOrient: std::snprintf(b, sizeof b, "O%g ", st.angle); break;
     }
     out += b;
   }

@@ -404,7 +404,7 @@ TEST(IRVerifier, ModeValues) {
 
 TEST(IRVerifier, EnumeratedValuesAndVariables) {
   EXPECT_EQ(verify("spindle dir=cw\ncoolant flood=on mist=off\nstop kind=end_rewind\n"), "");
-  EXPECT_EQ(verify("spindle dir=left\n"), "'spindle' argument 'dir' must be one of: cw ccw stop");
+  EXPECT_EQ(verify("spindle dir=left\n"), "'spindle' argument 'dir' must be one of: cw ccw stop orient");
   EXPECT_EQ(verify("assign target=5 value=1\n"), "'assign' argument 'target' must be a variable");
   EXPECT_EQ(verify("declare var=%x type=REAL init=0.5\n"), "");
   EXPECT_EQ(verify("declare var=%x type=float\n"),
