@@ -27,11 +27,11 @@ constexpr CycleInfo kCycles[] = {
 
 // The move off the wall of G76/G87: Q along the plane axis the lift setting names (808D _ZSFI[5]:
 // 1 +a1, 0 or 2 -a1, 3 +a2, 4 -a2).
-void liftShift(const CycleInput &in, double out[2]) {
+void liftShift(const CycleInput &in, double out[3]) {
   static const int kAxis[] = {0, 0, 0, 1, 1};
   static const double kSign[] = {-1, 1, -1, 1, -1};
   int l = in.lift >= 0 && in.lift <= 4 ? in.lift : 0;
-  out[0] = out[1] = 0;
+  out[0] = out[1] = out[2] = 0;
   out[kAxis[l]] = kSign[l] * in.q;
 }
 
@@ -59,7 +59,7 @@ HoleSpec isoHole(const CycleInput &in, double r, double bottom, double clear) {
   case ModeValue::BoreStop: h.exit = HoleExit::SpindleStopRapid, h.dwellBottom = in.p; break;
   case ModeValue::BoreDwell: h.exit = HoleExit::Feed, h.exitLevel = clear, h.exitRapid = false, h.dwellBottom = in.p; break;
   case ModeValue::BoreFine:
-    h.exit = HoleExit::OrientShift, h.dwellBottom = in.p, h.orientAngle = in.orientAngle;
+    h.exit = HoleExit::OrientShift, h.dwellBottom = in.p, h.orientAngle = in.orientAngle, h.exitLevel = clear;
     liftShift(in, h.shift);
     break;
   default: break;

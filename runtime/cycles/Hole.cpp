@@ -48,6 +48,15 @@ public:
     rapidAt(to, shift, true, shift);
     rapidAt(to, nullptr, false, shift);
   }
+  void feedAt(double level, const double *shift, double f) {
+    CycleStep st;
+    st.kind = CycleStepKind::Feed;
+    st.pos[a1_] = p1_ + shift[0];
+    st.pos[a2_] = p2_ + shift[1];
+    st.pos[d_] = level;
+    st.feed = f;
+    out_.push_back(st);
+  }
 
 private:
   void move(CycleStepKind k, double level, double f) {
@@ -113,12 +122,24 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
     w.rapid(h.retract);
     w.spindleOn(h.spindle);
     break;
-  case HoleExit::OrientShift:
+  case HoleExit::OrientShift: {
     w.dwell(h.dwellBottom);
     w.orient(h.orientAngle);
-    w.liftOut(h.bottom, h.retract, h.shift);
-    w.spindleOn(h.spindle);
+    const double *s = h.shift;
+    const double lifted = h.bottom + s[2];
+    if (s[0] != 0 || s[1] != 0 || s[2] != 0) w.rapidAt(lifted, s, true, s);
+    if (h.exitFeed > 0) w.feedAt(h.exitLevel, s, h.exitFeed);
+    else if (h.exitLevel != lifted) w.rapidAt(h.exitLevel, s, true, s);
+    if (h.centreAtExit) {
+      w.rapidAt(h.exitLevel, nullptr, false, s);
+      if (h.retract != h.exitLevel) w.rapid(h.retract);
+    } else {
+      if (h.retract != h.exitLevel) w.rapidAt(h.retract, s, true, s);
+      w.rapidAt(h.retract, nullptr, false, s);
+    }
+    if (h.restart) w.spindleOn(h.spindle);
     break;
+  }
   case HoleExit::Tap: {
     // Reverse at the bottom, feed straight out, restore the direction (rs274 order: the dwell
     // comes after the reversal).

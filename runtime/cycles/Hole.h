@@ -27,8 +27,10 @@ enum class HoleExit : uint8_t {
   Feed,             // feed to `exitLevel` at exitFeed, then (exitRapid) rapid to `retract` (G85, G89, 201)
   SpindleStopRapid, // spindle stop, rapid to `retract`, spindle on again (G86)
   Tap,              // spindle reverse, feed to `retract`, spindle forward again (G84, G74)
-  OrientShift,      // oriented stop at `orientAngle`, shift by `shift` off the wall, rapid to
-                    // `retract`, shift back, spindle on again (808D/Fanuc G76, Sinumerik CYCLE86)
+  OrientShift,      // oriented stop at `orientAngle`, a rapid by `shift` off the wall, out to
+                    // `exitLevel` (at `exitFeed`, 0 rapid) and `retract`, back to the centre at
+                    // `exitLevel` (`centreAtExit`) or at `retract`, spindle on again unless
+                    // `restart` is false (808D/Fanuc G76, Sinumerik CYCLE86, Heidenhain 202)
 };
 
 struct HoleSpec {
@@ -59,7 +61,8 @@ struct HoleSpec {
   bool exitRapid = true;
   int spindle = 1;  // direction before the cycle (1 cw, 2 ccw): G86 restart, tapping
   double orientAngle = 0;        // OrientShift: the spindle angle that turns the edge off the wall
-  double shift[2] = {0, 0};      // OrientShift: the move off the wall along the plane axes a1, a2
+  double shift[3] = {0, 0, 0};   // OrientShift: the move off the wall along a1, a2 and the drilling axis
+  bool centreAtExit = false, restart = true;
 };
 
 // Back boring (808D/Fanuc G87, Heidenhain 204): at the `start` level above the hole the spindle
@@ -72,7 +75,7 @@ struct BackBoreSpec {
   double feed = 0;     // 0: the programmed feed
   double dwell = -1;   // seconds at cutLevel (< 0: none)
   double orientAngle = 0;
-  double shift[2] = {0, 0};
+  double shift[3] = {0, 0, 0};  // the third (drilling axis) is not used
   int spindle = 1;     // 1 cw, 2 ccw
 };
 void backBoreSteps(const BackBoreSpec &b, int a1, int a2, int d, double p1, double p2, std::vector<CycleStep> &out);

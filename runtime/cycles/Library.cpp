@@ -160,6 +160,29 @@ bool sinCycle85(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
   return true;
 }
 
+// CYCLE86 (seed000c, [model]): spindle on per SDIR, in at the active feed, dwell DTB, oriented
+// stop at POSS, lift-off RPA RPO (plane axes) RPAP (tool axis) unless _GMODE 1, rapid out to
+// RFP + SDIS, back to the centre there, rapid to RTP, spindle on again.
+bool sinCycle86(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  SinHole s;
+  if (!sinLevels(a, ctx, s, err)) return false;
+  int sdir = (int)a.get("SDIR");
+  if (sdir != 3 && sdir != 4) return fail(err, "SDIR (spindle direction) must be 3 (M3) or 4 (M4)");
+  HoleSpec h;
+  h.start = s.start, h.bottom = s.bottom, h.retract = s.rtp;
+  if (!sinDwell(a, "DTB", 2, ctx, h.dwellBottom, err)) return false;
+  h.exit = HoleExit::OrientShift;
+  h.orientAngle = a.get("POSS");
+  h.exitLevel = s.start, h.centreAtExit = true;
+  h.spindle = sdir == 4 ? 2 : 1;
+  if (digit(a.get("_GMODE"), 1) == 0) h.shift[0] = a.get("RPA"), h.shift[1] = a.get("RPO"), h.shift[2] = a.get("RPAP");
+  CycleStep on;
+  on.kind = sdir == 4 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW;
+  out.push_back(on);
+  hole(h, s.plane, ctx, out);
+  return true;
+}
+
 // ---- Heidenhain drilling cycles (seed002a 200, 201, 203): Q200 set-up clearance, Q201 depth
 // (its sign is the direction; 0: the cycle does nothing), Q203 surface, Q204 2nd set-up clearance.
 struct HeiLevels {
@@ -208,13 +231,19 @@ bool hei200(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
-bool hei201(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  HeiLevels l;
-  if (!heiLevels(a, l, err)) return false;
-  if (a.get("Q201") == 0) return true;
-  HoleSpec h;
+// One pass at Q206 from the set-up clearance to the depth, out to the 2nd set-up clearance: the
+// common part of 201, 202 and 206. False with err set, or with err empty when the depth is 0.
+bool heiHole(const CycleArgs &a, HoleSpec &h, HeiLevels &l, std::string &err) {
+  if (!heiLevels(a, l, err) || a.get("Q201") == 0) return false;
   h.start = l.zsc, h.bottom = l.bottom, h.retract = l.z2;
   h.feed = a.get("Q206");
+  return true;
+}
+
+bool hei201(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiLevels l;
+  HoleSpec h;
+  if (!heiHole(a, h, l, err)) return err.empty();
   h.dwellBottom = heiDwell(a, "Q211");
   h.exit = HoleExit::Feed, h.exitLevel = l.zsc;
   h.exitFeed = a.get("Q208") > 0 ? a.get("Q208") : h.feed;
@@ -233,6 +262,93 @@ bool hei203(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   h.fullRetractFeed = a.get("Q208") > 0 ? a.get("Q208") : h.feed;
   h.dwellBottom = heiDwell(a, "Q211");
   hole(h, ctx.plane, ctx, out);
+  return true;
+}
+
+// 202 BORING: in at Q206, dwell Q211, oriented stop at Q336, 0.2 mm off the wall towards Q214
+// (1 -a1, 2 -a2, 3 +a1, 4 +a2; 0 none), out at Q208 to the set-up clearance, rapid to the 2nd,
+// back to the centre, spindle on again ([model]: the manual does not say; as before the cycle).
+bool hei202(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiLevels l;
+  HoleSpec h;
+  if (!heiHole(a, h, l, err)) return err.empty();
+  int q214 = (int)a.get("Q214");
+  if (q214 < 0 || q214 > 4 || q214 != a.get("Q214")) return fail(err, "Q214 (disengaging direction) must be 0..4");
+  if (ctx.spindle == 0) return fail(err, "202 needs the spindle turning (M3/M4) before the cycle");
+  h.dwellBottom = heiDwell(a, "Q211");
+  h.exit = HoleExit::OrientShift;
+  h.orientAngle = a.get("Q336");
+  h.exitLevel = l.zsc;
+  h.exitFeed = a.get("Q208") > 0 ? a.get("Q208") : h.feed;
+  h.spindle = ctx.spindle;
+  static const int kAxis[] = {0, 0, 1, 0, 1};
+  static const double kSign[] = {0, -1, -1, 1, 1};
+  h.shift[kAxis[q214]] = 0.2 * kSign[q214];
+  hole(h, ctx.plane, ctx, out);
+  return true;
+}
+
+// 206 TAPPING with a floating holder: in at Q206 (= S x pitch), reverse, dwell Q211, out at Q206
+// to the set-up clearance, forward again there, rapid to the 2nd set-up clearance. The thread's
+// hand is the spindle's direction (M3 right, M4 left).
+bool hei206(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiLevels l;
+  HoleSpec h;
+  if (!heiHole(a, h, l, err)) return err.empty();
+  if (ctx.spindle == 0) return fail(err, "206 needs the spindle turning (M3/M4) before the cycle");
+  h.retract = l.zsc;
+  h.exitFeed = h.feed;
+  h.dwellBottom = heiDwell(a, "Q211");
+  h.exit = HoleExit::Tap;
+  h.spindle = ctx.spindle;
+  hole(h, ctx.plane, ctx, out);
+  if (l.z2 != l.zsc) {
+    CycleStep st;  // at the hole (the cycle runs at ctx.position)
+    st.pos = ctx.position;
+    st.pos[planeAxes((Plane)ctx.plane).n] = l.z2;
+    out.push_back(st);
+  }
+  return true;
+}
+
+// 207 RIGID TAPPING: the feed is S x |Q239| (spindle-synchronised), the hand the sign of Q239
+// (+ right-hand, M3; - left-hand, M4); reverse at the bottom, out to the set-up clearance where
+// the spindle stops, rapid to the 2nd; a spindle that turned before the cycle turns again.
+bool hei207(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  for (const char *k : {"Q200", "Q201", "Q239", "Q203"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  if (a.get("Q201") == 0) return true;
+  double pitch = a.get("Q239");
+  if (pitch == 0) return fail(err, "Q239 (thread pitch) must not be 0");
+  if (!(ctx.speed > 0)) return fail(err, "207 needs a spindle speed: the feed is S x pitch");
+  CycleArgs b = a;
+  b.num["Q206"] = ctx.speed * std::fabs(pitch);
+  HeiLevels l;
+  if (!heiLevels(b, l, err)) return false;
+  HoleSpec h;
+  h.start = l.zsc, h.bottom = l.bottom, h.retract = l.zsc;
+  h.feed = h.exitFeed = b.get("Q206");
+  h.exit = HoleExit::Tap;
+  h.spindle = pitch > 0 ? 1 : 2;
+  const size_t first = out.size();
+  hole(h, ctx.plane, ctx, out);
+  if (ctx.spindle != h.spindle) {  // the tapping direction before the infeed
+    CycleStep on;
+    on.kind = h.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW;
+    out.insert(out.begin() + (long)first, on);
+  }
+  out.pop_back();  // Tap turns forward again at the top: 207 leaves the spindle stopped there
+  if (l.z2 != l.zsc) {
+    CycleStep st;
+    st.pos = ctx.position;
+    st.pos[planeAxes((Plane)ctx.plane).n] = l.z2;
+    out.push_back(st);
+  }
+  if (ctx.spindle != 0) {
+    CycleStep on;
+    on.kind = ctx.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW;
+    out.push_back(on);
+  }
   return true;
 }
 
@@ -296,6 +412,8 @@ const std::vector<CycleDef> kLibrary = {
      "RTP RFP SDIS DP DPR FDEP FDPR _DAM DTB DTS FRF VARI _AXN _MDEP _VRT _DTD _DIS1 _GMODE _DMODE _AMODE",
      "Sinumerik deep-hole drilling", sinCycle83, nullptr},
     {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr},
+    {"sin.CYCLE86", "RTP RFP SDIS DP DPR DTB SDIR RPA RPO RPAP POSS _GMODE _DMODE _AMODE",
+     "Sinumerik boring with oriented stop and lift-off", sinCycle86, nullptr},
     {"sin.HOLES1", "SPCA SPCO STA1 FDIS DBH NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik row of holes", nullptr,
      sinHoles1},
     {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
@@ -304,6 +422,9 @@ const std::vector<CycleDef> kLibrary = {
     {"hei.201", "Q200 Q201 Q206 Q211 Q208 Q203 Q204", "Heidenhain reaming", hei201, nullptr},
     {"hei.203", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395",
      "Heidenhain universal drilling", hei203, nullptr},
+    {"hei.202", "Q200 Q201 Q206 Q211 Q208 Q203 Q204 Q214 Q336", "Heidenhain boring", hei202, nullptr},
+    {"hei.206", "Q200 Q201 Q206 Q211 Q203 Q204", "Heidenhain tapping with a floating holder", hei206, nullptr},
+    {"hei.207", "Q200 Q201 Q239 Q203 Q204", "Heidenhain rigid tapping", hei207, nullptr},
     {"hei.220", "Q216 Q217 Q244 Q245 Q246 Q247 Q241 Q200 Q203 Q204 Q301 Q365", "Heidenhain polar pattern", nullptr,
      hei220},
     {"hei.221", "Q225 Q226 Q237 Q238 Q242 Q243 Q224 Q200 Q203 Q204 Q301", "Heidenhain Cartesian pattern", nullptr,
