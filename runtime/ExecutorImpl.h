@@ -36,6 +36,7 @@ struct Executor::Impl {
   Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), compOut(s), comp(compOut) {
     g5x = m.workOffsets;
     offsetWrite = m.controller.offsetWritePolicy();
+    toolWrite = m.controller.toolWritePolicy();
     paramUnit = m.controller.parameterUnits == "inch" ? 25.4 : 1.0;
     applyWorkOffset();
     home[0] = m.home1;
@@ -178,15 +179,19 @@ struct Executor::Impl {
   // Tool data of a T/H/D number; an error naming it when the machine has no such tool.
   const ToolData *tool(double n, const char *word);  // findTool, or an error naming `word`
   const ToolData *findTool(double n) const;
-  // Tool offsets as the program changed them (G10 L1/L10/L11, Fanuc G10 L10-L13), over the
-  // machine's table: geometry and wear of the number's edge, and `data`, their sum, which tool()
-  // returns. A change applies at the next G43/H or D, as in rs274.
-  struct EditedTool {
-    ToolEdge edge;
-    ToolData data;
-  };
-  std::map<int, EditedTool> toolEdits;
-  ToolEdge edgeOf(int n) const;
+  // Tool edges as the program changed them (G10 L1/L10-L13, `$_tool_data` writes), over the
+  // machine's table, by (tool, edge); and the data of the T/H/D numbers whose edge changed
+  // (geometry + wear), which tool() returns. When a change reaches the offset in use is the
+  // machine's tool_write (ToolWrite).
+  std::map<std::pair<int, int>, ToolEdge> edgeEdits;
+  std::map<int, ToolData> numberEdits;
+  ToolWrite toolWrite = ToolWrite::OnSelect;
+  int offsetEdge(int t) const;                 // the edge T/H/D number t uses
+  bool hasEdge(int t, int d) const;            // t a valid tool with edge d
+  ToolEdge edgeOf(int t, int d) const;         // geometry and wear, edited or the machine's
+  // Stores an edit; false with the problem and its rule id.
+  bool setEdge(int t, int d, const ToolEdge &e, std::string &err, const char *&rule);
+  bool toolDataRef(const SysRef &r, int &d, std::string &err) const;  // checks tool and edge
   bool execToolOffset(const MachineCmd &c);
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.
   bool checkAxisWords(const MachineCmd &c);

@@ -6,14 +6,15 @@
 #include "ir/Value.h"
 
 #include <cmath>
+#include <iterator>
 #include <fmt/format.h>
 
 namespace ncc {
 
 const ToolData *Executor::Impl::findTool(double n) const {
   if (!(n >= 0 && n <= 1e9 && n == std::floor(n))) return nullptr;
-  auto it = toolEdits.find((int)n);
-  return it != toolEdits.end() ? &it->second.data : machine.findTool((int)n);
+  auto it = numberEdits.find((int)n);
+  return it != numberEdits.end() ? &it->second : machine.findTool((int)n);
 }
 
 const ToolData *Executor::Impl::tool(double n, const char *word) {
@@ -27,14 +28,76 @@ const ToolData *Executor::Impl::tool(double n, const char *word) {
   return t;
 }
 
-// The geometry and wear behind number n (a valid tool number): edited, the machine's edge, or
-// zero for a number the table lacks (free_tools).
-ToolEdge Executor::Impl::edgeOf(int n) const {
-  if (auto it = toolEdits.find(n); it != toolEdits.end()) return it->second.edge;
-  auto t = machine.toolTable.find(n);
-  if (t == machine.toolTable.end() || t->second.edges.empty()) return {};
-  auto e = t->second.edges.find(1);  // T/H/D numbers use edge 1, or the only edge (Machine.cpp)
-  return e != t->second.edges.end() ? e->second : t->second.edges.begin()->second;
+namespace {
+// A field of an edge by ToolField (the k of $_tool_data[t, d, k]).
+double &fieldOf(ToolEdge &e, ToolField f) {
+  static constexpr double ToolEdge::*kFields[] = {&ToolEdge::length, &ToolEdge::radius, &ToolEdge::lengthWear,
+                                                  &ToolEdge::radiusWear};
+  static_assert(std::size(kFields) == (size_t)kToolFields);
+  return e.*kFields[(int)f];
+}
+}  // namespace
+
+// T/H/D numbers use edge 1, or the tool's only edge (Machine.cpp); a valid number the table
+// lacks (free_tools, a machine without tools) has edge 1 alone, with zero data.
+int Executor::Impl::offsetEdge(int t) const {
+  auto it = machine.toolTable.find(t);
+  if (it == machine.toolTable.end() || it->second.edges.count(1)) return 1;
+  return it->second.edges.begin()->first;
+}
+
+bool Executor::Impl::hasEdge(int t, int d) const {
+  if (t <= 0 || !findTool(t)) return false;
+  auto it = machine.toolTable.find(t);
+  return it != machine.toolTable.end() ? it->second.edges.count(d) > 0 : d == 1;
+}
+
+ToolEdge Executor::Impl::edgeOf(int t, int d) const {
+  if (auto it = edgeEdits.find({t, d}); it != edgeEdits.end()) return it->second;
+  auto tt = machine.toolTable.find(t);
+  if (tt == machine.toolTable.end()) return {};
+  auto e = tt->second.edges.find(d);
+  return e != tt->second.edges.end() ? e->second : ToolEdge{};
+}
+
+bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, const char *&rule) {
+  rule = "bad-number";
+  if (e.radius + e.radiusWear < 0) {
+    err = "tool radius (geometry + wear) would be negative";
+    return false;
+  }
+  if (d != offsetEdge(t)) {  // no T/H/D number uses it
+    edgeEdits[{t, d}] = e;
+    return true;
+  }
+  ToolData data{e.length + e.lengthWear, e.radius + e.radiusWear};
+  // Fanuc with EVO/EVR = 1: the offsets in use change from the next block. A new radius in the
+  // middle of a compensated path would need a transition ncc does not make.
+  bool now = toolWrite == ToolWrite::Immediate;
+  if (now && st.cutterComp != 0 && cutterD == t && data.radius != findTool(t)->radius) {
+    rule = "unsupported-code";
+    err = fmt::format("the radius of D{} changes during cutter compensation (tool_write \"immediate\"): not "
+                      "supported; write it before G41/G42",
+                      t);
+    return false;
+  }
+  edgeEdits[{t, d}] = e;
+  numberEdits[t] = data;
+  if (now && st.toolLengthH == t && toolLength != data.length) {
+    toolLength = data.length;
+    MotionRecord r = record(RecordKind::ToolLength);
+    r.value = toolLength;
+    r.ivalue = t;
+    emit(r);
+  }
+  return true;
+}
+
+bool Executor::Impl::toolDataRef(const SysRef &r, int &d, std::string &err) const {
+  d = r.edge == 0 ? offsetEdge(r.tool) : r.edge;
+  if (!findTool(r.tool)) err = fmt::format("tool {} not found in the tool table", r.tool);
+  else if (!hasEdge(r.tool, d)) err = fmt::format("tool {} has no edge {}", r.tool, d);
+  return err.empty();
 }
 
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {
@@ -43,7 +106,8 @@ bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   if (!tool(c.get(Word::P), "P")) return false;  // existing numbers only (808D: none can be created)
   int n = (int)c.get(Word::P);
   if (n == 0) return error("tool 0 (no tool) has no offsets", "unknown-tool");
-  ToolEdge e = edgeOf(n);
+  int d = offsetEdge(n);
+  ToolEdge e = edgeOf(n, d);
   double r = c.get(Word::R) * scale();
   switch (kind) {
   case SetOffsetKind::ToolSet:  // LinuxCNC's table holds one length and radius: no wear
@@ -65,18 +129,19 @@ bool Executor::Impl::execToolOffset(const MachineCmd &c) {
     if (st.distance == ModeValue::Incremental)
       return error("G10 L10-L13 in G91: whether R is added is not documented for this controller; program it in G90",
                    "unsupported-code");
-    static constexpr double ToolEdge::*kField[] = {&ToolEdge::length, &ToolEdge::lengthWear, &ToolEdge::radius,
-                                                   &ToolEdge::radiusWear};  // ToolLength … ToolRadiusWear
-    e.*kField[(int)kind - (int)SetOffsetKind::ToolLength] = r;
+    static constexpr ToolField kField[] = {ToolField::Length, ToolField::LengthWear, ToolField::Radius,
+                                           ToolField::RadiusWear};  // ToolLength … ToolRadiusWear
+    fieldOf(e, kField[(int)kind - (int)SetOffsetKind::ToolLength]) = r;
     break;
   }
   }
-  if (e.radius + e.radiusWear < 0) return error("tool radius (geometry + wear) would be negative", "bad-number");
-  toolEdits[n] = {e, ToolData{e.length + e.lengthWear, e.radius + e.radiusWear}};
-  return true;
+  std::string err;
+  const char *rule;
+  return setEdge(n, d, e, err, rule) || error(err, rule);
 }
 
-bool Executor::readSystem(SysVar v, double &out) const {
+bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) const {
+  SysVar v = ref.var;
   const Impl &x = *impl_;
   const ModalState &st = x.st;
   auto is = [&](bool b) { return b ? 1.0 : 0.0; };
@@ -103,6 +168,13 @@ bool Executor::readSystem(SysVar v, double &out) const {
   }
   switch (info.family) {
   case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
+  case SysFamily::ToolData: {
+    int d;
+    if (!x.toolDataRef(ref, d, err)) return false;
+    ToolEdge e = x.edgeOf(ref.tool, d);
+    out = fieldOf(e, (ToolField)info.axis) / x.paramUnit;
+    return true;
+  }
   case SysFamily::ToolOffset: {  // rs274 #5401…: the table entry of the tool in the spindle (not G43's)
     const ToolData *t = info.axis == 2 && st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
     out = t ? t->length / x.paramUnit : 0;
@@ -190,18 +262,28 @@ double *Executor::Impl::storedOffset(const SysVarInfo &info, double &unit) const
   }
 }
 
-bool Executor::writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) {
+bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::string &err) {
   Impl &x = *impl_;
+  SysVar v = ref.var;
   SysVarInfo info = sysVarInfo(v);
   double unit;
   double *p = sysVarWritable(v) ? x.storedOffset(info, unit) : nullptr;
-  if (!p) {
+  if (!p && info.family != SysFamily::ToolData) {
     err = fmt::format("system variable '${}' is read-only", sysVarName(v));
     return false;
   }
   if (!std::isfinite(value) || std::fabs(value) > 1e9) {
     err = fmt::format("system variable '${}': {} is not a valid offset", sysVarName(v), numberText(value));
     return false;
+  }
+  if (info.family == SysFamily::ToolData) {
+    int d;
+    if (!x.toolDataRef(ref, d, err)) return false;
+    ToolEdge e = x.edgeOf(ref.tool, d);
+    fieldOf(e, (ToolField)info.axis) = value * x.paramUnit;
+    x.loc = loc;
+    const char *rule;
+    return x.setEdge(ref.tool, d, e, err, rule);
   }
   *p = value * unit;
   // G92 values wait for G92.3 and reference points for G28/G30, as in rs274; a work offset of

@@ -225,6 +225,19 @@ void readMacroCalls(Ctx &c, const toml::node &n, void *obj) {
   }
 }
 
+// Fanuc tool compensation memory A and B keep one value (A) or one geometry and one wear (B) per
+// offset number for H and D alike; the tool table keeps length and radius apart, which only
+// memory C matches.
+void readOffsetMemory(Ctx &c, const toml::node &n, void *obj) {
+  auto s = readString(c, n, "offset_memory", "none A B C");
+  if (!s) return;
+  if (*s == "A" || *s == "B")
+    return c.error(n.source(), "offset_memory: memory " + *s +
+                                   " (one register per offset number for H and D) cannot hold the tool table's separate "
+                                   "length and radius; ncc models \"none\" and \"C\"");
+  static_cast<Controller *>(obj)->offsetMemory = *s;
+}
+
 // The codes `startup` accepts and their modes.
 const struct {
   const char *code;
@@ -278,6 +291,8 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"macro_calls", NodeReader(readMacroCalls)},
     {"offset_write", &Controller::offsetWrite, 0, 0, false, "immediate on-select on-change"},
     {"parameter_units", &Controller::parameterUnits, 0, 0, false, "mm inch"},
+    {"tool_write", &Controller::toolWrite, 0, 0, false, "on-select immediate"},
+    {"offset_memory", NodeReader(readOffsetMemory)},
 };
 
 void readAxisKind(Ctx &c, const toml::node &n, void *obj) {

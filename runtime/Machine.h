@@ -43,6 +43,11 @@ struct Tool {
 // (LinuxCNC, whose G54 in G54 "continues to use the same coordinate system"). G10 L2/L20 of the
 // active system applies its table at once in every profile.
 enum class OffsetWrite : uint8_t { Immediate, OnSelect, OnChange };
+// When a tool offset a program writes (G10 L1/L10-L13, Fanuc #2001…, NC IR `$_tool_data`,
+// later Sinumerik $TC_DP…) takes effect for the offset in use (the active G43 H, the D of cutter
+// compensation): at the next H/D/T selection (Sinumerik; Fanuc with parameters EVO/EVR = 0;
+// rs274), or at once, from the next block (Fanuc EVO/EVR = 1).
+enum class ToolWrite : uint8_t { OnSelect, Immediate };
 
 // The controller profile: data for the dialect front ends (docs/MACHINE.md says which are used).
 struct Controller {
@@ -73,6 +78,12 @@ struct Controller {
   // The length unit of offsets, G92 values and reference points as programs read and write
   // them (LinuxCNC #5161-#5390: the machine's LINEAR_UNITS; stand-alone rs274: inch).
   std::string parameterUnits = "mm";
+  // Key tool_write: "on-select" (default) or "immediate".
+  std::string toolWrite = "on-select";
+  ToolWrite toolWritePolicy() const { return toolWrite == "immediate" ? ToolWrite::Immediate : ToolWrite::OnSelect; }
+  // Key offset_memory: which Fanuc Custom Macro B variables read and write the tool offsets
+  // (#2001…, #10001…): "none" (they are errors) or "C" (H and D, geometry and wear apart).
+  std::string offsetMemory = "none";
 };
 
 // One problem of a machine description; line 0 = not located (an unreadable file).
