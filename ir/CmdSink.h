@@ -21,7 +21,7 @@ public:
   // Assigns one (sysVarWritable) by the assignment at `loc`; false with the reason in err, which
   // the engine reports.
   virtual bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) {
-    err = std::string("system variable '") + sysVarName(v.var) + "' cannot be written here";
+    err = "system variable '" + sysRefText(v) + "' cannot be written here";
     return false;
   }
   // A call of a function with the SAVE attribute: saveModal before it runs, restoreModal after

@@ -56,6 +56,12 @@ bool sysVarFromName(std::string_view name, SysVar &out) {
 
 const char *sysVarName(SysVar v) { return (size_t)v < allNames().size() ? allNames()[(size_t)v].c_str() : "?"; }
 
+std::string sysRefText(const SysRef &r) {
+  SysVarInfo info = sysVarInfo(r.var);
+  if (info.family != SysFamily::ToolData) return sysVarName(r.var);
+  return "_tool_data[" + std::to_string(r.tool) + ", " + std::to_string(r.edge) + ", " + std::to_string(info.axis) + "]";
+}
+
 SysVarInfo sysVarInfo(SysVar v) {
   int id = (int)v - (int)SysVar::Count;
   if (id < 0 || id >= kSysVarIds - (int)SysVar::Count) return {};

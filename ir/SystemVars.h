@@ -90,5 +90,7 @@ bool sysFamilyWritable(SysFamily f);
 // `name` is none (tool data has no flat names: it needs a tool and an edge). Names are lower case.
 bool sysVarFromName(std::string_view name, SysVar &out);
 const char *sysVarName(SysVar v);
+// How messages name a reference: the name, or tool data with its indices ("_tool_data[1, 2, 0]").
+std::string sysRefText(const SysRef &r);
 
 }  // namespace ncc

@@ -264,16 +264,13 @@ double *Executor::Impl::storedOffset(const SysVarInfo &info, double &unit) const
 
 bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::string &err) {
   Impl &x = *impl_;
-  SysVar v = ref.var;
-  SysVarInfo info = sysVarInfo(v);
-  double unit;
-  double *p = sysVarWritable(v) ? x.storedOffset(info, unit) : nullptr;
-  if (!p && info.family != SysFamily::ToolData) {
-    err = fmt::format("system variable '${}' is read-only", sysVarName(v));
+  SysVarInfo info = sysVarInfo(ref.var);
+  if (!sysVarWritable(ref.var)) {
+    err = fmt::format("system variable '${}' is read-only", sysRefText(ref));
     return false;
   }
   if (!std::isfinite(value) || std::fabs(value) > 1e9) {
-    err = fmt::format("system variable '${}': {} is not a valid offset", sysVarName(v), numberText(value));
+    err = fmt::format("system variable '${}': {} is not a valid offset", sysRefText(ref), numberText(value));
     return false;
   }
   if (info.family == SysFamily::ToolData) {
@@ -285,6 +282,8 @@ bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::
     const char *rule;
     return x.setEdge(ref.tool, d, e, err, rule);
   }
+  double unit;
+  double *p = x.storedOffset(info, unit);  // sets unit: its own statement
   *p = value * unit;
   // G92 values wait for G92.3 and reference points for G28/G30, as in rs274; a work offset of
   // the active system applies now only where the controller says so.

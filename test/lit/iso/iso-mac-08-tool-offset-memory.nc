@@ -16,7 +16,7 @@ G43 H2 Z10.
 G49 Z0
 M30
 %
-; FEATURES: ISO-MAC-08 ISO-TOOL-03 ISO-TOOL-04
+; FEATURES: ISO-MAC-08 ISO-TOOL-03 ISO-TOOL-04 ISO-TOOL-08
 ; Fanuc Custom Macro B tool compensation memory C on the Fanuc sample machine (offset_memory
 ; "C", G54 = -255 -205 -300; tool 1 L110 R6, tool 2 L130 R3.4, tool 10 L90 length wear -0.03):
 ; #2201 (H1 geometry) and #13001 (D1 geometry) read 110 and 6, #11010 and #2010 read 90 and
@@ -54,6 +54,15 @@ M30
 ; NOW-NEXT: rapid X-205 Y-205 Z-149 {{.*}} @14:1
 ; NOW-NEXT: tool_length 141 H2 @15:1
 ; NOW-NEXT: rapid X-205 Y-205 Z-149 {{.*}} @15:1
+; The same rule for G10 L10 of the active H: at once with "immediate", at the next G43 H1 else.
+; RUN: printf 'G43 H1 G0 Z0\nG10 L10 P1 R120.\nG0 Z0\nM30\n' > %t.g10.nc
+; RUN: %ncc compile --emit=motion --machine=%t.toml %t.g10.nc | FileCheck %s --check-prefix=G10NOW
+; G10NOW: rapid X0 Y0 Z-190 {{.*}} @1:8
+; G10NOW-NEXT: tool_length 120 H1 @2:1
+; G10NOW-NEXT: rapid X0 Y0 Z-180 {{.*}} @3:1
+; RUN: %ncc compile --emit=motion --engine=jit --machine=%S/../../../examples/machines/fanuc-0i-mill.toml %t.g10.nc | FileCheck %s --check-prefix=G10SEL
+; G10SEL: rapid X0 Y0 Z-190 {{.*}} @1:8
+; G10SEL-NEXT: rapid X0 Y0 Z-190 {{.*}} @3:1
 ; Without offset memory (the default machine) the numbers are errors, not plain variables; an
 ; offset number the table lacks stops the run.
 ; RUN: not %ncc compile --emit=ir %s 2>&1 | FileCheck %s --check-prefix=NONE
