@@ -54,8 +54,9 @@ constexpr int kToolDataIds = (int)SysVar::Count + 9 * 7 + 5 * 6;  // the first t
 constexpr int kSysVarIds = kToolDataIds + kToolFields;
 static_assert(kSysVarIds < (int)kNoSysVar);
 
-// What an engine reads or writes: the id and, for tool data, the tool and the edge (0 = the
-// edge the tool's H/D offset number uses: edge 1 or its only edge, docs/MACHINE.md).
+// What an engine reads or writes: the id and, for tool data, the tool and the edge (edge 0: the
+// tool is an H/D offset number, the edge it addresses: tool n's edge 1 or only edge, or the
+// machine's offset_numbers; docs/MACHINE.md).
 struct SysRef {
   SysVar var = kNoSysVar;
   int32_t tool = 0, edge = 0;
@@ -67,7 +68,7 @@ SysRef sysRefFromNumber(double n);
 // Indexed access: a family's base name with run-time indices, `$_work_offset[s, a]` (system s
 // 1..9, axis a 0..5 = X..C or 6 = the XY rotation R) and `$_g92[a]`, `$_home1[a]`, `$_home2[a]`,
 // `$_abs[a]`, `$_tool_offsets[a]` (a 0..5; `$_tool_offset` is LinuxCNC's "length offset on"),
-// `$_tool_data[t, d, k]` (tool 1..99999, edge 0..99999, field 0..3).
+// `$_tool_data[t, d, k]` (tool 1..99999, edge 0..99999 with 0 = t is an offset number, field 0..3).
 // An index of an axis family may be an axis symbol (X … C), resolved when the program is
 // compiled (axisIndex). Returns the number of indices the family takes, 0 when `name` is not a family.
 int sysFamilyFromName(std::string_view name, SysFamily &out);

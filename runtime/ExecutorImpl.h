@@ -176,22 +176,29 @@ struct Executor::Impl {
   // The offset frame's plane `pl` maps onto the same machine plane with equal scale on both axes
   // (so an arc stays a circle in that plane); `flip` when it mirrors the plane.
   bool frameKeepsPlane(Plane pl, bool &flip) const;
-  // Tool data of a T/H/D number; an error naming it when the machine has no such tool.
-  const ToolData *tool(double n, const char *word);  // findTool, or an error naming `word`
-  const ToolData *findTool(double n) const;
+  // Tool data (ExecutorState.cpp). T numbers name tools; an H or D offset number (and G10's P,
+  // Fanuc's #2001…) names an edge: tool n's edge 1 or only edge, or on a machine with
+  // offset_numbers (808D $TC_DPH) the edge it maps n to.
+  bool toolExists(double n) const;              // T number n is valid (0 = no tool)
+  bool checkTool(double n, const char *word);   // toolExists, or an error naming `word`
+  bool offsetRef(int n, int &t, int &d) const;  // the edge offset number n > 0 addresses
+  std::string noOffsetMessage(long long n) const;
+  // Geometry + wear of offset number n (0: none); false after an error naming `word`.
+  bool offsetData(double n, const char *word, ToolData &out);
+  ToolData toolNumberData(int t) const;  // tool t's edge 1 or only edge (rs274 #5401, #5410)
   // Tool edges as the program changed them (G10 L1/L10-L13, `$_tool_data` writes), over the
-  // machine's table, by (tool, edge); and the data of the T/H/D numbers whose edge changed
-  // (geometry + wear), which tool() returns. When a change reaches the offset in use is the
-  // machine's tool_write (ToolWrite).
+  // machine's table, by (tool, edge). When a change reaches the offset in use is the machine's
+  // tool_write (ToolWrite).
   std::map<std::pair<int, int>, ToolEdge> edgeEdits;
-  std::map<int, ToolData> numberEdits;
   ToolWrite toolWrite = ToolWrite::OnSelect;
-  int offsetEdge(int t) const;                 // the edge T/H/D number t uses
-  bool hasEdge(int t, int d) const;            // t a valid tool with edge d
-  ToolEdge edgeOf(int t, int d) const;         // geometry and wear, edited or the machine's
+  int offsetEdge(int t) const;          // tool t's edge 1 or only edge
+  bool hasEdge(int t, int d) const;     // t a valid tool with edge d
+  ToolEdge edgeOf(int t, int d) const;  // geometry and wear, edited or the machine's
   // Stores an edit; false with the problem and its rule id.
   bool setEdge(int t, int d, const ToolEdge &e, std::string &err, const char *&rule);
-  bool toolDataRef(const SysRef &r, int &d, std::string &err) const;  // checks tool and edge
+  // The tool and edge of a tool data reference (edge 0: tool is an offset number); false with
+  // the reason when the machine lacks them.
+  bool toolDataRef(const SysRef &r, int &t, int &d, std::string &err) const;
   bool execToolOffset(const MachineCmd &c);
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.
   bool checkAxisWords(const MachineCmd &c);

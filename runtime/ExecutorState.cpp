@@ -11,22 +11,51 @@
 
 namespace ncc {
 
-const ToolData *Executor::Impl::findTool(double n) const {
-  if (!(n >= 0 && n <= 1e9 && n == std::floor(n))) return nullptr;
-  auto it = numberEdits.find((int)n);
-  return it != numberEdits.end() ? &it->second : machine.findTool((int)n);
+namespace {
+bool wholeNumber(double n) { return n >= 0 && n <= 1e9 && n == std::floor(n); }
+ToolData resulting(const ToolEdge &e) { return {e.length + e.lengthWear, e.radius + e.radiusWear}; }
+// rs274's text for a T, H or D number the table lacks; tool data references use it too.
+std::string unknownTool(long long n) { return "Requested tool " + std::to_string(n) + " not found in the tool table"; }
+}  // namespace
+
+bool Executor::Impl::toolExists(double n) const { return wholeNumber(n) && machine.findTool((int)n); }
+
+bool Executor::Impl::checkTool(double n, const char *word) {
+  if (!wholeNumber(n)) return error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
+  if (!toolExists(n)) return error(unknownTool((long long)n), "unknown-tool");
+  return true;
 }
 
-const ToolData *Executor::Impl::tool(double n, const char *word) {
-  const ToolData *t = findTool(n);
-  if (!t) {
-    if (n < 0 || n > 1e9 || n != std::floor(n))
-      error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
-    else
-      error("Requested tool " + std::to_string((long long)n) + " not found in the tool table", "unknown-tool");
+bool Executor::Impl::offsetRef(int n, int &t, int &d) const {
+  const auto &map = machine.controller.offsetNumbers;
+  if (!map.empty()) {
+    auto it = map.find(n);
+    if (it == map.end()) return false;
+    t = it->second.first, d = it->second.second;
+    return true;
   }
-  return t;
+  if (n <= 0 || !toolExists(n)) return false;
+  t = n, d = offsetEdge(n);
+  return true;
 }
+
+std::string Executor::Impl::noOffsetMessage(long long n) const {
+  return machine.controller.offsetNumbers.empty()
+             ? unknownTool(n)
+             : "offset number " + std::to_string(n) + " is not in the machine's offset_numbers";
+}
+
+bool Executor::Impl::offsetData(double n, const char *word, ToolData &out) {
+  if (!wholeNumber(n)) return error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
+  out = {};
+  int t, d;
+  if (n == 0) return true;
+  if (!offsetRef((int)n, t, d)) return error(noOffsetMessage((long long)n), "unknown-tool");
+  out = resulting(edgeOf(t, d));
+  return true;
+}
+
+ToolData Executor::Impl::toolNumberData(int t) const { return resulting(edgeOf(t, offsetEdge(t))); }
 
 namespace {
 // A field of an edge by ToolField (the k of $_tool_data[t, d, k]).
@@ -47,7 +76,7 @@ int Executor::Impl::offsetEdge(int t) const {
 }
 
 bool Executor::Impl::hasEdge(int t, int d) const {
-  if (t <= 0 || !findTool(t)) return false;
+  if (t <= 0 || !toolExists(t)) return false;
   auto it = machine.toolTable.find(t);
   return it != machine.toolTable.end() ? it->second.edges.count(d) > 0 : d == 1;
 }
@@ -66,15 +95,15 @@ bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, 
     err = "tool radius (geometry + wear) would be negative";
     return false;
   }
-  if (d != offsetEdge(t)) {  // no T/H/D number uses it
-    edgeEdits[{t, d}] = e;
-    return true;
-  }
-  ToolData data{e.length + e.lengthWear, e.radius + e.radiusWear};
+  ToolData data = resulting(e);
   // Fanuc with EVO/EVR = 1: the offsets in use change from the next block. A new radius in the
   // middle of a compensated path would need a transition ncc does not make.
   bool now = toolWrite == ToolWrite::Immediate;
-  if (now && st.cutterComp != 0 && cutterD == t && data.radius != findTool(t)->radius) {
+  auto inUse = [&](int number) {
+    int nt, nd;
+    return number > 0 && offsetRef(number, nt, nd) && nt == t && nd == d;
+  };
+  if (now && st.cutterComp != 0 && inUse(cutterD) && data.radius != resulting(edgeOf(t, d)).radius) {
     rule = "unsupported-code";
     err = fmt::format("the radius of D{} changes during cutter compensation (tool_write \"immediate\"): not "
                       "supported; write it before G41/G42",
@@ -82,32 +111,33 @@ bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, 
     return false;
   }
   edgeEdits[{t, d}] = e;
-  numberEdits[t] = data;
-  if (now && st.toolLengthH == t && toolLength != data.length) {
+  if (now && inUse(st.toolLengthH) && toolLength != data.length) {
     toolLength = data.length;
     MotionRecord r = record(RecordKind::ToolLength);
     r.value = toolLength;
-    r.ivalue = t;
+    r.ivalue = st.toolLengthH;
     emit(r);
   }
   return true;
 }
 
-bool Executor::Impl::toolDataRef(const SysRef &r, int &d, std::string &err) const {
-  d = r.edge == 0 ? offsetEdge(r.tool) : r.edge;
-  if (!findTool(r.tool)) err = fmt::format("tool {} not found in the tool table", r.tool);
-  else if (!hasEdge(r.tool, d)) err = fmt::format("tool {} has no edge {}", r.tool, d);
+bool Executor::Impl::toolDataRef(const SysRef &r, int &t, int &d, std::string &err) const {
+  t = r.tool, d = r.edge;
+  if (r.edge == 0 && !offsetRef(r.tool, t, d)) err = noOffsetMessage(r.tool);
+  else if (!toolExists(t)) err = unknownTool(t);
+  else if (!hasEdge(t, d)) err = fmt::format("tool {} has no edge {}", t, d);
   return err.empty();
 }
 
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
   if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
-  if (!tool(c.get(Word::P), "P")) return false;  // existing numbers only (808D: none can be created)
-  int n = (int)c.get(Word::P);
+  ToolData old;
+  if (!offsetData(c.get(Word::P), "P", old)) return false;  // existing numbers only (808D: none can be created)
+  int n = (int)c.get(Word::P), t, d;
   if (n == 0) return error("tool 0 (no tool) has no offsets", "unknown-tool");
-  int d = offsetEdge(n);
-  ToolEdge e = edgeOf(n, d);
+  offsetRef(n, t, d);
+  ToolEdge e = edgeOf(t, d);
   double r = c.get(Word::R) * scale();
   switch (kind) {
   case SetOffsetKind::ToolSet:  // LinuxCNC's table holds one length and radius: no wear
@@ -137,7 +167,7 @@ bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   }
   std::string err;
   const char *rule;
-  return setEdge(n, d, e, err, rule) || error(err, rule);
+  return setEdge(t, d, e, err, rule) || error(err, rule);
 }
 
 bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) const {
@@ -169,15 +199,14 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   switch (info.family) {
   case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
   case SysFamily::ToolData: {
-    int d;
-    if (!x.toolDataRef(ref, d, err)) return false;
-    ToolEdge e = x.edgeOf(ref.tool, d);
+    int t, d;
+    if (!x.toolDataRef(ref, t, d, err)) return false;
+    ToolEdge e = x.edgeOf(t, d);
     out = fieldOf(e, (ToolField)info.axis) / x.paramUnit;
     return true;
   }
   case SysFamily::ToolOffset: {  // rs274 #5401…: the table entry of the tool in the spindle (not G43's)
-    const ToolData *t = info.axis == 2 && st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
-    out = t ? t->length / x.paramUnit : 0;
+    out = info.axis == 2 && st.toolInSpindle > 0 ? x.toolNumberData(st.toolInSpindle).length / x.paramUnit : 0;
     return true;
   }
   default: break;
@@ -234,8 +263,7 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::G92On: out = is(x.g92On); return true;
   case SysVar::CoordSystemNumber: out = st.workOffset; return true;
   case SysVar::ToolDiameter: {
-    const ToolData *t = st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
-    out = t ? 2 * t->radius / x.paramUnit : 0;
+    out = st.toolInSpindle > 0 ? 2 * x.toolNumberData(st.toolInSpindle).radius / x.paramUnit : 0;
     return true;
   }
   case SysVar::ToolLengthH: out = st.toolLengthH; return true;
@@ -274,13 +302,13 @@ bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::
     return false;
   }
   if (info.family == SysFamily::ToolData) {
-    int d;
-    if (!x.toolDataRef(ref, d, err)) return false;
-    ToolEdge e = x.edgeOf(ref.tool, d);
+    int t, d;
+    if (!x.toolDataRef(ref, t, d, err)) return false;
+    ToolEdge e = x.edgeOf(t, d);
     fieldOf(e, (ToolField)info.axis) = value * x.paramUnit;
     x.loc = loc;
     const char *rule;
-    return x.setEdge(ref.tool, d, e, err, rule);
+    return x.setEdge(t, d, e, err, rule);
   }
   double unit;
   double *p = x.storedOffset(info, unit);  // sets unit: its own statement

@@ -84,6 +84,9 @@ struct Controller {
   // Key offset_memory: which Fanuc Custom Macro B variables read and write the tool offsets
   // (#2001…, #10001…): "none" (they are errors) or "C" (H and D, geometry and wear apart).
   std::string offsetMemory = "none";
+  // Key offset_numbers: the edge each ISO H/D offset number addresses (808D `$TC_DPH[t, d]`,
+  // "ISO_H"): number -> (tool, edge). Empty: number n is tool n's edge 1 or only edge.
+  std::map<int, std::pair<int, int>> offsetNumbers;
 };
 
 // One problem of a machine description; line 0 = not located (an unreadable file).
@@ -116,6 +119,9 @@ struct Machine {
   int freeTools = 0;
   // The tool data of number n (0 = no tool: zero data), or null when n is not a valid tool.
   const ToolData *findTool(int n) const;
+  // Adds tool n with the one edge d = 1 to both tables (machines built in code: the executor
+  // reads edges from toolTable, findTool reads tools).
+  void addTool(int n, const ToolEdge &edge);
   // The [emit.NAME] tables as text, section "emit.NAME", nested keys dotted ("format.X"), for
   // the emitters, which check their own keys.
   std::map<std::string, std::map<std::string, std::string>> sections;

@@ -70,4 +70,4 @@ M30
 ; RUN: printf '#1=#2205\nM30\n' > %t.five.nc
 ; RUN: not %ncc run --machine=%S/../../../examples/machines/fanuc-0i-mill.toml %t.five.nc 2>&1 | FileCheck %s --check-prefix=FIVE
 ; RUN: not %ncc run --engine=jit --machine=%S/../../../examples/machines/fanuc-0i-mill.toml %t.five.nc 2>&1 | FileCheck %s --check-prefix=FIVE
-; FIVE: five.nc:1:4: error: tool 5 not found in the tool table
+; FIVE: five.nc:1:4: error: Requested tool 5 not found in the tool table
