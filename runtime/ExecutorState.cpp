@@ -1,5 +1,6 @@
 // Executor: the controller state programs read and write besides the modal state - tool data
-// (the machine's table with the program's G10 edits) and the system variables of
+// (the machine's table with the program's G10 and $_tool_data edits, the edges T, H and D
+// numbers address) and the system variables of
 // ir/SystemVars.h (readSystem / writeSystem, the CmdSink provider).
 #include "runtime/ExecutorImpl.h"
 
@@ -107,7 +108,7 @@ bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, 
     rule = "unsupported-code";
     err = fmt::format("the radius of D{} changes during cutter compensation (tool_write \"immediate\"): not "
                       "supported; write it before G41/G42",
-                      t);
+                      cutterD);
     return false;
   }
   edgeEdits[{t, d}] = e;
@@ -132,8 +133,8 @@ bool Executor::Impl::toolDataRef(const SysRef &r, int &t, int &d, std::string &e
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
   if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
-  ToolData old;
-  if (!offsetData(c.get(Word::P), "P", old)) return false;  // existing numbers only (808D: none can be created)
+  ToolData data;
+  if (!offsetData(c.get(Word::P), "P", data)) return false;  // existing numbers only (808D: none can be created)
   int n = (int)c.get(Word::P), t, d;
   if (n == 0) return error("tool 0 (no tool) has no offsets", "unknown-tool");
   offsetRef(n, t, d);
