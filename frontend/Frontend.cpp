@@ -64,6 +64,7 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.axesScaleEnable = o.axesScaleEnable;
   io.scaleWeighting = o.scaleWeighting;
   io.startup = o.startup;
+  io.offsetMemory = o.offsetMemory == "C" ? iso::OffsetMemory::C : iso::OffsetMemory::None;
   return io;
 }
 

@@ -14,12 +14,14 @@ public:
   virtual ~CmdSink() = default;
   // Returns false to stop the program (the sink has reported why).
   virtual bool exec(const MachineCmd &cmd) = 0;
-  // A system variable's current value (ir/SystemVars.h); false when this sink has none.
-  virtual bool readSystem(SysVar v, double &out) { return false; }
+  // A system variable's current value (ir/SystemVars.h); false when this sink has none (err
+  // empty: the engine reports RunError::SysVar) or it does not exist (a tool or edge the
+  // machine lacks: the reason in err, which the engine reports).
+  virtual bool readSystem(const SysRef &v, double &out, std::string &err) { return false; }
   // Assigns one (sysVarWritable) by the assignment at `loc`; false with the reason in err, which
   // the engine reports.
-  virtual bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) {
-    err = std::string("system variable '") + sysVarName(v) + "' cannot be written here";
+  virtual bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) {
+    err = "system variable '" + sysRefText(v) + "' cannot be written here";
     return false;
   }
   // A call of a function with the SAVE attribute: saveModal before it runs, restoreModal after

@@ -25,6 +25,9 @@ constexpr int kWorkOffsetIds = 9 * 7;
 constexpr const char *kAxisNames[] = {"x", "y", "z", "a", "b", "c", "r"};
 // Family prefixes after the work offsets, in SysFamily order from G92 on.
 constexpr const char *kFamilyPrefix[] = {"_g92_", "_home1_", "_home2_", "_abs_", "_tool_offset_"};
+// In ToolField order (names in messages; programs index the fields by number).
+constexpr const char *kToolFieldNames[] = {"length", "radius", "length_wear", "radius_wear"};
+static_assert(std::size(kToolFieldNames) == (size_t)kToolFields);
 
 // Every id's name, built once: the named ones, then the families.
 const std::vector<std::string> &allNames() {
@@ -34,6 +37,7 @@ const std::vector<std::string> &allNames() {
       for (int a = 0; a < 7; ++a) n.push_back("_work_offset" + std::to_string(s) + "_" + kAxisNames[a]);
     for (const char *p : kFamilyPrefix)
       for (int a = 0; a < 6; ++a) n.push_back(std::string(p) + kAxisNames[a]);
+    for (const char *f : kToolFieldNames) n.push_back(std::string("_tool_data_") + f);
     return n;
   }();
   return names;
@@ -42,7 +46,7 @@ const std::vector<std::string> &allNames() {
 
 bool sysVarFromName(std::string_view name, SysVar &out) {
   const auto &names = allNames();
-  for (size_t i = 0; i < names.size(); ++i)
+  for (size_t i = 0; i < (size_t)kToolDataIds; ++i)
     if (name == names[i]) {
       out = (SysVar)i;
       return true;
@@ -52,10 +56,17 @@ bool sysVarFromName(std::string_view name, SysVar &out) {
 
 const char *sysVarName(SysVar v) { return (size_t)v < allNames().size() ? allNames()[(size_t)v].c_str() : "?"; }
 
+std::string sysRefText(const SysRef &r) {
+  SysVarInfo info = sysVarInfo(r.var);
+  if (info.family != SysFamily::ToolData) return sysVarName(r.var);
+  return "_tool_data[" + std::to_string(r.tool) + ", " + std::to_string(r.edge) + ", " + std::to_string(info.axis) + "]";
+}
+
 SysVarInfo sysVarInfo(SysVar v) {
   int id = (int)v - (int)SysVar::Count;
   if (id < 0 || id >= kSysVarIds - (int)SysVar::Count) return {};
   if (id < kWorkOffsetIds) return {SysFamily::WorkOffset, id / 7 + 1, id % 7};
+  if ((int)v >= kToolDataIds) return {SysFamily::ToolData, 0, (int)v - kToolDataIds};
   id -= kWorkOffsetIds;
   return {(SysFamily)((int)SysFamily::G92 + id / 6), 0, id % 6};
 }
@@ -66,12 +77,22 @@ SysVar sysVarOf(SysFamily f, int system, int axis) {
     return (SysVar)(base + (system - 1) * 7 + axis);
   if (f >= SysFamily::G92 && f <= SysFamily::ToolOffset && axis >= 0 && axis < 6)
     return (SysVar)(base + kWorkOffsetIds + ((int)f - (int)SysFamily::G92) * 6 + axis);
+  if (f == SysFamily::ToolData && axis >= 0 && axis < kToolFields) return (SysVar)(kToolDataIds + axis);
   return kNoSysVar;
 }
 
+// var + 2^16 (tool + 2^17 edge): below 2^50, so a double holds it exactly.
+double sysRefNumber(SysRef r) { return (double)(uint16_t)r.var + 65536.0 * (r.tool + 131072.0 * r.edge); }
+SysRef sysRefFromNumber(double n) {
+  auto bits = (uint64_t)n;
+  return {(SysVar)(bits & 0xffff), (int32_t)((bits >> 16) & 0x1ffff), (int32_t)(bits >> 33)};
+}
+static_assert(kMaxToolNumber < 131072);
+
 namespace {
 // Base names of the indexed families, in SysFamily order from WorkOffset on.
-constexpr const char *kFamilyBase[] = {"_work_offset", "_g92", "_home1", "_home2", "_abs", "_tool_offsets"};
+constexpr const char *kFamilyBase[] = {"_work_offset", "_g92", "_home1", "_home2", "_abs", "_tool_offsets", "_tool_data"};
+constexpr int kFamilyDims[] = {2, 1, 1, 1, 1, 1, 3};
 bool wholeIn(double x, int lo, int hi) { return x >= lo && x <= hi && x == (double)(int)x; }
 }  // namespace
 
@@ -79,20 +100,31 @@ int sysFamilyFromName(std::string_view name, SysFamily &out) {
   for (size_t i = 0; i < std::size(kFamilyBase); ++i)
     if (name == kFamilyBase[i]) {
       out = (SysFamily)(i + 1);
-      return out == SysFamily::WorkOffset ? 2 : 1;
+      return kFamilyDims[i];
     }
   return 0;
 }
 
-SysVar sysVarAt(SysFamily f, double i, double j) {
-  if (f == SysFamily::WorkOffset) return wholeIn(i, 1, 9) && wholeIn(j, 0, 6) ? sysVarOf(f, (int)i, (int)j) : kNoSysVar;
-  return wholeIn(i, 0, 5) ? sysVarOf(f, 0, (int)i) : kNoSysVar;
+const char *sysFamilyName(SysFamily f) { return f == SysFamily::None ? "" : kFamilyBase[(int)f - 1]; }
+
+SysRef sysVarAt(SysFamily f, double i, double j, double k) {
+  switch (f) {
+  case SysFamily::WorkOffset: return {wholeIn(i, 1, 9) && wholeIn(j, 0, 6) ? sysVarOf(f, (int)i, (int)j) : kNoSysVar};
+  case SysFamily::ToolData:
+    if (!wholeIn(i, 1, kMaxToolNumber) || !wholeIn(j, 0, kMaxToolNumber) || !wholeIn(k, 0, kToolFields - 1)) return {};
+    return {sysVarOf(f, 0, (int)k), (int32_t)i, (int32_t)j};
+  default: return {wholeIn(i, 0, 5) ? sysVarOf(f, 0, (int)i) : kNoSysVar};
+  }
 }
 
-std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, double j) {
-  int dims = f == SysFamily::WorkOffset ? 2 : 1;
-  std::string idx = dims == 2 ? numberText(i) + ", " + numberText(j) : numberText(i);
-  std::string range = dims == 2 ? "system 1..9, axis 0..6" : "axis 0..5";
+std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, double j, double k) {
+  int dims = f == SysFamily::None ? 0 : kFamilyDims[(int)f - 1];
+  std::string idx = numberText(i);
+  if (dims > 1) idx += ", " + numberText(j);
+  if (dims > 2) idx += ", " + numberText(k);
+  const char *range = f == SysFamily::WorkOffset ? "system 1..9, axis 0..6"
+                      : f == SysFamily::ToolData ? "tool 1..99999, edge 0..99999, field 0..3"
+                                                 : "axis 0..5";
   return "system variable '$" + std::string(name) + "[" + idx + "]': index out of range (" + range + ")";
 }
 
@@ -105,14 +137,17 @@ int axisIndex(std::string_view name) {
   return -1;
 }
 
-bool sysVarWritable(SysVar v) {
-  switch (sysVarInfo(v).family) {
+bool sysFamilyWritable(SysFamily f) {
+  switch (f) {
   case SysFamily::WorkOffset:
   case SysFamily::G92:
   case SysFamily::Home1:
-  case SysFamily::Home2: return true;
+  case SysFamily::Home2:
+  case SysFamily::ToolData: return true;
   default: return false;
   }
 }
+
+bool sysVarWritable(SysVar v) { return sysFamilyWritable(sysVarInfo(v).family); }
 
 }  // namespace ncc

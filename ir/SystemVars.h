@@ -3,6 +3,11 @@
 // ids as their front ends land). The NC IR names them as System variables (`$_metric`); the
 // engines resolve the name to a SysVar once and ask their CmdSink (the executor) for the value
 // when the program runs, so both engines read the same state.
+//
+// Ids are 16 bits: the named variables, then the members of the small indexed families (work
+// offsets, axes), then one id per field of the tool data. Tool data is addressed by tool and
+// edge numbers too (up to 99999 each), far too many for ids: those two travel beside the id in
+// a SysRef, the one form both engines hand the executor.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -10,7 +15,7 @@
 
 namespace ncc {
 
-enum class SysVar : uint8_t {
+enum class SysVar : uint16_t {
   VersionMajor, VersionMinor, Line, MotionMode, Plane, CutterComp, Metric, Imperial, Absolute,
   Incremental, InverseTime, UnitsPerMinute, UnitsPerRev, CoordSystem, ToolOffset, RetractR,
   RetractOldZ, SpindleRpmMode, SpindleCssMode, IjkAbsolute, LatheDiameter, LatheRadius, SpindleOn,
@@ -21,14 +26,19 @@ enum class SysVar : uint8_t {
 
 // Indexed families after the named variables (ids from SysVar::Count on): work offsets of
 // systems 1..9 (X Y Z A B C and the XY rotation R), the G92 offsets, reference points 1 and 2,
-// the machine position and the tool offsets (X Y Z A B C). Offsets and reference points are in
-// machine units (mm); positions in program units.
-enum class SysFamily : uint8_t { None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset };
+// the machine position and the tool offsets (X Y Z A B C), then the tool data fields. Offsets,
+// reference points and tool data are in parameter units (mm); positions in program units.
+enum class SysFamily : uint8_t { None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset, ToolData };
 struct SysVarInfo {
   SysFamily family = SysFamily::None;
   int system = 0;  // WorkOffset: 1..9
-  int axis = 0;    // 0..5 X..C, 6 = R (WorkOffset)
+  int axis = 0;    // 0..5 X..C, 6 = R (WorkOffset); ToolData: the field (ToolField)
 };
+// The fields of `$_tool_data[t, d, k]` (k), what the machine's [[tools]] edges hold: geometry
+// and wear of length 1 and radius (docs/IR.md maps Sinumerik $TC_DP3/6/12/15 onto them).
+enum class ToolField : uint8_t { Length, Radius, LengthWear, RadiusWear, Count };
+constexpr int kToolFields = (int)ToolField::Count;
+constexpr int kMaxToolNumber = 99999;  // T and D numbers of the machine file
 SysVarInfo sysVarInfo(SysVar v);
 // Numbered parameters that are plain storage, not controller state: LinuxCNC #0-#5000 and
 // #5599-#5601; Fanuc Macro B #0-#33 and #100-#999. The ISO front end (constant #n) and the
@@ -37,33 +47,51 @@ inline bool plainNgcParameter(double n) { return (n >= 0 && n < 5001) || (n >= 5
 inline bool plainMacroVariable(double n) { return (n >= 0 && n < 34) || (n >= 100 && n < 1000); }
 // No system variable: what the lookups below return for an id out of range (family members
 // start at SysVar::Count, so Count itself is the first work offset).
-constexpr SysVar kNoSysVar = (SysVar)0xff;
-// The id of a family member; kNoSysVar when out of range.
+constexpr SysVar kNoSysVar = (SysVar)0xffff;
+// The id of a family member (ToolData: axis = the field); kNoSysVar when out of range.
 SysVar sysVarOf(SysFamily f, int system, int axis);
-constexpr int kSysVarIds = (int)SysVar::Count + 9 * 7 + 5 * 6;
+constexpr int kToolDataIds = (int)SysVar::Count + 9 * 7 + 5 * 6;  // the first tool data field
+constexpr int kSysVarIds = kToolDataIds + kToolFields;
 static_assert(kSysVarIds < (int)kNoSysVar);
+
+// What an engine reads or writes: the id and, for tool data, the tool and the edge (edge 0: the
+// tool is an H/D offset number, the edge it addresses: tool n's edge 1 or only edge, or the
+// machine's offset_numbers; docs/MACHINE.md).
+struct SysRef {
+  SysVar var = kNoSysVar;
+  int32_t tool = 0, edge = 0;
+};
+// Compiled code carries a SysRef as one double (exact: 16 + 17 + 17 bits); runtime/ncrt.
+double sysRefNumber(SysRef r);
+SysRef sysRefFromNumber(double n);
 
 // Indexed access: a family's base name with run-time indices, `$_work_offset[s, a]` (system s
 // 1..9, axis a 0..5 = X..C or 6 = the XY rotation R) and `$_g92[a]`, `$_home1[a]`, `$_home2[a]`,
-// `$_abs[a]`, `$_tool_offsets[a]` (a 0..5; `$_tool_offset` is LinuxCNC's "length offset on").
-// An index may be an axis symbol (X … C), resolved when the program is compiled (axisIndex).
-// Returns the number of indices the family takes, 0 when `name` is not a family.
+// `$_abs[a]`, `$_tool_offsets[a]` (a 0..5; `$_tool_offset` is LinuxCNC's "length offset on"),
+// `$_tool_data[t, d, k]` (tool 1..99999, edge 0..99999 with 0 = t is an offset number, field 0..3).
+// An index of an axis family may be an axis symbol (X … C), resolved when the program is
+// compiled (axisIndex). Returns the number of indices the family takes, 0 when `name` is not a family.
 int sysFamilyFromName(std::string_view name, SysFamily &out);
-// The member at run-time indices (i = the system for work offsets, else the axis); kNoSysVar
-// when an index is out of range or not an integer. The message for that case, shared by the engines.
-SysVar sysVarAt(SysFamily f, double i, double j);
-std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, double j);
+const char *sysFamilyName(SysFamily f);
+// The member at run-time indices (i = the system for work offsets, else the axis; tool data:
+// tool i, edge j, field k); var = kNoSysVar when an index is out of range or not an integer.
+// The message for that case, shared by the engines.
+SysRef sysVarAt(SysFamily f, double i, double j, double k);
+std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, double j, double k);
 // The axis index of an axis name used as an index (X Y Z A B C -> 0..5), -1 for any other name.
 int axisIndex(std::string_view name);
 
 // Writes: the ids a program may assign (work offsets with their rotation, G92 offsets, the
-// reference points). The executor decides when a written work offset takes effect (the
-// controller's `offset_write`, docs/MACHINE.md).
+// reference points, tool data). The executor decides when a written work offset or tool edge
+// takes effect (the controller's `offset_write` and `tool_write`, docs/MACHINE.md).
 bool sysVarWritable(SysVar v);
+bool sysFamilyWritable(SysFamily f);
 
 // The IR name of a system variable (LinuxCNC's parameter name, e.g. "_metric"); false when
-// `name` is none. Names are lower case.
+// `name` is none (tool data has no flat names: it needs a tool and an edge). Names are lower case.
 bool sysVarFromName(std::string_view name, SysVar &out);
 const char *sysVarName(SysVar v);
+// How messages name a reference: the name, or tool data with its indices ("_tool_data[1, 2, 0]").
+std::string sysRefText(const SysRef &r);
 
 }  // namespace ncc

@@ -548,8 +548,10 @@ private:
       return false;
     }
     for (auto &i : e.args) {
-      if (i->kind == ExprKind::Symbol && axisIndex(i->str) < 0) {
-        error(l, fmt::format("{}: '{}' is not an axis (X Y Z A B C) in '${}'", where.text(), i->str, e.str));
+      if (i->kind == ExprKind::Symbol && (axisIndex(i->str) < 0 || f == SysFamily::ToolData)) {
+        error(l, f == SysFamily::ToolData
+                     ? fmt::format("{}: '${}' takes numbers as indices, not '{}'", where.text(), e.str, i->str)
+                     : fmt::format("{}: '{}' is not an axis (X Y Z A B C) in '${}'", where.text(), i->str, e.str));
         return false;
       }
       if (!systemAxisIndex(e, *i) && !numericExpr(*i, l, where)) return false;
@@ -563,9 +565,8 @@ private:
   static bool systemWritable(const Expr &e) {
     SysFamily f;
     SysVar sv = kNoSysVar;
-    if (sysFamilyFromName(e.str, f)) sv = sysVarOf(f, 1, 0);  // writability is per family
-    else sysVarFromName(e.str, sv);
-    return sv != kNoSysVar && sysVarWritable(sv);
+    if (sysFamilyFromName(e.str, f)) return sysFamilyWritable(f);  // writability is per family
+    return sysVarFromName(e.str, sv) && sysVarWritable(sv);
   }
 
   void verifyExpr(const Expr *e, SourceLoc l, const std::string &where) {

@@ -141,22 +141,22 @@ struct Evaluator::Impl {
     return true;
   }
 
-  // The id a system variable names: `$_metric`, or a family with run-time indices
-  // (`$_work_offset[s, a]`, an axis symbol as index).
-  SysVar systemVar(Frame &fr, const Expr &v) {
-    SysVar sv = kNoSysVar;
+  // What a system variable names: `$_metric`, or a family with run-time indices
+  // (`$_work_offset[s, a]`, an axis symbol as index; `$_tool_data[t, d, k]`).
+  SysRef systemVar(Frame &fr, const Expr &v) {
+    SysRef ref;
     SysFamily f;
     int dims = sysFamilyFromName(v.str, f);
     if (!dims) {
-      sysVarFromName(v.str, sv);
-      return sv;
+      sysVarFromName(v.str, ref.var);
+      return ref;
     }
-    double ix[2] = {0, 0};
+    double ix[3] = {0, 0, 0};
     for (int k = 0; k < dims && k < (int)v.args.size(); ++k)
       ix[k] = v.args[k]->kind == ExprKind::Symbol ? axisIndex(v.args[k]->str) : num(number(fr, *v.args[k]));
-    sv = sysVarAt(f, ix[0], ix[1]);
-    if (sv == kNoSysVar) fail(v.loc, sysVarIndexMessage(v.str, f, ix[0], ix[1]));
-    return sv;
+    ref = sysVarAt(f, ix[0], ix[1], ix[2]);
+    if (ref.var == kNoSysVar) fail(v.loc, sysVarIndexMessage(v.str, f, ix[0], ix[1], ix[2]));
+    return ref;
   }
 
   double &varRef(Frame &fr, CompiledFn &cf, const Expr &v, bool write) {
@@ -192,8 +192,9 @@ struct Evaluator::Impl {
     }
     case VarSpace::System: {  // read here; execAssign writes
       static double value;
-      if (!sink.readSystem(systemVar(fr, v), value))
-        fail(v.loc, runErrorMessage(RunError::SysVar, limits, v.str));
+      std::string err;
+      if (!sink.readSystem(systemVar(fr, v), value, err))
+        fail(v.loc, err.empty() ? runErrorMessage(RunError::SysVar, limits, v.str) : err);
       return value;
     }
     }

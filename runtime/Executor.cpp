@@ -222,10 +222,10 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
 bool Executor::Impl::execToolLength(const MachineCmd &c) {
   // Without H (rs274 G43): the tool in the spindle.
   double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
-  const ToolData *t = tool(hv, "H");
-  if (!t) return false;
+  ToolData t;
+  if (!offsetData(hv, "H", t)) return false;
   int h = (int)hv;
-  toolLength = h == 0 ? 0 : t->length;
+  toolLength = t.length;
   st.toolLengthH = h;
   MotionRecord r = record(RecordKind::ToolLength);
   r.value = toolLength;
@@ -333,9 +333,9 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     warning(c.sub2 == 1 ? "cutter compensation without a D word and no tool in the spindle: radius 0"
                         : "cutter compensation without a D word: radius 0",
             "cutcomp-without-d");
-  const ToolData *t = tool(cutterD, "D");
-  if (!t) return false;
-  double radius = cutterD == 0 ? 0 : t->radius;
+  ToolData t;
+  if (!offsetData(cutterD, "D", t)) return false;
+  double radius = t.radius;
   // Compensation works on the machine path, in the active plane: a mirrored frame swaps the
   // sides (G41 <-> G42, as the 808D manual's table 2-12 says); a frame that tilts the plane is
   // not supported.
@@ -596,7 +596,7 @@ bool Executor::exec(const MachineCmd &c) {
   }
   case CmdKind::ToolSelect: {
     double t = c.get(Word::T);
-    if (!x.tool(t, "T")) return false;
+    if (!x.checkTool(t, "T")) return false;
     x.st.toolSelected = (int)t;
     MotionRecord r = x.record(RecordKind::ToolSelect);
     r.ivalue = (int64_t)t;

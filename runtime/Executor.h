@@ -54,9 +54,9 @@ public:
   bool saveModal();
   bool restoreModal(SourceLoc loc);
   // The value of a system variable (ir/SystemVars.h) in the current state.
-  bool readSystem(SysVar v, double &out) const;
+  bool readSystem(const SysRef &v, double &out, std::string &err) const;
   // Writes one (ir/SystemVars.h sysVarWritable); false with the reason in err.
-  bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err);
+  bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err);
   const ModalState &state() const;
   // Source blocks executed so far (a block in a loop counts each time it runs).
   uint64_t blockCount() const;
@@ -72,8 +72,8 @@ class ExecutorSink : public CmdSink {
 public:
   explicit ExecutorSink(Executor &e) : exec_(e) {}
   bool exec(const MachineCmd &cmd) override { return exec_.exec(cmd); }
-  bool readSystem(SysVar v, double &out) override { return exec_.readSystem(v, out); }
-  bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) override {
+  bool readSystem(const SysRef &v, double &out, std::string &err) override { return exec_.readSystem(v, out, err); }
+  bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) override {
     return exec_.writeSystem(v, value, loc, err);
   }
   bool saveModal() override { return exec_.saveModal(); }

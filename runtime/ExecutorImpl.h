@@ -36,6 +36,7 @@ struct Executor::Impl {
   Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), compOut(s), comp(compOut) {
     g5x = m.workOffsets;
     offsetWrite = m.controller.offsetWritePolicy();
+    toolWrite = m.controller.toolWritePolicy();
     paramUnit = m.controller.parameterUnits == "inch" ? 25.4 : 1.0;
     applyWorkOffset();
     home[0] = m.home1;
@@ -177,18 +178,29 @@ struct Executor::Impl {
   // The offset frame's plane `pl` maps onto the same machine plane with equal scale on both axes
   // (so an arc stays a circle in that plane); `flip` when it mirrors the plane.
   bool frameKeepsPlane(Plane pl, bool &flip) const;
-  // Tool data of a T/H/D number; an error naming it when the machine has no such tool.
-  const ToolData *tool(double n, const char *word);  // findTool, or an error naming `word`
-  const ToolData *findTool(double n) const;
-  // Tool offsets as the program changed them (G10 L1/L10/L11, Fanuc G10 L10-L13), over the
-  // machine's table: geometry and wear of the number's edge, and `data`, their sum, which tool()
-  // returns. A change applies at the next G43/H or D, as in rs274.
-  struct EditedTool {
-    ToolEdge edge;
-    ToolData data;
-  };
-  std::map<int, EditedTool> toolEdits;
-  ToolEdge edgeOf(int n) const;
+  // Tool data (ExecutorState.cpp). T numbers name tools; an H or D offset number (and G10's P,
+  // Fanuc's #2001…) names an edge: tool n's edge 1 or only edge, or on a machine with
+  // offset_numbers (808D $TC_DPH) the edge it maps n to.
+  bool toolExists(double n) const;              // T number n is valid (0 = no tool)
+  bool checkTool(double n, const char *word);   // toolExists, or an error naming `word`
+  bool offsetRef(int n, int &t, int &d) const;  // the edge offset number n > 0 addresses
+  std::string noOffsetMessage(long long n) const;
+  // Geometry + wear of offset number n (0: none); false after an error naming `word`.
+  bool offsetData(double n, const char *word, ToolData &out);
+  ToolData toolNumberData(int t) const;  // tool t's edge 1 or only edge (rs274 #5401, #5410)
+  // Tool edges as the program changed them (G10 L1/L10-L13, `$_tool_data` writes), over the
+  // machine's table, by (tool, edge). When a change reaches the offset in use is the machine's
+  // tool_write (ToolWrite).
+  std::map<std::pair<int, int>, ToolEdge> edgeEdits;
+  ToolWrite toolWrite = ToolWrite::OnSelect;
+  int offsetEdge(int t) const;          // tool t's edge 1 or only edge
+  bool hasEdge(int t, int d) const;     // t a valid tool with edge d
+  ToolEdge edgeOf(int t, int d) const;  // geometry and wear, edited or the machine's
+  // Stores an edit; false with the problem and its rule id.
+  bool setEdge(int t, int d, const ToolEdge &e, std::string &err, const char *&rule);
+  // The tool and edge of a tool data reference (edge 0: tool is an offset number); false with
+  // the reason when the machine lacks them.
+  bool toolDataRef(const SysRef &r, int &t, int &d, std::string &err) const;
   bool execToolOffset(const MachineCmd &c);
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.
   bool checkAxisWords(const MachineCmd &c);

@@ -1,49 +1,144 @@
 // Executor: the controller state programs read and write besides the modal state - tool data
-// (the machine's table with the program's G10 edits) and the system variables of
+// (the machine's table with the program's G10 and $_tool_data edits, the edges T, H and D
+// numbers address) and the system variables of
 // ir/SystemVars.h (readSystem / writeSystem, the CmdSink provider).
 #include "runtime/ExecutorImpl.h"
 
 #include "ir/Value.h"
 
 #include <cmath>
+#include <iterator>
 #include <fmt/format.h>
 
 namespace ncc {
 
-const ToolData *Executor::Impl::findTool(double n) const {
-  if (!(n >= 0 && n <= 1e9 && n == std::floor(n))) return nullptr;
-  auto it = toolEdits.find((int)n);
-  return it != toolEdits.end() ? &it->second.data : machine.findTool((int)n);
+namespace {
+bool wholeNumber(double n) { return n >= 0 && n <= 1e9 && n == std::floor(n); }
+ToolData resulting(const ToolEdge &e) { return {e.length + e.lengthWear, e.radius + e.radiusWear}; }
+// rs274's text for a T, H or D number the table lacks; tool data references use it too.
+std::string unknownTool(long long n) { return "Requested tool " + std::to_string(n) + " not found in the tool table"; }
+}  // namespace
+
+bool Executor::Impl::toolExists(double n) const { return wholeNumber(n) && machine.findTool((int)n); }
+
+bool Executor::Impl::checkTool(double n, const char *word) {
+  if (!wholeNumber(n)) return error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
+  if (!toolExists(n)) return error(unknownTool((long long)n), "unknown-tool");
+  return true;
 }
 
-const ToolData *Executor::Impl::tool(double n, const char *word) {
-  const ToolData *t = findTool(n);
-  if (!t) {
-    if (n < 0 || n > 1e9 || n != std::floor(n))
-      error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
-    else
-      error("Requested tool " + std::to_string((long long)n) + " not found in the tool table", "unknown-tool");
+bool Executor::Impl::offsetRef(int n, int &t, int &d) const {
+  const auto &map = machine.controller.offsetNumbers;
+  if (!map.empty()) {
+    auto it = map.find(n);
+    if (it == map.end()) return false;
+    t = it->second.first, d = it->second.second;
+    return true;
   }
-  return t;
+  if (n <= 0 || !toolExists(n)) return false;
+  t = n, d = offsetEdge(n);
+  return true;
 }
 
-// The geometry and wear behind number n (a valid tool number): edited, the machine's edge, or
-// zero for a number the table lacks (free_tools).
-ToolEdge Executor::Impl::edgeOf(int n) const {
-  if (auto it = toolEdits.find(n); it != toolEdits.end()) return it->second.edge;
-  auto t = machine.toolTable.find(n);
-  if (t == machine.toolTable.end() || t->second.edges.empty()) return {};
-  auto e = t->second.edges.find(1);  // T/H/D numbers use edge 1, or the only edge (Machine.cpp)
-  return e != t->second.edges.end() ? e->second : t->second.edges.begin()->second;
+std::string Executor::Impl::noOffsetMessage(long long n) const {
+  return machine.controller.offsetNumbers.empty()
+             ? unknownTool(n)
+             : "offset number " + std::to_string(n) + " is not in the machine's offset_numbers";
+}
+
+bool Executor::Impl::offsetData(double n, const char *word, ToolData &out) {
+  if (!wholeNumber(n)) return error(std::string(word) + " word must be a non-negative integer", "unknown-tool");
+  out = {};
+  int t, d;
+  if (n == 0) return true;
+  if (!offsetRef((int)n, t, d)) return error(noOffsetMessage((long long)n), "unknown-tool");
+  out = resulting(edgeOf(t, d));
+  return true;
+}
+
+ToolData Executor::Impl::toolNumberData(int t) const { return resulting(edgeOf(t, offsetEdge(t))); }
+
+namespace {
+// A field of an edge by ToolField (the k of $_tool_data[t, d, k]).
+double &fieldOf(ToolEdge &e, ToolField f) {
+  static constexpr double ToolEdge::*kFields[] = {&ToolEdge::length, &ToolEdge::radius, &ToolEdge::lengthWear,
+                                                  &ToolEdge::radiusWear};
+  static_assert(std::size(kFields) == (size_t)kToolFields);
+  return e.*kFields[(int)f];
+}
+}  // namespace
+
+// T/H/D numbers use edge 1, or the tool's only edge (Machine.cpp); a valid number the table
+// lacks (free_tools, a machine without tools) has edge 1 alone, with zero data.
+int Executor::Impl::offsetEdge(int t) const {
+  auto it = machine.toolTable.find(t);
+  if (it == machine.toolTable.end() || it->second.edges.count(1)) return 1;
+  return it->second.edges.begin()->first;
+}
+
+bool Executor::Impl::hasEdge(int t, int d) const {
+  if (t <= 0 || !toolExists(t)) return false;
+  auto it = machine.toolTable.find(t);
+  return it != machine.toolTable.end() ? it->second.edges.count(d) > 0 : d == 1;
+}
+
+ToolEdge Executor::Impl::edgeOf(int t, int d) const {
+  if (auto it = edgeEdits.find({t, d}); it != edgeEdits.end()) return it->second;
+  auto tt = machine.toolTable.find(t);
+  if (tt == machine.toolTable.end()) return {};
+  auto e = tt->second.edges.find(d);
+  return e != tt->second.edges.end() ? e->second : ToolEdge{};
+}
+
+bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, const char *&rule) {
+  rule = "bad-number";
+  if (e.radius + e.radiusWear < 0) {
+    err = "tool radius (geometry + wear) would be negative";
+    return false;
+  }
+  ToolData data = resulting(e);
+  // Fanuc with EVO/EVR = 1: the offsets in use change from the next block. A new radius in the
+  // middle of a compensated path would need a transition ncc does not make.
+  bool now = toolWrite == ToolWrite::Immediate;
+  auto inUse = [&](int number) {
+    int nt, nd;
+    return number > 0 && offsetRef(number, nt, nd) && nt == t && nd == d;
+  };
+  if (now && st.cutterComp != 0 && inUse(cutterD) && data.radius != resulting(edgeOf(t, d)).radius) {
+    rule = "unsupported-code";
+    err = fmt::format("the radius of D{} changes during cutter compensation (tool_write \"immediate\"): not "
+                      "supported; write it before G41/G42",
+                      cutterD);
+    return false;
+  }
+  edgeEdits[{t, d}] = e;
+  if (now && inUse(st.toolLengthH) && toolLength != data.length) {
+    toolLength = data.length;
+    MotionRecord r = record(RecordKind::ToolLength);
+    r.value = toolLength;
+    r.ivalue = st.toolLengthH;
+    emit(r);
+  }
+  return true;
+}
+
+bool Executor::Impl::toolDataRef(const SysRef &r, int &t, int &d, std::string &err) const {
+  t = r.tool, d = r.edge;
+  if (r.edge == 0 && !offsetRef(r.tool, t, d)) err = noOffsetMessage(r.tool);
+  else if (!toolExists(t)) err = unknownTool(t);
+  else if (!hasEdge(t, d)) err = fmt::format("tool {} has no edge {}", t, d);
+  return err.empty();
 }
 
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
   if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
-  if (!tool(c.get(Word::P), "P")) return false;  // existing numbers only (808D: none can be created)
-  int n = (int)c.get(Word::P);
+  ToolData data;
+  if (!offsetData(c.get(Word::P), "P", data)) return false;  // existing numbers only (808D: none can be created)
+  int n = (int)c.get(Word::P), t, d;
   if (n == 0) return error("tool 0 (no tool) has no offsets", "unknown-tool");
-  ToolEdge e = edgeOf(n);
+  offsetRef(n, t, d);
+  ToolEdge e = edgeOf(t, d);
   double r = c.get(Word::R) * scale();
   switch (kind) {
   case SetOffsetKind::ToolSet:  // LinuxCNC's table holds one length and radius: no wear
@@ -65,18 +160,19 @@ bool Executor::Impl::execToolOffset(const MachineCmd &c) {
     if (st.distance == ModeValue::Incremental)
       return error("G10 L10-L13 in G91: whether R is added is not documented for this controller; program it in G90",
                    "unsupported-code");
-    static constexpr double ToolEdge::*kField[] = {&ToolEdge::length, &ToolEdge::lengthWear, &ToolEdge::radius,
-                                                   &ToolEdge::radiusWear};  // ToolLength … ToolRadiusWear
-    e.*kField[(int)kind - (int)SetOffsetKind::ToolLength] = r;
+    static constexpr ToolField kField[] = {ToolField::Length, ToolField::LengthWear, ToolField::Radius,
+                                           ToolField::RadiusWear};  // ToolLength … ToolRadiusWear
+    fieldOf(e, kField[(int)kind - (int)SetOffsetKind::ToolLength]) = r;
     break;
   }
   }
-  if (e.radius + e.radiusWear < 0) return error("tool radius (geometry + wear) would be negative", "bad-number");
-  toolEdits[n] = {e, ToolData{e.length + e.lengthWear, e.radius + e.radiusWear}};
-  return true;
+  std::string err;
+  const char *rule;
+  return setEdge(t, d, e, err, rule) || error(err, rule);
 }
 
-bool Executor::readSystem(SysVar v, double &out) const {
+bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) const {
+  SysVar v = ref.var;
   const Impl &x = *impl_;
   const ModalState &st = x.st;
   auto is = [&](bool b) { return b ? 1.0 : 0.0; };
@@ -103,9 +199,15 @@ bool Executor::readSystem(SysVar v, double &out) const {
   }
   switch (info.family) {
   case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
+  case SysFamily::ToolData: {
+    int t, d;
+    if (!x.toolDataRef(ref, t, d, err)) return false;
+    ToolEdge e = x.edgeOf(t, d);
+    out = fieldOf(e, (ToolField)info.axis) / x.paramUnit;
+    return true;
+  }
   case SysFamily::ToolOffset: {  // rs274 #5401…: the table entry of the tool in the spindle (not G43's)
-    const ToolData *t = info.axis == 2 && st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
-    out = t ? t->length / x.paramUnit : 0;
+    out = info.axis == 2 && st.toolInSpindle > 0 ? x.toolNumberData(st.toolInSpindle).length / x.paramUnit : 0;
     return true;
   }
   default: break;
@@ -162,8 +264,7 @@ bool Executor::readSystem(SysVar v, double &out) const {
   case SysVar::G92On: out = is(x.g92On); return true;
   case SysVar::CoordSystemNumber: out = st.workOffset; return true;
   case SysVar::ToolDiameter: {
-    const ToolData *t = st.toolInSpindle > 0 ? x.findTool(st.toolInSpindle) : nullptr;
-    out = t ? 2 * t->radius / x.paramUnit : 0;
+    out = st.toolInSpindle > 0 ? 2 * x.toolNumberData(st.toolInSpindle).radius / x.paramUnit : 0;
     return true;
   }
   case SysVar::ToolLengthH: out = st.toolLengthH; return true;
@@ -190,19 +291,28 @@ double *Executor::Impl::storedOffset(const SysVarInfo &info, double &unit) const
   }
 }
 
-bool Executor::writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) {
+bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::string &err) {
   Impl &x = *impl_;
-  SysVarInfo info = sysVarInfo(v);
-  double unit;
-  double *p = sysVarWritable(v) ? x.storedOffset(info, unit) : nullptr;
-  if (!p) {
-    err = fmt::format("system variable '${}' is read-only", sysVarName(v));
+  SysVarInfo info = sysVarInfo(ref.var);
+  if (!sysVarWritable(ref.var)) {
+    err = fmt::format("system variable '${}' is read-only", sysRefText(ref));
     return false;
   }
   if (!std::isfinite(value) || std::fabs(value) > 1e9) {
-    err = fmt::format("system variable '${}': {} is not a valid offset", sysVarName(v), numberText(value));
+    err = fmt::format("system variable '${}': {} is not a valid offset", sysRefText(ref), numberText(value));
     return false;
   }
+  if (info.family == SysFamily::ToolData) {
+    int t, d;
+    if (!x.toolDataRef(ref, t, d, err)) return false;
+    ToolEdge e = x.edgeOf(t, d);
+    fieldOf(e, (ToolField)info.axis) = value * x.paramUnit;
+    x.loc = loc;
+    const char *rule;
+    return x.setEdge(t, d, e, err, rule);
+  }
+  double unit;
+  double *p = x.storedOffset(info, unit);  // sets unit: its own statement
   *p = value * unit;
   // G92 values wait for G92.3 and reference points for G28/G30, as in rs274; a work offset of
   // the active system applies now only where the controller says so.

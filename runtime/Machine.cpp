@@ -203,26 +203,59 @@ const KeyDef<Machine> kMachineKeys[] = {
     {"free_tools", &Machine::freeTools, 0, 99999},
 };
 
+// The entries of a table value: f(key text, key, value) for each; `expected` (", got <type>"
+// added) when the value is no table.
+template <class F> void forEachEntry(Ctx &c, const toml::node &n, const std::string &expected, F f) {
+  const toml::table *t = n.as_table();
+  if (!t) return c.error(n.source(), expected + ", got " + typeName(n));
+  for (auto &&[k, v] : *t) f(std::string(k.str()), k, v);
+}
+
 void readMacroCalls(Ctx &c, const toml::node &n, void *obj) {
   auto &calls = static_cast<Controller *>(obj)->macroCalls;
-  const toml::table *t = n.as_table();
-  if (!t) return c.error(n.source(), "macro_calls: expected a table of code = \"program\", got " + typeName(n));
-  for (auto &&[k, v] : *t) {
-    std::string code(k.str());
+  auto entry = [&](const std::string &code, const toml::key &k, const toml::node &v) {
     // M<n> or G<n>[.<n>]: the codes a controller lets a macro replace.
     bool ok = code.size() >= 2 && (code[0] == 'M' || code[0] == 'G');
     size_t dot = code.find('.');
     for (size_t i = 1; ok && i < code.size(); ++i)
       ok = std::isdigit((unsigned char)code[i]) || (i == dot && code[0] == 'G' && i > 1 && i + 1 < code.size());
-    if (!ok) {
-      c.error(k.source(), "macro_calls: '" + code + "' is not an M or G code (M6, G81, \"G65.1\")");
-      continue;
-    }
+    if (!ok) return c.error(k.source(), "macro_calls: '" + code + "' is not an M or G code (M6, G81, \"G65.1\")");
     if (auto s = readString(c, v, "macro_calls." + code, nullptr)) {
       if (s->empty()) c.error(v.source(), "macro_calls." + code + ": the program name is empty");
       else calls[code] = *s;
     }
-  }
+  };
+  forEachEntry(c, n, "macro_calls: expected a table of code = \"program\"", entry);
+}
+
+// Fanuc tool compensation memory A and B keep one value (A) or one geometry and one wear (B) per
+// offset number for H and D alike; the tool table keeps length and radius apart, which only
+// memory C matches.
+void readOffsetMemory(Ctx &c, const toml::node &n, void *obj) {
+  auto s = readString(c, n, "offset_memory", "none A B C");
+  if (!s) return;
+  if (*s == "A" || *s == "B")
+    return c.error(n.source(), "offset_memory: memory " + *s +
+                                   " (one register per offset number for H and D) cannot hold the tool table's separate "
+                                   "length and radius; ncc models \"none\" and \"C\"");
+  static_cast<Controller *>(obj)->offsetMemory = *s;
+}
+
+// offset_numbers = { 10 = [1, 1], 11 = [1, 2] }: H/D number -> [tool, edge]; whether the tool
+// has that edge is checked when the whole machine is read.
+void readOffsetNumbers(Ctx &c, const toml::node &n, void *obj) {
+  auto &numbers = static_cast<Controller *>(obj)->offsetNumbers;
+  auto entry = [&](const std::string &key, const toml::key &k, const toml::node &v) {
+    bool digits = !key.empty() && key.size() <= 5 && key[0] != '0' && key.find_first_not_of("0123456789") == std::string::npos;
+    if (!digits) return c.error(k.source(), "offset_numbers: '" + key + "' is not an offset number 1..99999");
+    const toml::array *a = v.as_array();
+    auto whole = [&](size_t i) { return a && a->size() == 2 && a->get(i)->is_integer() ? **a->get(i)->as_integer() : -1; };
+    long long tool = whole(0), edge = whole(1);
+    if (tool < 1 || tool > 99999 || edge < 1 || edge > 99999)
+      return c.error(v.source(), "offset_numbers." + key + ": expected [tool, edge], two integers 1..99999");
+    numbers[std::stoi(key)] = {(int)tool, (int)edge};
+  };
+  forEachEntry(c, n, "offset_numbers: expected a table of number = [tool, edge]", entry);
 }
 
 // The codes `startup` accepts and their modes.
@@ -281,6 +314,9 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"m19_angle", &Controller::m19Angle, 0, 360},
     {"boring_orient_angle", &Controller::boringOrientAngle, 0, 360},
     {"boring_lift", &Controller::boringLift, 0, 4},
+    {"tool_write", &Controller::toolWrite, 0, 0, false, "on-select immediate"},
+    {"offset_memory", NodeReader(readOffsetMemory)},
+    {"offset_numbers", NodeReader(readOffsetNumbers)},
 };
 
 void readAxisKind(Ctx &c, const toml::node &n, void *obj) {
@@ -298,9 +334,7 @@ const KeyDef<AxisLimits> kAxisKeys[] = {
 
 // A table of named tables ([axes.X], [emit.iso]): f(name, key, value) for each.
 template <class F> void forEachNamed(Ctx &c, const toml::node &n, const std::string &what, F f) {
-  const toml::table *t = n.as_table();
-  if (!t) return c.error(n.source(), what + ": expected tables [" + what + ".NAME], got " + typeName(n));
-  for (auto &&[k, v] : *t) f(std::string(k.str()), k, v);
+  forEachEntry(c, n, what + ": expected tables [" + what + ".NAME]", f);
 }
 
 void readAxes(Ctx &c, const toml::node &n, void *obj) {
@@ -472,6 +506,14 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
       if (m.axes[i].present && m.axes[i].rotary)
         c.error(doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
                 std::string("axis ") + kAxisNames[i] + ": kinematics \"xyz\" needs it linear");
+    // Every offset number names an edge of the tool table.
+    for (auto &[number, edge] : m.controller.offsetNumbers) {
+      auto tool = m.toolTable.find(edge.first);
+      if (tool == m.toolTable.end() || !tool->second.edges.count(edge.second))
+        c.error(doc["controller"]["offset_numbers"][std::to_string(number)].node()->source(),
+                "offset_numbers." + std::to_string(number) + ": tool " + std::to_string(edge.first) +
+                    (tool == m.toolTable.end() ? " is not in [[tools]]" : " has no edge d = " + std::to_string(edge.second)));
+    }
   }
   errors = std::move(c.problems);
   std::stable_sort(errors.begin(), errors.end(),
@@ -548,6 +590,11 @@ OffsetWrite Controller::offsetWritePolicy() const {
   if (k == "on-change" || k == "linuxcnc") return OffsetWrite::OnChange;
   if (k == "on-select" || k == "sinumerik" || k == "heidenhain") return OffsetWrite::OnSelect;
   return OffsetWrite::Immediate;
+}
+
+void Machine::addTool(int n, const ToolEdge &edge) {
+  toolTable[n].edges[1] = edge;
+  tools[n] = ToolData{edge.length + edge.lengthWear, edge.radius + edge.radiusWear};
 }
 
 const ToolData *Machine::findTool(int n) const {

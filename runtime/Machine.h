@@ -43,6 +43,11 @@ struct Tool {
 // (LinuxCNC, whose G54 in G54 "continues to use the same coordinate system"). G10 L2/L20 of the
 // active system applies its table at once in every profile.
 enum class OffsetWrite : uint8_t { Immediate, OnSelect, OnChange };
+// When a tool offset a program writes (G10 L1/L10-L13, Fanuc #2001…, NC IR `$_tool_data`,
+// later Sinumerik $TC_DP…) takes effect for the offset in use (the active G43 H, the D of cutter
+// compensation): at the next H/D/T selection (Sinumerik; Fanuc with parameters EVO/EVR = 0;
+// rs274), or at once, from the next block (Fanuc EVO/EVR = 1).
+enum class ToolWrite : uint8_t { OnSelect, Immediate };
 
 // The controller profile: data for the dialect front ends (docs/MACHINE.md says which are used).
 struct Controller {
@@ -79,6 +84,15 @@ struct Controller {
   double m19Angle = 0;
   double boringOrientAngle = 0;
   int boringLift = 0;
+  // Key tool_write: "on-select" (default) or "immediate".
+  std::string toolWrite = "on-select";
+  ToolWrite toolWritePolicy() const { return toolWrite == "immediate" ? ToolWrite::Immediate : ToolWrite::OnSelect; }
+  // Key offset_memory: which Fanuc Custom Macro B variables read and write the tool offsets
+  // (#2001…, #10001…): "none" (they are errors) or "C" (H and D, geometry and wear apart).
+  std::string offsetMemory = "none";
+  // Key offset_numbers: the edge each ISO H/D offset number addresses (808D `$TC_DPH[t, d]`,
+  // "ISO_H"): number -> (tool, edge). Empty: number n is tool n's edge 1 or only edge.
+  std::map<int, std::pair<int, int>> offsetNumbers;
 };
 
 // One problem of a machine description; line 0 = not located (an unreadable file).
@@ -111,6 +125,9 @@ struct Machine {
   int freeTools = 0;
   // The tool data of number n (0 = no tool: zero data), or null when n is not a valid tool.
   const ToolData *findTool(int n) const;
+  // Adds tool n with the one edge d = 1 to both tables (machines built in code: the executor
+  // reads edges from toolTable, findTool reads tools).
+  void addTool(int n, const ToolEdge &edge);
   // The [emit.NAME] tables as text, section "emit.NAME", nested keys dotted ("format.X"), for
   // the emitters, which check their own keys.
   std::map<std::string, std::map<std::string, std::string>> sections;

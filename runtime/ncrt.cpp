@@ -184,27 +184,30 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   return NCRT_ERROR;
 }
 
-double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id) {
-  double v;
-  return id < (uint32_t)kSysVarIds && ctx->sink.readSystem((SysVar)id, v) ? v : unsetValue();
-}
-
 // An error reported at the loc: the result generated code recognises.
 static double failed(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, const std::string &msg) {
   ctx->diags.error({file, line, col}, msg);
   return unsetValue();
 }
 
-double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, const char *name, uint32_t file,
-                      uint32_t line, uint32_t col) {
-  SysVar v = sysVarAt((SysFamily)family, i, j);
-  if (v == kNoSysVar) return failed(ctx, file, line, col, sysVarIndexMessage(name, (SysFamily)family, i, j));
-  return (double)v;
+double ncrt_sysvar(ncrt_ctx *ctx, double ref, const char *name, uint32_t file, uint32_t line, uint32_t col) {
+  double v;
+  std::string err;
+  SysRef r = sysRefFromNumber(ref);
+  if ((int)r.var < kSysVarIds && ctx->sink.readSystem(r, v, err)) return v;
+  return failed(ctx, file, line, col, err.empty() ? runErrorMessage(RunError::SysVar, ctx->limits, name) : err);
 }
 
-double ncrt_sysvar_set(ncrt_ctx *ctx, uint32_t id, double v, uint32_t file, uint32_t line, uint32_t col) {
+double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, double k, const char *name, uint32_t file,
+                      uint32_t line, uint32_t col) {
+  SysRef r = sysVarAt((SysFamily)family, i, j, k);
+  if (r.var == kNoSysVar) return failed(ctx, file, line, col, sysVarIndexMessage(name, (SysFamily)family, i, j, k));
+  return sysRefNumber(r);
+}
+
+double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint32_t line, uint32_t col) {
   std::string err;
-  return ctx->sink.writeSystem((SysVar)id, v, {file, line, col}, err) ? 0.0 : failed(ctx, file, line, col, err);
+  return ctx->sink.writeSystem(sysRefFromNumber(ref), v, {file, line, col}, err) ? 0.0 : failed(ctx, file, line, col, err);
 }
 
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }

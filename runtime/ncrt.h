@@ -98,14 +98,16 @@ int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 void ncrt_str_clear(ncrt_ctx *ctx);
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s);
 void ncrt_str_num(ncrt_ctx *ctx, double v);
-/* A system variable (ncc::SysVar id) from the sink; the unset bits when it has none. */
-double ncrt_sysvar(ncrt_ctx *ctx, uint32_t id);
-/* The id of member (i, j) of family `family` (ir/SystemVars.h sysVarAt) as a number, or unset
-   after an error at the loc. */
-double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, const char *name, uint32_t file,
+/* System variables travel as an ncc::SysRef in one double (ir/SystemVars.h sysRefNumber). */
+/* The value of system variable `ref` (named `name`) from the sink, or unset after an error at
+   the loc (RunError::SysVar when the sink has none, or the sink's reason). */
+double ncrt_sysvar(ncrt_ctx *ctx, double ref, const char *name, uint32_t file, uint32_t line, uint32_t col);
+/* The SysRef of member (i, j, k) of family `family` (ir/SystemVars.h sysVarAt), or unset after
+   an error at the loc. */
+double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, double k, const char *name, uint32_t file,
                       uint32_t line, uint32_t col);
-/* Writes system variable `id`: 0, or unset after an error at the loc. */
-double ncrt_sysvar_set(ncrt_ctx *ctx, uint32_t id, double v, uint32_t file, uint32_t line, uint32_t col);
+/* Writes system variable `ref`: 0, or unset after an error at the loc. */
+double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint32_t line, uint32_t col);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
 /* modal_call: the program's modal-call function (i32 (ctx, storage, file, line, col)), which the

@@ -72,9 +72,9 @@ void Codegen::declareRuntime() {
   fStrClear = decl("ncrt_str_clear", voidTy, {ptrTy});
   fStrCat = decl("ncrt_str_cat", voidTy, {ptrTy, ptrTy});
   fStrNum = decl("ncrt_str_num", voidTy, {ptrTy, dblTy});
-  fSysVar = decl("ncrt_sysvar", dblTy, {ptrTy, i32Ty});
-  fSysVarAt = decl("ncrt_sysvar_at", dblTy, {ptrTy, i32Ty, dblTy, dblTy, ptrTy, i32Ty, i32Ty, i32Ty});
-  fSysVarSet = decl("ncrt_sysvar_set", dblTy, {ptrTy, i32Ty, dblTy, i32Ty, i32Ty, i32Ty});
+  fSysVar = decl("ncrt_sysvar", dblTy, {ptrTy, dblTy, ptrTy, i32Ty, i32Ty, i32Ty});
+  fSysVarAt = decl("ncrt_sysvar_at", dblTy, {ptrTy, i32Ty, dblTy, dblTy, dblTy, ptrTy, i32Ty, i32Ty, i32Ty});
+  fSysVarSet = decl("ncrt_sysvar_set", dblTy, {ptrTy, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
   fStrNumFixed = decl("ncrt_str_num_fixed", voidTy, {ptrTy, dblTy});
   fStr = decl("ncrt_str", ptrTy, {ptrTy});
   fCallee = decl("ncrt_callee", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty});

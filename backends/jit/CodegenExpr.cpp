@@ -209,31 +209,31 @@ Value *Codegen::varPtr(const Expr &var, bool write) {
   return scratch;
 }
 
-// The id (i32) a system variable names: a constant, or computed from a family's indices when
-// the program runs (`$_work_offset[s, a]`; an axis symbol is a constant index).
-Value *Codegen::sysVarId(const Expr &var) {
+// The SysRef a system variable names, as its number (sysRefNumber): a constant, or computed
+// from a family's indices when the program runs (`$_work_offset[s, a]`, an axis symbol is a
+// constant index; `$_tool_data[t, d, k]`).
+Value *Codegen::sysVarRef(const Expr &var) {
   SysFamily f;
   int dims = sysFamilyFromName(var.str, f);
   if (!dims) {
-    SysVar sv = kNoSysVar;  // the verifier has checked the name
-    sysVarFromName(var.str, sv);
-    return B.getInt32((uint32_t)sv);
+    SysRef ref;  // the verifier has checked the name
+    sysVarFromName(var.str, ref.var);
+    return ConstantFP::get(dblTy, sysRefNumber(ref));
   }
-  Value *ix[2] = {ConstantFP::get(dblTy, 0.0), ConstantFP::get(dblTy, 0.0)};
+  Value *ix[3] = {ConstantFP::get(dblTy, 0.0), ConstantFP::get(dblTy, 0.0), ConstantFP::get(dblTy, 0.0)};
   for (int k = 0; k < dims && k < (int)var.args.size(); ++k)
     ix[k] = var.args[k]->kind == ExprKind::Symbol ? ConstantFP::get(dblTy, (double)axisIndex(var.args[k]->str))
                                                    : numOf(expr(*var.args[k]));
   auto l = locArgs(var.loc);
-  Value *id = checked(B.CreateCall(fSysVarAt, {ctxArg, B.getInt32((uint32_t)f), ix[0], ix[1], cstring(var.str), l[0], l[1], l[2]}));
-  return B.CreateFPToUI(id, i32Ty);
+  return checked(
+      B.CreateCall(fSysVarAt, {ctxArg, B.getInt32((uint32_t)f), ix[0], ix[1], ix[2], cstring(var.str), l[0], l[1], l[2]}));
 }
 
 Val Codegen::loadVar(const Expr &var) {
   if (var.space == VarSpace::System) {  // asked of the executor when the program runs
-    Value *v = B.CreateCall(fSysVar, {ctxArg, sysVarId(var)});
-    Value *none = B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
-    faultIf(none, var.loc, NCRT_FAULT_SYSVAR, var.str, nullptr);
-    return {v, false};
+    Value *ref = sysVarRef(var);
+    auto l = locArgs(var.loc);
+    return {checked(B.CreateCall(fSysVar, {ctxArg, ref, cstring(var.str), l[0], l[1], l[2]})), false};
   }
   Value *v = B.CreateLoad(dblTy, varPtr(var, false));
   bool mayString = var.space == VarSpace::QParam && var.str == "QS";
@@ -266,7 +266,8 @@ Value *Codegen::convertFor(const Expr &var, const VarDecl *d, Val value) {
 void Codegen::storeVar(const Expr &var, Val value) {
   if (var.space == VarSpace::System) {
     auto l = locArgs(var.loc);
-    checked(B.CreateCall(fSysVarSet, {ctxArg, sysVarId(var), numOf(value), l[0], l[1], l[2]}));
+    Value *ref = sysVarRef(var);
+    checked(B.CreateCall(fSysVarSet, {ctxArg, ref, numOf(value), l[0], l[1], l[2]}));
     return;
   }
   Value *v = convertFor(var, declOf(var), value);

@@ -118,7 +118,7 @@ private:
   std::vector<llvm::Value *> locArgs(SourceLoc loc);
   // ------------------------------------------------ expressions (CodegenExpr.cpp)
   Val expr(const ir::Expr &e);
-  llvm::Value *sysVarId(const ir::Expr &var);
+  llvm::Value *sysVarRef(const ir::Expr &var);
   Val binary(const ir::Expr &e);
   Val callBuiltin(const ir::Expr &e);
   llvm::Value *numOf(Val v);  // a string is the error stringAsNumberMessage() at v.loc

@@ -19,6 +19,11 @@
 
 namespace ncc::iso {
 
+// Which Fanuc Custom Macro B variables hold the tool offsets (machine [controller]
+// offset_memory): none, or tool compensation memory C (#2001… H wear, #2201… H geometry,
+// #10001-#13999 H/D wear/geometry; frontend/iso/SystemParams.cpp).
+enum class OffsetMemory : uint8_t { None, C };
+
 struct IsoOptions {
   // How words written without a decimal point are read: "calculator" (X1000 = 1000 mm),
   // "is-b" (x0.001) or "is-c" (x0.0001); see the spec 2.3 for the per-address factors.
@@ -28,6 +33,7 @@ struct IsoOptions {
   bool axesScaleEnable = false;         // G51 reads I J K (else P): machine [controller]
   double scaleWeighting = 0.001;        // G51 factor unit
   std::vector<ModeValue> startup;       // start-up modes: units, feed mode, motion as the block words' context
+  OffsetMemory offsetMemory = OffsetMemory::None;
 };
 
 // Parses the main program file (already in sm) plus the subprograms it calls (same file after

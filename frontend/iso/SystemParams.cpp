@@ -54,9 +54,28 @@ const ParamRange kRanges[] = {
 };
 constexpr SysVar kPositions[] = {SysVar::PosX, SysVar::PosY, SysVar::PosZ, SysVar::PosA, SysVar::PosB, SysVar::PosC};
 
+// Fanuc tool compensation memory C (0i-MF Custom Macro B, milling): H and D offsets, geometry and
+// wear apart, #2001-#2400 for offsets 1-200 and #10001-#13999 for 1-999. Offset number n is
+// tool n's H/D edge, as H and D words address it (docs/MACHINE.md).
+struct OffsetRange {
+  int first, last;
+  ToolField field;
+  const char *what;
+};
+const OffsetRange kMemoryC[] = {
+    {2001, 2200, ToolField::LengthWear, "H wear"},   {2201, 2400, ToolField::Length, "H geometry"},
+    {10001, 10999, ToolField::LengthWear, "H wear"}, {11001, 11999, ToolField::Length, "H geometry"},
+    {12001, 12999, ToolField::RadiusWear, "D wear"}, {13001, 13999, ToolField::Radius, "D geometry"},
+};
+const OffsetRange *offsetRange(long n) {
+  for (const OffsetRange &r : kMemoryC)
+    if (n >= r.first && n <= r.last) return &r;
+  return nullptr;
+}
+
 }  // namespace
 
-SystemParam classifyParameter(Flavour f, long n) {
+SystemParam classifyParameter(Flavour f, OffsetMemory mem, long n) {
   SystemParam p;
   if (f == Flavour::RS274 ? plainNgcParameter((double)n) : plainMacroVariable((double)n)) return p;
   for (const ParamRange &r : kRanges) {
@@ -65,16 +84,28 @@ SystemParam classifyParameter(Flavour f, long n) {
     if (r.family == SysFamily::WorkOffset && axis == 9 && r.axes == 7) axis = 6;  // LinuxCNC R
     else if (axis >= r.axes || (r.family == SysFamily::WorkOffset && axis >= 6)) break;
     p.kind = SystemParam::System;
-    if (r.family != SysFamily::None) p.var = sysVarOf(r.family, sys, axis);
-    else if (r.named != SysVar::Count) p.var = r.named;
-    else p.var = kPositions[axis];
+    if (r.family != SysFamily::None) p.var.var = sysVarOf(r.family, sys, axis);
+    else if (r.named != SysVar::Count) p.var.var = r.named;
+    else p.var.var = kPositions[axis];
     p.what = r.family == SysFamily::WorkOffset
                  ? fmt::format("{} {} {}", r.what, sys, axis == 6 ? 'R' : kAxisLetters[axis])
                  : r.axes > 1 ? fmt::format("{} {}", r.what, kAxisLetters[axis]) : std::string(r.what);
     return p;
   }
+  const OffsetRange *o = f == Flavour::Fanuc ? offsetRange(n) : nullptr;
+  if (o && mem == OffsetMemory::C) {
+    int number = (int)(n - o->first + 1);
+    p.kind = SystemParam::System;
+    p.var = {sysVarOf(SysFamily::ToolData, 0, (int)o->field), number, 0};
+    p.what = fmt::format("tool offset {} {}", number, o->what);
+    return p;
+  }
   p.kind = SystemParam::Unsupported;
-  if (f == Flavour::RS274)
+  if (o)
+    p.what = fmt::format("#{} is a tool offset variable: the machine's [controller] offset_memory is \"none\" (\"C\": "
+                         "Fanuc tool compensation memory C)",
+                         n);
+  else if (f == Flavour::RS274)
     p.what = n > 5602 ? fmt::format("parameter #{} is out of range (rs274 has #1-#5602)", n)
                       : fmt::format("parameter #{} (LinuxCNC controller state) is not provided by ncc", n);
   else if (n == 3000 || n == 3006)
@@ -85,11 +116,21 @@ SystemParam classifyParameter(Flavour f, long n) {
   return p;
 }
 
-ir::ExprPtr numberedParameter(Flavour f, long n, SourceLoc loc, std::string &err) {
-  SystemParam sp = classifyParameter(f, n);
+// A System variable reading `ref`: its name, or tool data's family with constant indices.
+static ir::ExprPtr systemVariable(const SysRef &ref, SourceLoc loc) {
+  SysVarInfo info = sysVarInfo(ref.var);
+  if (info.family != SysFamily::ToolData) return ir::Expr::var(ir::VarSpace::System, sysVarName(ref.var), nullptr, loc);
+  auto e = ir::Expr::var(ir::VarSpace::System, sysFamilyName(info.family), ir::Expr::number(ref.tool, ir::Type::Int, loc), loc);
+  e->args.push_back(ir::Expr::number(ref.edge, ir::Type::Int, loc));
+  e->args.push_back(ir::Expr::number(info.axis, ir::Type::Int, loc));
+  return e;
+}
+
+ir::ExprPtr numberedParameter(Flavour f, OffsetMemory mem, long n, SourceLoc loc, std::string &err) {
+  SystemParam sp = classifyParameter(f, mem, n);
   switch (sp.kind) {
   case SystemParam::Plain: return ir::Expr::var(ir::VarSpace::Numbered, "", ir::Expr::number((double)n, ir::Type::Int, loc), loc);
-  case SystemParam::System: return ir::Expr::var(ir::VarSpace::System, sysVarName(sp.var), nullptr, loc);
+  case SystemParam::System: return systemVariable(sp.var, loc);
   case SystemParam::Alarm: err = fmt::format("#{} can only be assigned (alarm and message stop)", n); return nullptr;
   case SystemParam::Unsupported: err = sp.what; return nullptr;
   }

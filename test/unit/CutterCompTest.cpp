@@ -230,7 +230,7 @@ struct CompRun {
   Executor ex{machine, buf, diags};
   CompRun() {
     diags.setCollect(true);
-    machine.tools[1].radius = kR;
+    machine.addTool(1, ToolEdge{0, kR});
   }
   bool operator()(std::initializer_list<MachineCmd> cmds) {
     for (auto &c : cmds)

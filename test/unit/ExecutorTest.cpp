@@ -231,7 +231,7 @@ TEST(Executor, WorkOffsetsG92AndG10) {
 
 TEST(Executor, ToolLengthFromTable) {
   Machine m;
-  m.tools[1] = {25.4, 3};
+  m.addTool(1, ToolEdge{25.4, 3});
   ExecRun run(m);
   ASSERT_TRUE(run({words(CmdKind::ToolSelect, {{Word::T, 1}}), words(CmdKind::ToolChange, {}),
                    words(CmdKind::ToolLength, {{Word::H, 1}}), move({{Word::Z, 10}})}));
@@ -455,7 +455,7 @@ TEST(Executor, Rs274ArcAndFeedMessages) {
     // With a tool table, a number outside it (and outside free_tools) is an error; without
     // one, every number is a tool of zero length.
     Machine m;
-    m.tools[1] = {10, 1};
+    m.addTool(1, ToolEdge{10, 1});
     ExecRun table(m);
     EXPECT_FALSE(table({words(CmdKind::ToolLength, {{Word::H, 9}})}));
     EXPECT_EQ(table.diags.collected()[0].message, "Requested tool 9 not found in the tool table");

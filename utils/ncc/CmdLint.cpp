@@ -29,8 +29,8 @@ public:
     exec_.exec(c);
     return true;
   }
-  bool readSystem(SysVar v, double &out) override { return exec_.readSystem(v, out); }
-  bool writeSystem(SysVar v, double value, SourceLoc loc, std::string &err) override {
+  bool readSystem(const SysRef &v, double &out, std::string &err) override { return exec_.readSystem(v, out, err); }
+  bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) override {
     return exec_.writeSystem(v, value, loc, err);
   }
   bool saveModal() override { return exec_.saveModal(); }

@@ -90,6 +90,7 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   FrontendOptions fo;
   fo.decimalMode = opts.decimalMode.empty() ? machine.decimalMode : opts.decimalMode;
   fo.axesScaleEnable = machine.controller.axesScaleEnable;
+  fo.offsetMemory = machine.controller.offsetMemory;
   fo.scaleWeighting = machine.controller.scaleWeighting;
   fo.startup = machine.controller.startup;
   for (unsigned l : opts.blockDelete)
