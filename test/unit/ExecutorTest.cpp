@@ -307,6 +307,9 @@ std::string steps(const std::vector<CycleStep> &s) {
       std::snprintf(b, sizeof b, "%s%s(%g,%g,%g) ", st.preMove ? "pre" : "", st.kind == CycleStepKind::Rapid ? "R" : "F",
                     st.pos[0], st.pos[1], st.pos[2]);
       break;
+    case CycleStepKind::Arc:
+      std::snprintf(b, sizeof b, "A%s(%g,%g,%g) ", st.ccw ? "+" : "-", st.pos[0], st.pos[1], st.pos[2]);
+      break;
     case CycleStepKind::Dwell: std::snprintf(b, sizeof b, "D%g ", st.seconds); break;
     case CycleStepKind::SpindleStop: std::snprintf(b, sizeof b, "S0 "); break;
     case CycleStepKind::SpindleCW: std::snprintf(b, sizeof b, "CW "); break;

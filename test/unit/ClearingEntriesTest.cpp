@@ -1,0 +1,204 @@
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-09
+// The pocket entries of the cycle library (runtime/cycles/ClearingEntries.cpp) checked by
+// geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts outside
+// the wall (less the side allowance when only roughing), (2) at the final depth every point of
+// the region to clear lies within one tool radius of the path: no material left standing.
+#include "runtime/cycles/Clearing.h"
+#include "runtime/cycles/Library.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+using namespace ncc;
+
+namespace {
+struct Sample {
+  double x, y, z;
+};
+
+// Points along the moves every `step` mm (rapids included: they must not cut either).
+std::vector<Sample> samplePath(const std::vector<CycleStep> &steps, std::array<double, 3> at, double step = 0.05) {
+  std::vector<Sample> out;
+  for (const CycleStep &s : steps) {
+    if (s.kind == CycleStepKind::Rapid || s.kind == CycleStepKind::Feed) {
+      double len = std::sqrt(std::pow(s.pos[0] - at[0], 2) + std::pow(s.pos[1] - at[1], 2) + std::pow(s.pos[2] - at[2], 2));
+      int n = std::max(1, (int)std::ceil(len / step));
+      for (int i = 0; i <= n; ++i) {
+        double t = (double)i / n;
+        out.push_back({at[0] + t * (s.pos[0] - at[0]), at[1] + t * (s.pos[1] - at[1]), at[2] + t * (s.pos[2] - at[2])});
+      }
+    } else if (s.kind == CycleStepKind::Arc) {
+      double cx = s.centre[0], cy = s.centre[1];
+      double r = std::hypot(at[0] - cx, at[1] - cy), r1 = std::hypot(s.pos[0] - cx, s.pos[1] - cy);
+      EXPECT_NEAR(r, r1, 1e-6) << "an arc's end is not on its circle";
+      double a0 = std::atan2(at[1] - cy, at[0] - cx), a1 = std::atan2(s.pos[1] - cy, s.pos[0] - cx);
+      double sweep = s.ccw ? a1 - a0 : a0 - a1;
+      if (std::hypot(s.pos[0] - at[0], s.pos[1] - at[1]) < 1e-9) sweep = 2 * M_PI;
+      else if (sweep <= 0) sweep += 2 * M_PI;
+      int n = std::max(1, (int)std::ceil(sweep * r / step));
+      for (int i = 0; i <= n; ++i) {
+        double t = (double)i / n, a = a0 + (s.ccw ? 1 : -1) * t * sweep;
+        out.push_back({cx + r * std::cos(a), cy + r * std::sin(a), at[2] + t * (s.pos[2] - at[2])});
+      }
+    } else {
+      continue;
+    }
+    at = s.pos;
+  }
+  return out;
+}
+
+// Signed distance to a rectangle of half sides a x b with corners rounded by rc, centred at the
+// origin (negative inside).
+double roundedBox(double x, double y, double a, double b, double rc) {
+  double qx = std::fabs(x) - (a - rc), qy = std::fabs(y) - (b - rc);
+  return std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - rc;
+}
+
+struct Pocket {
+  std::function<double(double, double)> wall;  // signed distance in program XY
+  double xmin, xmax, ymin, ymax;
+};
+
+// Runs the entry and checks the wall and the coverage. `keep`: the material the pass leaves
+// on the wall (the side allowance when only roughing); `bottom`: the final level.
+void checkPocket(const char *entry, const CycleArgs &args, const CycleContext &ctx, const Pocket &p, double keep,
+                 double bottom, double surface) {
+  SCOPED_TRACE(entry);
+  const CycleDef *d = findCycle(entry);
+  ASSERT_NE(d, nullptr);
+  std::vector<CycleStep> steps;
+  std::string err;
+  ASSERT_TRUE(d->expand(args, ctx, steps, err)) << err;
+  std::vector<Sample> path = samplePath(steps, ctx.position);
+  const double r = ctx.toolRadius;
+  // (1) Below the surface the tool stays inside the wall less `keep` (chords sag inward only).
+  double worst = -1e9;
+  for (const Sample &s : path)
+    if (s.z < surface) worst = std::max(worst, p.wall(s.x, s.y) + r + keep);
+  EXPECT_LE(worst, 1e-6) << "the tool cuts " << worst << " mm beyond the wall";
+  // (2) At the final depth every point of the region to clear is within a radius of the path.
+  // The floor's samples in cells of a tool radius: a point's reach is in its 3 x 3 cells.
+  std::map<std::pair<long, long>, std::vector<Sample>> cells;
+  auto cell = [&](double v) { return (long)std::floor(v / r); };
+  for (const Sample &s : path)
+    if (std::fabs(s.z - bottom) < 1e-9) cells[{cell(s.x), cell(s.y)}].push_back(s);
+  ASSERT_FALSE(cells.empty());
+  int points = 0, missed = 0;
+  double worstGap = 0;
+  for (double x = p.xmin; x <= p.xmax; x += 0.25)
+    for (double y = p.ymin; y <= p.ymax; y += 0.25) {
+      if (p.wall(x, y) > -keep - 1e-3) continue;  // outside the region to clear (and its edge)
+      ++points;
+      double best = 1e18;
+      for (long i = cell(x) - 1; i <= cell(x) + 1; ++i)
+        for (long j = cell(y) - 1; j <= cell(y) + 1; ++j)
+          if (auto it = cells.find({i, j}); it != cells.end())
+            for (const Sample &s : it->second) best = std::min(best, std::hypot(s.x - x, s.y - y));
+      worstGap = std::max(worstGap, best - r);
+      if (best > r + 0.03) ++missed;  // sampling 0.05 mm plus chords 0.001 mm
+    }
+  EXPECT_GT(points, 100);
+  EXPECT_EQ(missed, 0) << "material left standing: up to " << worstGap << " mm out of the tool's reach";
+}
+
+CycleArgs args(std::initializer_list<std::pair<const char *, double>> kv) {
+  CycleArgs a;
+  for (auto &[k, v] : kv) a.num[k] = v;
+  return a;
+}
+
+CycleContext at(double x, double y, double z, double toolRadius) {
+  CycleContext c;
+  c.position = {x, y, z};
+  c.toolRadius = toolRadius;
+  c.spindle = 1;
+  return c;
+}
+}  // namespace
+
+TEST(ClearingEntries, RectangularPocketRoughAndFinish) {
+  // 60 x 30, corners = tool radius (Q220 0), allowances finished away: the whole pocket.
+  CycleArgs a = args({{"Q215", 0}, {"Q218", 60}, {"Q219", 30}, {"Q220", 0}, {"Q368", 0.4}, {"Q207", 500},
+                      {"Q201", -8}, {"Q202", 3}, {"Q369", 0.2}, {"Q206", 150}, {"Q200", 2}, {"Q203", 0},
+                      {"Q204", 20}, {"Q370", 1.2}});
+  Pocket p{[](double x, double y) { return roundedBox(x - 10, y - 5, 30, 15, 5); }, -21, 41, -11, 21};
+  checkPocket("hei.251", a, at(10, 5, 50, 5), p, 0, -8, 0);
+}
+
+TEST(ClearingEntries, RectangularPocketRotatedFromCornerUpCut) {
+  // Tool at the lower-left corner (Q367 1), pocket turned 30 degrees about it, up-cut, corner
+  // radius 7 with a 3 mm tool, wide stepover (Q370 1.9: the rings' corners would leave material).
+  CycleArgs a = args({{"Q215", 0}, {"Q218", 50}, {"Q219", 24}, {"Q220", 7}, {"Q368", 0.5}, {"Q224", 30},
+                      {"Q367", 1}, {"Q207", 500}, {"Q351", -1}, {"Q201", -5}, {"Q202", 5}, {"Q369", 0.3},
+                      {"Q206", 150}, {"Q338", 2}, {"Q200", 2}, {"Q203", 1}, {"Q204", 10}, {"Q370", 1.9}});
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  const double cx = 25 * c - 12 * s, cy = 25 * s + 12 * c;  // the centre from the corner
+  Pocket p{[=](double x, double y) {
+             double dx = x - cx, dy = y - cy;
+             return roundedBox(c * dx + s * dy, -s * dx + c * dy, 25, 12, 7);
+           },
+           -15, 40, -5, 45};
+  checkPocket("hei.251", a, at(0, 0, 30, 3), p, 0, -4, 1);
+}
+
+TEST(ClearingEntries, RectangularPocketRoughingLeavesTheAllowance) {
+  // Roughing only: the walls keep Q368, the floor Q369; corners 6 >= tool radius + allowance.
+  CycleArgs a = args({{"Q215", 1}, {"Q218", 40}, {"Q219", 40}, {"Q220", 6}, {"Q368", 1}, {"Q207", 500},
+                      {"Q201", -6}, {"Q202", 4}, {"Q369", 0.5}, {"Q206", 150}, {"Q200", 2}, {"Q203", 0},
+                      {"Q370", 1.5}});
+  Pocket p{[](double x, double y) { return roundedBox(x, y, 20, 20, 6); }, -21, 21, -21, 21};
+  checkPocket("hei.251", a, at(0, 0, 10, 4), p, 1, -5.5, 0);
+}
+
+TEST(ClearingEntries, CircularPocket) {
+  CycleArgs a = args({{"Q215", 0}, {"Q223", 50}, {"Q368", 0.5}, {"Q207", 500}, {"Q201", -12}, {"Q202", 5},
+                      {"Q369", 0.2}, {"Q206", 150}, {"Q338", 6}, {"Q200", 2}, {"Q203", 0}, {"Q204", 20},
+                      {"Q370", 1.9}, {"Q385", 300}});
+  Pocket p{[](double x, double y) { return std::hypot(x - 5, y + 5) - 25; }, -21, 31, -31, 21};
+  checkPocket("hei.252", a, at(5, -5, 40, 6), p, 0, -12, 0);
+}
+
+TEST(ClearingEntries, CircularPocketUnderM4RunsTheOtherWay) {
+  CycleArgs a = args({{"Q215", 2}, {"Q223", 30}, {"Q368", 0.5}, {"Q207", 500}, {"Q201", -5}, {"Q202", 5},
+                      {"Q206", 150}, {"Q200", 2}, {"Q203", 0}});
+  CycleContext ctx = at(0, 0, 10, 5);
+  std::vector<CycleStep> m3, m4;
+  std::string err;
+  ASSERT_TRUE(findCycle("hei.252")->expand(a, ctx, m3, err)) << err;
+  ctx.spindle = 2;
+  ASSERT_TRUE(findCycle("hei.252")->expand(a, ctx, m4, err)) << err;
+  int arcs = 0;
+  for (size_t i = 0; i < m3.size(); ++i)
+    if (m3[i].kind == CycleStepKind::Arc) {
+      ++arcs;
+      EXPECT_TRUE(m3[i].ccw);  // climb in a pocket with M3: counter-clockwise
+      EXPECT_FALSE(m4[i].ccw);
+    }
+  EXPECT_EQ(arcs, 3);  // onto the wall, the wall, off it
+}
+
+TEST(Clearing, WideStepoverShrinksToLeaveNothing) {
+  // Rings 9.5 apart with a radius-5 tool would leave material between their sharp corners.
+  ClearingSpec s;
+  s.contour = {{0, 0}, {60, 0}, {60, 60}, {0, 60}};
+  s.toolRadius = 5, s.stepover = 9.5;
+  std::vector<Polygon> rings;
+  std::string err;
+  ASSERT_TRUE(clearingRings(s, rings, err)) << err;
+  for (double x = 5; x <= 55; x += 0.5)
+    for (double y = 5; y <= 55; y += 0.5) {
+      double best = 1e18;
+      for (auto &ring : rings)
+        for (size_t i = 0; i < ring.size(); ++i) {
+          auto &p = ring[i], &q = ring[(i + 1) % ring.size()];
+          double dx = q[0] - p[0], dy = q[1] - p[1], l2 = dx * dx + dy * dy;
+          double t = l2 > 0 ? std::clamp(((x - p[0]) * dx + (y - p[1]) * dy) / l2, 0.0, 1.0) : 0;
+          best = std::min(best, std::hypot(p[0] + t * dx - x, p[1] + t * dy - y));
+        }
+      ASSERT_LE(best, 5 + 1e-3) << "at " << x << "," << y;
+    }
+}
