@@ -58,6 +58,15 @@ bool param(const CycleArgs &a, const char *k, double lo, double hi, double &out,
   return true;
 }
 
+// A choice 0 … hi (Q215, Q367 …); false with err set when out of range.
+bool position(const CycleArgs &a, const char *k, int hi, int &out, std::string &err) {
+  double v;
+  if (!param(a, k, 0, hi, v, err)) return false;
+  if (v != std::floor(v)) return fail(err, fmt::format("{} must be 0 … {}", k, hi));
+  out = (int)v;
+  return true;
+}
+
 // False with err empty when the depth is 0 (the TNC does not run the cycle).
 bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, HeiMill &m, std::string &err) {
   err.clear();
@@ -68,9 +77,8 @@ bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, Hei
   m.r = ctx.toolRadius;
   m.surface = a.get("Q203"), m.depth = std::fabs(a.get("Q201"));
   m.clearance = std::fabs(a.get("Q200"));
-  double op, climb, overlap;
-  if (!param(a, "Q215", 0, 2, op, err) || op != std::floor(op)) return err.empty() ? fail(err, "Q215 must be 0, 1 or 2") : false;
-  m.op = (int)op;
+  double climb, overlap;
+  if (!position(a, "Q215", 2, m.op, err)) return false;
   if (!(a.get("Q202") > 0)) return fail(err, "Q202 (plunging depth) must be greater than 0");
   m.infeed = a.get("Q202");
   if (m.depth / m.infeed > kMaxPecks) return fail(err, "Q202 (plunging depth) too small");
@@ -99,13 +107,47 @@ bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, Hei
   return true;
 }
 
-// A pocket in its own frame (centre at the origin): the finished wall and the tool-centre path
-// that finishes it, which starts at the middle of a side with outward normal `normal`; `room`
-// bounds the radius of the arcs onto and off it.
-struct PocketShape {
-  Contour wall, finish;
+// A wall the finishing passes cut: the tool-centre path (a closed contour round the element,
+// counter-clockwise from `start`), its outward normal there (away from the element's middle), the
+// largest radius of the arcs onto and off it, and which side of it the material to finish lies
+// (`inside`: a pocket's wall; else a stud's).
+struct FinishPath {
+  Contour path;
   PlanePoint normal{1, 0};
   double room = 0;
+  bool inside = true;
+};
+
+// The walls in Q338 infeeds (0: one at the full depth) at Q385: rapid over a point off the wall,
+// plunge at Q206, onto the wall on a quarter arc, once round, off it on the mirrored quarter, up by
+// Q200. [model] The arcs have the radius Q368 + Q200 (at most `room`) and touch the path at its
+// start; between passes the tool crosses over the roughed floor, not through the floor allowance.
+void finishWalls(const HeiMill &m, const FinishPath &f, bool ccw, Mill &mill) {
+  const double roughDepth = m.depth - m.floorAllowance;
+  const double rho = std::min(m.sideAllowance + m.clearance, f.room);
+  const PlanePoint at = f.path.start, n = f.inside ? f.normal : PlanePoint{-f.normal[0], -f.normal[1]};
+  const PlanePoint t = ccw ? rot90(f.normal) : PlanePoint{-rot90(f.normal)[0], -rot90(f.normal)[1]};  // travel at `at`
+  // The arcs' centre lies off the wall on the side away from the material: they turn as the
+  // path does about a pocket, the other way about a stud.
+  const bool arcCcw = ccw == f.inside;
+  const PlanePoint q = along(at, n, -rho), from = along(q, t, -rho), to = along(q, t, rho);
+  double link = -m.clearance;
+  for (double s : infeeds(m.finishInfeed, m.depth)) {
+    mill.go(from, m.level(link));
+    mill.feed(from, m.level(s), m.plungeFeed);
+    if (rho > 0) mill.arc(at, q, arcCcw, m.level(s), m.finishFeed);
+    mill.run(f.path, ccw, m.level(s), m.finishFeed);
+    if (rho > 0) mill.arc(to, q, arcCcw, m.level(s), m.finishFeed);
+    link = std::min(s, roughDepth) - m.clearance;
+    mill.up(m.level(link));
+  }
+}
+
+// A pocket in its own frame (centre at the origin): the finished wall and the pass that finishes
+// it.
+struct PocketShape {
+  Contour wall;
+  FinishPath finish;
 };
 
 bool rings(const HeiMill &m, const PocketShape &p, double allowance, std::vector<Polygon> &out, std::string &err) {
@@ -115,10 +157,9 @@ bool rings(const HeiMill &m, const PocketShape &p, double allowance, std::vector
   return clearingRings(s, out, err);
 }
 
-// Heidenhain 251/252 (seed002a L5830-5886, L6143-6241): roughing level by level (plunge at the
-// centre, rings from the middle to the wall less the allowances, up by Q200 and back to the centre
-// at rapid), then the walls in Q338 infeeds (onto and off the wall on quarter arcs), then the floor
-// from the middle out; the tool ends at the 2nd set-up clearance above the call position.
+// Heidenhain 251/252/253 (seed002a L5830-5886, L6143-6241, L6454-6496): roughing level by level
+// (plunge at the centre, rings from the middle to the wall less the allowances, up by Q200 and back
+// to the centre at rapid), then the walls (finishWalls), then the floor from the middle out.
 bool heiPocket(const HeiMill &m, const PocketShape &p, Mill &mill, std::string &err) {
   const PlanePoint centre{0, 0};
   const double roughDepth = m.depth - m.floorAllowance;
@@ -133,25 +174,7 @@ bool heiPocket(const HeiMill &m, const PocketShape &p, Mill &mill, std::string &
       mill.go(centre, m.level(t - m.clearance));
     }
   }
-  if (m.finishing() && m.sideAllowance > 0) {
-    // [model] onto the wall on a quarter arc of radius Q368 + Q200 (at most `room`), tangent at the
-    // path's start, and off it on the mirrored quarter.
-    const double rho = std::min(m.sideAllowance + m.clearance, p.room);
-    const PlanePoint at = p.finish.start, n = p.normal;
-    const PlanePoint t = m.ccw ? rot90(n) : PlanePoint{-rot90(n)[0], -rot90(n)[1]};
-    const PlanePoint q = along(at, n, -rho), from = along(q, t, -rho), to = along(q, t, rho);
-    // Between passes the tool crosses over the roughed floor, not through the floor allowance.
-    double link = -m.clearance;
-    for (double s : infeeds(m.finishInfeed, m.depth)) {
-      mill.go(from, m.level(link));
-      mill.feed(from, m.level(s), m.plungeFeed);
-      if (rho > 0) mill.arc(at, q, m.ccw, m.level(s), m.finishFeed);
-      mill.run(p.finish, m.ccw, m.level(s), m.finishFeed);
-      if (rho > 0) mill.arc(to, q, m.ccw, m.level(s), m.finishFeed);
-      link = std::min(s, roughDepth) - m.clearance;
-      mill.up(m.level(link));
-    }
-  }
+  if (m.finishing() && m.sideAllowance > 0) finishWalls(m, p.finish, m.ccw, mill);
   if (m.finishing() && m.floorAllowance > 0) {
     // The walls are finished (or have no allowance): rings out to the wall itself.
     std::vector<Polygon> floor;
@@ -172,15 +195,26 @@ void heiEnd(const HeiMill &m, int plane, Mill &mill) {
   mill.goProgram(end);
 }
 
+// The writer for an element whose centre lies `offset` from the tool in the element's own frame,
+// the element turned by `degrees` about the tool.
+Mill placed(std::vector<CycleStep> &out, const CycleContext &ctx, const HeiMill &m, PlanePoint offset, double degrees) {
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  double s, c;
+  sinCosDegrees(degrees, s, c);
+  PlanePoint origin{ctx.position[ax.u] + c * offset[0] - s * offset[1], ctx.position[ax.v] + s * offset[0] + c * offset[1]};
+  return Mill(out, ctx.plane, origin, degrees, m.lv.dir, ctx.position);
+}
+
 // The corner Q367 puts at the tool (1 lower left … 4 upper left) as a multiple of the half sides.
 constexpr double kCorner[5][2] = {{0, 0}, {-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
 bool hei251(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
   HeiMill m;
   if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
-  double L = a.get("Q218"), W = a.get("Q219"), rc = a.get("Q220"), pos;
+  double L = a.get("Q218"), W = a.get("Q219"), rc = a.get("Q220");
+  int pos;
   if (!(L > 0) || !(W > 0)) return fail(err, "Q218 and Q219 (side lengths) must be greater than 0");
-  if (!param(a, "Q367", 0, 4, pos, err) || pos != std::floor(pos)) return err.empty() ? fail(err, "Q367 must be 0 … 4") : false;
+  if (!position(a, "Q367", 4, pos, err)) return false;
   if (rc == 0) rc = m.r;  // the manual: 0 means the tool radius
   if (rc < m.r) return fail(err, "Q220 (corner radius) is smaller than the tool radius: the tool cannot cut the corners");
   if (2 * rc > std::min(L, W)) return fail(err, "Q220 (corner radius) is larger than half the shorter side");
@@ -189,15 +223,10 @@ bool hei251(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   PocketShape p;
   p.wall = roundedRect(L / 2, W / 2, rc);
   double a2 = L / 2 - m.r, b2 = W / 2 - m.r;
-  p.finish = roundedRect(a2, b2, rc - m.r);
-  p.room = std::min(a2, b2) / 2;
+  p.finish.path = roundedRect(a2, b2, rc - m.r);
+  p.finish.room = std::min(a2, b2) / 2;
   // Q367 places the pocket's corner at the tool; Q224 turns the pocket about the tool.
-  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
-  double s, c, angle = a.get("Q224");
-  sinCosDegrees(angle, s, c);
-  double du = -kCorner[(int)pos][0] * L / 2, dv = -kCorner[(int)pos][1] * W / 2;
-  PlanePoint origin{ctx.position[ax.u] + c * du - s * dv, ctx.position[ax.v] + s * du + c * dv};
-  Mill mill(out, ctx.plane, origin, angle, m.lv.dir, ctx.position);
+  Mill mill = placed(out, ctx, m, {-kCorner[(int)pos][0] * L / 2, -kCorner[(int)pos][1] * W / 2}, a.get("Q224"));
   if (!heiPocket(m, p, mill, err)) return false;
   heiEnd(m, ctx.plane, mill);
   return true;
@@ -211,12 +240,151 @@ bool hei252(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (2 * (m.r + m.sideAllowance) >= d) return fail(err, "the tool with the side allowance Q368 does not fit into the pocket");
   PocketShape p;
   p.wall = circleContour(d / 2);
-  p.finish = circleContour(d / 2 - m.r);
-  p.room = (d / 2 - m.r) / 2;
-  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
-  Mill mill(out, ctx.plane, {ctx.position[ax.u], ctx.position[ax.v]}, 0, m.lv.dir, ctx.position);
+  p.finish.path = circleContour(d / 2 - m.r);
+  p.finish.room = (d / 2 - m.r) / 2;
+  Mill mill = placed(out, ctx, m, {0, 0}, 0);
   if (!heiPocket(m, p, mill, err)) return false;
   heiEnd(m, ctx.plane, mill);
+  return true;
+}
+
+// Q367 of 253: the tool at the middle, the left end, the left arc's centre, the right arc's
+// centre, the right end; the slot's centre from the tool in slot lengths (x L/2, x W/2 on x).
+constexpr double kSlotEnd[5][2] = {{0, 0}, {1, 0}, {1, -1}, {-1, 1}, {-1, 0}};
+
+// A slot as wide as the tool: the tool-centre path is the centre line between the arcs' centres
+// (seed002a L6563-6567: roughing only), the tool lifted out of the slot after every infeed.
+void heiSlotLine(const HeiMill &m, double half, Mill &mill) {
+  const PlanePoint left{-half, 0}, right{half, 0};
+  auto pass = [&](double t, double f) {
+    mill.go(left, m.lv.zsc);
+    mill.feed(left, m.level(t), m.plungeFeed);
+    mill.feed(right, m.level(t), f);
+    mill.up(m.lv.zsc);
+  };
+  if (m.roughing())
+    for (double t : infeeds(m.infeed, m.depth - m.floorAllowance)) pass(t, m.millFeed);
+  if (m.finishing() && m.floorAllowance > 0) pass(m.depth, m.finishFeed);
+}
+
+bool hei253(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiMill m;
+  if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
+  double L = a.get("Q218"), W = a.get("Q219");
+  int pos;
+  if (!(L > 0) || !(W > 0)) return fail(err, "Q218 (slot length) and Q219 (slot width) must be greater than 0");
+  if (W > L) return fail(err, "Q219 (slot width) is larger than Q218 (slot length, the longer side)");
+  if (!position(a, "Q367", 4, pos, err)) return false;
+  // Q367 puts an end or an arc's centre at the tool; Q374 turns the slot about the tool.
+  Mill mill = placed(out, ctx, m, {kSlotEnd[pos][0] * L / 2 + kSlotEnd[pos][1] * W / 2, 0}, a.get("Q374"));
+  if (m.sideAllowance == 0 && std::fabs(W - 2 * m.r) < 1e-9) {
+    heiSlotLine(m, (L - W) / 2, mill);
+  } else {
+    if (2 * (m.r + m.sideAllowance) >= W) return fail(err, "the tool with the side allowance Q368 does not fit into the slot");
+    PocketShape p;
+    p.wall = roundedRect(L / 2, W / 2, W / 2);
+    // The wall is finished from the left arc (seed002a L6486), counter-clockwise from its apex.
+    p.finish.path = halfTurn(roundedRect(L / 2 - m.r, W / 2 - m.r, W / 2 - m.r));
+    p.finish.normal = {-1, 0};
+    p.finish.room = (W / 2 - m.r) / 2;
+    if (!heiPocket(m, p, mill, err)) return false;
+  }
+  // The end: the 2nd set-up clearance over the slot's centre (the start when Q367 is 0).
+  mill.up(m.lv.z2);
+  mill.go({0, 0}, m.lv.z2);
+  return true;
+}
+
+// ---- studs (256, 257): laps round the stud from the blank inward.
+// The stud in its own frame: its outline offset outward by d (a tool-centre lap, counter-clockwise
+// from the +x side), how far from the stud the blank reaches at most, and the approach point.
+struct StudShape {
+  Contour (*lap)(const StudShape &, double d);
+  double a = 0, b = 0, rc = 0;  // half sides and corner radius (a circle: a = b = rc = radius)
+  double reach = 0;
+  PlanePoint approach{};
+};
+Contour rectLap(const StudShape &s, double d) { return roundedRect(s.a + d, s.b + d, s.rc + d); }
+Contour circleLap(const StudShape &s, double d) { return circleContour(s.a + d); }
+
+// The laps' tool-centre distances from the stud, outermost first: the innermost leaves
+// `allowance`, the outermost reaches the blank's farthest point, evenly at most a stepover apart
+// (seed002a L7034-7081: further laps "with constant lateral step").
+std::vector<double> lapOffsets(const HeiMill &m, const StudShape &s, double allowance) {
+  const double inner = m.r + allowance, outer = std::max(inner, s.reach - m.r);
+  int n = (int)std::ceil((outer - inner) / m.stepover - 1e-9);
+  std::vector<double> out;
+  for (int k = n; k > 0; --k) out.push_back(inner + (outer - inner) * k / n);
+  out.push_back(inner);
+  return out;
+}
+
+// Heidenhain 256/257: each level from the approach point outside the blank (plunge there at Q206),
+// in to the outermost lap, the laps inward at Q207, back out to the approach point; then the wall
+// (finishWalls, from outside) and the floor; the end at the 2nd set-up clearance there.
+// [model] The moves onto the laps and back out are straight and radial, the laps concentric.
+void heiStud(const HeiMill &m, const StudShape &s, Mill &mill) {
+  const bool ccw = !m.ccw;  // climb milling on an outer wall runs clockwise with M3
+  const double roughDepth = m.depth - m.floorAllowance;
+  auto laps = [&](double level, double allowance, double f) {
+    for (double d : lapOffsets(m, s, allowance)) {
+      Contour lap = s.lap(s, d);
+      mill.feed(lap.start, level, f);
+      mill.run(lap, ccw, level, f);
+    }
+    mill.feed(s.approach, level, f);
+  };
+  if (m.roughing()) {
+    mill.go(s.approach, m.lv.zsc);
+    for (double t : infeeds(m.infeed, roughDepth)) {
+      mill.feed(s.approach, m.level(t), m.plungeFeed);
+      laps(m.level(t), m.sideAllowance, m.millFeed);
+    }
+  }
+  if (m.finishing() && m.sideAllowance > 0)
+    finishWalls(m, {s.lap(s, m.r), {1, 0}, m.sideAllowance + m.clearance, false}, ccw, mill);
+  if (m.finishing() && m.floorAllowance > 0) {
+    mill.go(s.approach, m.level(roughDepth - m.clearance));
+    mill.feed(s.approach, m.level(m.depth), m.plungeFeed);
+    laps(m.level(m.depth), 0, m.finishFeed);
+  }
+  mill.up(m.lv.z2);
+}
+
+bool hei256(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiMill m;
+  if (!heiMill(a, ctx, 0.1, m, err)) return err.empty();
+  double L = a.get("Q218"), W = a.get("Q219"), BL = a.get("Q424"), BW = a.get("Q425"), rc = a.get("Q220");
+  int pos;
+  if (!(L > 0) || !(W > 0)) return fail(err, "Q218 and Q219 (side lengths) must be greater than 0");
+  if (!(BL > L) || !(BW > W)) return fail(err, "the blank Q424 x Q425 must be larger than the stud Q218 x Q219");
+  if (rc < 0) return fail(err, "Q220 < 0 (chamfered corners) is not supported: program a corner radius");
+  if (2 * rc > std::min(L, W)) return fail(err, "Q220 (corner radius) is larger than half the shorter side");
+  if (!position(a, "Q367", 4, pos, err)) return false;
+  if (a.get("Q437") != 0) return fail(err, "Q437 1-4 (approach at a corner, spiralling in) is not supported: program Q437=0");
+  StudShape s{rectLap, L / 2, W / 2, rc};
+  // The farthest blank point is a corner: its distance from the rounded stud.
+  double qx = BL / 2 - (L / 2 - rc), qy = BW / 2 - (W / 2 - rc);
+  s.reach = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) - rc;
+  s.approach = {BL / 2 + m.r + 2, 0};  // 2 mm outside the blank, right of the stud (Q437 0)
+  Mill mill = placed(out, ctx, m, {-kCorner[pos][0] * L / 2, -kCorner[pos][1] * W / 2}, a.get("Q224"));
+  heiStud(m, s, mill);
+  return true;
+}
+
+bool hei257(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiMill m;
+  if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
+  double d = a.get("Q223"), blank = a.get("Q222"), angle = a.has("Q376") ? a.get("Q376") : -1;
+  if (!(d > 0)) return fail(err, "Q223 (finished diameter) must be greater than 0");
+  if (!(blank > d)) return fail(err, "Q222 (blank diameter) must be larger than Q223");
+  if (angle != -1 && (angle < 0 || angle > 359.9999)) return fail(err, "Q376 must be -1 or lie in 0 … 359.9999");
+  StudShape s{circleLap, d / 2, d / 2, d / 2};
+  s.reach = (blank - d) / 2;
+  s.approach = {blank / 2 + m.r + 2, 0};
+  // [model] Q376 -1 (the controller's optimum) approaches at 0 degrees.
+  Mill mill = placed(out, ctx, m, {0, 0}, angle < 0 ? 0 : angle);
+  heiStud(m, s, mill);
   return true;
 }
 
@@ -225,6 +393,12 @@ const CycleDef kClearingEntries[] = {
      "Heidenhain rectangular pocket", hei251, nullptr},
     {"hei.252", "Q215 Q223 Q368 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439",
      "Heidenhain circular pocket", hei252, nullptr},
+    {"hei.253", "Q215 Q218 Q219 Q368 Q374 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q366 Q385 Q439",
+     "Heidenhain slot milling", hei253, nullptr},
+    {"hei.256", "Q218 Q424 Q219 Q425 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q437 Q215 Q369 Q338 Q385",
+     "Heidenhain rectangular stud", hei256, nullptr},
+    {"hei.257", "Q223 Q222 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q376 Q215 Q369 Q338 Q385",
+     "Heidenhain circular stud", hei257, nullptr},
 };
 
 }  // namespace

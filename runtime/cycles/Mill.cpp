@@ -36,6 +36,13 @@ Contour circleContour(double r) {
   return c;
 }
 
+Contour halfTurn(Contour c) {
+  auto turn = [](PlanePoint &p) { p = {-p[0], -p[1]}; };
+  turn(c.start);
+  for (PathSeg &s : c.segs) turn(s.end), turn(s.centre);
+  return c;
+}
+
 Polygon contourPolygon(const Contour &c, double tol) {
   Polygon out;
   PlanePoint at = c.start;
@@ -103,7 +110,7 @@ void Mill::arc(PlanePoint end, PlanePoint centre, bool ccw, double level, double
 void Mill::go(PlanePoint p, double level) {
   if ((level - level_) * dir_ < 0) up(level);
   if (p != here_) rapid(p, level_);
-  if (level != level_) up(level);
+  up(level);
 }
 
 void Mill::goProgram(const std::array<double, 3> &p) {

@@ -27,6 +27,8 @@ struct Contour {
 Contour roundedRect(double a, double b, double rc);
 // A circle of radius r about the origin, counter-clockwise from (r, 0).
 Contour circleContour(double r);
+// The contour turned half a turn about the origin (a rounded rectangle then starts at (-a, 0)).
+Contour halfTurn(Contour c);
 // The contour as a polygon whose corners lie on it: arcs become chords within `tol`.
 Polygon contourPolygon(const Contour &c, double tol);
 
@@ -40,8 +42,10 @@ public:
   void arc(PlanePoint end, PlanePoint centre, bool ccw, double level, double f);
   // Rapid to p at `level` without a diagonal through material: up first, across, then down.
   void go(PlanePoint p, double level);
-  // Rapid along the tool axis to `level` where the tool is.
-  void up(double level) { rapid(here_, level); }
+  // Rapid along the tool axis to `level` where the tool is (nothing when it is there).
+  void up(double level) {
+    if (level != level_) rapid(here_, level);
+  }
   // Once round a contour at `level` (reversed when !ccw: the same track the other way).
   void run(const Contour &c, bool ccw, double level, double f);
   // Round a clearing ring at `level`, starting at its corner nearest the tool, linked there at

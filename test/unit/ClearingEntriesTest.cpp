@@ -1,8 +1,9 @@
-// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-09
-// The pocket entries of the cycle library (runtime/cycles/ClearingEntries.cpp) checked by
-// geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts outside
-// the wall (less the side allowance when only roughing), (2) at the final depth every point of
-// the region to clear lies within one tool radius of the path: no material left standing.
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-05 HEI-POC-06 HEI-POC-09
+// The pocket, slot and stud entries of the cycle library (runtime/cycles/ClearingEntries.cpp)
+// checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
+// into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
+// roughing), (2) at the final depth every point of the region to clear lies within one tool
+// radius of the path: no material left standing.
 #include "runtime/cycles/Clearing.h"
 #include "runtime/cycles/Library.h"
 
@@ -58,9 +59,22 @@ double roundedBox(double x, double y, double a, double b, double rc) {
   return std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0) - rc;
 }
 
+// roundedBox about (cx, cy), turned by `radians`.
+std::function<double(double, double)> turnedBox(double cx, double cy, double radians, double a, double b, double rc) {
+  const double c = std::cos(radians), s = std::sin(radians);
+  return [=](double x, double y) {
+    double dx = x - cx, dy = y - cy;
+    return roundedBox(c * dx + s * dy, -s * dx + c * dy, a, b, rc);
+  };
+}
+
+// What the cycle machines: `wall` is the signed distance to the finished part's wall, negative
+// where the material to clear is (inside a pocket, outside a stud); `blank` (a stud's) is
+// negative inside the blank. The box bounds the sampling.
 struct Pocket {
-  std::function<double(double, double)> wall;  // signed distance in program XY
+  std::function<double(double, double)> wall;
   double xmin, xmax, ymin, ymax;
+  std::function<double(double, double)> blank = [](double, double) { return -1.0; };
 };
 
 // Runs the entry and checks the wall and the coverage. `keep`: the material the pass leaves
@@ -91,7 +105,7 @@ void checkPocket(const char *entry, const CycleArgs &args, const CycleContext &c
   double worstGap = 0;
   for (double x = p.xmin; x <= p.xmax; x += 0.25)
     for (double y = p.ymin; y <= p.ymax; y += 0.25) {
-      if (p.wall(x, y) > -keep - 1e-3) continue;  // outside the region to clear (and its edge)
+      if (p.wall(x, y) > -keep - 1e-3 || p.blank(x, y) > 0) continue;  // not to clear (or its edge)
       ++points;
       double best = 1e18;
       for (long i = cell(x) - 1; i <= cell(x) + 1; ++i)
@@ -137,11 +151,7 @@ TEST(ClearingEntries, RectangularPocketRotatedFromCornerUpCut) {
                       {"Q206", 150}, {"Q338", 2}, {"Q200", 2}, {"Q203", 1}, {"Q204", 10}, {"Q370", 1.9}});
   const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
   const double cx = 25 * c - 12 * s, cy = 25 * s + 12 * c;  // the centre from the corner
-  Pocket p{[=](double x, double y) {
-             double dx = x - cx, dy = y - cy;
-             return roundedBox(c * dx + s * dy, -s * dx + c * dy, 25, 12, 7);
-           },
-           -15, 40, -5, 45};
+  Pocket p{turnedBox(cx, cy, M_PI / 6, 25, 12, 7), -15, 40, -5, 45};
   checkPocket("hei.251", a, at(0, 0, 30, 3), p, 0, -4, 1);
 }
 
@@ -201,4 +211,51 @@ TEST(Clearing, WideStepoverShrinksToLeaveNothing) {
         }
       ASSERT_LE(best, 5 + 1e-3) << "at " << x << "," << y;
     }
+}
+
+TEST(ClearingEntries, SlotFromTheLeftArcTurned) {
+  // 60 x 14 slot, the tool (radius 3) at the left arc's centre (Q367 2), turned 45 degrees.
+  CycleArgs a = args({{"Q215", 0}, {"Q218", 60}, {"Q219", 14}, {"Q368", 0.3}, {"Q374", 45}, {"Q367", 2},
+                      {"Q207", 500}, {"Q201", -6}, {"Q202", 2}, {"Q369", 0.2}, {"Q206", 150}, {"Q338", 3},
+                      {"Q200", 2}, {"Q203", 0}, {"Q204", 10}});
+  // The centre: half the length less half the width along 45 degrees.
+  Pocket p{turnedBox(23 * std::cos(M_PI / 4), 23 * std::sin(M_PI / 4), M_PI / 4, 30, 7, 7), -10, 45, -10, 45};
+  checkPocket("hei.253", a, at(0, 0, 20, 3), p, 0, -6, 0);
+}
+
+TEST(ClearingEntries, SlotAsWideAsTheTool) {
+  // Q219 = the tool diameter: one pass along the centre line per level, lifted out after each.
+  CycleArgs a = args({{"Q215", 1}, {"Q218", 40}, {"Q219", 8}, {"Q207", 500}, {"Q201", -6}, {"Q202", 3},
+                      {"Q206", 150}, {"Q200", 2}, {"Q203", 0}});
+  Pocket p{[](double x, double y) { return roundedBox(x, y, 20, 4, 4); }, -21, 21, -5, 5};
+  checkPocket("hei.253", a, at(0, 0, 20, 4), p, 0, -6, 0);
+}
+
+TEST(ClearingEntries, RectangularStud) {
+  // Stud 40 x 20 (corners 2) in a 60 x 34 blank, turned 20 degrees, allowances finished away.
+  CycleArgs a = args({{"Q218", 40}, {"Q424", 60}, {"Q219", 20}, {"Q425", 34}, {"Q220", 2}, {"Q368", 0.5},
+                      {"Q224", 20}, {"Q207", 500}, {"Q201", -5}, {"Q202", 3}, {"Q206", 150}, {"Q200", 2},
+                      {"Q203", 0}, {"Q204", 20}, {"Q370", 1.6}, {"Q215", 0}, {"Q369", 0.2}, {"Q338", 0}});
+  auto stud = turnedBox(0, 0, M_PI / 9, 20, 10, 2);
+  Pocket p{[=](double x, double y) { return -stud(x, y); }, -35, 35, -30, 30, turnedBox(0, 0, M_PI / 9, 30, 17, 0)};
+  checkPocket("hei.256", a, at(0, 0, 30, 4), p, 0, -5, 0);
+}
+
+TEST(ClearingEntries, RectangularStudRoughingFromACorner) {
+  // Roughing only, the tool at the stud's upper right corner (Q367 3): the allowance stays.
+  CycleArgs a = args({{"Q218", 30}, {"Q424", 50}, {"Q219", 30}, {"Q425", 50}, {"Q368", 1}, {"Q367", 3},
+                      {"Q207", 500}, {"Q201", -4}, {"Q202", 4}, {"Q206", 150}, {"Q200", 2}, {"Q203", 0},
+                      {"Q215", 1}});
+  Pocket p{[](double x, double y) { return -roundedBox(x + 15, y + 15, 15, 15, 0); }, -41, 11, -41, 11,
+           [](double x, double y) { return std::max(std::fabs(x + 15), std::fabs(y + 15)) - 25; }};
+  checkPocket("hei.256", a, at(0, 0, 30, 5), p, 1, -4, 0);
+}
+
+TEST(ClearingEntries, CircularStud) {
+  CycleArgs a = args({{"Q223", 30}, {"Q222", 56}, {"Q368", 0.4}, {"Q207", 500}, {"Q351", -1}, {"Q201", -6},
+                      {"Q202", 3}, {"Q206", 150}, {"Q200", 2}, {"Q203", 0}, {"Q204", 10}, {"Q370", 1.2},
+                      {"Q376", 135}, {"Q215", 0}, {"Q369", 0.2}, {"Q338", 3}});
+  Pocket p{[](double x, double y) { return 15 - std::hypot(x - 10, y); }, -20, 40, -30, 30,
+           [](double x, double y) { return std::hypot(x - 10, y) - 28; }};
+  checkPocket("hei.257", a, at(10, 0, 30, 5), p, 0, -6, 0);
 }
