@@ -1,5 +1,5 @@
 // The pocket, stud, slot and face entries of the cycle library: each maps its manual's parameter
-// list onto the Heidenhain 25x milling options (HeiMill) and a shape (the finished wall as a
+// list onto the milling options (MillJob, modelled on the Heidenhain 25x parameters) and a shape (the finished wall as a
 // Contour, Mill.h); roughing clears the region ring by ring (clearingRings, Clearing.h), the
 // finishing passes cut the wall with exact arcs. docs/CYCLES.md lists the entries and marks
 // the geometry the manuals show only in figures "[model]".
@@ -32,16 +32,25 @@ std::vector<double> infeeds(double step, double total) {
 PlanePoint rot90(PlanePoint p) { return {-p[1], p[0]}; }
 PlanePoint along(PlanePoint p, PlanePoint d, double k) { return {p[0] + k * d[0], p[1] + k * d[1]}; }
 
-// ---- Heidenhain 25x: the parameters every pocket, slot and stud cycle shares (seed002a
-// "Pocket / stud / slot cycles: shared semantics").
-struct HeiMill {
-  HeiLevels lv;
+// How the tool goes down to a level at the plunge point: at the feed (Heidenhain Q366 0,
+// Sinumerik _VARI 2nd digit 1), at rapid into a pre-drilled hole (Sinumerik 0), on a helix of
+// `helixRadius` about the point with `helixPitch` per turn (Sinumerik 2).
+enum class Plunge : uint8_t { Vertical, Rapid, Helix };
+
+// ---- The options every pocket, slot and stud shares, named after the Heidenhain 25x parameters
+// (seed002a "Pocket / stud / slot cycles: shared semantics"); the Sinumerik entries fill them from
+// their own.
+struct MillJob {
+  HeiLevels lv;                   // zsc, z2 (the end), dir
   double surface = 0, depth = 0;  // Q203; |Q201|
   double infeed = 0;              // Q202
   double sideAllowance = 0, floorAllowance = 0, finishInfeed = 0;  // Q368 Q369 Q338
   double clearance = 0;           // |Q200|
   double plungeFeed = 0, millFeed = 0, finishFeed = 0;  // Q206 Q207 Q385 (0: Q207)
   int op = 0;                     // Q215: 0 rough and finish, 1 rough, 2 finish
+  bool wallPass = false, floorPass = false;  // the finishing passes to run
+  Plunge plunge = Plunge::Vertical;
+  double helixRadius = 0, helixPitch = 0;
   double stepover = 0;            // Q370 x tool radius
   double r = 0;                   // tool radius
   bool ccw = true;                // the direction round a pocket's wall (studs: the other)
@@ -67,14 +76,19 @@ bool position(const CycleArgs &a, const char *k, int hi, int &out, std::string &
   return true;
 }
 
-// False with err empty when the depth is 0 (the TNC does not run the cycle).
-bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, HeiMill &m, std::string &err) {
-  err.clear();
-  if (!heiLevels(a, m.lv, err)) return false;
-  if (a.get("Q201") == 0) return false;
+bool toolRadius(const CycleContext &ctx, MillJob &m, std::string &err) {
   if (!(ctx.toolRadius > 0))
     return fail(err, "needs the active tool's radius (a tool with a radius in the tool table; ncc cycle --tool-radius)");
   m.r = ctx.toolRadius;
+  return true;
+}
+
+// False with err empty when the depth is 0 (the TNC does not run the cycle).
+bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, MillJob &m, std::string &err) {
+  err.clear();
+  if (!heiLevels(a, m.lv, err)) return false;
+  if (a.get("Q201") == 0) return false;
+  if (!toolRadius(ctx, m, err)) return false;
   m.surface = a.get("Q203"), m.depth = std::fabs(a.get("Q201"));
   m.clearance = std::fabs(a.get("Q200"));
   double climb, overlap;
@@ -104,7 +118,31 @@ bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, Hei
   // Q351 is given for M3: climb milling runs a pocket's wall counter-clockwise; M4 reverses it.
   m.ccw = (climb != -1) == (ctx.spindle != 2);
   m.call = ctx.position;
+  m.wallPass = m.finishing() && m.sideAllowance > 0;  // the manual: only with an allowance
+  m.floorPass = m.finishing() && m.floorAllowance > 0;
   return true;
+}
+
+// Down to the level `t` below the surface at `at` (the tool is over it, above the level).
+// [model] A helix starts `helixRadius` off the point in the milling direction's sense, turns down
+// at `helixPitch` per turn, then once round flat at the level.
+void plunge(const MillJob &m, PlanePoint at, double t, Mill &mill) {
+  switch (m.plunge) {
+  case Plunge::Vertical: mill.feed(at, m.level(t), m.plungeFeed); return;
+  case Plunge::Rapid: mill.up(m.level(t)); return;
+  case Plunge::Helix: break;
+  }
+  const double drop = t - (mill.level() - m.surface) * m.lv.dir, turns = drop / m.helixPitch;
+  const double whole = std::floor(turns + 1e-9), part = turns - whole;
+  const PlanePoint start{at[0] + m.helixRadius, at[1]};
+  mill.rapid(start, mill.level());
+  if (drop > 0) {
+    double angle = (m.ccw ? 1 : -1) * part * 2 * M_PI;
+    PlanePoint end{at[0] + m.helixRadius * std::cos(angle), at[1] + m.helixRadius * std::sin(angle)};
+    if (part < 1e-9) end = start;
+    mill.arc(end, at, m.ccw, m.level(t), m.plungeFeed, part < 1e-9 ? (int)whole : (int)whole + 1);
+  }
+  mill.arc(mill.here(), at, m.ccw, m.level(t), m.plungeFeed);
 }
 
 // A wall the finishing passes cut: the tool-centre path (a closed contour round the element,
@@ -122,7 +160,7 @@ struct FinishPath {
 // plunge at Q206, onto the wall on a quarter arc, once round, off it on the mirrored quarter, up by
 // Q200. [model] The arcs have the radius Q368 + Q200 (at most `room`) and touch the path at its
 // start; between passes the tool crosses over the roughed floor, not through the floor allowance.
-void finishWalls(const HeiMill &m, const FinishPath &f, bool ccw, Mill &mill) {
+void finishWalls(const MillJob &m, const FinishPath &f, bool ccw, Mill &mill) {
   const double roughDepth = m.depth - m.floorAllowance;
   const double rho = std::min(m.sideAllowance + m.clearance, f.room);
   const PlanePoint at = f.path.start, n = f.inside ? f.normal : PlanePoint{-f.normal[0], -f.normal[1]};
@@ -150,7 +188,7 @@ struct PocketShape {
   FinishPath finish;
 };
 
-bool rings(const HeiMill &m, const PocketShape &p, double allowance, std::vector<Polygon> &out, std::string &err) {
+bool rings(const MillJob &m, const PocketShape &p, double allowance, std::vector<Polygon> &out, std::string &err) {
   ClearingSpec s;
   s.contour = contourPolygon(p.wall, kChordTolerance);
   s.toolRadius = m.r, s.stepover = m.stepover, s.allowance = allowance, s.chordTolerance = kChordTolerance;
@@ -160,7 +198,7 @@ bool rings(const HeiMill &m, const PocketShape &p, double allowance, std::vector
 // Heidenhain 251/252/253 (seed002a L5830-5886, L6143-6241, L6454-6496): roughing level by level
 // (plunge at the centre, rings from the middle to the wall less the allowances, up by Q200 and back
 // to the centre at rapid), then the walls (finishWalls), then the floor from the middle out.
-bool heiPocket(const HeiMill &m, const PocketShape &p, Mill &mill, std::string &err) {
+bool heiPocket(const MillJob &m, const PocketShape &p, Mill &mill, std::string &err) {
   const PlanePoint centre{0, 0};
   const double roughDepth = m.depth - m.floorAllowance;
   if (m.roughing()) {
@@ -168,19 +206,19 @@ bool heiPocket(const HeiMill &m, const PocketShape &p, Mill &mill, std::string &
     if (!rings(m, p, m.sideAllowance, rough, err)) return false;
     mill.go(centre, m.lv.zsc);
     for (double t : infeeds(m.infeed, roughDepth)) {
-      mill.feed(centre, m.level(t), m.plungeFeed);
+      plunge(m, centre, t, mill);
       for (const Polygon &ring : rough) mill.ring(ring, m.ccw, m.level(t), m.millFeed);
       mill.up(m.level(t - m.clearance));
       mill.go(centre, m.level(t - m.clearance));
     }
   }
-  if (m.finishing() && m.sideAllowance > 0) finishWalls(m, p.finish, m.ccw, mill);
-  if (m.finishing() && m.floorAllowance > 0) {
+  if (m.wallPass) finishWalls(m, p.finish, m.ccw, mill);
+  if (m.floorPass) {
     // The walls are finished (or have no allowance): rings out to the wall itself.
     std::vector<Polygon> floor;
     if (!rings(m, p, 0, floor, err)) return false;
     mill.go(centre, m.level(roughDepth - m.clearance));
-    mill.feed(centre, m.level(m.depth), m.plungeFeed);
+    plunge(m, centre, m.depth, mill);
     for (const Polygon &ring : floor) mill.ring(ring, m.ccw, m.level(m.depth), m.finishFeed);
     mill.up(m.level(m.depth - m.clearance));
   }
@@ -189,27 +227,31 @@ bool heiPocket(const HeiMill &m, const PocketShape &p, Mill &mill, std::string &
 
 // The end of every Heidenhain 25x cycle: up to the 2nd set-up clearance, then over the call
 // position (the pockets' start position).
-void heiEnd(const HeiMill &m, int plane, Mill &mill) {
+void heiEnd(const MillJob &m, int plane, Mill &mill) {
   std::array<double, 3> end = m.call;
   end[planeAxes((Plane)plane).n] = m.lv.z2;
   mill.goProgram(end);
 }
 
-// The writer for an element whose centre lies `offset` from the tool in the element's own frame,
-// the element turned by `degrees` about the tool.
-Mill placed(std::vector<CycleStep> &out, const CycleContext &ctx, const HeiMill &m, PlanePoint offset, double degrees) {
-  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+// The writer for an element whose centre lies `offset` from the tool (or from `about`) in the
+// element's own frame, the element turned by `degrees` about that point, in `plane` (default the
+// active one).
+Mill placed(std::vector<CycleStep> &out, const CycleContext &ctx, const MillJob &m, PlanePoint offset, double degrees,
+            int plane = -1, const PlanePoint *about = nullptr) {
+  if (plane < 0) plane = ctx.plane;
+  const PlaneAxes ax = planeAxes((Plane)plane);
+  const PlanePoint ref = about ? *about : PlanePoint{ctx.position[ax.u], ctx.position[ax.v]};
   double s, c;
   sinCosDegrees(degrees, s, c);
-  PlanePoint origin{ctx.position[ax.u] + c * offset[0] - s * offset[1], ctx.position[ax.v] + s * offset[0] + c * offset[1]};
-  return Mill(out, ctx.plane, origin, degrees, m.lv.dir, ctx.position);
+  PlanePoint origin{ref[0] + c * offset[0] - s * offset[1], ref[1] + s * offset[0] + c * offset[1]};
+  return Mill(out, plane, origin, degrees, m.lv.dir, ctx.position);
 }
 
 // The corner Q367 puts at the tool (1 lower left … 4 upper left) as a multiple of the half sides.
 constexpr double kCorner[5][2] = {{0, 0}, {-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 
 bool hei251(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  HeiMill m;
+  MillJob m;
   if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
   double L = a.get("Q218"), W = a.get("Q219"), rc = a.get("Q220");
   int pos;
@@ -233,7 +275,7 @@ bool hei251(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
 }
 
 bool hei252(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  HeiMill m;
+  MillJob m;
   if (!heiMill(a, ctx, 0.1, m, err)) return err.empty();
   double d = a.get("Q223");
   if (!(d > 0)) return fail(err, "Q223 (pocket diameter) must be greater than 0");
@@ -254,7 +296,7 @@ constexpr double kSlotEnd[5][2] = {{0, 0}, {1, 0}, {1, -1}, {-1, 1}, {-1, 0}};
 
 // A slot as wide as the tool: the tool-centre path is the centre line between the arcs' centres
 // (seed002a L6563-6567: roughing only), the tool lifted out of the slot after every infeed.
-void heiSlotLine(const HeiMill &m, double half, Mill &mill) {
+void heiSlotLine(const MillJob &m, double half, Mill &mill) {
   const PlanePoint left{-half, 0}, right{half, 0};
   auto pass = [&](double t, double f) {
     mill.go(left, m.lv.zsc);
@@ -264,11 +306,11 @@ void heiSlotLine(const HeiMill &m, double half, Mill &mill) {
   };
   if (m.roughing())
     for (double t : infeeds(m.infeed, m.depth - m.floorAllowance)) pass(t, m.millFeed);
-  if (m.finishing() && m.floorAllowance > 0) pass(m.depth, m.finishFeed);
+  if (m.floorPass) pass(m.depth, m.finishFeed);
 }
 
 bool hei253(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  HeiMill m;
+  MillJob m;
   if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
   double L = a.get("Q218"), W = a.get("Q219");
   int pos;
@@ -310,7 +352,7 @@ Contour circleLap(const StudShape &s, double d) { return circleContour(s.a + d);
 // The laps' tool-centre distances from the stud, outermost first: the innermost leaves
 // `allowance`, the outermost reaches the blank's farthest point, evenly at most a stepover apart
 // (seed002a L7034-7081: further laps "with constant lateral step").
-std::vector<double> lapOffsets(const HeiMill &m, const StudShape &s, double allowance) {
+std::vector<double> lapOffsets(const MillJob &m, const StudShape &s, double allowance) {
   const double inner = m.r + allowance, outer = std::max(inner, s.reach - m.r);
   int n = (int)std::ceil((outer - inner) / m.stepover - 1e-9);
   std::vector<double> out;
@@ -323,7 +365,7 @@ std::vector<double> lapOffsets(const HeiMill &m, const StudShape &s, double allo
 // in to the outermost lap, the laps inward at Q207, back out to the approach point; then the wall
 // (finishWalls, from outside) and the floor; the end at the 2nd set-up clearance there.
 // [model] The moves onto the laps and back out are straight and radial, the laps concentric.
-void heiStud(const HeiMill &m, const StudShape &s, Mill &mill) {
+void heiStud(const MillJob &m, const StudShape &s, Mill &mill) {
   const bool ccw = !m.ccw;  // climb milling on an outer wall runs clockwise with M3
   const double roughDepth = m.depth - m.floorAllowance;
   auto laps = [&](double level, double allowance, double f) {
@@ -341,9 +383,9 @@ void heiStud(const HeiMill &m, const StudShape &s, Mill &mill) {
       laps(m.level(t), m.sideAllowance, m.millFeed);
     }
   }
-  if (m.finishing() && m.sideAllowance > 0)
+  if (m.wallPass)
     finishWalls(m, {s.lap(s, m.r), {1, 0}, m.sideAllowance + m.clearance, false}, ccw, mill);
-  if (m.finishing() && m.floorAllowance > 0) {
+  if (m.floorPass) {
     mill.go(s.approach, m.level(roughDepth - m.clearance));
     mill.feed(s.approach, m.level(m.depth), m.plungeFeed);
     laps(m.level(m.depth), 0, m.finishFeed);
@@ -352,7 +394,7 @@ void heiStud(const HeiMill &m, const StudShape &s, Mill &mill) {
 }
 
 bool hei256(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  HeiMill m;
+  MillJob m;
   if (!heiMill(a, ctx, 0.1, m, err)) return err.empty();
   double L = a.get("Q218"), W = a.get("Q219"), BL = a.get("Q424"), BW = a.get("Q425"), rc = a.get("Q220");
   int pos;
@@ -373,7 +415,7 @@ bool hei256(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
 }
 
 bool hei257(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  HeiMill m;
+  MillJob m;
   if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
   double d = a.get("Q223"), blank = a.get("Q222"), angle = a.has("Q376") ? a.get("Q376") : -1;
   if (!(d > 0)) return fail(err, "Q223 (finished diameter) must be greater than 0");
@@ -388,6 +430,113 @@ bool hei257(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
+// ---- Sinumerik POCKET3 and POCKET4 (seed000c 19.1.5, 19.1.6). The manual lists the parameters
+// only: the motion is the shared pocket's (heiPocket) [model], from over the pocket's centre at
+// the retraction plane _RTP, back up to it at the end.
+bool sinPocketJob(const CycleArgs &a, const CycleContext &ctx, MillJob &m, std::string &err) {
+  for (const char *k : {"_RTP", "_RFP", "_DP", "_MID", "_FFP1", "_FFD"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  if (!toolRadius(ctx, m, err)) return false;
+  // Depth _DP: absolute, or (_AMODE 1st digit 1) below _RFP.
+  const double rfp = a.get("_RFP");
+  const double bottom = digit(a.get("_AMODE"), 1) == 1 ? rfp - a.get("_DP") : a.get("_DP");
+  if (bottom == rfp) return fail(err, "the pocket depth _DP lies on the reference plane _RFP");
+  m.lv.dir = bottom < rfp ? -1 : 1;
+  m.surface = rfp, m.depth = std::fabs(bottom - rfp);
+  m.clearance = std::fabs(a.get("_SDIS"));
+  m.lv.zsc = rfp - m.lv.dir * m.clearance;
+  m.lv.z2 = a.get("_RTP");
+  if ((m.lv.z2 - m.lv.zsc) * m.lv.dir > 0) return fail(err, "the retraction plane _RTP lies below the safety level _RFP + _SDIS");
+  if (!(a.get("_MID") > 0)) return fail(err, "_MID (maximum depth infeed) must be greater than 0");
+  if (m.depth / a.get("_MID") > kMaxPecks) return fail(err, "_MID (maximum depth infeed) too small");
+  m.infeed = m.finishInfeed = a.get("_MID");  // [model] the walls are finished in the same infeeds
+  if (!param(a, "_FAL", 0, 1e5, m.sideAllowance, err) || !param(a, "_FALD", 0, 1e5, m.floorAllowance, err)) return false;
+  if (m.floorAllowance >= m.depth) return fail(err, "_FALD (depth allowance) must be less than the pocket depth");
+  if (!(a.get("_FFP1") > 0) || !(a.get("_FFD") > 0)) return fail(err, "_FFP1 and _FFD (feeds) must be greater than 0");
+  m.millFeed = m.finishFeed = a.get("_FFP1"), m.plungeFeed = a.get("_FFD");
+  // _CDIR 0 climb, 1 conventional (for M3; M4 reverses), 2 G2, 3 G3.
+  const double cdir = a.get("_CDIR");
+  if (cdir != 0 && cdir != 1 && cdir != 2 && cdir != 3) return fail(err, "_CDIR must be 0 (climb), 1 (conventional), 2 (G2) or 3 (G3)");
+  m.ccw = cdir == 3 || (cdir < 2 && (cdir == 0) == (ctx.spindle != 2));
+  // _VARI 1st digit: 1 roughing, 2 finishing (wall and floor), 4 wall finishing, 5 chamfering.
+  switch (digit(a.get("_VARI"), 1)) {
+  case 1: m.op = 1; break;
+  case 2: m.op = 2, m.wallPass = m.floorPass = true; break;
+  case 4: m.op = 2, m.wallPass = true; break;
+  case 5: return fail(err, "_VARI 5 (chamfering) needs the tool's point angle: not supported");
+  default: return fail(err, "_VARI 1st digit must be 1 (roughing), 2 (finishing), 4 (edge finishing) or 5 (chamfering)");
+  }
+  // 2nd digit: 0 pre-drilled (down at rapid), 1 vertical at _FFD, 2 helix _RAD1 / _DP1, 3 oscillating.
+  switch (digit(a.get("_VARI"), 2)) {
+  case 0: m.plunge = Plunge::Rapid; break;
+  case 1: m.plunge = Plunge::Vertical; break;
+  case 2:
+    m.plunge = Plunge::Helix, m.helixRadius = a.get("_RAD1"), m.helixPitch = a.get("_DP1");
+    if (!(m.helixRadius > 0) || !(m.helixPitch > 0)) return fail(err, "a helical plunge needs _RAD1 (radius) and _DP1 (pitch) greater than 0");
+    if (m.depth / m.helixPitch > kMaxPecks) return fail(err, "_DP1 (helix pitch) too small");
+    break;
+  default: return fail(err, "_VARI 2nd digit 3 (oscillating plunge along the pocket's axis) is not supported");
+  }
+  // _MIDA: mm, or (_AMODE 2nd digit 1) percent of the tool diameter; 0: 80 % of it.
+  double mida = a.get("_MIDA");
+  if (digit(a.get("_AMODE"), 2) == 1) mida *= 2 * m.r / 100;
+  m.stepover = mida > 0 ? mida : 1.6 * m.r;
+  if (mida < 0 || m.stepover > 2 * m.r) return fail(err, "_MIDA (plane infeed) must lie between 0 and the tool diameter");
+  if (digit(a.get("_GMODE"), 5) == 2 || a.get("_AP1") != 0 || a.get("_AP2") != 0 || a.get("_AD") != 0)
+    return fail(err, "machining a pre-machined pocket (_AP1 _AP2 _AD, _GMODE 5th digit 2) is not supported");
+  m.call = ctx.position;
+  return true;
+}
+
+// Pocket, then up to _RTP where the tool is.
+bool sinPocket(const MillJob &m, const PocketShape &p, Mill &mill, std::string &err) {
+  mill.go({0, 0}, m.lv.z2);
+  if (!heiPocket(m, p, mill, err)) return false;
+  mill.up(m.lv.z2);
+  return true;
+}
+
+// _GMODE 4th digit: 0, 1 the reference point is the centre; 2-5 a corner, the pocket running
+// +/-_LENG, +/-_WID from it: the centre from the corner in half sides.
+constexpr double kSinCorner[6][2] = {{0, 0}, {0, 0}, {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+
+bool sinPocket3(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  MillJob m;
+  if (!sinPocketJob(a, ctx, m, err)) return false;
+  const double L = std::fabs(a.get("_LENG")), W = std::fabs(a.get("_WID")), rc = a.get("_CRAD");
+  const int dim = digit(a.get("_GMODE"), 4);
+  if (!(L > 0) || !(W > 0)) return fail(err, "_LENG and _WID (pocket length and width) must not be 0");
+  if (rc < m.r) return fail(err, "_CRAD (corner radius) is smaller than the tool radius: the tool cannot cut the corners");
+  if (2 * rc > std::min(L, W)) return fail(err, "_CRAD (corner radius) is larger than half the shorter side");
+  if (2 * (m.r + m.sideAllowance) >= std::min(L, W)) return fail(err, "the tool with the allowance _FAL does not fit into the pocket");
+  if (dim > 5) return fail(err, "_GMODE 4th digit must be 0 … 5");
+  PocketShape p;
+  p.wall = roundedRect(L / 2, W / 2, rc);
+  p.finish.path = roundedRect(L / 2 - m.r, W / 2 - m.r, rc - m.r);
+  p.finish.room = std::min(L / 2 - m.r, W / 2 - m.r) / 2;
+  const int plane = sinPlane(a, ctx);
+  const PlanePoint ref{a.get("_PA"), a.get("_PO")};
+  Mill mill = placed(out, ctx, m, {kSinCorner[dim][0] * L / 2, kSinCorner[dim][1] * W / 2}, a.get("_STA"), plane, &ref);
+  return sinPocket(m, p, mill, err);
+}
+
+bool sinPocket4(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  MillJob m;
+  if (!sinPocketJob(a, ctx, m, err)) return false;
+  // _CDIAM: a radius (_DMODE 3rd digit 0, compatibility) or a diameter (1).
+  const double d = digit(a.get("_DMODE"), 3) == 1 ? a.get("_CDIAM") : 2 * a.get("_CDIAM");
+  if (!(d > 0)) return fail(err, "_CDIAM (pocket diameter) must be greater than 0");
+  if (digit(a.get("_VARI"), 4) == 1) return fail(err, "_VARI 4th digit 1 (helical machining of the depth) is not supported");
+  if (2 * (m.r + m.sideAllowance) >= d) return fail(err, "the tool with the allowance _FAL does not fit into the pocket");
+  PocketShape p;
+  p.wall = circleContour(d / 2);
+  p.finish.path = circleContour(d / 2 - m.r);
+  p.finish.room = (d / 2 - m.r) / 2;
+  const PlanePoint ref{a.get("_PA"), a.get("_PO")};
+  Mill mill = placed(out, ctx, m, {0, 0}, 0, sinPlane(a, ctx), &ref);
+  return sinPocket(m, p, mill, err);
+}
+
 const CycleDef kClearingEntries[] = {
     {"hei.251", "Q215 Q218 Q219 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439",
      "Heidenhain rectangular pocket", hei251, nullptr},
@@ -397,6 +546,14 @@ const CycleDef kClearingEntries[] = {
      "Heidenhain slot milling", hei253, nullptr},
     {"hei.256", "Q218 Q424 Q219 Q425 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q437 Q215 Q369 Q338 Q385",
      "Heidenhain rectangular stud", hei256, nullptr},
+    {"sin.POCKET3",
+     "_RTP _RFP _SDIS _DP _LENG _WID _CRAD _PA _PO _STA _MID _FAL _FALD _FFP1 _FFD _CDIR _VARI _MIDA _AP1 _AP2 _AD _RAD1 _DP1 "
+     "_UMODE _FS _ZFS _GMODE _DMODE _AMODE",
+     "Sinumerik rectangular pocket", sinPocket3, nullptr},
+    {"sin.POCKET4",
+     "_RTP _RFP _SDIS _DP _CDIAM _PA _PO _MID _FAL _FALD _FFP1 _FFD _CDIR _VARI _MIDA _AP1 _AD _RAD1 _DP1 _UMODE _FS _ZFS "
+     "_GMODE _DMODE _AMODE",
+     "Sinumerik circular pocket", sinPocket4, nullptr},
     {"hei.257", "Q223 Q222 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q376 Q215 Q369 Q338 Q385",
      "Heidenhain circular stud", hei257, nullptr},
 };

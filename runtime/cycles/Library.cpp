@@ -14,6 +14,11 @@ int entry::digit(double word, int n) {
   return (int)(v % 10);
 }
 
+int entry::sinPlane(const CycleArgs &a, const CycleContext &ctx) {
+  int p = digit(a.get("_DMODE"), 1);
+  return p >= 1 && p <= 3 ? p - 1 : ctx.plane;
+}
+
 bool entry::heiLevels(const CycleArgs &a, HeiLevels &l, std::string &err) {
   for (const char *k : {"Q200", "Q201", "Q203", "Q206"})
     if (!a.has(k)) return fail(err, std::string(k) + " is required");
@@ -29,12 +34,6 @@ bool entry::heiLevels(const CycleArgs &a, HeiLevels &l, std::string &err) {
 using namespace entry;
 
 namespace {
-
-// The plane of a Sinumerik cycle: _DMODE 1st digit 1/2/3 = G17/G18/G19 inside the cycle.
-int sinPlane(const CycleArgs &a, const CycleContext &ctx) {
-  int p = digit(a.get("_DMODE"), 1);
-  return p >= 1 && p <= 3 ? p - 1 : ctx.plane;
-}
 
 // The steps of one hole: rapid to the start level above the hole, then the HoleSpec.
 void hole(const HoleSpec &h, int plane, const CycleContext &ctx, std::vector<CycleStep> &out) {

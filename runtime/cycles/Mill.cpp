@@ -101,10 +101,11 @@ void Mill::step(CycleStepKind k, PlanePoint p, double level, double f) {
 void Mill::rapid(PlanePoint p, double level) { step(CycleStepKind::Rapid, p, level, 0); }
 void Mill::feed(PlanePoint p, double level, double f) { step(CycleStepKind::Feed, p, level, f); }
 
-void Mill::arc(PlanePoint end, PlanePoint centre, bool ccw, double level, double f) {
+void Mill::arc(PlanePoint end, PlanePoint centre, bool ccw, double level, double f, int turns) {
   step(CycleStepKind::Arc, end, level, f);
   out_.back().centre = place(centre, level);
   out_.back().ccw = ccw;  // a rotation keeps the turning sense
+  out_.back().turns = turns;
 }
 
 void Mill::go(PlanePoint p, double level) {

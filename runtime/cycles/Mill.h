@@ -39,7 +39,8 @@ public:
   Mill(std::vector<CycleStep> &out, int plane, PlanePoint origin, double degrees, double dir, std::array<double, 3> at);
   void rapid(PlanePoint p, double level);
   void feed(PlanePoint p, double level, double f);
-  void arc(PlanePoint end, PlanePoint centre, bool ccw, double level, double f);
+  // `turns` > 1: whole extra turns (a helix down).
+  void arc(PlanePoint end, PlanePoint centre, bool ccw, double level, double f, int turns = 1);
   // Rapid to p at `level` without a diagonal through material: up first, across, then down.
   void go(PlanePoint p, double level);
   // Rapid along the tool axis to `level` where the tool is (nothing when it is there).

@@ -1,5 +1,5 @@
-// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-05 HEI-POC-06 HEI-POC-09
-// The pocket, slot and stud entries of the cycle library (runtime/cycles/ClearingEntries.cpp)
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19
+// The pocket, slot and stud entries of the cycle library (Heidenhain and Sinumerik) (runtime/cycles/ClearingEntries.cpp)
 // checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
 // into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
 // roughing), (2) at the final depth every point of the region to clear lies within one tool
@@ -258,4 +258,28 @@ TEST(ClearingEntries, CircularStud) {
   Pocket p{[](double x, double y) { return 15 - std::hypot(x - 10, y); }, -20, 40, -30, 30,
            [](double x, double y) { return std::hypot(x - 10, y) - 28; }};
   checkPocket("hei.257", a, at(10, 0, 30, 5), p, 0, -6, 0);
+}
+
+TEST(ClearingEntries, SinumerikPocket3RoughWithHelixThenFinish) {
+  // POCKET3 from its lower left corner (_GMODE 4th digit 2) turned 15 degrees: roughing with a
+  // helical plunge, then finishing (_VARI 2) removes _FAL and _FALD.
+  CycleArgs rough = args({{"_RTP", 10}, {"_RFP", 0}, {"_SDIS", 2}, {"_DP", -6}, {"_LENG", 50}, {"_WID", 30},
+                          {"_CRAD", 6}, {"_PA", 5}, {"_PO", 5}, {"_STA", 15}, {"_MID", 2.5}, {"_FAL", 0.4},
+                          {"_FALD", 0.2}, {"_FFP1", 400}, {"_FFD", 100}, {"_VARI", 21}, {"_MIDA", 7},
+                          {"_RAD1", 3}, {"_DP1", 1.5}, {"_GMODE", 2000}});
+  CycleArgs finish = rough;
+  finish.num["_VARI"] = 12;
+  const double c = std::cos(M_PI / 12), s = std::sin(M_PI / 12);
+  Pocket p{turnedBox(5 + 25 * c - 15 * s, 5 + 25 * s + 15 * c, M_PI / 12, 25, 15, 6), -30, 40, -5, 50};
+  checkPocket("sin.POCKET3", rough, at(0, 0, 20, 4), p, 0.4, -5.8, 0);
+  checkPocket("sin.POCKET3", finish, at(0, 0, 20, 4), p, 0, -6, 0);
+}
+
+TEST(ClearingEntries, SinumerikPocket4) {
+  // _CDIAM a diameter (_DMODE 3rd digit 1), pre-drilled (_VARI 2nd digit 0), conventional.
+  CycleArgs a = args({{"_RTP", 10}, {"_RFP", 1}, {"_SDIS", 1}, {"_DP", 5}, {"_CDIAM", 36}, {"_PA", -10},
+                      {"_PO", 0}, {"_MID", 5}, {"_FFP1", 400}, {"_FFD", 100}, {"_CDIR", 1}, {"_VARI", 1},
+                      {"_MIDA", 90}, {"_DMODE", 100}, {"_AMODE", 11}});
+  Pocket p{[](double x, double y) { return std::hypot(x + 10, y) - 18; }, -29, 9, -19, 19};
+  checkPocket("sin.POCKET4", a, at(0, 0, 20, 5), p, 0, -4, 1);
 }
