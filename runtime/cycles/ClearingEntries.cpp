@@ -537,6 +537,87 @@ bool sinPocket4(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
   return sinPocket(m, p, mill, err);
 }
 
+// ---- Heidenhain 232 face milling (seed002b 3.6, L13993-14300): lines across a rectangle from the
+// start point (Q225, Q226), Q218 along the first axis (its sign the direction of the first cut),
+// Q219 across (its sign the direction of the first stepover); levels from the surface Q227 down
+// to Q386, equal infeeds of at most Q202, the last removing Q369 at Q385. The digest's [model]
+// for the line ends and spacing: lines R (tool radius) in from the sides, equally spaced at most
+// Q370 x R apart; cuts start R + Q357 beside the surface and end as far beyond it (Q389 0, 2) or
+// R inside its edge (Q389 1).
+bool hei232(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  for (const char *k : {"Q225", "Q226", "Q227", "Q386", "Q218", "Q219", "Q202", "Q207"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  MillJob m;
+  if (!toolRadius(ctx, m, err)) return false;
+  const double top = a.get("Q227"), end = a.get("Q386"), depth = top - end;
+  if (depth == 0) return true;  // the TNC does not run the cycle
+  if (depth < 0) return fail(err, "Q386 (end point in the tool axis) lies above the surface Q227");
+  int strategy;
+  double allowance, overlap;
+  if (!position(a, "Q389", 2, strategy, err) || !param(a, "Q369", 0, 99999.9999, allowance, err) ||
+      !param(a, "Q370", 0.1, 1.9999, overlap, err, 1))
+    return false;
+  if (allowance >= depth) return fail(err, "Q369 (floor allowance) must be less than the depth Q227 - Q386");
+  const double L = a.get("Q218"), W = a.get("Q219"), maxInfeed = a.get("Q202"), r = m.r;
+  if (L == 0 || W == 0) return fail(err, "Q218 and Q219 (side lengths) must not be 0");
+  if (!(maxInfeed > 0)) return fail(err, "Q202 (maximum plunging depth) must be greater than 0");
+  if (depth / maxInfeed > kMaxPecks) return fail(err, "Q202 (maximum plunging depth) too small");
+  const double millFeed = a.get("Q207"), finishFeed = a.get("Q385") > 0 ? a.get("Q385") : millFeed;
+  const double posFeed = a.get("Q253");
+  if (!(millFeed > 0) || !(posFeed > 0)) return fail(err, "Q207 and Q253 (feeds) must be greater than 0");
+  const double clearance = std::fabs(a.get("Q200")), side = std::fabs(a.get("Q357"));
+  m.lv.dir = -1;  // the face lies below the surface along the tool axis
+  m.surface = top;
+  // Levels: equal infeeds down to Q386 + Q369, then Q369 at the finishing feed.
+  std::vector<std::pair<double, double>> levels;  // depth below Q227, feed
+  const int n = (int)std::ceil((depth - allowance) / maxInfeed - 1e-9);
+  for (int i = 1; i <= n; ++i) levels.push_back({(depth - allowance) * i / n, millFeed});
+  if (allowance > 0) levels.push_back({depth, finishFeed});
+  // Lines across: R in from each side, equally spaced at most Q370 x R; one in the middle when
+  // the width is at most the tool's diameter.
+  const double s1 = L > 0 ? 1 : -1, s2 = W > 0 ? 1 : -1, x0 = a.get("Q225"), y0 = a.get("Q226");
+  std::vector<double> lines;
+  if (std::fabs(W) <= 2 * r) {
+    lines.push_back(y0 + W / 2);
+  } else {
+    int k = (int)std::ceil((std::fabs(W) - 2 * r) / (overlap * r) - 1e-9);
+    for (int i = 0; i <= k; ++i) lines.push_back(y0 + s2 * r + (W - 2 * s2 * r) * i / k);
+  }
+  const double outside = x0 - s1 * (r + side), beyond = x0 + L + s1 * (r + side);
+  const double farEnd = strategy == 1 ? x0 + L - s1 * r : beyond, nearEnd = strategy == 1 ? x0 + s1 * r : outside;
+  Mill mill(out, ctx.plane, {0, 0}, 0, m.lv.dir, ctx.position);
+  const double z2 = top + std::max(clearance, std::fabs(a.get("Q204")));
+  mill.go({outside, lines[0]}, z2);
+  mill.up(top + clearance);
+  bool forward = true;  // the order of the lines on this level
+  for (size_t li = 0; li < levels.size(); ++li) {
+    const double z = m.level(levels[li].first), f = levels[li].second;
+    for (size_t i = 0; i < lines.size(); ++i) {
+      const double y = lines[forward ? i : lines.size() - 1 - i];
+      if (strategy == 2) {  // each line from the start side: over at Q253 above the level, down, across
+        if (i > 0 || li > 0) {
+          mill.up(z + clearance);
+          mill.feed({outside, y}, z + clearance, posFeed);
+        }
+        mill.feed({outside, y}, z, posFeed);
+        mill.feed({beyond, y}, z, f);
+        continue;
+      }
+      // Meander: down at the end of the line before (or the start), across, the next line back.
+      if (i == 0) {
+        mill.feed(mill.here(), z, posFeed);
+      } else {
+        mill.feed({mill.here()[0], y}, z, strategy == 1 ? f : posFeed);
+      }
+      const bool towardFar = std::fabs(mill.here()[0] - farEnd) > std::fabs(mill.here()[0] - nearEnd);
+      mill.feed({towardFar ? farEnd : nearEnd, y}, z, f);
+    }
+    forward = !forward;  // the next level runs the lines back (seed002b L14043-14049)
+  }
+  mill.up(z2);
+  return true;
+}
+
 const CycleDef kClearingEntries[] = {
     {"hei.251", "Q215 Q218 Q219 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439",
      "Heidenhain rectangular pocket", hei251, nullptr},
@@ -546,6 +627,8 @@ const CycleDef kClearingEntries[] = {
      "Heidenhain slot milling", hei253, nullptr},
     {"hei.256", "Q218 Q424 Q219 Q425 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q437 Q215 Q369 Q338 Q385",
      "Heidenhain rectangular stud", hei256, nullptr},
+    {"hei.232", "Q389 Q225 Q226 Q227 Q386 Q218 Q219 Q202 Q369 Q370 Q207 Q385 Q253 Q200 Q357 Q204",
+     "Heidenhain face milling", hei232, nullptr},
     {"sin.POCKET3",
      "_RTP _RFP _SDIS _DP _LENG _WID _CRAD _PA _PO _STA _MID _FAL _FALD _FFP1 _FFD _CDIR _VARI _MIDA _AP1 _AP2 _AD _RAD1 _DP1 "
      "_UMODE _FS _ZFS _GMODE _DMODE _AMODE",

@@ -1,4 +1,4 @@
-// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
 // The pocket, slot and stud entries of the cycle library (Heidenhain and Sinumerik) (runtime/cycles/ClearingEntries.cpp)
 // checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
 // into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
@@ -282,4 +282,31 @@ TEST(ClearingEntries, SinumerikPocket4) {
                       {"_MIDA", 90}, {"_DMODE", 100}, {"_AMODE", 11}});
   Pocket p{[](double x, double y) { return std::hypot(x + 10, y) - 18; }, -29, 9, -19, 19};
   checkPocket("sin.POCKET4", a, at(0, 0, 20, 5), p, 0, -4, 1);
+}
+
+TEST(ClearingEntries, FaceMillingCoversTheSurface) {
+  // 232 meander (Q389 0) and one-way (2) over 47 x -23 from (5, 5): the whole face at Q386, never
+  // below it.
+  for (int strategy : {0, 2}) {
+    SCOPED_TRACE(strategy);
+    CycleArgs a = args({{"Q389", (double)strategy}, {"Q225", 5}, {"Q226", 5}, {"Q227", 3}, {"Q386", 0},
+                        {"Q218", 47}, {"Q219", -23}, {"Q202", 1.2}, {"Q369", 0.3}, {"Q370", 1.7}, {"Q207", 500},
+                        {"Q385", 300}, {"Q253", 2000}, {"Q200", 2}, {"Q357", 2}, {"Q204", 10}});
+    const CycleContext ctx = at(0, 0, 30, 6);
+    std::vector<CycleStep> steps;
+    std::string err;
+    ASSERT_TRUE(findCycle("hei.232")->expand(a, ctx, steps, err)) << err;
+    std::vector<Sample> path = samplePath(steps, ctx.position);
+    std::vector<Sample> face;
+    for (const Sample &q : path) {
+      EXPECT_GE(q.z, -1e-9);
+      if (std::fabs(q.z) < 1e-9) face.push_back(q);
+    }
+    for (double x = 5; x <= 52; x += 0.5)
+      for (double y = -18; y <= 5; y += 0.5) {
+        double best = 1e18;
+        for (const Sample &q : face) best = std::min(best, std::hypot(q.x - x, q.y - y));
+        ASSERT_LE(best, 6 + 0.03) << "at " << x << "," << y;
+      }
+  }
 }
