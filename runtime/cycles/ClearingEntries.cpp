@@ -186,6 +186,7 @@ void finishWalls(const MillJob &m, const FinishPath &f, bool ccw, Mill &mill) {
 struct PocketShape {
   Contour wall;
   FinishPath finish;
+  PlanePoint home{0, 0};  // where the tool plunges and returns between levels
 };
 
 bool rings(const MillJob &m, const PocketShape &p, double allowance, std::vector<Polygon> &out, std::string &err) {
@@ -199,7 +200,7 @@ bool rings(const MillJob &m, const PocketShape &p, double allowance, std::vector
 // (plunge at the centre, rings from the middle to the wall less the allowances, up by Q200 and back
 // to the centre at rapid), then the walls (finishWalls), then the floor from the middle out.
 bool heiPocket(const MillJob &m, const PocketShape &p, Mill &mill, std::string &err) {
-  const PlanePoint centre{0, 0};
+  const PlanePoint centre = p.home;
   const double roughDepth = m.depth - m.floorAllowance;
   if (m.roughing()) {
     std::vector<Polygon> rough;
@@ -294,14 +295,14 @@ bool hei252(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
 // centre, the right end; the slot's centre from the tool in slot lengths (x L/2, x W/2 on x).
 constexpr double kSlotEnd[5][2] = {{0, 0}, {1, 0}, {1, -1}, {-1, 1}, {-1, 0}};
 
-// A slot as wide as the tool: the tool-centre path is the centre line between the arcs' centres
-// (seed002a L6563-6567: roughing only), the tool lifted out of the slot after every infeed.
-void heiSlotLine(const MillJob &m, double half, Mill &mill) {
-  const PlanePoint left{-half, 0}, right{half, 0};
+// A slot as wide as the tool: the tool-centre path is the centre line (a line or an arc between
+// the ends' centres; seed002a L6563-6567: roughing only), the tool lifted out of the slot after
+// every infeed.
+void heiSlotLine(const MillJob &m, const Contour &line, Mill &mill) {
   auto pass = [&](double t, double f) {
-    mill.go(left, m.lv.zsc);
-    mill.feed(left, m.level(t), m.plungeFeed);
-    mill.feed(right, m.level(t), f);
+    mill.go(line.start, m.lv.zsc);
+    mill.feed(line.start, m.level(t), m.plungeFeed);
+    mill.run(line, true, m.level(t), f);
     mill.up(m.lv.zsc);
   };
   if (m.roughing())
@@ -320,7 +321,7 @@ bool hei253(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   // Q367 puts an end or an arc's centre at the tool; Q374 turns the slot about the tool.
   Mill mill = placed(out, ctx, m, {kSlotEnd[pos][0] * L / 2 + kSlotEnd[pos][1] * W / 2, 0}, a.get("Q374"));
   if (m.sideAllowance == 0 && std::fabs(W - 2 * m.r) < 1e-9) {
-    heiSlotLine(m, (L - W) / 2, mill);
+    heiSlotLine(m, {{-(L - W) / 2, 0}, {{{(L - W) / 2, 0}, false, {}, true}}}, mill);
   } else {
     if (2 * (m.r + m.sideAllowance) >= W) return fail(err, "the tool with the side allowance Q368 does not fit into the slot");
     PocketShape p;
@@ -334,6 +335,72 @@ bool hei253(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   // The end: the 2nd set-up clearance over the slot's centre (the start when Q367 is 0).
   mill.up(m.lv.z2);
   mill.go({0, 0}, m.lv.z2);
+  return true;
+}
+
+// ---- Heidenhain 254 circular slot (seed002a L6718-7030): a slot along an arc of diameter Q375
+// from the polar angle Q376 through Q248, Q219 wide, machined as 253 (a pocket; plunge in the
+// middle of the centre line), repeated Q377 times turned by Q378 about the circle's centre.
+// The slot in the frame of its circle, from angle 0 to `sweep`: the outline at `inset` from the
+// wall (0: the wall, r: the tool-centre path), counter-clockwise from the middle of the outer arc.
+Contour arcSlot(double rp, double w, double sweep, double inset) {
+  const double ro = rp + w / 2 - inset, ri = rp - w / 2 + inset, mid = sweep / 2;
+  auto polar = [](double r, double a) { return PlanePoint{r * std::cos(a), r * std::sin(a)}; };
+  Contour c;
+  c.start = polar(ro, mid);
+  c.segs.push_back({polar(ro, sweep), true, {0, 0}, true});
+  if (ro > ri) c.segs.push_back({polar(ri, sweep), true, polar(rp, sweep), true});  // the end, round
+  c.segs.push_back({polar(ri, 0), true, {0, 0}, false});
+  if (ro > ri) c.segs.push_back({polar(ro, 0), true, polar(rp, 0), true});
+  c.segs.push_back({c.start, true, {0, 0}, true});
+  return c;
+}
+
+bool hei254(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  MillJob m;
+  if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
+  const double W = a.get("Q219"), rp = a.get("Q375") / 2, start = a.get("Q376"), step = a.get("Q378");
+  double sweepDeg, reps;
+  int pos;
+  if (!(W > 0) || !(rp > 0)) return fail(err, "Q219 (slot width) and Q375 (pitch circle diameter) must be greater than 0");
+  if (!param(a, "Q248", 0, 360, sweepDeg, err) || !param(a, "Q377", 1, 99999, reps, err, 1) || !position(a, "Q367", 3, pos, err))
+    return false;
+  if (reps != std::floor(reps)) return fail(err, "Q377 (repetitions) must be a whole number");
+  if (!(sweepDeg > 0) || sweepDeg >= 360) return fail(err, "Q248 (angular length) must lie between 0 and 360 (a closed ring is not a slot)");
+  if (W / 2 >= rp) return fail(err, "the slot reaches the circle's centre: Q219 must be less than Q375");
+  const bool line = m.sideAllowance == 0 && std::fabs(W - 2 * m.r) < 1e-9;
+  if (!line && 2 * (m.r + m.sideAllowance) >= W) return fail(err, "the tool with the side allowance Q368 does not fit into the slot");
+  const double sweep = sweepDeg * M_PI / 180;
+  // The circle's centre: Q216/Q217 (Q367 0), else back from the tool, which is at the start end
+  // (1), the middle (2) or the far end (3) of the centre line [model: the ends in angle order].
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  PlanePoint centre{a.get("Q216"), a.get("Q217")};
+  if (pos > 0) {
+    double s, c;
+    sinCosDegrees(start + (pos - 1) * sweepDeg / 2, s, c);
+    centre = {ctx.position[ax.u] - rp * c, ctx.position[ax.v] - rp * s};
+  }
+  PocketShape p;
+  p.wall = arcSlot(rp, W, sweep, 0);
+  p.finish.path = arcSlot(rp, W, sweep, m.r);
+  p.finish.normal = {std::cos(sweep / 2), std::sin(sweep / 2)};
+  p.finish.room = (W / 2 - m.r) / 2;
+  p.home = {rp * std::cos(sweep / 2), rp * std::sin(sweep / 2)};
+  for (int i = 0; i < (int)reps; ++i) {
+    CycleContext here = ctx;  // each slot from where the last one left the tool
+    for (auto it = out.rbegin(); it != out.rend(); ++it)
+      if (it->kind != CycleStepKind::Dwell) {
+        here.position = it->pos;
+        break;
+      }
+    Mill mill(out, ctx.plane, centre, start + i * step, m.lv.dir, here.position);
+    if (line) {
+      heiSlotLine(m, {{rp, 0}, {{{rp * std::cos(sweep), rp * std::sin(sweep)}, true, {0, 0}, true}}}, mill);
+    } else if (!heiPocket(m, p, mill, err)) {
+      return false;
+    }
+    mill.up(m.lv.z2);  // between repetitions and at the end: the 2nd set-up clearance
+  }
   return true;
 }
 
@@ -625,6 +692,10 @@ const CycleDef kClearingEntries[] = {
      "Heidenhain circular pocket", hei252, nullptr},
     {"hei.253", "Q215 Q218 Q219 Q368 Q374 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q366 Q385 Q439",
      "Heidenhain slot milling", hei253, nullptr},
+    {"hei.254",
+     "Q215 Q219 Q368 Q375 Q367 Q216 Q217 Q376 Q248 Q378 Q377 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q366 "
+     "Q385 Q439",
+     "Heidenhain circular slot", hei254, nullptr},
     {"hei.256", "Q218 Q424 Q219 Q425 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q437 Q215 Q369 Q338 Q385",
      "Heidenhain rectangular stud", hei256, nullptr},
     {"hei.232", "Q389 Q225 Q226 Q227 Q386 Q218 Q219 Q202 Q369 Q370 Q207 Q385 Q253 Q200 Q357 Q204",

@@ -53,12 +53,17 @@ Polygon contourPolygon(const Contour &c, double tol) {
       double a1 = std::atan2(s.end[1] - s.centre[1], s.end[0] - s.centre[0]);
       double sweep = s.ccw ? a1 - a0 : a0 - a1;
       if (sweep <= 1e-12) sweep += 2 * M_PI;
-      // Chords of half-angle h sag r (1 - cos h) <= tol.
-      double h = r > tol ? std::acos(1 - tol / r) : M_PI / 2;
+      // The region lies left of the contour: inside a counter-clockwise arc, whose chords (corners
+      // on it, half-angle h) sag r (1 - cos h) <= tol inward; outside a clockwise one, which gets
+      // tangents instead (corners r / cos h out), so the polygon never takes in material.
+      const double dirSign = s.ccw ? 1 : -1;
+      double h = r > tol ? (s.ccw ? std::acos(1 - tol / r) : std::acos(r / (r + tol))) : M_PI / 2;
       int n = std::max(1, (int)std::ceil(sweep / (2 * h)));
-      for (int i = 0; i < n; ++i) {
-        double t = a0 + (s.ccw ? 1 : -1) * sweep * i / n;
-        out.push_back({s.centre[0] + r * std::cos(t), s.centre[1] + r * std::sin(t)});
+      out.push_back(at);
+      for (int i = s.ccw ? 1 : 0; i < n; ++i) {
+        double t = a0 + dirSign * sweep * (s.ccw ? i : i + 0.5) / n;
+        double rr = s.ccw ? r : r / std::cos(sweep / (2 * n));
+        out.push_back({s.centre[0] + rr * std::cos(t), s.centre[1] + rr * std::sin(t)});
       }
     } else {
       out.push_back(at);

@@ -29,7 +29,8 @@ Contour roundedRect(double a, double b, double rc);
 Contour circleContour(double r);
 // The contour turned half a turn about the origin (a rounded rectangle then starts at (-a, 0)).
 Contour halfTurn(Contour c);
-// The contour as a polygon whose corners lie on it: arcs become chords within `tol`.
+// The contour as a polygon within `tol` of it that takes in nothing beyond it (the region lies
+// left of the contour): chords inside counter-clockwise arcs, tangents outside clockwise ones.
 Polygon contourPolygon(const Contour &c, double tol);
 
 class Mill {

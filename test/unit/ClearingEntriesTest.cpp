@@ -1,4 +1,4 @@
-// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
 // The pocket, slot and stud entries of the cycle library (Heidenhain and Sinumerik) (runtime/cycles/ClearingEntries.cpp)
 // checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
 // into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
@@ -309,4 +309,40 @@ TEST(ClearingEntries, FaceMillingCoversTheSurface) {
         ASSERT_LE(best, 6 + 0.03) << "at " << x << "," << y;
       }
   }
+}
+
+// Signed distance to a slot along the arc of radius rp about (cx, cy) from `from` through `sweep`
+// degrees, w wide.
+std::function<double(double, double)> arcSlot(double cx, double cy, double rp, double from, double sweep, double w) {
+  return [=](double x, double y) {
+    double dx = x - cx, dy = y - cy;
+    double a = std::atan2(dy, dx) * 180 / M_PI - from;
+    a = std::fmod(std::fmod(a, 360) + 360, 360);
+    if (a <= sweep) return std::fabs(std::hypot(dx, dy) - rp) - w / 2;
+    double best = 1e18;
+    for (double e : {from, from + sweep})
+      best = std::min(best, std::hypot(dx - rp * std::cos(e * M_PI / 180), dy - rp * std::sin(e * M_PI / 180)));
+    return best - w / 2;
+  };
+}
+
+TEST(ClearingEntries, CircularSlotRepeated) {
+  // Two slots 16 wide on a 60 mm circle about (10, 5), 100 degrees long from 20, the second turned
+  // by 180: each the whole slot, the tool never beyond its wall.
+  CycleArgs a = args({{"Q215", 0}, {"Q219", 16}, {"Q368", 0.4}, {"Q375", 60}, {"Q367", 0}, {"Q216", 10}, {"Q217", 5},
+                      {"Q376", 20}, {"Q248", 100}, {"Q378", 180}, {"Q377", 2}, {"Q207", 500}, {"Q201", -4},
+                      {"Q202", 2}, {"Q369", 0.2}, {"Q206", 150}, {"Q338", 0}, {"Q200", 2}, {"Q203", 0}, {"Q204", 10}});
+  auto one = arcSlot(10, 5, 30, 20, 100, 16), two = arcSlot(10, 5, 30, 200, 100, 16);
+  Pocket p{[=](double x, double y) { return std::min(one(x, y), two(x, y)); }, -30, 50, -35, 45};
+  checkPocket("hei.254", a, at(0, 0, 20, 3), p, 0, -4, 0);
+}
+
+TEST(ClearingEntries, CircularSlotFromItsStartAsWideAsTheTool) {
+  // Q367 1: the tool at the start end's centre, the circle's centre 25 back along 30 degrees; the
+  // slot as wide as the tool: the centre arc itself.
+  CycleArgs a = args({{"Q215", 1}, {"Q219", 8}, {"Q375", 50}, {"Q367", 1}, {"Q376", 30}, {"Q248", 60}, {"Q207", 500},
+                      {"Q201", -3}, {"Q202", 3}, {"Q206", 150}, {"Q200", 2}, {"Q203", 0}});
+  const double cx = -25 * std::cos(M_PI / 6), cy = -25 * std::sin(M_PI / 6);
+  Pocket p{arcSlot(cx, cy, 25, 30, 60, 8), -30, 30, -30, 30};
+  checkPocket("hei.254", a, at(0, 0, 20, 4), p, 0, -3, 0);
 }
