@@ -1,4 +1,4 @@
-// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19 SIN-CYC-20 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
 // The pocket, slot and stud entries of the cycle library (Heidenhain and Sinumerik) (runtime/cycles/ClearingEntries.cpp)
 // checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
 // into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
@@ -345,4 +345,26 @@ TEST(ClearingEntries, CircularSlotFromItsStartAsWideAsTheTool) {
   const double cx = -25 * std::cos(M_PI / 6), cy = -25 * std::sin(M_PI / 6);
   Pocket p{arcSlot(cx, cy, 25, 30, 60, 8), -30, 30, -30, 30};
   checkPocket("hei.254", a, at(0, 0, 20, 4), p, 0, -3, 0);
+}
+
+TEST(ClearingEntries, SinumerikSlot1RoughThenFinish) {
+  // SLOT1 50 x 14 from its right end (_GMODE 4th digit 4) at (40, 10) turned 30 degrees, helix
+  // plunge; then finishing (VARI 2).
+  CycleArgs rough = args({{"RTP", 10}, {"RFP", 0}, {"SDIS", 2}, {"_DPR", 5}, {"LENG", 50}, {"WID", 14}, {"_CPA", 40},
+                          {"_CPO", 10}, {"STA1", 30}, {"FFD", 100}, {"FFP1", 400}, {"_MID", 2}, {"_FAL", 0.4},
+                          {"_FALD", 0.2}, {"VARI", 21}, {"_STA2", 2}, {"_DP1", 1}, {"_GMODE", 4000}});
+  CycleArgs finish = rough;
+  finish.num["VARI"] = 12;
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  Pocket p{turnedBox(40 - 25 * c, 10 - 25 * s, M_PI / 6, 25, 7, 7), -10, 50, -20, 30};
+  checkPocket("sin.SLOT1", rough, at(0, 0, 20, 3), p, 0.4, -4.8, 0);
+  checkPocket("sin.SLOT1", finish, at(0, 0, 20, 3), p, 0, -5, 0);
+}
+
+TEST(ClearingEntries, SinumerikLonghole) {
+  CycleArgs a = args({{"RTP", 10}, {"_RFP", 0}, {"SDIS", 2}, {"_DP", -5}, {"LENG", 30}, {"_CPA", 0}, {"_CPO", 0},
+                      {"STA1", 45}, {"FFD", 100}, {"FFP1", 400}, {"MID", 2.5}, {"_VARI", 1}, {"_GMODE", 1000}});
+  const double c = std::cos(M_PI / 4);
+  Pocket p{turnedBox(11 * c, 11 * c, M_PI / 4, 15, 4, 4), -10, 30, -10, 30};
+  checkPocket("sin.LONGHOLE", a, at(0, 0, 20, 4), p, 0, -5, 0);
 }
