@@ -362,6 +362,40 @@ Contour arcSlot(double rp, double w, double sweep, double inset) {
   return c;
 }
 
+// `count` slots W wide along arcs of radius rp about `centre`, each through `sweepDeg` from
+// `first` + i x `step` degrees, each from where the last left the tool, up to the end level
+// (lv.z2) after each; as wide as the tool (no allowance): along the centre arc.
+bool arcSlots(const MillJob &m, int plane, PlanePoint centre, double rp, double W, double sweepDeg, double first,
+              double step, int count, const char *allowance, std::vector<CycleStep> &out, std::string &err) {
+  if (W / 2 >= rp) return fail(err, "the slot reaches the circle's centre: it is wider than the circle's diameter");
+  const bool line = m.sideAllowance == 0 && std::fabs(W - 2 * m.r) < 1e-9;
+  if (!line && 2 * (m.r + m.sideAllowance) >= W)
+    return fail(err, fmt::format("the tool with the {} does not fit into the slot", allowance));
+  const double sweep = sweepDeg * M_PI / 180;
+  PocketShape p;
+  p.wall = arcSlot(rp, W, sweep, 0);
+  p.finish.path = arcSlot(rp, W, sweep, m.r);
+  p.finish.normal = {std::cos(sweep / 2), std::sin(sweep / 2)};
+  p.finish.room = (W / 2 - m.r) / 2;
+  p.home = {rp * std::cos(sweep / 2), rp * std::sin(sweep / 2)};
+  std::array<double, 3> at = m.call;
+  for (int i = 0; i < count; ++i) {
+    for (auto it = out.rbegin(); it != out.rend(); ++it)  // where the last slot left the tool
+      if (it->kind == CycleStepKind::Rapid || it->kind == CycleStepKind::Feed || it->kind == CycleStepKind::Arc) {
+        at = it->pos;
+        break;
+      }
+    Mill mill(out, plane, centre, first + i * step, m.lv.dir, at);
+    if (line) {
+      heiSlotLine(m, {{rp, 0}, {{{rp * std::cos(sweep), rp * std::sin(sweep)}, true, {0, 0}, true}}}, mill);
+    } else if (!heiPocket(m, p, mill, err)) {
+      return false;
+    }
+    mill.up(m.lv.z2);
+  }
+  return true;
+}
+
 bool hei254(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
   MillJob m;
   if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
@@ -374,9 +408,6 @@ bool hei254(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (reps != std::floor(reps)) return fail(err, "Q377 (repetitions) must be a whole number");
   if (!(sweepDeg > 0) || sweepDeg >= 360) return fail(err, "Q248 (angular length) must lie between 0 and 360 (a closed ring is not a slot)");
   if (W / 2 >= rp) return fail(err, "the slot reaches the circle's centre: Q219 must be less than Q375");
-  const bool line = m.sideAllowance == 0 && std::fabs(W - 2 * m.r) < 1e-9;
-  if (!line && 2 * (m.r + m.sideAllowance) >= W) return fail(err, "the tool with the side allowance Q368 does not fit into the slot");
-  const double sweep = sweepDeg * M_PI / 180;
   // The circle's centre: Q216/Q217 (Q367 0), else back from the tool, which is at the start end
   // (1), the middle (2) or the far end (3) of the centre line [model: the ends in angle order].
   const PlaneAxes ax = planeAxes((Plane)ctx.plane);
@@ -386,28 +417,7 @@ bool hei254(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
     sinCosDegrees(start + (pos - 1) * sweepDeg / 2, s, c);
     centre = {ctx.position[ax.u] - rp * c, ctx.position[ax.v] - rp * s};
   }
-  PocketShape p;
-  p.wall = arcSlot(rp, W, sweep, 0);
-  p.finish.path = arcSlot(rp, W, sweep, m.r);
-  p.finish.normal = {std::cos(sweep / 2), std::sin(sweep / 2)};
-  p.finish.room = (W / 2 - m.r) / 2;
-  p.home = {rp * std::cos(sweep / 2), rp * std::sin(sweep / 2)};
-  for (int i = 0; i < (int)reps; ++i) {
-    CycleContext here = ctx;  // each slot from where the last one left the tool
-    for (auto it = out.rbegin(); it != out.rend(); ++it)
-      if (it->kind != CycleStepKind::Dwell) {
-        here.position = it->pos;
-        break;
-      }
-    Mill mill(out, ctx.plane, centre, start + i * step, m.lv.dir, here.position);
-    if (line) {
-      heiSlotLine(m, {{rp, 0}, {{{rp * std::cos(sweep), rp * std::sin(sweep)}, true, {0, 0}, true}}}, mill);
-    } else if (!heiPocket(m, p, mill, err)) {
-      return false;
-    }
-    mill.up(m.lv.z2);  // between repetitions and at the end: the 2nd set-up clearance
-  }
-  return true;
+  return arcSlots(m, ctx.plane, centre, rp, W, sweepDeg, start, step, (int)reps, "side allowance Q368", out, err);
 }
 
 // ---- studs (256, 257): laps round the stud from the blank inward.
@@ -772,6 +782,44 @@ bool sinLonghole(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
   return sinSlot(a, ctx, kLongholeNames, 2 * ctx.toolRadius, out, err);
 }
 
+// ---- Sinumerik SLOT2 (seed000c 19.1.8): NUM slots AFSL degrees long, WID wide, on the circle
+// of radius RAD about (_CPA, _CPO), the first from STA1, the next INDA further (full circle:
+// 360 / NUM), each as hei.254's [model], up to RTP between them (straight, VARI 2nd digit 0).
+constexpr SinNames kSlot2Names{"RTP", "RFP", "SDIS", "_MID", "_FAL", nullptr, "FFP1", "FFD",
+                               "CDIR", nullptr, nullptr, nullptr, true};
+
+bool sinSlot2(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  MillJob m;
+  if (!sinPocketJob(a, ctx, kSlot2Names, m, err)) return false;
+  // VARI 1st digit: 0 complete, 1 roughing, 2 finishing (wall and floor), 3 edge finishing, 5 chamfer.
+  const double vari = a.get("VARI");
+  switch (digit(vari, 1)) {
+  case 0: m.op = 0, m.wallPass = m.sideAllowance > 0; break;
+  case 1: m.op = 1; break;
+  case 2: m.op = 2, m.wallPass = m.floorPass = true; break;
+  case 3: m.op = 2, m.wallPass = true; break;
+  case 5: return fail(err, "VARI 5 (chamfering) needs the tool's point angle: not supported");
+  default: return fail(err, "VARI 1st digit must be 0 (complete), 1 (roughing), 2 (finishing), 3 (edge finishing) or 5 (chamfering)");
+  }
+  if (digit(vari, 2) == 1) return fail(err, "VARI 2nd digit 1 (positioning between the slots on the circle) is not supported");
+  int n;
+  const double num = a.get("NUM"), width = a.get("WID"), rad = a.get("RAD"), afsl = a.get("AFSL");
+  if (!(num >= 1) || num != std::floor(num) || num > 99999) return fail(err, "NUM must be a count 1..99999");
+  n = (int)num;
+  if (!(width > 0) || !(rad > 0)) return fail(err, "WID (slot width) and RAD (circle radius) must be greater than 0");
+  if (!(afsl > 0) || afsl >= 360) return fail(err, "AFSL (the slots' angle) must lie between 0 and 360");
+  // 4th digit: 1 full circle, 2 pitch circle, 0 (compatibility): INDA 0 is the full circle.
+  const int form = digit(vari, 4);
+  const double inda = form == 1 || (form == 0 && a.get("INDA") == 0) ? 360.0 / n : a.get("INDA");
+  if (n > 1 && std::fabs(inda) < afsl) return fail(err, "the slots overlap: AFSL is larger than the angle INDA between them");
+  PlanePoint about{a.get("_CPA"), a.get("_CPO")};
+  if (!a.has("_CPA") && !a.has("_CPO")) {
+    const PlaneAxes ax = planeAxes((Plane)sinPlane(a, ctx));
+    about = {ctx.position[ax.u], ctx.position[ax.v]};
+  }
+  return arcSlots(m, sinPlane(a, ctx), about, rad, width, afsl, a.get("STA1"), inda, n, "allowance _FAL", out, err);
+}
+
 const CycleDef kClearingEntries[] = {
     {"hei.251", "Q215 Q218 Q219 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439",
      "Heidenhain rectangular pocket", hei251, nullptr},
@@ -799,6 +847,10 @@ const CycleDef kClearingEntries[] = {
      "RTP RFP SDIS _DP _DPR NUM LENG WID _CPA _CPO RAD STA1 INDA FFD FFP1 _MID CDIR _FAL VARI _MIDF FFP2 SSF _FALD _STA2 "
      "_DP1 _UMODE _FS _ZFS _GMODE _DMODE _AMODE",
      "Sinumerik longitudinal slot", sinSlot1, nullptr},
+    {"sin.SLOT2",
+     "RTP RFP SDIS _DP _DPR NUM AFSL WID _CPA _CPO RAD STA1 INDA FFD FFP1 _MID CDIR _FAL VARI _MIDF FFP2 SSF _FFCP _UMODE "
+     "_FS _ZFS _GMODE _DMODE _AMODE",
+     "Sinumerik circumferential slots", sinSlot2, nullptr},
     {"sin.LONGHOLE",
      "RTP _RFP SDIS _DP _DPR NUM LENG _CPA _CPO RAD STA1 INDA FFD FFP1 MID _VARI _UMODE _GMODE _DMODE _AMODE",
      "Sinumerik elongated hole", sinLonghole, nullptr},

@@ -368,3 +368,13 @@ TEST(ClearingEntries, SinumerikLonghole) {
   Pocket p{turnedBox(11 * c, 11 * c, M_PI / 4, 15, 4, 4), -10, 30, -10, 30};
   checkPocket("sin.LONGHOLE", a, at(0, 0, 20, 4), p, 0, -5, 0);
 }
+
+TEST(ClearingEntries, SinumerikSlot2) {
+  // Three 50-degree slots 10 wide on a 25 mm radius about (5, -5), complete (rough, then the wall).
+  CycleArgs a = args({{"RTP", 10}, {"RFP", 0}, {"SDIS", 2}, {"_DP", -4}, {"NUM", 3}, {"AFSL", 50}, {"WID", 10},
+                      {"_CPA", 5}, {"_CPO", -5}, {"RAD", 25}, {"STA1", 30}, {"INDA", 0}, {"FFD", 100},
+                      {"FFP1", 400}, {"_MID", 2}, {"_FAL", 0.3}, {"VARI", 0}});
+  auto s1 = arcSlot(5, -5, 25, 30, 50, 10), s2 = arcSlot(5, -5, 25, 150, 50, 10), s3 = arcSlot(5, -5, 25, 270, 50, 10);
+  Pocket p{[=](double x, double y) { return std::min({s1(x, y), s2(x, y), s3(x, y)}); }, -30, 40, -40, 30};
+  checkPocket("sin.SLOT2", a, at(0, 0, 20, 3), p, 0, -4, 0);
+}
