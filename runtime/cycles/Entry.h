@@ -1,4 +1,4 @@
-// Helpers the entry files of the library share (Library.cpp, ClearingEntries.cpp): errors,
+// Helpers the entry files of the library share (Library.cpp, Pocket.cpp, the clearing entries): errors,
 // Sinumerik mode-word digits and the Heidenhain 2xx clearance levels.
 #pragma once
 #include "runtime/cycles/Library.h"

@@ -314,6 +314,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     std::vector<CycleDef> v;
     addHoleEntries(v);
     addClearingEntries(v);
+    addSinClearingEntries(v);
     return v;
   }();
   return all;

@@ -48,9 +48,11 @@ struct CycleDef {
 };
 
 // The entries of each file of the library (Library.cpp: holes and patterns, ClearingEntries.cpp:
-// pockets, studs, slots, faces); cycleLibrary() is all of them.
+// Heidenhain pockets, slots, studs, faces, SinClearingEntries.cpp: Sinumerik pockets and slots);
+// cycleLibrary() is all of them.
 void addHoleEntries(std::vector<CycleDef> &out);
 void addClearingEntries(std::vector<CycleDef> &out);
+void addSinClearingEntries(std::vector<CycleDef> &out);
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 

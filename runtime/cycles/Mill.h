@@ -1,4 +1,4 @@
-// Milling paths of the clearing entries (ClearingEntries.cpp) in an element's own frame: a
+// Milling paths of the clearing entries (Pocket.h and the entry files) in an element's own frame: a
 // contour as lines and exact arcs, and a writer that places local points (the element's centre
 // at the origin, its first axis along x) in the working plane, rotated about the origin, and
 // appends CycleSteps at levels on the tool axis.

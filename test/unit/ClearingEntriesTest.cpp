@@ -1,5 +1,5 @@
 // FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19 SIN-CYC-20 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
-// The pocket, slot and stud entries of the cycle library (Heidenhain and Sinumerik) (runtime/cycles/ClearingEntries.cpp)
+// The pocket, slot and stud entries of the cycle library (runtime/cycles/ClearingEntries.cpp, SinClearingEntries.cpp)
 // checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
 // into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
 // roughing), (2) at the final depth every point of the region to clear lies within one tool
