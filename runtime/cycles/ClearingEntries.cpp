@@ -243,90 +243,154 @@ bool hei257(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
-// ---- Heidenhain 232 face milling (seed002b 3.6, L13993-14300): lines across a rectangle from the
-// start point (Q225, Q226), Q218 along the first axis (its sign the direction of the first cut),
-// Q219 across (its sign the direction of the first stepover); levels from the surface Q227 down
-// to Q386, equal infeeds of at most Q202, the last removing Q369 at Q385. The digest's [model]
-// for the line ends and spacing: lines R (tool radius) in from the sides, equally spaced at most
-// Q370 x R apart; cuts start R + Q357 beside the surface and end as far beyond it (Q389 0, 2) or
-// R inside its edge (Q389 1).
-bool hei232(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  for (const char *k : {"Q225", "Q226", "Q227", "Q386", "Q218", "Q219", "Q202", "Q207"})
-    if (!a.has(k)) return fail(err, std::string(k) + " is required");
-  MillJob m;
-  if (!toolRadius(ctx, m, err)) return false;
-  const double top = a.get("Q227"), end = a.get("Q386"), depth = top - end;
-  if (depth == 0) return true;  // the TNC does not run the cycle
+// ---- Heidenhain 232 and 233 face milling (seed002b 3.6, L13993-14300; seed002a L7810-8244):
+// lines across a rectangle from a start corner, `length` along the milling direction (its sign
+// the direction of the first cut), `width` across (its sign the direction of the first
+// stepover); levels from the surface down to the end, equal infeeds of at most Q202, the last
+// removing Q369 at Q385. The digest's [model] for the line ends and spacing: lines R (tool
+// radius) in from the sides, equally spaced at most Q370 x R apart; cuts start R + Q357 beside the
+// surface and end as far beyond it (outside) or R inside its edge.
+struct Face {
+  PlanePoint corner{};       // the start corner (the first axis along the milling direction)
+  bool acrossY = false;      // 233 Q350 2: the lines run along the second axis
+  double length = 0, width = 0, top = 0, end = 0, allowance = 0, maxInfeed = 0, overlap = 1;
+  double millFeed = 0, finishFeed = 0, posFeed = 0, clearance = 0, side = 0, z2 = 0;
+  bool meander = true;       // else every line from the start side
+  bool edge = false;         // the cuts end R inside the edge (232 Q389 1, 233 Q389 1 and 3)
+  bool returnRapid = false;  // one-way lines: back at rapid (233), else at Q253 (232)
+  bool rough = true, finish = true;  // 233 Q215
+};
+
+bool faceMill(const Face &f, const CycleContext &ctx, MillJob &m, std::vector<CycleStep> &out, std::string &err) {
+  const double depth = f.top - f.end, r = m.r, L = f.length, W = f.width;
   if (depth < 0) return fail(err, "Q386 (end point in the tool axis) lies above the surface Q227");
-  int strategy;
-  double allowance, overlap;
-  if (!position(a, "Q389", 2, strategy, err) || !param(a, "Q369", 0, 99999.9999, allowance, err) ||
-      !param(a, "Q370", 0.1, 1.9999, overlap, err, 1))
-    return false;
-  if (allowance >= depth) return fail(err, "Q369 (floor allowance) must be less than the depth Q227 - Q386");
-  const double L = a.get("Q218"), W = a.get("Q219"), maxInfeed = a.get("Q202"), r = m.r;
+  if (f.allowance >= depth) return fail(err, "Q369 (floor allowance) must be less than the depth Q227 - Q386");
   if (L == 0 || W == 0) return fail(err, "Q218 and Q219 (side lengths) must not be 0");
-  if (!(maxInfeed > 0)) return fail(err, "Q202 (maximum plunging depth) must be greater than 0");
-  if (depth / maxInfeed > kMaxPecks) return fail(err, "Q202 (maximum plunging depth) too small");
-  const double millFeed = a.get("Q207"), finishFeed = a.get("Q385") > 0 ? a.get("Q385") : millFeed;
-  const double posFeed = a.get("Q253");
-  if (!(millFeed > 0) || !(posFeed > 0)) return fail(err, "Q207 and Q253 (feeds) must be greater than 0");
-  const double clearance = std::fabs(a.get("Q200")), side = std::fabs(a.get("Q357"));
+  if (!(f.maxInfeed > 0)) return fail(err, "Q202 (maximum plunging depth) must be greater than 0");
+  if (depth / f.maxInfeed > kMaxPecks) return fail(err, "Q202 (maximum plunging depth) too small");
+  if (!(f.millFeed > 0) || !(f.posFeed > 0)) return fail(err, "Q207 and Q253 (feeds) must be greater than 0");
   m.lv.dir = -1;  // the face lies below the surface along the tool axis
-  m.surface = top;
+  m.surface = f.top;
   // Levels: equal infeeds down to Q386 + Q369, then Q369 at the finishing feed.
-  std::vector<std::pair<double, double>> levels;  // depth below Q227, feed
-  const int n = (int)std::ceil((depth - allowance) / maxInfeed - 1e-9);
-  for (int i = 1; i <= n; ++i) levels.push_back({(depth - allowance) * i / n, millFeed});
-  if (allowance > 0) levels.push_back({depth, finishFeed});
+  std::vector<std::pair<double, double>> levels;  // depth below the surface, feed
+  const int n = (int)std::ceil((depth - f.allowance) / f.maxInfeed - 1e-9);
+  if (f.rough)
+    for (int i = 1; i <= n; ++i) levels.push_back({(depth - f.allowance) * i / n, f.millFeed});
+  if (f.finish && f.allowance > 0) levels.push_back({depth, f.finishFeed});
+  if (levels.empty()) return true;
   // Lines across: R in from each side, equally spaced at most Q370 x R; one in the middle when
-  // the width is at most the tool's diameter.
-  const double s1 = L > 0 ? 1 : -1, s2 = W > 0 ? 1 : -1, x0 = a.get("Q225"), y0 = a.get("Q226");
+  // the width is at most the tool's diameter. (a, b): along the lines, across them.
+  const double s1 = L > 0 ? 1 : -1, s2 = W > 0 ? 1 : -1, a0 = f.corner[0], b0 = f.corner[1];
   std::vector<double> lines;
   if (std::fabs(W) <= 2 * r) {
-    lines.push_back(y0 + W / 2);
+    lines.push_back(b0 + W / 2);
   } else {
-    int k = (int)std::ceil((std::fabs(W) - 2 * r) / (overlap * r) - 1e-9);
-    for (int i = 0; i <= k; ++i) lines.push_back(y0 + s2 * r + (W - 2 * s2 * r) * i / k);
+    int k = (int)std::ceil((std::fabs(W) - 2 * r) / (f.overlap * r) - 1e-9);
+    for (int i = 0; i <= k; ++i) lines.push_back(b0 + s2 * r + (W - 2 * s2 * r) * i / k);
   }
-  const double outside = x0 - s1 * (r + side), beyond = x0 + L + s1 * (r + side);
-  const double farEnd = strategy == 1 ? x0 + L - s1 * r : beyond, nearEnd = strategy == 1 ? x0 + s1 * r : outside;
+  const double outside = a0 - s1 * (r + f.side), beyond = a0 + L + s1 * (r + f.side);
+  const double farEnd = f.edge ? a0 + L - s1 * r : beyond, nearEnd = f.edge ? a0 + s1 * r : outside;
+  auto at = [&](double a, double b) { return f.acrossY ? PlanePoint{b, a} : PlanePoint{a, b}; };
   Mill mill(out, ctx.plane, {0, 0}, 0, m.lv.dir, ctx.position);
-  const double z2 = top + std::max(clearance, std::fabs(a.get("Q204")));
-  mill.go({outside, lines[0]}, z2);
-  mill.up(top + clearance);
+  double cur = outside;  // where the tool is along the lines
+  mill.go(at(outside, lines[0]), f.z2);
+  mill.up(f.top + f.clearance);
   bool forward = true;  // the order of the lines on this level
   for (size_t li = 0; li < levels.size(); ++li) {
-    const double z = m.level(levels[li].first), f = levels[li].second;
+    const double z = m.level(levels[li].first), feed = levels[li].second;
     for (size_t i = 0; i < lines.size(); ++i) {
-      const double y = lines[forward ? i : lines.size() - 1 - i];
-      if (strategy == 2) {  // each line from the start side: over at Q253 above the level, down, across
+      const double b = lines[forward ? i : lines.size() - 1 - i];
+      if (!f.meander) {  // each line from the start side: over above the level, down, across
         if (i > 0 || li > 0) {
-          mill.up(z + clearance);
-          mill.feed({outside, y}, z + clearance, posFeed);
+          mill.up(z + f.clearance);
+          if (f.returnRapid) mill.rapid(at(outside, b), z + f.clearance);
+          else mill.feed(at(outside, b), z + f.clearance, f.posFeed);
         }
-        mill.feed({outside, y}, z, posFeed);
-        mill.feed({beyond, y}, z, f);
+        mill.feed(at(outside, b), z, f.posFeed);
+        mill.feed(at(f.edge ? farEnd : beyond, b), z, feed);
         continue;
       }
       // Meander: down at the end of the line before (or the start), across, the next line back.
-      if (i == 0) {
-        mill.feed(mill.here(), z, posFeed);
-      } else {
-        mill.feed({mill.here()[0], y}, z, strategy == 1 ? f : posFeed);
-      }
-      const bool towardFar = std::fabs(mill.here()[0] - farEnd) > std::fabs(mill.here()[0] - nearEnd);
-      mill.feed({towardFar ? farEnd : nearEnd, y}, z, f);
+      if (i == 0) mill.feed(mill.here(), z, f.posFeed);
+      else mill.feed(at(cur, b), z, f.edge ? feed : f.posFeed);
+      cur = std::fabs(cur - farEnd) > std::fabs(cur - nearEnd) ? farEnd : nearEnd;
+      mill.feed(at(cur, b), z, feed);
     }
     forward = !forward;  // the next level runs the lines back (seed002b L14043-14049)
   }
-  mill.up(z2);
+  mill.up(f.z2);
   return true;
+}
+
+// Both cycles' shared parameters: Q227 Q386 Q369 Q202 Q370 Q207 Q385 Q253 Q200 Q357 Q204.
+bool faceParams(const CycleArgs &a, const CycleContext &ctx, Face &f, MillJob &m, std::string &err) {
+  for (const char *k : {"Q227", "Q386", "Q218", "Q219", "Q202", "Q207"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  if (!toolRadius(ctx, m, err)) return false;
+  if (!param(a, "Q369", 0, 99999.9999, f.allowance, err) || !param(a, "Q370", 0.1, 1.9999, f.overlap, err, 1)) return false;
+  f.top = a.get("Q227"), f.end = a.get("Q386"), f.maxInfeed = a.get("Q202");
+  f.length = a.get("Q218"), f.width = a.get("Q219");
+  f.millFeed = a.get("Q207"), f.finishFeed = a.get("Q385") > 0 ? a.get("Q385") : f.millFeed;
+  f.posFeed = a.get("Q253");
+  f.clearance = std::fabs(a.get("Q200")), f.side = std::fabs(a.get("Q357"));
+  f.z2 = f.top + std::max(f.clearance, std::fabs(a.get("Q204")));
+  return true;
+}
+
+bool hei232(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  for (const char *k : {"Q225", "Q226"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  Face f;
+  MillJob m;
+  int strategy;
+  if (!faceParams(a, ctx, f, m, err) || !position(a, "Q389", 2, strategy, err)) return false;
+  if (f.top == f.end) return true;  // the TNC does not run the cycle
+  f.corner = {a.get("Q225"), a.get("Q226")};
+  f.meander = strategy != 2, f.edge = strategy == 1;
+  return faceMill(f, ctx, m, out, err);
+}
+
+// 233: as 232, the surface placed by Q367 (-1: its corner at the tool, Q218/Q219 signed as 232's;
+// 0: its centre, 1-4: a corner as 251's, the sides then positive), the lines along the first
+// (Q350 1) or the second axis (2), Q215 roughing and/or the Q369 finishing level, Q389 3 one way
+// ending at the edge. Limits (Q347-Q349) and the spiral (Q389 4): errors.
+bool hei233(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  Face f;
+  MillJob m;
+  int strategy, op, pos = 0;
+  if (!faceParams(a, ctx, f, m, err) || !position(a, "Q389", 4, strategy, err) || !position(a, "Q215", 2, op, err))
+    return false;
+  if (strategy == 4) return fail(err, "Q389 4 (spiral from outside in) is not supported");
+  for (const char *k : {"Q347", "Q348", "Q349"})
+    if (a.get(k) != 0) return fail(err, std::string(k) + " (a limited side) is not supported: program 0");
+  const double dirAxis = a.has("Q350") ? a.get("Q350") : 1;
+  if (dirAxis != 1 && dirAxis != 2) return fail(err, "Q350 (milling direction) must be 1 or 2");
+  if (a.get("Q367") != -1 && !position(a, "Q367", 4, pos, err)) return err.empty() ? fail(err, "Q367 must be -1 … 4") : false;
+  if (f.top == f.end) return true;
+  f.acrossY = dirAxis == 2;
+  f.meander = strategy < 2, f.edge = strategy == 1 || strategy == 3, f.returnRapid = true;
+  f.rough = op != 2, f.finish = op != 1;
+  // Q218 runs along the first axis, Q219 along the second, whichever way the lines go.
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  const PlanePoint tool{ctx.position[ax.u], ctx.position[ax.v]};
+  double q218 = a.get("Q218"), q219 = a.get("Q219");
+  PlanePoint corner = tool;
+  if (a.get("Q367") != -1) {
+    q218 = std::fabs(q218), q219 = std::fabs(q219);
+    corner = {tool[0] + (kCorner[pos][0] == 0 ? -q218 / 2 : kCorner[pos][0] < 0 ? 0 : -q218),
+              tool[1] + (kCorner[pos][1] == 0 ? -q219 / 2 : kCorner[pos][1] < 0 ? 0 : -q219)};
+  }
+  f.corner = f.acrossY ? PlanePoint{corner[1], corner[0]} : corner;
+  f.length = f.acrossY ? q219 : q218, f.width = f.acrossY ? q218 : q219;
+  return faceMill(f, ctx, m, out, err);
 }
 
 const CycleDef kClearingEntries[] = {
     {"hei.232", "Q389 Q225 Q226 Q227 Q386 Q218 Q219 Q202 Q369 Q370 Q207 Q385 Q253 Q200 Q357 Q204",
      "Heidenhain face milling", hei232, nullptr},
+    {"hei.233",
+     "Q215 Q389 Q350 Q218 Q219 Q227 Q386 Q369 Q202 Q370 Q207 Q385 Q253 Q357 Q200 Q204 Q347 Q348 Q349 Q220 Q368 Q338 Q367",
+     "Heidenhain face milling with direction", hei233, nullptr},
     {"hei.251", "Q215 Q218 Q219 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439",
      "Heidenhain rectangular pocket", hei251, nullptr},
     {"hei.252", "Q215 Q223 Q368 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439",

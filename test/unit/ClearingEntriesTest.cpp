@@ -1,4 +1,4 @@
-// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-09 SIN-CYC-19 SIN-CYC-20 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-08 HEI-POC-09 SIN-CYC-19 SIN-CYC-20 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
 // The pocket, slot and stud entries of the cycle library (runtime/cycles/ClearingEntries.cpp, SinClearingEntries.cpp)
 // checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
 // into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
@@ -285,17 +285,24 @@ TEST(ClearingEntries, SinumerikPocket4) {
 }
 
 TEST(ClearingEntries, FaceMillingCoversTheSurface) {
-  // 232 meander (Q389 0) and one-way (2) over 47 x -23 from (5, 5): the whole face at Q386, never
+  // 232 meander (Q389 0) and one-way (2) over 47 x -23 from (5, 5), and 233 the same surface by
+  // its upper left corner (Q367 4) with the lines along Y (Q350 2): the whole face at Q386, never
   // below it.
-  for (int strategy : {0, 2}) {
-    SCOPED_TRACE(strategy);
+  for (int run = 0; run < 4; ++run) {
+    const int strategy = run % 2 == 0 ? 0 : 2;
+    SCOPED_TRACE(run);
     CycleArgs a = args({{"Q389", (double)strategy}, {"Q225", 5}, {"Q226", 5}, {"Q227", 3}, {"Q386", 0},
                         {"Q218", 47}, {"Q219", -23}, {"Q202", 1.2}, {"Q369", 0.3}, {"Q370", 1.7}, {"Q207", 500},
                         {"Q385", 300}, {"Q253", 2000}, {"Q200", 2}, {"Q357", 2}, {"Q204", 10}});
-    const CycleContext ctx = at(0, 0, 30, 6);
+    const char *entry = run < 2 ? "hei.232" : "hei.233";
+    if (run >= 2) {
+      a.num.erase("Q225"), a.num.erase("Q226");
+      a.num["Q350"] = 2, a.num["Q367"] = 4, a.num["Q215"] = 0;
+    }
+    const CycleContext ctx = run < 2 ? at(0, 0, 30, 6) : at(5, 5, 30, 6);
     std::vector<CycleStep> steps;
     std::string err;
-    ASSERT_TRUE(findCycle("hei.232")->expand(a, ctx, steps, err)) << err;
+    ASSERT_TRUE(findCycle(entry)->expand(a, ctx, steps, err)) << err;
     std::vector<Sample> path = samplePath(steps, ctx.position);
     std::vector<Sample> face;
     for (const Sample &q : path) {
