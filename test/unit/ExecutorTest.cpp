@@ -526,3 +526,26 @@ TEST(Executor, LibraryCycleArcsInTheWorkOffset) {
   EXPECT_TRUE(arcs[1].exactStop);
   EXPECT_NEAR(arcs[0].center[0], 107.5, 1e-9);  // the quarter arc onto the wall
 }
+
+// Under a rotation about the drilling axis (G68 R90 about the origin) the library cycle's arcs
+// turn with their end points and keep their sense.
+TEST(Executor, LibraryCycleArcsUnderARotation) {
+  ExecRun run;
+  MachineCmd rot = words(CmdKind::Frame, {{Word::X, 0}, {Word::Y, 0}, {Word::R, 90}}, (uint8_t)FrameSlot::Rotation);
+  rot.sub2 = (uint8_t)FrameAction::Set;
+  ASSERT_TRUE(run({words(CmdKind::SetOffset, {{Word::P, 1}, {Word::R, 5}}, (uint8_t)SetOffsetKind::ToolSet),
+                   words(CmdKind::ToolSelect, {{Word::T, 1}}), words(CmdKind::ToolChange, {}), feed(1000),
+                   move({{Word::X, 0}, {Word::Y, 0}, {Word::Z, 20}}), rot}));
+  CycleArgs a;
+  a.num = {{"Q215", 2}, {"Q223", 30}, {"Q368", 0.5}, {"Q207", 500}, {"Q201", -5}, {"Q202", 5}, {"Q206", 150},
+           {"Q200", 2}, {"Q203", 0}};
+  ASSERT_TRUE(run.ex.runCycle(*findCycle("hei.252"), a, nullptr, nullptr, {}));
+  std::vector<MotionRecord> arcs;
+  for (auto &r : run.moves())
+    if (r.kind == RecordKind::Arc) arcs.push_back(r);
+  ASSERT_EQ(arcs.size(), 3u);
+  EXPECT_NEAR(arcs[0].center[0], 0, 1e-9);  // the quarter arc's centre (7.5, 0) turned to (0, 7.5)
+  EXPECT_NEAR(arcs[0].center[1], 7.5, 1e-9);
+  expectPos(arcs[1].end, 0, 10, -5);
+  EXPECT_EQ(arcs[1].turns, 1);
+}
