@@ -155,12 +155,31 @@ bool hei254(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
 // from the +x side), how far from the stud the blank reaches at most, and the approach point.
 struct StudShape {
   Contour (*lap)(const StudShape &, double d);
-  double a = 0, b = 0, rc = 0;  // half sides and corner radius (a circle: a = b = rc = radius)
+  double a = 0, b = 0, rc = 0;  // half sides and corner radius (a circle: a = b = rc = radius;
+                                // a polygon: a = the apothem)
   double reach = 0;
   PlanePoint approach{};
+  int corners = 0;              // a regular polygon's
 };
 Contour rectLap(const StudShape &s, double d) { return roundedRect(s.a + d, s.b + d, s.rc + d); }
 Contour circleLap(const StudShape &s, double d) { return circleContour(s.a + d); }
+// A regular polygon (apothem a, corners rounded by rc) offset by d, its first side's outward
+// normal along +x: from that side's middle, each side then the arc round the next corner.
+Contour polygonLap(const StudShape &s, double d) {
+  const int n = s.corners;
+  const double rho = s.rc + d, circum = (s.a - s.rc) / std::cos(M_PI / n);  // the rounding centres'
+  auto polar = [](double r, double t) { return PlanePoint{r * std::cos(t), r * std::sin(t)}; };
+  Contour c;
+  c.start = {s.a - s.rc + rho, 0};
+  for (int k = 0; k < n; ++k) {
+    const PlanePoint centre = polar(circum, M_PI / n + k * 2 * M_PI / n);
+    const PlanePoint from = polar(rho, k * 2 * M_PI / n), to = polar(rho, (k + 1) * 2 * M_PI / n);
+    c.segs.push_back({{centre[0] + from[0], centre[1] + from[1]}, false, {}, true});
+    c.segs.push_back({{centre[0] + to[0], centre[1] + to[1]}, true, centre, true});
+  }
+  c.segs.push_back({c.start, false, {}, true});
+  return c;
+}
 
 // The laps' tool-centre distances from the stud, outermost first: the innermost leaves
 // `allowance`, the outermost reaches the blank's farthest point, evenly at most a stepover apart
@@ -239,6 +258,31 @@ bool hei257(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   s.approach = {blank / 2 + m.r + 2, 0};
   // [model] Q376 -1 (the controller's optimum) approaches at 0 degrees.
   Mill mill = placed(out, ctx, m, {0, 0}, angle < 0 ? 0 : angle);
+  heiStud(m, s, mill);
+  return true;
+}
+
+// 258 (seed002a L7540-7809): a regular polygon of Q572 corners on the reference circle Q571
+// (circumscribed, Q573 1: corners on it; inscribed, 0: sides touching it), its first corner at
+// Q224, corners rounded by Q220, cut from a round blank Q222 as 256/257 [model: the approach 2 mm
+// outside the blank on the first side's normal].
+bool hei258(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  MillJob m;
+  if (!heiMill(a, ctx, 0.0001, m, err)) return err.empty();
+  const double ref = a.get("Q571"), blank = a.get("Q222"), rc = a.get("Q220"), q573 = a.get("Q573");
+  const double n = a.get("Q572");
+  if (!(n >= 3 && n <= 30) || n != std::floor(n)) return fail(err, "Q572 (number of corners) must be 3 … 30");
+  if (q573 != 0 && q573 != 1) return fail(err, "Q573 must be 0 (inscribed) or 1 (circumscribed)");
+  if (!(ref > 0)) return fail(err, "Q571 (reference circle diameter) must be greater than 0");
+  if (rc < 0) return fail(err, "Q220 < 0 (chamfered corners) is not supported: program a corner radius");
+  StudShape s{polygonLap, 0, 0, rc};
+  s.corners = (int)n;
+  s.a = q573 == 1 ? ref / 2 * std::cos(M_PI / n) : ref / 2;  // the apothem
+  if (rc > s.a) return fail(err, "Q220 (corner radius) is larger than the polygon's inscribed circle");
+  if (!(blank / 2 > s.a)) return fail(err, "Q222 (blank diameter) must be larger than the polygon");
+  s.reach = blank / 2 - s.a;  // the blank's farthest point lies off the middle of a side
+  s.approach = {blank / 2 + m.r + 2, 0};
+  Mill mill = placed(out, ctx, m, {0, 0}, a.get("Q224") - 180 / n);
   heiStud(m, s, mill);
   return true;
 }
@@ -386,6 +430,8 @@ bool hei233(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
 }
 
 const CycleDef kClearingEntries[] = {
+    {"hei.258", "Q573 Q571 Q222 Q572 Q224 Q220 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q215 Q369 Q338 Q385",
+     "Heidenhain polygon stud", hei258, nullptr},
     {"hei.232", "Q389 Q225 Q226 Q227 Q386 Q218 Q219 Q202 Q369 Q370 Q207 Q385 Q253 Q200 Q357 Q204",
      "Heidenhain face milling", hei232, nullptr},
     {"hei.233",

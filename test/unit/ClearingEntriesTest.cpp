@@ -1,4 +1,4 @@
-// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-08 HEI-POC-09 SIN-CYC-19 SIN-CYC-20 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
+// FEATURES: HEI-POC-01 HEI-POC-02 HEI-POC-03 HEI-POC-04 HEI-POC-05 HEI-POC-06 HEI-POC-07 HEI-POC-08 HEI-POC-09 SIN-CYC-19 SIN-CYC-20 HEI-SPC-10 HEI-SPC-12 HEI-SPC-13
 // The pocket, slot and stud entries of the cycle library (runtime/cycles/ClearingEntries.cpp, SinClearingEntries.cpp)
 // checked by geometry: the tool-centre path they produce is sampled, and (1) the tool never cuts
 // into the finished part (beyond a pocket's wall, into a stud; less the side allowance when only
@@ -384,4 +384,34 @@ TEST(ClearingEntries, SinumerikSlot2) {
   auto s1 = arcSlot(5, -5, 25, 30, 50, 10), s2 = arcSlot(5, -5, 25, 150, 50, 10), s3 = arcSlot(5, -5, 25, 270, 50, 10);
   Pocket p{[=](double x, double y) { return std::min({s1(x, y), s2(x, y), s3(x, y)}); }, -30, 40, -40, 30};
   checkPocket("sin.SLOT2", a, at(0, 0, 20, 3), p, 0, -4, 0);
+}
+
+TEST(ClearingEntries, PolygonStud) {
+  // A hexagon on a 40 mm circumscribed circle (Q573 1), first corner at 10 degrees, corners
+  // rounded 2, from a 52 mm blank about (5, 5): never into the stud, nothing left of the blank.
+  CycleArgs a = args({{"Q573", 1}, {"Q571", 40}, {"Q222", 52}, {"Q572", 6}, {"Q224", 10}, {"Q220", 2}, {"Q368", 0.5},
+                      {"Q207", 500}, {"Q201", -4}, {"Q202", 2}, {"Q206", 150}, {"Q200", 2}, {"Q203", 0},
+                      {"Q204", 10}, {"Q370", 1.3}, {"Q215", 0}, {"Q369", 0.2}, {"Q338", 2}});
+  // Signed distance to the rounded hexagon: the shrunk hexagon's distance less the rounding.
+  std::vector<std::array<double, 2>> corners;
+  const double apothem = 20 * std::cos(M_PI / 6), shrunk = (apothem - 2) / std::cos(M_PI / 6);
+  for (int k = 0; k < 6; ++k) {
+    double t = (10 + 60 * k) * M_PI / 180;
+    corners.push_back({5 + shrunk * std::cos(t), 5 + shrunk * std::sin(t)});
+  }
+  auto stud = [=](double x, double y) {
+    double best = 1e18, inside = -1e18;
+    for (int k = 0; k < 6; ++k) {
+      auto &p = corners[k], &q = corners[(k + 1) % 6];
+      double dx = q[0] - p[0], dy = q[1] - p[1], l2 = dx * dx + dy * dy;
+      double t = std::clamp(((x - p[0]) * dx + (y - p[1]) * dy) / l2, 0.0, 1.0);
+      best = std::min(best, std::hypot(p[0] + t * dx - x, p[1] + t * dy - y));
+      double nx = dy / std::sqrt(l2), ny = -dx / std::sqrt(l2);  // outward (corners counter-clockwise)
+      inside = std::max(inside, (x - p[0]) * nx + (y - p[1]) * ny);
+    }
+    return (inside <= 0 ? inside : best) - 2;
+  };
+  Pocket p{[=](double x, double y) { return -stud(x, y); }, -22, 32, -22, 32,
+           [](double x, double y) { return std::hypot(x - 5, y - 5) - 26; }};
+  checkPocket("hei.258", a, at(5, 5, 30, 4), p, 0, -4, 0);
 }
