@@ -43,7 +43,8 @@ bool Executor::Impl::pathTangent(Vec3 &t) const {
   return true;
 }
 
-bool Executor::Impl::emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 &normal, int turns) {
+bool Executor::Impl::emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 &normal, int turns, double feed,
+                             bool exactStop) {
   MotionRecord r = record(RecordKind::Arc);
   r.plane = plane();
   for (Plane p : {Plane::XY, Plane::ZX, Plane::YZ}) {  // a principal plane when the normal is an axis
@@ -60,9 +61,9 @@ bool Executor::Impl::emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 
   r.end = end;
   r.center = centre;
   r.turns = turns;
-  r.exactStop = st.pathMode == ModeValue::ExactStop;
-  r.feed = moveFeed(arcGeometry(r).length);
-  inverseTimeRate(r.feed);
+  r.exactStop = exactStop || st.pathMode == ModeValue::ExactStop;
+  r.feed = feed > 0 ? feed : moveFeed(arcGeometry(r).length);
+  if (feed <= 0) inverseTimeRate(r.feed);
   st.position = end;
   return emitMove(r);
 }

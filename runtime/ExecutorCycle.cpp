@@ -175,14 +175,24 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
     to = frameOut(to);
     switch (s.kind) {
     case CycleStepKind::Rapid: moveTo(RecordKind::Rapid, to, !s.preMove); break;
-    case CycleStepKind::Feed: {
+    case CycleStepKind::Feed:
+    case CycleStepKind::Arc: {
       double f = s.feed > 0 ? s.feed : feedMM;
       if (f != rate) {
         MotionRecord r = record(RecordKind::FeedRate);
         r.value = rate = f;
         emit(r);
       }
-      moveTo(RecordKind::Linear, to, true, s.feed);
+      if (s.kind == CycleStepKind::Feed) {
+        moveTo(RecordKind::Linear, to, true, s.feed);
+        break;
+      }
+      // The centre maps like a point; the frame keeps the plane's normal (cycleFrameOk).
+      AxisVec c = frameIn(st.position);
+      c[0] = s.centre[0], c[1] = s.centre[1], c[2] = s.centre[2];
+      c = frameOut(c);
+      if (!emitArc(to, {c[0], c[1], c[2]}, planeNormal(plane()), s.ccw ? s.turns : -s.turns, s.feed, true))
+        return false;
       break;
     }
     case CycleStepKind::Dwell: {
@@ -229,15 +239,17 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
   ctx.feed = x.st.feedMode == ModeValue::PerMinute ? x.feedMM : 0;
   ctx.spindle = x.st.spindle;
   ctx.speed = x.st.speed;
+  if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
   std::vector<CycleStep> steps;
   bool ok = pattern ? expandPattern(*pattern, *patternArgs, cycle, args, ctx, steps, err)
                     : cycle.expand ? cycle.expand(args, ctx, steps, err)
                                    : (err = std::string(cycle.name) + " is a position pattern: give it a cycle to run", false);
   if (!ok) return x.error(std::string(pattern ? pattern->name : cycle.name) + ": " + err, "cycle-invalid");
   for (const CycleStep &s : steps)
-    if (s.kind == CycleStepKind::Feed && s.feed <= 0 && !x.checkFeed(cycle.name)) return false;
+    if ((s.kind == CycleStepKind::Feed || s.kind == CycleStepKind::Arc) && s.feed <= 0 && !x.checkFeed(cycle.name))
+      return false;
   for (CycleStep &s : steps)  // program coordinates -> the offset frame
-    for (int i = 0; i < 3; ++i) s.pos[i] += x.frameOffset(i);
+    for (int i = 0; i < 3; ++i) s.pos[i] += x.frameOffset(i), s.centre[i] += x.frameOffset(i);
   // The bracket names the cycle (and the pattern it runs on) with the arguments as given.
   MotionRecord begin = x.record(RecordKind::CycleBegin);
   begin.text = pattern ? std::string(pattern->name) + "+" + cycle.name : cycle.name;

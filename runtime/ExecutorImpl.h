@@ -223,7 +223,10 @@ struct Executor::Impl {
   // the path leaves with, then emitted as any arc (emitArc, machine coordinates).
   bool arcThrough(const MachineCmd &c);
   bool arcTangent(const MachineCmd &c);
-  bool emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 &normal, int turns);
+  // `feed` > 0: the move's own rate (library cycles), else the programmed one; `exactStop` as
+  // moveTo's.
+  bool emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 &normal, int turns, double feed = 0,
+               bool exactStop = false);
   // The last programmed path move, kept as plain data (no strings, nothing computed per move):
   // CT asks it for the direction the path leaves with (pathTangent).
   struct LastPath {

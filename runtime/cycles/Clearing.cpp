@@ -30,6 +30,19 @@ ClipperLib::Paths offset(const ClipperLib::Paths &region, double by, double tol)
   co.Execute(out, by * kScale);
   return out;
 }
+// Whether the tool, run along the rings, leaves material it could reach: the first ring's area
+// widened by the radius less what the rings sweep, ignoring slivers of a few chord tolerances.
+bool leavesMaterial(const std::vector<ClipperLib::Paths> &levels, const ClearingSpec &s) {
+  ClipperLib::Paths reach = offset(levels[0], s.toolRadius, s.chordTolerance), swept, rest;
+  ClipperLib::ClipperOffset co(2.0, s.chordTolerance * kScale);
+  for (auto &l : levels) co.AddPaths(l, ClipperLib::jtRound, ClipperLib::etClosedLine);
+  co.Execute(swept, s.toolRadius * kScale);
+  ClipperLib::Clipper c;
+  c.AddPaths(reach, ClipperLib::ptSubject, true);
+  c.AddPaths(swept, ClipperLib::ptClip, true);
+  c.Execute(ClipperLib::ctDifference, rest, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return !offset(rest, -5 * s.chordTolerance, s.chordTolerance).empty();
+}
 }  // namespace
 
 bool clearingRings(const ClearingSpec &s, std::vector<Polygon> &rings, std::string &err) {
@@ -52,14 +65,30 @@ bool clearingRings(const ClearingSpec &s, std::vector<Polygon> &rings, std::stri
   if (region.empty()) return err = "the islands cover the whole region", false;
   // First ring: the tool touching the walls (plus the allowance); then inward by the stepover
   // until nothing is left. Each offset is taken from the region, so errors do not accumulate.
+  // A stepover wider than the radius can leave material between the sharp corners of two rings
+  // or in the middle: then the stepover shrinks until the rings reach everything.
   std::vector<ClipperLib::Paths> levels;
-  for (int k = 0;; ++k) {
-    ClipperLib::Paths ring = offset(region, -(s.toolRadius + s.allowance + k * s.stepover), s.chordTolerance);
-    if (ring.empty()) break;
-    levels.push_back(std::move(ring));
-    if (k > 100000) return err = "too many clearing rings (stepover far too small)", false;
+  double step = s.stepover;
+  for (int attempt = 0;; ++attempt) {
+    levels.clear();
+    double d = s.toolRadius + s.allowance;
+    for (;; d += step) {
+      ClipperLib::Paths ring = offset(region, -d, s.chordTolerance);
+      if (ring.empty()) break;
+      levels.push_back(std::move(ring));
+      if (levels.size() > 100000) return err = "too many clearing rings (stepover far too small)", false;
+    }
+    if (levels.empty()) return err = "the tool does not fit into the region", false;
+    // The middle beyond the last ring: a ring every tool radius while some is left.
+    for (d += s.toolRadius - step;; d += s.toolRadius) {
+      ClipperLib::Paths ring = offset(region, -d, s.chordTolerance);
+      if (ring.empty()) break;
+      levels.push_back(std::move(ring));
+    }
+    if (!leavesMaterial(levels, s)) break;
+    if (attempt == 30) return err = "the clearing rings leave material standing", false;
+    step *= 0.85;
   }
-  if (levels.empty()) return err = "the tool does not fit into the region", false;
   for (size_t k = levels.size(); k-- > 0;)
     for (auto &p : levels[k]) {
       if (!ClipperLib::Orientation(p)) ClipperLib::ReversePath(p);  // islands' rings too: ccw

@@ -2,24 +2,11 @@
 // CYCLE81-CYCLE89 and Heidenhain 200-205 (runtime/cycles/Library.cpp) describe one hole as a
 // HoleSpec; holeSteps turns it into elementary steps along the drilling axis.
 #pragma once
-#include <array>
-#include <cstdint>
+#include "runtime/cycles/Step.h"
+
 #include <vector>
 
 namespace ncc {
-
-enum class CycleStepKind : uint8_t { Rapid, Feed, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient };
-
-struct CycleStep {
-  CycleStepKind kind = CycleStepKind::Rapid;
-  std::array<double, 3> pos{};  // X Y Z target of Rapid/Feed
-  double seconds = 0;           // Dwell
-  double feed = 0;              // Feed: mm/min, 0 = the programmed feed
-  double angle = 0;             // SpindleOrient: degrees (the shortest way)
-  // The move to the R level made before the holes when the initial level is below R: rs274
-  // makes it outside the exact-path bracket of the holes.
-  bool preMove = false;
-};
 
 // What happens after the bottom of the hole.
 enum class HoleExit : uint8_t {

@@ -1,4 +1,5 @@
 #include "runtime/cycles/Library.h"
+#include "runtime/cycles/Entry.h"
 #include "runtime/Geometry.h"
 
 #include <algorithm>
@@ -7,26 +8,32 @@
 
 namespace ncc {
 
-namespace {
-
-
-bool fail(std::string &err, std::string msg) {
-  err = std::move(msg);
-  return false;
-}
-
-// Digit n (1 = units) of a Sinumerik mode word (_AMODE, _VARI, _DMODE …).
-int digit(double word, int n) {
+int entry::digit(double word, int n) {
   long v = (long)std::fabs(word);
   for (int i = 1; i < n; ++i) v /= 10;
   return (int)(v % 10);
 }
 
-// The plane of a Sinumerik cycle: _DMODE 1st digit 1/2/3 = G17/G18/G19 inside the cycle.
-int sinPlane(const CycleArgs &a, const CycleContext &ctx) {
+int entry::sinPlane(const CycleArgs &a, const CycleContext &ctx) {
   int p = digit(a.get("_DMODE"), 1);
   return p >= 1 && p <= 3 ? p - 1 : ctx.plane;
 }
+
+bool entry::heiLevels(const CycleArgs &a, HeiLevels &l, std::string &err) {
+  for (const char *k : {"Q200", "Q201", "Q203", "Q206"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  double depth = a.get("Q201"), surface = a.get("Q203");
+  l.dir = depth < 0 ? -1 : 1;
+  l.zsc = surface - l.dir * std::fabs(a.get("Q200"));
+  l.bottom = surface + depth;
+  l.z2 = surface - l.dir * std::max(std::fabs(a.get("Q200")), std::fabs(a.get("Q204")));
+  if (!(a.get("Q206") > 0)) return fail(err, "Q206 (plunging feed) must be greater than 0");
+  return true;
+}
+
+using namespace entry;
+
+namespace {
 
 // The steps of one hole: rapid to the start level above the hole, then the HoleSpec.
 void hole(const HoleSpec &h, int plane, const CycleContext &ctx, std::vector<CycleStep> &out) {
@@ -183,22 +190,8 @@ bool sinCycle86(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
   return true;
 }
 
-// ---- Heidenhain drilling cycles (seed002a 200, 201, 203): Q200 set-up clearance, Q201 depth
-// (its sign is the direction; 0: the cycle does nothing), Q203 surface, Q204 2nd set-up clearance.
-struct HeiLevels {
-  double zsc, bottom, z2, dir;
-};
-bool heiLevels(const CycleArgs &a, HeiLevels &l, std::string &err) {
-  for (const char *k : {"Q200", "Q201", "Q203", "Q206"})
-    if (!a.has(k)) return fail(err, std::string(k) + " is required");
-  double depth = a.get("Q201"), surface = a.get("Q203");
-  l.dir = depth < 0 ? -1 : 1;
-  l.zsc = surface - l.dir * std::fabs(a.get("Q200"));
-  l.bottom = surface + depth;
-  l.z2 = surface - l.dir * std::max(std::fabs(a.get("Q200")), std::fabs(a.get("Q204")));
-  if (!(a.get("Q206") > 0)) return fail(err, "Q206 (plunging feed) must be greater than 0");
-  return true;
-}
+// ---- Heidenhain drilling cycles (seed002a 200, 201, 203): levels as heiLevels (Entry.h); depth
+// 0: the cycle does nothing.
 double heiDwell(const CycleArgs &a, const char *k) { return a.get(k) > 0 ? a.get(k) : -1; }
 
 // The common part of 200 and 203: levels, the plunge feed, infeeds of Q202 counted from the
@@ -404,7 +397,7 @@ bool hei221(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) 
   return true;
 }
 
-const std::vector<CycleDef> kLibrary = {
+const CycleDef kHoleEntries[] = {
     {"sin.CYCLE81", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE", "Sinumerik drilling, centring", sinCycle81, nullptr},
     {"sin.CYCLE82", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE _VARI S_ZA S_FA S_ZD S_FD",
      "Sinumerik drilling, counterboring", sinCycle82, nullptr},
@@ -433,10 +426,23 @@ const std::vector<CycleDef> kLibrary = {
 
 }  // namespace
 
-const std::vector<CycleDef> &cycleLibrary() { return kLibrary; }
+void addHoleEntries(std::vector<CycleDef> &out) {
+  for (const CycleDef &d : kHoleEntries) out.push_back(d);
+}
+
+const std::vector<CycleDef> &cycleLibrary() {
+  static const std::vector<CycleDef> all = [] {
+    std::vector<CycleDef> v;
+    addHoleEntries(v);
+    addClearingEntries(v);
+    addSinClearingEntries(v);
+    return v;
+  }();
+  return all;
+}
 
 const CycleDef *findCycle(std::string_view name) {
-  for (auto &d : kLibrary)
+  for (auto &d : cycleLibrary())
     if (name == d.name) return &d;
   return nullptr;
 }

@@ -34,6 +34,7 @@ struct CycleContext {
   double feed = 0;                  // mm/min (0 = none programmed)
   int spindle = 0;                  // 0 stop, 1 cw, 2 ccw
   double speed = 0;                 // rpm
+  double toolRadius = 0;            // mm, the active tool's (0: no tool or no radius)
 };
 
 struct CycleDef {
@@ -46,6 +47,12 @@ struct CycleDef {
   bool (*positions)(const CycleArgs &args, std::vector<PlanePoint> &out, std::string &err);
 };
 
+// The entries of each file of the library (Library.cpp: holes and patterns, ClearingEntries.cpp:
+// Heidenhain pockets, slots, studs, faces, SinClearingEntries.cpp: Sinumerik pockets and slots);
+// cycleLibrary() is all of them.
+void addHoleEntries(std::vector<CycleDef> &out);
+void addClearingEntries(std::vector<CycleDef> &out);
+void addSinClearingEntries(std::vector<CycleDef> &out);
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 

@@ -2,6 +2,7 @@
 // (LinuxCNC 2.9) runs of the equivalent blocks unless stated otherwise.
 #include "runtime/Cycles.h"
 #include "runtime/Executor.h"
+#include "runtime/cycles/Library.h"
 
 #include <gtest/gtest.h>
 
@@ -307,6 +308,9 @@ std::string steps(const std::vector<CycleStep> &s) {
       std::snprintf(b, sizeof b, "%s%s(%g,%g,%g) ", st.preMove ? "pre" : "", st.kind == CycleStepKind::Rapid ? "R" : "F",
                     st.pos[0], st.pos[1], st.pos[2]);
       break;
+    case CycleStepKind::Arc:
+      std::snprintf(b, sizeof b, "A%s(%g,%g,%g) ", st.ccw ? "+" : "-", st.pos[0], st.pos[1], st.pos[2]);
+      break;
     case CycleStepKind::Dwell: std::snprintf(b, sizeof b, "D%g ", st.seconds); break;
     case CycleStepKind::SpindleStop: std::snprintf(b, sizeof b, "S0 "); break;
     case CycleStepKind::SpindleCW: std::snprintf(b, sizeof b, "CW "); break;
@@ -496,3 +500,53 @@ TEST(Executor, BadNumbersAreDiagnosed) {
 }
 
 }  // namespace
+
+// A library cycle's arcs go out as Motion IR arcs in the work offset: the centre moves with the
+// end points, the turn follows the step, the rate is the step's own.
+TEST(Executor, LibraryCycleArcsInTheWorkOffset) {
+  Machine m;
+  m.workOffsets[0] = {100, 50, 0, 0, 0, 0};
+  ExecRun run(m);
+  ASSERT_TRUE(run({words(CmdKind::SetOffset, {{Word::P, 1}, {Word::R, 5}}, (uint8_t)SetOffsetKind::ToolSet),
+                   words(CmdKind::ToolSelect, {{Word::T, 1}}), words(CmdKind::ToolChange, {}), feed(1000),
+                   move({{Word::X, 0}, {Word::Y, 0}, {Word::Z, 20}})}));
+  CycleArgs a;
+  a.num = {{"Q215", 2}, {"Q223", 30}, {"Q368", 0.5}, {"Q207", 500}, {"Q385", 300}, {"Q201", -5}, {"Q202", 5},
+           {"Q206", 150}, {"Q200", 2}, {"Q203", 0}};
+  ASSERT_TRUE(run.ex.runCycle(*findCycle("hei.252"), a, nullptr, nullptr, {}));
+  std::vector<MotionRecord> arcs;
+  for (auto &r : run.moves())
+    if (r.kind == RecordKind::Arc) arcs.push_back(r);
+  ASSERT_EQ(arcs.size(), 3u);  // onto the wall, the wall, off it
+  EXPECT_NEAR(arcs[1].center[0], 100, 1e-9);
+  EXPECT_NEAR(arcs[1].center[1], 50, 1e-9);
+  expectPos(arcs[1].end, 110, 50, -5);  // the wall path: 15 - 5 from the centre
+  EXPECT_EQ(arcs[1].turns, 1);          // climb with M3: counter-clockwise, a full circle
+  EXPECT_EQ(arcs[1].plane, Plane::XY);
+  EXPECT_DOUBLE_EQ(arcs[1].feed, 300);
+  EXPECT_TRUE(arcs[1].exactStop);
+  EXPECT_NEAR(arcs[0].center[0], 107.5, 1e-9);  // the quarter arc onto the wall
+}
+
+// Under a rotation about the drilling axis (G68 R90 about the origin) the library cycle's arcs
+// turn with their end points and keep their sense.
+TEST(Executor, LibraryCycleArcsUnderARotation) {
+  ExecRun run;
+  MachineCmd rot = words(CmdKind::Frame, {{Word::X, 0}, {Word::Y, 0}, {Word::R, 90}}, (uint8_t)FrameSlot::Rotation);
+  rot.sub2 = (uint8_t)FrameAction::Set;
+  ASSERT_TRUE(run({words(CmdKind::SetOffset, {{Word::P, 1}, {Word::R, 5}}, (uint8_t)SetOffsetKind::ToolSet),
+                   words(CmdKind::ToolSelect, {{Word::T, 1}}), words(CmdKind::ToolChange, {}), feed(1000),
+                   move({{Word::X, 0}, {Word::Y, 0}, {Word::Z, 20}}), rot}));
+  CycleArgs a;
+  a.num = {{"Q215", 2}, {"Q223", 30}, {"Q368", 0.5}, {"Q207", 500}, {"Q201", -5}, {"Q202", 5}, {"Q206", 150},
+           {"Q200", 2}, {"Q203", 0}};
+  ASSERT_TRUE(run.ex.runCycle(*findCycle("hei.252"), a, nullptr, nullptr, {}));
+  std::vector<MotionRecord> arcs;
+  for (auto &r : run.moves())
+    if (r.kind == RecordKind::Arc) arcs.push_back(r);
+  ASSERT_EQ(arcs.size(), 3u);
+  EXPECT_NEAR(arcs[0].center[0], 0, 1e-9);  // the quarter arc's centre (7.5, 0) turned to (0, 7.5)
+  EXPECT_NEAR(arcs[0].center[1], 7.5, 1e-9);
+  expectPos(arcs[1].end, 0, 10, -5);
+  EXPECT_EQ(arcs[1].turns, 1);
+}

@@ -1,6 +1,7 @@
 // ncc cycle: run one cycle of the library (runtime/cycles/Library.h) alone and print its Motion
 // IR, to see what a CYCLE83 or a CYCL DEF 200 with given parameters does before a program uses it.
 //   ncc cycle CYCLE [NAME=VALUE…] [PATTERN [NAME=VALUE…]] [--at X,Y,Z] [--feed F] [--speed S]
+//             [--tool-radius R] [--ccw]
 #include "runtime/Executor.h"
 #include "utils/ncc/Driver.h"
 
@@ -28,8 +29,8 @@ int cmdCycle(int argc, char **argv) {
   Session s;
   std::vector<std::string> tokens;
   std::string at, out, plane = "G17";
-  double feed = 0, speed = 0;
-  bool list = false;
+  double feed = 0, speed = 0, toolRadius = 0;
+  bool list = false, ccw = false;
   po::options_description desc("ncc cycle options");
   desc.add_options()
       ("tokens", po::value(&tokens)->multitoken(), "CYCLE [NAME=VALUE…] [PATTERN [NAME=VALUE…]]")
@@ -38,6 +39,8 @@ int cmdCycle(int argc, char **argv) {
       ("feed", po::value(&feed), "modal feed before the cycle, mm/min")
       ("speed", po::value(&speed), "spindle speed before the cycle, rpm (the spindle turns clockwise)")
       ("plane", po::value(&plane), "G17, G18 or G19")
+      ("ccw", po::bool_switch(&ccw), "with --speed: the spindle turns counter-clockwise (M4)")
+      ("tool-radius", po::value(&toolRadius), "radius of the tool in the spindle, mm (tool 1; pockets, slots, studs)")
       ("output,o", po::value(&out), "output file (default: standard output)");
   addCommonOptions(desc, s.opts);
   po::positional_options_description pos;
@@ -92,6 +95,15 @@ int cmdCycle(int argc, char **argv) {
     return kExitUsage;
   }
   if (!s.setUp()) return kExitErrors;
+  if (toolRadius < 0) {
+    std::fprintf(stderr, "ncc: error: --tool-radius must not be negative\n");
+    return kExitUsage;
+  }
+  if (toolRadius > 0) {
+    ToolEdge edge;
+    edge.radius = toolRadius;
+    s.machine.addTool(1, edge);
+  }
   std::string text;
   MotionTextWriter sink(text);  // the one Motion IR printer
   Executor exec(s.machine, sink, s.diags);
@@ -100,6 +112,12 @@ int cmdCycle(int argc, char **argv) {
   c.kind = CmdKind::Mode;
   c.modes[c.nmodes++] = pl;
   bool ok = exec.exec(c);
+  if (toolRadius > 0) {  // tool 1 with that radius, changed into the spindle
+    c = {}, c.kind = CmdKind::ToolSelect, c.set(Word::T, 1);
+    ok = ok && exec.exec(c);
+    c = {}, c.kind = CmdKind::ToolChange;
+    ok = ok && exec.exec(c);
+  }
   if (feed > 0) {
     c = {}, c.kind = CmdKind::Feed, c.set(Word::F, feed);
     ok = ok && exec.exec(c);
@@ -107,7 +125,7 @@ int cmdCycle(int argc, char **argv) {
   if (speed > 0) {
     c = {}, c.kind = CmdKind::Speed, c.set(Word::S, speed);
     ok = ok && exec.exec(c);
-    c = {}, c.kind = CmdKind::Spindle, c.sub = 1;
+    c = {}, c.kind = CmdKind::Spindle, c.sub = ccw ? 2 : 1;
     ok = ok && exec.exec(c);
   }
   c = {}, c.kind = CmdKind::Move;

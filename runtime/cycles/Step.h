@@ -1,0 +1,29 @@
+// The elementary steps every library cycle expands into (program coordinates, mm); the executor
+// turns them into Motion IR records (Executor::Impl::runSteps, runtime/ExecutorCycle.cpp).
+#pragma once
+#include <array>
+#include <cstdint>
+
+namespace ncc {
+
+enum class CycleStepKind : uint8_t { Rapid, Feed, Arc, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient };
+
+struct CycleStep {
+  CycleStepKind kind = CycleStepKind::Rapid;
+  std::array<double, 3> pos{};  // X Y Z target of Rapid/Feed/Arc
+  double seconds = 0;           // Dwell
+  double feed = 0;              // Feed, Arc: mm/min, 0 = the programmed feed
+  double angle = 0;             // SpindleOrient: degrees (the shortest way)
+  // Arc: an exact circular move in the active plane about `centre` (its drilling-axis coordinate
+  // is ignored), counter-clockwise about the plane's normal when `ccw`; the drilling-axis
+  // coordinate may change on the way (a helix). An end equal to the start is a full circle;
+  // `turns` > 1 adds whole turns (helical plunges).
+  std::array<double, 3> centre{};
+  bool ccw = true;
+  int turns = 1;
+  // The move to the R level made before the holes when the initial level is below R: rs274
+  // makes it outside the exact-path bracket of the holes.
+  bool preMove = false;
+};
+
+}  // namespace ncc
