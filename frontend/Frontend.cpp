@@ -64,6 +64,7 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.axesScaleEnable = o.axesScaleEnable;
   io.scaleWeighting = o.scaleWeighting;
   io.startup = o.startup;
+  io.lathe = o.lathe;
   return io;
 }
 

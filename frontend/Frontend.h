@@ -17,6 +17,7 @@ struct FrontendOptions {
   bool axesScaleEnable = false;            // ISO G51: per-axis factors I J K (else P), machine [controller]
   std::vector<ModeValue> startup;         // the controller's start-up modes (units, feed mode, motion)
   double scaleWeighting = 0.001;           // ISO G51: unit of the factors
+  bool lathe = false;                      // machine [controller] kind = "lathe"
 };
 
 // What a file holds: a dialect, or textual NC IR.

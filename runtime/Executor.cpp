@@ -38,7 +38,7 @@ AxisVec Executor::Impl::frameIn(const AxisVec &m) const {
   if (!linearFrame()) return m;
   AxisVec f;
   const AxisVec &o = g5xActive;
-  for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - (i == 2 ? toolLength : 0.0);
+  for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - toolOffset(i);
   if (rotated()) rotateXY(f, -rotation());
   if (!pf.linear) return f;
   for (int i = 0; i < kAxes; ++i) f[i] -= g92[i];
@@ -54,7 +54,7 @@ AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
   }
   if (rotated()) rotateXY(m, rotation());
   const AxisVec &o = g5xActive;
-  for (int i = 0; i < kAxes; ++i) m[i] += o[i] + (i == 2 ? toolLength : 0.0);
+  for (int i = 0; i < kAxes; ++i) m[i] += o[i] + toolOffset(i);
   return m;
 }
 
@@ -64,7 +64,7 @@ void Executor::Impl::noteFrame(const char *what) {
     p[0] = x, p[1] = y, p[2] = z;
     for (int i = 0; i < 3; ++i) p[i] += frameOffset(i);
     AxisVec m = frameOut(p);
-    m[2] -= toolLength;
+    for (int i = 0; i < 3; ++i) m[i] -= toolOffset(i);
     return m;
   };
   AxisVec o = toMachine(0, 0, 0), ex = toMachine(1, 0, 0), ey = toMachine(0, 1, 0), ez = toMachine(0, 0, 1);
@@ -216,9 +216,12 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   if (!t) return false;
   int h = (int)hv;
   toolLength = h == 0 ? 0 : t->length;
+  // A lathe's offset (T0101) also shifts X by the edge's X offset.
+  toolOffsetX = h == 0 || !machine.controller.lathe() ? 0 : t->xOffset;
   st.toolLengthH = h;
   MotionRecord r = record(RecordKind::ToolLength);
   r.value = toolLength;
+  r.value2 = toolOffsetX;
   r.ivalue = h;
   emit(r);
   return true;
@@ -257,7 +260,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i)) {
         pf.local[i] = 0;
-        double before = rotated() ? f[i] : st.position[i] - g5xActive[i] - (i == 2 ? toolLength : 0.0);
+        double before = rotated() ? f[i] : st.position[i] - g5xActive[i] - toolOffset(i);
         g92[i] = before - c.get((Word)i) * axisScale(i);
       }
     g92Saved = g92;
@@ -285,18 +288,18 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   if (rot == 0) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i))
-        sys[i] = st.position[i] - g92[i] - pf.local[i] - (i == 2 ? toolLength : 0.0) - c.get((Word)i) * axisScale(i);
+        sys[i] = st.position[i] - g92[i] - pf.local[i] - toolOffset(i) - c.get((Word)i) * axisScale(i);
     if (n == st.workOffset) applyWorkOffset();
     return true;
   }
   AxisVec rel;  // machine position less tool length and the system's origin
-  for (int i = 0; i < kAxes; ++i) rel[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - sys[i];
+  for (int i = 0; i < kAxes; ++i) rel[i] = st.position[i] - toolOffset(i) - sys[i];
   AxisVec q = rel;
   rotateXY(q, -rot);  // program + G92 in system n
   for (int i = 0; i < kAxes; ++i)
     if (c.has((Word)i)) q[i] = c.get((Word)i) * axisScale(i) + g92[i] + pf.local[i];
   rotateXY(q, rot);
-  for (int i = 0; i < kAxes; ++i) sys[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - q[i];
+  for (int i = 0; i < kAxes; ++i) sys[i] = st.position[i] - toolOffset(i) - q[i];
   if (n == st.workOffset) applyWorkOffset();
   return true;
 }

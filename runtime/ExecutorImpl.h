@@ -70,6 +70,8 @@ struct Executor::Impl {
   bool g92On = false;  // G92 offsets applied (rs274 #5210)
   AxisVec home[2];     // G28 / G30 reference points (machine), G28.1 / G30.1 store them
   double toolLength = 0;
+  double toolOffsetX = 0;  // a lathe tool's X offset (mm, machine X), with toolLength on Z
+  double toolOffset(int axis) const { return axis == 2 ? toolLength : axis == 0 ? toolOffsetX : 0.0; }
   double feedMM = 0;
   bool feedInBlock = false;  // an F word in the current block (inverse time needs one per move)  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)
 
@@ -103,9 +105,13 @@ struct Executor::Impl {
 
   // --- helpers (Executor.cpp) ---
   double scale() const { return st.units == ModeValue::Inch ? 25.4 : 1.0; }
-  double axisScale(int axis) const { return axis < 3 ? scale() : 1.0; }
+  // mm per unit of an axis word; a diameter-programmed X (machine [controller]) is halved here,
+  // so every dialect, offset word and position read-back shares it (arc I/K and R are radii).
+  double axisScale(int axis) const {
+    return axis == 0 && machine.controller.diameterProgramming ? scale() * 0.5 : axis < 3 ? scale() : 1.0;
+  }
   double offset(int axis) const {
-    return g5xActive[axis] + g92[axis] + pf.local[axis] + (axis == 2 ? toolLength : 0.0);
+    return g5xActive[axis] + g92[axis] + pf.local[axis] + toolOffset(axis);
   }
   double rotation() const { return g5xRotActive; }
   // The "offset frame": program coordinates plus G92. Without rotation it is the machine frame

@@ -138,6 +138,50 @@ const GCodeInfo *findRs274GCode(int32_t code10) {
   return nullptr;
 }
 
+// The turning codes of G-code system A (808D Table 1-2, the T column) whose meaning differs from
+// the milling table above. Sorted by code10.
+static const GCodeInfo kTurningA[] = {
+    UNSUP(410, CutterComp, "tool nose radius compensation left"),
+    UNSUP(420, CutterComp, "tool nose radius compensation right"),
+    SPECIAL(500, SetOffset, NonModal, 1, "coordinate system setting"),
+    UNSUP(502, NonModal, "polygon turning off"),
+    SPECIAL(503, SetOffset, NonModal, 2, "work coordinate system reset"),
+    UNSUP(512, NonModal, "polygon turning"),
+    UNSUP(680, NonModal, "turning coordinate rotation / double turret"),
+    NOOP(690, NonModal, "turning coordinate rotation off"),
+    SPECIAL(700, TurnCycle, NonModal, 70, "finishing cycle"),
+    SPECIAL(710, TurnCycle, NonModal, 71, "stock removal in turning"),
+    SPECIAL(720, TurnCycle, NonModal, 72, "stock removal in facing"),
+    SPECIAL(730, TurnCycle, NonModal, 73, "pattern repeating cycle"),
+    UNSUP(740, NonModal, "peck drilling / grooving along Z"),
+    UNSUP(750, NonModal, "peck grooving along X"),
+    UNSUP(760, NonModal, "multiple threading cycle"),
+    UNSUP(830, Motion, "face deep-hole drilling cycle (C axis)"),
+    UNSUP(840, Motion, "face tapping cycle (C axis)"),
+    UNSUP(850, Motion, "face boring cycle (C axis)"),
+    UNSUP(870, Motion, "side deep-hole drilling cycle (C axis)"),
+    UNSUP(880, Motion, "side tapping cycle (C axis)"),
+    UNSUP(890, Motion, "side boring cycle (C axis)"),
+    UNSUP(900, Motion, "longitudinal turning cycle"),
+    UNSUP(920, Motion, "thread cutting cycle"),
+    UNSUP(940, Motion, "face turning cycle"),
+    MODE(980, FeedMode, PerMinute, "feed per minute"),
+    MODE(990, FeedMode, PerRev, "feed per revolution"),
+};
+// Milling-table codes a system-A lathe has with the same meaning (Table 1-2).
+static const int32_t kTurningShared[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 121, 131, 170, 180,
+                                         190, 200, 210, 270, 280, 300, 301, 310, 320, 340, 400, 520, 530,
+                                         540, 550, 560, 570, 580, 590, 600, 650, 660, 670, 800, 960, 970,
+                                         2900, 2910};
+
+const GCodeInfo *findTurningGCode(int32_t code10) {
+  for (auto &g : kTurningA)
+    if (g.code10 == code10) return &g;
+  for (int32_t c : kTurningShared)
+    if (c == code10) return findGCode(code10);
+  return nullptr;
+}
+
 const GCodeInfo *findGCode(int32_t code10) {
   size_t lo = 0, hi = sizeof(kGCodes) / sizeof(kGCodes[0]);
   while (lo < hi) {

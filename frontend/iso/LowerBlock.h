@@ -162,6 +162,8 @@ struct BlockLowerer::Block {
                                            return w.letter == 'G' && !w.expr && w.value == 66;
                                          }) ? "G66" : "G65"; }
 
+  bool latheTool();                 // T0101 on a lathe
+  bool latheAxisWords(Op &op);      // U W on a lathe (system A)
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level
   bool cornerTaken = false;  // a ,C / ,R went to the move

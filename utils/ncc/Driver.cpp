@@ -92,6 +92,7 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.axesScaleEnable = machine.controller.axesScaleEnable;
   fo.scaleWeighting = machine.controller.scaleWeighting;
   fo.startup = machine.controller.startup;
+  fo.lathe = machine.controller.lathe();
   for (unsigned l : opts.blockDelete)
     if (l <= 9) fo.blockDeleteMask |= 1u << l;
   fo.searchDirs.push_back(std::filesystem::path(sm.name(file)).parent_path().string());
