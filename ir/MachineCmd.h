@@ -53,6 +53,7 @@ enum class CmdKind : uint8_t {
   Stop,         // sub: StopKind
   Aux,          // w[P] the M number (or other aux value); sub: letter ('M', 'B', 'H')
   Frame,        // sub: FrameSlot; sub2: FrameAction | FrameFlag bits; values in mask words
+  Contour,      // sub: ContourAction; sub2: ContourUse; the consumer's parameters in U W R
   Count
 };
 
@@ -77,6 +78,13 @@ enum class SetOffsetKind : uint8_t {
 enum class FrameSlot : uint8_t { Local, Rotation, Scale, Mirror, Count };
 enum class FrameAction : uint8_t { Cancel, Set };
 constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
+
+// Contour capture (runtime/ExecutorContour.cpp): `Begin` makes the following motion a contour
+// (records go to the capture, not the sinks), `End` hands it to a consumer (`ContourUse`) with
+// its parameters; `Data` sets a consumer's modal data (the ISO G71/G72 `U R` and G73 `U W R`
+// first blocks).
+enum class ContourAction : uint8_t { Data, Begin, End };
+enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat };
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a
 // key given twice), so every key of the op fits.

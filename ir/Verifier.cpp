@@ -38,6 +38,8 @@ const EnumRule kEnumRules[] = {
     {OpKind::Frame, "slot", "local rotation scale mirror"},
     {OpKind::Frame, "action", "set cancel"},
     {OpKind::Frame, "form", "plane axis"},
+    {OpKind::Contour, "action", "data begin end"},
+    {OpKind::Contour, "use", "finish rough_z rough_x pattern"},
     {OpKind::Goto, "dir", "forward backward any"},
     {OpKind::Call, "frame", "new shared"},
     {OpKind::Declare, "type", "int real bool char string symbol axis frame"},

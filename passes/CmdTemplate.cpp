@@ -14,6 +14,7 @@ bool isMachineOp(OpKind k) {
   case OpKind::Spindle: case OpKind::Coolant: case OpKind::Dwell: case OpKind::Move:
   case OpKind::Home: case OpKind::MachineMove: case OpKind::ToolLength: case OpKind::CutterComp:
   case OpKind::WorkOffset: case OpKind::SetOffset: case OpKind::Stop: case OpKind::Aux: case OpKind::Frame:
+  case OpKind::Contour:
     return true;
   default:
     return false;
@@ -59,6 +60,13 @@ static const SymbolCode kSymbols[] = {
     {OpKind::Frame, "action", "set", (uint8_t)FrameAction::Set},
     {OpKind::Frame, "form", "plane", 0},
     {OpKind::Frame, "form", "axis", kFrameFormAxis},
+    {OpKind::Contour, "action", "data", (uint8_t)ContourAction::Data},
+    {OpKind::Contour, "action", "begin", (uint8_t)ContourAction::Begin},
+    {OpKind::Contour, "action", "end", (uint8_t)ContourAction::End},
+    {OpKind::Contour, "use", "finish", (uint8_t)ContourUse::Finish},
+    {OpKind::Contour, "use", "rough_z", (uint8_t)ContourUse::RoughAlongZ},
+    {OpKind::Contour, "use", "rough_x", (uint8_t)ContourUse::RoughAlongX},
+    {OpKind::Contour, "use", "pattern", (uint8_t)ContourUse::PatternRepeat},
     {OpKind::Message, "kind", "msg", (uint8_t)MessageKind::Msg},
     {OpKind::Message, "kind", "debug", (uint8_t)MessageKind::Debug},
     {OpKind::Message, "kind", "print", (uint8_t)MessageKind::Print},
@@ -115,6 +123,7 @@ static CmdKind cmdKindOf(OpKind k) {
   case OpKind::Stop: return CmdKind::Stop;
   case OpKind::Aux: return CmdKind::Aux;
   case OpKind::Frame: return CmdKind::Frame;
+  case OpKind::Contour: return CmdKind::Contour;
   default: return CmdKind::Count;
   }
 }
@@ -199,6 +208,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     c.sub2 = (uint16_t)(action | form);
     break;
   }
+  case OpKind::Contour:
+    if (!symbolArg("action", c.sub) || !symbolArg("use", c.sub2)) return false;
+    break;
   case OpKind::WorkOffset: {
     double v = 1;
     if (!constNumber(op.get("index"), v) || v < 1 || v > 9) {
@@ -256,7 +268,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   // Scalar words: named keys per the table, axis/parameter letters for motion ops.
   bool letters = op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame;
+                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour;
   for (auto &a : op.args) {
     Word w;
     if (letters && a.key.size() == 1 && wordFromLetter(a.key[0], w)) {
@@ -275,7 +287,7 @@ Op cmdToOp(const MachineCmd &c) {
                                  OpKind::Spindle, OpKind::Coolant, OpKind::Dwell, OpKind::Move,
                                  OpKind::Home, OpKind::MachineMove, OpKind::ToolLength, OpKind::CutterComp,
                                  OpKind::WorkOffset, OpKind::SetOffset, OpKind::Stop, OpKind::Aux,
-                                 OpKind::Frame};
+                                 OpKind::Frame, OpKind::Contour};
   static_assert(sizeof(kinds) / sizeof(kinds[0]) == (size_t)CmdKind::Count);
   Op op(kinds[(unsigned)c.kind], c.loc);
   auto real = [](double v) { return Expr::number(v, Type::Real); };
@@ -307,6 +319,10 @@ Op cmdToOp(const MachineCmd &c) {
     if (c.sub == (uint8_t)FrameSlot::Rotation && (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set)
       op.set("form", Expr::symbol(symbolFor(op.kind, "form", c.sub2 & kFrameFormAxis)));
     break;
+  case CmdKind::Contour:
+    op.set("action", Expr::symbol(symbolFor(op.kind, "action", c.sub)));
+    op.set("use", Expr::symbol(symbolFor(op.kind, "use", c.sub2)));
+    break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;
   case CmdKind::Home: op.set("ref", Expr::number(c.sub, Type::Int)); break;
@@ -334,7 +350,7 @@ Op cmdToOp(const MachineCmd &c) {
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }
   if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-      op.kind == OpKind::SetOffset || op.kind == OpKind::Frame)
+      op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour)
     for (int i = 0; i < kWords; ++i) {
       Word w = (Word)i;
       if (!c.has(w)) continue;

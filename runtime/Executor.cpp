@@ -637,6 +637,7 @@ bool Executor::exec(const MachineCmd &c) {
   }
   case CmdKind::Move: return x.execMove(c);
   case CmdKind::Home: x.curBlockFrame = true; return x.execHome(c);
+  case CmdKind::Contour: return x.execContour(c);
   case CmdKind::MachineMove: return x.execMachineMove(c);
   case CmdKind::ToolLength: return x.execToolLength(c);
   case CmdKind::CutterComp: return x.execCutterComp(c);

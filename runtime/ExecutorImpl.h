@@ -29,11 +29,25 @@ private:
   MotionSink &out_;
 };
 
+// Where the executor's records go: the sinks, or a contour capture (ExecutorContour.cpp) while
+// one is active, so every path (moves, corners, compensation) is captured alike.
+class RouteSink : public MotionSink {
+public:
+  explicit RouteSink(MotionSink &out) : out(out) {}
+  MotionSink &out;
+  std::vector<MotionRecord> *capture = nullptr;
+  void record(const MotionRecord &r) override {
+    if (capture) capture->push_back(r);
+    else out.record(r);
+  }
+};
+
 // The [controller] reset list as bits (Executor.cpp: kResetGroups).
 uint32_t resetGroupMask(const std::vector<std::string> &groups);
 
 struct Executor::Impl {
-  Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), compOut(s), comp(compOut) {
+  Impl(const Machine &m, MotionSink &s, Diagnostics &d)
+      : route(s), machine(m), sink(route), diags(d), compOut(route), comp(compOut) {
     g5x = m.workOffsets;
     offsetWrite = m.controller.offsetWritePolicy();
     paramUnit = m.controller.parameterUnits == "inch" ? 25.4 : 1.0;
@@ -44,6 +58,7 @@ struct Executor::Impl {
     axesDescribed = m.axes[0].present || m.axes[1].present || m.axes[2].present;
     resetMask = resetGroupMask(m.controller.reset);
   }
+  RouteSink route;  // `sink` is this: the sinks, or a contour capture
   uint32_t resetMask = 0;  // what M2/M30 reset (the machine's [controller] reset list)
   bool axesDescribed = true;
   const Machine &machine;
@@ -247,6 +262,26 @@ struct Executor::Impl {
     ModeValue units = ModeValue::MM;
   } nurbs;
   bool cycle(const MachineCmd &c);
+  // --- contour capture (ExecutorContour.cpp) ---
+  bool execContour(const MachineCmd &c);
+  struct Capture {
+    bool active = false;
+    SourceLoc loc;
+    std::vector<MotionRecord> records;
+    // What the captured blocks may change and a roughing consumer puts back.
+    ModalState st;
+    double feedMM = 0, toolLength = 0, toolOffsetX = 0;
+    LastPath lastPath;
+    int64_t blockNumber = -1;
+    SourceLoc blockLoc;
+  } capture;
+  // Modal consumer data (ISO G71/G72 U R: layer depth and retract; G73 U W R: relief, count), mm.
+  double roughDepth = 0, roughRetract = 0;
+  bool roughSet = false;
+  double patternReliefX = 0, patternReliefZ = 0, patternCount = 0;
+  bool patternSet = false;
+  bool contourData(const MachineCmd &c);
+  bool contourConsume(const MachineCmd &c);
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
   bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.

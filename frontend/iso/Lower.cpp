@@ -606,7 +606,7 @@ bool BlockLowerer::Block::finish() {
 
 bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   Block blk(*this, b, out);
-  return blk.classify() && blk.setup() && blk.coordinateOps() && blk.motion() && blk.stops() &&
+  return blk.classify() && blk.setup() && blk.coordinateOps() && blk.turnCycle() && blk.motion() && blk.stops() &&
          blk.callsAndReturn() && blk.finish();
 }
 

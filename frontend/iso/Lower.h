@@ -13,6 +13,10 @@ struct CallRef {
   SourceLoc loc;
 };
 
+// Puts the labels the contour cycles (G70-G73, LowerTurning.cpp) of `f` name and checks the
+// contour blocks; false when an error was reported.
+bool placeContourLabels(ir::Function &f, Diagnostics &diags);
+
 class BlockLowerer {
 public:
   BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags);
