@@ -69,7 +69,10 @@ enum class MessageKind : uint8_t { Msg, Debug, Print, Abort };
 // in the current system / in G59.3); ToolLength… the Fanuc/808D G10 L10-L13 (one value, R).
 enum class SetOffsetKind : uint8_t {
   G92, G92Cancel, G10L2, G10L20, G92Suspend, G92Restore, StoreHome1, StoreHome2, G52,
-  ToolSet, ToolTouch, ToolTouchG593, ToolLength, ToolLengthWear, ToolRadius, ToolRadiusWear
+  ToolSet, ToolTouch, ToolTouchG593, ToolLength, ToolLengthWear, ToolRadius, ToolRadiusWear,
+  // The 808D turning G10 P X(U) Z(W) R(C): P1-P99 the wear, P101-P1600 the geometry of offset
+  // P (- 100); X Z R absolute, U W C added (runtime/ExecutorState.cpp).
+  LatheTool
 };
 // The programmable frame (runtime/Frame.h): its slots, what a `frame` op does to one, and how a
 // rotation reads its words. form=plane is the ISO 2-D G68 (about the active plane's normal axis,

@@ -144,7 +144,7 @@ static const OpInfo kOps[] = {
     {OpKind::ToolLength, "tool_length", 0, 0, "", "h"},
     {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d d_default"},
     {OpKind::WorkOffset, "work_offset", 0, 0, "index", ""},
-    {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C R"},
+    {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C R U W"},
     {OpKind::Stop, "stop", 0, 0, "kind", ""},
     {OpKind::Aux, "aux", 0, 0, "", "m b h"},
     {OpKind::Frame, "frame", 0, 0, "slot action", "form X Y Z A B C I J K R"},

@@ -34,7 +34,7 @@ const EnumRule kEnumRules[] = {
     {OpKind::Stop, "kind", "program optional end end_rewind"},
     {OpKind::SetOffset, "kind",
      "g92 g92_1 g92_2 g92_3 g10l2 g10l20 g28_1 g30_1 g52 tool_set tool_touch tool_touch_g593 tool_length tool_length_wear "
-     "tool_radius tool_radius_wear"},
+     "tool_radius tool_radius_wear lathe_tool"},
     {OpKind::Frame, "slot", "local rotation scale mirror"},
     {OpKind::Frame, "action", "set cancel"},
     {OpKind::Frame, "form", "plane axis"},

@@ -52,6 +52,7 @@ static const SymbolCode kSymbols[] = {
     {OpKind::SetOffset, "kind", "tool_length_wear", (uint8_t)SetOffsetKind::ToolLengthWear},
     {OpKind::SetOffset, "kind", "tool_radius", (uint8_t)SetOffsetKind::ToolRadius},
     {OpKind::SetOffset, "kind", "tool_radius_wear", (uint8_t)SetOffsetKind::ToolRadiusWear},
+    {OpKind::SetOffset, "kind", "lathe_tool", (uint8_t)SetOffsetKind::LatheTool},
     {OpKind::Frame, "slot", "local", (uint8_t)FrameSlot::Local},
     {OpKind::Frame, "slot", "rotation", (uint8_t)FrameSlot::Rotation},
     {OpKind::Frame, "slot", "scale", (uint8_t)FrameSlot::Scale},

@@ -163,6 +163,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
                      "spline-invalid");
       if (v == ModeValue::NurbsEnd && !nurbsEnd()) return false;
       if (v == ModeValue::SplineCubic || v == ModeValue::SplineQuadratic) splineReturn = st.motion;
+      if (v != st.motion) turnSet = false;  // a new G90/G94 run takes its words afresh
       st.motion = v;
       if (!isCycleMotion(v)) {
         // Leaving the cycles: the next cycle takes a new initial level.
@@ -531,7 +532,9 @@ bool Executor::exec(const MachineCmd &c) {
       return x.error(std::string("invalid number in ") + kWordLetters[i] + " word", "bad-number");
   }
   bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
-  if ((motion || c.kind == CmdKind::SetOffset) && !x.checkAxisWords(c)) return false;
+  // (The lathe's G10 P X Z R U W C words are tool offsets, not axes.)
+  bool axisWords = motion || (c.kind == CmdKind::SetOffset && c.sub != (uint16_t)SetOffsetKind::LatheTool);
+  if (axisWords && !x.checkAxisWords(c)) return false;
   if (c.has(Word::PolarR) || c.has(Word::PolarA)) {
     for (Word w : {Word::X, Word::Y})  // rs274's messages
       if (c.has(w))

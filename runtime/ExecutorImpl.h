@@ -209,6 +209,7 @@ struct Executor::Impl {
   std::map<int, EditedTool> toolEdits;
   ToolEdge edgeOf(int n) const;
   bool execToolOffset(const MachineCmd &c);
+  bool latheToolOffset(const MachineCmd &c);  // the 808D turning G10 P X Z R
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.
   bool checkAxisWords(const MachineCmd &c);
   MotionRecord pathModeRecord() const;
@@ -262,6 +263,13 @@ struct Executor::Impl {
     ModeValue units = ModeValue::MM;
   } nurbs;
   bool cycle(const MachineCmd &c);
+  // --- lathe single cycles G90/G94 (ExecutorTurning.cpp) ---
+  bool turnCycle(const MachineCmd &c);
+  // The end point and taper of the last cycle of the mode (a repeat block gives only what
+  // changes); reset when the mode is entered.
+  bool turnSet = false;
+  AxisVec turnEnd{};
+  double turnTaper = 0;
   // --- contour capture (ExecutorContour.cpp) ---
   bool execContour(const MachineCmd &c);
   struct Capture {

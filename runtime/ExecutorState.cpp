@@ -37,8 +37,39 @@ ToolEdge Executor::Impl::edgeOf(int n) const {
   return e != t->second.edges.end() ? e->second : t->second.edges.begin()->second;
 }
 
+// The 808D turning form (SetOffsetKind::LatheTool): P1-P99 the wear, P101-P1600 the geometry of
+// offset P (- 100) (MD20734 bit 1 = 0; the manual's OCR does not say which range is which, this
+// is the Fanuc order); X (a diameter when X is) and Z the X and Z offsets, R the nose radius; U W
+// C add to them. A change applies at the next T word that selects the offset.
+bool Executor::Impl::latheToolOffset(const MachineCmd &c) {
+  double p = c.get(Word::P);
+  if (!(p >= 1 && p <= 1600 && p != 100 && p == std::floor(p)))
+    return error("G10 P must be 1-99 (wear) or 101-1600 (geometry: 100 + the offset number)", "bad-offset-index");
+  const bool geometry = p > 100;
+  const int n = (int)p - (geometry ? 100 : 0);
+  if (!tool(n, "P")) return false;  // existing offsets only (808D: none can be created)
+  ToolEdge e = edgeOf(n);
+  struct Field {
+    Word set, add;
+    double ToolEdge::*geometry, ToolEdge::*wear;
+    double unit;
+  };
+  const Field kFields[] = {{Word::X, Word::U, &ToolEdge::xOffset, &ToolEdge::xWear, axisScale(0)},
+                           {Word::Z, Word::W, &ToolEdge::length, &ToolEdge::lengthWear, scale()},
+                           {Word::R, Word::C, &ToolEdge::radius, &ToolEdge::radiusWear, scale()}};
+  for (auto &f : kFields) {
+    double &v = e.*(geometry ? f.geometry : f.wear);
+    if (c.has(f.set)) v = c.get(f.set) * f.unit;
+    if (c.has(f.add)) v += c.get(f.add) * f.unit;
+  }
+  if (e.radius + e.radiusWear < 0) return error("tool radius (geometry + wear) would be negative", "bad-number");
+  toolEdits[n] = {e, ToolData{e.length + e.lengthWear, e.radius + e.radiusWear, e.xOffset + e.xWear}};
+  return true;
+}
+
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
+  if (kind == SetOffsetKind::LatheTool) return latheToolOffset(c);
   if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
   if (!tool(c.get(Word::P), "P")) return false;  // existing numbers only (808D: none can be created)
   int n = (int)c.get(Word::P);
@@ -72,7 +103,7 @@ bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   }
   }
   if (e.radius + e.radiusWear < 0) return error("tool radius (geometry + wear) would be negative", "bad-number");
-  toolEdits[n] = {e, ToolData{e.length + e.lengthWear, e.radius + e.radiusWear}};
+  toolEdits[n] = {e, ToolData{e.length + e.lengthWear, e.radius + e.radiusWear, e.xOffset + e.xWear}};
   return true;
 }
 

@@ -162,9 +162,9 @@ static const GCodeInfo kTurningA[] = {
     UNSUP(870, Motion, "side deep-hole drilling cycle (C axis)"),
     UNSUP(880, Motion, "side tapping cycle (C axis)"),
     UNSUP(890, Motion, "side boring cycle (C axis)"),
-    UNSUP(900, Motion, "longitudinal turning cycle"),
+    MODE(900, Motion, TurnAlongZ, "longitudinal turning cycle"),
     UNSUP(920, Motion, "thread cutting cycle"),
-    UNSUP(940, Motion, "face turning cycle"),
+    MODE(940, Motion, TurnAlongX, "face turning cycle"),
     MODE(980, FeedMode, PerMinute, "feed per minute"),
     MODE(990, FeedMode, PerRev, "feed per revolution"),
 };

@@ -420,7 +420,7 @@ bool BlockLowerer::Block::motion() {
       if (bw.has('^')) add(op, "polar_a", take('^', Scale::None));
       // Arcs read I J K R; cycles read R (the clearance plane) only; G5/G5.1 I J (the first
       // control point, relative to the start).
-      for (char c : std::string_view(arc ? "IJKR" : cycle ? "R" : bezier ? "IJ" : "")) {
+      for (char c : std::string_view(arc ? "IJKR" : cycle || isTurnCycleMotion(m) ? "R" : bezier ? "IJ" : "")) {
         if (!bw.has(c)) continue;
         add(op, c, take(c, Scale::Linear));
       }

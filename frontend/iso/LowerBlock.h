@@ -163,6 +163,7 @@ struct BlockLowerer::Block {
                                          }) ? "G66" : "G65"; }
 
   bool latheTool();                 // T0101 on a lathe
+  bool latheToolOffset(Op &op, SourceLoc loc);  // G10 P X Z R on a lathe (LowerFrames.cpp)
   bool latheAxisWords(Op &op);      // U W on a lathe (system A)
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level

@@ -6,9 +6,11 @@ G32 Z-10. F1.
 G43 H1
 G91 X1.
 T#1
-G90 X10. Z-20. F0.2
+G92 X10. Z-20. F2.
 G76 X1.
 G96 S100
+G10 P1 X1. Q3
+G10 P1 Z1. W2.
 M30
 %
 ; FEATURES: ISO-MOT-12
@@ -21,6 +23,8 @@ M30
 ; CHECK: 6:1: error: G43 is not a turning G code (808D G-code system A) [unknown-code]
 ; CHECK: 7:1: error: G91 is not a turning G code (808D G-code system A) [unknown-code]
 ; CHECK: 8:1: error: a lathe T word is a constant tool and offset number T<tt><oo> (T0101) [bad-number]
-; CHECK: 9:1: error: G90 (longitudinal turning cycle) is not supported [unsupported-code]
+; CHECK: 9:1: error: G92 (thread cutting cycle) is not supported [unsupported-code]
 ; CHECK: 10:1: error: G76 (multiple threading cycle) is not supported [unsupported-code]
 ; CHECK: 11:1: error: G96 (constant surface speed) is not supported [unsupported-code]
+; CHECK: 12:12: error: G10 Q (the imaginary tool tip) is not kept: ncc has no tool nose radius compensation [unsupported-code]
+; CHECK: 13:12: error: G10: Z and W in one block (W adds to the offset Z sets) [duplicate-word]

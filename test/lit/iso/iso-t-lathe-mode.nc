@@ -50,3 +50,6 @@ M30
 ; RUN: %ncc compile %s --machine=%srcroot/examples/machines/lathe.toml --emit=motion -o %t.motion
 ; RUN: %ncc compile %t.motion --emit=motion | FileCheck %s --check-prefix=BACK
 ; BACK: tool_length 61.98 H2 X12.01 @2:1
+; The emitters write milling programs with radius X: translating for a lathe is an error.
+; RUN: not %ncc translate %s --machine=%srcroot/examples/machines/lathe.toml --to=iso 2>&1 | FileCheck %s --check-prefix=TRANSLATE
+; TRANSLATE: error: ncc translate: the emitters do not write lathe programs (machine kind = "lathe") yet
