@@ -726,6 +726,11 @@ bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
   if (ranToEnd) x.cornerFlush("no move follows");
   x.comp.stop();
+  if (x.capture.active) {  // its records never reached the sinks
+    x.route.capture = nullptr;
+    x.diags.error(x.capture.loc, "the program ended inside the contour of this cycle", "contour-invalid");
+    return false;
+  }
   // A run stopped by an error did not reach its end: no warning about how it ends.
   if (ranToEnd && !x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");
   return true;

@@ -102,6 +102,9 @@ const char *forbiddenContourOp(const Op &op) {
   case OpKind::SetOffset: return "a coordinate or offset setting (G10/G50)";
   case OpKind::Frame: return "G52";
   case OpKind::Contour: return "a contour cycle (G70-G73)";
+  case OpKind::Stop:
+    if (const Expr *k = op.get("kind"); k && (k->str == "end" || k->str == "end_rewind")) return "a program end (M2/M30)";
+    return nullptr;
   case OpKind::Mode:
     if (op.get("units")) return "G20/G21";
     if (const Expr *m = op.get("motion"))

@@ -12,6 +12,8 @@ G71 G1 P10 Q30
 G72 W5.
 N40 G73 U1. W1. R2
 G70 P40 Q40
+G70 P50 Q50
+N50 M2
 M30
 %
 ; FEATURES: ISO-CYT-11
@@ -27,3 +29,4 @@ M30
 ; CHECK: 9:1: error: there is no block N99 in this program (outside control structures) [missing-block]
 ; CHECK: 10:1: error: the contour block N30 comes after N10 [contour-invalid]
 ; CHECK: 13:5: error: a contour cycle (G70-G73) is not allowed in the contour blocks of G70-G73 [contour-invalid]
+; CHECK: 16:5: error: a program end (M2/M30) is not allowed in the contour blocks of G70-G73 [contour-invalid]
