@@ -322,7 +322,7 @@ Op cmdToOp(const MachineCmd &c) {
     break;
   case CmdKind::Contour:
     op.set("action", Expr::symbol(symbolFor(op.kind, "action", c.sub)));
-    op.set("use", Expr::symbol(symbolFor(op.kind, "use", c.sub2)));
+    if (c.sub != (uint16_t)ContourAction::Begin) op.set("use", Expr::symbol(symbolFor(op.kind, "use", c.sub2)));
     break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;
