@@ -240,7 +240,8 @@ bool BlockLowerer::Block::setup() {
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
 
   if (nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S')) {
-    L.diags_.error(bw.get('S')->loc, "G92 S (spindle speed limit) is not supported", "unsupported-code");
+    L.diags_.error(bw.get('S')->loc, fmt::format("{} S (spindle speed limit) is not supported", gName(nonModal->code10)),
+                   "unsupported-code");
     return false;
   }
   if (macroCall) {

@@ -11,6 +11,7 @@ G76 X1.
 G96 S100
 G10 P1 X1. Q3
 G10 P1 Z1. W2.
+G50 S1500
 M30
 %
 ; FEATURES: ISO-MOT-12
@@ -28,3 +29,4 @@ M30
 ; CHECK: 11:1: error: G96 (constant surface speed) is not supported [unsupported-code]
 ; CHECK: 12:12: error: G10 Q (the imaginary tool tip) is not kept: ncc has no tool nose radius compensation [unsupported-code]
 ; CHECK: 13:12: error: G10: Z and W in one block (W adds to the offset Z sets) [duplicate-word]
+; CHECK: 14:5: error: G50 S (spindle speed limit) is not supported [unsupported-code]
