@@ -95,6 +95,10 @@ std::string motionRecordJson(const MotionRecord &r) {
     s += ",\"value\":";
     num(s, r.value);
     fmt::format_to(std::back_inserter(s), ",\"ivalue\":{}", r.ivalue);
+    if (r.kind == RecordKind::ToolLength && r.value2 != 0) {  // a lathe tool's X offset
+      s += ",\"value2\":";
+      num(s, r.value2);
+    }
     if (r.kind == RecordKind::Aux) {  // the letter: M, B or H
       s += ",\"text\":";
       str(s, r.text);

@@ -53,3 +53,7 @@ M30
 ; The emitters write milling programs with radius X: translating for a lathe is an error.
 ; RUN: not %ncc translate %s --machine=%srcroot/examples/machines/lathe.toml --to=iso 2>&1 | FileCheck %s --check-prefix=TRANSLATE
 ; TRANSLATE: error: ncc translate: the emitters do not write lathe programs (machine kind = "lathe") yet
+; The JSONL trace carries the X offset too.
+; RUN: %ncc run %s --machine=%srcroot/examples/machines/lathe.toml --trace=jsonl | FileCheck %s --check-prefix=JSONL
+; JSONL: {"kind":"tool_length","file":1,"line":2,"col":1,"value":61.98,"ivalue":2,"value2":12.01}
+; JSONL: {"kind":"tool_length","file":1,"line":9,"col":1,"value":0,"ivalue":0}
