@@ -44,7 +44,8 @@ enum class CmdKind : uint8_t {
   Move,         // words in mask; sub / sub2: bits (wordBit, X..C and I J K) of the words that are
                 //   incremental / absolute whatever G90/G91 (G90.1/G91.1 for I J K) says
                 //   (Sinumerik IC()/AC(), Heidenhain IX)
-  Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words
+  Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words; sub2: bits
+                //   of its incremental words (a lathe's G28 U W)
   MachineMove,  // sub: 0 rapid, 1 feed; G53 target in mask words
   ToolLength,   // w[H] offset number, 0 cancels
   CutterComp,   // sub: 0 off, 1 left, 2 right; w[D] when in mask

@@ -441,7 +441,8 @@ private:
          !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
       return Ctx::Any;
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
-    if (op.kind == OpKind::Move && (key == "ic" || key == "ac")) return Ctx::Symbol;  // axis letters (CmdTemplate)
+    if ((op.kind == OpKind::Move && (key == "ic" || key == "ac")) || (op.kind == OpKind::Home && key == "ic"))
+      return Ctx::Symbol;  // axis letters (CmdTemplate)
     if ((op.kind == OpKind::Call || op.kind == OpKind::ModalCall) && key == "callee") return Ctx::Callee;
     if (op.kind == OpKind::Goto && key == "label") return Ctx::Text;  // a computed one: any value as text
     if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||

@@ -168,6 +168,20 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     return false;
   };
 
+  auto perWordBits = [&](const char *key, uint16_t &bits) -> bool {
+    const Expr *e = op.get(key);
+    if (!e) return true;
+    for (char l : e->str) {
+      Word w;
+      if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || !(wordBit(w) & kPerWordDistance)) {
+        diags.error(op.loc, fmt::format("'{}' {}= names the words X Y Z A B C I J K (as in {}=XZ)", opInfo(op.kind).name, key, key));
+        return false;
+      }
+      bits |= (uint16_t)wordBit(w);
+    }
+    return true;
+  };
+
   switch (op.kind) {
   case OpKind::Block: {
     double n;
@@ -244,24 +258,13 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     break;
   case OpKind::Move:
     // ic=XZ / ac=Y: the axis words that are incremental / absolute whatever the mode is.
-    for (const char *key : {"ic", "ac"}) {
-      const Expr *e = op.get(key);
-      if (!e) continue;
-      uint16_t &bits = key[0] == 'i' ? c.sub : c.sub2;
-      for (char l : e->str) {
-        Word w;
-        if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || !(wordBit(w) & kPerWordDistance)) {
-          diags.error(op.loc, fmt::format("'move' {}= names the words X Y Z A B C I J K (as in {}=XZ)", key, key));
-          return false;
-        }
-        bits |= (uint16_t)wordBit(w);
-      }
-    }
+    if (!perWordBits("ic", c.sub) || !perWordBits("ac", c.sub2)) return false;
     break;
   case OpKind::Home: {
     double v = 1;
     constNumber(op.get("ref"), v);
     c.sub = v == 2 ? 2 : 1;
+    if (!perWordBits("ic", c.sub2)) return false;  // the lathe's G28 U W: an incremental intermediate point
     break;
   }
   default:
@@ -326,15 +329,17 @@ Op cmdToOp(const MachineCmd &c) {
     break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;
-  case CmdKind::Home: op.set("ref", Expr::number(c.sub, Type::Int)); break;
   case CmdKind::Move:
+  case CmdKind::Home:
     for (int k = 0; k < 2; ++k) {
+      if (c.kind == CmdKind::Home && k == 0) continue;  // sub is the reference; sub2 its ic
       uint16_t bits = k == 0 ? c.sub : c.sub2;
       std::string axes;
       for (int i = 0; i < kWords; ++i)
         if (bits & wordBit((Word)i) & kPerWordDistance) axes += kWordLetters[i];
-      if (!axes.empty()) op.set(k == 0 ? "ic" : "ac", Expr::symbol(axes));
+      if (!axes.empty()) op.set(k == 0 || c.kind == CmdKind::Home ? "ic" : "ac", Expr::symbol(axes));
     }
+    if (c.kind == CmdKind::Home) op.set("ref", Expr::number(c.sub, Type::Int));
     break;
   case CmdKind::Coolant:
     if (c.sub2 & 1) op.set("flood", Expr::symbol(c.sub & 1 ? "on" : "off"));

@@ -110,7 +110,8 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
   AxisVec t = frameIn(st.position);
   bool inc = st.distance == ModeValue::Incremental;
   // A move's own absolute/incremental axes (sub/sub2, MachineCmd.h) override the mode.
-  uint16_t incAxes = c.kind == CmdKind::Move ? c.sub : 0, absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
+  uint16_t incAxes = c.kind == CmdKind::Move ? c.sub : c.kind == CmdKind::Home ? c.sub2 : 0,
+           absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
   for (int i = 0; i < kAxes; ++i) {
     Word w = (Word)i;  // X Y Z A B C are the first six words
     if (!c.has(w)) continue;

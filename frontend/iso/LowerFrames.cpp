@@ -137,6 +137,7 @@ bool BlockLowerer::Block::coordinateOps() {
     if (nonModal->arg == 2 && bw.has('P')) ref = take('P', Scale::None);  // G30 P3
     op.set("ref", std::move(ref));
     axisWords(op, kOffsetAxes);
+    if (L.lathe_ && !latheAxisWords(op)) return false;  // G28 U0 W0: home from where the tool is
     out.push_back(std::move(op));
     axesTaken = true;
   }
