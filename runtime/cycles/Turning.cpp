@@ -108,7 +108,9 @@ bool stockRemoval(const Contour &c, const StockRemoval &s, std::vector<ContourEl
   std::vector<ContourElem> prof;
   for (size_t i = 1; i < c.elems.size(); ++i) prof.push_back(shifted(c.elems[i], s.allowance));
   const Pt2 aOff = plus(first.end, s.allowance), bOff = prof.back().end;
-  const double sp = at(bOff, ca) >= at(aOff, ca) ? 1 : -1;
+  if (std::fabs(at(bOff, ca) - at(aOff, ca)) < 1e-6)
+    return err = std::string("the contour from A' to B does not run along ") + s.cutName, false;
+  const double sp = at(bOff, ca) > at(aOff, ca) ? 1 : -1;
   auto P = [&](const Pt2 &x) { return sp * at(x, ca); };
   auto Q = [&](const Pt2 &x) { return sq * at(x, da); };
   {
@@ -123,6 +125,7 @@ bool stockRemoval(const Contour &c, const StockRemoval &s, std::vector<ContourEl
   }
   const double pC = P(c.start), qC = Q(c.start), qA = Q(aOff);
   if (qC >= qA - kEps) return err = "the start point is not outside the contour's start A' (with the allowance)", false;
+  if (P(bOff) <= pC + kEps) return err = "the contour (with the allowance) does not reach beyond the start point", false;
   auto point = [&](double p, double q) { return make(ca, sp * p, sq * q); };
   auto move = [&](ContourKind k, double p, double q) {
     ContourElem e;
