@@ -1,7 +1,7 @@
 // Turning contour cycles (runtime/cycles/Turning.h): stock removal on random monotonic contours
 // never enters the contour shifted by the allowance and leaves at most one layer depth of
 // material above it; pattern repeating shifts the contour in equal steps.
-// FEATURES: ISO-CYT-04 ISO-CYT-06
+// FEATURES: ISO-CYT-04 ISO-CYT-05 ISO-CYT-06
 #include "runtime/cycles/Turning.h"
 
 #include <gtest/gtest.h>
@@ -85,9 +85,17 @@ double profileX(const std::vector<Pt2> &pts, double z) {
   return best;
 }
 
-}  // namespace
+// The contour with its axes swapped (a G71 contour becomes a G72 one): arcs turn the other way.
+Contour swapped(const Contour &c) {
+  Contour o = c;
+  o.start = {c.start.b, c.start.a};
+  for (auto &e : o.elems) e.end = {e.end.b, e.end.a}, e.centre = {e.centre.b, e.centre.a}, e.ccw = !e.ccw;
+  return o;
+}
 
-TEST(Turning, StockRemovalRandomContours) {
+// Layers along the plane's first axis (G71), or, with `swap`, the same cut made along its second
+// axis (G72) on the swapped contour, swapped back for the checks.
+void randomStockRemoval(bool swap) {
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> u(0, 1);
   for (int trial = 0; trial < 200; ++trial) {
@@ -100,7 +108,16 @@ TEST(Turning, StockRemovalRandomContours) {
     s.allowance = {0.5 * u(rng), u(rng)};
     std::vector<ContourElem> moves;
     std::string err;
-    ASSERT_TRUE(stockRemoval(c, s, moves, err)) << err;
+    if (swap) {
+      StockRemoval t = s;
+      t.cutAxis = 1, t.allowance = {s.allowance.b, s.allowance.a};
+      ASSERT_TRUE(stockRemoval(swapped(c), t, moves, err)) << err;
+      Contour back;
+      back.elems = moves;
+      moves = swapped(back).elems;
+    } else {
+      ASSERT_TRUE(stockRemoval(c, s, moves, err)) << err;
+    }
     std::vector<Pt2> prof = polyline(c, s.allowance);  // the shifted contour A'..B
     const double zB = prof.back().a, zA = prof.front().a;
     // Beyond B (towards -Z) the contour's last X holds; before A' nothing is in the way.
@@ -159,6 +176,11 @@ TEST(Turning, StockRemovalRandomContours) {
     }
   }
 }
+
+}  // namespace
+
+TEST(Turning, StockRemovalRandomContours) { randomStockRemoval(false); }
+TEST(Turning, StockRemovalRandomContoursAlongX) { randomStockRemoval(true); }
 
 TEST(Turning, StockRemovalFollowsArcs) {
   // A' (Z0 X10), a quarter arc G3 to (Z-10 X20) about (Z-10 X10), then Z-20: the layer at X15
