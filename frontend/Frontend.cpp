@@ -65,6 +65,7 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.scaleWeighting = o.scaleWeighting;
   io.startup = o.startup;
   io.lathe = o.lathe;
+  io.latheSystem = o.latheSystem;
   return io;
 }
 

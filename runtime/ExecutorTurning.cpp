@@ -1,4 +1,4 @@
-// Lathe single cycles (808D system A G90 and G94, spec seed001 3.1): modal in group 01; each move
+// Lathe single cycles (808D G90 and G94 of system A, G77 and G79 of B, spec seed001 3.1): modal in group 01; each move
 // block runs four steps from the current point A in the ZX plane and ends at A again. G90 (turn
 // along Z): rapid across to the end X (plus the taper R at A's Z), feed to the end point, feed
 // out across to A's X, rapid back along Z. G94 (along X): rapid along Z to the end Z (plus R),
@@ -12,7 +12,7 @@ namespace ncc {
 
 bool Executor::Impl::turnCycle(const MachineCmd &c) {
   const bool alongZ = st.motion == ModeValue::TurnAlongZ;
-  const char *code = alongZ ? "G90" : "G94";
+  const char *code = alongZ ? "G90 (G77)" : "G94 (G79)";  // systems A (B)
   if (plane() != Plane::ZX) return error(std::string(code) + " needs the ZX plane (G18)", "unsupported-code");
   if (linearFrame()) return error(std::string(code) + " under a rotation, scaling or mirror is not supported", "unsupported-code");
   if (!compForbids("Cannot use turning cycles with cutter compensation on")) return false;
@@ -36,7 +36,7 @@ bool Executor::Impl::turnCycle(const MachineCmd &c) {
   if (c.has(Word::R)) turnTaper = c.get(Word::R) * scale();  // a radius (G90) / Z length (G94)
   turnEnd = e, turnSet = true;
   MotionRecord begin = record(RecordKind::CycleBegin);
-  begin.text = std::string("iso.") + code;
+  begin.text = alongZ ? "iso.turn_z" : "iso.turn_x";
   emit(begin);
   AxisVec p1 = a, p3 = e;
   if (alongZ) p1[0] = e[0] + turnTaper, p3[0] = a[0];

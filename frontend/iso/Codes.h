@@ -44,9 +44,9 @@ struct GCodeInfo {
 
 // Null when the code is unknown.
 const GCodeInfo *findGCode(int32_t code10);
-// A lathe's code (808D turning table, G-code system A): null when the code is not a turning
-// code (G43, G91 …).
-const GCodeInfo *findTurningGCode(int32_t code10);
+// A lathe's code (808D turning tables, G-code system 'A' or 'B'): null when the code is not a
+// turning code of that system (G43; G91 in system A …).
+const GCodeInfo *findTurningGCode(int32_t code10, char system);
 // The RS274NGC meaning of a code whose number means something else in findGCode's (808D) table.
 const GCodeInfo *findRs274GCode(int32_t code10);
 

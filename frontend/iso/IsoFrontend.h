@@ -28,7 +28,8 @@ struct IsoOptions {
   bool axesScaleEnable = false;         // G51 reads I J K (else P): machine [controller]
   double scaleWeighting = 0.001;        // G51 factor unit
   std::vector<ModeValue> startup;       // start-up modes: units, feed mode, motion as the block words' context
-  bool lathe = false;                   // machine [controller] kind = "lathe": turning codes (system A), T0101, U/W
+  bool lathe = false;                   // machine [controller] kind = "lathe": turning codes, T0101, U/W
+  char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental) or 'B'
 };
 
 // Parses the main program file (already in sm) plus the subprograms it calls (same file after

@@ -31,7 +31,7 @@ std::string gName(int32_t code10) {
 
 BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags)
     : diags_(diags), flavour_(flavour), axesScaleEnable_(opts.axesScaleEnable),
-      lathe_(opts.lathe && flavour == Flavour::Fanuc), scaleWeighting_(opts.scaleWeighting) {
+      lathe_(opts.lathe && flavour == Flavour::Fanuc), system_(opts.latheSystem), scaleWeighting_(opts.scaleWeighting) {
   if (opts.decimalMode == "calculator") decimal_ = 0;
   else if (opts.decimalMode == "is-b") decimal_ = 1;
   else if (opts.decimalMode == "is-c") decimal_ = 2;
@@ -120,9 +120,9 @@ bool BlockLowerer::Block::classify() {
       if (w.value >= 0 && w.value < 100000) {  // range first: llround of huge values is undefined
         double t = w.value * 10;
         long long c10 = std::llround(t);
-        if (std::fabs(t - (double)c10) < 1e-6) gi = L.lathe_ ? findTurningGCode((int32_t)c10) : findGCode((int32_t)c10);
+        if (std::fabs(t - (double)c10) < 1e-6) gi = L.lathe_ ? findTurningGCode((int32_t)c10, L.system_) : findGCode((int32_t)c10);
         if (!gi && L.lathe_ && std::fabs(t - (double)c10) < 1e-6 && findGCode((int32_t)c10)) {
-          L.diags_.error(w.loc, fmt::format("{} is not a turning G code (808D G-code system A)", gName((int32_t)c10)),
+          L.diags_.error(w.loc, fmt::format("{} is not a turning G code (808D G-code system {})", gName((int32_t)c10), L.system_),
                          "unknown-code");
           ok = false;
           continue;
@@ -370,6 +370,16 @@ bool BlockLowerer::Block::latheTool() {
 // G-code system A of a lathe: U and W are the incremental X and Z (`ic`); X with U (Z with W) is
 // an error.
 bool BlockLowerer::Block::latheAxisWords(Op &op) {
+  if (L.system_ != 'A') {  // systems B and C program increments with G91
+    for (char c : std::string_view("UW"))
+      if (bw.has(c)) {
+        L.diags_.error(bw.get(c)->loc,
+                       fmt::format("{} in G-code system {}: the 808D manual does not say it is an increment (use G91)", c, L.system_),
+                       "unsupported-code");
+        return false;
+      }
+    return true;
+  }
   std::string ic;
   for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}}) {
     if (bw.has(abs) && bw.has(inc)) {

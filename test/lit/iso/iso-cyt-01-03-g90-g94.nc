@@ -14,32 +14,32 @@ M30
 ; RUN: %ncc compile %s --machine=%S/Inputs/lathe0.toml --emit=motion | FileCheck %s
 ; CHECK:      rapid X25 Y0 Z2 A0 B0 C0 @1:9
 ; CHECK-NEXT: feed_rate 100 @2:16
-; CHECK-NEXT: cycle_begin "iso.G90" @2:1
+; CHECK-NEXT: cycle_begin "iso.turn_z" @2:1
 ; CHECK-NEXT: rapid X20 Y0 Z2 A0 B0 C0 @2:1
 ; CHECK-NEXT: linear X20 Y0 Z-20 A0 B0 C0 F100 @2:1
 ; CHECK-NEXT: linear X25 Y0 Z-20 A0 B0 C0 F100 @2:1
 ; CHECK-NEXT: rapid X25 Y0 Z2 A0 B0 C0 @2:1
 ; CHECK-NEXT: cycle_end @2:1
-; CHECK-NEXT: cycle_begin "iso.G90" @3:1
+; CHECK-NEXT: cycle_begin "iso.turn_z" @3:1
 ; CHECK-NEXT: rapid X15 Y0 Z2 A0 B0 C0 @3:1
 ; CHECK-NEXT: linear X15 Y0 Z-20 A0 B0 C0 F100 @3:1
 ; CHECK-NEXT: linear X25 Y0 Z-20 A0 B0 C0 F100 @3:1
 ; CHECK-NEXT: rapid X25 Y0 Z2 A0 B0 C0 @3:1
 ; CHECK-NEXT: cycle_end @3:1
-; CHECK-NEXT: cycle_begin "iso.G90" @4:1
+; CHECK-NEXT: cycle_begin "iso.turn_z" @4:1
 ; CHECK-NEXT: rapid X8 Y0 Z2 A0 B0 C0 @4:1
 ; CHECK-NEXT: linear X10 Y0 Z-20 A0 B0 C0 F100 @4:1
 ; CHECK-NEXT: linear X25 Y0 Z-20 A0 B0 C0 F100 @4:1
 ; CHECK-NEXT: rapid X25 Y0 Z2 A0 B0 C0 @4:1
 ; CHECK-NEXT: cycle_end @4:1
 ; CHECK-NEXT: feed_rate 50 @5:15
-; CHECK-NEXT: cycle_begin "iso.G94" @5:1
+; CHECK-NEXT: cycle_begin "iso.turn_x" @5:1
 ; CHECK-NEXT: rapid X25 Y0 Z-2 A0 B0 C0 @5:1
 ; CHECK-NEXT: linear X5 Y0 Z-2 A0 B0 C0 F50 @5:1
 ; CHECK-NEXT: linear X5 Y0 Z2 A0 B0 C0 F50 @5:1
 ; CHECK-NEXT: rapid X25 Y0 Z2 A0 B0 C0 @5:1
 ; CHECK-NEXT: cycle_end @5:1
-; CHECK-NEXT: cycle_begin "iso.G94" @6:1
+; CHECK-NEXT: cycle_begin "iso.turn_x" @6:1
 ; CHECK-NEXT: rapid X25 Y0 Z-4 A0 B0 C0 @6:1
 ; CHECK-NEXT: linear X5 Y0 Z-4 A0 B0 C0 F50 @6:1
 ; CHECK-NEXT: linear X5 Y0 Z2 A0 B0 C0 F50 @6:1
