@@ -65,6 +65,8 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.scaleWeighting = o.scaleWeighting;
   io.startup = o.startup;
   io.offsetMemory = o.offsetMemory == "C" ? iso::OffsetMemory::C : iso::OffsetMemory::None;
+  io.lathe = o.lathe;
+  io.latheSystem = o.latheSystem;
   return io;
 }
 

@@ -18,6 +18,8 @@ struct FrontendOptions {
   std::vector<ModeValue> startup;         // the controller's start-up modes (units, feed mode, motion)
   double scaleWeighting = 0.001;           // ISO G51: unit of the factors
   std::string offsetMemory = "none";       // Fanuc tool offset variables: "none" or "C", machine [controller]
+  bool lathe = false;                      // machine [controller] kind = "lathe"
+  char latheSystem = 'A';                  // its gcode_system
 };
 
 // What a file holds: a dialect, or textual NC IR.

@@ -78,6 +78,8 @@ static const LintRule kRules[] = {
      "canned cycle without Z/R (or Q for pecking)"},
     {"cycle-invalid", Severity::Error, "executor",
      "R below the bottom, Q ≤ 0, a rotary axis word in a cycle block, …"},
+    {"contour-invalid", Severity::Error, "front end, executor",
+     "contour cycles (ISO G70-G73): a code the contour blocks must not hold, a contour range out of order, a contour the cycle cannot cut (type II, not monotonic), a chamfer ending it"},
     {"cycle-bad-repeat", Severity::Error, "executor",
      "L/K repeat count below 1"},
     {"cycle-spindle", Severity::Error, "executor",

@@ -44,7 +44,8 @@ enum class CmdKind : uint8_t {
   Move,         // words in mask; sub / sub2: bits (wordBit, X..C and I J K) of the words that are
                 //   incremental / absolute whatever G90/G91 (G90.1/G91.1 for I J K) says
                 //   (Sinumerik IC()/AC(), Heidenhain IX)
-  Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words
+  Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words; sub2: bits
+                //   of its incremental words (a lathe's G28 U W)
   MachineMove,  // sub: 0 rapid, 1 feed; G53 target in mask words
   ToolLength,   // w[H] offset number, 0 cancels
   CutterComp,   // sub: 0 off, 1 left, 2 right; w[D] when in mask
@@ -53,6 +54,7 @@ enum class CmdKind : uint8_t {
   Stop,         // sub: StopKind
   Aux,          // w[P] the M number (or other aux value); sub: letter ('M', 'B', 'H')
   Frame,        // sub: FrameSlot; sub2: FrameAction | FrameFlag bits; values in mask words
+  Contour,      // sub: ContourAction; sub2: ContourUse; the consumer's parameters in U W R
   Count
 };
 
@@ -68,7 +70,10 @@ enum class MessageKind : uint8_t { Msg, Debug, Print, Abort };
 // in the current system / in G59.3); ToolLength… the Fanuc/808D G10 L10-L13 (one value, R).
 enum class SetOffsetKind : uint8_t {
   G92, G92Cancel, G10L2, G10L20, G92Suspend, G92Restore, StoreHome1, StoreHome2, G52,
-  ToolSet, ToolTouch, ToolTouchG593, ToolLength, ToolLengthWear, ToolRadius, ToolRadiusWear
+  ToolSet, ToolTouch, ToolTouchG593, ToolLength, ToolLengthWear, ToolRadius, ToolRadiusWear,
+  // The 808D turning G10 P X(U) Z(W) R(C): P1-P99 the wear, P101-P1600 the geometry of offset
+  // P (- 100); X Z R absolute, U W C added (runtime/ExecutorState.cpp).
+  LatheTool
 };
 // The programmable frame (runtime/Frame.h): its slots, what a `frame` op does to one, and how a
 // rotation reads its words. form=plane is the ISO 2-D G68 (about the active plane's normal axis,
@@ -77,6 +82,13 @@ enum class SetOffsetKind : uint8_t {
 enum class FrameSlot : uint8_t { Local, Rotation, Scale, Mirror, Count };
 enum class FrameAction : uint8_t { Cancel, Set };
 constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
+
+// Contour capture (runtime/ExecutorContour.cpp): `Begin` makes the following motion a contour
+// (records go to the capture, not the sinks), `End` hands it to a consumer (`ContourUse`) with
+// its parameters; `Data` sets a consumer's modal data (the ISO G71/G72 `U R` and G73 `U W R`
+// first blocks).
+enum class ContourAction : uint8_t { Data, Begin, End };
+enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat };
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a
 // key given twice), so every key of the op fits.

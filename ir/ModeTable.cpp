@@ -31,6 +31,8 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::SplineQuadratic, ModeGroup::Motion, "spline_quadratic"},
     {ModeValue::Nurbs, ModeGroup::Motion, "nurbs"},
     {ModeValue::NurbsEnd, ModeGroup::Motion, "nurbs_end"},
+    {ModeValue::TurnAlongZ, ModeGroup::Motion, "turn_z"},
+    {ModeValue::TurnAlongX, ModeGroup::Motion, "turn_x"},
     {ModeValue::XY, ModeGroup::Plane, "xy"},
     {ModeValue::ZX, ModeGroup::Plane, "zx"},
     {ModeValue::YZ, ModeGroup::Plane, "yz"},

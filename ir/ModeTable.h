@@ -24,6 +24,9 @@ enum class ModeValue : uint8_t {
   // LinuxCNC splines: G5 cubic and G5.1 quadratic (one block each; the motion mode before them
   // stays), G5.2 NURBS control points, G5.3 NURBS end (runtime/ExecutorMotion.cpp)
   SplineCubic, SplineQuadratic, Nurbs, NurbsEnd,
+  // Lathe single cycles (808D system A G90 along Z, G94 along X; runtime/ExecutorTurning.cpp):
+  // modal, each move block runs the four-step cycle from the current point.
+  TurnAlongZ, TurnAlongX,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -52,5 +55,6 @@ bool modeValueFromName(std::string_view s, ModeValue &out);
 inline bool isPathMotion(ModeValue v) { return v <= ModeValue::ArcTangent; }
 inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= ModeValue::BoreFine; }
 inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && v <= ModeValue::NurbsEnd; }
+inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ || v == ModeValue::TurnAlongX; }
 
 }  // namespace ncc

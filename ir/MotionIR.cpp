@@ -195,6 +195,7 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
     break;
   case RecordKind::ToolLength:
     fmt::format_to(out, " {} H{}", r.value, r.ivalue);
+    if (r.value2 != 0) fmt::format_to(out, " X{}", r.value2);  // a lathe tool's X offset
     break;
   case RecordKind::Aux:
     fmt::format_to(out, " {}{}", r.text.empty() ? "M" : r.text, r.ivalue);

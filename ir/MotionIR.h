@@ -29,7 +29,8 @@ enum class RecordKind : uint8_t {
   Dwell,         // `value` seconds
   ToolSelect,    // `ivalue` tool number (T word)
   ToolChange,    // `ivalue` tool number now in the spindle (M6)
-  ToolLength,    // `value` active tool length offset (mm) along the tool axis, `ivalue` the H number
+  ToolLength,    // `value` active tool length offset (mm) along the tool axis, `ivalue` the H number,
+                 // `value2` a lathe tool's X offset (mm, machine X; printed `X..` when not 0)
   SpindleSpeed,  // `value` rpm (or m/min with CSS)
   SpindleCW,
   SpindleCCW,

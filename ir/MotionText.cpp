@@ -286,6 +286,8 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
     if (!p.number(r.value)) return false;
     if (r.kind == RecordKind::ToolLength && !(p.expect("H", "'H' and the offset number") && p.integer(r.ivalue)))
       return false;
+    if (r.kind == RecordKind::ToolLength && (p.skipBlanks(), p.peek("X")) && !(p.expect("X", "'X'") && p.number(r.value2)))
+      return false;
     break;
   case RecordKind::Aux: {
     p.skipBlanks();

@@ -35,10 +35,12 @@ const EnumRule kEnumRules[] = {
     {OpKind::Stop, "kind", "program optional end end_rewind"},
     {OpKind::SetOffset, "kind",
      "g92 g92_1 g92_2 g92_3 g10l2 g10l20 g28_1 g30_1 g52 tool_set tool_touch tool_touch_g593 tool_length tool_length_wear "
-     "tool_radius tool_radius_wear"},
+     "tool_radius tool_radius_wear lathe_tool"},
     {OpKind::Frame, "slot", "local rotation scale mirror"},
     {OpKind::Frame, "action", "set cancel"},
     {OpKind::Frame, "form", "plane axis"},
+    {OpKind::Contour, "action", "data begin end"},
+    {OpKind::Contour, "use", "finish rough_z rough_x pattern"},
     {OpKind::Goto, "dir", "forward backward any"},
     {OpKind::Call, "frame", "new shared"},
     {OpKind::Declare, "type", "int real bool char string symbol axis frame"},
@@ -445,7 +447,8 @@ private:
          !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
       return Ctx::Any;
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
-    if (op.kind == OpKind::Move && (key == "ic" || key == "ac")) return Ctx::Symbol;  // axis letters (CmdTemplate)
+    if ((op.kind == OpKind::Move && (key == "ic" || key == "ac")) || (op.kind == OpKind::Home && key == "ic"))
+      return Ctx::Symbol;  // axis letters (CmdTemplate)
     if ((op.kind == OpKind::Call || op.kind == OpKind::ModalCall) && key == "callee") return Ctx::Callee;
     if (op.kind == OpKind::Goto && key == "label") return Ctx::Text;  // a computed one: any value as text
     if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||

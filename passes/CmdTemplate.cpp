@@ -14,6 +14,7 @@ bool isMachineOp(OpKind k) {
   case OpKind::Spindle: case OpKind::Coolant: case OpKind::Dwell: case OpKind::Move:
   case OpKind::Home: case OpKind::MachineMove: case OpKind::ToolLength: case OpKind::CutterComp:
   case OpKind::WorkOffset: case OpKind::SetOffset: case OpKind::Stop: case OpKind::Aux: case OpKind::Frame:
+  case OpKind::Contour:
     return true;
   default:
     return false;
@@ -53,6 +54,7 @@ static const SymbolCode kSymbols[] = {
     {OpKind::SetOffset, "kind", "tool_length_wear", (uint8_t)SetOffsetKind::ToolLengthWear},
     {OpKind::SetOffset, "kind", "tool_radius", (uint8_t)SetOffsetKind::ToolRadius},
     {OpKind::SetOffset, "kind", "tool_radius_wear", (uint8_t)SetOffsetKind::ToolRadiusWear},
+    {OpKind::SetOffset, "kind", "lathe_tool", (uint8_t)SetOffsetKind::LatheTool},
     {OpKind::Frame, "slot", "local", (uint8_t)FrameSlot::Local},
     {OpKind::Frame, "slot", "rotation", (uint8_t)FrameSlot::Rotation},
     {OpKind::Frame, "slot", "scale", (uint8_t)FrameSlot::Scale},
@@ -61,6 +63,13 @@ static const SymbolCode kSymbols[] = {
     {OpKind::Frame, "action", "set", (uint8_t)FrameAction::Set},
     {OpKind::Frame, "form", "plane", 0},
     {OpKind::Frame, "form", "axis", kFrameFormAxis},
+    {OpKind::Contour, "action", "data", (uint8_t)ContourAction::Data},
+    {OpKind::Contour, "action", "begin", (uint8_t)ContourAction::Begin},
+    {OpKind::Contour, "action", "end", (uint8_t)ContourAction::End},
+    {OpKind::Contour, "use", "finish", (uint8_t)ContourUse::Finish},
+    {OpKind::Contour, "use", "rough_z", (uint8_t)ContourUse::RoughAlongZ},
+    {OpKind::Contour, "use", "rough_x", (uint8_t)ContourUse::RoughAlongX},
+    {OpKind::Contour, "use", "pattern", (uint8_t)ContourUse::PatternRepeat},
     {OpKind::Message, "kind", "msg", (uint8_t)MessageKind::Msg},
     {OpKind::Message, "kind", "debug", (uint8_t)MessageKind::Debug},
     {OpKind::Message, "kind", "print", (uint8_t)MessageKind::Print},
@@ -118,6 +127,7 @@ static CmdKind cmdKindOf(OpKind k) {
   case OpKind::Stop: return CmdKind::Stop;
   case OpKind::Aux: return CmdKind::Aux;
   case OpKind::Frame: return CmdKind::Frame;
+  case OpKind::Contour: return CmdKind::Contour;
   default: return CmdKind::Count;
   }
 }
@@ -159,6 +169,20 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
       }
     diags.error(op.loc, fmt::format("'{}' has an invalid value for '{}'", opInfo(op.kind).name, key));
     return false;
+  };
+
+  auto perWordBits = [&](const char *key, uint16_t &bits) -> bool {
+    const Expr *e = op.get(key);
+    if (!e) return true;
+    for (char l : e->str) {
+      Word w;
+      if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || !(wordBit(w) & kPerWordDistance)) {
+        diags.error(op.loc, fmt::format("'{}' {}= names the words X Y Z A B C I J K (as in {}=XZ)", opInfo(op.kind).name, key, key));
+        return false;
+      }
+      bits |= (uint16_t)wordBit(w);
+    }
+    return true;
   };
 
   switch (op.kind) {
@@ -204,6 +228,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     c.sub2 = (uint16_t)(action | form);
     break;
   }
+  case OpKind::Contour:
+    if (!symbolArg("action", c.sub) || !symbolArg("use", c.sub2)) return false;
+    break;
   case OpKind::WorkOffset: {
     double v = 1;
     if (!constNumber(op.get("index"), v) || v < 1 || v > 9) {
@@ -236,24 +263,13 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     break;
   case OpKind::Move:
     // ic=XZ / ac=Y: the axis words that are incremental / absolute whatever the mode is.
-    for (const char *key : {"ic", "ac"}) {
-      const Expr *e = op.get(key);
-      if (!e) continue;
-      uint16_t &bits = key[0] == 'i' ? c.sub : c.sub2;
-      for (char l : e->str) {
-        Word w;
-        if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || !(wordBit(w) & kPerWordDistance)) {
-          diags.error(op.loc, fmt::format("'move' {}= names the words X Y Z A B C I J K (as in {}=XZ)", key, key));
-          return false;
-        }
-        bits |= (uint16_t)wordBit(w);
-      }
-    }
+    if (!perWordBits("ic", c.sub) || !perWordBits("ac", c.sub2)) return false;
     break;
   case OpKind::Home: {
     double v = 1;
     constNumber(op.get("ref"), v);
     c.sub = v == 2 ? 2 : 1;
+    if (!perWordBits("ic", c.sub2)) return false;  // the lathe's G28 U W: an incremental intermediate point
     break;
   }
   default:
@@ -261,7 +277,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   // Scalar words: named keys per the table, axis/parameter letters for motion ops.
   bool letters = op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame;
+                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour;
   for (auto &a : op.args) {
     Word w;
     if (letters && a.key.size() == 1 && wordFromLetter(a.key[0], w)) {
@@ -280,7 +296,7 @@ Op cmdToOp(const MachineCmd &c) {
                                  OpKind::Spindle, OpKind::Coolant, OpKind::Dwell, OpKind::Move,
                                  OpKind::Home, OpKind::MachineMove, OpKind::ToolLength, OpKind::CutterComp,
                                  OpKind::WorkOffset, OpKind::SetOffset, OpKind::Stop, OpKind::Aux,
-                                 OpKind::Frame};
+                                 OpKind::Frame, OpKind::Contour};
   static_assert(sizeof(kinds) / sizeof(kinds[0]) == (size_t)CmdKind::Count);
   Op op(kinds[(unsigned)c.kind], c.loc);
   auto real = [](double v) { return Expr::number(v, Type::Real); };
@@ -316,17 +332,23 @@ Op cmdToOp(const MachineCmd &c) {
     if (c.sub == (uint8_t)FrameSlot::Rotation && (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set)
       op.set("form", Expr::symbol(symbolFor(op.kind, "form", c.sub2 & kFrameFormAxis)));
     break;
+  case CmdKind::Contour:
+    op.set("action", Expr::symbol(symbolFor(op.kind, "action", c.sub)));
+    if (c.sub != (uint16_t)ContourAction::Begin) op.set("use", Expr::symbol(symbolFor(op.kind, "use", c.sub2)));
+    break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;
-  case CmdKind::Home: op.set("ref", Expr::number(c.sub, Type::Int)); break;
   case CmdKind::Move:
+  case CmdKind::Home:
     for (int k = 0; k < 2; ++k) {
+      if (c.kind == CmdKind::Home && k == 0) continue;  // sub is the reference; sub2 its ic
       uint16_t bits = k == 0 ? c.sub : c.sub2;
       std::string axes;
       for (int i = 0; i < kWords; ++i)
         if (bits & wordBit((Word)i) & kPerWordDistance) axes += kWordLetters[i];
-      if (!axes.empty()) op.set(k == 0 ? "ic" : "ac", Expr::symbol(axes));
+      if (!axes.empty()) op.set(k == 0 || c.kind == CmdKind::Home ? "ic" : "ac", Expr::symbol(axes));
     }
+    if (c.kind == CmdKind::Home) op.set("ref", Expr::number(c.sub, Type::Int));
     break;
   case CmdKind::Coolant:
     if (c.sub2 & 1) op.set("flood", Expr::symbol(c.sub & 1 ? "on" : "off"));
@@ -343,7 +365,7 @@ Op cmdToOp(const MachineCmd &c) {
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }
   if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-      op.kind == OpKind::SetOffset || op.kind == OpKind::Frame)
+      op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour)
     for (int i = 0; i < kWords; ++i) {
       Word w = (Word)i;
       if (!c.has(w)) continue;

@@ -38,7 +38,7 @@ AxisVec Executor::Impl::frameIn(const AxisVec &m) const {
   if (!linearFrame()) return m;
   AxisVec f;
   const AxisVec &o = g5xActive;
-  for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - (i == 2 ? toolLength : 0.0);
+  for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - toolOffset(i);
   if (rotated()) rotateXY(f, -rotation());
   if (!pf.linear) return f;
   for (int i = 0; i < kAxes; ++i) f[i] -= g92[i];
@@ -54,7 +54,7 @@ AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
   }
   if (rotated()) rotateXY(m, rotation());
   const AxisVec &o = g5xActive;
-  for (int i = 0; i < kAxes; ++i) m[i] += o[i] + (i == 2 ? toolLength : 0.0);
+  for (int i = 0; i < kAxes; ++i) m[i] += o[i] + toolOffset(i);
   return m;
 }
 
@@ -64,7 +64,7 @@ void Executor::Impl::noteFrame(const char *what) {
     p[0] = x, p[1] = y, p[2] = z;
     for (int i = 0; i < 3; ++i) p[i] += frameOffset(i);
     AxisVec m = frameOut(p);
-    m[2] -= toolLength;
+    for (int i = 0; i < 3; ++i) m[i] -= toolOffset(i);
     return m;
   };
   AxisVec o = toMachine(0, 0, 0), ex = toMachine(1, 0, 0), ey = toMachine(0, 1, 0), ez = toMachine(0, 0, 1);
@@ -120,7 +120,8 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
   AxisVec t = frameIn(st.position);
   bool inc = st.distance == ModeValue::Incremental;
   // A move's own absolute/incremental axes (sub/sub2, MachineCmd.h) override the mode.
-  uint16_t incAxes = c.kind == CmdKind::Move ? c.sub : 0, absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
+  uint16_t incAxes = c.kind == CmdKind::Move ? c.sub : c.kind == CmdKind::Home ? c.sub2 : 0,
+           absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
   for (int i = 0; i < kAxes; ++i) {
     Word w = (Word)i;  // X Y Z A B C are the first six words
     if (!c.has(w)) continue;
@@ -173,6 +174,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
                      "spline-invalid");
       if (v == ModeValue::NurbsEnd && !nurbsEnd()) return false;
       if (v == ModeValue::SplineCubic || v == ModeValue::SplineQuadratic) splineReturn = st.motion;
+      if (v != st.motion) turnSet = false;  // a new G90/G94 run takes its words afresh
       st.motion = v;
       if (!isCycleMotion(v)) {
         // Leaving the cycles: the next cycle takes a new initial level.
@@ -226,9 +228,12 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   if (!offsetData(hv, "H", t)) return false;
   int h = (int)hv;
   toolLength = t.length;
+  // A lathe's offset (T0101) also shifts X by the edge's X offset.
+  toolOffsetX = h == 0 || !machine.controller.lathe() ? 0 : t.xOffset;
   st.toolLengthH = h;
   MotionRecord r = record(RecordKind::ToolLength);
   r.value = toolLength;
+  r.value2 = toolOffsetX;
   r.ivalue = h;
   emit(r);
   return true;
@@ -267,7 +272,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i)) {
         pf.local[i] = 0;
-        double before = rotated() ? f[i] : st.position[i] - g5xActive[i] - (i == 2 ? toolLength : 0.0);
+        double before = rotated() ? f[i] : st.position[i] - g5xActive[i] - toolOffset(i);
         g92[i] = before - c.get((Word)i) * axisScale(i);
       }
     g92Saved = g92;
@@ -295,18 +300,18 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
   if (rot == 0) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i))
-        sys[i] = st.position[i] - g92[i] - pf.local[i] - (i == 2 ? toolLength : 0.0) - c.get((Word)i) * axisScale(i);
+        sys[i] = st.position[i] - g92[i] - pf.local[i] - toolOffset(i) - c.get((Word)i) * axisScale(i);
     if (n == st.workOffset) applyWorkOffset();
     return true;
   }
   AxisVec rel;  // machine position less tool length and the system's origin
-  for (int i = 0; i < kAxes; ++i) rel[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - sys[i];
+  for (int i = 0; i < kAxes; ++i) rel[i] = st.position[i] - toolOffset(i) - sys[i];
   AxisVec q = rel;
   rotateXY(q, -rot);  // program + G92 in system n
   for (int i = 0; i < kAxes; ++i)
     if (c.has((Word)i)) q[i] = c.get((Word)i) * axisScale(i) + g92[i] + pf.local[i];
   rotateXY(q, rot);
-  for (int i = 0; i < kAxes; ++i) sys[i] = st.position[i] - (i == 2 ? toolLength : 0.0) - q[i];
+  for (int i = 0; i < kAxes; ++i) sys[i] = st.position[i] - toolOffset(i) - q[i];
   if (n == st.workOffset) applyWorkOffset();
   return true;
 }
@@ -538,7 +543,9 @@ bool Executor::exec(const MachineCmd &c) {
       return x.error(std::string("invalid number in ") + kWordLetters[i] + " word", "bad-number");
   }
   bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
-  if ((motion || c.kind == CmdKind::SetOffset) && !x.checkAxisWords(c)) return false;
+  // (The lathe's G10 P X Z R U W C words are tool offsets, not axes.)
+  bool axisWords = motion || (c.kind == CmdKind::SetOffset && c.sub != (uint16_t)SetOffsetKind::LatheTool);
+  if (axisWords && !x.checkAxisWords(c)) return false;
   if (c.has(Word::PolarR) || c.has(Word::PolarA)) {
     for (Word w : {Word::X, Word::Y})  // rs274's messages
       if (c.has(w))
@@ -647,6 +654,7 @@ bool Executor::exec(const MachineCmd &c) {
   }
   case CmdKind::Move: return x.execMove(c);
   case CmdKind::Home: x.curBlockFrame = true; return x.execHome(c);
+  case CmdKind::Contour: return x.execContour(c);
   case CmdKind::MachineMove: return x.execMachineMove(c);
   case CmdKind::ToolLength: return x.execToolLength(c);
   case CmdKind::CutterComp: return x.execCutterComp(c);
@@ -732,6 +740,11 @@ bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
   if (ranToEnd) x.cornerFlush("no move follows");
   x.comp.stop();
+  if (x.capture.active) {  // its records never reached the sinks
+    x.route.capture = nullptr;
+    x.diags.error(x.capture.loc, "the program ended inside the contour of this cycle", "contour-invalid");
+    return false;
+  }
   // A run stopped by an error did not reach its end: no warning about how it ends.
   if (ranToEnd && !x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");
   return true;

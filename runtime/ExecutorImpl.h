@@ -29,11 +29,25 @@ private:
   MotionSink &out_;
 };
 
+// Where the executor's records go: the sinks, or a contour capture (ExecutorContour.cpp) while
+// one is active, so every path (moves, corners, compensation) is captured alike.
+class RouteSink : public MotionSink {
+public:
+  explicit RouteSink(MotionSink &out) : out(out) {}
+  MotionSink &out;
+  std::vector<MotionRecord> *capture = nullptr;
+  void record(const MotionRecord &r) override {
+    if (capture) capture->push_back(r);
+    else out.record(r);
+  }
+};
+
 // The [controller] reset list as bits (Executor.cpp: kResetGroups).
 uint32_t resetGroupMask(const std::vector<std::string> &groups);
 
 struct Executor::Impl {
-  Impl(const Machine &m, MotionSink &s, Diagnostics &d) : machine(m), sink(s), diags(d), compOut(s), comp(compOut) {
+  Impl(const Machine &m, MotionSink &s, Diagnostics &d)
+      : route(s), machine(m), sink(route), diags(d), compOut(route), comp(compOut) {
     g5x = m.workOffsets;
     offsetWrite = m.controller.offsetWritePolicy();
     toolWrite = m.controller.toolWritePolicy();
@@ -45,6 +59,7 @@ struct Executor::Impl {
     axesDescribed = m.axes[0].present || m.axes[1].present || m.axes[2].present;
     resetMask = resetGroupMask(m.controller.reset);
   }
+  RouteSink route;  // `sink` is this: the sinks, or a contour capture
   uint32_t resetMask = 0;  // what M2/M30 reset (the machine's [controller] reset list)
   bool axesDescribed = true;
   const Machine &machine;
@@ -71,6 +86,8 @@ struct Executor::Impl {
   bool g92On = false;  // G92 offsets applied (rs274 #5210)
   AxisVec home[2];     // G28 / G30 reference points (machine), G28.1 / G30.1 store them
   double toolLength = 0;
+  double toolOffsetX = 0;  // a lathe tool's X offset (mm, machine X), with toolLength on Z
+  double toolOffset(int axis) const { return axis == 2 ? toolLength : axis == 0 ? toolOffsetX : 0.0; }
   double feedMM = 0;
   bool feedInBlock = false;  // an F word in the current block (inverse time needs one per move)  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)
 
@@ -104,9 +121,13 @@ struct Executor::Impl {
 
   // --- helpers (Executor.cpp) ---
   double scale() const { return st.units == ModeValue::Inch ? 25.4 : 1.0; }
-  double axisScale(int axis) const { return axis < 3 ? scale() : 1.0; }
+  // mm per unit of an axis word; a diameter-programmed X (machine [controller]) is halved here,
+  // so every dialect, offset word and position read-back shares it (arc I/K and R are radii).
+  double axisScale(int axis) const {
+    return axis == 0 && machine.controller.diameterProgramming ? scale() * 0.5 : axis < 3 ? scale() : 1.0;
+  }
   double offset(int axis) const {
-    return g5xActive[axis] + g92[axis] + pf.local[axis] + (axis == 2 ? toolLength : 0.0);
+    return g5xActive[axis] + g92[axis] + pf.local[axis] + toolOffset(axis);
   }
   double rotation() const { return g5xRotActive; }
   // The "offset frame": program coordinates plus G92. Without rotation it is the machine frame
@@ -202,6 +223,7 @@ struct Executor::Impl {
   // the reason when the machine lacks them.
   bool toolDataRef(const SysRef &r, int &t, int &d, std::string &err) const;
   bool execToolOffset(const MachineCmd &c);
+  bool latheToolOffset(const MachineCmd &c);  // the 808D turning G10 P X Z R
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.
   bool checkAxisWords(const MachineCmd &c);
   MotionRecord pathModeRecord() const;
@@ -258,6 +280,33 @@ struct Executor::Impl {
     ModeValue units = ModeValue::MM;
   } nurbs;
   bool cycle(const MachineCmd &c);
+  // --- lathe single cycles G90/G94 (ExecutorTurning.cpp) ---
+  bool turnCycle(const MachineCmd &c);
+  // The end point and taper of the last cycle of the mode (a repeat block gives only what
+  // changes); reset when the mode is entered.
+  bool turnSet = false;
+  AxisVec turnEnd{};
+  double turnTaper = 0;
+  // --- contour capture (ExecutorContour.cpp) ---
+  bool execContour(const MachineCmd &c);
+  struct Capture {
+    bool active = false;
+    SourceLoc loc;
+    std::vector<MotionRecord> records;
+    // What the captured blocks may change and a roughing consumer puts back.
+    ModalState st;
+    double feedMM = 0, toolLength = 0, toolOffsetX = 0;
+    LastPath lastPath;
+    int64_t blockNumber = -1;
+    SourceLoc blockLoc;
+  } capture;
+  // Modal consumer data (ISO G71/G72 U R: layer depth and retract; G73 U W R: relief, count), mm.
+  double roughDepth = 0, roughRetract = 0;
+  bool roughSet = false;
+  double patternReliefX = 0, patternReliefZ = 0, patternCount = 0;
+  bool patternSet = false;
+  bool contourData(const MachineCmd &c);
+  bool contourConsume(const MachineCmd &c);
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
   bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.

@@ -122,6 +122,8 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::SplineCubic:
   case ModeValue::SplineQuadratic: return bezier(c, st.motion == ModeValue::SplineCubic);
   case ModeValue::Nurbs: return nurbsPoint(c);
+  case ModeValue::TurnAlongZ:
+  case ModeValue::TurnAlongX: return turnCycle(c);
   case ModeValue::NurbsEnd:  // rs274 has no motion mode after G5.3
     if (!(c.mask & kTargetMask)) return true;
     return error("Cannot use axis values without a g code that uses them", "motion-mode-none");

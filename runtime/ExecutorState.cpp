@@ -14,7 +14,9 @@ namespace ncc {
 
 namespace {
 bool wholeNumber(double n) { return n >= 0 && n <= 1e9 && n == std::floor(n); }
-ToolData resulting(const ToolEdge &e) { return {e.length + e.lengthWear, e.radius + e.radiusWear}; }
+ToolData resulting(const ToolEdge &e) {
+  return {e.length + e.lengthWear, e.radius + e.radiusWear, e.xOffset + e.xWear};
+}
 // rs274's text for a T, H or D number the table lacks; tool data references use it too.
 std::string unknownTool(long long n) { return "Requested tool " + std::to_string(n) + " not found in the tool table"; }
 }  // namespace
@@ -130,8 +132,42 @@ bool Executor::Impl::toolDataRef(const SysRef &r, int &t, int &d, std::string &e
   return err.empty();
 }
 
+// The 808D turning form (SetOffsetKind::LatheTool): P1-P99 the wear, P101-P1600 the geometry of
+// offset P (- 100) (MD20734 bit 1 = 0; the manual's OCR does not say which range is which, this
+// is the Fanuc order); X (a diameter when X is) and Z the X and Z offsets, R the nose radius; U W
+// C add to them. A change applies at the next T word that selects the offset.
+bool Executor::Impl::latheToolOffset(const MachineCmd &c) {
+  double p = c.get(Word::P);
+  if (!(p >= 1 && p <= 1600 && p != 100 && p == std::floor(p)))
+    return error("G10 P must be 1-99 (wear) or 101-1600 (geometry: 100 + the offset number)", "bad-offset-index");
+  const bool geometry = p > 100;
+  const int n = (int)p - (geometry ? 100 : 0);
+  ToolData data;
+  if (!offsetData(n, "P", data)) return false;  // existing offsets only (808D: none can be created)
+  int t, d;
+  offsetRef(n, t, d);
+  ToolEdge e = edgeOf(t, d);
+  struct Field {
+    Word set, add;
+    double ToolEdge::*geometry, ToolEdge::*wear;
+    double unit;
+  };
+  const Field kFields[] = {{Word::X, Word::U, &ToolEdge::xOffset, &ToolEdge::xWear, axisScale(0)},
+                           {Word::Z, Word::W, &ToolEdge::length, &ToolEdge::lengthWear, scale()},
+                           {Word::R, Word::C, &ToolEdge::radius, &ToolEdge::radiusWear, scale()}};
+  for (auto &f : kFields) {
+    double &v = e.*(geometry ? f.geometry : f.wear);
+    if (c.has(f.set)) v = c.get(f.set) * f.unit;
+    if (c.has(f.add)) v += c.get(f.add) * f.unit;
+  }
+  std::string err;
+  const char *rule;
+  return setEdge(t, d, e, err, rule) || error(err, rule);
+}
+
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
+  if (kind == SetOffsetKind::LatheTool) return latheToolOffset(c);
   if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
   ToolData data;
   if (!offsetData(c.get(Word::P), "P", data)) return false;  // existing numbers only (808D: none can be created)

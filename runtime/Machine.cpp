@@ -299,6 +299,7 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"startup", NodeReader(readStartup)},
     {"family", &Controller::family, 0, 0, false, kDialects},
     {"model", &Controller::model},
+    {"kind", &Controller::kind, 0, 0, false, "mill lathe"},
     {"gcode_system", &Controller::gcodeSystem, 0, 0, false, "A B C"},
     {"plane", &Controller::plane, 0, 0, false, "G17 G18 G19"},
     {"diameter_programming", &Controller::diameterProgramming},
@@ -383,6 +384,8 @@ const KeyDef<EdgeIn> kEdgeKeys[] = {
     {"radius", &EdgeIn::radius, 0},
     {"length_wear", &EdgeIn::lengthWear},
     {"radius_wear", &EdgeIn::radiusWear},
+    {"x_offset", &EdgeIn::xOffset},
+    {"x_wear", &EdgeIn::xWear},
 };
 
 struct ToolIn : Tool {
@@ -427,7 +430,7 @@ void readTools(Ctx &c, const toml::node &n, void *obj) {
       continue;
     }
     const ToolEdge &g = edge->second;
-    m.tools[in.number] = ToolData{g.length + g.lengthWear, g.radius + g.radiusWear};
+    m.tools[in.number] = ToolData{g.length + g.lengthWear, g.radius + g.radiusWear, g.xOffset + g.xWear};
     if (m.tools[in.number].radius < 0) c.error(e.source(), tn + ": radius + radius_wear is negative");
     m.toolTable[in.number] = in;
   }
@@ -459,6 +462,19 @@ void readEmit(Ctx &c, const toml::node &n, void *obj) {
 void readSchema(Ctx &c, const toml::node &n, void *) {
   if (n.value_exact<int64_t>() != 1)
     c.error(n.source(), "schema: this ncc reads machine descriptions of schema 1 (write schema = 1)");
+}
+
+// A lathe (`kind = "lathe"`): turning G codes of systems A and B (C has other codes for the
+// same functions, not tabled yet), X and Z axes; feed per revolution (G99) unless the
+// start-up list names a feed mode, as Fanuc-style lathes start.
+void latheChecks(Ctx &c, const toml::table &doc, Machine &m) {
+  if (m.controller.gcodeSystem == "C")
+    c.error(doc["controller"]["gcode_system"].node()->source(),
+            "gcode_system: lathe mode implements G-code systems A and B (system C is not supported)");
+  if (!m.axes[0].present || !m.axes[2].present) c.error({}, "a lathe (kind = \"lathe\") needs [axes.X] and [axes.Z]");
+  auto &st = m.controller.startup;
+  if (std::none_of(st.begin(), st.end(), [](ModeValue v) { return modeValueInfo(v).group == ModeGroup::FeedMode; }))
+    st.push_back(ModeValue::PerRev);
 }
 
 const KeyDef<Machine> kTopKeys[] = {
@@ -514,6 +530,7 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
                 "offset_numbers." + std::to_string(number) + ": tool " + std::to_string(edge.first) +
                     (tool == m.toolTable.end() ? " is not in [[tools]]" : " has no edge d = " + std::to_string(edge.second)));
     }
+    if (m.controller.lathe()) latheChecks(c, doc, m);
   }
   errors = std::move(c.problems);
   std::stable_sort(errors.begin(), errors.end(),

@@ -24,12 +24,14 @@ struct AxisLimits {
 struct ToolData {
   double length = 0;  // mm
   double radius = 0;  // mm
+  double xOffset = 0; // mm, lathe X offset (a radius: machine X), geometry plus wear
 };
 
 // One cutting edge (Sinumerik D number, Heidenhain/Fanuc offset) of a tool.
 struct ToolEdge {
   double length = 0, radius = 0;          // mm, geometry
   double lengthWear = 0, radiusWear = 0;  // mm, added to the geometry
+  double xOffset = 0, xWear = 0;          // mm, lathe X offset (radius, machine X) and its wear
 };
 
 struct Tool {
@@ -53,7 +55,9 @@ enum class ToolWrite : uint8_t { OnSelect, Immediate };
 struct Controller {
   std::string family = "iso";        // iso fanuc linuxcnc sinumerik heidenhain cldata
   std::string model;                 // free text, e.g. "840D sl"
+  std::string kind = "mill";         // "mill" or "lathe" (turning G codes, T0101, G18 plane)
   std::string gcodeSystem = "A";     // Fanuc lathe G-code system A, B or C
+  bool lathe() const { return kind == "lathe"; }
   std::string plane = "G17";         // start-up plane G17, G18, G19
   bool diameterProgramming = false;  // lathe: X words are diameters
   // Modal groups M2/M30 reset; without the key, rs274's set (G92, units and tool length stay).

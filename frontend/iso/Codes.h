@@ -21,6 +21,7 @@ enum class GKind : uint8_t {
   ModalMacro,    // G66 (arg 0: set a modal macro call, after each move) / G67 (arg 1: cancel)
   SubCall,       // G05 P<program> L<count>: subprogram call (808D); G05 without P, P0, P01 ignored
   Frame,         // G52 (local shift), G68/G69 (rotation), G51/G50 (scaling), G51.1/G50.1 (mirror); arg 1 on, 0 off
+  TurnCycle,     // G70-G73 multiple repetitive turning cycles (arg: the A-system code)
   NoOp,          // cancels a function ncc does not model and is always off (G15, G97, G291)
   Unsupported,   // known code that is not lowered yet: error with the description
 };
@@ -43,6 +44,9 @@ struct GCodeInfo {
 
 // Null when the code is unknown.
 const GCodeInfo *findGCode(int32_t code10);
+// A lathe's code (808D turning tables, G-code system 'A' or 'B'): null when the code is not a
+// turning code of that system (G43; G91 in system A …).
+const GCodeInfo *findTurningGCode(int32_t code10, char system);
 // The RS274NGC meaning of a code whose number means something else in findGCode's (808D) table.
 const GCodeInfo *findRs274GCode(int32_t code10);
 

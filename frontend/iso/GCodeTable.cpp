@@ -138,6 +138,73 @@ const GCodeInfo *findRs274GCode(int32_t code10) {
   return nullptr;
 }
 
+// The turning codes of G-code systems A and B (808D Tables 1-2, 1-4, the T column) whose meaning
+// differs from the milling table above: those of both systems, those of one, then the milling
+// codes each system has unchanged. Sorted by code10.
+static const GCodeInfo kTurningBoth[] = {
+    UNSUP(410, CutterComp, "tool nose radius compensation left"),
+    UNSUP(420, CutterComp, "tool nose radius compensation right"),
+    UNSUP(502, NonModal, "polygon turning off"),
+    UNSUP(512, NonModal, "polygon turning"),
+    UNSUP(680, NonModal, "turning coordinate rotation / double turret"),
+    NOOP(690, NonModal, "turning coordinate rotation off"),
+    SPECIAL(700, TurnCycle, NonModal, 70, "finishing cycle"),
+    SPECIAL(710, TurnCycle, NonModal, 71, "stock removal in turning"),
+    SPECIAL(720, TurnCycle, NonModal, 72, "stock removal in facing"),
+    SPECIAL(730, TurnCycle, NonModal, 73, "pattern repeating cycle"),
+    UNSUP(740, NonModal, "peck drilling / grooving along Z"),
+    UNSUP(750, NonModal, "peck grooving along X"),
+    UNSUP(760, NonModal, "multiple threading cycle"),
+    UNSUP(830, Motion, "face deep-hole drilling cycle (C axis)"),
+    UNSUP(840, Motion, "face tapping cycle (C axis)"),
+    UNSUP(850, Motion, "face boring cycle (C axis)"),
+    UNSUP(870, Motion, "side deep-hole drilling cycle (C axis)"),
+    UNSUP(880, Motion, "side tapping cycle (C axis)"),
+    UNSUP(890, Motion, "side boring cycle (C axis)"),
+};
+// System A: G50/G50.3 coordinate setting, G90/G92/G94 the single cycles, G98/G99 feed modes.
+static const GCodeInfo kTurningA[] = {
+    SPECIAL(500, SetOffset, NonModal, 1, "coordinate system setting"),
+    SPECIAL(503, SetOffset, NonModal, 2, "work coordinate system reset"),
+    MODE(900, Motion, TurnAlongZ, "longitudinal turning cycle"),
+    UNSUP(920, Motion, "thread cutting cycle"),
+    MODE(940, Motion, TurnAlongX, "face turning cycle"),
+    MODE(980, FeedMode, PerMinute, "feed per minute"),
+    MODE(990, FeedMode, PerRev, "feed per revolution"),
+};
+static const int32_t kSharedA[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 121, 131, 170, 180,
+                                   190, 200, 210, 270, 280, 300, 301, 310, 320, 340, 400, 520, 530,
+                                   540, 550, 560, 570, 580, 590, 600, 650, 660, 670, 800, 960, 970,
+                                   2900, 2910};
+// System B: G77/G78/G79 the single cycles; G90/G91 distance, G94/G95 feed modes, G92/G92.1
+// coordinate setting, G98/G99 return levels as in milling.
+static const GCodeInfo kTurningB[] = {
+    MODE(770, Motion, TurnAlongZ, "longitudinal turning cycle"),
+    UNSUP(780, Motion, "thread cutting cycle"),
+    MODE(790, Motion, TurnAlongX, "face turning cycle"),
+};
+static const int32_t kSharedB[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 121, 131, 170, 180, 190,
+                                   200, 210, 270, 280, 300, 301, 310, 330, 340, 400, 520, 530, 540, 550,
+                                   560, 570, 580, 590, 600, 650, 660, 670, 800, 900, 910, 920, 921, 940,
+                                   950, 960, 970, 980, 990, 2900, 2910};
+
+const GCodeInfo *findTurningGCode(int32_t code10, char system) {
+  auto own = [&](const auto &table) -> const GCodeInfo * {
+    for (auto &g : table)
+      if (g.code10 == code10) return &g;
+    return nullptr;
+  };
+  auto shared = [&](const auto &list) -> const GCodeInfo * {
+    for (int32_t c : list)
+      if (c == code10) return findGCode(code10);
+    return nullptr;
+  };
+  const bool b = system == 'B';
+  if (const GCodeInfo *g = b ? own(kTurningB) : own(kTurningA)) return g;
+  if (const GCodeInfo *g = own(kTurningBoth)) return g;
+  return b ? shared(kSharedB) : shared(kSharedA);
+}
+
 const GCodeInfo *findGCode(int32_t code10) {
   size_t lo = 0, hi = sizeof(kGCodes) / sizeof(kGCodes[0]);
   while (lo < hi) {

@@ -34,6 +34,8 @@ struct IsoOptions {
   double scaleWeighting = 0.001;        // G51 factor unit
   std::vector<ModeValue> startup;       // start-up modes: units, feed mode, motion as the block words' context
   OffsetMemory offsetMemory = OffsetMemory::None;
+  bool lathe = false;                   // machine [controller] kind = "lathe": turning codes, T0101, U/W
+  char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental) or 'B'
 };
 
 // Parses the main program file (already in sm) plus the subprograms it calls (same file after

@@ -31,7 +31,8 @@ std::string gName(int32_t code10) {
 }
 
 BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags)
-    : diags_(diags), flavour_(flavour), axesScaleEnable_(opts.axesScaleEnable), scaleWeighting_(opts.scaleWeighting) {
+    : diags_(diags), flavour_(flavour), axesScaleEnable_(opts.axesScaleEnable),
+      lathe_(opts.lathe && flavour == Flavour::Fanuc), system_(opts.latheSystem), scaleWeighting_(opts.scaleWeighting) {
   if (opts.decimalMode == "calculator") decimal_ = 0;
   else if (opts.decimalMode == "is-b") decimal_ = 1;
   else if (opts.decimalMode == "is-c") decimal_ = 2;
@@ -120,7 +121,13 @@ bool BlockLowerer::Block::classify() {
       if (w.value >= 0 && w.value < 100000) {  // range first: llround of huge values is undefined
         double t = w.value * 10;
         long long c10 = std::llround(t);
-        if (std::fabs(t - (double)c10) < 1e-6) gi = findGCode((int32_t)c10);
+        if (std::fabs(t - (double)c10) < 1e-6) gi = L.lathe_ ? findTurningGCode((int32_t)c10, L.system_) : findGCode((int32_t)c10);
+        if (!gi && L.lathe_ && std::fabs(t - (double)c10) < 1e-6 && findGCode((int32_t)c10)) {
+          L.diags_.error(w.loc, fmt::format("{} is not a turning G code (808D G-code system {})", gName((int32_t)c10), L.system_),
+                         "unknown-code");
+          ok = false;
+          continue;
+        }
       }
       if (gi && L.flavour_ != Flavour::RS274 && (gi->code10 == 70 || gi->code10 == 80))
         gi = nullptr;  // LinuxCNC's lathe diameter/radius modes; no such code in the 808D table
@@ -274,7 +281,8 @@ bool BlockLowerer::Block::setup() {
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
 
   if (nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S')) {
-    L.diags_.error(bw.get('S')->loc, "G92 S (spindle speed limit) is not supported", "unsupported-code");
+    L.diags_.error(bw.get('S')->loc, fmt::format("{} S (spindle speed limit) is not supported", gName(nonModal->code10)),
+                   "unsupported-code");
     return false;
   }
   if (macroCall) {
@@ -296,7 +304,9 @@ bool BlockLowerer::Block::setup() {
       emit(OpKind::Feed, f->loc).set("value", take('F', Scale::Feed));
     }
     if (bw.has('S')) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
-    if (bw.has('T')) {
+    if (bw.has('T') && L.lathe_) {
+      if (!latheTool()) return false;
+    } else if (bw.has('T')) {
       emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
     }
   }
@@ -387,6 +397,49 @@ bool BlockLowerer::Block::setup() {
   return true;
 }
 
+// A lathe's T word (Fanuc T, two digits tool, two digits offset): T0101 selects and mounts tool 1
+// and applies offset 1 (the X and Z offsets of tool 1's edge) at once, without G43; T0100
+// cancels the offset.
+bool BlockLowerer::Block::latheTool() {
+  IsoWord *t = bw.get('T');
+  if (t->expr || t->value < 0 || t->value != std::floor(t->value) || t->value > 9999) {
+    L.diags_.error(t->loc, "a lathe T word is a constant tool and offset number T<tt><oo> (T0101)", "bad-number");
+    return false;
+  }
+  bw.used |= Words::bit('T');
+  auto n = [&](int v) { return Expr::number(v, ir::Type::Int, t->loc); };
+  emit(OpKind::ToolSelect, t->loc).set("value", n((int)t->value / 100));
+  emit(OpKind::ToolChange, t->loc);
+  emit(OpKind::ToolLength, t->loc).set("h", n((int)t->value % 100));
+  return true;
+}
+
+// G-code system A of a lathe: U and W are the incremental X and Z (`ic`); X with U (Z with W) is
+// an error.
+bool BlockLowerer::Block::latheAxisWords(Op &op) {
+  if (L.system_ != 'A') {  // systems B and C program increments with G91
+    for (char c : std::string_view("UW"))
+      if (bw.has(c)) {
+        L.diags_.error(bw.get(c)->loc,
+                       fmt::format("{} in G-code system {}: the 808D manual does not say it is an increment (use G91)", c, L.system_),
+                       "unsupported-code");
+        return false;
+      }
+    return true;
+  }
+  std::string ic;
+  for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}}) {
+    if (bw.has(abs) && bw.has(inc)) {
+      L.diags_.error(bw.get(inc)->loc, fmt::format("{} and {} in one block ({} is the incremental {})", abs, inc, inc, abs),
+                     "duplicate-word");
+      return false;
+    }
+    if (bw.has(inc)) add(op, abs, take(inc, Scale::Linear)), ic += abs;
+  }
+  if (!ic.empty()) op.set("ic", Expr::symbol(ic, op.loc));
+  return true;
+}
+
 // The motion mode and the move (axis words, arc or cycle words).
 bool BlockLowerer::Block::motion() {
   modeOp(GGroup::Motion, "motion");
@@ -418,13 +471,14 @@ bool BlockLowerer::Block::motion() {
       SourceLoc loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
       Op op(OpKind::Move, loc);
       op.args.reserve((size_t)__builtin_popcount(bw.present));
-      axisWords(op, kAxes);
+      axisWords(op, L.lathe_ ? "XYZABCV" : kAxes);
+      if (L.lathe_ && !latheAxisWords(op)) return false;
       // RS274NGC polar coordinates: @ radius (a length), ^ angle in degrees, about the origin.
       if (bw.has('@')) add(op, "polar_r", take('@', Scale::Linear));
       if (bw.has('^')) add(op, "polar_a", take('^', Scale::None));
       // Arcs read I J K R; cycles read R (the clearance plane) only; G5/G5.1 I J (the first
       // control point, relative to the start).
-      for (char c : std::string_view(arc ? "IJKR" : cycle ? "R" : bezier ? "IJ" : "")) {
+      for (char c : std::string_view(arc ? "IJKR" : cycle || isTurnCycleMotion(m) ? "R" : bezier ? "IJ" : "")) {
         if (!bw.has(c)) continue;
         add(op, c, take(c, Scale::Linear));
       }
@@ -610,7 +664,7 @@ bool BlockLowerer::Block::finish() {
 
 bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
   Block blk(*this, b, out);
-  return blk.classify() && blk.setup() && blk.coordinateOps() && blk.motion() && blk.stops() &&
+  return blk.classify() && blk.setup() && blk.coordinateOps() && blk.turnCycle() && blk.motion() && blk.stops() &&
          blk.callsAndReturn() && blk.finish();
 }
 

@@ -13,6 +13,10 @@ struct CallRef {
   SourceLoc loc;
 };
 
+// Puts the labels the contour cycles (G70-G73, LowerTurning.cpp) of `f` name and checks the
+// contour blocks; false when an error was reported.
+bool placeContourLabels(ir::Function &f, Diagnostics &diags);
+
 class BlockLowerer {
 public:
   BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags);
@@ -32,6 +36,8 @@ private:
   Flavour flavour_;
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
   bool axesScaleEnable_ = false;  // G51 factors: I J K (else P)
+  bool lathe_ = false;            // turning codes, T0101, (system A) U/W incremental X/Z
+  char system_ = 'A';             // the lathe's G-code system
   double scaleWeighting_ = 0.001;
   ModeValue motion_ = ModeValue::Rapid;
   ModeValue pathMotion_ = ModeValue::Rapid;  // the last G0-G3 (Fanuc's G80 returns to it)

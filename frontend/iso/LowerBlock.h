@@ -163,10 +163,14 @@ struct BlockLowerer::Block {
                                            return w.letter == 'G' && !w.expr && w.value == 66;
                                          }) ? "G66" : "G65"; }
 
+  bool latheTool();                 // T0101 on a lathe
+  bool latheToolOffset(Op &op, SourceLoc loc);  // G10 P X Z R on a lathe (LowerFrames.cpp)
+  bool latheAxisWords(Op &op);      // U W on a lathe (system A)
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level
   bool cornerTaken = false;  // a ,C / ,R went to the move
   bool coordinateOps();  // G10/G92, G28/G30, G53
+  bool turnCycle();      // G70-G73 (LowerTurning.cpp)
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();
   bool stops();

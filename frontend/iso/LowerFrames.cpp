@@ -60,6 +60,37 @@ bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc
   return true;
 }
 
+// The 808D turning tool offset write G10 P X(U) Z(W) R(C) (manual L4297-4355): X Z R set, U W C
+// add; which of wear and geometry P names is the executor's (LatheTool). Q (the tool tip) is
+// not kept: ncc has no tool nose radius compensation.
+bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
+  if (!bw.has('P')) {
+    L.diags_.error(loc, "G10 needs a P word (the offset number) or L2 (a work offset)", "missing-word");
+    return false;
+  }
+  for (char c : std::string_view("QYV"))
+    if (bw.has(c)) {
+      L.diags_.error(bw.get(c)->loc,
+                     c == 'Q' ? std::string("G10 Q (the imaginary tool tip) is not kept: ncc has no tool nose radius compensation")
+                              : fmt::format("G10 {}: the lathe has no Y offset", c),
+                     "unsupported-code");
+      return false;
+    }
+  for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}, std::pair{'R', 'C'}})
+    if (bw.has(abs) && bw.has(inc)) {
+      L.diags_.error(bw.get(inc)->loc, fmt::format("G10: {} and {} in one block ({} adds to the offset {} sets)", abs, inc, inc, abs),
+                     "duplicate-word");
+      return false;
+    }
+  op.set("kind", Expr::symbol("lathe_tool", loc));
+  op.set("index", take('P', Scale::None));
+  for (char c : std::string_view("XZRUWC"))
+    if (bw.has(c)) add(op, c, take(c, Scale::Linear));
+  out.push_back(std::move(op));
+  axesTaken = true;
+  return frameOps();
+}
+
 // Non-modal codes that take the axis words for themselves: G10/G92, G28/G30, G53.
 bool BlockLowerer::Block::coordinateOps() {
   // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
@@ -68,6 +99,7 @@ bool BlockLowerer::Block::coordinateOps() {
   if (nonModal && nonModal->kind == GKind::SetOffset) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::SetOffset, loc);
+    if (nonModal->arg == 0 && L.lathe_ && !bw.has('L')) return latheToolOffset(op, loc);
     if (nonModal->arg == 0) {  // G10 L<n> P<n>
       IsoWord *l = bw.get('L');
       int lv = l && !l->expr && l->value >= 0 && l->value < 100 ? (int)l->value : -1;
@@ -105,6 +137,7 @@ bool BlockLowerer::Block::coordinateOps() {
     if (nonModal->arg == 2 && bw.has('P')) ref = take('P', Scale::None);  // G30 P3
     op.set("ref", std::move(ref));
     axisWords(op, kOffsetAxes);
+    if (L.lathe_ && !latheAxisWords(op)) return false;  // G28 U0 W0: home from where the tool is
     out.push_back(std::move(op));
     axesTaken = true;
   }

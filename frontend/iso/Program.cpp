@@ -525,6 +525,7 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
     }
     if (!pp.parseFile(fid, c.callee)) ok = false;
   }
+  for (auto &f : out.functions) ok &= placeContourLabels(f, diags);
   ok &= checkGotoTargets(out, diags);
   return ok && pp.ok();
 }

@@ -75,6 +75,8 @@ bool isoIsStreamable(std::string_view text) {
       while (r < le && *r >= '0' && *r <= '9' && digits < 9) v = v * 10 + (*r++ - '0'), ++digits;
       if (L == 'M' && (v == 98 || v == 99)) return false;
       if (L == 'G' && (v == 65 || v == 66 || v == 5) && (r >= le || *r != '.')) return false;
+      // Lathe contour cycles G70-G73 run a block range (also G73 of a mill: playing safe).
+      if (L == 'G' && v >= 70 && v <= 73 && (r >= le || *r != '.')) return false;
     }
     p = nl ? nl + 1 : end;
   }

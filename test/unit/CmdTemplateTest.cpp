@@ -30,6 +30,8 @@ ExprPtr valueFor(OpKind op, const std::string &key) {
       {"slot", "rotation"}, {"action", "set"}, {"form", "axis"}, {"ic", "X"}, {"ac", "Y"}, {"way", "shortest"},
   };
   if (key == "text") return Expr::string("x");
+  if (op == OpKind::Contour && key == "action") return Expr::symbol("end");
+  if (key == "use") return Expr::symbol("pattern");
   if (key == "rapid") return Expr::boolean(false);
   if (key == "kind") {
     const char *k = op == OpKind::Stop ? "end" : op == OpKind::SetOffset ? "g92" : "debug";

@@ -93,6 +93,8 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.offsetMemory = machine.controller.offsetMemory;
   fo.scaleWeighting = machine.controller.scaleWeighting;
   fo.startup = machine.controller.startup;
+  fo.lathe = machine.controller.lathe();
+  fo.latheSystem = machine.controller.gcodeSystem.empty() ? 'A' : machine.controller.gcodeSystem[0];
   for (unsigned l : opts.blockDelete)
     if (l <= 9) fo.blockDeleteMask |= 1u << l;
   fo.searchDirs.push_back(std::filesystem::path(sm.name(file)).parent_path().string());

@@ -6,6 +6,7 @@ usage: equiv.py NCC SRC_ROOT
 """
 import glob
 import os
+import re
 import subprocess
 import sys
 
@@ -19,6 +20,12 @@ def run(prog, engine):
     oracle = os.path.join(os.path.dirname(prog), "Inputs", "oracle.toml")
     if os.path.exists(oracle):
         args.append("--machine=" + oracle)
+    else:  # a program whose RUN lines name a machine (the lathes) runs on it
+        with open(prog, errors="replace") as f:
+            m = re.search(r"--machine=(%srcroot|%S)/(\S+)", f.read())
+        if m:
+            base = root if m.group(1) == "%srcroot" else os.path.dirname(prog)
+            args.append("--machine=" + os.path.join(base, m.group(2)))
     p = subprocess.run(args, capture_output=True, text=True, timeout=120)
     first_error = next((l for l in p.stderr.splitlines() if ": error: " in l), "")
     return p.returncode, p.stdout, first_error

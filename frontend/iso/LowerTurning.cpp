@@ -1,0 +1,188 @@
+// The ISO lowering of the lathe's multiple repetitive cycles G70-G73 (808D manual 1.5.1, spec
+// seed001 3.2) onto contour capture (docs/IR.md `contour`):
+//
+//   G71 U<depth> R<retract>            contour action=data use=rough_z U R
+//   G71 P<ns> Q<nf> U<du> W<dw> F S T  (feed, speed, tool as usual, then)
+//                                      contour action=begin
+//                                      call_section from="N<ns>" to="N<nf>_to"
+//                                      contour action=end use=rough_z U W
+//                                      goto label="N<nf>_end"
+//
+// G72 (rough_x, W<depth> R), G73 (pattern, U W R: relief and divisions) alike; G70 P Q is
+// use=finish without the goto. The blocks ns..nf run inside the capture; after G71-G73 the
+// program goes on after block nf (the contour was only read), after G70 with the next block.
+// placeContourLabels puts the labels (N<ns> before block ns, N<nf>_to after block nf's block op,
+// N<nf>_end after its ops) and checks what the contour blocks may hold.
+#include "frontend/iso/LowerBlock.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+namespace ncc::iso {
+
+namespace {
+const char *const kUses[] = {"finish", "rough_z", "rough_x", "pattern"};  // G70..G73
+// The first block's words (G71 U R, G72 W R, G73 U W R); G70 has none.
+const char *const kDataWords[] = {"", "UR", "WR", "UWR"};
+}  // namespace
+
+bool BlockLowerer::Block::turnCycle() {
+  if (!nonModal || nonModal->kind != GKind::TurnCycle) return true;
+  const SourceLoc loc = gloc(GGroup::NonModal);
+  const int code = nonModal->arg;
+  const char *use = kUses[code - 70];
+  axesTaken = true;  // U W are the cycle's; stray X Z are unused words
+  if (G(GGroup::Motion)) {
+    L.diags_.error(gloc(GGroup::Motion), fmt::format("G{} must not share its block with {}", code, gName(G(GGroup::Motion)->code10)),
+                   "modal-group-conflict");
+    return false;
+  }
+  if (!bw.has('P') && !bw.has('Q')) {
+    if (code == 70) {
+      L.diags_.error(loc, "G70 needs P and Q (the first and last contour block)", "missing-word");
+      return false;
+    }
+    Op &op = emit(OpKind::Contour, loc);
+    op.set("action", Expr::symbol("data", loc));
+    op.set("use", Expr::symbol(use, loc));
+    for (const char *w = kDataWords[code - 70]; *w; ++w) {
+      if (!bw.has(*w)) {
+        L.diags_.error(loc, fmt::format("G{} {} needs {} (the cycle data block)", code, kDataWords[code - 70], *w),
+                       "missing-word");
+        return false;
+      }
+      // G73 R is a count (divisions); the others lengths.
+      add(op, *w, take(*w, code == 73 && *w == 'R' ? Scale::None : Scale::Linear));
+    }
+    return true;
+  }
+  long long range[2];
+  for (int i = 0; i < 2; ++i) {
+    char c = "PQ"[i];
+    IsoWord *w = bw.get(c);
+    if (!w) {
+      L.diags_.error(loc, fmt::format("G{} needs P and Q (the first and last contour block)", code), "missing-word");
+      return false;
+    }
+    if (w->expr || w->value < 0 || w->value != std::floor(w->value) || w->value > 99999999) {
+      L.diags_.error(w->loc, fmt::format("G{} {} must be a constant block number", code, c), "syntax");
+      return false;
+    }
+    bw.used |= Words::bit(c);
+    range[i] = (long long)w->value;
+  }
+  if (!L.allowCalls) {
+    L.diags_.error(loc, fmt::format("G{} needs the whole program (not streamable)", code), "not-streamable");
+    return false;
+  }
+  emit(OpKind::Contour, loc).set("action", Expr::symbol("begin", loc));
+  Op &sec = emit(OpKind::CallSection, loc);
+  sec.set("from", Expr::string(fmt::format("N{}", range[0]), loc));
+  sec.set("to", Expr::string(fmt::format("N{}_to", range[1]), loc));
+  Op &end = emit(OpKind::Contour, loc);
+  end.set("action", Expr::symbol("end", loc));
+  end.set("use", Expr::symbol(use, loc));
+  if (code != 70)
+    for (char c : std::string_view("UW"))
+      if (bw.has(c)) add(end, c, take(c, Scale::Linear));
+  if (code != 70) emit(OpKind::Goto, loc).set("label", Expr::string(fmt::format("N{}_end", range[1]), loc));
+  return true;
+}
+
+namespace {
+
+// What the 808D forbids in the contour blocks (manual 1.5.1 "Restrictions" 3): one-shot G codes
+// other than G04, group-01 codes other than G00-G03, group 06 (inch/metric).
+const char *forbiddenContourOp(const Op &op) {
+  switch (op.kind) {
+  case OpKind::Home: return "a reference point return (G28/G30)";
+  case OpKind::MachineMove: return "G53";
+  case OpKind::SetOffset: return "a coordinate or offset setting (G10/G50)";
+  case OpKind::Frame: return "G52";
+  case OpKind::Contour: return "a contour cycle (G70-G73)";
+  case OpKind::Stop:
+    if (const Expr *k = op.get("kind"); k && (k->str == "end" || k->str == "end_rewind")) return "a program end (M2/M30)";
+    return nullptr;
+  case OpKind::Mode:
+    if (op.get("units")) return "G20/G21";
+    if (const Expr *m = op.get("motion"))
+      if (m->str != "rapid" && m->str != "linear" && m->str != "arc_cw" && m->str != "arc_ccw") return "a motion code other than G00-G03";
+    return nullptr;
+  case OpKind::Call:
+    if (const Expr *f = op.get("frame"); f && f->str == "new") return "G65";
+    return nullptr;
+  default: return nullptr;
+  }
+}
+
+bool checkContourOp(const Op &op, Diagnostics &diags) {
+  bool ok = true;
+  if (const char *what = forbiddenContourOp(op)) {
+    diags.error(op.loc, fmt::format("{} is not allowed in the contour blocks of G70-G73", what), "contour-invalid");
+    ok = false;
+  }
+  for (auto &sub : op.regions)
+    for (auto &inner : sub) ok &= checkContourOp(inner, diags);
+  return ok;
+}
+
+long long blockNumber(const Op &op) {
+  const Expr *n = op.kind == OpKind::Block ? op.get("n") : nullptr;
+  return n ? (long long)n->num : -1;
+}
+
+}  // namespace
+
+bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
+  // The ranges the function's contour cycles name (top level only: they follow the program).
+  struct Range {
+    long long from, to;
+    SourceLoc loc;
+  };
+  std::vector<Range> ranges;
+  for (auto &op : f.body)
+    if (op.kind == OpKind::CallSection)
+      ranges.push_back({std::stoll(op.get("from")->str.substr(1)), std::stoll(op.get("to")->str.substr(1)), op.loc});  // N<n>, N<n>_to
+  if (ranges.empty()) return true;
+  Region &body = f.body;
+  std::map<long long, size_t> at;  // block number -> index of its block op (the first one)
+  for (size_t i = 0; i < body.size(); ++i)
+    if (long long n = blockNumber(body[i]); n >= 0) at.emplace(n, i);
+  bool ok = true;
+  // Labels to insert before op index: (index, name), later sorted from the back.
+  std::vector<std::pair<size_t, std::string>> labels;
+  for (auto &r : ranges) {
+    auto a = at.find(r.from), b = at.find(r.to);
+    for (auto [it, n] : {std::pair{a, r.from}, std::pair{b, r.to}})
+      if (it == at.end()) {
+        diags.error(r.loc, fmt::format("there is no block N{} in this program (outside control structures)", n),
+                    "missing-block");
+        ok = false;
+      }
+    if (a == at.end() || b == at.end()) continue;
+    if (a->second > b->second) {
+      diags.error(r.loc, fmt::format("the contour block N{} comes after N{}", r.from, r.to), "contour-invalid");
+      ok = false;
+      continue;
+    }
+    size_t endAt = b->second + 1;
+    while (endAt < body.size() && body[endAt].kind != OpKind::Block) ++endAt;
+    for (size_t i = a->second; i < endAt; ++i) ok &= checkContourOp(body[i], diags);
+    labels.push_back({a->second, fmt::format("N{}", r.from)});
+    labels.push_back({b->second + 1, fmt::format("N{}_to", r.to)});  // a section's last block starts at its label
+    labels.push_back({endAt, fmt::format("N{}_end", r.to)});
+  }
+  std::sort(labels.begin(), labels.end(), [](auto &x, auto &y) { return x.first > y.first || (x.first == y.first && x.second > y.second); });
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  for (auto &[i, name] : labels) {
+    SourceLoc loc = i < body.size() ? body[i].loc : f.loc;
+    Op label(OpKind::Label, loc);
+    label.set("name", Expr::string(name, loc));
+    body.insert(body.begin() + (long)i, std::move(label));
+  }
+  return ok;
+}
+
+}  // namespace ncc::iso

@@ -1,0 +1,188 @@
+// Contour capture (MachineCmd Contour, docs/IR.md `contour`): between `begin` and `end` the
+// executor runs the blocks as usual, but their records go to a capture instead of the sinks
+// (RouteSink); `end` hands the captured path to a consumer: Finish replays it as it ran (ISO G70),
+// the roughing consumers (G71 G72 G73, runtime/cycles/Turning.h) put the modal state back (the
+// blocks were only read) and cut from the contour. Every consumer ends at the start point.
+#include "runtime/ExecutorImpl.h"
+#include "runtime/Geometry.h"
+#include "runtime/cycles/Turning.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace ncc {
+
+namespace {
+const char *const kUseNames[] = {"contour.finish", "contour.rough_z", "contour.rough_x", "contour.pattern"};
+
+// What a record inside a contour may be: motion becomes an element, state records are read
+// (their effect is in the captured feeds), the rest has no place in a contour.
+const char *forbiddenInContour(RecordKind k) {
+  switch (k) {
+  case RecordKind::Spline: return "a spline";
+  case RecordKind::CycleBegin: return "a canned cycle";
+  case RecordKind::FrameChange: return "a change of the coordinate system";
+  case RecordKind::ProgramEnd: case RecordKind::ProgramStop: case RecordKind::OptionalStop: return "a program stop";
+  case RecordKind::ToolLength: case RecordKind::ToolChange: return "a tool change or tool offset";
+  case RecordKind::Plane: return "a plane change";
+  default: return nullptr;
+  }
+}
+}  // namespace
+
+bool Executor::Impl::contourData(const MachineCmd &c) {
+  switch ((ContourUse)c.sub2) {
+  case ContourUse::RoughAlongZ:
+  case ContourUse::RoughAlongX: {
+    // G71 U<depth> R<retract> / G72 W<depth> R<retract>: radius values, shared by both (808D
+    // user data _ZSFI[30], _ZSFI[31]).
+    Word w = c.has(Word::U) ? Word::U : Word::W;
+    if (!c.has(w) || !c.has(Word::R)) return error("the cycle data block needs the depth of cut and R (retract)", "missing-word");
+    roughDepth = c.get(w) * scale();
+    roughRetract = c.get(Word::R) * scale();
+    if (roughDepth <= 0) return error("the depth of cut must be greater than 0", "bad-number");
+    if (roughRetract < 0) return error("the retract amount R must not be negative", "bad-number");
+    roughSet = true;
+    return true;
+  }
+  case ContourUse::PatternRepeat:
+    // G73 U<relief X> W<relief Z> R<divisions> (808D _ZSFI[32..34]); the relief is a radius.
+    if (!c.has(Word::U) || !c.has(Word::W) || !c.has(Word::R))
+      return error("the pattern data block needs U (X relief), W (Z relief) and R (divisions)", "missing-word");
+    patternReliefX = c.get(Word::U) * scale();
+    patternReliefZ = c.get(Word::W) * scale();
+    patternCount = c.get(Word::R);
+    if (patternCount < 1 || patternCount != std::floor(patternCount) || patternCount > 10000)
+      return error("the number of divisions R must be an integer of at least 1", "bad-number");
+    patternSet = true;
+    return true;
+  default: return error("the finishing consumer takes no data", "syntax");
+  }
+}
+
+bool Executor::Impl::execContour(const MachineCmd &c) {
+  switch ((ContourAction)c.sub) {
+  case ContourAction::Data: return contourData(c);
+  case ContourAction::Begin:
+    if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
+    if (linearFrame()) return error("contour cycles under a rotation, scaling or mirror are not supported", "unsupported-code");
+    if (comp.active()) return error("contour cycles with cutter compensation on are not supported", "unsupported-code");
+    cornerFlush("a contour begins");
+    capture.active = true;
+    capture.loc = loc;
+    capture.records.clear();
+    capture.st = st;
+    capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX;
+    capture.lastPath = lastPath;
+    capture.blockNumber = blockNumber, capture.blockLoc = blockLoc;
+    route.capture = &capture.records;
+    return true;
+  case ContourAction::End:
+    if (!capture.active) return error("a contour ends that did not begin", "contour-invalid");
+    if (corner.active || corner.requested)
+      return error("the last contour move must not end in a chamfer or rounding", "contour-invalid");
+    route.capture = nullptr;
+    capture.active = false;
+    return contourConsume(c);
+  }
+  return error("bad contour action", "contour-invalid");
+}
+
+bool Executor::Impl::contourConsume(const MachineCmd &c) {
+  const ContourUse use = (ContourUse)c.sub2;
+  const AxisVec start = capture.st.position;
+  if (use == ContourUse::Finish) {
+    // The blocks ran for real (their F, S, T count): their records go out now, then back to the
+    // start point at rapid.
+    for (auto &r : capture.records) sink.record(r);
+    blockNumber = capture.blockNumber, blockLoc = capture.blockLoc;
+    return moveTo(RecordKind::Rapid, start);
+  }
+  // Roughing: the blocks were only read; the state comes back as it was at the start.
+  SourceLoc at = loc;
+  const PlaneAxes ax = planeAxes(plane());
+  Contour ct;
+  ct.start = {start[ax.u], start[ax.v]};
+  for (auto &r : capture.records) {
+    if (const char *what = forbiddenInContour(r.kind)) {
+      diags.error(r.loc, fmt::format("{} is not allowed inside a contour", what), "contour-invalid");
+      return false;
+    }
+    if (r.kind != RecordKind::Rapid && r.kind != RecordKind::Linear && r.kind != RecordKind::Arc) continue;
+    for (int i = 0; i < kAxes; ++i)
+      if (i != ax.u && i != ax.v && std::fabs(r.end[i] - r.start[i]) > 1e-9) {
+        diags.error(r.loc, "a contour move leaves the plane of the contour", "contour-invalid");
+        return false;
+      }
+    ContourElem e;
+    e.kind = r.kind == RecordKind::Rapid ? ContourKind::Rapid : r.kind == RecordKind::Linear ? ContourKind::Line : ContourKind::Arc;
+    e.end = {r.end[ax.u], r.end[ax.v]};
+    e.feed = r.feed;
+    e.loc = r.loc;
+    if (r.kind == RecordKind::Arc) {
+      if (r.tiltedArc() || r.plane != plane() || std::abs(r.turns) != 1) {
+        diags.error(r.loc, "a contour arc must lie in the active plane and turn less than once", "contour-invalid");
+        return false;
+      }
+      e.centre = {r.center[ax.u], r.center[ax.v]};
+      e.ccw = r.turns > 0;
+    }
+    ct.elems.push_back(e);
+  }
+  st = capture.st;
+  feedMM = capture.feedMM, toolLength = capture.toolLength, toolOffsetX = capture.toolOffsetX;
+  lastPath = capture.lastPath;
+  blockNumber = capture.blockNumber, blockLoc = capture.blockLoc;
+  loc = at;
+  std::vector<ContourElem> moves;
+  std::string err;
+  // Plane coordinates of X and Z: the turning consumers need the ZX plane.
+  if (plane() != Plane::ZX) return error("turning contour cycles need the ZX plane (G18)", "unsupported-code");
+  const int ix = 1, iz = 0;  // G18: a = Z, b = X
+  // The finishing allowance: U along X (a diameter when X is), W along Z, signed as programmed.
+  double allowance[2] = {0, 0};
+  allowance[ix] = c.has(Word::U) ? c.get(Word::U) * axisScale(0) : 0.0;
+  allowance[iz] = c.has(Word::W) ? c.get(Word::W) * scale() : 0.0;
+  if (use == ContourUse::PatternRepeat) {
+    if (!patternSet) return error("G73 needs its data block first (U W R: relief and divisions)", "missing-word");
+    PatternRepeat p;
+    p.count = (int)patternCount;
+    // The relief is along X and Z; in the plane's coordinates.
+    double rel[2] = {0, 0};
+    rel[ix] = patternReliefX, rel[iz] = patternReliefZ;
+    p.relief = {rel[0], rel[1]};
+    p.allowance = {allowance[0], allowance[1]};
+    if (!patternRepeat(ct, p, moves, err)) return error(err, "contour-invalid");
+  } else {
+    if (!roughSet) return error("stock removal needs its data block first (depth of cut and retract)", "missing-word");
+    StockRemoval s;
+    s.cutAxis = use == ContourUse::RoughAlongZ ? iz : ix;
+    s.cutName = use == ContourUse::RoughAlongZ ? "Z" : "X";
+    s.depth = roughDepth, s.retract = roughRetract;
+    s.allowance = {allowance[0], allowance[1]};
+    if (!stockRemoval(ct, s, moves, err)) return error(err, "contour-invalid");
+  }
+  MotionRecord begin = record(RecordKind::CycleBegin);
+  begin.text = kUseNames[(int)use];
+  emit(begin);
+  for (auto &m : moves) {
+    AxisVec to = st.position;
+    to[ax.u] = m.end.a, to[ax.v] = m.end.b;
+    bool ok = true;
+    switch (m.kind) {
+    case ContourKind::Rapid: ok = moveTo(RecordKind::Rapid, to); break;
+    case ContourKind::Line: ok = checkFeed("G1") && moveTo(RecordKind::Linear, to); break;
+    case ContourKind::Arc: {
+      Vec3 centre = {st.position[0], st.position[1], st.position[2]};
+      centre[ax.u] = m.centre.a, centre[ax.v] = m.centre.b;
+      ok = checkFeed("G2/G3") && emitArc(to, centre, planeNormal(plane()), m.ccw ? 1 : -1);
+      break;
+    }
+    }
+    if (!ok) return false;
+  }
+  emit(record(RecordKind::CycleEnd));
+  return true;
+}
+
+}  // namespace ncc

@@ -1,0 +1,50 @@
+// Lathe single cycles (808D G90 and G94 of system A, G77 and G79 of B, spec seed001 3.1): modal in group 01; each move
+// block runs four steps from the current point A in the ZX plane and ends at A again. G90 (turn
+// along Z): rapid across to the end X (plus the taper R at A's Z), feed to the end point, feed
+// out across to A's X, rapid back along Z. G94 (along X): rapid along Z to the end Z (plus R),
+// feed to the end point, feed out along Z to A's Z, rapid back across to A's X. A repeat block
+// gives only what changes: the other end coordinate and R stay from the cycle before.
+#include "runtime/ExecutorImpl.h"
+
+#include <cmath>
+
+namespace ncc {
+
+bool Executor::Impl::turnCycle(const MachineCmd &c) {
+  const bool alongZ = st.motion == ModeValue::TurnAlongZ;
+  const char *code = alongZ ? "G90 (G77)" : "G94 (G79)";  // systems A (B)
+  if (plane() != Plane::ZX) return error(std::string(code) + " needs the ZX plane (G18)", "unsupported-code");
+  if (linearFrame()) return error(std::string(code) + " under a rotation, scaling or mirror is not supported", "unsupported-code");
+  if (!compForbids("Cannot use turning cycles with cutter compensation on")) return false;
+  if (c.mask & kAxisMask & ~(wordBit(Word::X) | wordBit(Word::Z)))
+    return error(std::string(code) + " takes X (U), Z (W) and R", "unsupported-code");
+  if (!(c.mask & (wordBit(Word::X) | wordBit(Word::Z)))) {
+    if (c.has(Word::R)) return error(std::string(code) + " needs X (U) or Z (W)", "missing-word");
+    return true;
+  }
+  if (!checkFeed(code)) return false;
+  const AxisVec a = st.position;
+  AxisVec e = target(c);
+  if (turnSet) {  // a repeat: the words not given keep the last cycle's end point
+    if (!c.has(Word::X)) e[0] = turnEnd[0];
+    if (!c.has(Word::Z)) e[2] = turnEnd[2];
+  } else {
+    turnTaper = 0;
+    if (!c.has(Word::X) || !c.has(Word::Z))
+      return error(std::string(code) + " needs both end point words, X (U) and Z (W), in its first block", "missing-word");
+  }
+  if (c.has(Word::R)) turnTaper = c.get(Word::R) * scale();  // a radius (G90) / Z length (G94)
+  turnEnd = e, turnSet = true;
+  MotionRecord begin = record(RecordKind::CycleBegin);
+  begin.text = alongZ ? "iso.turn_z" : "iso.turn_x";
+  emit(begin);
+  AxisVec p1 = a, p3 = e;
+  if (alongZ) p1[0] = e[0] + turnTaper, p3[0] = a[0];
+  else p1[2] = e[2] + turnTaper, p3[2] = a[2];
+  bool ok = moveTo(RecordKind::Rapid, p1) && moveTo(RecordKind::Linear, e) && moveTo(RecordKind::Linear, p3) &&
+            moveTo(RecordKind::Rapid, a);
+  emit(record(RecordKind::CycleEnd));
+  return ok;
+}
+
+}  // namespace ncc

@@ -1,0 +1,8 @@
+(The engines test runs this on --machine=%S/lathe0.toml)
+G18 G99 S1000 G0 X60. Z5.
+G71 U3. R0.5
+G71 P10 Q30 U1. W0.5 F0.2
+N10 G0 X20.
+N20 G1 Z-10.
+N30 X10. Z-20.
+M30
