@@ -190,6 +190,69 @@ bool sinCycle86(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
   return true;
 }
 
+// ISO metric coarse threads: the pitch of M<d> (CYCLE840 MPIT, DIN 13-1).
+double metricCoarsePitch(double d) {
+  static const double kPitch[][2] = {{3, 0.5},   {4, 0.7},   {5, 0.8},   {6, 1},   {8, 1.25}, {10, 1.5}, {12, 1.75},
+                                     {14, 2},    {16, 2},    {18, 2.5},  {20, 2.5}, {22, 2.5}, {24, 3},   {27, 3},
+                                     {30, 3.5},  {33, 3.5},  {36, 4},    {39, 4},   {42, 4.5}, {45, 4.5}, {48, 5}};
+  for (auto &p : kPitch)
+    if (p[0] == d) return p[1];
+  return 0;
+}
+
+// CYCLE840 (seed000c, [model]), tapping with a compensating chuck: in from RFP + SDIS to the depth at
+// the tapping feed, the spindle reversed (SDR 3/4, 0: the other way), out to RFP + SDIS, the
+// spindle as SDAC says (3 M3, 4 M4, 5 M5), rapid to RTP. ENC: 1 feed as programmed, dwell at the
+// depth; 11 feed S x pitch (MPIT or PIT), dwell at the depth; 0 (with encoder, G33) feed
+// S x pitch, no dwell; 20 as 0 with the dwell after the retraction.
+bool sinCycle840(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  SinHole s;
+  if (!sinLevels(a, ctx, s, err)) return false;
+  if (ctx.spindle == 0) return fail(err, "CYCLE840 needs the spindle turning (M3/M4) before the cycle");
+  const int enc = (int)a.get("ENC"), sdr = (int)a.get("SDR"), sdac = a.has("SDAC") ? (int)a.get("SDAC") : 5;
+  if (enc != 0 && enc != 1 && enc != 11 && enc != 20) return fail(err, "ENC must be 0, 1, 11 or 20");
+  if (sdr != 0 && sdr != 3 && sdr != 4) return fail(err, "SDR (retraction direction) must be 0, 3 or 4");
+  if (sdac != 3 && sdac != 4 && sdac != 5) return fail(err, "SDAC (direction after the cycle) must be 3, 4 or 5");
+  if (a.get("_PITA") != 0 && a.get("_PITA") != 1) return fail(err, "_PITA other than mm (0, 1) is not supported");
+  if (a.get("_TECHNO") != 0) return fail(err, "_TECHNO (exact stop, feedforward, acceleration settings) is not supported");
+  double feed = ctx.feed;
+  if (enc != 1) {
+    double pitch = a.get("PIT");
+    if (a.has("MPIT") && a.get("_PITA") == 0) {
+      pitch = metricCoarsePitch(a.get("MPIT"));
+      if (pitch == 0) return fail(err, "MPIT must be an ISO metric size 3..48 (M3..M48)");
+    }
+    if (!(pitch > 0)) return fail(err, "MPIT or PIT (the thread pitch) is required");
+    if (!(ctx.speed > 0)) return fail(err, "CYCLE840 needs a spindle speed: the feed is S x pitch");
+    feed = ctx.speed * pitch;
+  } else if (!(feed > 0)) {
+    return fail(err, "CYCLE840 with ENC 1 taps at the programmed feed: program F first");
+  }
+  double dwell = -1;
+  if (enc == 1 || enc == 11 || enc == 20)
+    if (!sinDwell(a, "DTB", 2, ctx, dwell, err)) return false;
+  const PlaneAxes ax = planeAxes((Plane)s.plane);
+  auto step = [&](CycleStepKind k, double level, double f = 0, double secs = 0) {
+    CycleStep st;
+    st.kind = k;
+    st.pos = ctx.position;
+    st.pos[ax.n] = level;
+    st.feed = f, st.seconds = secs;
+    out.push_back(st);
+  };
+  auto spin = [&](int dir) { step(dir == 3 ? CycleStepKind::SpindleCW : dir == 4 ? CycleStepKind::SpindleCCW
+                                                                               : CycleStepKind::SpindleStop, 0); };
+  if (ctx.position[ax.n] != s.start) step(CycleStepKind::Rapid, s.start);
+  step(CycleStepKind::Feed, s.bottom, feed);
+  if (enc != 20 && dwell >= 0) step(CycleStepKind::Dwell, 0, 0, dwell);
+  spin(sdr ? sdr : ctx.spindle == 1 ? 4 : 3);
+  step(CycleStepKind::Feed, s.start, feed);
+  if (enc == 20 && dwell >= 0) step(CycleStepKind::Dwell, 0, 0, dwell);
+  spin(sdac);
+  step(CycleStepKind::Rapid, s.rtp);
+  return true;
+}
+
 // ---- Heidenhain drilling cycles (seed002a 200, 201, 203): levels as heiLevels (Entry.h); depth
 // 0: the cycle does nothing.
 double heiDwell(const CycleArgs &a, const char *k) { return a.get(k) > 0 ? a.get(k) : -1; }
@@ -407,6 +470,8 @@ const CycleDef kHoleEntries[] = {
     {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr},
     {"sin.CYCLE86", "RTP RFP SDIS DP DPR DTB SDIR RPA RPO RPAP POSS _GMODE _DMODE _AMODE",
      "Sinumerik boring with oriented stop and lift-off", sinCycle86, nullptr},
+    {"sin.CYCLE840", "RTP RFP SDIS DP DPR DTB SDR SDAC ENC MPIT PIT _AXN _PITA _TECHNO _PITM _PTAB _PTABA _GMODE _DMODE _AMODE",
+     "Sinumerik tapping with a compensating chuck", sinCycle840, nullptr},
     {"sin.HOLES1", "SPCA SPCO STA1 FDIS DBH NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik row of holes", nullptr,
      sinHoles1},
     {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
