@@ -83,12 +83,12 @@ void Executor::Impl::noteFrame(const char *what) {
   emit(r);
 }
 
-bool Executor::Impl::orientSpindle(double angle, int way, double wait) {
+bool Executor::Impl::orientSpindle(double angle, int way, double wait, bool inCycle) {
   if (way < 0 || way > 2) return error("bad spindle orientation way", "bad-command");
   if (!std::isfinite(angle) || !(wait >= 0)) return error("bad spindle orientation angle or wait", "bad-command");
   MotionRecord r = record(RecordKind::SpindleOrient);
   r.value = angle, r.ivalue = way, r.value2 = wait;
-  st.spindle = 0;  // oriented = stopped: M3/M4 start it again
+  if (!inCycle) st.spindle = 0;  // oriented = stopped: M3/M4 start it again (a cycle does itself)
   emit(r);
   return true;
 }

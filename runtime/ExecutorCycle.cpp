@@ -204,12 +204,7 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
     case CycleStepKind::SpindleStop: emit(record(RecordKind::SpindleStop)); break;
     case CycleStepKind::SpindleCW: emit(record(RecordKind::SpindleCW)); break;
     case CycleStepKind::SpindleCCW: emit(record(RecordKind::SpindleCCW)); break;
-    case CycleStepKind::SpindleOrient: {  // the cycle turns the spindle on again before it ends
-      MotionRecord r = record(RecordKind::SpindleOrient);
-      r.value = s.angle, r.ivalue = 2;
-      emit(r);
-      break;
-    }
+    case CycleStepKind::SpindleOrient: orientSpindle(s.angle, 2, 0, true); break;
     }
   }
   if (rate != feedMM) {

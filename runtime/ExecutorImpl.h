@@ -174,8 +174,9 @@ struct Executor::Impl {
   void cornerRelease(const MotionRecord &first, const MotionRecord *elem);
   // Emits a programmed motion record, through cutter compensation when it is on.
   bool emitMove(const MotionRecord &r);
-  // An oriented spindle stop (M19, cycles): the spindle stops at `angle` degrees.
-  bool orientSpindle(double angle, int way, double wait);
+  // An oriented spindle stop (M19, cycles): the spindle stops at `angle` degrees. A cycle turns
+  // the spindle on again itself (`inCycle`: the modal spindle state stays).
+  bool orientSpindle(double angle, int way, double wait, bool inCycle = false);
   bool error(std::string msg, std::string rule) {
     diags.error(loc, std::move(msg), std::move(rule));
     return false;

@@ -10,8 +10,8 @@ class Writer {
 public:
   Writer(std::vector<CycleStep> &out, int a1, int a2, int d, double p1, double p2)
       : out_(out), a1_(a1), a2_(a2), d_(d), p1_(p1), p2_(p2) {}
-  void rapid(double level) { move(CycleStepKind::Rapid, level, 0); }
-  void feed(double level, double f) { move(CycleStepKind::Feed, level, f); }
+  void rapid(double level) { at(level, nullptr); }
+  void feed(double level, double f) { at(level, nullptr, CycleStepKind::Feed, f); }
   void go(double level, bool rapidMove, double f) { rapidMove ? rapid(level) : feed(level, f); }
   void dwell(double s) {
     if (s < 0) return;
@@ -32,42 +32,25 @@ public:
     st.angle = angle;
     out_.push_back(st);
   }
-  // A rapid to `level` at `shift` from the hole centre (nullptr: the centre). `always` = false:
-  // only when the shift is not zero (a move off or back to the centre at one level).
-  void rapidAt(double level, const double *shift, bool always, const double *nonZero) {
-    if (!always && nonZero[0] == 0 && nonZero[1] == 0) return;
+  // A move to `level` at `shift` from the hole centre (nullptr: at the centre).
+  void at(double level, const double *shift, CycleStepKind k = CycleStepKind::Rapid, double f = 0) {
     CycleStep st;
+    st.kind = k;
     st.pos[a1_] = p1_ + (shift ? shift[0] : 0);
     st.pos[a2_] = p2_ + (shift ? shift[1] : 0);
     st.pos[d_] = level;
-    out_.push_back(st);
-  }
-  // Off the wall at `from`, rapid to `to` there, back to the centre.
-  void liftOut(double from, double to, const double shift[2]) {
-    rapidAt(from, shift, false, shift);
-    rapidAt(to, shift, true, shift);
-    rapidAt(to, nullptr, false, shift);
-  }
-  void feedAt(double level, const double *shift, double f) {
-    CycleStep st;
-    st.kind = CycleStepKind::Feed;
-    st.pos[a1_] = p1_ + shift[0];
-    st.pos[a2_] = p2_ + shift[1];
-    st.pos[d_] = level;
     st.feed = f;
     out_.push_back(st);
+  }
+  // Off the wall at `from` (when the shift moves in the plane), rapid to `to` there, back to the centre.
+  void liftOut(double from, double to, const double shift[3]) {
+    const bool inPlane = shift[0] != 0 || shift[1] != 0;
+    if (inPlane) at(from, shift);
+    at(to, shift);
+    if (inPlane) at(to, nullptr);
   }
 
 private:
-  void move(CycleStepKind k, double level, double f) {
-    CycleStep st;
-    st.kind = k;
-    st.pos[a1_] = p1_;
-    st.pos[a2_] = p2_;
-    st.pos[d_] = level;
-    st.feed = f;
-    out_.push_back(st);
-  }
   std::vector<CycleStep> &out_;
   int a1_, a2_, d_;
   double p1_, p2_;
@@ -126,16 +109,17 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
     w.dwell(h.dwellBottom);
     w.orient(h.orientAngle);
     const double *s = h.shift;
-    const double lifted = h.bottom + s[2];
-    if (s[0] != 0 || s[1] != 0 || s[2] != 0) w.rapidAt(lifted, s, true, s);
-    if (h.exitFeed > 0) w.feedAt(h.exitLevel, s, h.exitFeed);
-    else if (h.exitLevel != lifted) w.rapidAt(h.exitLevel, s, true, s);
+    const bool inPlane = s[0] != 0 || s[1] != 0, lifted = inPlane || s[2] != 0;
+    const double liftLevel = h.bottom + s[2];
+    if (lifted) w.at(liftLevel, s);
+    if (h.exitFeed > 0) w.at(h.exitLevel, s, CycleStepKind::Feed, h.exitFeed);
+    else if (h.exitLevel != liftLevel) w.at(h.exitLevel, s);
     if (h.centreAtExit) {
-      w.rapidAt(h.exitLevel, nullptr, false, s);
+      if (inPlane) w.at(h.exitLevel, nullptr);
       if (h.retract != h.exitLevel) w.rapid(h.retract);
     } else {
-      if (h.retract != h.exitLevel) w.rapidAt(h.retract, s, true, s);
-      w.rapidAt(h.retract, nullptr, false, s);
+      if (h.retract != h.exitLevel) w.at(h.retract, s);
+      if (inPlane) w.at(h.retract, nullptr);
     }
     if (h.restart) w.spindleOn(h.spindle);
     break;

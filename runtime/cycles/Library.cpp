@@ -35,17 +35,29 @@ using namespace entry;
 
 namespace {
 
+// A move (rapid or feed) at the hole (the cycle runs at ctx.position) to `level` on the drilling axis.
+void atLevel(const CycleContext &ctx, int plane, double level, std::vector<CycleStep> &out,
+             CycleStepKind kind = CycleStepKind::Rapid, double feed = 0) {
+  CycleStep st;
+  st.kind = kind;
+  st.pos = ctx.position;
+  st.pos[planeAxes((Plane)plane).n] = level;
+  st.feed = feed;
+  out.push_back(st);
+}
+
+// A spindle step: 1 (M3) clockwise, 2 (M4) counter-clockwise, anything else stop.
+void spindleStep(int dir, std::vector<CycleStep> &out) {
+  CycleStep st;
+  st.kind = dir == 1 ? CycleStepKind::SpindleCW : dir == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleStop;
+  out.push_back(st);
+}
+
 // The steps of one hole: rapid to the start level above the hole, then the HoleSpec.
 void hole(const HoleSpec &h, int plane, const CycleContext &ctx, std::vector<CycleStep> &out) {
   const PlaneAxes ax = planeAxes((Plane)plane);
-  const int a1 = ax.u, a2 = ax.v, d = ax.n;
-  if (ctx.position[d] != h.start) {  // a pattern may already be there
-    CycleStep st;
-    st.pos = ctx.position;
-    st.pos[d] = h.start;
-    out.push_back(st);
-  }
-  holeSteps(h, a1, a2, d, ctx.position[a1], ctx.position[a2], out);
+  if (ctx.position[ax.n] != h.start) atLevel(ctx, plane, h.start, out);  // a pattern may already be there
+  holeSteps(h, ax.u, ax.v, ax.n, ctx.position[ax.u], ctx.position[ax.v], out);
 }
 
 // ---- Sinumerik drilling cycles (seed000c 19.1.21-23, 19.1.25): RTP RFP SDIS DP DPR …
@@ -183,9 +195,7 @@ bool sinCycle86(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
   h.exitLevel = s.start, h.centreAtExit = true;
   h.spindle = sdir == 4 ? 2 : 1;
   if (digit(a.get("_GMODE"), 1) == 0) h.shift[0] = a.get("RPA"), h.shift[1] = a.get("RPO"), h.shift[2] = a.get("RPAP");
-  CycleStep on;
-  on.kind = sdir == 4 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW;
-  out.push_back(on);
+  spindleStep(h.spindle, out);
   hole(h, s.plane, ctx, out);
   return true;
 }
@@ -231,25 +241,20 @@ bool sinCycle840(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
   double dwell = -1;
   if (enc == 1 || enc == 11 || enc == 20)
     if (!sinDwell(a, "DTB", 2, ctx, dwell, err)) return false;
-  const PlaneAxes ax = planeAxes((Plane)s.plane);
-  auto step = [&](CycleStepKind k, double level, double f = 0, double secs = 0) {
+  auto dwellStep = [&] {
     CycleStep st;
-    st.kind = k;
-    st.pos = ctx.position;
-    st.pos[ax.n] = level;
-    st.feed = f, st.seconds = secs;
-    out.push_back(st);
+    st.kind = CycleStepKind::Dwell;
+    st.seconds = dwell;
+    if (dwell >= 0) out.push_back(st);
   };
-  auto spin = [&](int dir) { step(dir == 3 ? CycleStepKind::SpindleCW : dir == 4 ? CycleStepKind::SpindleCCW
-                                                                               : CycleStepKind::SpindleStop, 0); };
-  if (ctx.position[ax.n] != s.start) step(CycleStepKind::Rapid, s.start);
-  step(CycleStepKind::Feed, s.bottom, feed);
-  if (enc != 20 && dwell >= 0) step(CycleStepKind::Dwell, 0, 0, dwell);
-  spin(sdr ? sdr : ctx.spindle == 1 ? 4 : 3);
-  step(CycleStepKind::Feed, s.start, feed);
-  if (enc == 20 && dwell >= 0) step(CycleStepKind::Dwell, 0, 0, dwell);
-  spin(sdac);
-  step(CycleStepKind::Rapid, s.rtp);
+  if (ctx.position[planeAxes((Plane)s.plane).n] != s.start) atLevel(ctx, s.plane, s.start, out);
+  atLevel(ctx, s.plane, s.bottom, out, CycleStepKind::Feed, feed);
+  if (enc != 20) dwellStep();
+  spindleStep(sdr ? sdr - 2 : 3 - ctx.spindle, out);  // SDR 3/4 = M3/M4; 0: the other way
+  atLevel(ctx, s.plane, s.start, out, CycleStepKind::Feed, feed);
+  if (enc == 20) dwellStep();
+  spindleStep(sdac - 2, out);  // 3 M3, 4 M4, 5 stop
+  atLevel(ctx, s.plane, s.rtp, out);
   return true;
 }
 
@@ -358,12 +363,7 @@ bool hei206(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   h.exit = HoleExit::Tap;
   h.spindle = ctx.spindle;
   hole(h, ctx.plane, ctx, out);
-  if (l.z2 != l.zsc) {
-    CycleStep st;  // at the hole (the cycle runs at ctx.position)
-    st.pos = ctx.position;
-    st.pos[planeAxes((Plane)ctx.plane).n] = l.z2;
-    out.push_back(st);
-  }
+  if (l.z2 != l.zsc) atLevel(ctx, ctx.plane, l.z2, out);
   return true;
 }
 
@@ -386,25 +386,11 @@ bool hei207(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   h.feed = h.exitFeed = b.get("Q206");
   h.exit = HoleExit::Tap;
   h.spindle = pitch > 0 ? 1 : 2;
-  const size_t first = out.size();
+  if (ctx.spindle != h.spindle) spindleStep(h.spindle, out);  // the tapping direction before the infeed
   hole(h, ctx.plane, ctx, out);
-  if (ctx.spindle != h.spindle) {  // the tapping direction before the infeed
-    CycleStep on;
-    on.kind = h.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW;
-    out.insert(out.begin() + (long)first, on);
-  }
   out.pop_back();  // Tap turns forward again at the top: 207 leaves the spindle stopped there
-  if (l.z2 != l.zsc) {
-    CycleStep st;
-    st.pos = ctx.position;
-    st.pos[planeAxes((Plane)ctx.plane).n] = l.z2;
-    out.push_back(st);
-  }
-  if (ctx.spindle != 0) {
-    CycleStep on;
-    on.kind = ctx.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW;
-    out.push_back(on);
-  }
+  if (l.z2 != l.zsc) atLevel(ctx, ctx.plane, l.z2, out);
+  if (ctx.spindle != 0) spindleStep(ctx.spindle, out);
   return true;
 }
 
