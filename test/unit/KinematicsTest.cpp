@@ -74,6 +74,13 @@ Machine nutator() {
                  rotary("C", -1e9, 1e9));
 }
 
+// A head whose spindle lies along +X at zero: C (head, about Z) swings it, A (table) tilts the part.
+Machine horizontalSpindle() {
+  return machine("[kinematics]\ntype = \"head-table\"\ntool_axis = [1, 0, 0]\n" +
+                 joint("A", "table", "[1, 0, 0]", "[0, 30, -200]") + joint("C", "head", "[0, 0, 1]", "[-120, 0, 0]") +
+                 rotary("A", -1e9, 1e9) + rotary("C", -150, 150));
+}
+
 void expectNear(const Vec3 &a, const Vec3 &b, double tol, const std::string &what) {
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], tol) << what << " [" << i << "]";
 }
@@ -117,6 +124,7 @@ TEST(Kinematics, RoundTripTableTable) { roundTrips(trunnion(), 3, 5, 119, 180); 
 TEST(Kinematics, RoundTripHeadHead) { roundTrips(forkHead(), 4, 5, 109, 180); }
 TEST(Kinematics, RoundTripHeadTable) { roundTrips(headTable(), 4, 5, 99, 180); }
 TEST(Kinematics, RoundTripNutatingHead) { roundTrips(nutator(), 4, 5, 180, 180); }
+TEST(Kinematics, RoundTripHorizontalSpindle) { roundTrips(horizontalSpindle(), 3, 5, 180, 149); }
 
 // docs/MACHINE.md's worked example: tool axis (0, -sin 30, cos 30) on an A/C trunnion.
 TEST(Kinematics, TrunnionAnalytic) {
