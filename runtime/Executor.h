@@ -67,6 +67,7 @@ public:
   struct Impl;  // the state, shared by runtime/Executor*.cpp (ExecutorImpl.h)
 
 private:
+  bool restoreModes(SourceLoc loc);  // the mode groups of a SAVE call (restoreModal)
   Impl *impl_;
 };
 

@@ -73,7 +73,7 @@ struct Executor::Impl {
   ProgrammableFrame pf;
   // The last FRAME written to the programmable frame (ExecutorFrames.cpp), with the slots it
   // made: read back as written while the slots are still those.
-  struct {
+  struct WrittenFrame {
     bool set = false;
     FrameValue frame;
     Affine composite;
@@ -123,6 +123,8 @@ struct Executor::Impl {
   struct SavedModal {  // Sinumerik SAVE (Executor::saveModal)
     ModalState st;
     double pathTolerance, naiveTolerance;
+    ProgrammableFrame pf;  // the programmable frame comes back too
+    WrittenFrame pfValue;
   };
   std::vector<SavedModal> savedModal;
   double pathTolerance = 0;   // G64 P (mm)
