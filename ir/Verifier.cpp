@@ -370,12 +370,20 @@ private:
       bool modal = op.kind == OpKind::ModalCall;  // always a new frame
       bool shared = !modal && (!f || f->str != "new");
       std::string calleeName;
+      // A computed callee may be any function: an argument named like a VAR parameter of one of
+      // them must be a variable it can alias. A modal call runs later, when the caller's
+      // variables may be gone: no VAR arguments.
       if (const Expr *c = op.get("callee"); c && (modal || !constantCallee(*c, calleeName)))
-        for (auto &a : op.args)  // the engines pass addresses only to a callee known when compiling
+        for (auto &a : op.args)
           for (auto &fn : m_.functions)
             if (const Param *p = a.key.size() > 2 ? fn.param(std::string_view(a.key).substr(2)) : nullptr; p && p->byRef) {
-              error(op.loc, fmt::format("'{}' argument '{}': {} cannot take VAR parameter '{}' of '@{}' yet", name,
-                                        a.key, modal ? "a modal call" : "a computed callee", p->name, fn.name));
+              if (modal)
+                error(op.loc, fmt::format("'{}' argument '{}': a modal call cannot take VAR parameter '{}' of '@{}'",
+                                          name, a.key, p->name, fn.name));
+              else if (a.value && (a.value->kind != ExprKind::Var || a.value->space == VarSpace::System))
+                error(op.loc, fmt::format("'{}' argument '{}' must be a variable: parameter '{}' of '@{}' is VAR "
+                                          "and the callee is computed",
+                                          name, a.key, p->name, fn.name));
               break;
             }
       for (auto &a : op.args) {
