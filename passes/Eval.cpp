@@ -511,6 +511,10 @@ struct Evaluator::Impl {
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
       case IK::ModalCall: setModal(*in.op, fr); ++pc; break;
+      case IK::ModalTrigger:  // as after a move: not inside the modal callee itself
+        if (!modal.callee.empty() && !inModal) runModal(in.op->loc, fr);
+        ++pc;
+        break;
       case IK::SectionCall: {
         double n = in.expr ? std::round(num(number(fr, *in.expr))) : 1;
         if (!(n >= 1)) {

@@ -223,6 +223,9 @@ void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn) {
   ctx->modal_hook = reinterpret_cast<int (*)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t)>(fn);
 }
 
+int ncrt_modal_trigger(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  return ctx->modal_hook ? ctx->modal_hook(ctx, &ctx->storage, file, line, col) : NCRT_OK;
+}
 int ncrt_save_modal(ncrt_ctx *ctx) { return ctx->sink.saveModal() ? NCRT_OK : NCRT_ERROR; }
 int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   return ctx->sink.restoreModal({file, line, col}) ? NCRT_OK : NCRT_ERROR;

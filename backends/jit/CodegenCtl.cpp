@@ -142,6 +142,7 @@ void Codegen::validate(FnInfo &fi) {
       case OpKind::Goto: gotos.push_back(&op); break;
       case OpKind::CallSection: gotos.push_back(&op); break;
       case OpKind::ModalCall:
+      case OpKind::ModalTrigger:
       case OpKind::Label:
       case OpKind::Call:
       case OpKind::Return: break;
@@ -276,6 +277,11 @@ void Codegen::emitOp(const Op &op) {
   case OpKind::Call: emitCall(op); return;
   case OpKind::CallSection: emitCallSection(op); return;
   case OpKind::ModalCall: emitModalCall(op); return;
+  case OpKind::ModalTrigger: {  // the runtime runs the modal call as after a move (ncrt_modal_trigger)
+    auto l = locArgs(op.loc);
+    checkStatus(B.CreateCall(fModalTrigger, {ctxArg, l[0], l[1], l[2]}));
+    return;
+  }
   case OpKind::Return:
     if (const Expr *v = op.get("value"))
       B.CreateStore(expr(*v).v, B.CreateConstGEP1_32(dblTy, frameArg, cur_->frameSize - 1));

@@ -116,6 +116,7 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_callee", &ncrt_callee);
   add("ncrt_jump", &ncrt_jump);
   add("ncrt_save_modal", &ncrt_save_modal);
+  add("ncrt_modal_trigger", &ncrt_modal_trigger);
   add("ncrt_set_modal_hook", &ncrt_set_modal_hook);
   add("ncrt_restore_modal", &ncrt_restore_modal);
   add("ncrt_str_const", &ncrt_str_const);
