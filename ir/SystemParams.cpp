@@ -1,5 +1,6 @@
 #include "ir/SystemParams.h"
 #include "ir/RunErrors.h"
+#include "ir/SystemAccess.h"
 
 #include <fmt/format.h>
 
@@ -184,8 +185,8 @@ const ir::Expr *computedParameterNumber(const ir::Expr &var, ParamMap &map) {
                                                                                                  : nullptr;
 }
 
-bool accessSystemParameter(CmdSink &sink, ParamMap m, double n, ParamAccess a, double &v, SourceLoc loc,
-                           std::string &err) {
+bool accessSystemParameter(CmdSink &sink, ValuePool &pool, ParamMap m, double n, ParamAccess a, double &v,
+                           SourceLoc loc, std::string &err) {
   long k = (long)parameterNumber(n);
   SystemParam p = classifyParameter(m, k);
   switch (p.kind) {
@@ -203,9 +204,9 @@ bool accessSystemParameter(CmdSink &sink, ParamMap m, double n, ParamAccess a, d
       err = readOnlyParameterMessage(k, p.what);
       return false;
     }
-    return sink.writeSystem(p.var, v, loc, err);
+    return writeSystemValue(sink, pool, p.var, v, loc, err);
   case ParamAccess::Read:
-    if (sink.readSystem(p.var, v, err)) return true;
+    if (readSystemValue(sink, pool, p.var, v, err)) return true;
     if (err.empty()) err = runErrorMessage(RunError::SysVar, ExecLimits{}, sysRefText(p.var));
     return false;
   }

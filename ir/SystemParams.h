@@ -11,6 +11,7 @@
 // `#[(MACRO_VARIABLE_C (add 2000 #1))]`.
 #pragma once
 #include "ir/CmdSink.h"
+#include "ir/Strings.h"
 #include "ir/NCIR.h"
 #include "ir/SystemVars.h"
 
@@ -64,10 +65,10 @@ const ir::Expr *computedParameterNumber(const ir::Expr &var, ParamMap &map);
 
 // A computed number that is not plain, when the program runs (both engines): resolved through
 // map m and read into v or written from v through the sink (the executor), as a constant number's
-// System variable is; Reference (a by-reference argument) is always an error. False with the
+// System variable is (ir/SystemAccess.h); Reference (a by-reference argument) is always an error. False with the
 // error: the constant form's text for a number ncc does not provide or a read-only one written.
 enum class ParamAccess : uint8_t { Read, Write, Reference };
-bool accessSystemParameter(CmdSink &sink, ParamMap m, double n, ParamAccess a, double &v, SourceLoc loc,
-                           std::string &err);
+bool accessSystemParameter(CmdSink &sink, ValuePool &pool, ParamMap m, double n, ParamAccess a, double &v,
+                           SourceLoc loc, std::string &err);
 
 }  // namespace ncc

@@ -67,21 +67,22 @@ struct Recorder : CmdSink {
 
 TEST(SystemParams, AccessThroughTheSink) {
   Recorder sink;
+  ValuePool pool;
   std::string err;
   double v = 0;
-  ASSERT_TRUE(accessSystemParameter(sink, ParamMap::Rs274, 5420, ParamAccess::Read, v, {}, err)) << err;
+  ASSERT_TRUE(accessSystemParameter(sink, pool, ParamMap::Rs274, 5420, ParamAccess::Read, v, {}, err)) << err;
   EXPECT_EQ(v, (double)SysVar::PosX);
   v = 2.5;
-  ASSERT_TRUE(accessSystemParameter(sink, ParamMap::Rs274, 5241, ParamAccess::Write, v, {}, err)) << err;
+  ASSERT_TRUE(accessSystemParameter(sink, pool, ParamMap::Rs274, 5241, ParamAccess::Write, v, {}, err)) << err;
   EXPECT_EQ(sink.written.var, sysVarOf(SysFamily::WorkOffset, 2, 0));
   EXPECT_EQ(sink.value, 2.5);
-  EXPECT_FALSE(accessSystemParameter(sink, ParamMap::Rs274, 5420, ParamAccess::Write, v, {}, err));
+  EXPECT_FALSE(accessSystemParameter(sink, pool, ParamMap::Rs274, 5420, ParamAccess::Write, v, {}, err));
   EXPECT_EQ(err, "#5420 (current X) is read-only");
-  EXPECT_FALSE(accessSystemParameter(sink, ParamMap::Rs274, 5241, ParamAccess::Reference, v, {}, err));
+  EXPECT_FALSE(accessSystemParameter(sink, pool, ParamMap::Rs274, 5241, ParamAccess::Reference, v, {}, err));
   EXPECT_EQ(err, "#5241 (work offset 2 X) is controller state: it cannot be passed by reference");
-  EXPECT_FALSE(accessSystemParameter(sink, ParamMap::MacroB, 3006, ParamAccess::Write, v, {}, err));
+  EXPECT_FALSE(accessSystemParameter(sink, pool, ParamMap::MacroB, 3006, ParamAccess::Write, v, {}, err));
   EXPECT_EQ(err, "#3006 (alarm and message stop) can only be assigned with a constant number");
-  EXPECT_FALSE(accessSystemParameter(sink, ParamMap::Rs274, 7000, ParamAccess::Read, v, {}, err));
+  EXPECT_FALSE(accessSystemParameter(sink, pool, ParamMap::Rs274, 7000, ParamAccess::Read, v, {}, err));
   EXPECT_EQ(err, "parameter #7000 is out of range (rs274 has #1-#5602)");
 }
 
