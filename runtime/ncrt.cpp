@@ -7,6 +7,7 @@
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
 #include "ir/Diagnostics.h"
+#include "ir/SystemParams.h"
 #include "ir/SystemVars.h"
 
 #include <fmt/format.h>
@@ -211,6 +212,14 @@ double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint3
   return writeSystemValue(ctx->sink, ctx->pool, sysRefFromNumber(ref), v, {file, line, col}, err)
              ? 0.0
              : failed(ctx, file, line, col, err);
+}
+
+double ncrt_param(ncrt_ctx *ctx, uint32_t map, uint32_t access, double n, double v, uint32_t file, uint32_t line,
+                  uint32_t col) {
+  std::string err;
+  if (accessSystemParameter(ctx->sink, ctx->pool, (ParamMap)map, n, (ParamAccess)access, v, {file, line, col}, err))
+    return access == (uint32_t)ParamAccess::Read ? v : 0.0;
+  return failed(ctx, file, line, col, err);
 }
 
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }

@@ -108,6 +108,11 @@ double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, double
                       uint32_t line, uint32_t col);
 /* Writes system variable `ref`: 0, or unset after an error at the loc. */
 double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint32_t line, uint32_t col);
+/* A computed parameter number n that map `map` (ncc::ParamMap) does not make plain storage:
+   access 0 reads it (the value), 1 writes v (0), 2 is a by-reference argument (an error); unset
+   after an error at the loc (ir/SystemParams.h accessSystemParameter, as the eval engine). */
+double ncrt_param(ncrt_ctx *ctx, uint32_t map, uint32_t access, double n, double v, uint32_t file, uint32_t line,
+                  uint32_t col);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
 /* modal_call: the program's modal-call function (i32 (ctx, storage, file, line, col)), which the

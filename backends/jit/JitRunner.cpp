@@ -111,6 +111,7 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_sysvar", &ncrt_sysvar);
   add("ncrt_sysvar_at", &ncrt_sysvar_at);
   add("ncrt_sysvar_set", &ncrt_sysvar_set);
+  add("ncrt_param", &ncrt_param);
   add("ncrt_str_num_fixed", &ncrt_str_num_fixed);
   add("ncrt_str", &ncrt_str);
   add("ncrt_callee", &ncrt_callee);
