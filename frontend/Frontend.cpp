@@ -61,6 +61,7 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.decimalMode = o.decimalMode;
   io.blockDeleteMask = o.blockDeleteMask;
   io.searchDirs = o.searchDirs;
+  io.linkedFunctions = o.linkedFunctions;
   io.axesScaleEnable = o.axesScaleEnable;
   io.scaleWeighting = o.scaleWeighting;
   io.startup = o.startup;

@@ -20,6 +20,7 @@ struct FrontendOptions {
   std::string offsetMemory = "none";       // Fanuc tool offset variables: "none" or "C", machine [controller]
   bool lathe = false;                      // machine [controller] kind = "lathe"
   char latheSystem = 'A';                  // its gcode_system
+  std::vector<std::string> linkedFunctions;  // defined by linked files (driver --link): not searched
 };
 
 // What a file holds: a dialect, or textual NC IR.

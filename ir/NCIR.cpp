@@ -2,6 +2,8 @@
 #include "ir/MachineCmd.h"
 #include "ir/Value.h"
 
+#include <fmt/format.h>
+
 #include <cstring>
 
 namespace ncc::ir {
@@ -239,6 +241,25 @@ const Function *Module::find(std::string_view name) const {
   for (auto &f : functions)
     if (f.name == name) return &f;
   return nullptr;
+}
+
+Dialect functionDialect(const Module &m, const Function &f) {
+  return f.dialect == Dialect::Unknown ? m.dialect : f.dialect;
+}
+
+bool linkModule(Module &into, Module &&from, Diagnostics &diags) {
+  bool ok = true;
+  for (Function &f : from.functions) {
+    if (into.find(f.name)) {
+      diags.error(f.loc, fmt::format("function '@{}' of '{}' is already defined by '{}'", f.name, from.name, into.name));
+      ok = false;
+      continue;
+    }
+    Dialect d = functionDialect(from, f);
+    f.dialect = d == into.dialect ? Dialect::Unknown : d;
+    into.functions.push_back(std::move(f));
+  }
+  return ok;
 }
 
 }  // namespace ncc::ir

@@ -174,11 +174,20 @@ struct Param {
   ExprPtr defaultValue;  // may be null
 };
 
+enum class Dialect : uint8_t { ISO, Sinumerik, Heidenhain, CLData, Unknown };
+const char *dialectName(Dialect d);
+bool dialectFromName(std::string_view s, Dialect &out);
+
+
 struct Function {
   std::string name;        // "main" for the main program; "O1234", "L10", "SUB" for others
   SourceLoc loc;
   std::vector<Param> params;
   bool save = false;       // Sinumerik SAVE: the caller's modal state comes back on return (docs/IR.md §5.4)
+  // The dialect its source was written in when it differs from the module's (an ISO program
+  // calling a Sinumerik cycle, docs/IR.md §5.7); Unknown: the module's. Only diagnostics and
+  // tools read it: the ops themselves carry every dialect rule.
+  Dialect dialect = Dialect::Unknown;
   Region body;
   const Param *param(std::string_view name) const {  // null when there is no such parameter
     for (auto &p : params)
@@ -187,9 +196,6 @@ struct Function {
   }
 };
 
-enum class Dialect : uint8_t { ISO, Sinumerik, Heidenhain, CLData, Unknown };
-const char *dialectName(Dialect d);
-bool dialectFromName(std::string_view s, Dialect &out);
 
 struct Module {
   Dialect dialect = Dialect::ISO;
@@ -198,6 +204,13 @@ struct Module {
   Function *find(std::string_view name);
   const Function *find(std::string_view name) const;
 };
+
+// The dialect a function was written in (its own, else the module's).
+Dialect functionDialect(const Module &m, const Function &f);
+// Appends the functions of `from` (another program or library, read by any front end with the
+// same SourceManager) to `into`, each keeping its dialect. A name both define is an error at the
+// second definition; false then.
+bool linkModule(Module &into, Module &&from, Diagnostics &diags);
 
 // The function a constant `call callee=` names: a string names it, a number n the program
 // "O<n>". False for computed callees and for constants that name no function (2.5, a symbol).

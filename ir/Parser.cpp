@@ -317,7 +317,15 @@ private:
       }
       expectPunct(')');
     }
-    if (isIdent("save")) {  // function attributes
+    if (isIdent("dialect")) {  // function attributes
+      next();
+      expectPunct('=');
+      Token d = expectKind(Tok::Ident, "dialect name");
+      Dialect fd;
+      if (!dialectFromName(d.text, fd)) fail(d, fmt::format("unknown dialect '{}'", d.text));
+      if (fd != m.dialect) f.dialect = fd;
+    }
+    if (isIdent("save")) {
       next();
       f.save = true;
     }

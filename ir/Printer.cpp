@@ -165,6 +165,7 @@ private:
       }
     }
     if (!f.params.empty()) out_ += ')';
+    if (Dialect d = functionDialect(m_, f); d != m_.dialect) out_ += fmt::format(" dialect={}", dialectName(d));
     if (f.save) out_ += " save";
     printLoc(f.loc);
     out_ += " {\n";

@@ -36,6 +36,7 @@ struct IsoOptions {
   OffsetMemory offsetMemory = OffsetMemory::None;
   bool lathe = false;                   // machine [controller] kind = "lathe": turning codes, T0101, U/W
   char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental) or 'B'
+  std::vector<std::string> linkedFunctions;  // defined by linked files: calls to them are not searched
 };
 
 // Parses the main program file (already in sm) plus the subprograms it calls (same file after

@@ -498,6 +498,8 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
   for (size_t i = 0; i < pp.calls.size(); ++i) {
     CallRef c = pp.calls[i];
     if (out.find(c.callee)) continue;
+    if (std::find(opts.linkedFunctions.begin(), opts.linkedFunctions.end(), c.callee) != opts.linkedFunctions.end())
+      continue;  // a linked file defines it (the driver links it after parsing)
     if (missing.count(c.callee)) {
       diags.error(c.loc, fmt::format("subprogram {} not found", c.callee), "missing-subprogram");
       ok = false;

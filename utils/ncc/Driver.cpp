@@ -21,6 +21,7 @@ void addCommonOptions(po::options_description &desc, CommonOptions &o) {
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
       ("include,I", po::value(&o.includeDirs), "folder with subprogram files (after the program's own folder; repeatable)")
+      ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)")
       ("max-loop-iterations", po::value(&o.limits.maxLoopIterations)->default_value(o.limits.maxLoopIterations),
        "stop a loop after this many iterations")
       ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
@@ -113,8 +114,22 @@ bool Session::load(uint32_t file, ir::Module &out) {
   }
   // Count this file's errors only: lint reads several files with one Diagnostics.
   unsigned before = diags.errorCount();
-  if (!parseProgram(kindOf(file), sm, file, frontendOptions(file), diags, out) || diags.errorCount() != before)
-    return false;
+  // --link: each file through its own front end, its functions keeping their dialect (an ISO
+  // program calling a Sinumerik cycle, docs/IR.md §5.7); the program's front end then leaves
+  // calls to them for the link.
+  std::vector<ir::Module> libs;
+  FrontendOptions fo = frontendOptions(file);
+  for (const std::string &path : opts.linkFiles) {
+    uint32_t lf = open(path);
+    libs.emplace_back();
+    if (!lf || !parseProgram(kindOf(lf), sm, lf, frontendOptions(lf), diags, libs.back()) ||
+        diags.errorCount() != before)
+      return false;
+    for (auto &f : libs.back().functions) fo.linkedFunctions.push_back(f.name);
+  }
+  if (!parseProgram(kindOf(file), sm, file, fo, diags, out) || diags.errorCount() != before) return false;
+  for (ir::Module &lib : libs)
+    if (!ir::linkModule(out, std::move(lib), diags)) return false;
   PassContext ctx;
   ctx.machine = &machine;
   ctx.limits = opts.limits;
@@ -146,7 +161,7 @@ bool Session::execute(uint32_t file, MotionSink &sink, uint64_t *blocks) {
     if (blocks) *blocks = 0;
     return parseMotionText(sm, file, sink, diags) && !diags.hasErrors();
   }
-  if (opts.engine == "eval") {
+  if (opts.engine == "eval" && opts.linkFiles.empty()) {  // a linked program needs the whole module
     bool streamed = false;
     bool ok = executeStreamed(file, sink, blocks, streamed);
     if (streamed || !ok) return ok;

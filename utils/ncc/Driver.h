@@ -28,6 +28,7 @@ struct CommonOptions {
   std::string decimalMode;  // empty = the machine's
   std::vector<unsigned> blockDelete;
   std::vector<std::string> includeDirs;  // subprogram files, searched after the program's folder
+  std::vector<std::string> linkFiles;    // programs/libraries linked in, each read by its own front end
   ExecLimits limits;
   std::string diagnosticsFormat = "text";
   bool werror = false;
