@@ -132,7 +132,7 @@ static const OpInfo kOps[] = {
     {OpKind::Message, "message", 0, 0, "text", "kind"},
     {OpKind::Mode, "mode", 0, 0, "", kModeOpKeys},
     {OpKind::Feed, "feed", 0, 0, "value", ""},
-    {OpKind::Speed, "speed", 0, 0, "value", ""},
+    {OpKind::Speed, "speed", 0, 0, "", "value mode limit after_css"},
     {OpKind::ToolSelect, "tool_select", 0, 0, "value", ""},
     {OpKind::ToolChange, "tool_change", 0, 0, "", ""},
     {OpKind::Spindle, "spindle", 0, 0, "dir", "angle way wait"},

@@ -33,6 +33,8 @@ static const SymbolCode kSymbols[] = {
     {OpKind::Spindle, "dir", "ccw", 2},          {OpKind::Spindle, "dir", "orient", 3},
     {OpKind::Spindle, "way", "cw", 0},           {OpKind::Spindle, "way", "ccw", 1},  // sub2
     {OpKind::Spindle, "way", "shortest", 2},     {OpKind::CutterComp, "side", "off", 0},
+    {OpKind::Speed, "mode", "rpm", 1},           {OpKind::Speed, "mode", "css", 2},
+    {OpKind::Speed, "after_css", "keep", 0},     {OpKind::Speed, "after_css", "error", 1},  // sub2
     {OpKind::CutterComp, "side", "left", 1},     {OpKind::CutterComp, "side", "right", 2},
     {OpKind::Stop, "kind", "program", (uint8_t)StopKind::Program},
     {OpKind::Stop, "kind", "optional", (uint8_t)StopKind::Optional},
@@ -101,7 +103,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Move, "chamfer", Word::Chamfer}, {OpKind::Move, "round", Word::Round},
     {OpKind::Move, "via_x", Word::ViaX},     {OpKind::Move, "via_y", Word::ViaY},
     {OpKind::Move, "via_z", Word::ViaZ},     {OpKind::Spindle, "angle", Word::R},
-    {OpKind::Spindle, "wait", Word::Q},
+    {OpKind::Spindle, "wait", Word::Q},      {OpKind::Speed, "limit", Word::D},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -218,6 +220,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   case OpKind::CutterComp:
     if (!symbolArg("side", c.sub) || !symbolArg("d_default", c.sub2)) return false;
     break;
+  case OpKind::Speed:
+    if (!symbolArg("mode", c.sub) || !symbolArg("after_css", c.sub2)) return false;
+    break;
   case OpKind::Stop: return symbolArg("kind", c.sub);
   case OpKind::SetOffset:
     if (!symbolArg("kind", c.sub)) return false;
@@ -320,6 +325,10 @@ Op cmdToOp(const MachineCmd &c) {
     if (c.sub != 3) return op;
     op.set("way", Expr::symbol(symbolFor(op.kind, "way", c.sub2)));
     break;
+  case CmdKind::Speed:
+    if (c.sub) op.set("mode", Expr::symbol(symbolFor(op.kind, "mode", c.sub)));
+    if (c.sub2) op.set("after_css", Expr::symbol(symbolFor(op.kind, "after_css", c.sub2)));
+    break;
   case CmdKind::Stop: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); return op;
   case CmdKind::CutterComp:
     op.set("side", Expr::symbol(symbolFor(op.kind, "side", c.sub)));
@@ -360,7 +369,7 @@ Op cmdToOp(const MachineCmd &c) {
   for (auto &kw : kKeyWords)
     if (kw.op == op.kind && c.has(kw.word) &&
         (op.kind != OpKind::Aux || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
-      bool isInt = kw.word == Word::T || kw.word == Word::H || kw.word == Word::D ||
+      bool isInt = kw.word == Word::T || kw.word == Word::H || (kw.word == Word::D && op.kind != OpKind::Speed) ||
                    (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux;
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }

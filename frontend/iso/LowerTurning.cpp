@@ -186,3 +186,58 @@ bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
 }
 
 }  // namespace ncc::iso
+
+namespace ncc::iso {
+
+// The spindle speed words: S, G96/G97 (group 02) and the spindle-speed limit, as one `speed` op
+// (docs/IR.md): `speed value=S`, `speed mode=css value=S limit=?` (G96), `speed mode=rpm
+// value=S?` (G97), `speed limit=L` (808D/Fanuc lathe G50 S in system A, G92 S in B: modal).
+// LinuxCNC's G96 takes its limit from D, for this G96 only (no D: none, limit=0); its G97 without
+// S after G96 keeps the surface speed control going, which ncc does not model (after_css=error).
+bool BlockLowerer::Block::speedOp() {
+  const bool rs274 = L.flavour_ == Flavour::RS274;
+  const GCodeInfo *mode = G(GGroup::Spindle);
+  const bool limitBlock = !rs274 && nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S');
+  auto positive = [&](IsoWord *w, const char *what) {
+    if (w->expr || w->value > 0) return true;
+    L.diags_.error(w->loc, fmt::format("{} must be greater than 0", what), "bad-speed");
+    return false;
+  };
+  if (limitBlock) {
+    IsoWord *s = bw.get('S');
+    if (!L.lathe_) {
+      L.diags_.error(s->loc, fmt::format("{} S (spindle speed limit) needs a lathe (machine kind = \"lathe\")", gName(nonModal->code10)),
+                     "unsupported-code");
+      return false;
+    }
+    if (!positive(s, fmt::format("{} S (the spindle speed limit)", gName(nonModal->code10)).c_str())) return false;
+    emit(OpKind::Speed, s->loc).set("limit", take('S', Scale::None));
+  }
+  if (!mode) {
+    if (bw.has('S') && !limitBlock) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
+    return true;
+  }
+  const SourceLoc loc = gloc(GGroup::Spindle);
+  const bool css = mode->arg == 2;
+  if (css && !rs274 && !L.lathe_) {
+    L.diags_.error(loc, "G96 (constant surface speed) needs a lathe (machine kind = \"lathe\"): a milling spindle has no "
+                        "radius to keep the speed at", "unsupported-code");
+    return false;
+  }
+  if (css && (!bw.has('S') || limitBlock)) {
+    L.diags_.error(loc, "G96 needs S (the surface speed, m/min or ft/min)", "missing-word");
+    return false;
+  }
+  Op &op = emit(OpKind::Speed, loc);
+  op.set("mode", Expr::symbol(css ? "css" : "rpm", loc));
+  if (bw.has('S') && !limitBlock) op.set("value", take('S', Scale::None));
+  if (rs274 && css) {
+    IsoWord *d = G(GGroup::CutterComp) ? nullptr : bw.get('D');
+    if (d && !positive(d, "G96 D (the spindle speed limit)")) return false;
+    op.set("limit", d ? take('D', Scale::None) : Expr::number(0, ir::Type::Int, loc));
+  }
+  if (rs274 && !css) op.set("after_css", Expr::symbol("error", loc));
+  return true;
+}
+
+}  // namespace ncc::iso
