@@ -104,6 +104,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Move, "via_x", Word::ViaX},     {OpKind::Move, "via_y", Word::ViaY},
     {OpKind::Move, "via_z", Word::ViaZ},     {OpKind::Spindle, "angle", Word::R},
     {OpKind::Spindle, "wait", Word::Q},      {OpKind::Speed, "limit", Word::D},
+    {OpKind::Contour, "type", Word::P},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -370,7 +371,7 @@ Op cmdToOp(const MachineCmd &c) {
     if (kw.op == op.kind && c.has(kw.word) &&
         (op.kind != OpKind::Aux || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
       bool isInt = kw.word == Word::T || kw.word == Word::H || (kw.word == Word::D && op.kind != OpKind::Speed) ||
-                   (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux;
+                   (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux || op.kind == OpKind::Contour;
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }
   if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
@@ -378,7 +379,7 @@ Op cmdToOp(const MachineCmd &c) {
     for (int i = 0; i < kWords; ++i) {
       Word w = (Word)i;
       if (!c.has(w)) continue;
-      if (op.kind == OpKind::SetOffset && w == Word::P) continue;
+      if ((op.kind == OpKind::SetOffset || op.kind == OpKind::Contour) && w == Word::P) continue;
       if (w >= Word::PolarR) continue;  // named keys, above
       op.set(std::string(1, kWordLetters[i]), real(c.get(w)));
     }

@@ -128,6 +128,18 @@ bool checkContourOp(const Op &op, Diagnostics &diags) {
   return ok;
 }
 
+// G71/G72 type II (808D manual 1.5.1.2): the first contour block names both axes (X or U and Z
+// or W; `W0` asks for type II without moving Z). The consumer learns it from type=2.
+void markTypeII(Region &body, size_t first, Op *end) {
+  const ir::Expr *use = end ? end->get("use") : nullptr;
+  if (!use || (use->str != "rough_z" && use->str != "rough_x")) return;
+  for (size_t i = first + 1; i < body.size() && body[i].kind != OpKind::Block; ++i)
+    if (body[i].kind == OpKind::Move) {
+      if (body[i].get("X") && body[i].get("Z")) end->set("type", Expr::number(2, ir::Type::Int, end->loc));
+      return;
+    }
+}
+
 long long blockNumber(const Op &op) {
   const Expr *n = op.kind == OpKind::Block ? op.get("n") : nullptr;
   return n ? (long long)n->num : -1;
@@ -140,11 +152,13 @@ bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
   struct Range {
     long long from, to;
     SourceLoc loc;
+    Op *end;  // the contour end op after the call_section
   };
   std::vector<Range> ranges;
-  for (auto &op : f.body)
-    if (op.kind == OpKind::CallSection)
-      ranges.push_back({std::stoll(op.get("from")->str.substr(1)), std::stoll(op.get("to")->str.substr(1)), op.loc});  // N<n>, N<n>_to
+  for (size_t i = 0; i < f.body.size(); ++i)
+    if (Op &op = f.body[i]; op.kind == OpKind::CallSection)
+      ranges.push_back({std::stoll(op.get("from")->str.substr(1)), std::stoll(op.get("to")->str.substr(1)), op.loc,
+                        i + 1 < f.body.size() && f.body[i + 1].kind == OpKind::Contour ? &f.body[i + 1] : nullptr});  // N<n>, N<n>_to
   if (ranges.empty()) return true;
   Region &body = f.body;
   std::map<long long, size_t> at;  // block number -> index of its block op (the first one)
@@ -170,6 +184,7 @@ bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
     size_t endAt = b->second + 1;
     while (endAt < body.size() && body[endAt].kind != OpKind::Block) ++endAt;
     for (size_t i = a->second; i < endAt; ++i) ok &= checkContourOp(body[i], diags);
+    markTypeII(body, a->second, r.end);
     labels.push_back({a->second, fmt::format("N{}", r.from)});
     labels.push_back({b->second + 1, fmt::format("N{}_to", r.to)});  // a section's last block starts at its label
     labels.push_back({endAt, fmt::format("N{}_end", r.to)});
