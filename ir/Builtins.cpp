@@ -1,7 +1,8 @@
 #include "ir/Builtins.h"
+#include "ir/FrameBuiltins.h"
 #include "ir/Arith.h"
 #include "ir/Strings.h"
-#include "ir/SystemVars.h"
+#include "ir/SystemParams.h"
 #include "ir/Value.h"
 
 #include <fmt/format.h>
@@ -36,17 +37,14 @@ double ncc_builtin_fix(const double *a) { return std::floor(num(a[0])); }
 double ncc_builtin_fup(const double *a) { return std::ceil(num(a[0])); }
 double ncc_builtin_awayfromzero(const double *a) { return arithAwayFromZero(num(a[0])); }
 double ncc_builtin_trunc(const double *a) { return std::trunc(num(a[0])); }
-// A computed parameter number of LinuxCNC (#1-#5000, #5599-#5601) or Fanuc Macro B (#0-#33,
-// #100-#999): the number itself, NaN (out of domain: a run-time error) for the controller-state
-// numbers a constant #n reads as System variables (frontend/iso/SystemParams.cpp).
-double ncc_builtin_ngc_parameter(const double *a) {
-  double n = num(a[0]);
-  return plainNgcParameter(n) ? n : NAN;
-}
-double ncc_builtin_macro_variable(const double *a) {
-  double n = num(a[0]);
-  return plainMacroVariable(n) ? n : NAN;
-}
+// A computed parameter number (ir/SystemParams.h), one function per map: the number itself when
+// it is plain storage, else NaN (the domain error). As the index of `#[…]` the engines resolve
+// the number through the map instead, controller state included; this is the call alone.
+static double plainOrNan(ParamMap m, double n) { return plainParameter(m, parameterNumber(n)) ? n : NAN; }
+double ncc_builtin_ngc_parameter(const double *a) { return plainOrNan(ParamMap::Rs274, num(a[0])); }
+double ncc_builtin_macro_variable(const double *a) { return plainOrNan(ParamMap::MacroB, num(a[0])); }
+double ncc_builtin_macro_variable_c(const double *a) { return plainOrNan(ParamMap::MacroBMemoryC, num(a[0])); }
+double ncc_builtin_macro_variable_lathe(const double *a) { return plainOrNan(ParamMap::MacroBLathe, num(a[0])); }
 double ncc_builtin_ln(const double *a) { return std::log(num(a[0])); }
 double ncc_builtin_exp(const double *a) { return std::exp(num(a[0])); }
 double ncc_builtin_pow(const double *a) { return std::pow(num(a[0]), num(a[1])); }
@@ -73,7 +71,7 @@ double ncc_builtin_tolge(const double *a) { return num(a[0]) > num(a[1]) || tolE
 // Positions are 0-based and -1 means "not found" (Sinumerik INDEX/RINDEX/MINDEX/MATCH/SUBSTR).
 namespace {
 struct StrArgs {
-  StringPool &pool;
+  ValuePool &pool;
   const double *a;
   unsigned n;
   std::string &error;
@@ -110,7 +108,7 @@ double position(size_t p) { return p == std::string_view::npos ? -1.0 : (double)
 }  // namespace
 
 #define NCC_STRFN(NAME) \
-  static bool NAME(StringPool &pool, const double *args, unsigned n, double &out, std::string &error)
+  static bool NAME(ValuePool &pool, const double *args, unsigned n, double &out, std::string &error)
 
 NCC_STRFN(strStrlen) {
   StrArgs a{pool, args, n, error, "STRLEN"};
@@ -231,6 +229,8 @@ static const BuiltinInfo kBuiltins[] = {
     {"EXISTS", 1, ncc_builtin_exists, "ncc_builtin_exists"},
     {"NGC_PARAMETER", 1, ncc_builtin_ngc_parameter, "ncc_builtin_ngc_parameter"},
     {"MACRO_VARIABLE", 1, ncc_builtin_macro_variable, "ncc_builtin_macro_variable"},
+    {"MACRO_VARIABLE_C", 1, ncc_builtin_macro_variable_c, "ncc_builtin_macro_variable_c"},
+    {"MACRO_VARIABLE_LATHE", 1, ncc_builtin_macro_variable_lathe, "ncc_builtin_macro_variable_lathe"},
     {"AWAYFROMZERO", 1, ncc_builtin_awayfromzero, "ncc_builtin_awayfromzero"},
     {"TOLEQ", 3, ncc_builtin_toleq, "ncc_builtin_toleq"},   {"TOLNE", 3, ncc_builtin_tolne, "ncc_builtin_tolne"},
     {"TOLLT", 3, ncc_builtin_tollt, "ncc_builtin_tollt"},   {"TOLLE", 3, ncc_builtin_tolle, "ncc_builtin_tolle"},
@@ -249,6 +249,18 @@ static const BuiltinInfo kBuiltins[] = {
     {"TOSTR", 1, nullptr, nullptr, strTostr, "a", 's'},
     {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
     {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
+    // Frame builtins (ir/FrameBuiltins.h): argument kinds 's' (an axis or component name), 'n',
+    // 'f' (a frame); result 'f'.
+    // The builders take 0 pairs too: CTRANS() is the identity (Sinumerik's empty TRANS).
+    {"CTRANS", 12, nullptr, nullptr, frameCtrans, "snsnsnsnsnsn", 'f', 0},
+    {"CFINE", 12, nullptr, nullptr, frameCfine, "snsnsnsnsnsn", 'f', 0},
+    {"CROT", 6, nullptr, nullptr, frameCrot, "snsnsn", 'f', 0},
+    {"CSCALE", 12, nullptr, nullptr, frameCscale, "snsnsnsnsnsn", 'f', 0},
+    {"CMIRROR", 6, nullptr, nullptr, frameCmirror, "ssssss", 'f', 0},
+    {"INVFRAME", 1, nullptr, nullptr, frameInvframe, "f", 'f'},
+    {"FRAME_CHAIN", 2, nullptr, nullptr, frameChainFn, "ff", 'f'},
+    {"FRAME_GET", 3, nullptr, nullptr, frameGet, "fss", 'n'},
+    {"FRAME_SET", 4, nullptr, nullptr, frameSet, "fssn", 'f'},
 };
 
 const BuiltinInfo *builtinTable(unsigned &count) {
@@ -257,16 +269,15 @@ const BuiltinInfo *builtinTable(unsigned &count) {
 }
 
 std::string builtinArity(const BuiltinInfo &b) {
-  unsigned lo = b.minArity ? b.minArity : b.arity;
-  return lo == b.arity ? fmt::format("{}", b.arity) : fmt::format("{} or {}", lo, b.arity);
+  unsigned lo = b.fewest();
+  if (lo == b.arity) return fmt::format("{}", b.arity);
+  return fmt::format("{} {} {}", lo, lo + 1 == b.arity ? "or" : "to", b.arity);
 }
 
 std::string builtinDomainError(const BuiltinInfo &b) {
   std::string_view n = b.name;
-  if (n == "NGC_PARAMETER" || n == "MACRO_VARIABLE")  // a computed #[…] number
-    return std::string("computed parameter number is ") +
-           (n == "NGC_PARAMETER" ? "not #1-#5000 or #5599-#5601" : "not #0-#33 or #100-#999") +
-           ": controller state is read with a constant number (#5221), other numbers do not exist";
+  if (ParamMap m; paramMapFromBuiltin(n, m))  // a computed #[…] number used as a value
+    return "computed parameter number is not " + plainRangesText(m) + " (a plain parameter of '" + std::string(n) + "')";
   return "'" + std::string(n) + "' argument out of domain";
 }
 

@@ -6,6 +6,8 @@
 #include "ir/Jumps.h"
 #include "ir/RunErrors.h"
 #include "ir/Strings.h"
+#include "ir/SystemParams.h"
+#include "ir/SystemAccess.h"
 #include "ir/Value.h"
 #include "passes/CmdTemplate.h"
 #include "passes/EvalCode.h"
@@ -60,7 +62,7 @@ struct Evaluator::Impl {
   std::unordered_map<std::string, std::vector<double>> globalArrays;
   double lastIndex = 0;  // index of the last array element referenced (for the unset error)
   std::vector<double> numbered = std::vector<double>(100000, numberedStart());
-  StringPool pool;  // the run's strings (ir/Strings.h)
+  ValuePool pool;  // the run's strings (ir/Strings.h)
   DeclTable decls;  // declared types of the current module
   std::vector<double> rparams = std::vector<double>(1000, rParamStart());
   std::vector<double> qparams[kQSpaces];  // by qPrefixIndex, allocated on first use
@@ -86,8 +88,29 @@ struct Evaluator::Impl {
 
   // ------------------------------------------------------------ values
   double &numberedRef(Frame &fr, const Expr &v, bool write) {
-    double idx = num(number(fr, *v.args[0]));
-    long n = std::lround(idx);
+    const Expr &ix = *v.args[0];
+    if (ix.kind == ExprKind::Call) [[unlikely]]
+      return computedRef(fr, v, write);
+    return numberedSlot(fr, v, num(number(fr, ix)), write);
+  }
+  // #[(NGC_PARAMETER e)] and the other maps (ir/SystemParams.h): the number through the map.
+  [[gnu::noinline]] double &computedRef(Frame &fr, const Expr &v, bool write) {
+    ParamMap map;
+    const Expr *e = computedParameterNumber(v, map);
+    if (!e) return numberedSlot(fr, v, num(number(fr, *v.args[0])), write);
+    double n = parameterNumber(num(number(fr, *e)));
+    if (plainParameter(map, n)) return numberedSlot(fr, v, n, write);
+    // Controller state: read here (store writes it); a write here is a by-reference argument.
+    static double value;
+    std::string err;
+    if (!accessSystemParameter(sink, pool, map, n, write ? ParamAccess::Reference : ParamAccess::Read, value, v.loc, err))
+      fail(v.loc, err);
+    return value;
+  }
+  double &numberedSlot(Frame &fr, const Expr &v, double idx, bool write) {
+    // lround, without the library call for the usual whole number.
+    long n = idx >= -1e15 && idx <= 1e15 ? (long)idx : -1;
+    if ((double)n != idx) n = std::lround(idx);
     if (n >= 1 && n <= kMacroLocals) return fr.locals[n];
     if (n == 0) {
       if (write) fail(v.loc, "#0 is always vacant and cannot be assigned");
@@ -97,6 +120,15 @@ struct Evaluator::Impl {
     }
     if (n < 0 || n >= (long)numbered.size()) fail(v.loc, runErrorMessage(RunError::Numbered, limits, {}, (double)n));
     return numbered[n];
+  }
+  // A store into a computed `#[e]`: plain storage or, through the map, controller state.
+  [[gnu::noinline]] void storeComputed(const Expr &target, const Expr &e, ParamMap map, double v, Frame &fr,
+                                       CompiledFn &cf) {
+    v = convert(decls.find(*cf.fn, target), target, v, target.loc);  // no strings
+    double n = parameterNumber(num(number(fr, e)));
+    std::string err;
+    if (plainParameter(map, n)) numberedSlot(fr, target, n, true) = v;
+    else if (!accessSystemParameter(sink, pool, map, n, ParamAccess::Write, v, target.loc, err)) fail(target.loc, err);
   }
 
   double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, RunError outOfRange) {
@@ -193,7 +225,7 @@ struct Evaluator::Impl {
     case VarSpace::System: {  // read here; execAssign writes
       static double value;
       std::string err;
-      if (!sink.readSystem(systemVar(fr, v), value, err))
+      if (!readSystemValue(sink, pool, systemVar(fr, v), value, err))
         fail(v.loc, err.empty() ? runErrorMessage(RunError::SysVar, limits, v.str) : err);
       return value;
     }
@@ -223,7 +255,7 @@ struct Evaluator::Impl {
     }
     case ExprKind::Unary: {
       double r, a = ev(fr, *e.args[0]);
-      if (isString(a)) fail(e.loc, operatorOnStringMessage(opCodeName(e.op)));
+      if (isHandle(a)) fail(e.loc, operatorOnHandle(e.op, a));
       if (applyUnary(e.op, a, r) != OpStatus::Ok) fail(e.loc, "bad unary operator");
       return r;
     }
@@ -237,9 +269,9 @@ struct Evaluator::Impl {
       double a = ev(fr, *e.args[0]);
       double b = ev(fr, *e.args[1]);
       double r;
-      if (isString(a) || isString(b)) {
+      if (isHandle(a) || isHandle(b)) {
         std::string err;
-        if (e.op < OpCode::Eq || e.op > OpCode::Ge) fail(e.loc, operatorOnStringMessage(opCodeName(e.op)));
+        if (e.op < OpCode::Eq || e.op > OpCode::Ge) fail(e.loc, operatorOnHandle(e.op, isHandle(a) ? a : b));
         if (!compareStrings(pool, (int)e.op - (int)OpCode::Eq, a, b, r, err)) fail(e.loc, err);
         return r;
       }
@@ -258,16 +290,16 @@ struct Evaluator::Impl {
       if (!b) fail(e.loc, fmt::format("unknown function '{}'", e.str));
       if (!b->accepts(e.args.size()))
         fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, builtinArity(*b), e.args.size()));
-      double args[4] = {0, 0, 0, 0};
-      for (size_t i = 0; i < e.args.size() && i < 4; ++i) args[i] = ev(fr, *e.args[i]);
+      double args[kMaxBuiltinArgs] = {};
+      for (size_t i = 0; i < e.args.size() && i < kMaxBuiltinArgs; ++i) args[i] = ev(fr, *e.args[i]);
       double r;
-      if (b->sfn) {  // string builtins take the values as they are
+      if (b->sfn) {  // typed builtins (strings, frames) take the values as they are
         std::string err;
         if (!b->sfn(pool, args, (unsigned)e.args.size(), r, err)) fail(e.loc, err);
         return r;
       }
       for (double &a : args) {
-        if (isString(a)) fail(e.loc, builtinOnStringMessage(b->name));
+        if (isHandle(a)) fail(e.loc, handleMessage(HandleUse::Builtin, handleKind(a), b->name));
         a = num(a);
       }
       r = b->fn(args);
@@ -276,6 +308,10 @@ struct Evaluator::Impl {
     }
     }
     fail(e.loc, "bad expression");
+  }
+
+  static std::string operatorOnHandle(OpCode op, double v) {
+    return handleMessage(HandleUse::Operator, handleKind(v), opCodeName(op));
   }
 
   double intern(std::string_view s, SourceLoc loc) {
@@ -288,7 +324,7 @@ struct Evaluator::Impl {
   // A value used as a number (conditions, counts, indices, words): a string is an error.
   double number(Frame &fr, const Expr &e) {
     double v = ev(fr, e);
-    if (isString(v)) fail(e.loc, stringAsNumberMessage());
+    if (isHandle(v)) fail(e.loc, handleMessage(HandleUse::AsNumber, handleKind(v)));
     return v;
   }
 
@@ -365,9 +401,12 @@ struct Evaluator::Impl {
   void store(const Expr &target, double v, Frame &fr, CompiledFn &cf) {
     if (target.space == VarSpace::System) {
       std::string err;
-      if (!sink.writeSystem(systemVar(fr, target), v, target.loc, err)) fail(target.loc, err);
+      if (!writeSystemValue(sink, pool, systemVar(fr, target), v, target.loc, err)) fail(target.loc, err);
       return;
     }
+    ParamMap map;
+    if (target.space == VarSpace::Numbered && target.args[0]->kind == ExprKind::Call) [[unlikely]]
+      if (const Expr *e = computedParameterNumber(target, map)) return storeComputed(target, *e, map, v, fr, cf);
     v = convert(decls.find(*cf.fn, target), target, v, target.loc);
     varRef(fr, cf, target, true) = v;
   }
@@ -378,9 +417,10 @@ struct Evaluator::Impl {
     if (d) {
       std::string err;
       if (!convertForStore(pool, d->type, d->len, target.str, v, v, err)) fail(loc, err);
-    } else if (isString(v) && (target.space == VarSpace::Numbered || target.space == VarSpace::RParam ||
-                               (target.space == VarSpace::QParam && target.str != "QS"))) {
-      fail(loc, stringInParameterMessage());
+    } else if (isHandle(v) && (target.space == VarSpace::Numbered || target.space == VarSpace::RParam ||
+                               target.space == VarSpace::QParam)) {
+      if (isFrame(v) || target.space != VarSpace::QParam || target.str != "QS")
+        fail(loc, handleMessage(HandleUse::InParameter, handleKind(v)));
     }
     return v;
   }
@@ -505,6 +545,10 @@ struct Evaluator::Impl {
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
       case IK::ModalCall: setModal(*in.op, fr); ++pc; break;
+      case IK::ModalTrigger:  // as after a move: not inside the modal callee itself
+        if (!modal.callee.empty() && !inModal) runModal(in.op->loc, fr);
+        ++pc;
+        break;
       case IK::SectionCall: {
         double n = in.expr ? std::round(num(number(fr, *in.expr))) : 1;
         if (!(n >= 1)) {
@@ -577,7 +621,7 @@ struct Evaluator::Impl {
       }
       double v = ev(fr, *a.value);
       if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
-        if (isString(v)) fail(op.loc, stringInParameterMessage());
+        if (isHandle(v)) fail(op.loc, handleMessage(HandleUse::InParameter, handleKind(v)));
         out.numbered.push_back({std::atol(k.c_str()), v});
       } else {
         // A typed parameter converts its argument (ir/Strings.h convertForStore).

@@ -1,11 +1,13 @@
 // The ncrt C ABI: storage, command execution and run-time errors for compiled NC programs.
 #include "runtime/ncrt.h"
+#include "ir/SystemAccess.h"
 #include "ir/Jumps.h"
 #include "ir/RunErrors.h"
 
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
 #include "ir/Diagnostics.h"
+#include "ir/SystemParams.h"
 #include "ir/SystemVars.h"
 
 #include <fmt/format.h>
@@ -194,7 +196,7 @@ double ncrt_sysvar(ncrt_ctx *ctx, double ref, const char *name, uint32_t file, u
   double v;
   std::string err;
   SysRef r = sysRefFromNumber(ref);
-  if ((int)r.var < kSysVarIds && ctx->sink.readSystem(r, v, err)) return v;
+  if ((int)r.var < kSysVarIds && readSystemValue(ctx->sink, ctx->pool, r, v, err)) return v;
   return failed(ctx, file, line, col, err.empty() ? runErrorMessage(RunError::SysVar, ctx->limits, name) : err);
 }
 
@@ -207,7 +209,17 @@ double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, double
 
 double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint32_t line, uint32_t col) {
   std::string err;
-  return ctx->sink.writeSystem(sysRefFromNumber(ref), v, {file, line, col}, err) ? 0.0 : failed(ctx, file, line, col, err);
+  return writeSystemValue(ctx->sink, ctx->pool, sysRefFromNumber(ref), v, {file, line, col}, err)
+             ? 0.0
+             : failed(ctx, file, line, col, err);
+}
+
+double ncrt_param(ncrt_ctx *ctx, uint32_t map, uint32_t access, double n, double v, uint32_t file, uint32_t line,
+                  uint32_t col) {
+  std::string err;
+  if (accessSystemParameter(ctx->sink, ctx->pool, (ParamMap)map, n, (ParamAccess)access, v, {file, line, col}, err))
+    return access == (uint32_t)ParamAccess::Read ? v : 0.0;
+  return failed(ctx, file, line, col, err);
 }
 
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }
@@ -220,6 +232,9 @@ void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn) {
   ctx->modal_hook = reinterpret_cast<int (*)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t)>(fn);
 }
 
+int ncrt_modal_trigger(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  return ctx->modal_hook ? ctx->modal_hook(ctx, &ctx->storage, file, line, col) : NCRT_OK;
+}
 int ncrt_save_modal(ncrt_ctx *ctx) { return ctx->sink.saveModal() ? NCRT_OK : NCRT_ERROR; }
 int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   return ctx->sink.restoreModal({file, line, col}) ? NCRT_OK : NCRT_ERROR;

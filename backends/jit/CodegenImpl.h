@@ -9,6 +9,7 @@
 #include "ir/Decls.h"
 #include "ir/Jumps.h"
 #include "ir/NCIR.h"
+#include "ir/SystemParams.h"
 #include "passes/CmdTemplate.h"
 
 #include <llvm/IR/IRBuilder.h>
@@ -29,13 +30,14 @@ using ir::VarDecl;
 
 // A value of an expression and whether it can be vacant at run time (variable reads);
 // arithmetic results never are, so most vacant checks fold away at compile time.
-// mayString: the value can be a string handle (ir/Value.h isString): loads of named variables
-// that are not declared numeric, QS parameters, string constants and string results. Only such
-// values get a string check where a number is needed, at `loc` (where the value came from).
+// mayHandle: the value can be a handle, a string or a frame (ir/Value.h isHandle): loads of named
+// variables that are not declared numeric, QS parameters, string constants and typed-builtin
+// results. Only such values get a handle check where a number is needed, at `loc` (where the
+// value came from).
 struct Val {
   llvm::Value *v;
   bool mayVacant;
-  bool mayString = false;
+  bool mayHandle = false;
   SourceLoc loc = {};
 };
 
@@ -121,10 +123,13 @@ private:
   llvm::Value *sysVarRef(const ir::Expr &var);
   Val binary(const ir::Expr &e);
   Val callBuiltin(const ir::Expr &e);
-  llvm::Value *numOf(Val v);  // a string is the error stringAsNumberMessage() at v.loc
-  llvm::Value *numOf(Val v, SourceLoc loc, const std::string &stringError);
+  llvm::Value *numOf(Val v);  // a handle is the error HandleUse::AsNumber at v.loc
+  llvm::Value *numOf(Val v, SourceLoc loc, HandleUse use, std::string_view name = {});
   llvm::Value *isStr(llvm::Value *v);
-  void checkNotString(Val v, SourceLoc loc, const std::string &message);
+  llvm::Value *isFrameHandle(llvm::Value *v);
+  llvm::Value *isHandleBits(llvm::Value *v);
+  // Fails with handleMessage(use, kind, name) when v is a handle (a string passes if stringsOk).
+  void checkNotHandle(Val v, SourceLoc loc, HandleUse use, std::string_view name = {}, bool stringsOk = false);
   llvm::Value *checked(llvm::Value *result);  // unset bits (a reported error) -> fail
   Val stringConst(const std::string &s, SourceLoc loc);
   Val concat(const ir::Expr &e);
@@ -138,6 +143,14 @@ private:
   llvm::Value *roundOf(llvm::Value *v);  // llvm.round: half away from zero, like lround
   llvm::Value *varPtr(const ir::Expr &var, bool write);
   llvm::Value *numberedPtr(const ir::Expr &var, bool write);
+  llvm::Value *numberedSlot(const ir::Expr &var, llvm::Value *x, bool write);  // #[x], x computed
+  // #[(NGC_PARAMETER e)] and the other maps (ir/SystemParams.h): plain numbers inline, the rest
+  // through ncrt_param.
+  llvm::Value *plainNumber(ParamMap m, llvm::Value *r);
+  llvm::Value *splitComputed(const ir::Expr &e, ParamMap m, llvm::BasicBlock *plain, llvm::BasicBlock *sys);
+  Val loadComputed(const ir::Expr &var, const ir::Expr &e, ParamMap m);
+  void storeComputed(const ir::Expr &var, const ir::Expr &e, ParamMap m, Val value);
+  llvm::Value *joined(llvm::Value *a, llvm::BasicBlock *aEnd, llvm::Value *b, llvm::BasicBlock *bEnd);  // a phi
   llvm::Value *elemPtr(const ir::Expr &var, llvm::Value *base);
   llvm::Value *declaredElemPtr(const ir::Expr &var, llvm::Value *base, const VarDecl &d);
   llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
@@ -166,7 +179,9 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar, fSysVarAt, fSysVarSet;
-  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook;
+  llvm::FunctionCallee fParam;  // ncrt_param: computed parameter numbers that are controller state
+  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook,
+      fModalTrigger;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;
