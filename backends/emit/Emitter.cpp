@@ -118,6 +118,8 @@ private:
   double programmedFeed_ = 0;
   double speedLimit_ = 0;                   // the CSS limit the written program holds (rpm, 0 none)
   bool cssWritten_ = false;                 // G96 in force in the written program
+  bool cssNeedsS_ = false;                  // a G96 waits in the block for its S word
+  std::string surfaceWord_;                 // the last S written under G96
   bool flood_ = false, mist_ = false;            // written coolant state
   bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
 };
@@ -184,6 +186,9 @@ void Emitter::addPending(PendingGroup g, const std::string &word, const MotionRe
 }
 
 void Emitter::flushPending() {
+  // A G96 for a new limit alone (no S record follows): the surface speed again, as G96 needs S.
+  if (cssNeedsS_ && !(pendingGroups_ & (1u << (unsigned)PendingGroup::Speed))) pending_.push_back(surfaceWord_);
+  cssNeedsS_ = false;
   if (pendingGroups_ & (1u << (unsigned)PendingGroup::Coolant)) {
     // Coolant codes share one modal group: the first joins the block, others get their own.
     std::vector<std::string> codes = coolantCodes();
@@ -476,6 +481,7 @@ void Emitter::spindleMode(const MotionRecord &r) {
   // G97 runs before M3-M5 of its block (rs274 order): after a stop it goes in a block of its own.
   if (!css && (pendingGroups_ & (1u << (unsigned)PendingGroup::Spindle))) flushPending();
   addPending(PendingGroup::SpindleMode, css ? "G96" : "G97", r);
+  cssNeedsS_ = css && wasCss;
   if (!css || !(r.value > 0)) return;
   if (st_.target == Target::Sinumerik) {
     if (r.value != speedLimit_) pending_.push_back("LIMS=" + limit);
@@ -584,7 +590,9 @@ void Emitter::record(const MotionRecord &r) {
     break;  // positions already include the offset: the program runs with length comp off
   case RecordKind::SpindleSpeed: {
     std::string w;
-    if (number(r.value, WordClass::Speed, "S", r, w)) addPending(PendingGroup::Speed, w, r);
+    if (!number(r.value, WordClass::Speed, "S", r, w)) break;
+    addPending(PendingGroup::Speed, w, r);
+    if (cssWritten_) surfaceWord_ = w, cssNeedsS_ = false;
     break;
   }
   case RecordKind::SpindleCW: addPending(PendingGroup::Spindle, code(Code::SpindleCW), r); break;
