@@ -15,7 +15,8 @@ const char *recordKindName(RecordKind k) {
                                 "coolant_mist", "feed_rate",     "feed_mode",    "path_mode",
                                 "plane",        "comment",       "message",      "optional_stop",
                                 "program_stop", "program_end",   "aux",          "cycle_begin",
-                                "cycle_end",    "frame_change",  "spline",       "spindle_orient"};
+                                "cycle_end",    "frame_change",  "spline",       "spindle_orient",
+                                "spindle_mode"};
   static_assert(sizeof(names) / sizeof(names[0]) == (size_t)RecordKind::Count);
   return names[(unsigned)k];
 }
@@ -206,6 +207,9 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
     break;
   case RecordKind::SpindleOrient:
     fmt::format_to(out, " {} {} {}", r.value, r.ivalue, r.value2);
+    break;
+  case RecordKind::SpindleMode:
+    fmt::format_to(out, " {} {} {}", r.ivalue, r.value, r.value2);
     break;
   case RecordKind::CycleBegin:
   case RecordKind::FrameChange:

@@ -53,6 +53,11 @@ enum class RecordKind : uint8_t {
   Spline,        // polynomial or NURBS curve fed to `end` at `feed`: spline() (SplineData)
   SpindleOrient, // oriented spindle stop: `value` angle (degrees), `ivalue` way (0 cw, 1 ccw,
                  // 2 shortest), `value2` seconds to wait for it (0: no wait)
+  SpindleMode,   // G96/G97: `ivalue` 0 constant rpm, 1 constant surface speed (CSS; the
+                 // SpindleSpeed records that follow are m/min, the rpm follows the tool's
+                 // radius, see docs/IR.md), 2 CSS goes on about a moved origin (no code);
+                 // `value` the CSS spindle-speed limit (rpm, 0: none), `value2` the origin:
+                 // the machine X of the spindle axis
   Count
 };
 

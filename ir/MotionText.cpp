@@ -320,6 +320,20 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
     if (!(r.value2 >= 0)) return p.error(b, "the wait for the orientation must not be negative");
     break;
   }
+  case RecordKind::SpindleMode: {
+    p.skipBlanks();
+    size_t b = p.pos();
+    if (!p.integer(r.ivalue)) return false;
+    if (r.ivalue < 0 || r.ivalue > 2)
+      return p.error(b, "a spindle mode is 0 (rpm), 1 (constant surface speed) or 2 (its origin moved)");
+    p.skipBlanks();
+    b = p.pos();
+    if (!p.number(r.value)) return false;
+    if (!(r.value >= 0)) return p.error(b, "the spindle-speed limit must not be negative");
+    p.skipBlanks();
+    if (!p.number(r.value2)) return false;
+    break;
+  }
   case RecordKind::CycleBegin:
   case RecordKind::FrameChange:
     p.skipBlanks();

@@ -13,6 +13,10 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::Spindle, "way", "cw", 0},
     {OpKind::Spindle, "way", "ccw", 1},
     {OpKind::Spindle, "way", "shortest", 2},
+    {OpKind::Speed, "mode", "rpm", 1},
+    {OpKind::Speed, "mode", "css", 2},
+    {OpKind::Speed, "after_css", "keep", 0},  // sub2
+    {OpKind::Speed, "after_css", "error", 1},
     {OpKind::Coolant, "flood", "on", 0},
     {OpKind::Coolant, "flood", "off", 1},
     {OpKind::Coolant, "mist", "on", 0},

@@ -203,6 +203,9 @@ private:
       const Expr *d = op.get("dir");
       if (!d || d->str != "orient") error(op.loc, "'spindle' angle=, way= and wait= need dir=orient");
     }
+    // A speed op sets S, a spindle mode or a limit: at least one of them.
+    if (op.kind == OpKind::Speed && !op.get("value") && !op.get("mode") && !op.get("limit"))
+      error(op.loc, "'speed' needs value=, mode= or limit=");
     // DEF declares named variables; numbered parameters exist without a declaration.
     if (const Expr *v = op.kind == OpKind::Declare ? op.get("var") : nullptr)
       if (v->kind == ExprKind::Var && v->space != VarSpace::Local && v->space != VarSpace::Global)

@@ -39,7 +39,8 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Move, "chamfer", Word::Chamfer}, {OpKind::Move, "round", Word::Round},
     {OpKind::Move, "via_x", Word::ViaX},     {OpKind::Move, "via_y", Word::ViaY},
     {OpKind::Move, "via_z", Word::ViaZ},     {OpKind::Spindle, "angle", Word::R},
-    {OpKind::Spindle, "wait", Word::Q},
+    {OpKind::Spindle, "wait", Word::Q},      {OpKind::Speed, "limit", Word::D},
+    {OpKind::Contour, "type", Word::P},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -155,6 +156,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   case OpKind::CutterComp:
     if (!symbolArg("side", c.sub) || !symbolArg("d_default", c.sub2)) return false;
     break;
+  case OpKind::Speed:
+    if (!symbolArg("mode", c.sub) || !symbolArg("after_css", c.sub2)) return false;
+    break;
   case OpKind::Stop: return symbolArg("kind", c.sub);
   case OpKind::SetOffset:
     if (!symbolArg("kind", c.sub)) return false;
@@ -257,6 +261,10 @@ Op cmdToOp(const MachineCmd &c) {
     if (c.sub != 3) return op;
     op.set("way", Expr::symbol(opSymbolName(op.kind, "way", c.sub2)));
     break;
+  case CmdKind::Speed:
+    if (c.sub) op.set("mode", Expr::symbol(opSymbolName(op.kind, "mode", c.sub)));
+    if (c.sub2) op.set("after_css", Expr::symbol(opSymbolName(op.kind, "after_css", c.sub2)));
+    break;
   case CmdKind::Stop: op.set("kind", Expr::symbol(opSymbolName(op.kind, "kind", c.sub))); return op;
   case CmdKind::CutterComp:
     op.set("side", Expr::symbol(opSymbolName(op.kind, "side", c.sub)));
@@ -297,8 +305,8 @@ Op cmdToOp(const MachineCmd &c) {
   for (auto &kw : kKeyWords)
     if (kw.op == op.kind && c.has(kw.word) &&
         (op.kind != OpKind::Aux || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
-      bool isInt = kw.word == Word::T || kw.word == Word::H || kw.word == Word::D ||
-                   (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux;
+      bool isInt = kw.word == Word::T || kw.word == Word::H || (kw.word == Word::D && op.kind != OpKind::Speed) ||
+                   (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux || op.kind == OpKind::Contour;
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }
   if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
@@ -306,7 +314,7 @@ Op cmdToOp(const MachineCmd &c) {
     for (int i = 0; i < kWords; ++i) {
       Word w = (Word)i;
       if (!c.has(w)) continue;
-      if (op.kind == OpKind::SetOffset && w == Word::P) continue;
+      if ((op.kind == OpKind::SetOffset || op.kind == OpKind::Contour) && w == Word::P) continue;
       if (w >= Word::PolarR) continue;  // named keys, above
       op.set(std::string(1, kWordLetters[i]), real(c.get(w)));
     }

@@ -220,6 +220,15 @@ void CanonTraceWriter::record(const MotionRecord &r) {
       end();
     }
     break;
+  case RecordKind::SpindleMode:
+    // rs274 prints the G96 limit (D), 1e30 for none, and 0 for G97; a moved origin is no command.
+    if (r.ivalue == 2) break;
+    begin(n);
+    buf_.append("SET_SPINDLE_MODE(0 ");
+    num(r.ivalue == 0 ? 0.0 : r.value > 0 ? r.value : 1e30);
+    buf_.push_back(')');
+    end();
+    break;
   case RecordKind::CoolantFlood:
     flood_ = r.ivalue != 0;
     line(n, flood_ ? "FLOOD_ON()" : "FLOOD_OFF()");

@@ -376,7 +376,7 @@ const ResetGroup kResetGroups[] = {
     {"work_offset", [](X &x) { x.st.workOffset = 1, x.applyWorkOffset(); }},
     {"g92", [](X &x) { x.g92 = {}, x.g92On = false; }},
     {"feed", [](X &x) { x.st.feed = x.feedMM = 0; }},
-    {"spindle", [](X &x) { x.st.spindle = 0; }},
+    {"spindle", [](X &x) { x.st.spindle = 0, x.st.css = false, x.st.speedLimit = 0; }},
     {"coolant", [](X &x) { x.st.flood = x.st.mist = false; }},
     {"path_mode", [](X &x) { x.st.pathMode = ModalState{}.pathMode; }},
     {"rotation", [](X &x) { x.pf.clearRotation(), x.pf.update(); }},
@@ -592,15 +592,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.emit(r);
     return true;
   }
-  case CmdKind::Speed: {
-    double s = c.get(Word::S);
-    if (s < 0) return x.error("Negative spindle speed", "bad-speed");
-    x.st.speed = s;
-    MotionRecord r = x.record(RecordKind::SpindleSpeed);
-    r.value = s;
-    x.emit(r);
-    return true;
-  }
+  case CmdKind::Speed: return x.execSpeed(c);
   case CmdKind::ToolSelect: {
     double t = c.get(Word::T);
     if (!x.checkTool(t, "T")) return false;

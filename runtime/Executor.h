@@ -32,6 +32,11 @@ struct ModalState {
   bool flood = false, mist = false;
   bool ended = false;       // after M2/M30
   AxisVec position{};       // current position, machine coordinates mm
+  // Constant surface speed (G96, runtime/ExecutorSpindle.cpp): `speed` is then the surface
+  // speed as programmed (m/min or ft/min); speedLimit the G96 D / G50 S / G92 S limit (rpm, 0 none).
+  bool css = false;
+  double surface = 0;     // CSS surface speed, m/min
+  double speedLimit = 0;
 };
 
 class Executor {

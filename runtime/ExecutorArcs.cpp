@@ -62,7 +62,7 @@ bool Executor::Impl::emitArc(const AxisVec &end, const Vec3 &centre, const Vec3 
   r.center = centre;
   r.turns = turns;
   r.exactStop = exactStop || st.pathMode == ModeValue::ExactStop;
-  r.feed = feed > 0 ? feed : moveFeed(arcGeometry(r).length);
+  r.feed = feed > 0 ? feed : cssPerRev() ? cssFeed(r) : moveFeed(arcGeometry(r).length);
   if (feed <= 0) inverseTimeRate(r.feed);
   st.position = end;
   return emitMove(r);

@@ -159,6 +159,7 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
     s.cutAxis = use == ContourUse::RoughAlongZ ? iz : ix;
     s.cutName = use == ContourUse::RoughAlongZ ? "Z" : "X";
     s.depth = roughDepth, s.retract = roughRetract;
+    s.typeII = c.has(Word::P) && c.get(Word::P) == 2;
     s.allowance = {allowance[0], allowance[1]};
     if (!stockRemoval(ct, s, moves, err)) return error(err, "contour-invalid");
   }

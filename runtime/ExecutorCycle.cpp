@@ -227,6 +227,7 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
   if (x.st.units != ModeValue::MM) return x.error("library cycles run in mm (G21) only", "unsupported-code");
   if (!x.compForbids("Cannot use canned cycles with cutter compensation on")) return false;
   if (!x.cycleFrameOk()) return false;
+  if (x.st.css) return x.error("library cycles under constant surface speed (G96) are not supported", "unsupported-code");
   CycleContext ctx;
   ctx.plane = (int)x.plane();
   AxisVec here = x.programPosition();

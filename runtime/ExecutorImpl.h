@@ -250,6 +250,19 @@ struct Executor::Impl {
   bool moveTo(RecordKind k, const AxisVec &to, bool exactStop = false, double feed = 0);
   bool checkFeed(const char *code);
   double moveFeed(double lengthMM) const;
+  // Spindle speed and constant surface speed (ExecutorSpindle.cpp).
+  bool execSpeed(const MachineCmd &c);
+  double cssOrigin() const { return offset(0); }  // machine X of the spindle axis (program X0)
+  double cssOriginNoted = 0;  // the origin the last SpindleMode record gave
+  // The spindle speed (rpm) CSS gives at machine X: the limits applied; +inf when unbounded.
+  double cssRpm(double machineX) const;
+  // Feed per revolution under CSS: the mean path speed of the move (mm/min, length / time).
+  double cssFeed(const MotionRecord &r) const;
+  // Before a move under CSS: the origin record when the program's X zero moved, errors for
+  // what CSS does not support.
+  bool cssBeforeMove(const MotionRecord &r);
+  void spindleModeRecord(int mode);
+  bool cssPerRev() const { return st.css && st.feedMode == ModeValue::PerRev; }
   // In inverse time each feed move gets its own rate record (mm/min), as rs274 prints it.
   void inverseTimeRate(double mmPerMin);
   bool arc(const MachineCmd &c, bool cw);

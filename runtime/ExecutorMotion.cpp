@@ -68,7 +68,7 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop, dou
   if (k == RecordKind::Linear) {
     double d2 = 0;
     for (int i = 0; i < 3; ++i) d2 += (to[i] - r.start[i]) * (to[i] - r.start[i]);
-    r.feed = feed > 0 ? feed : moveFeed(std::sqrt(d2));
+    r.feed = feed > 0 ? feed : cssPerRev() ? cssFeed(r) : moveFeed(std::sqrt(d2));
     if (feed <= 0) inverseTimeRate(r.feed);
   }
   st.position = to;
@@ -76,6 +76,7 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop, dou
 }
 
 bool Executor::Impl::emitMove(const MotionRecord &r) {
+  if (!cssBeforeMove(r)) return false;
   notePath(r);
   if (corner.active) return cornerNext(r);
   if (corner.requested) {
@@ -254,7 +255,7 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
     height = 0;
     for (int i = 0; i < 3; ++i) height += (end[i] - st.position[i]) * machineNormal[i];
   }
-  r.feed = moveFeed(std::hypot(sweep * radius, height));
+  r.feed = cssPerRev() ? cssFeed(r) : moveFeed(std::hypot(sweep * radius, height));
   inverseTimeRate(r.feed);
   st.position = end;
   return emitMove(r);
@@ -299,6 +300,7 @@ bool Executor::Impl::emitSpline(const std::vector<std::array<double, 3>> &pts, i
   r.setSpline(std::move(s));
   if (std::string why = splineError(r); !why.empty()) return error(why, "spline-invalid");
   r.exactStop = st.pathMode == ModeValue::ExactStop;
+  if (cssPerRev()) return error("a spline with feed per revolution under constant surface speed (G96) is not supported", "unsupported-code");
   r.feed = moveFeed(splineLength(r));
   st.position = r.end;
   return emitMove(r);

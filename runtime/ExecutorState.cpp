@@ -267,8 +267,8 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::ToolOffset: out = is(st.toolLengthH != 0); return true;
   case SysVar::RetractR: out = is(st.retract == ModeValue::RetractR); return true;
   case SysVar::RetractOldZ: out = is(st.retract == ModeValue::RetractInitial); return true;
-  case SysVar::SpindleRpmMode: out = 1; return true;  // constant surface speed is not modelled
-  case SysVar::SpindleCssMode: out = 0; return true;
+  case SysVar::SpindleRpmMode: out = is(!st.css); return true;
+  case SysVar::SpindleCssMode: out = is(st.css); return true;
   case SysVar::IjkAbsolute: out = is(st.arcDistance == ModeValue::ArcAbsolute); return true;
   case SysVar::LatheDiameter: out = 0; return true;
   case SysVar::LatheRadius: out = 1; return true;

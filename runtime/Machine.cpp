@@ -237,6 +237,7 @@ const KeyDef<Machine> kMachineKeys[] = {
     {"path_tolerance", &Machine::pathTolerance, 0},
     {"lookahead", &Machine::lookahead, 1, 100000},
     {"free_tools", &Machine::freeTools, 0, 99999},
+    {"max_spindle_speed", &Machine::maxSpindleSpeed, 0, kInf},
 };
 
 // The entries of a table value: f(key text, key, value) for each; `expected` (", got <type>"

@@ -139,6 +139,8 @@ struct Machine {
   Controller controller;
   double rapidFeed = 10000;              // mm/min, path rapid speed cap
   double maxFeed = 5000;                 // mm/min, programmed feed cap
+  double maxSpindleSpeed = 0;            // rpm, the spindle's top speed (0: not limited); caps
+                                         // constant surface speed (G96)
   double arcTolerance = 0.002;           // mm: arc start/end radius mismatch allowed
   double pathTolerance = 0.01;           // mm: corner blending tolerance in continuous mode
   int lookahead = 64;                    // planner window in moves

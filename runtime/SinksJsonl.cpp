@@ -99,6 +99,10 @@ std::string motionRecordJson(const MotionRecord &r) {
       s += ",\"wait\":";
       num(s, r.value2);
     }
+    if (r.kind == RecordKind::SpindleMode) {  // the CSS origin: machine X of the spindle axis
+      s += ",\"origin\":";
+      num(s, r.value2);
+    }
     if (r.kind == RecordKind::ToolLength && r.value2 != 0) {  // a lathe tool's X offset
       s += ",\"value2\":";
       num(s, r.value2);

@@ -40,7 +40,7 @@ private:
 
 // State words waiting for the next block. A second word of a group already waiting flushes the
 // buffer first (the passport's "alternative window" rule, seed 004 §3.5).
-enum class PendingGroup : uint8_t { Speed, Spindle, Coolant, Tool, ToolChange, Plane, FeedMode, PathMode };
+enum class PendingGroup : uint8_t { Speed, Spindle, Coolant, Tool, ToolChange, Plane, FeedMode, PathMode, SpindleMode };
 
 class Emitter final : public ProgramEmitter {
 public:
@@ -83,6 +83,7 @@ private:
   // Why this output cannot write the spline exactly (empty: it can, as LinuxCNC G5.2/G5.3).
   std::string splineRefusal(const MotionRecord &r) const;
   void spindleOrient(const MotionRecord &r);
+  void spindleMode(const MotionRecord &r);
   void spline(const MotionRecord &r);
   void planeWord(Plane p, Words &w);
   void dwell(const MotionRecord &r);
@@ -115,6 +116,10 @@ private:
   std::string feedText_;                    // last F value written
   bool haveProgrammedFeed_ = false;
   double programmedFeed_ = 0;
+  double speedLimit_ = 0;                   // the CSS limit the written program holds (rpm, 0 none)
+  bool cssWritten_ = false;                 // G96 in force in the written program
+  bool cssNeedsS_ = false;                  // a G96 waits in the block for its S word
+  std::string surfaceWord_;                 // the last S written under G96
   bool flood_ = false, mist_ = false;            // written coolant state
   bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
 };
@@ -181,6 +186,9 @@ void Emitter::addPending(PendingGroup g, const std::string &word, const MotionRe
 }
 
 void Emitter::flushPending() {
+  // A G96 for a new limit alone (no S record follows): the surface speed again, as G96 needs S.
+  if (cssNeedsS_ && !(pendingGroups_ & (1u << (unsigned)PendingGroup::Speed))) pending_.push_back(surfaceWord_);
+  cssNeedsS_ = false;
   if (pendingGroups_ & (1u << (unsigned)PendingGroup::Coolant)) {
     // Coolant codes share one modal group: the first joins the block, others get their own.
     std::vector<std::string> codes = coolantCodes();
@@ -443,6 +451,47 @@ void Emitter::spindleOrient(const MotionRecord &r) {
   writeBlock(w, r.blockNumber);
 }
 
+// Constant surface speed (docs/IR.md "spindle_mode"): LinuxCNC `G96 D<limit>` (the limit for that
+// G96 only), Sinumerik `G96 LIMS=<limit> SCC[X]` (X the transverse axis the speed follows); the
+// S word (m/min) follows from the spindle_speed record into the same block; `G97` for constant
+// rpm. Other ISO targets are refused: a Fanuc/808D G96 needs a lathe program, which the emitters
+// do not write yet. The written program is in machine coordinates, so its X0 must be the spindle
+// axis the surface speed is measured from.
+void Emitter::spindleMode(const MotionRecord &r) {
+  auto refuse = [&](const std::string &why) {
+    diags_.error(r.loc, "the [" + st_.section + "] emitter " + why + ": " + printMotionRecord(r), "unsupported-code");
+    errors_ = true;
+  };
+  const bool css = r.ivalue != 0;
+  const bool linuxcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
+  if (css && !linuxcnc && st_.target != Target::Sinumerik)
+    return refuse("writes constant surface speed (G96) only for LinuxCNC and Sinumerik");
+  if (css && std::fabs(r.value2) > 1e-9)
+    return refuse("writes machine coordinates, whose X0 is not the spindle axis constant surface speed measures from "
+                  "(it is at machine X" + std::to_string(r.value2) + ")");
+  if (r.ivalue == 2) return;
+  std::string limit;
+  if (r.value > 0 && !number(r.value, WordClass::Speed, "", r, limit)) return;
+  // Sinumerik's LIMS is modal: a limit, once written, cannot be taken back.
+  if (st_.target == Target::Sinumerik && css && speedLimit_ > 0 && !(r.value > 0))
+    return refuse("cannot take back a spindle-speed limit (LIMS) once written");
+  const bool wasCss = cssWritten_;
+  cssWritten_ = css;
+  if (!css && !wasCss) return;  // constant rpm already (a limit alone, or G97 again)
+  // G97 runs before M3-M5 of its block (rs274 order): after a stop it goes in a block of its own.
+  if (!css && (pendingGroups_ & (1u << (unsigned)PendingGroup::Spindle))) flushPending();
+  addPending(PendingGroup::SpindleMode, css ? "G96" : "G97", r);
+  cssNeedsS_ = css && wasCss;
+  if (!css || !(r.value > 0)) return;
+  if (st_.target == Target::Sinumerik) {
+    if (r.value != speedLimit_) pending_.push_back("LIMS=" + limit);
+    pending_.push_back("SCC[X]");
+  } else {
+    pending_.push_back("D" + limit);
+  }
+  speedLimit_ = r.value;
+}
+
 void Emitter::dwell(const MotionRecord &r) {
   flushPending();
   NumberFormat f = fmt(WordClass::Dwell);
@@ -541,13 +590,16 @@ void Emitter::record(const MotionRecord &r) {
     break;  // positions already include the offset: the program runs with length comp off
   case RecordKind::SpindleSpeed: {
     std::string w;
-    if (number(r.value, WordClass::Speed, "S", r, w)) addPending(PendingGroup::Speed, w, r);
+    if (!number(r.value, WordClass::Speed, "S", r, w)) break;
+    addPending(PendingGroup::Speed, w, r);
+    if (cssWritten_) surfaceWord_ = w, cssNeedsS_ = false;
     break;
   }
   case RecordKind::SpindleCW: addPending(PendingGroup::Spindle, code(Code::SpindleCW), r); break;
   case RecordKind::SpindleCCW: addPending(PendingGroup::Spindle, code(Code::SpindleCCW), r); break;
   case RecordKind::SpindleStop: addPending(PendingGroup::Spindle, code(Code::SpindleStop), r); break;
   case RecordKind::SpindleOrient: spindleOrient(r); break;
+  case RecordKind::SpindleMode: spindleMode(r); break;
   case RecordKind::CoolantFlood: coolant(r, true); break;
   case RecordKind::CoolantMist: coolant(r, false); break;
   case RecordKind::FeedRate:

@@ -22,7 +22,8 @@ enum class GKind : uint8_t {
   SubCall,       // G05 P<program> L<count>: subprogram call (808D); G05 without P, P0, P01 ignored
   Frame,         // G52 (local shift), G68/G69 (rotation), G51/G50 (scaling), G51.1/G50.1 (mirror); arg 1 on, 0 off
   TurnCycle,     // G70-G73 multiple repetitive turning cycles (arg: the A-system code)
-  NoOp,          // cancels a function ncc does not model and is always off (G15, G97, G291)
+  SpindleMode,   // G96 (arg 2: constant surface speed) / G97 (arg 1: constant rpm)
+  NoOp,          // cancels a function ncc does not model and is always off (G15, G291)
   Unsupported,   // known code that is not lowered yet: error with the description
 };
 

@@ -280,11 +280,6 @@ bool BlockLowerer::Block::setup() {
   nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
 
-  if (nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S')) {
-    L.diags_.error(bw.get('S')->loc, fmt::format("{} S (spindle speed limit) is not supported", gName(nonModal->code10)),
-                   "unsupported-code");
-    return false;
-  }
   if (macroCall) {
     // G65/G66 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
@@ -303,7 +298,7 @@ bool BlockLowerer::Block::setup() {
         L.diags_.warning(f->loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
       emit(OpKind::Feed, f->loc).set("value", take('F', Scale::Feed));
     }
-    if (bw.has('S')) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
+    if (!speedOp()) return false;
     if (bw.has('T') && L.lathe_) {
       if (!latheTool()) return false;
     } else if (bw.has('T')) {

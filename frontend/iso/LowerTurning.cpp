@@ -128,6 +128,18 @@ bool checkContourOp(const Op &op, Diagnostics &diags) {
   return ok;
 }
 
+// G71/G72 type II (808D manual 1.5.1.2): the first contour block names both axes (X or U and Z
+// or W; `W0` asks for type II without moving Z). The consumer learns it from type=2.
+void markTypeII(Region &body, size_t first, Op *end) {
+  const ir::Expr *use = end ? end->get("use") : nullptr;
+  if (!use || (use->str != "rough_z" && use->str != "rough_x")) return;
+  for (size_t i = first + 1; i < body.size() && body[i].kind != OpKind::Block; ++i)
+    if (body[i].kind == OpKind::Move) {
+      if (body[i].get("X") && body[i].get("Z")) end->set("type", Expr::number(2, ir::Type::Int, end->loc));
+      return;
+    }
+}
+
 long long blockNumber(const Op &op) {
   const Expr *n = op.kind == OpKind::Block ? op.get("n") : nullptr;
   return n ? (long long)n->num : -1;
@@ -140,11 +152,13 @@ bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
   struct Range {
     long long from, to;
     SourceLoc loc;
+    Op *end;  // the contour end op after the call_section
   };
   std::vector<Range> ranges;
-  for (auto &op : f.body)
-    if (op.kind == OpKind::CallSection)
-      ranges.push_back({std::stoll(op.get("from")->str.substr(1)), std::stoll(op.get("to")->str.substr(1)), op.loc});  // N<n>, N<n>_to
+  for (size_t i = 0; i < f.body.size(); ++i)
+    if (Op &op = f.body[i]; op.kind == OpKind::CallSection)
+      ranges.push_back({std::stoll(op.get("from")->str.substr(1)), std::stoll(op.get("to")->str.substr(1)), op.loc,
+                        i + 1 < f.body.size() && f.body[i + 1].kind == OpKind::Contour ? &f.body[i + 1] : nullptr});  // N<n>, N<n>_to
   if (ranges.empty()) return true;
   Region &body = f.body;
   std::map<long long, size_t> at;  // block number -> index of its block op (the first one)
@@ -170,6 +184,7 @@ bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
     size_t endAt = b->second + 1;
     while (endAt < body.size() && body[endAt].kind != OpKind::Block) ++endAt;
     for (size_t i = a->second; i < endAt; ++i) ok &= checkContourOp(body[i], diags);
+    markTypeII(body, a->second, r.end);
     labels.push_back({a->second, fmt::format("N{}", r.from)});
     labels.push_back({b->second + 1, fmt::format("N{}_to", r.to)});  // a section's last block starts at its label
     labels.push_back({endAt, fmt::format("N{}_end", r.to)});
@@ -183,6 +198,61 @@ bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
     body.insert(body.begin() + (long)i, std::move(label));
   }
   return ok;
+}
+
+}  // namespace ncc::iso
+
+namespace ncc::iso {
+
+// The spindle speed words: S, G96/G97 (group 02) and the spindle-speed limit, as one `speed` op
+// (docs/IR.md): `speed value=S`, `speed mode=css value=S limit=?` (G96), `speed mode=rpm
+// value=S?` (G97), `speed limit=L` (808D/Fanuc lathe G50 S in system A, G92 S in B: modal).
+// LinuxCNC's G96 takes its limit from D, for this G96 only (no D: none, limit=0); its G97 without
+// S after G96 keeps the surface speed control going, which ncc does not model (after_css=error).
+bool BlockLowerer::Block::speedOp() {
+  const bool rs274 = L.flavour_ == Flavour::RS274;
+  const GCodeInfo *mode = G(GGroup::Spindle);
+  const bool limitBlock = !rs274 && nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S');
+  auto positive = [&](IsoWord *w, const char *what) {
+    if (w->expr || w->value > 0) return true;
+    L.diags_.error(w->loc, fmt::format("{} must be greater than 0", what), "bad-speed");
+    return false;
+  };
+  if (limitBlock) {
+    IsoWord *s = bw.get('S');
+    if (!L.lathe_) {
+      L.diags_.error(s->loc, fmt::format("{} S (spindle speed limit) needs a lathe (machine kind = \"lathe\")", gName(nonModal->code10)),
+                     "unsupported-code");
+      return false;
+    }
+    if (!positive(s, fmt::format("{} S (the spindle speed limit)", gName(nonModal->code10)).c_str())) return false;
+    emit(OpKind::Speed, s->loc).set("limit", take('S', Scale::None));
+  }
+  if (!mode) {
+    if (bw.has('S') && !limitBlock) emit(OpKind::Speed, bw.get('S')->loc).set("value", take('S', Scale::None));
+    return true;
+  }
+  const SourceLoc loc = gloc(GGroup::Spindle);
+  const bool css = mode->arg == 2;
+  if (css && !rs274 && !L.lathe_) {
+    L.diags_.error(loc, "G96 (constant surface speed) needs a lathe (machine kind = \"lathe\"): a milling spindle has no "
+                        "radius to keep the speed at", "unsupported-code");
+    return false;
+  }
+  if (css && (!bw.has('S') || limitBlock)) {
+    L.diags_.error(loc, "G96 needs S (the surface speed, m/min or ft/min)", "missing-word");
+    return false;
+  }
+  Op &op = emit(OpKind::Speed, loc);
+  op.set("mode", Expr::symbol(css ? "css" : "rpm", loc));
+  if (bw.has('S') && !limitBlock) op.set("value", take('S', Scale::None));
+  if (rs274 && css) {
+    IsoWord *d = G(GGroup::CutterComp) ? nullptr : bw.get('D');
+    if (d && !positive(d, "G96 D (the spindle speed limit)")) return false;
+    op.set("limit", d ? take('D', Scale::None) : Expr::number(0, ir::Type::Int, loc));
+  }
+  if (rs274 && !css) op.set("after_css", Expr::symbol("error", loc));
+  return true;
 }
 
 }  // namespace ncc::iso

@@ -9,7 +9,7 @@
 namespace ncc {
 
 // Stock removal, type I: the contour's first element moves from the start point C only across
-// the layers (to A'), the rest (A' to B) is monotonic in both axes. Layers parallel to the cut
+// the layers (to A'), the rest (A' to B) is monotonic in both axes. Type II: see `typeII`. Layers parallel to the cut
 // axis, `depth` apart, from C towards A', each cut until it meets the contour A'-B shifted by
 // `allowance`; each layer retracts by `retract` at 45 degrees and returns at rapid. Then one pass
 // along the shifted contour, and back to C.
@@ -19,6 +19,9 @@ struct StockRemoval {
   double retract = 0;
   Pt2 allowance;     // finishing allowance, signed as programmed (the shift of the contour)
   const char *cutName = "the cut axis";  // for messages ("Z")
+  // Type II (the first contour block names both axes): the contour may have pockets across the
+  // layers (not monotonic in the other axis); it must still run one way along the cut.
+  bool typeII = false;
 };
 bool stockRemoval(const Contour &c, const StockRemoval &s, std::vector<ContourElem> &out, std::string &err);
 

@@ -550,3 +550,86 @@ TEST(Executor, LibraryCycleArcsUnderARotation) {
   expectPos(arcs[1].end, 0, 10, -5);
   EXPECT_EQ(arcs[1].turns, 1);
 }
+
+// --- constant surface speed (runtime/ExecutorSpindle.cpp) -------------------------------------
+// The spindle_mode records, the rpm from the tool's radius with the limits, and feed per
+// revolution as the mean path speed (FEATURES ISO-SPD-02 ISO-SPD-03).
+namespace {
+constexpr uint8_t kRpm = 1, kCss = 2;
+std::vector<MotionRecord> recordsOf(const ExecRun &run, RecordKind k) {
+  std::vector<MotionRecord> out;
+  for (auto &r : run.buf.records)
+    if (r.kind == k) out.push_back(r);
+  return out;
+}
+// The mean path speed of a straight feed from radius r0 to r1 (no limit): the time is the
+// integral of ds / (f K / r), K = 1000 S / (2 pi).
+double meanFeed(double f, double s, double r0, double r1) {
+  double k = 1000 * s / (2 * M_PI);
+  return f * k / ((r0 + r1) / 2);
+}
+
+}  // namespace
+
+TEST(ExecutorSpindle, CssRecordsAndFeedPerRevolution) {
+  ExecRun run;
+  ASSERT_TRUE(run({mode({ModeValue::ZX, ModeValue::PerRev}), words(CmdKind::Speed, {{Word::S, 150}, {Word::D, 2000}}, kCss),
+                   words(CmdKind::Spindle, {}, 1), words(CmdKind::Move, {{Word::X, 40}, {Word::Z, 5}}),
+                   words(CmdKind::Feed, {{Word::F, 0.2}}), mode({ModeValue::Linear}),
+                   words(CmdKind::Move, {{Word::X, 80}, {Word::Z, -30}}), words(CmdKind::Move, {{Word::X, 10}}),
+                   words(CmdKind::Speed, {{Word::S, 600}}, kRpm), words(CmdKind::Move, {{Word::Z, -40}})}))
+      << run.diags.collected().front().message;
+  auto mode = recordsOf(run, RecordKind::SpindleMode);
+  ASSERT_EQ(mode.size(), 2u);
+  EXPECT_EQ(mode[0].ivalue, 1);
+  EXPECT_EQ(mode[0].value, 2000);
+  EXPECT_EQ(mode[0].value2, 0);
+  EXPECT_EQ(mode[1].ivalue, 0);
+  auto lin = recordsOf(run, RecordKind::Linear);
+  ASSERT_EQ(lin.size(), 3u);
+  // 1/rpm is linear in the radius while the limit is not reached: the midpoint sum is exact.
+  EXPECT_NEAR(lin[0].feed, meanFeed(0.2, 150, 40, 80), 1e-9);
+  // From X80 to X10: below r = 1000 * 150 / (2 pi 2000) = 11.94 mm the limit holds (2000 rpm).
+  const double rLimit = 150000 / (2 * M_PI * 2000);
+  double time = (80 - rLimit) * (80 + rLimit) / 2 / (0.2 * 150000 / (2 * M_PI)) + (rLimit - 10) / (0.2 * 2000);
+  EXPECT_NEAR(lin[1].feed, 70 / time, 70 / time * 1e-3);
+  EXPECT_NEAR(lin[2].feed, 0.2 * 600, 1e-9);  // G97 S600
+}
+
+TEST(ExecutorSpindle, G97WithoutSKeepsTheSpeedReached) {
+  ExecRun run;
+  ASSERT_TRUE(run({mode({ModeValue::ZX}), words(CmdKind::Speed, {{Word::S, 100}}, kCss), words(CmdKind::Spindle, {}, 1),
+                   words(CmdKind::Move, {{Word::X, 25}}), words(CmdKind::Speed, {}, kRpm)}));
+  auto speeds = recordsOf(run, RecordKind::SpindleSpeed);
+  ASSERT_EQ(speeds.size(), 2u);
+  EXPECT_NEAR(speeds[1].value, 100000 / (2 * M_PI * 25), 1e-9);
+  EXPECT_FALSE(run.ex.state().css);
+}
+
+TEST(ExecutorSpindle, LimitsAndErrors) {
+  {  // the machine's top speed bounds CSS at the spindle axis
+    ExecRun run;
+    run.machine.maxSpindleSpeed = 1000;
+    ASSERT_TRUE(run({mode({ModeValue::ZX, ModeValue::PerRev, ModeValue::Linear}), words(CmdKind::Speed, {{Word::S, 100}}, kCss),
+                     words(CmdKind::Feed, {{Word::F, 0.1}}), words(CmdKind::Move, {{Word::Z, -5}})}));
+    EXPECT_NEAR(recordsOf(run, RecordKind::Linear)[0].feed, 100, 1e-9);
+  }
+  {  // without any limit, feed per revolution at X0 is an error
+    ExecRun run;
+    EXPECT_FALSE(run({mode({ModeValue::ZX, ModeValue::PerRev, ModeValue::Linear}), words(CmdKind::Speed, {{Word::S, 100}}, kCss),
+                      words(CmdKind::Feed, {{Word::F, 0.1}}), words(CmdKind::Move, {{Word::Z, -5}})}));
+    EXPECT_EQ(run.diags.collected().back().rule, "bad-speed");
+  }
+  {  // G96 needs S; a negative limit is an error
+    ExecRun run;
+    EXPECT_FALSE(run({words(CmdKind::Speed, {}, kCss)}));
+    ExecRun run2;
+    EXPECT_FALSE(run2({words(CmdKind::Speed, {{Word::D, -1}})}));
+  }
+  {  // M2 resets the spindle mode (the machine's reset list names the spindle)
+    ExecRun run;
+    ASSERT_TRUE(run({words(CmdKind::Speed, {{Word::S, 100}, {Word::D, 900}}, kCss), words(CmdKind::Stop, {}, (uint8_t)StopKind::End)}));
+    EXPECT_FALSE(run.ex.state().css);
+    EXPECT_EQ(run.ex.state().speedLimit, 0);
+  }
+}

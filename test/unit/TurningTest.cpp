@@ -1,6 +1,7 @@
 // Turning contour cycles (runtime/cycles/Turning.h): stock removal on random monotonic contours
-// never enters the contour shifted by the allowance and leaves at most one layer depth of
-// material above it; pattern repeating shifts the contour in equal steps.
+// (type I) and contours with pockets (type II) never enters the contour shifted by the allowance
+// and leaves at most one layer depth of material above it; pattern repeating shifts the contour
+// in equal steps.
 // FEATURES: ISO-CYT-04 ISO-CYT-05 ISO-CYT-06
 #include "runtime/cycles/Turning.h"
 
@@ -93,6 +94,27 @@ Contour swapped(const Contour &c) {
   return o;
 }
 
+// Points along a move from `from` (ends included), arcs on their circle.
+std::vector<Pt2> movePoints(Pt2 from, const ContourElem &e, int n) {
+  std::vector<Pt2> pts;
+  double a0 = 0, sweep = 0, rad = 0;
+  if (e.kind == ContourKind::Arc) {
+    a0 = std::atan2(from.b - e.centre.b, from.a - e.centre.a);
+    sweep = std::atan2(e.end.b - e.centre.b, e.end.a - e.centre.a) - a0;
+    if (e.ccw && sweep <= 0) sweep += 2 * M_PI;
+    if (!e.ccw && sweep >= 0) sweep -= 2 * M_PI;
+    rad = std::hypot(from.a - e.centre.a, from.b - e.centre.b);
+  }
+  for (int k = 0; k <= n; ++k) {
+    double t = double(k) / n;
+    if (e.kind == ContourKind::Arc)
+      pts.push_back({e.centre.a + rad * std::cos(a0 + sweep * t), e.centre.b + rad * std::sin(a0 + sweep * t)});
+    else
+      pts.push_back({from.a + (e.end.a - from.a) * t, from.b + (e.end.b - from.b) * t});
+  }
+  return pts;
+}
+
 // Layers along the plane's first axis (G71), or, with `swap`, the same cut made along its second
 // axis (G72) on the swapped contour, swapped back for the checks.
 void randomStockRemoval(bool swap) {
@@ -132,19 +154,8 @@ void randomStockRemoval(bool swap) {
       const ContourElem &e = moves[m];
       // Every move stays out of the shifted contour (sampled inside the move, ends included;
       // an arc of the profile pass lies on it).
-      double a0 = 0, sweep = 0, rad = 0;
-      if (e.kind == ContourKind::Arc) {
-        a0 = std::atan2(pos.b - e.centre.b, pos.a - e.centre.a);
-        sweep = std::atan2(e.end.b - e.centre.b, e.end.a - e.centre.a) - a0;
-        if (e.ccw && sweep <= 0) sweep += 2 * M_PI;
-        if (!e.ccw && sweep >= 0) sweep -= 2 * M_PI;
-        rad = std::hypot(pos.a - e.centre.a, pos.b - e.centre.b);
-      }
-      for (int k = 0; k <= 50; ++k) {
-        double t = k / 50.0;
-        double z = pos.a + (e.end.a - pos.a) * t, x = pos.b + (e.end.b - pos.b) * t;
-        if (e.kind == ContourKind::Arc)
-          z = e.centre.a + rad * std::cos(a0 + sweep * t), x = e.centre.b + rad * std::sin(a0 + sweep * t);
+      for (auto &pt : movePoints(pos, e, 50)) {
+        const double z = pt.a, x = pt.b;
         // At a shoulder the lower side counts (a cut may end against it); near a vertical
         // tangent X changes fast with Z (and the chords of an inner fillet lie outside it): compare
         // within 1e-3 in Z.
@@ -235,4 +246,126 @@ TEST(Turning, PatternRepeatSteps) {
   EXPECT_DOUBLE_EQ(moves[7].end.b, 32);
   EXPECT_DOUBLE_EQ(moves[8].end.a, 10);
   EXPECT_DOUBLE_EQ(moves[8].end.b, 50);
+}
+
+namespace {
+
+// A G71 type II contour (a = Z, b = X radius): from C to A' moving both axes, then towards -Z
+// with X going up and down (pockets): tapers, shoulders both ways, flats, quarter arcs.
+Contour randomPocketContour(std::mt19937 &rng) {
+  std::uniform_real_distribution<double> u(0, 1);
+  Contour c;
+  c.start = {5, 50};
+  double z = 4 - 2 * u(rng), x = 5 + 10 * u(rng);
+  c.elems.push_back(elem(u(rng) < 0.5 ? ContourKind::Rapid : ContourKind::Line, {z, x}));
+  int n = 3 + (int)(8 * u(rng));
+  for (int i = 0; i < n; ++i) {
+    double r = u(rng), rad = 1 + 4 * u(rng);
+    bool down = u(rng) < 0.4 && x - rad > 3;
+    if (r < 0.2 && (down || x + rad < 45)) {  // a quarter arc up or down, either way round
+      double dx = down ? -rad : rad;
+      bool alongFirst = u(rng) < 0.5;  // the centre level with the start or with the end
+      Pt2 centre = alongFirst ? Pt2{z - rad, x} : Pt2{z, x + dx};
+      // From the centre's side: turning from +a towards +b is counter-clockwise.
+      bool ccw = alongFirst ? !down : down;
+      z -= rad, x += dx;
+      c.elems.push_back(elem(ContourKind::Arc, {z, x}, centre, ccw));
+      continue;
+    }
+    if (r < 0.35) z -= 1 + 10 * u(rng);                                 // along Z
+    else if (r < 0.5) x = std::clamp(x + (down ? -1 : 1) * (1 + 6 * u(rng)), 3.0, 45.0);  // a shoulder
+    else z -= 1 + 10 * u(rng), x = std::clamp(x + (down ? -1 : 1) * 8 * u(rng), 3.0, 45.0);  // a taper
+    c.elems.push_back(elem(ContourKind::Line, {z, x}));
+  }
+  c.elems.push_back(elem(ContourKind::Line, {z - 2, x}));
+  return c;
+}
+
+
+// Distance from p to a polyline.
+double distance(const std::vector<Pt2> &pts, Pt2 p) {
+  double best = 1e18;
+  for (size_t i = 1; i < pts.size(); ++i) {
+    Pt2 a = pts[i - 1], b = pts[i];
+    double dx = b.a - a.a, dy = b.b - a.b, l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? std::clamp(((p.a - a.a) * dx + (p.b - a.b) * dy) / l2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(a.a + dx * t - p.a, a.b + dy * t - p.b));
+  }
+  return best;
+}
+
+}  // namespace
+
+// Type II (pockets): no move enters the contour shifted by the allowance, and the layers leave at
+// most one depth of material over it everywhere, pockets included.
+TEST(Turning, StockRemovalTypeIIPockets) {
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> u(0, 1);
+  int pockets = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Contour c = randomPocketContour(rng);
+    StockRemoval s;
+    s.cutAxis = 0;
+    s.typeII = true;
+    s.depth = 0.5 + 2.5 * u(rng);
+    s.retract = u(rng);
+    s.allowance = {0.5 * u(rng), 0.5 * u(rng)};
+    std::vector<ContourElem> moves;
+    std::string err;
+    ASSERT_TRUE(stockRemoval(c, s, moves, err)) << "trial " << trial << ": " << err;
+    std::vector<Pt2> prof = polyline(c, s.allowance);
+    const Pt2 aOff = prof.front();
+    const double zB = prof.back().a, zA = aOff.a;
+    auto limit = [&](double z) { return z < zB ? prof.back().b : z > zA ? -1e9 : profileX(prof, z); };
+    std::vector<Pt2> ext = prof;  // beyond B the contour's last X holds
+    ext.push_back({zB - 1000, prof.back().b});
+    struct Layer {
+      double x, z0, z1;  // z1 < z0
+    };
+    std::vector<Layer> layers;
+    bool finishing = false;
+    Pt2 pos = c.start;
+    for (size_t m = 0; m < moves.size(); ++m) {
+      const ContourElem &e = moves[m];
+      for (auto &p : movePoints(pos, e, 50)) {
+        // Below the contour and not on it (within 1e-4: a shoulder, a steep arc's chords).
+        bool inside = p.b < limit(p.a) - 1e-4 && distance(ext, p) > 1e-4;
+        EXPECT_FALSE(inside) << "trial " << trial << " move " << m << " enters the contour at Z" << p.a << " X" << p.b;
+      }
+      if (!finishing && e.kind == ContourKind::Line && std::fabs(e.end.b - pos.b) < 1e-12 && e.end.a < pos.a)
+        layers.push_back({e.end.b, pos.a, e.end.a});
+      if (std::fabs(e.end.a - aOff.a) < 1e-9 && std::fabs(e.end.b - aOff.b) < 1e-9) finishing = true;
+      pos = e.end;
+    }
+    EXPECT_TRUE(finishing) << "trial " << trial;
+    EXPECT_NEAR(pos.a, c.start.a, 1e-9);
+    EXPECT_NEAR(pos.b, c.start.b, 1e-9);
+    // Layers that start inside the work (not at C's Z) went down into a pocket.
+    for (auto &l : layers) pockets += std::fabs(l.z0 - c.start.a) > 1e-9;
+    for (int k = 1; k < 400; ++k) {
+      double z = zB + (zA - zB) * k / 400.0;
+      double top = c.start.b;
+      for (auto &l : layers)
+        if (l.z1 <= z + 1e-9 && l.z0 >= z - 1e-9) top = std::min(top, l.x);
+      EXPECT_LE(top - profileX(prof, z), s.depth + 1e-4) << "trial " << trial << " at Z" << z;
+    }
+  }
+  EXPECT_GT(pockets, 100);  // the contours do have pockets
+}
+
+// Type II names both axes in its first block; without that, a pocket is an error (type I).
+TEST(Turning, StockRemovalTypeIRejectsPockets) {
+  Contour c;
+  c.start = {5, 50};
+  c.elems = {elem(ContourKind::Rapid, {5, 10}), elem(ContourKind::Line, {-10, 20}), elem(ContourKind::Line, {-20, 15}),
+             elem(ContourKind::Line, {-30, 25})};
+  StockRemoval s;
+  s.depth = 2, s.retract = 0.5, s.cutName = "Z";
+  std::vector<ContourElem> moves;
+  std::string err;
+  EXPECT_FALSE(stockRemoval(c, s, moves, err));
+  EXPECT_NE(err.find("monotonic in both axes (type I"), std::string::npos) << err;
+  s.typeII = true;
+  moves.clear();
+  EXPECT_TRUE(stockRemoval(c, s, moves, err)) << err;
 }

@@ -20,7 +20,7 @@ M98 P-5
 ; CHECK: iso-diag-unknown-codes.nc:3:1: error: an M code must be an integer 0..99999999 [unknown-code]
 ; CHECK: iso-diag-unknown-codes.nc:4:7: error: unexpected character '$' [syntax]
 ; CHECK: iso-diag-unknown-codes.nc:5:4: error: E word is not used by any code of this block [unused-word]
-; CHECK: iso-diag-unknown-codes.nc:6:1: error: G96 (constant surface speed) is not supported [unsupported-code]
+; CHECK: iso-diag-unknown-codes.nc:6:1: error: G96 (constant surface speed) needs a lathe (machine kind = "lathe"): a milling spindle has no radius to keep the speed at [unsupported-code]
 ; CHECK: iso-diag-unknown-codes.nc:7:5: error: M99 P<n> (return to a block number) is not supported [unsupported-code]
 ; CHECK: iso-diag-unknown-codes.nc:8:5: error: G10 L3 is not supported (only L1, L2, L10-L13 and L20) [unsupported-code]
 ; CHECK: iso-diag-unknown-codes.nc:9:1: error: G43 needs an H word (tool length offset number) [missing-word]

@@ -10,4 +10,4 @@ G97 S800
 ; CHECK: speed value=500
 ; CHECK-NEXT: spindle dir=ccw
 ; CHECK: spindle dir=stop loc(1:3:1)
-; CHECK: speed value=800 loc(1:4:5)
+; CHECK: speed mode=rpm value=800 loc(1:4:1)

@@ -8,15 +8,15 @@ G91 X1.
 T#1
 G92 X10. Z-20. F2.
 G76 X1.
-G96 S100
+G96
 G10 P1 X1. Q3
 G10 P1 Z1. W2.
-G50 S1500
+G50 S0
 M30
 %
 ; FEATURES: ISO-MOT-12
 ; Lathe mode errors: X with U, the turning codes ncc does not do (tool nose radius compensation,
-; threading, the single cycles, G76, CSS), milling codes that are not turning codes, a computed T.
+; threading, the single cycles, G76), G96 without S, a zero G50 S limit, milling codes that are not turning codes, a computed T.
 ; RUN: not %ncc compile %s --machine=%srcroot/examples/machines/lathe.toml --emit=motion 2>&1 | FileCheck %s --implicit-check-not=error:
 ; CHECK: 3:9: error: X and U in one block (U is the incremental X) [duplicate-word]
 ; CHECK: 4:1: error: G41 (tool nose radius compensation left) is not supported [unsupported-code]
@@ -26,7 +26,7 @@ M30
 ; CHECK: 8:1: error: a lathe T word is a constant tool and offset number T<tt><oo> (T0101) [bad-number]
 ; CHECK: 9:1: error: G92 (thread cutting cycle) is not supported [unsupported-code]
 ; CHECK: 10:1: error: G76 (multiple threading cycle) is not supported [unsupported-code]
-; CHECK: 11:1: error: G96 (constant surface speed) is not supported [unsupported-code]
+; CHECK: 11:1: error: G96 needs S (the surface speed, m/min or ft/min) [missing-word]
 ; CHECK: 12:12: error: G10 Q (the imaginary tool tip) is not kept: ncc has no tool nose radius compensation [unsupported-code]
 ; CHECK: 13:12: error: G10: Z and W in one block (W adds to the offset Z sets) [duplicate-word]
-; CHECK: 14:5: error: G50 S (spindle speed limit) is not supported [unsupported-code]
+; CHECK: 14:5: error: G50 S (the spindle speed limit) must be greater than 0 [bad-speed]
