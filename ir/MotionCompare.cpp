@@ -8,7 +8,7 @@ namespace ncc {
 
 static bool isPath(const MotionRecord &r) {
   return r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-         r.kind == RecordKind::Spline || r.kind == RecordKind::Dwell;
+         r.kind == RecordKind::Spline || r.kind == RecordKind::Dwell || r.kind == RecordKind::Thread;
 }
 
 // Zero-length moves carry no path: translators may drop them.
@@ -64,6 +64,10 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
           if (!near(sx.points[i][k], sy.points[i][k])) why = "spline control points differ";
     }
     if (why.empty() && x.kind == RecordKind::Dwell && std::fabs(x.value - y.value) > 1e-6) why = "dwell times differ";
+    if (why.empty() && x.kind == RecordKind::Thread &&
+        (std::fabs(threadPathLead(x) - threadPathLead(y)) > 1e-9 * std::max(1.0, threadPathLead(x)) ||
+         x.sync != y.sync || std::fabs(x.value2 - y.value2) > 1e-9))
+      why = "thread leads, start angles or synchronisation differ";
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
       why = "feeds differ";

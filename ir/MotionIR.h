@@ -53,10 +53,25 @@ enum class RecordKind : uint8_t {
   Spline,        // polynomial or NURBS curve fed to `end` at `feed`: spline() (SplineData)
   SpindleOrient, // oriented spindle stop: `value` angle (degrees), `ivalue` way (0 cw, 1 ccw,
                  // 2 shortest), `value2` seconds to wait for it (0: no wait)
+  Thread,        // spindle-synchronised straight feed to `end` (thread cutting, rigid tapping):
+                 // `value` the lead (mm per spindle revolution) measured along `ivalue`
+                 // (ThreadAxis), `value2` the start angle (degrees after the spindle's index),
+                 // `sync` (ThreadSync), `feed` the path feed it gives at the programmed speed
   Count
 };
 
 const char *recordKindName(RecordKind k);
+
+// Thread records: what the lead is measured along. LinuxCNC's K is per unit of path length;
+// Fanuc/808D and Sinumerik give it along the thread's main axis (Z, or X for a face thread).
+enum class ThreadAxis : uint8_t { X, Y, Z, Path };
+// How a thread record joins the motion before it: `Index` waits for the spindle's index
+// (plus the start angle) and starts a new synchronisation; `Chain` continues the thread record
+// before it without waiting (chained threads, a lead change inside one pass); `TapIn` is a
+// rigid tap into the hole (waits like Index), `TapOut` its return with the spindle reversed.
+enum class ThreadSync : uint8_t { Index, Chain, TapIn, TapOut };
+const char *threadAxisName(ThreadAxis a);  // "x" "y" "z" "path"
+const char *threadSyncName(ThreadSync s);  // "index" "chain" "tap_in" "tap_out"
 
 // One named number of a CycleBegin or FrameChange record, `key=value` in the text form.
 // Keys are 1..7 characters [A-Za-z_][A-Za-z0-9_]*, stored inline (no allocation per key).
@@ -134,6 +149,7 @@ struct MotionRecord {
   RecordKind kind = RecordKind::Rapid;
   Plane plane = Plane::XY;
   bool exactStop = false;   // stop at the end of this move (G9/G61/cycle holes)
+  ThreadSync sync = ThreadSync::Index;  // Thread records only
   int32_t turns = 0;        // arcs: +n counter-clockwise, -n clockwise (n full turns + 1)
   int64_t ivalue = 0;
   int64_t blockNumber = -1; // N word of the source block, -1 when none
@@ -167,6 +183,14 @@ struct MotionRecord {
   // The value of a named number, or nullptr.
   const double *param(std::string_view key) const;
 };
+
+// Thread records: the lead per revolution along the path (LinuxCNC's K) and along machine axis
+// `axis` (0..2) of the straight move from start to end; 0 when the record does not move there.
+double threadPathLead(const MotionRecord &r);
+double threadAxisLead(const MotionRecord &r, int axis);
+// Why a thread record is not a valid one (empty when it is): a lead > 0 and finite, a move
+// along the lead's axis, a start angle in [0, 360), no A B C motion.
+std::string threadError(const MotionRecord &r);
 
 // FrameChange's transform: the 3x4 matrix that maps program XYZ to machine XYZ, row-major
 // (machine_i = m_i0 x + m_i1 y + m_i2 z + m_i3), as the named numbers m00..m23.

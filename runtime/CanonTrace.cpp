@@ -136,10 +136,39 @@ void CanonTraceWriter::epilogue(const MotionRecord &r) {
   line(n, "PROGRAM_END()");
 }
 
+void CanonTraceWriter::stopSync(int64_t n) {
+  if (!sync_) return;
+  sync_ = false;
+  line(n, "STOP_SPEED_FEED_SYNCH()");
+}
+
+// G33 prints START, STRAIGHT_FEED, STOP per block; G33.1 START, RIGID_TAP (down and back, so
+// its return record prints nothing), STOP; rs274's G76 changes the lead inside one pass.
+void CanonTraceWriter::thread(const MotionRecord &r) {
+  const int64_t n = r.blockNumber;
+  const bool fresh = r.sync == ThreadSync::Index || r.sync == ThreadSync::TapIn;
+  const double lead = threadPathLead(r);
+  if (fresh) stopSync(syncBlock_);
+  if (!sync_ || lead != syncLead_) {
+    char tmp[64];
+    std::snprintf(tmp, sizeof tmp, "START_SPEED_FEED_SYNC(%f,0)", lead);
+    line(n, tmp);
+  }
+  sync_ = true, syncLead_ = lead, syncBlock_ = n;
+  if (r.sync == ThreadSync::TapOut) return;
+  begin(n);
+  buf_.append(r.sync == ThreadSync::TapIn ? "RIGID_TAP(" : "STRAIGHT_FEED(");
+  nums(r.end.data(), r.sync == ThreadSync::TapIn ? 3 : kAxes);
+  buf_.push_back(')');
+  end();
+}
+
 void CanonTraceWriter::record(const MotionRecord &r) {
   if (finished_ || halted_) return;
   if (!started_) preamble();
   const int64_t n = r.blockNumber;
+  if (r.kind == RecordKind::Thread) return thread(r);
+  stopSync(syncBlock_);
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
@@ -264,6 +293,7 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   case RecordKind::CycleBegin:  // the expanded moves are the trace; rs274 has no bracket
   case RecordKind::CycleEnd:
   case RecordKind::FrameChange:  // positions are already machine coordinates
+  case RecordKind::Thread:       // thread() above
   case RecordKind::Count: break;
   }
 }
@@ -276,6 +306,7 @@ bool CanonTraceWriter::finish(Diagnostics &diags) {
     return false;
   }
   if (!started_) preamble();
+  stopSync(syncBlock_);
   line(-1, "ON_RESET()");
   line(-1, "ON_RESET()");
   return flush();

@@ -526,6 +526,11 @@ void Emitter::record(const MotionRecord &r) {
     }
     spline(r);
     break;
+  case RecordKind::Thread:
+    diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write a spindle-synchronised move: " + printMotionRecord(r),
+                 "unsupported-code");
+    errors_ = true;
+    break;
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:
     addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, st_.toolDigits), r);

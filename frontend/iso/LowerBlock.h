@@ -173,6 +173,7 @@ struct BlockLowerer::Block {
   bool turnCycle();      // G70-G73 (LowerTurning.cpp)
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();
+  bool threadWords(Op &op, ModeValue m);  // the words of G32/G33/G33.1/G76/G92/G78
   bool stops();
   bool callsAndReturn();
   bool finish();         // assignments, unused words
