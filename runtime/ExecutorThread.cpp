@@ -195,6 +195,10 @@ bool Executor::Impl::threadMulti(const MachineCmd &c) {
   const double dir = e[2] < a[2] ? -1.0 : 1.0;  // the cut's direction along Z
   const double flank = std::tan(threadData.toolAngle / 2 * M_PI / 180.0);
   const double chamfer = threadData.chamfer * feedMM;
+  // The shallowest pass is the shortest (the flank infeed shortens it at both ends).
+  if (chamfer >= std::fabs(e[2] - a[2]) - 2 * depths.front() * flank)
+    return error(fmt::format("the G76 run-out chamfer ({} mm: r = {} x the lead) is not shorter than the thread",
+                             chamfer, threadData.chamfer), "thread-invalid");
   MotionRecord begin = record(RecordKind::CycleBegin);
   begin.text = "iso.G76";
   begin.setParam("X", e[0]), begin.setParam("Z", e[2]), begin.setParam("R", taper), begin.setParam("P", height);
