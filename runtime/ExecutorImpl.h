@@ -302,6 +302,8 @@ struct Executor::Impl {
   bool threadMulti(const MachineCmd &c);  // 808D G76 (both blocks)
   bool threadSteps(const std::vector<ThreadStep> &steps, ThreadAxis along);
   bool threadChain = false;  // the last motion record was a thread (an 808D G32 may chain on)
+  double threadSpeed = 0;    // the spindle of the last thread record (a chain must keep it)
+  int threadSpindle = 0;
   ModeValue threadReturn = ModeValue::Rapid;  // the motion mode an 808D G76 block gives back
   struct ThreadData {  // 808D G76 P(m r a) Q R, modal
     bool set = false;

@@ -26,6 +26,16 @@ bool Executor::Impl::threadAllowed(const char *code) {
 }
 
 bool Executor::Impl::threadTo(const AxisVec &to, double lead, ThreadAxis along, ThreadSync sync, double angle) {
+  // A synchronised run follows one spindle state: a chained block after S or M3/M4 changed
+  // would cut another thread (the 808D manual, L1743-1746: the speed must not change).
+  if (sync == ThreadSync::Chain && (st.speed != threadSpeed || st.spindle != threadSpindle))
+    return error(fmt::format("the spindle changed inside a chained thread (S{} M{} -> S{} M{}): its lead would not hold",
+                             threadSpeed, threadSpindle == 2 ? 4 : 3, st.speed, st.spindle == 2 ? 4 : 3),
+                 "thread-spindle");
+  if (sync == ThreadSync::Chain && st.pathMode == ModeValue::ExactStop)
+    warning("a chained thread in exact-stop mode (G61.1/G9): the axes cannot stop while the spindle turns on; "
+            "the join is planned as a stop", "thread-chain-stop");
+  threadSpeed = st.speed, threadSpindle = st.spindle;
   MotionRecord r = record(RecordKind::Thread);
   r.end = to;
   r.value = lead;
