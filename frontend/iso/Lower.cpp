@@ -525,7 +525,9 @@ bool BlockLowerer::Block::motion() {
 
 // The words of the thread codes (docs/ISO-WORDS.md): LinuxCNC G33/G33.1 K the lead, G76 P I J
 // K R Q H E L; the 808D's G32/G33 Q the start angle, G92/G78 R the taper and Q, G76 P Q R (the
-// data block: P the digits m r a, Q and R lengths; with X/Z: R taper, P height, Q first cut).
+// data block: P the digits m r a, Q and R lengths; with X/Z: R taper, P height, Q first cut; its
+// P and Q lengths without a decimal point are least input increments, 0.001 mm, whatever the
+// decimal mode: L3842-3843).
 bool BlockLowerer::Block::threadWords(Op &op, ModeValue m) {
   struct W { char c; Scale s; };
   auto words = [&](std::initializer_list<W> list) {
@@ -549,9 +551,9 @@ bool BlockLowerer::Block::threadWords(Op &op, ModeValue m) {
            {'Q', Scale::None}, {'H', Scale::None}, {'E', Scale::Linear}, {'L', Scale::None}});
     return true;
   case ModeValue::ThreadSingle: words({{'R', Scale::Linear}, {'Q', Scale::Rotary}}); return true;
-  case ModeValue::ThreadMulti:
-    if (bw.hasAny("XZUW")) words({{'R', Scale::Linear}, {'P', Scale::Linear}, {'Q', Scale::Linear}});
-    else words({{'P', Scale::None}, {'Q', Scale::Linear}, {'R', Scale::Linear}});
+  case ModeValue::ThreadMulti:  // P and Q lengths in least increments without a point (L3842-3843)
+    if (bw.hasAny("XZUW")) words({{'R', Scale::Linear}, {'P', Scale::Increment}, {'Q', Scale::Increment}});
+    else words({{'P', Scale::None}, {'Q', Scale::Increment}, {'R', Scale::Linear}});
     return true;
   default: return true;
   }
