@@ -426,8 +426,9 @@ void Emitter::spline(const MotionRecord &r) {
 }
 
 // LinuxCNC: G33 X Y Z K<lead per unit of path>, G33.1 for a rigid tap (its return record is
-// the tap's own retract); Sinumerik: G33 with the lead on the address of the axis that travels
-// most (I X, J Y, K Z), SF= the start angle. Both run consecutive G33 blocks as one thread.
+// the tap's own retract); a chain is refused (rs274 traces every G33 block as a synchronisation
+// of its own). Sinumerik: G33 with the lead on the address of the axis that travels most (I X,
+// J Y, K Z), SF= the start angle; it runs consecutive G33 blocks as one thread.
 std::string Emitter::threadRefusal(const MotionRecord &r) const {
   const bool lcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
   if (!lcnc && st_.target != Target::Sinumerik)
@@ -437,6 +438,8 @@ std::string Emitter::threadRefusal(const MotionRecord &r) const {
     return {};
   }
   if (lcnc && r.value2 != 0) return "LinuxCNC's G33 has no start angle";
+  if (lcnc && r.sync == ThreadSync::Chain)
+    return "each LinuxCNC G33 block starts a synchronisation of its own, as rs274 traces it: a chained thread cannot be written";
   if (!lcnc && r.sync == ThreadSync::Index && afterThread_)
     return "Sinumerik chains consecutive G33 blocks: a new synchronisation right after a thread cannot be written";
   return {};
