@@ -47,6 +47,8 @@ bool Executor::Impl::threadTo(const AxisVec &to, double lead, ThreadAxis along, 
   r.feed = threadPathLead(r) * st.speed;
   st.position = to;
   notePath(r);
+  if (corner.active)  // spec seed001 2.4: no chamfer or rounding at a thread block
+    return error("a chamfer or rounding cannot join a thread move", "unsupported-code");
   emit(r);
   return true;
 }
