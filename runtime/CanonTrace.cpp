@@ -140,6 +140,7 @@ void CanonTraceWriter::stopSync(int64_t n) {
   if (!sync_) return;
   sync_ = false;
   line(n, "STOP_SPEED_FEED_SYNCH()");
+  enableAfterMove_ = inG76_;
 }
 
 // G33 prints START, STRAIGHT_FEED, STOP per block; G33.1 START, RIGID_TAP (down and back, so
@@ -149,6 +150,7 @@ void CanonTraceWriter::thread(const MotionRecord &r) {
   const bool fresh = r.sync == ThreadSync::Index || r.sync == ThreadSync::TapIn;
   const double lead = threadPathLead(r);
   if (fresh) stopSync(syncBlock_);
+  if (fresh && inG76_) line(n, "DISABLE_FEED_OVERRIDE()");
   if (!sync_ || lead != syncLead_) {
     char tmp[64];
     std::snprintf(tmp, sizeof tmp, "START_SPEED_FEED_SYNC(%f,0)", lead);
@@ -177,6 +179,8 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     nums(r.end.data(), kAxes);
     buf_.push_back(')');
     end();
+    if (enableAfterMove_) line(n, "ENABLE_FEED_OVERRIDE()");
+    enableAfterMove_ = false;
     break;
   case RecordKind::Arc: {
     // After a tilted arc nothing more is written: the trace would no longer be the path.
@@ -289,9 +293,11 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   case RecordKind::OptionalStop: line(n, "OPTIONAL_PROGRAM_STOP()"); break;
   case RecordKind::ProgramStop: line(n, "PROGRAM_STOP()"); break;
   case RecordKind::ProgramEnd: epilogue(r); break;
-  case RecordKind::Aux:  // user M codes have no canonical command in rs274's standalone canon
+  case RecordKind::Aux: break;  // user M codes have no canonical command in rs274's standalone canon
   case RecordKind::CycleBegin:  // the expanded moves are the trace; rs274 has no bracket
   case RecordKind::CycleEnd:
+    inG76_ = r.kind == RecordKind::CycleBegin && r.text == "rs274.G76";
+    break;
   case RecordKind::FrameChange:  // positions are already machine coordinates
   case RecordKind::Thread:       // thread() above
   case RecordKind::Count: break;

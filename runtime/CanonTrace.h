@@ -47,6 +47,9 @@ private:
   bool sync_ = false;       // inside a spindle-synchronised run
   double syncLead_ = 0;     // its lead along the path (mm/rev)
   int64_t syncBlock_ = -1;  // the block of its last record (STOP carries it)
+  // rs274's G76 (a cycle_begin "rs274.G76") disables feed override around each pass: DISABLE
+  // before the pass's first START, ENABLE after the traverse out that follows its STOP.
+  bool inG76_ = false, enableAfterMove_ = false;
   TiltedArcCheck tilted_{"the canonical trace (rs274 ARC_FEED)"};
 };
 
