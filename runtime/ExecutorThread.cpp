@@ -142,7 +142,8 @@ bool Executor::Impl::threadCycle(const MachineCmd &c) {
     return error(fmt::format("G76 would cut {} passes (J too small for K and R)", depths.size()), "thread-invalid");
   MotionRecord begin = record(RecordKind::CycleBegin);
   begin.text = "rs274.G76";
-  begin.setParam("P", pitch), begin.setParam("Z", end[2]), begin.setParam("I", i), begin.setParam("J", j);
+  // The block's words in program coordinates, mm (X a radius), as the other cycles' cycle_begin.
+  begin.setParam("P", pitch), begin.setParam("Z", end[2] - frameOffset(2)), begin.setParam("I", i), begin.setParam("J", j);
   begin.setParam("K", k);
   emit(begin);
   std::vector<ThreadStep> steps;
@@ -213,7 +214,8 @@ bool Executor::Impl::threadMulti(const MachineCmd &c) {
                              chamfer, threadData.chamfer), "thread-invalid");
   MotionRecord begin = record(RecordKind::CycleBegin);
   begin.text = "iso.G76";
-  begin.setParam("X", e[0]), begin.setParam("Z", e[2]), begin.setParam("R", taper), begin.setParam("P", height);
+  begin.setParam("X", e[0] - frameOffset(0)), begin.setParam("Z", e[2] - frameOffset(2)), begin.setParam("R", taper);
+  begin.setParam("P", height);
   begin.setParam("Q", first), begin.setParam("F", feedMM);
   emit(begin);
   std::vector<ThreadStep> steps;
