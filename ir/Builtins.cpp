@@ -1,4 +1,5 @@
 #include "ir/Builtins.h"
+#include "ir/FrameBuiltins.h"
 #include "ir/Arith.h"
 #include "ir/Strings.h"
 #include "ir/SystemVars.h"
@@ -73,7 +74,7 @@ double ncc_builtin_tolge(const double *a) { return num(a[0]) > num(a[1]) || tolE
 // Positions are 0-based and -1 means "not found" (Sinumerik INDEX/RINDEX/MINDEX/MATCH/SUBSTR).
 namespace {
 struct StrArgs {
-  StringPool &pool;
+  ValuePool &pool;
   const double *a;
   unsigned n;
   std::string &error;
@@ -110,7 +111,7 @@ double position(size_t p) { return p == std::string_view::npos ? -1.0 : (double)
 }  // namespace
 
 #define NCC_STRFN(NAME) \
-  static bool NAME(StringPool &pool, const double *args, unsigned n, double &out, std::string &error)
+  static bool NAME(ValuePool &pool, const double *args, unsigned n, double &out, std::string &error)
 
 NCC_STRFN(strStrlen) {
   StrArgs a{pool, args, n, error, "STRLEN"};
@@ -249,6 +250,18 @@ static const BuiltinInfo kBuiltins[] = {
     {"TOSTR", 1, nullptr, nullptr, strTostr, "a", 's'},
     {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
     {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
+    // Frame builtins (ir/FrameBuiltins.h): argument kinds 's' (an axis or component name), 'n',
+    // 'f' (a frame); result 'f'.
+    // The builders take 0 pairs too: CTRANS() is the identity (Sinumerik's empty TRANS).
+    {"CTRANS", 12, nullptr, nullptr, frameCtrans, "snsnsnsnsnsn", 'f', 0},
+    {"CFINE", 12, nullptr, nullptr, frameCfine, "snsnsnsnsnsn", 'f', 0},
+    {"CROT", 6, nullptr, nullptr, frameCrot, "snsnsn", 'f', 0},
+    {"CSCALE", 12, nullptr, nullptr, frameCscale, "snsnsnsnsnsn", 'f', 0},
+    {"CMIRROR", 6, nullptr, nullptr, frameCmirror, "ssssss", 'f', 0},
+    {"INVFRAME", 1, nullptr, nullptr, frameInvframe, "f", 'f'},
+    {"FRAME_CHAIN", 2, nullptr, nullptr, frameChainFn, "ff", 'f'},
+    {"FRAME_GET", 3, nullptr, nullptr, frameGet, "fss", 'n'},
+    {"FRAME_SET", 4, nullptr, nullptr, frameSet, "fssn", 'f'},
 };
 
 const BuiltinInfo *builtinTable(unsigned &count) {
@@ -257,8 +270,9 @@ const BuiltinInfo *builtinTable(unsigned &count) {
 }
 
 std::string builtinArity(const BuiltinInfo &b) {
-  unsigned lo = b.minArity ? b.minArity : b.arity;
-  return lo == b.arity ? fmt::format("{}", b.arity) : fmt::format("{} or {}", lo, b.arity);
+  unsigned lo = b.fewest();
+  if (lo == b.arity) return fmt::format("{}", b.arity);
+  return fmt::format("{} {} {}", lo, lo + 1 == b.arity ? "or" : "to", b.arity);
 }
 
 std::string builtinDomainError(const BuiltinInfo &b) {

@@ -7,14 +7,15 @@
 
 namespace ncc {
 
-class StringPool;
+class ValuePool;
 
 // Numeric builtins: num() arguments (vacant = 0), a double result; NaN = domain error.
 using BuiltinFn = double (*)(const double *args);
 // String builtins (ir/Strings.h): the raw argument values (string handles or numbers), n of
 // them; false with `error` set on a run-time error (a wrong argument kind, NUMBER of a text
 // that is no number, the pool limit).
-using StrBuiltinFn = bool (*)(StringPool &pool, const double *args, unsigned n, double &out, std::string &error);
+// Frame builtins (ir/FrameBuiltins.h) are typed builtins of the same form.
+using StrBuiltinFn = bool (*)(ValuePool &pool, const double *args, unsigned n, double &out, std::string &error);
 
 struct BuiltinInfo {
   const char *name;    // upper case, as written in NC IR: SIN, ATAN2, ...
@@ -22,13 +23,17 @@ struct BuiltinInfo {
   BuiltinFn fn;        // numeric builtins; null for string builtins
   const char *symbol;  // exported C symbol name of fn (for JIT linking), e.g. "ncc_builtin_sin"
   StrBuiltinFn sfn = nullptr;   // string builtins (the JIT calls them through ncrt_strfn)
-  const char *args = nullptr;   // string builtins: kind of each argument, 's' string, 'n' number, 'a' any
-  char result = 'n';            // 'n' number, 's' string
-  unsigned minArity = 0;        // fewest arguments when fewer than arity are allowed (SUBSTR)
-  bool accepts(size_t n) const { return n <= arity && n >= (minArity ? minArity : arity); }
+  const char *args = nullptr;   // typed builtins: kind of each argument, 's' string, 'n' number, 'f' frame, 'a' any
+  char result = 'n';            // 'n' number, 's' string, 'f' frame
+  int minArity = -1;            // fewest arguments when fewer than arity are allowed (SUBSTR; -1: arity)
+  unsigned fewest() const { return minArity < 0 ? arity : (unsigned)minArity; }
+  bool accepts(size_t n) const { return n <= arity && n >= fewest(); }
   // The static kind of argument i: 's', 'n' or 'a' (any).
   char argKind(size_t i) const { return args ? args[i] : 'n'; }
 };
+
+// The most arguments of any builtin (CTRANS: six axis/value pairs).
+constexpr unsigned kMaxBuiltinArgs = 12;
 
 // Returns null for an unknown name (the name is compared case-insensitively).
 const BuiltinInfo *findBuiltin(std::string_view name);

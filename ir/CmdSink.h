@@ -2,6 +2,7 @@
 // recorder in tests) and asks for controller state. The boundary between the engines (passes/Eval,
 // backends/jit) and the executor (runtime/), so that runtime/ depends on ir/ only.
 #pragma once
+#include "ir/FrameValue.h"
 #include "ir/MachineCmd.h"
 #include "ir/SystemVars.h"
 
@@ -21,6 +22,13 @@ public:
   // Assigns one (sysVarWritable) by the assignment at `loc`; false with the reason in err, which
   // the engine reports.
   virtual bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) {
+    err = "system variable '" + sysRefText(v) + "' cannot be written here";
+    return false;
+  }
+  // The same for the FRAME-valued ones (sysVarIsFrame); the engines turn them into handles
+  // (ir/SystemAccess.h).
+  virtual bool readFrame(const SysRef &v, FrameValue &out, std::string &err) { return false; }
+  virtual bool writeFrame(const SysRef &v, const FrameValue &f, SourceLoc loc, std::string &err) {
     err = "system variable '" + sysRefText(v) + "' cannot be written here";
     return false;
   }

@@ -80,6 +80,7 @@ static ValueType paramType(Type t) {
   case Type::Bool: return ValueType::Bool;
   case Type::String: return ValueType::String;
   case Type::Axis: return ValueType::Axis;
+  case Type::Frame: return ValueType::Frame;
   case Type::Real: return ValueType::Real;
   default: return ValueType::Any;
   }

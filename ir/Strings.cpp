@@ -1,4 +1,5 @@
 #include "ir/Strings.h"
+#include "ir/NCIR.h"
 
 #include <fmt/format.h>
 
@@ -6,12 +7,12 @@
 
 namespace ncc {
 
-StringPool::StringPool() {
+ValuePool::ValuePool() {
   strings_.emplace_back();
   index_.emplace(std::string_view(strings_.back()), 0);
 }
 
-bool StringPool::intern(std::string_view s, double &out, std::string &error) {
+bool ValuePool::intern(std::string_view s, double &out, std::string &error) {
   auto it = index_.find(s);
   if (it != index_.end()) {
     out = bitsValue(kStringTag | it->second);
@@ -33,7 +34,7 @@ bool StringPool::intern(std::string_view s, double &out, std::string &error) {
   return true;
 }
 
-std::string_view StringPool::text(double v) const {
+std::string_view ValuePool::text(double v) const {
   if (!isString(v)) return {};
   uint64_t i = valueBits(v) & ~kStringTagMask;
   return i < strings_.size() ? std::string_view(strings_[i]) : std::string_view();
@@ -44,12 +45,13 @@ std::string poolLimitMessage() {
                      kMaxPoolStrings, kMaxPoolBytes);
 }
 
-std::string valueText(const StringPool &pool, double v, bool fixed) {
+std::string valueText(const ValuePool &pool, double v, bool fixed) {
   if (isString(v)) return std::string(pool.text(v));
+  if (isFrame(v)) return frameText(pool.frames.get(v));
   return fixed ? fixedNumberText(v) : numberText(v);
 }
 
-static const char *const kValueTypeNames[] = {"any", "real", "int", "bool", "char", "string", "axis"};
+static const char *const kValueTypeNames[] = {"any", "real", "int", "bool", "char", "string", "axis", "frame"};
 
 bool valueTypeFromName(std::string_view n, ValueType &out) {
   for (unsigned i = 1; i < sizeof kValueTypeNames / sizeof *kValueTypeNames; ++i)
@@ -59,19 +61,31 @@ bool valueTypeFromName(std::string_view n, ValueType &out) {
     }
   return false;
 }
-const char *valueTypeName(ValueType t) { return kValueTypeNames[(unsigned)t]; }
+const char *valueTypeName(ValueType t) {
+  unsigned i = (unsigned)t;
+  return i < sizeof kValueTypeNames / sizeof *kValueTypeNames ? kValueTypeNames[i] : "?";
+}
 
-double initialValue(ValueType t) { return holdsString(t) ? emptyString() : 0.0; }
+double initialValue(ValueType t) {
+  return t == ValueType::Frame ? identityFrame() : holdsHandle(t) ? emptyString() : 0.0;
+}
 
-bool convertForStore(StringPool &pool, ValueType t, uint32_t len, std::string_view name, double v, double &out,
+bool convertForStore(ValuePool &pool, ValueType t, uint32_t len, std::string_view name, double v, double &out,
                      std::string &error) {
   bool str = isString(v);
   auto mismatch = [&](const char *what) {
     error = fmt::format("cannot assign {} to {} variable '{}'", what, valueTypeName(t), name);
     return false;
   };
+  if (t == ValueType::Frame || isFrame(v)) {
+    if (t != ValueType::Frame && t != ValueType::Any) return mismatch("a frame");
+    if (!isFrame(v)) return mismatch(str ? "a string" : "a number");
+    out = v;
+    return true;
+  }
   switch (t) {
   case ValueType::Any: out = v; return true;
+  case ValueType::Frame: break;  // above
   case ValueType::Real:
     if (str) return mismatch("a string");
     out = v;
@@ -117,7 +131,11 @@ bool convertForStore(StringPool &pool, ValueType t, uint32_t len, std::string_vi
   return mismatch("a value");
 }
 
-bool compareStrings(const StringPool &pool, int op, double a, double b, double &out, std::string &error) {
+bool compareStrings(const ValuePool &pool, int op, double a, double b, double &out, std::string &error) {
+  if (isFrame(a) || isFrame(b)) {  // frames have no order and no equality operator
+    error = handleMessage(HandleUse::Operator, "frame", ir::opCodeName((ir::OpCode)((int)ir::OpCode::Eq + op)));
+    return false;
+  }
   if (!isString(a) || !isString(b)) {
     error = "cannot compare a string with a number";
     return false;
@@ -136,12 +154,16 @@ bool compareStrings(const StringPool &pool, int op, double a, double b, double &
   return true;
 }
 
-std::string operatorOnStringMessage(std::string_view op) {
-  return fmt::format("operator '{}' needs numbers, found a string", op);
+std::string handleMessage(HandleUse use, std::string_view kind, std::string_view name) {
+  switch (use) {
+  case HandleUse::Operator: return fmt::format("operator '{}' needs numbers, found a {}", name, kind);
+  case HandleUse::Builtin: return fmt::format("'{}' needs numbers, found a {}", name, kind);
+  case HandleUse::AsNumber: return fmt::format("a {} is used where a number is needed", kind);
+  case HandleUse::InParameter: return fmt::format("a {} cannot be stored in a numeric parameter", kind);
+  }
+  return {};
 }
-std::string builtinOnStringMessage(std::string_view fn) { return fmt::format("'{}' needs numbers, found a string", fn); }
-std::string stringAsNumberMessage() { return "a string is used where a number is needed"; }
-std::string stringInParameterMessage() { return "a string cannot be stored in a numeric parameter"; }
+const char *handleKind(double v) { return isString(v) ? "string" : isFrame(v) ? "frame" : "number"; }
 
 std::string arrayIndexMessage(std::string_view name, double index) {
   return declaredIndexMessage(name, index, 1, 1, kArrayElements);

@@ -2,7 +2,7 @@
 // JIT-compiled code (through the ncrt_* wrappers of runtime/ncrt.cpp), so each rule exists once.
 //
 // Representation. Every run-time value stays a double. A string is a NaN-boxed handle:
-// the bits kStringTag | i (ir/Value.h), where i indexes the run's StringPool. Handle 0 is the empty string
+// the bits kStringTag | i (ir/Value.h), where i indexes the run's ValuePool. Handle 0 is the empty string
 // (a constant: QS parameters and STRING variables start with it, no pool needed). Strings are
 // interned: equal contents have one handle, so a handle is never stale and `eq` on two strings
 // could compare bits. Arithmetic never produces the tag (it yields the default NaN or propagates
@@ -17,6 +17,7 @@
 // Typed variables (declare type=, function parameters) convert what is stored into them with
 // convertForStore; see docs/IR.md §2 for the rules.
 #pragma once
+#include "ir/FrameValue.h"
 #include "ir/Value.h"
 
 #include <cstdint>
@@ -33,9 +34,11 @@ constexpr uint32_t kMaxStringBytes = 65535;
 // STRING without a declared length (Sinumerik's maximum).
 constexpr uint32_t kDefaultStringLength = 200;
 
-class StringPool {
+// The run's typed values: its strings (below) and its frames (ir/FrameValue.h).
+class ValuePool {
 public:
-  StringPool();
+  ValuePool();
+  FramePool frames;
   // The handle of `s`; false (with `error` set) when a limit is exceeded.
   bool intern(std::string_view s, double &out, std::string &error);
   // The text of a string handle (empty for anything else).
@@ -51,14 +54,16 @@ std::string poolLimitMessage();
 
 // The text of a value: a string as it is, a number as numberText (ir/Value.h); `fixed`: as
 // fixedNumberText (LinuxCNC DEBUG/PRINT).
-std::string valueText(const StringPool &pool, double v, bool fixed = false);
+std::string valueText(const ValuePool &pool, double v, bool fixed = false);
 
 // Value types a variable can be declared with (declare type=, function parameters).
-enum class ValueType : uint8_t { Any, Real, Int, Bool, Char, String, Axis };
+enum class ValueType : uint8_t { Any, Real, Int, Bool, Char, String, Axis, Frame };
 bool valueTypeFromName(std::string_view lowerName, ValueType &out);
 const char *valueTypeName(ValueType t);
-inline bool holdsString(ValueType t) {
-  return t == ValueType::Any || t == ValueType::Char || t == ValueType::String || t == ValueType::Axis;
+// A variable of type t may hold a handle (a string or a frame, ir/Value.h).
+inline bool holdsHandle(ValueType t) {
+  return t == ValueType::Any || t == ValueType::Char || t == ValueType::String || t == ValueType::Axis ||
+         t == ValueType::Frame;
 }
 // The value a declared variable (and each element of a declared array) starts with.
 double initialValue(ValueType t);
@@ -66,19 +71,25 @@ double initialValue(ValueType t);
 // Converts `v` for a store into a variable of type `t` named `name` (STRING: at most `len`
 // bytes). INT rounds half away from zero (Sinumerik ROUND) and must fit 32 bits; BOOL stores
 // 0/1 (a string: empty = 0); CHAR holds a one-character string (a number is its code 0..255,
-// 0 = ""); STRING and AXIS take strings only. False with `error` set otherwise.
-bool convertForStore(StringPool &pool, ValueType t, uint32_t len, std::string_view name, double v, double &out,
+// 0 = ""); STRING and AXIS take strings only; FRAME frames only, and only FRAME (and untyped)
+// variables take a frame. False with `error` set otherwise.
+bool convertForStore(ValuePool &pool, ValueType t, uint32_t len, std::string_view name, double v, double &out,
                      std::string &error);
 
 // Comparison of two values of which at least one is a string: two strings compare byte-wise;
 // a string with a number is an error. op is eq ne lt le gt ge as 0..5.
-bool compareStrings(const StringPool &pool, int op, double a, double b, double &out, std::string &error);
+bool compareStrings(const ValuePool &pool, int op, double a, double b, double &out, std::string &error);
 
-// Run-time type errors, the same in both engines.
-std::string operatorOnStringMessage(std::string_view op);   // operator 'add' needs numbers, found a string
-std::string builtinOnStringMessage(std::string_view fn);    // 'SIN' needs numbers, found a string
-std::string stringAsNumberMessage();                        // a string is used where a number is needed
-std::string stringInParameterMessage();                     // a string cannot be stored in a numeric parameter
+// Run-time type errors of a handle (a string or a frame) where a number is needed, the same in
+// both engines: `kind` is handleKind(v) ("string", "frame"), `name` the operator or builtin.
+enum class HandleUse : uint8_t {
+  Operator,     // operator 'add' needs numbers, found a string
+  Builtin,      // 'SIN' needs numbers, found a frame
+  AsNumber,     // a string is used where a number is needed
+  InParameter,  // a frame cannot be stored in a numeric parameter
+};
+std::string handleMessage(HandleUse use, std::string_view kind, std::string_view name = {});
+const char *handleKind(double v);
 
 // Declared arrays: index `index` of dimension `dim` (1-based) of array `name` of `rank`
 // dimensions is not an integer in 0..extent-1.

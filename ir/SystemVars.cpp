@@ -17,7 +17,7 @@ static const char *const kNames[] = {
     "_adaptive_feed", "_feed_hold", "_feed", "_rpm", "_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v",
     "_w", "_current_tool", "_current_pocket", "_selected_tool", "_selected_pocket",
     "_remap_level", "_task", "_g92_on", "_coord_system_number", "_tool_diameter", "_tool_length_h",
-    "_cutter_d"};
+    "_cutter_d", "_pframe", "_iframe", "_actframe"};
 static_assert(sizeof(kNames) / sizeof(kNames[0]) == (size_t)SysVar::Count);
 
 namespace {
@@ -38,6 +38,7 @@ const std::vector<std::string> &allNames() {
     for (const char *p : kFamilyPrefix)
       for (int a = 0; a < 6; ++a) n.push_back(std::string(p) + kAxisNames[a]);
     for (const char *f : kToolFieldNames) n.push_back(std::string("_tool_data_") + f);
+    for (int i = 0; i < kUserFrames; ++i) n.push_back("_uifr[" + std::to_string(i) + "]");
     return n;
   }();
   return names;
@@ -66,6 +67,7 @@ SysVarInfo sysVarInfo(SysVar v) {
   int id = (int)v - (int)SysVar::Count;
   if (id < 0 || id >= kSysVarIds - (int)SysVar::Count) return {};
   if (id < kWorkOffsetIds) return {SysFamily::WorkOffset, id / 7 + 1, id % 7};
+  if ((int)v >= kUserFrameIds) return {SysFamily::UserFrame, (int)v - kUserFrameIds, 0};
   if ((int)v >= kToolDataIds) return {SysFamily::ToolData, 0, (int)v - kToolDataIds};
   id -= kWorkOffsetIds;
   return {(SysFamily)((int)SysFamily::G92 + id / 6), 0, id % 6};
@@ -78,6 +80,7 @@ SysVar sysVarOf(SysFamily f, int system, int axis) {
   if (f >= SysFamily::G92 && f <= SysFamily::ToolOffset && axis >= 0 && axis < 6)
     return (SysVar)(base + kWorkOffsetIds + ((int)f - (int)SysFamily::G92) * 6 + axis);
   if (f == SysFamily::ToolData && axis >= 0 && axis < kToolFields) return (SysVar)(kToolDataIds + axis);
+  if (f == SysFamily::UserFrame && system >= 0 && system < kUserFrames) return (SysVar)(kUserFrameIds + system);
   return kNoSysVar;
 }
 
@@ -91,8 +94,9 @@ static_assert(kMaxToolNumber < 131072);
 
 namespace {
 // Base names of the indexed families, in SysFamily order from WorkOffset on.
-constexpr const char *kFamilyBase[] = {"_work_offset", "_g92", "_home1", "_home2", "_abs", "_tool_offsets", "_tool_data"};
-constexpr int kFamilyDims[] = {2, 1, 1, 1, 1, 1, 3};
+constexpr const char *kFamilyBase[] = {"_work_offset", "_g92", "_home1", "_home2", "_abs", "_tool_offsets", "_tool_data",
+                                       "_uifr"};
+constexpr int kFamilyDims[] = {2, 1, 1, 1, 1, 1, 3, 1};
 bool wholeIn(double x, int lo, int hi) { return x >= lo && x <= hi && x == (double)(int)x; }
 }  // namespace
 
@@ -113,6 +117,7 @@ SysRef sysVarAt(SysFamily f, double i, double j, double k) {
   case SysFamily::ToolData:
     if (!wholeIn(i, 1, kMaxToolNumber) || !wholeIn(j, 0, kMaxToolNumber) || !wholeIn(k, 0, kToolFields - 1)) return {};
     return {sysVarOf(f, 0, (int)k), (int32_t)i, (int32_t)j};
+  case SysFamily::UserFrame: return {wholeIn(i, 0, kUserFrames - 1) ? sysVarOf(f, (int)i, 0) : kNoSysVar};
   default: return {wholeIn(i, 0, 5) ? sysVarOf(f, 0, (int)i) : kNoSysVar};
   }
 }
@@ -123,8 +128,9 @@ std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, dou
   if (dims > 1) idx += ", " + numberText(j);
   if (dims > 2) idx += ", " + numberText(k);
   const char *range = f == SysFamily::WorkOffset ? "system 1..9, axis 0..6"
-                      : f == SysFamily::ToolData ? "tool 1..99999, edge 0..99999, field 0..3"
-                                                 : "axis 0..5";
+                      : f == SysFamily::ToolData  ? "tool 1..99999, edge 0..99999, field 0..3"
+                      : f == SysFamily::UserFrame ? "settable frame 0..9"
+                                                  : "axis 0..5";
   return "system variable '$" + std::string(name) + "[" + idx + "]': index out of range (" + range + ")";
 }
 
@@ -143,11 +149,26 @@ bool sysFamilyWritable(SysFamily f) {
   case SysFamily::G92:
   case SysFamily::Home1:
   case SysFamily::Home2:
-  case SysFamily::ToolData: return true;
+  case SysFamily::ToolData:
+  case SysFamily::UserFrame: return true;
   default: return false;
   }
 }
 
-bool sysVarWritable(SysVar v) { return sysFamilyWritable(sysVarInfo(v).family); }
+bool sysVarWritable(SysVar v) {
+  return v == SysVar::PFrame || v == SysVar::IFrame || sysFamilyWritable(sysVarInfo(v).family);
+}
+
+bool sysVarIsFrame(SysVar v) {
+  return v == SysVar::PFrame || v == SysVar::IFrame || v == SysVar::ActFrame ||
+         sysFamilyIsFrame(sysVarInfo(v).family);
+}
+
+bool sysVarNameIsFrame(std::string_view name) {
+  SysFamily f;
+  SysVar v;
+  if (sysFamilyFromName(name, f)) return sysFamilyIsFrame(f);
+  return sysVarFromName(name, v) && sysVarIsFrame(v);
+}
 
 }  // namespace ncc

@@ -21,14 +21,17 @@ enum class SysVar : uint16_t {
   RetractOldZ, SpindleRpmMode, SpindleCssMode, IjkAbsolute, LatheDiameter, LatheRadius, SpindleOn,
   SpindleCw, Mist, Flood, SpeedOverride, FeedOverride, AdaptiveFeed, FeedHold, Feed, Rpm, PosX,
   PosY, PosZ, PosA, PosB, PosC, PosU, PosV, PosW, CurrentTool, CurrentPocket, SelectedTool,
-  SelectedPocket, RemapLevel, Task, G92On, CoordSystemNumber, ToolDiameter, ToolLengthH, CutterD, Count
+  SelectedPocket, RemapLevel, Task, G92On, CoordSystemNumber, ToolDiameter, ToolLengthH, CutterD,
+  // Frames (FRAME values, ir/FrameValue.h): the programmable frame (Sinumerik $P_PFRAME), the
+  // active settable frame ($P_IFRAME), the whole chain without the tool ($P_ACTFRAME, read-only).
+  PFrame, IFrame, ActFrame, Count
 };
 
 // Indexed families after the named variables (ids from SysVar::Count on): work offsets of
 // systems 1..9 (X Y Z A B C and the XY rotation R), the G92 offsets, reference points 1 and 2,
 // the machine position and the tool offsets (X Y Z A B C), then the tool data fields. Offsets,
 // reference points and tool data are in parameter units (mm); positions in program units.
-enum class SysFamily : uint8_t { None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset, ToolData };
+enum class SysFamily : uint8_t { None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset, ToolData, UserFrame };
 struct SysVarInfo {
   SysFamily family = SysFamily::None;
   int system = 0;  // WorkOffset: 1..9
@@ -51,7 +54,11 @@ constexpr SysVar kNoSysVar = (SysVar)0xffff;
 // The id of a family member (ToolData: axis = the field); kNoSysVar when out of range.
 SysVar sysVarOf(SysFamily f, int system, int axis);
 constexpr int kToolDataIds = (int)SysVar::Count + 9 * 7 + 5 * 6;  // the first tool data field
-constexpr int kSysVarIds = kToolDataIds + kToolFields;
+// The stored settable frames `$_uifr[n]` (Sinumerik $P_UIFR[n]): n = 0 (G500) .. 9, the work
+// offset systems G54 … (frames of the work offset table: system n's offsets and XY rotation).
+constexpr int kUserFrames = 10;
+constexpr int kUserFrameIds = kToolDataIds + kToolFields;
+constexpr int kSysVarIds = kUserFrameIds + kUserFrames;
 static_assert(kSysVarIds < (int)kNoSysVar);
 
 // What an engine reads or writes: the id and, for tool data, the tool and the edge (edge 0: the
@@ -86,6 +93,11 @@ int axisIndex(std::string_view name);
 // takes effect (the controller's `offset_write` and `tool_write`, docs/MACHINE.md).
 bool sysVarWritable(SysVar v);
 bool sysFamilyWritable(SysFamily f);
+// Variables whose values are FRAMEs (engines read and write them with CmdSink::readFrame/writeFrame).
+bool sysVarIsFrame(SysVar v);
+inline bool sysFamilyIsFrame(SysFamily f) { return f == SysFamily::UserFrame; }
+// The same by IR name (`_pframe`, the family `_uifr`), for the static types of sema and the JIT.
+bool sysVarNameIsFrame(std::string_view name);
 
 // The IR name of a system variable (LinuxCNC's parameter name, e.g. "_metric"); false when
 // `name` is none (tool data has no flat names: it needs a tool and an edge). Names are lower case.

@@ -10,8 +10,8 @@
 //  - a word whose value is vacant is as if not programmed (G1 X#0 moves no axis).
 //  - booleans are 1.0 / 0.0; any non-zero, non-vacant value is true.
 // Angles of trigonometric builtins are degrees (every dialect ncc reads uses degrees).
-// Strings are NaN-boxed handles too (kStringTag below; the pool and the typed-value rules are in
-// ir/Strings.h).
+// Strings and frames are NaN-boxed handles too (kStringTag, kFrameTag below; the pool and the
+// typed-value rules are in ir/Strings.h and ir/FrameValue.h).
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -43,13 +43,20 @@ inline double num(double v) { return isVacant(v) ? 0.0 : v; }
 inline bool truthy(double v) { return !isVacant(v) && v != 0.0; }
 
 
-// A string value is a NaN-boxed handle into the run's StringPool (ir/Strings.h): the bits
+// A string value is a NaN-boxed handle into the run's ValuePool (ir/Strings.h): the bits
 // kStringTag | index. Handle 0 is the empty string.
 constexpr uint64_t kStringTag = 0x7ffc000000000000ull;
 constexpr uint64_t kStringTagMask = 0xffff000000000000ull;
 constexpr uint64_t kEmptyStringBits = kStringTag;
 inline bool isString(double v) { return (valueBits(v) & kStringTagMask) == kStringTag; }
 inline double emptyString() { return bitsValue(kEmptyStringBits); }
+// A FRAME value is a handle too: kFrameTag | index into the run's FramePool (ir/FrameValue.h);
+// handle 0 is the identity frame. Strings and frames are the "handles": never numbers.
+constexpr uint64_t kFrameTag = 0x7ffd000000000000ull;
+inline bool isFrame(double v) { return (valueBits(v) & kStringTagMask) == kFrameTag; }
+inline double identityFrame() { return bitsValue(kFrameTag); }
+constexpr uint64_t kHandleMask = 0xfffe000000000000ull;  // the tag bits strings and frames share
+inline bool isHandle(double v) { return (valueBits(v) & kHandleMask) == kStringTag; }
 
 // Initial values, one place per variable space (docs/IR.md §3): Macro B `#n` starts vacant
 // (numberedStart); Sinumerik R and Heidenhain Q/QL/QR parameters start at 0; Heidenhain QS

@@ -313,9 +313,9 @@ public:
         if (p.defaultValue && usesVariable(*p.defaultValue))
           error(f.loc, fmt::format("function '@{}': default of parameter '{}' must not use variables", f.name, p.name));
         if (p.type != Type::Real && p.type != Type::Bool && p.type != Type::Int && p.type != Type::String &&
-            p.type != Type::Axis)
+            p.type != Type::Axis && p.type != Type::Frame)
           error(f.loc, fmt::format("function '@{}': parameter '{}' of type {} is not supported yet (REAL, INT, BOOL, "
-                                   "STRING, AXIS)",
+                                   "STRING, AXIS, FRAME)",
                                    f.name, p.name, typeName(p.type)));
       }
       walk(f.body);
@@ -372,8 +372,8 @@ private:
           for (auto &i : v->args)
             if (i) numericExpr(*i, op.loc, where);
         if (op.kind == OpKind::Assign && numericSpace(*v))
-          if (const Expr *val = op.get("value"); val && kindOf(*val) == 's')
-            error(op.loc, fmt::format("'assign': {}", stringInParameterMessage()));
+          if (const Expr *val = op.get("value"); val && (kindOf(*val) == 's' || kindOf(*val) == 'f'))
+            error(op.loc, fmt::format("'assign': {}", handleMessage(HandleUse::InParameter, kindName(kindOf(*val)))));
         break;
       case Ctx::Symbol: break;  // checked by kEnumRules / checkModes
       }
@@ -381,7 +381,7 @@ private:
     switch (op.kind) {
     case OpKind::Declare: {
       const Expr *t = op.get("type");
-      if (t && t->kind == ExprKind::Symbol && (lower(t->str) == "symbol" || lower(t->str) == "frame"))
+      if (t && t->kind == ExprKind::Symbol && lower(t->str) == "symbol")
         error(op.loc, fmt::format("'declare' type '{}' is not supported yet", t->str));
       break;
     }
@@ -463,8 +463,10 @@ private:
   }
 
   // What an expression statically is: 's' a string (constants, symbols, concat, string
-  // builtins, variables declared string/char/axis), 'n' a number, 'a' either (undeclared named
-  // variables and QS parameters hold what was assigned: checked at run time).
+  // builtins, variables declared string/char/axis), 'f' a frame (frame builtins, FRAME
+  // variables), 'n' a number, 'a' any (undeclared named variables and QS parameters hold what
+  // was assigned: checked at run time).
+  static const char *kindName(char k) { return k == 's' ? "string" : k == 'f' ? "frame" : "number"; }
   char kindOf(const Expr &e) const {
     switch (e.kind) {
     case ExprKind::String:
@@ -476,10 +478,11 @@ private:
     }
     case ExprKind::Var: {
       if (e.space == VarSpace::QParam) return e.str == "QS" ? 'a' : 'n';
+      if (e.space == VarSpace::System) return sysVarNameIsFrame(e.str) ? 'f' : 'n';
       if (e.space != VarSpace::Local && e.space != VarSpace::Global) return 'n';
       const VarDecl *d = fn_ ? decls_.find(*fn_, e) : nullptr;
       if (!d || d->type == ValueType::Any) return 'a';
-      return holdsString(d->type) ? 's' : 'n';
+      return d->type == ValueType::Frame ? 'f' : holdsHandle(d->type) ? 's' : 'n';
     }
     default: return 'n';
     }
@@ -501,6 +504,10 @@ private:
       if (e.op == OpCode::Concat) return anyExpr(*e.args[0], l, where) && anyExpr(*e.args[1], l, where);
       if (e.op >= OpCode::Eq && e.op <= OpCode::Ge) {
         char a = kindOf(*e.args[0]), b = kindOf(*e.args[1]);
+        if (a == 'f' || b == 'f') {
+          error(l, where + (": " + handleMessage(HandleUse::Operator, "frame", opCodeName(e.op))).c_str());
+          return false;
+        }
         if ((a == 's' && b == 'n') || (a == 'n' && b == 's')) {
           error(l, where + ": cannot compare a string with a number");
           return false;
@@ -513,8 +520,8 @@ private:
         for (size_t i = 0; i < e.args.size(); ++i) {
           if (!e.args[i]) continue;
           char want = b->argKind(i), have = kindOf(*e.args[i]);
-          if (want == 's' && have == 'n') {
-            error(l, fmt::format("{}: '{}' argument {} must be a string", where.text(), b->name, i + 1));
+          if ((want == 's' || want == 'f') && have != 'a' && have != want) {
+            error(l, fmt::format("{}: '{}' argument {} must be a {}", where.text(), b->name, i + 1, kindName(want)));
             return false;
           }
           if (!(want == 'n' ? numericExpr(*e.args[i], l, where) : anyExpr(*e.args[i], l, where))) return false;
@@ -528,8 +535,8 @@ private:
 
   // A number: a statically known string here is an error (at run time too, for 'a').
   bool numericExpr(const Expr &e, SourceLoc l, const Where &where) {
-    if (kindOf(e) == 's') {
-      error(l, where + (": " + stringAsNumberMessage()).c_str());
+    if (char k = kindOf(e); k == 's' || k == 'f') {
+      error(l, where + (": " + handleMessage(HandleUse::AsNumber, kindName(k))).c_str());
       return false;
     }
     return anyExpr(e, l, where);

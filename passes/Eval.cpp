@@ -6,6 +6,7 @@
 #include "ir/Jumps.h"
 #include "ir/RunErrors.h"
 #include "ir/Strings.h"
+#include "ir/SystemAccess.h"
 #include "ir/Value.h"
 #include "passes/CmdTemplate.h"
 #include "passes/EvalCode.h"
@@ -60,7 +61,7 @@ struct Evaluator::Impl {
   std::unordered_map<std::string, std::vector<double>> globalArrays;
   double lastIndex = 0;  // index of the last array element referenced (for the unset error)
   std::vector<double> numbered = std::vector<double>(100000, numberedStart());
-  StringPool pool;  // the run's strings (ir/Strings.h)
+  ValuePool pool;  // the run's strings (ir/Strings.h)
   DeclTable decls;  // declared types of the current module
   std::vector<double> rparams = std::vector<double>(1000, rParamStart());
   std::vector<double> qparams[kQSpaces];  // by qPrefixIndex, allocated on first use
@@ -193,7 +194,7 @@ struct Evaluator::Impl {
     case VarSpace::System: {  // read here; execAssign writes
       static double value;
       std::string err;
-      if (!sink.readSystem(systemVar(fr, v), value, err))
+      if (!readSystemValue(sink, pool, systemVar(fr, v), value, err))
         fail(v.loc, err.empty() ? runErrorMessage(RunError::SysVar, limits, v.str) : err);
       return value;
     }
@@ -223,7 +224,7 @@ struct Evaluator::Impl {
     }
     case ExprKind::Unary: {
       double r, a = ev(fr, *e.args[0]);
-      if (isString(a)) fail(e.loc, operatorOnStringMessage(opCodeName(e.op)));
+      if (isHandle(a)) fail(e.loc, operatorOnHandle(e.op, a));
       if (applyUnary(e.op, a, r) != OpStatus::Ok) fail(e.loc, "bad unary operator");
       return r;
     }
@@ -237,9 +238,9 @@ struct Evaluator::Impl {
       double a = ev(fr, *e.args[0]);
       double b = ev(fr, *e.args[1]);
       double r;
-      if (isString(a) || isString(b)) {
+      if (isHandle(a) || isHandle(b)) {
         std::string err;
-        if (e.op < OpCode::Eq || e.op > OpCode::Ge) fail(e.loc, operatorOnStringMessage(opCodeName(e.op)));
+        if (e.op < OpCode::Eq || e.op > OpCode::Ge) fail(e.loc, operatorOnHandle(e.op, isHandle(a) ? a : b));
         if (!compareStrings(pool, (int)e.op - (int)OpCode::Eq, a, b, r, err)) fail(e.loc, err);
         return r;
       }
@@ -258,16 +259,16 @@ struct Evaluator::Impl {
       if (!b) fail(e.loc, fmt::format("unknown function '{}'", e.str));
       if (!b->accepts(e.args.size()))
         fail(e.loc, fmt::format("'{}' takes {} argument(s), {} given", b->name, builtinArity(*b), e.args.size()));
-      double args[4] = {0, 0, 0, 0};
-      for (size_t i = 0; i < e.args.size() && i < 4; ++i) args[i] = ev(fr, *e.args[i]);
+      double args[kMaxBuiltinArgs] = {};
+      for (size_t i = 0; i < e.args.size() && i < kMaxBuiltinArgs; ++i) args[i] = ev(fr, *e.args[i]);
       double r;
-      if (b->sfn) {  // string builtins take the values as they are
+      if (b->sfn) {  // typed builtins (strings, frames) take the values as they are
         std::string err;
         if (!b->sfn(pool, args, (unsigned)e.args.size(), r, err)) fail(e.loc, err);
         return r;
       }
       for (double &a : args) {
-        if (isString(a)) fail(e.loc, builtinOnStringMessage(b->name));
+        if (isHandle(a)) fail(e.loc, handleMessage(HandleUse::Builtin, handleKind(a), b->name));
         a = num(a);
       }
       r = b->fn(args);
@@ -276,6 +277,10 @@ struct Evaluator::Impl {
     }
     }
     fail(e.loc, "bad expression");
+  }
+
+  static std::string operatorOnHandle(OpCode op, double v) {
+    return handleMessage(HandleUse::Operator, handleKind(v), opCodeName(op));
   }
 
   double intern(std::string_view s, SourceLoc loc) {
@@ -288,7 +293,7 @@ struct Evaluator::Impl {
   // A value used as a number (conditions, counts, indices, words): a string is an error.
   double number(Frame &fr, const Expr &e) {
     double v = ev(fr, e);
-    if (isString(v)) fail(e.loc, stringAsNumberMessage());
+    if (isHandle(v)) fail(e.loc, handleMessage(HandleUse::AsNumber, handleKind(v)));
     return v;
   }
 
@@ -365,7 +370,7 @@ struct Evaluator::Impl {
   void store(const Expr &target, double v, Frame &fr, CompiledFn &cf) {
     if (target.space == VarSpace::System) {
       std::string err;
-      if (!sink.writeSystem(systemVar(fr, target), v, target.loc, err)) fail(target.loc, err);
+      if (!writeSystemValue(sink, pool, systemVar(fr, target), v, target.loc, err)) fail(target.loc, err);
       return;
     }
     v = convert(decls.find(*cf.fn, target), target, v, target.loc);
@@ -378,9 +383,10 @@ struct Evaluator::Impl {
     if (d) {
       std::string err;
       if (!convertForStore(pool, d->type, d->len, target.str, v, v, err)) fail(loc, err);
-    } else if (isString(v) && (target.space == VarSpace::Numbered || target.space == VarSpace::RParam ||
-                               (target.space == VarSpace::QParam && target.str != "QS"))) {
-      fail(loc, stringInParameterMessage());
+    } else if (isHandle(v) && (target.space == VarSpace::Numbered || target.space == VarSpace::RParam ||
+                               target.space == VarSpace::QParam)) {
+      if (isFrame(v) || target.space != VarSpace::QParam || target.str != "QS")
+        fail(loc, handleMessage(HandleUse::InParameter, handleKind(v)));
     }
     return v;
   }
@@ -577,7 +583,7 @@ struct Evaluator::Impl {
       }
       double v = ev(fr, *a.value);
       if (!k.empty() && k[0] >= '0' && k[0] <= '9') {
-        if (isString(v)) fail(op.loc, stringInParameterMessage());
+        if (isHandle(v)) fail(op.loc, handleMessage(HandleUse::InParameter, handleKind(v)));
         out.numbered.push_back({std::atol(k.c_str()), v});
       } else {
         // A typed parameter converts its argument (ir/Strings.h convertForStore).

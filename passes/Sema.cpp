@@ -1,8 +1,9 @@
-// Name resolution and type checking. Gives every expression a type (INT, REAL, BOOL, STRING)
+// Name resolution and type checking. Gives every expression a type (INT, REAL, BOOL, STRING, FRAME)
 // and reports what no engine could run: unknown functions, wrong arity, strings in arithmetic,
 // calls to programs the module does not have.
 #include "ir/Builtins.h"
 #include "ir/Decls.h"
+#include "ir/SystemVars.h"
 #include "passes/Pass.h"
 
 #include <fmt/format.h>
@@ -30,6 +31,7 @@ struct Sema {
     case ValueType::Char:
     case ValueType::String: return Type::String;
     case ValueType::Axis: return Type::Axis;
+    case ValueType::Frame: return Type::Frame;
     case ValueType::Any: break;
     }
     return Type::Unknown;
@@ -50,7 +52,7 @@ struct Sema {
       for (auto &i : e.args)
         if (i && !numeric(i->type) && !(e.space == VarSpace::System && i->kind == ExprKind::Symbol))
           diags.error(e.loc, "variable index must be a number");
-      e.type = e.space == VarSpace::System ? Type::Real : varType(e);
+      e.type = e.space != VarSpace::System ? varType(e) : sysVarNameIsFrame(e.str) ? Type::Frame : Type::Real;
       break;
     case ExprKind::Unary:
       if (!numeric(e.args[0]->type)) diags.error(e.loc, fmt::format("operand of '{}' must be a number", opCodeName(e.op)));
@@ -83,10 +85,12 @@ struct Sema {
         char want = b ? b->argKind(i) : 'n';
         Type t = e.args[i]->type;
         if (want == 'n' && !numeric(t)) diags.error(e.args[i]->loc, "function argument must be a number");
-        if (want == 's' && numeric(t) && t != Type::Unknown)
+        if (want == 's' && ((numeric(t) && t != Type::Unknown) || t == Type::Frame))
           diags.error(e.args[i]->loc, "function argument must be a string");
+        if (want == 'f' && t != Type::Frame && t != Type::Unknown)
+          diags.error(e.args[i]->loc, "function argument must be a frame");
       }
-      e.type = b && b->result == 's' ? Type::String : Type::Real;
+      e.type = !b ? Type::Real : b->result == 's' ? Type::String : b->result == 'f' ? Type::Frame : Type::Real;
       break;
     }
     }
@@ -110,6 +114,17 @@ struct Sema {
         const VarDecl *d = t && v && fn ? decls.find(*fn, *t) : nullptr;
         bool strValue = v && (v->type == Type::String || v->type == Type::Symbol);
         bool numValue = v && v->type != Type::Unknown && numeric(v->type);
+        bool frameValue = v && v->type == Type::Frame;
+        if (d && frameValue && d->type != ValueType::Frame && d->type != ValueType::Any)
+          diags.error(op.loc, fmt::format("cannot assign a frame to {} variable '{}'", valueTypeName(d->type), t->str));
+        if (assign && t && v && t->space == VarSpace::System) {  // controller state: frames or numbers
+          bool frameVar = sysVarNameIsFrame(t->str);
+          if (frameVar ? (strValue || numValue) : frameValue)
+            diags.error(op.loc, fmt::format("cannot assign a {} to system variable '${}'",
+                                            frameValue ? "frame" : strValue ? "string" : "number", t->str));
+        }
+        if (d && d->type == ValueType::Frame && (strValue || numValue))
+          diags.error(op.loc, fmt::format("cannot assign a {} to frame variable '{}'", strValue ? "string" : "number", t->str));
         if (d && strValue && (d->type == ValueType::Int || d->type == ValueType::Real))
           diags.error(op.loc, fmt::format("cannot assign a string to {} variable '{}'", valueTypeName(d->type), t->str));
         if (d && numValue && (d->type == ValueType::String || d->type == ValueType::Axis))

@@ -706,15 +706,39 @@ bool Executor::exec(const MachineCmd &c) {
 }
 
 bool Executor::saveModal() {
-  impl_->savedModal.push_back({impl_->st, impl_->pathTolerance, impl_->naiveTolerance});
+  impl_->savedModal.push_back({impl_->st, impl_->pathTolerance, impl_->naiveTolerance, impl_->pf, impl_->pfValue});
   return true;
 }
 
 // The groups that differ, as one mode command: the executor's own handling (checks, records)
 // applies, and nothing is recorded when nothing changed. Sinumerik restores the modal G
-// functions only (the F value stays as the subprogram left it).
+// functions only (the F value stays as the subprogram left it); the work offset group (G54…)
+// is one of them, and the programmable frame comes back as Siemens does by default (a TRANS in
+// a SAVE subprogram ends with it; the machine data that changes this is not modelled).
 bool Executor::restoreModal(SourceLoc loc) {
   if (impl_->savedModal.empty()) return true;
+  Impl &x = *impl_;
+  const Impl::SavedModal &s = x.savedModal.back();
+  x.loc = loc;
+  bool framed = !std::equal(&s.pf.composite.m[0][0], &s.pf.composite.m[0][0] + 9, &x.pf.composite.m[0][0]) ||
+                s.pf.composite.t != x.pf.composite.t || s.pf.local != x.pf.local;
+  if (framed) {
+    if (x.comp.active())
+      return x.error("the return from a SAVE subprogram restores the programmable frame: not with cutter radius "
+                     "comp on",
+                     "cutcomp-conflict");
+    x.pf = s.pf, x.pfValue = s.pfValue;
+    x.noteFrame("SAVE");
+  }
+  if (s.st.workOffset != x.st.workOffset) {  // as a G54… would: the table's values now
+    x.st.workOffset = s.st.workOffset;
+    x.applyWorkOffset();
+    x.noteFrame("SAVE");
+  }
+  return restoreModes(loc);
+}
+
+bool Executor::restoreModes(SourceLoc loc) {
   Impl::SavedModal s = impl_->savedModal.back();
   impl_->savedModal.pop_back();
   const ModalState &now = impl_->st;

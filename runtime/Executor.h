@@ -57,6 +57,9 @@ public:
   bool readSystem(const SysRef &v, double &out, std::string &err) const;
   // Writes one (ir/SystemVars.h sysVarWritable); false with the reason in err.
   bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err);
+  // FRAME-valued system variables (ir/SystemVars.h sysVarIsFrame; ExecutorFrames.cpp).
+  bool readFrame(const SysRef &v, FrameValue &out, std::string &err) const;
+  bool writeFrame(const SysRef &v, const FrameValue &f, SourceLoc loc, std::string &err);
   const ModalState &state() const;
   // Source blocks executed so far (a block in a loop counts each time it runs).
   uint64_t blockCount() const;
@@ -64,6 +67,7 @@ public:
   struct Impl;  // the state, shared by runtime/Executor*.cpp (ExecutorImpl.h)
 
 private:
+  bool restoreModes(SourceLoc loc);  // the mode groups of a SAVE call (restoreModal)
   Impl *impl_;
 };
 
@@ -75,6 +79,10 @@ public:
   bool readSystem(const SysRef &v, double &out, std::string &err) override { return exec_.readSystem(v, out, err); }
   bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) override {
     return exec_.writeSystem(v, value, loc, err);
+  }
+  bool readFrame(const SysRef &v, FrameValue &out, std::string &err) override { return exec_.readFrame(v, out, err); }
+  bool writeFrame(const SysRef &v, const FrameValue &f, SourceLoc loc, std::string &err) override {
+    return exec_.writeFrame(v, f, loc, err);
   }
   bool saveModal() override { return exec_.saveModal(); }
   bool restoreModal(SourceLoc loc) override { return exec_.restoreModal(loc); }

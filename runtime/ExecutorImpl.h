@@ -72,6 +72,15 @@ struct Executor::Impl {
   // mm, where P is the programmable frame (G52 G68 G51 G51.1) and Rz the XY rotation of the
   // active coordinate system (G10 L2 R), rs274's order after P.
   ProgrammableFrame pf;
+  // The last FRAME written to the programmable frame (ExecutorFrames.cpp), with the slots it
+  // made: read back as written while the slots are still those.
+  struct WrittenFrame {
+    bool set = false;
+    FrameValue frame;
+    Affine composite;
+    AxisVec local{};
+  } pfValue;
+  FrameValue programmableFrame() const;  // in program units
   // The work offset tables (what G10 L2 and parameter writes change) and the active system's
   // origin as applied: a written offset takes effect when the controller says (offset_write).
   std::array<AxisVec, 9> g5x{};
@@ -115,6 +124,8 @@ struct Executor::Impl {
   struct SavedModal {  // Sinumerik SAVE (Executor::saveModal)
     ModalState st;
     double pathTolerance, naiveTolerance;
+    ProgrammableFrame pf;  // the programmable frame comes back too
+    WrittenFrame pfValue;
   };
   std::vector<SavedModal> savedModal;
   double pathTolerance = 0;   // G64 P (mm)

@@ -305,6 +305,9 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   }
   case SysVar::ToolLengthH: out = st.toolLengthH; return true;
   case SysVar::CutterD: out = x.cutterD; return true;
+  case SysVar::PFrame:
+  case SysVar::IFrame:
+  case SysVar::ActFrame:  // FRAME values: readFrame (ExecutorFrames.cpp)
   case SysVar::Count: return false;
   }
   // Positions: program coordinates (all offsets applied), in program units.

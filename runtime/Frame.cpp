@@ -1,4 +1,5 @@
 #include "runtime/Frame.h"
+#include "ir/Mat3.h"
 
 #include <cmath>
 
@@ -24,23 +25,11 @@ Affine Affine::then(const Affine &o) const {
   return r;
 }
 
-double Affine::det() const {
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
+double Affine::det() const { return mat3Det(m); }
 
 Affine Affine::inverse() const {
   Affine r;
-  double d = det();  // frames never have d == 0: scale factors of 0 are rejected
-  r.m[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / d;
-  r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / d;
-  r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / d;
-  r.m[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / d;
-  r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / d;
-  r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / d;
-  r.m[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / d;
-  r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / d;
-  r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / d;
+  mat3Inverse(m, r.m);  // frames never have det 0: scale factors of 0 are rejected
   Vec3 nt = r.applyLinear(t);
   r.t = {-nt[0], -nt[1], -nt[2]};
   return r;

@@ -3,6 +3,8 @@
 // setting is one row, and every problem is reported as "file:line:col: error: message".
 #include "runtime/Machine.h"
 
+#include "runtime/Geometry.h"
+
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -45,7 +47,7 @@ using NodeReader = void (*)(Ctx &, const toml::node &, void *obj);
 // What a key sets: a field of the table's struct (its type decides the TOML type expected), or a
 // reader for structured values.
 template <class T>
-using Field = std::variant<double T::*, int T::*, std::string T::*, bool T::*, AxisVec T::*,
+using Field = std::variant<double T::*, int T::*, std::string T::*, bool T::*, AxisVec T::*, Vec3 T::*,
                            std::vector<std::string> T::*, NodeReader>;
 
 template <class T> struct KeyDef {
@@ -129,6 +131,38 @@ std::optional<std::string> readString(Ctx &c, const toml::node &n, const std::st
   out = v;
 }
 
+// [x, y, z] into out; out is unchanged after a problem.
+[[gnu::noinline]] bool readVec3(Ctx &c, const toml::node &n, const std::string &key, Vec3 &out) {
+  const toml::array *a = n.as_array();
+  if (!a || a->size() != 3) {
+    c.error(n.source(), key + ": expected an array of 3 numbers [x, y, z], got " +
+                            (a ? std::to_string(a->size()) + " elements" : typeName(n)));
+    return false;
+  }
+  Vec3 v{};
+  for (size_t i = 0; i < 3; ++i) {
+    auto d = readNumber(c, *a->get(i), key + "[" + std::to_string(i) + "]");
+    if (!d) return false;
+    v[i] = *d;
+  }
+  out = v;
+  return true;
+}
+
+// A direction: a unit vector, within 1e-4 (so 0.7071 passes for sin 45), then normalised.
+bool readUnitVec(Ctx &c, const toml::node &n, const std::string &key, Vec3 &out) {
+  Vec3 v;
+  if (!readVec3(c, n, key, v)) return false;
+  double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (len == 0) c.error(n.source(), key + ": the zero vector has no direction");
+  else if (std::fabs(len - 1) > 1e-4) c.error(n.source(), key + ": expected a unit vector, its length is " + num(len));
+  else {
+    for (int i = 0; i < 3; ++i) out[i] = v[i] / len;
+    return true;
+  }
+  return false;
+}
+
 // Sets one key's field, or reports why not.
 template <class T> void apply(Ctx &c, const KeyDef<T> &def, const toml::node &n, T &obj) {
   const std::string key = def.key;
@@ -156,6 +190,8 @@ template <class T> void apply(Ctx &c, const KeyDef<T> &def, const toml::node &n,
           obj.*field = **n.as_boolean();
         } else if constexpr (std::is_same_v<F, AxisVec T::*>) {
           readAxisVec(c, n, key, obj.*field);
+        } else if constexpr (std::is_same_v<F, Vec3 T::*>) {
+          readVec3(c, n, key, obj.*field);
         } else {  // list of strings
           const toml::array *a = n.as_array();
           if (!a) return c.error(n.source(), key + ": expected an array of strings, got " + typeName(n));
@@ -459,6 +495,119 @@ void readEmit(Ctx &c, const toml::node &n, void *obj) {
   });
 }
 
+// ---- kinematics (docs/MACHINE.md "Kinematics") ---------------------------------------------
+
+constexpr const char *kChainTypes = "xyz table-table head-table head-head";
+
+struct JointIn : RotaryJoint {
+  std::string axisName;
+};
+
+const KeyDef<JointIn> kJointKeys[] = {
+    {"axis", &JointIn::axisName, 0, 0, false, nullptr, true},
+    {"on", NodeReader([](Ctx &c, const toml::node &n, void *j) {
+       if (auto s = readString(c, n, "on", "table head")) static_cast<JointIn *>(j)->onHead = *s == "head";
+     }),
+     0, 0, false, nullptr, true},
+    {"direction", NodeReader([](Ctx &c, const toml::node &n, void *j) {
+       readUnitVec(c, n, "direction", static_cast<JointIn *>(j)->direction);
+     }),
+     0, 0, false, nullptr, true},
+    {"center", &JointIn::center},
+};
+
+struct ChainIn : KinematicChain {
+  std::string type;
+};
+
+void readJoints(Ctx &c, const toml::node &n, void *obj) {
+  auto &joints = static_cast<ChainIn *>(obj)->joints;
+  const toml::array *a = n.as_array();
+  if (!a) return c.error(n.source(), "joints: expected an array of tables [[kinematics.joints]], got " + typeName(n));
+  for (const toml::node &e : *a) {
+    JointIn in;
+    bool ok = readTable(c, e, "[[kinematics.joints]]", kJointKeys, in);
+    if (in.axisName.empty()) continue;  // reported (missing, or not a string)
+    const char *p = in.axisName.size() == 1 ? std::strchr(kAxisNames, in.axisName[0]) : nullptr;
+    if (!p || !*p)
+      c.error(e.as_table()->get("axis")->source(), "axis: '" + in.axisName + "' is not one of X, Y, Z, A, B, C");
+    else if (ok)
+      in.axis = int(p - kAxisNames), joints.push_back(in);
+  }
+}
+
+const KeyDef<ChainIn> kChainKeys[] = {
+    {"type", &ChainIn::type, 0, 0, false, kChainTypes, true},
+    {"tool_axis", NodeReader([](Ctx &c, const toml::node &n, void *k) {
+       readUnitVec(c, n, "tool_axis", static_cast<ChainIn *>(k)->toolAxis);
+     })},
+    {"prefer", &ChainIn::prefer, 0, 0, false, "nearest positive negative"},
+    {"joints", NodeReader(readJoints)},
+};
+
+// `kinematics = "xyz"`, or a [kinematics] table with the chain's type and joints.
+void readKinematics(Ctx &c, const toml::node &n, void *obj) {
+  Machine &m = *static_cast<Machine *>(obj);
+  if (n.is_string()) {
+    auto s = readString(c, n, "kinematics", kChainTypes);
+    if (s && *s != "xyz")
+      return c.error(n.source(), "kinematics: \"" + *s + "\" needs its data: write a [kinematics] table with type = \"" +
+                                     *s + "\" and its [[kinematics.joints]]");
+    return;
+  }
+  ChainIn in;
+  if (!n.is_table()) return c.error(n.source(), "kinematics: expected a string or a table, got " + typeName(n));
+  if (!readTable(c, n, "[kinematics]", kChainKeys, in)) return;
+  m.kinematics = in.type;
+  m.chain = in;
+}
+
+bool parallel(const Vec3 &u, const Vec3 &v) {
+  Vec3 w = cross(u, v);
+  return std::sqrt(dot(w, w)) < 1e-6;
+}
+
+// The chain against the axes: two joints of the type's sides, rotary axes the file describes, a
+// geometry that can orient the tool (docs/MACHINE.md "Kinematics").
+void chainChecks(Ctx &c, const toml::table &doc, const Machine &m) {
+  auto kin = doc["kinematics"];
+  const auto &joints = m.chain.joints;
+  if (!kin.is_table()) return;
+  const toml::source_region &header = kin.node()->source();
+  const std::string what = "[kinematics]: type \"" + m.kinematics + "\" ";
+  if (m.kinematics == "xyz") {
+    if (!joints.empty()) c.error(header, what + "has no joints");
+    return;
+  }
+  if (joints.size() != 2)
+    return c.error(header, what + "needs 2 joints ([[kinematics.joints]]), got " + std::to_string(joints.size()));
+  int heads = (int)std::count_if(joints.begin(), joints.end(), [](auto &j) { return j.onHead; });
+  int want = m.kinematics == "head-head" ? 2 : m.kinematics == "head-table" ? 1 : 0;
+  static const char *const kSides[] = {"two table joints", "one head and one table joint", "two head joints"};
+  if (heads != want) return c.error(header, what + "needs " + kSides[want] + ", got " + kSides[heads]);
+  size_t before = c.problems.size();
+  for (size_t i = 0; i < joints.size(); ++i) {
+    const std::string name(1, kAxisNames[joints[i].axis]);
+    const toml::source_region &at = kin["joints"][i]["axis"].node()->source();
+    const AxisLimits &a = m.axes[joints[i].axis];
+    if (i == 1 && joints[0].axis == joints[1].axis) c.error(at, "joint " + name + " appears twice");
+    else if (!a.present) c.error(at, "joint " + name + ": no [axes." + name + "] describes it");
+    else if (!a.rotary) c.error(at, "joint " + name + ": axis " + name + " is linear (joints are rotary axes)");
+  }
+  if (c.problems.size() != before) return;
+  auto jointName = [&](int i) { return std::string(1, kAxisNames[joints[i].axis]); };
+  if (parallel(joints[0].direction, joints[1].direction))
+    return c.error(kin["joints"][1]["direction"].node()->source(),
+                   "joints " + jointName(0) + " and " + jointName(1) +
+                       " turn about parallel directions: the chain cannot orient the tool axis");
+  int tilt = m.chain.tiltJoint();
+  if (parallel(joints[tilt].direction, m.chain.toolAxis))
+    c.error(kin["joints"][tilt]["direction"].node()->source(),
+            "joint " + jointName(tilt) +
+                " turns about the tool axis, so it cannot tilt the tool (the joint next to the tool, the outer head "
+                "joint or else the first table joint, must not be parallel to tool_axis)");
+}
+
 void readSchema(Ctx &c, const toml::node &n, void *) {
   if (n.value_exact<int64_t>() != 1)
     c.error(n.source(), "schema: this ncc reads machine descriptions of schema 1 (write schema = 1)");
@@ -479,7 +628,7 @@ void latheChecks(Ctx &c, const toml::table &doc, Machine &m) {
 
 const KeyDef<Machine> kTopKeys[] = {
     {"schema", NodeReader(readSchema)},
-    {"kinematics", &Machine::kinematics, 0, 0, false, "xyz"},
+    {"kinematics", NodeReader(readKinematics)},
     {"machine", NodeReader([](Ctx &c, const toml::node &n, void *m) {
        readTable(c, n, "[machine]", kMachineKeys, *static_cast<Machine *>(m));
      })},
@@ -517,11 +666,12 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
     // Whole-machine checks, reported at the start of the file.
     if (!m.axes[0].present && !m.axes[1].present && !m.axes[2].present)
       c.error({}, "no linear axis (need at least one of [axes.X] [axes.Y] [axes.Z])");
-    // "xyz": X Y Z are the Cartesian tool position itself, so they cannot turn.
+    // X Y Z are the Cartesian position of the tool (xyz) or of the spindle (rotary chains).
     for (int i = 0; i < 3; ++i)
       if (m.axes[i].present && m.axes[i].rotary)
         c.error(doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
-                std::string("axis ") + kAxisNames[i] + ": kinematics \"xyz\" needs it linear");
+                std::string("axis ") + kAxisNames[i] + ": kinematics \"" + m.kinematics + "\" needs it linear");
+    chainChecks(c, doc, m);
     // Every offset number names an edge of the tool table.
     for (auto &[number, edge] : m.controller.offsetNumbers) {
       auto tool = m.toolTable.find(edge.first);
@@ -607,6 +757,12 @@ OffsetWrite Controller::offsetWritePolicy() const {
   if (k == "on-change" || k == "linuxcnc") return OffsetWrite::OnChange;
   if (k == "on-select" || k == "sinumerik" || k == "heidenhain") return OffsetWrite::OnSelect;
   return OffsetWrite::Immediate;
+}
+
+int KinematicChain::tiltJoint() const {
+  for (int i = (int)joints.size() - 1; i >= 0; --i)
+    if (joints[i].onHead) return i;
+  return 0;
 }
 
 void Machine::addTool(int n, const ToolEdge &edge) {

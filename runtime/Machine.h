@@ -99,6 +99,29 @@ struct Controller {
   std::map<int, std::pair<int, int>> offsetNumbers;
 };
 
+// One rotary joint of a kinematic chain ([[kinematics.joints]], docs/MACHINE.md "Kinematics").
+// Positive joint values turn the moving part (the table with the workpiece, or the head with the
+// spindle) right-handed about `direction`.
+struct RotaryJoint {
+  int axis = -1;                          // machine axis index (A B C: 3..5)
+  bool onHead = false;                    // turns the spindle (head) or the workpiece (table)
+  std::array<double, 3> direction{0, 0, 1};  // unit vector, machine axes, all joints at zero
+  // A point of the rotation axis with all joints at zero: table joints in machine coordinates,
+  // head joints relative to the spindle gauge point (the head pivot).
+  std::array<double, 3> center{};
+};
+
+// The rotary chain of a machine (`kinematics` other than "xyz"): two joints, listed from the
+// machine base outward on each side (the joint that carries the other first).
+struct KinematicChain {
+  std::vector<RotaryJoint> joints;
+  std::array<double, 3> toolAxis{0, 0, 1};  // tip -> spindle with the joints at zero
+  std::string prefer = "nearest";           // nearest, positive, negative (sign of the tilt joint)
+  // The joint next to the tool on the path tool -> workpiece (the outer head joint, else the
+  // first table joint): it tilts the tool axis away from `toolAxis`.
+  int tiltJoint() const;
+};
+
 // One problem of a machine description; line 0 = not located (an unreadable file).
 struct MachineError {
   uint32_t line = 0, col = 0;
@@ -109,7 +132,10 @@ struct Machine {
   std::string name = "default-mill";
   std::string dialect = "iso";           // controller dialect of the machine
   std::array<AxisLimits, kAxes> axes{};
+  // xyz (X Y Z are the tool position, A B C turn on their own), table-table, head-table or
+  // head-head; the rotary chain's data in `chain` (runtime/Kinematics.h uses it).
   std::string kinematics = "xyz";
+  KinematicChain chain;
   Controller controller;
   double rapidFeed = 10000;              // mm/min, path rapid speed cap
   double maxFeed = 5000;                 // mm/min, programmed feed cap

@@ -1,5 +1,6 @@
 // The ncrt C ABI: storage, command execution and run-time errors for compiled NC programs.
 #include "runtime/ncrt.h"
+#include "ir/SystemAccess.h"
 #include "ir/Jumps.h"
 #include "ir/RunErrors.h"
 
@@ -194,7 +195,7 @@ double ncrt_sysvar(ncrt_ctx *ctx, double ref, const char *name, uint32_t file, u
   double v;
   std::string err;
   SysRef r = sysRefFromNumber(ref);
-  if ((int)r.var < kSysVarIds && ctx->sink.readSystem(r, v, err)) return v;
+  if ((int)r.var < kSysVarIds && readSystemValue(ctx->sink, ctx->pool, r, v, err)) return v;
   return failed(ctx, file, line, col, err.empty() ? runErrorMessage(RunError::SysVar, ctx->limits, name) : err);
 }
 
@@ -207,7 +208,9 @@ double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, double
 
 double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint32_t line, uint32_t col) {
   std::string err;
-  return ctx->sink.writeSystem(sysRefFromNumber(ref), v, {file, line, col}, err) ? 0.0 : failed(ctx, file, line, col, err);
+  return writeSystemValue(ctx->sink, ctx->pool, sysRefFromNumber(ref), v, {file, line, col}, err)
+             ? 0.0
+             : failed(ctx, file, line, col, err);
 }
 
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }

@@ -176,7 +176,7 @@ struct ncrt_ctx {
   // A program with modal_call: its nc.modal.run, called after every move command executed.
   int (*modal_hook)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t) = nullptr;
   std::string text;    // the run-time string being built (ncrt_str_*)
-  ncc::StringPool pool;  // the run's string values
+  ncc::ValuePool pool;  // the run's string values
 };
 #endif
 

@@ -85,7 +85,7 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
   Constant *inf = ConstantFP::getInfinity(dblTy);
   for (auto &slot : t.slots) {
     Val v = expr(*slot.expr);
-    checkNotString(v, slot.expr->loc, stringAsNumberMessage());
+    checkNotHandle(v, slot.expr->loc, HandleUse::AsNumber);
     Value *finite = B.CreateFCmpOLT(B.CreateUnaryIntrinsic(Intrinsic::fabs, v.v), inf);
     Value *vacant = v.mayVacant ? isVacant(v.v) : B.getFalse();
     failIf(B.CreateAnd(B.CreateNot(vacant), B.CreateNot(finite)), slot.expr->loc, "value is not a finite number");

@@ -496,7 +496,7 @@ void Codegen::emitModalCall(const Op &op) {
     if (a.key.rfind("a.", 0) == 0 && a.value) {
       std::string k = a.key.substr(2);
       Val v = expr(*a.value);
-      if (numberedKey(k)) checkNotString(v, op.loc, stringInParameterMessage());
+      if (numberedKey(k)) checkNotHandle(v, op.loc, HandleUse::InParameter);
       else if (fixed) v = {convertArg(*fixed, k, v, op.loc), false};
       args.push_back({k, v});
     }
@@ -595,7 +595,7 @@ void Codegen::emitCall(const Op &op) {
         continue;
       }
       Val v = expr(*a.value);
-      if (!k.empty() && k[0] >= '0' && k[0] <= '9') checkNotString(v, op.loc, stringInParameterMessage());
+      if (!k.empty() && k[0] >= '0' && k[0] <= '9') checkNotHandle(v, op.loc, HandleUse::InParameter);
       else if (fixed)  // a typed parameter converts its argument (ir/Strings.h convertForStore)
         v.v = convertArg(*fixed, k, v, op.loc);
       args.push_back({k, v.v});

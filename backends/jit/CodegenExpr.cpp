@@ -33,14 +33,26 @@ Value *Codegen::isStr(Value *v) {
                         ConstantInt::get(i64Ty, kStringTag));
 }
 
-void Codegen::checkNotString(Val v, SourceLoc loc, const std::string &message) {
-  if (v.mayString) failIf(isStr(v.v), loc, message);
+Value *Codegen::isHandleBits(Value *v) {  // a string or a frame (ir/Value.h isHandle)
+  return B.CreateICmpEQ(B.CreateAnd(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, kHandleMask)),
+                        ConstantInt::get(i64Ty, kStringTag));
 }
 
-Value *Codegen::numOf(Val v) { return numOf(v, v.loc, stringAsNumberMessage()); }
+Value *Codegen::isFrameHandle(Value *v) {
+  return B.CreateICmpEQ(B.CreateAnd(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, kStringTagMask)),
+                        ConstantInt::get(i64Ty, kFrameTag));
+}
 
-Value *Codegen::numOf(Val v, SourceLoc loc, const std::string &stringError) {
-  checkNotString(v, loc, stringError);
+void Codegen::checkNotHandle(Val v, SourceLoc loc, HandleUse use, std::string_view name, bool stringsOk) {
+  if (!v.mayHandle) return;
+  if (!stringsOk) failIf(isStr(v.v), loc, handleMessage(use, "string", name));
+  failIf(isFrameHandle(v.v), loc, handleMessage(use, "frame", name));
+}
+
+Value *Codegen::numOf(Val v) { return numOf(v, v.loc, HandleUse::AsNumber); }
+
+Value *Codegen::numOf(Val v, SourceLoc loc, HandleUse use, std::string_view name) {
+  checkNotHandle(v, loc, use, name);
   if (!v.mayVacant) return v.v;
   return B.CreateSelect(isVacant(v.v), ConstantFP::get(dblTy, 0.0), v.v);
 }
@@ -61,7 +73,7 @@ Val Codegen::stringConst(const std::string &s, SourceLoc loc) {
 
 // truthy = not vacant and != 0 (a NaN is true, as `v != 0.0` is in C++); a string is an error.
 Value *Codegen::truthy(Val v) {
-  checkNotString(v, v.loc, stringAsNumberMessage());
+  checkNotHandle(v, v.loc, HandleUse::AsNumber);
   Value *nz = B.CreateFCmpUNE(v.v, ConstantFP::get(dblTy, 0.0));
   if (!v.mayVacant) return nz;
   return B.CreateAnd(nz, B.CreateNot(isVacant(v.v)));
@@ -233,31 +245,32 @@ Val Codegen::loadVar(const Expr &var) {
   if (var.space == VarSpace::System) {  // asked of the executor when the program runs
     Value *ref = sysVarRef(var);
     auto l = locArgs(var.loc);
-    return {checked(B.CreateCall(fSysVar, {ctxArg, ref, cstring(var.str), l[0], l[1], l[2]})), false};
+    return {checked(B.CreateCall(fSysVar, {ctxArg, ref, cstring(var.str), l[0], l[1], l[2]})), false,
+            sysVarNameIsFrame(var.str), var.loc};
   }
   Value *v = B.CreateLoad(dblTy, varPtr(var, false));
-  bool mayString = var.space == VarSpace::QParam && var.str == "QS";
+  bool mayHandle = var.space == VarSpace::QParam && var.str == "QS";
   if (var.space == VarSpace::Local || var.space == VarSpace::Global) {
     const VarDecl *d = declOf(var);
-    mayString = !d || holdsString(d->type);
-    if (d && !d->param) return {v, d->type == ValueType::Real, mayString, var.loc};  // never unset
+    mayHandle = !d || holdsHandle(d->type);
+    if (d && !d->param) return {v, d->type == ValueType::Real, mayHandle, var.loc};  // never unset
     Value *unset = B.CreateICmpEQ(B.CreateBitCast(v, i64Ty), ConstantInt::get(i64Ty, NCRT_UNSET_BITS));
     if (var.args.empty()) faultIf(unset, var.loc, NCRT_FAULT_UNSET_VAR, var.str, nullptr);
     else faultIf(unset, var.loc, NCRT_FAULT_UNSET_ELEM, var.str, lastIndex);
   }
-  return {v, true, mayString, var.loc};
+  return {v, true, mayHandle, var.loc};
 }
 
 // The value a store keeps (ir/Strings.h convertForStore, as the eval engine): converted to the
 // declared type; numeric parameters take no strings. REAL stores of numbers stay inline.
 Value *Codegen::convertFor(const Expr &var, const VarDecl *d, Val value) {
-  bool numericSpace = var.space == VarSpace::Numbered || var.space == VarSpace::RParam ||
-                      (var.space == VarSpace::QParam && var.str != "QS");
+  bool paramSpace = var.space == VarSpace::Numbered || var.space == VarSpace::RParam || var.space == VarSpace::QParam;
   if (!d || d->type == ValueType::Any) {
-    if (numericSpace) checkNotString(value, var.loc, stringInParameterMessage());
+    bool qs = var.space == VarSpace::QParam && var.str == "QS";  // strings, not frames
+    if (paramSpace) checkNotHandle(value, var.loc, HandleUse::InParameter, {}, qs);
     return value.v;
   }
-  if (d->type == ValueType::Real && !value.mayString) return value.v;
+  if (d->type == ValueType::Real && !value.mayHandle) return value.v;
   auto l = locArgs(var.loc);
   return checked(B.CreateCall(fConvert, {ctxArg, B.getInt32((uint32_t)d->type), B.getInt32(d->len), cstring(var.str),
                                          value.v, l[0], l[1], l[2]}));
@@ -267,7 +280,9 @@ void Codegen::storeVar(const Expr &var, Val value) {
   if (var.space == VarSpace::System) {
     auto l = locArgs(var.loc);
     Value *ref = sysVarRef(var);
-    checked(B.CreateCall(fSysVarSet, {ctxArg, ref, numOf(value), l[0], l[1], l[2]}));
+    // A frame variable takes the handle as it is; the runtime checks what a store holds.
+    Value *v = sysVarNameIsFrame(var.str) ? value.v : numOf(value);
+    checked(B.CreateCall(fSysVarSet, {ctxArg, ref, v, l[0], l[1], l[2]}));
     return;
   }
   Value *v = convertFor(var, declOf(var), value);
@@ -338,8 +353,8 @@ Val Codegen::compare(const Expr &e, Val a, Val b) {
     default: return toDouble(B.CreateFCmpOGE(numOf({a.v, a.mayVacant}), numOf({b.v, b.mayVacant})));
     }
   };
-  if (!a.mayString && !b.mayString) return {numeric(), false};
-  Value *anyStr = B.CreateOr(a.mayString ? isStr(a.v) : B.getFalse(), b.mayString ? isStr(b.v) : B.getFalse());
+  if (!a.mayHandle && !b.mayHandle) return {numeric(), false};
+  Value *anyStr = B.CreateOr(a.mayHandle ? isHandleBits(a.v) : B.getFalse(), b.mayHandle ? isHandleBits(b.v) : B.getFalse());
   BasicBlock *strBB = newBlock("cmp.str"), *numBB = newBlock("cmp.num"), *done = newBlock("cmp.done");
   B.CreateCondBr(anyStr, strBB, numBB);
   B.SetInsertPoint(strBB);
@@ -370,8 +385,8 @@ Val Codegen::expr(const Expr &e) {
   case ExprKind::Unary: {
     if (e.args.size() != 1) break;
     Val a = expr(*e.args[0]);
-    checkNotString(a, e.loc, operatorOnStringMessage(ir::opCodeName(e.op)));
-    a.mayString = false;
+    checkNotHandle(a, e.loc, HandleUse::Operator, ir::opCodeName(e.op));
+    a.mayHandle = false;
     if (e.op == OpCode::Neg) return {B.CreateFNeg(numOf(a)), false};
     if (e.op == OpCode::Not) return {toDouble(B.CreateNot(truthy(a))), false};
     fail(e.loc, "bad unary operator");
@@ -391,10 +406,9 @@ Val Codegen::binary(const Expr &e) {
   Val a = expr(*e.args[0]), b = expr(*e.args[1]);
   if (e.op >= OpCode::Eq && e.op <= OpCode::Ge) return compare(e, a, b);
   // Any other operator on a string is an error (the eval engine checks both after evaluating).
-  std::string msg = operatorOnStringMessage(ir::opCodeName(e.op));
-  checkNotString(a, e.loc, msg);
-  checkNotString(b, e.loc, msg);
-  a.mayString = b.mayString = false;
+  checkNotHandle(a, e.loc, HandleUse::Operator, ir::opCodeName(e.op));
+  checkNotHandle(b, e.loc, HandleUse::Operator, ir::opCodeName(e.op));
+  a.mayHandle = b.mayHandle = false;
   auto divisor = [&]() {
     Value *nb = numOf(b);
     failIf(B.CreateFCmpOEQ(nb, ConstantFP::get(dblTy, 0.0)), e.loc, "division by zero");
@@ -454,23 +468,23 @@ Val Codegen::callBuiltin(const Expr &e) {
   }
   std::vector<Val> raw;
   for (auto &a : e.args) raw.push_back(expr(*a));
-  if (!argSlot) argSlot = allocaEntry(ArrayType::get(dblTy, 4), "args");
-  if (bi->sfn) {  // string builtins: raw values through ncrt_strfn (ir/Builtins.h table index)
+  if (!argSlot) argSlot = allocaEntry(ArrayType::get(dblTy, kMaxBuiltinArgs), "args");
+  if (bi->sfn) {  // typed builtins (strings, frames): raw values through ncrt_strfn (ir/Builtins.h table index)
     unsigned count = 0;
     const BuiltinInfo *tab = builtinTable(count);
-    for (unsigned i = 0; i < raw.size() && i < 4; ++i) B.CreateStore(raw[i].v, B.CreateConstGEP1_32(dblTy, argSlot, i));
+    for (unsigned i = 0; i < raw.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(raw[i].v, B.CreateConstGEP1_32(dblTy, argSlot, i));
     auto l = locArgs(e.loc);
     Value *r = checked(B.CreateCall(fStrFn, {ctxArg, B.getInt32((uint32_t)(bi - tab)), argSlot,
                                              B.getInt32((uint32_t)raw.size()), l[0], l[1], l[2]}));
-    return {r, false, bi->result == 's', e.loc};
+    return {r, false, bi->result != 'n', e.loc};
   }
   std::vector<Value *> vals;
-  for (auto &a : raw) checkNotString(a, e.loc, builtinOnStringMessage(bi->name));
+  for (auto &a : raw) checkNotHandle(a, e.loc, HandleUse::Builtin, bi->name);
   for (auto &a : raw) {
-    a.mayString = false;
+    a.mayHandle = false;
     vals.push_back(numOf(a));
   }
-  for (unsigned i = 0; i < vals.size() && i < 4; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
+  for (unsigned i = 0; i < vals.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
   Value *r = B.CreateCall(builtins_.at(bi->name), {argSlot});
   failIf(B.CreateFCmpUNO(r, r), e.loc, builtinDomainError(*bi));
   return {r, false};

@@ -29,13 +29,14 @@ using ir::VarDecl;
 
 // A value of an expression and whether it can be vacant at run time (variable reads);
 // arithmetic results never are, so most vacant checks fold away at compile time.
-// mayString: the value can be a string handle (ir/Value.h isString): loads of named variables
-// that are not declared numeric, QS parameters, string constants and string results. Only such
-// values get a string check where a number is needed, at `loc` (where the value came from).
+// mayHandle: the value can be a handle, a string or a frame (ir/Value.h isHandle): loads of named
+// variables that are not declared numeric, QS parameters, string constants and typed-builtin
+// results. Only such values get a handle check where a number is needed, at `loc` (where the
+// value came from).
 struct Val {
   llvm::Value *v;
   bool mayVacant;
-  bool mayString = false;
+  bool mayHandle = false;
   SourceLoc loc = {};
 };
 
@@ -121,10 +122,13 @@ private:
   llvm::Value *sysVarRef(const ir::Expr &var);
   Val binary(const ir::Expr &e);
   Val callBuiltin(const ir::Expr &e);
-  llvm::Value *numOf(Val v);  // a string is the error stringAsNumberMessage() at v.loc
-  llvm::Value *numOf(Val v, SourceLoc loc, const std::string &stringError);
+  llvm::Value *numOf(Val v);  // a handle is the error HandleUse::AsNumber at v.loc
+  llvm::Value *numOf(Val v, SourceLoc loc, HandleUse use, std::string_view name = {});
   llvm::Value *isStr(llvm::Value *v);
-  void checkNotString(Val v, SourceLoc loc, const std::string &message);
+  llvm::Value *isFrameHandle(llvm::Value *v);
+  llvm::Value *isHandleBits(llvm::Value *v);
+  // Fails with handleMessage(use, kind, name) when v is a handle (a string passes if stringsOk).
+  void checkNotHandle(Val v, SourceLoc loc, HandleUse use, std::string_view name = {}, bool stringsOk = false);
   llvm::Value *checked(llvm::Value *result);  // unset bits (a reported error) -> fail
   Val stringConst(const std::string &s, SourceLoc loc);
   Val concat(const ir::Expr &e);

@@ -10,7 +10,7 @@
 using namespace ncc;
 
 namespace {
-double str(StringPool &p, std::string_view s) {
+double str(ValuePool &p, std::string_view s) {
   double h;
   std::string err;
   EXPECT_TRUE(p.intern(s, h, err)) << err;
@@ -19,7 +19,7 @@ double str(StringPool &p, std::string_view s) {
 }  // namespace
 
 TEST(Values, StringHandlesAreInternedNaNs) {
-  StringPool p;
+  ValuePool p;
   double a = str(p, "abc"), b = str(p, "abc"), c = str(p, "abd");
   EXPECT_TRUE(isString(a));
   EXPECT_TRUE(std::isnan(a));
@@ -38,7 +38,7 @@ TEST(Values, StringHandlesAreInternedNaNs) {
 }
 
 TEST(Values, StringLengthLimit) {
-  StringPool p;
+  ValuePool p;
   double h;
   std::string err;
   EXPECT_TRUE(p.intern(std::string(kMaxStringBytes, 'x'), h, err));
@@ -47,7 +47,7 @@ TEST(Values, StringLengthLimit) {
 }
 
 TEST(Values, ConvertForStore) {
-  StringPool p;
+  ValuePool p;
   double out;
   std::string err;
   auto conv = [&](ValueType t, double v, uint32_t len = 200) {
@@ -81,7 +81,7 @@ TEST(Values, ConvertForStore) {
 }
 
 TEST(Values, CompareStrings) {
-  StringPool p;
+  ValuePool p;
   double r;
   std::string err;
   double a = str(p, "ab"), b = str(p, "abc"), B = str(p, "B");
@@ -109,7 +109,7 @@ TEST(Values, BuiltinTableIsConsistent) {
 }
 
 TEST(Values, StringBuiltins) {
-  StringPool p;
+  ValuePool p;
   auto call = [&](const char *name, std::vector<double> args, double &out, std::string &err) {
     const BuiltinInfo *b = findBuiltin(name);
     EXPECT_NE(b, nullptr);
@@ -168,7 +168,7 @@ TEST(Values, DeclarationsAndTextForm) {
 }
 
 TEST(Values, PoolLimit) {
-  StringPool p;
+  ValuePool p;
   double h;
   std::string err;
   uint32_t i = 1;  // handle 0 is ""

@@ -89,5 +89,6 @@ int cmdLint(int argc, char **argv);
 int cmdCanonDiff(int argc, char **argv);
 int cmdMachine(int argc, char **argv);
 int cmdCycle(int argc, char **argv);
+int cmdKinematics(int argc, char **argv);
 
 }  // namespace ncc::driver

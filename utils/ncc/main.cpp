@@ -21,6 +21,7 @@ static const Subcommand kSubcommands[] = {
     {"canon-diff", cmdCanonDiff, "compare two canonical traces (LinuxCNC rs274 format)"},
     {"machine", cmdMachine, "print or check machine descriptions"},
     {"cycle", cmdCycle, "run one cycle of the library alone (sin.CYCLE83, hei.200, …) and print its Motion IR"},
+    {"kinematics", cmdKinematics, "the machine's rotary kinematics on one pose: --tip/--axis (inverse) or --joints (forward)"},
 };
 
 static void usage(std::FILE *out) {
