@@ -41,7 +41,7 @@ static const LintRule kRules[] = {
     {"spline-invalid", Severity::Error, "executor",
      "LinuxCNC G5/G5.1/G5.2/G5.3 as rs274 rejects them (missing I J, P Q or weights, too few NURBS control points for the order L, G5.3 without G5.2, motion in Z A B C, outside G17, under cutter compensation) and what ncc refuses where rs274 would drop or garble the curve (a G5.2 sequence not ended by G5.3, a first G5.2 point without P, offsets or units changed before G5.3)"},
     {"thread-invalid", Severity::Error, "executor",
-     "a thread move or cycle ncc cannot cut exactly: no lead (F of G32/G92/G76, K of G33), a lead axis the move does not travel, LinuxCNC G76's I = 0, J <= 0, K <= J, the 808D G76 without its data block, an allowance not below the height, a pass schedule over 10000 passes"},
+     "a thread move or cycle ncc cannot cut exactly: no lead (F of G32/G92/G76, K of G33), a lead axis the move does not travel, LinuxCNC G76's I = 0, J <= 0, K <= J, a G34 lead that would not stay positive, the 808D G76 without its data block, an allowance not below the height, a pass schedule over 10000 passes"},
     {"thread-spindle", Severity::Error, "executor / planner",
      "a thread move (G32, G33, G33.1, G76, G92/G78) with the spindle stopped or at S 0 (its feed is lead x speed), or a chained 808D G32 after S, M3 or M4 changed the spindle (the manual: the speed must not change while threading)"},
     {"thread-chain-stop", Severity::Warning, "executor",

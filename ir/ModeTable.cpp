@@ -38,6 +38,7 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::ThreadCycle, ModeGroup::Motion, "thread_cycle"},
     {ModeValue::ThreadSingle, ModeGroup::Motion, "thread_single"},
     {ModeValue::ThreadMulti, ModeGroup::Motion, "thread_multi"},
+    {ModeValue::ThreadVariable, ModeGroup::Motion, "thread_variable"},
     {ModeValue::XY, ModeGroup::Plane, "xy"},
     {ModeValue::ZX, ModeGroup::Plane, "zx"},
     {ModeValue::YZ, ModeGroup::Plane, "yz"},

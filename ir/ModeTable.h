@@ -31,8 +31,9 @@ enum class ModeValue : uint8_t {
   // (LinuxCNC G33 K, 808D G32/G33 F Q), RigidTap LinuxCNC G33.1 (down and back), ThreadCycle
   // LinuxCNC's G76 (every parameter in one block), ThreadSingle the lathe's single thread
   // cycle (808D G92/G78, modal like G90), ThreadMulti the lathe's multiple threading cycle
-  // (808D G76, one-shot: the motion mode before it stays).
-  Thread, RigidTap, ThreadCycle, ThreadSingle, ThreadMulti,
+  // (808D G76, one-shot: the motion mode before it stays); ThreadVariable the 808D's G34 (the lead
+  // F grows by K every revolution).
+  Thread, RigidTap, ThreadCycle, ThreadSingle, ThreadMulti, ThreadVariable,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -62,6 +63,6 @@ inline bool isPathMotion(ModeValue v) { return v <= ModeValue::ArcTangent; }
 inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= ModeValue::BoreFine; }
 inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && v <= ModeValue::NurbsEnd; }
 inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ || v == ModeValue::TurnAlongX; }
-inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadMulti; }
+inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadVariable; }
 
 }  // namespace ncc

@@ -76,6 +76,7 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
       double lx = threadPathLead(x), ly = threadPathLead(y), len = linearDistance(x);
       if (!(lx > 0) || std::fabs(lx - ly) * len / lx > opts.tolerance) why = "thread leads differ";
       else if (x.sync != y.sync || std::fabs(x.value2 - y.value2) > 1e-6) why = "thread start angles or synchronisation differ";
+      else if (std::fabs(threadEndLead(x) - threadEndLead(y)) * len / lx > opts.tolerance) why = "thread lead changes differ";
     }
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))

@@ -44,6 +44,20 @@ double threadPathLead(const MotionRecord &r) {
   return along > 0 ? r.value * moveLength(r) / along : 0.0;
 }
 
+double threadLeadChange(const MotionRecord &r) {
+  const double *d = r.param("dlead");
+  return d ? *d : 0.0;
+}
+
+static double leadTravel(const MotionRecord &r) {
+  return (ThreadAxis)r.ivalue == ThreadAxis::Path ? moveLength(r) : std::fabs(r.end[r.ivalue & 3] - r.start[r.ivalue & 3]);
+}
+
+double threadEndLead(const MotionRecord &r) {
+  double sq = r.value * r.value + 2 * threadLeadChange(r) * leadTravel(r);
+  return sq > 0 ? std::sqrt(sq) : 0.0;
+}
+
 double threadAxisLead(const MotionRecord &r, int axis) {
   double len = moveLength(r);
   return len > 0 ? threadPathLead(r) * std::fabs(r.end[axis] - r.start[axis]) / len : 0.0;
@@ -55,6 +69,10 @@ std::string threadError(const MotionRecord &r) {
   if (!(r.value2 >= 0 && r.value2 < 360)) return fmt::format("a thread start angle is at least 0 and below 360, not {}", r.value2);
   for (int i = 3; i < kAxes; ++i)
     if (r.start[i] != r.end[i]) return "a thread moves X, Y and Z only, not A, B or C";
+  if (threadLeadChange(r) != 0 && !(threadEndLead(r) > 0))
+    return fmt::format("the variable lead {} + {} per revolution does not stay positive to the end", r.value,
+                       threadLeadChange(r));
+  if (!std::isfinite(threadLeadChange(r))) return "a thread's lead change must be finite";
   if (moveLength(r) > 0 && !(threadPathLead(r) > 0))
     return fmt::format("a thread with its lead along {} must move along {}", threadAxisName((ThreadAxis)r.ivalue),
                        threadAxisName((ThreadAxis)r.ivalue));
@@ -226,7 +244,9 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
   }
   case RecordKind::Thread:
     axes(r.end);
-    fmt::format_to(out, " lead={} along={} sync={}", r.value, threadAxisName((ThreadAxis)r.ivalue), threadSyncName(r.sync));
+    fmt::format_to(out, " lead={}", r.value);
+    if (threadLeadChange(r) != 0) fmt::format_to(out, " dlead={}", threadLeadChange(r));
+    fmt::format_to(out, " along={} sync={}", threadAxisName((ThreadAxis)r.ivalue), threadSyncName(r.sync));
     if (r.value2 != 0) fmt::format_to(out, " start={}", r.value2);
     fmt::format_to(out, " F{}", r.feed);
     break;

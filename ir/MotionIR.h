@@ -187,6 +187,11 @@ struct MotionRecord {
 // Thread records: the lead per revolution along the path (LinuxCNC's K) and along machine axis
 // `axis` (0..2) of the straight move from start to end; 0 when the record does not move there.
 double threadPathLead(const MotionRecord &r);
+// A variable lead (808D G34): the change of the lead per revolution (mm/rev^2, along the same
+// axis as the lead; the named number `dlead`, 0 when absent), and the lead at the end:
+// sqrt(lead^2 + 2 dlead travel) (the lead grows linearly with the revolutions).
+double threadLeadChange(const MotionRecord &r);
+double threadEndLead(const MotionRecord &r);
 double threadAxisLead(const MotionRecord &r, int axis);
 // Why a thread record is not a valid one (empty when it is): a lead > 0 and finite, a move
 // along the lead's axis, a start angle in [0, 360), no A B C motion.

@@ -275,8 +275,14 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
     break;
   }
   case RecordKind::Thread: {
-    if (!p.axes(r.end) || !p.expect("lead=", "'lead='") || !p.number(r.value) || !p.expect("along=", "'along='"))
-      return false;
+    if (!p.axes(r.end) || !p.expect("lead=", "'lead='") || !p.number(r.value)) return false;
+    p.skipBlanks();
+    if (p.peek("dlead=")) {
+      double d;
+      if (!p.expect("dlead=", "'dlead='") || !p.number(d)) return false;
+      if (d != 0) r.setParam("dlead", d);
+    }
+    if (!p.expect("along=", "'along='")) return false;
     size_t b = p.pos();
     std::string_view along = p.word();
     int a = 0;

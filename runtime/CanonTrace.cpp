@@ -146,6 +146,11 @@ void CanonTraceWriter::stopSync(int64_t n) {
 // G33 prints START, STRAIGHT_FEED, STOP per block; G33.1 START, RIGID_TAP (down and back, so
 // its return record prints nothing), STOP; rs274's G76 changes the lead inside one pass.
 void CanonTraceWriter::thread(const MotionRecord &r) {
+  if (threadLeadChange(r) != 0) {
+    variableLead_ = halted_ = true;
+    variableLeadRecord_ = r;
+    return;
+  }
   const int64_t n = r.blockNumber;
   const bool fresh = r.sync == ThreadSync::Index || r.sync == ThreadSync::TapIn;
   const double lead = threadPathLead(r);
@@ -308,6 +313,13 @@ bool CanonTraceWriter::finish(Diagnostics &diags) {
   if (finished_) return !ioError_;
   finished_ = true;
   if (!tilted_.report(diags)) {
+    flush();
+    return false;
+  }
+  if (variableLead_) {
+    diags.error(variableLeadRecord_.loc,
+                "the canonical trace (rs274) has no variable-lead thread (G34): " + printMotionRecord(variableLeadRecord_),
+                "unsupported-code");
     flush();
     return false;
   }

@@ -51,6 +51,10 @@ private:
   // before the pass's first START, ENABLE after the traverse out that follows its STOP.
   bool inG76_ = false, enableAfterMove_ = false;
   TiltedArcCheck tilted_{"the canonical trace (rs274 ARC_FEED)"};
+  // A variable-lead thread (808D G34) has no rs274 command: the trace stops there and finish()
+  // reports it, as for a tilted arc.
+  bool variableLead_ = false;
+  MotionRecord variableLeadRecord_;
 };
 
 }  // namespace ncc

@@ -306,7 +306,8 @@ struct Executor::Impl {
   // Spindle turning at a speed, no compensation, no rotation/scaling/mirror.
   bool threadAllowed(const char *code);
   // One thread record from the current position; its feed is the lead along the path x S.
-  bool threadTo(const AxisVec &to, double lead, ThreadAxis along, ThreadSync sync, double angle);
+  // `dlead`: the lead's change per revolution (808D G34), 0 for a constant lead.
+  bool threadTo(const AxisVec &to, double lead, ThreadAxis along, ThreadSync sync, double angle, double dlead = 0);
   bool threadMove(const MachineCmd &c);   // G33 K (LinuxCNC), G32/G33 F Q (808D)
   bool rigidTap(const MachineCmd &c);     // G33.1
   bool threadCycle(const MachineCmd &c);  // LinuxCNC G76

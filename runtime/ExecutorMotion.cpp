@@ -125,7 +125,8 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::TurnAlongZ:
   case ModeValue::TurnAlongX:
   case ModeValue::ThreadSingle: return turnCycle(c);
-  case ModeValue::Thread: return threadMove(c);
+  case ModeValue::Thread:
+  case ModeValue::ThreadVariable: return threadMove(c);
   case ModeValue::RigidTap: return rigidTap(c);
   case ModeValue::ThreadCycle: return threadCycle(c);
   case ModeValue::ThreadMulti: return threadMulti(c);

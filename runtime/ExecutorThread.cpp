@@ -25,7 +25,8 @@ bool Executor::Impl::threadAllowed(const char *code) {
   return true;
 }
 
-bool Executor::Impl::threadTo(const AxisVec &to, double lead, ThreadAxis along, ThreadSync sync, double angle) {
+bool Executor::Impl::threadTo(const AxisVec &to, double lead, ThreadAxis along, ThreadSync sync, double angle,
+                              double dlead) {
   // A synchronised run follows one spindle state: a chained block after S or M3/M4 changed
   // would cut another thread (the 808D manual, L1743-1746: the speed must not change).
   if (sync == ThreadSync::Chain && (st.speed != threadSpeed || st.spindle != threadSpindle))
@@ -42,6 +43,7 @@ bool Executor::Impl::threadTo(const AxisVec &to, double lead, ThreadAxis along, 
   r.ivalue = (int64_t)along;
   r.sync = sync;
   r.value2 = angle;
+  if (dlead != 0) r.setParam("dlead", dlead);
   r.exactStop = st.pathMode == ModeValue::ExactStop;
   if (std::string why = threadError(r); !why.empty()) return error(why, "thread-invalid");
   r.feed = threadPathLead(r) * st.speed;
@@ -61,15 +63,21 @@ static ThreadAxis mainAxis(const AxisVec &from, const AxisVec &to) {
 
 bool Executor::Impl::threadMove(const MachineCmd &c) {
   if (!(c.mask & kAxisMask)) return true;
-  const bool lcnc = c.has(Word::K);  // LinuxCNC G33 K; the 808D's G32/G33 take F as the lead
-  const char *code = lcnc ? "G33" : "G32 (G33)";
+  // LinuxCNC G33 K; the 808D's G32/G33 take F as the lead, its G34 K the lead's change.
+  const bool variable = st.motion == ModeValue::ThreadVariable;
+  const bool lcnc = !variable && c.has(Word::K);
+  const char *code = lcnc ? "G33" : variable ? "G34" : "G32 (G33)";
   if (!threadAllowed(code)) return false;
   if (c.mask & kAxisMask & ~(wordBit(Word::X) | wordBit(Word::Y) | wordBit(Word::Z)))
     return error(std::string(code) + " moves X, Y and Z only", "unsupported-code");
   const AxisVec to = target(c);
   if (lcnc) return threadTo(to, c.get(Word::K) * scale(), ThreadAxis::Path, ThreadSync::Index, 0);
-  if (plane() != Plane::ZX) return error("G32 (G33) needs the ZX plane (G18)", "unsupported-code");
-  if (!(feedMM > 0)) return error("G32 (G33) needs F, the thread lead", "thread-invalid");
+  if (plane() != Plane::ZX) return error(std::string(code) + " needs the ZX plane (G18)", "unsupported-code");
+  if (!(feedMM > 0)) return error(std::string(code) + " needs F, the thread lead", "thread-invalid");
+  if (variable) {  // spec seed001 2.6 (L1820-1855): a new synchronisation, the lead F + K n at revolution n
+    if (!c.has(Word::K)) return error("G34 needs K, the change of the lead per revolution", "missing-word");
+    return threadTo(to, feedMM, mainAxis(st.position, to), ThreadSync::Index, 0, c.get(Word::K) * scale());
+  }
   // Consecutive blocks make one continuous thread (spec seed001 2.6); Q restarts at an angle.
   const bool chain = threadChain && !c.has(Word::Q);
   double angle = c.has(Word::Q) ? c.get(Word::Q) : 0;

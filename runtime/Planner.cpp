@@ -382,6 +382,7 @@ void Planner::thread(const MotionRecord &r) {
   }
   MotionRecord t = r;
   t.feed = threadPathLead(r) * spindleRpm_;  // the feed follows the spindle, whatever was recorded
+  if (threadLeadChange(r) != 0) return variableThread(t);
   if (std::fabs(t.feed - r.feed) > 1e-9 * std::max(1.0, t.feed))
     threadError(r, fmt::format("the thread's feed F{} is not its lead {} mm/rev x the spindle's {} rpm = {} mm/min",
                                r.feed, threadPathLead(r), spindleRpm_, t.feed), "thread-feed");
@@ -391,6 +392,32 @@ void Planner::thread(const MotionRecord &r) {
   if (p.length > 0 && p.vmax * 60 < t.feed * (1 - 1e-9))
     threadError(r, fmt::format("the thread's feed {} mm/min exceeds what the machine's axes allow on it ({} mm/min)",
                                t.feed, p.vmax * 60), "thread-feed");
+}
+
+// A variable lead (808D G34): the speed changes linearly with time (the lead grows by the same
+// amount every revolution at a constant spindle speed), from the start lead x S to the end lead
+// x S: one constant-acceleration segment, entered at its start speed (the synchronisation).
+void Planner::variableThread(const MotionRecord &t) {
+  const double len = linearLength(t.start, t.end), ratio = t.value > 0 ? threadPathLead(t) / t.value : 0;
+  const double v0 = t.feed / 60, v1 = threadEndLead(t) * ratio * spindleRpm_ / 60;
+  if (std::max(v0, v1) * 60 > machine_.maxFeed * (1 + 1e-9))
+    threadError(t, fmt::format("the thread's feed reaches {} mm/min, above the machine's max_feed {}", std::max(v0, v1) * 60,
+                               machine_.maxFeed), "thread-feed");
+  PlannedSegment s;
+  s.record = t;
+  s.record.text.clear();
+  s.vmax = std::max(v0, v1);
+  VelocityProfile &p = s.profile;
+  p.length = len, p.v0 = v0, p.vp = p.v1 = v1, p.jerk = INFINITY;
+  const double tRamp = v0 + v1 > 0 ? 2 * len / (v0 + v1) : 0;
+  if (std::fabs(v1 - v0) <= 1e-12 * std::max(1.0, v0)) {
+    p.vp = p.v1 = v0, p.tCruise = v0 > 0 ? len / v0 : 0, p.accel = 1;  // no change worth a ramp
+  } else {
+    p.tAcc = tRamp, p.accel = std::fabs(v1 - v0) / tRamp;
+  }
+  lastPos_ = t.end;
+  inThread_ = true;
+  emit(s);
 }
 
 void Planner::record(const MotionRecord &r) {

@@ -96,6 +96,7 @@ private:
   // Thread records (docs/PLANNER.md "Threads"): the feed is lead x spindle speed, never
   // blended into the moves around them and never capped; what breaks that is an error.
   void thread(const MotionRecord &r);
+  void variableThread(const MotionRecord &t);
   void threadError(const MotionRecord &r, std::string msg, const char *rule);
   void limits(Pending &p) const;
   double junctionSpeed(const Pending &prev, const Pending &next) const;

@@ -63,6 +63,7 @@ std::string motionRecordJson(const MotionRecord &r) {
     if (r.kind == RecordKind::Thread) {
       s += ",\"lead\":";
       num(s, r.value);
+      if (threadLeadChange(r) != 0) s += ",\"dlead\":", num(s, threadLeadChange(r));
       fmt::format_to(std::back_inserter(s), ",\"along\":\"{}\",\"sync\":\"{}\",\"start_angle\":",
                      threadAxisName((ThreadAxis)r.ivalue), threadSyncName(r.sync));
       num(s, r.value2);

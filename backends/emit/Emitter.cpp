@@ -438,6 +438,7 @@ std::string Emitter::threadRefusal(const MotionRecord &r) const {
     return {};
   }
   if (lcnc && r.value2 != 0) return "LinuxCNC's G33 has no start angle";
+  if (lcnc && threadLeadChange(r) != 0) return "LinuxCNC has no variable-lead thread";
   if (lcnc && r.sync == ThreadSync::Chain)
     return "each LinuxCNC G33 block starts a synchronisation of its own, as rs274 traces it: a chained thread cannot be written";
   if (!lcnc && r.sync == ThreadSync::Index && afterThread_)
@@ -458,8 +459,10 @@ void Emitter::thread(const MotionRecord &r) {
   Words w;
   if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   const bool tap = r.sync == ThreadSync::TapIn;
-  if (motion_ != (tap ? "G33.1" : "G33")) push(w, tap ? "G33.1" : "G33");
-  motion_ = tap ? "G33.1" : "G33";
+  const bool variable = threadLeadChange(r) != 0;  // Sinumerik G34/G35: F the lead change
+  const char *g = tap ? "G33.1" : variable ? (threadLeadChange(r) > 0 ? "G34" : "G35") : "G33";
+  if (motion_ != g) push(w, g);
+  motion_ = g;
   size_t before = w.size();
   axisWords(r.end, w, r);
   if (w.size() == before) w.push_back("Z" + posText_[2]);  // a zero-length record stays a block
@@ -470,6 +473,11 @@ void Emitter::thread(const MotionRecord &r) {
       if (std::fabs(r.end[i] - r.start[i]) > std::fabs(r.end[main] - r.start[main])) main = i;
     if (number(threadAxisLead(r, main), WordClass::Center, std::string(1, kCenterLetters[main]), r, word))
       w.push_back(word);
+    if (variable) {  // the change of the main axis' lead per revolution, without its sign
+      double ratio = r.value > 0 ? threadAxisLead(r, main) / r.value : 0;
+      if (number(std::fabs(threadLeadChange(r)) * ratio, WordClass::Center, "F", r, word)) w.push_back(word);
+      feedText_.clear();  // F is no feed here: the next feed move writes its own
+    }
     // SF= stays in force (it sets the thread start angle setting data): written on the first
     // thread and when it changes.
     if (r.sync == ThreadSync::Index && !(r.value2 == startAngle_) && number(r.value2, WordClass::Rotary, "SF=", r, word)) {

@@ -171,6 +171,7 @@ static const GCodeInfo kTurningA[] = {
     SPECIAL(503, SetOffset, NonModal, 2, "work coordinate system reset"),
     MODE(900, Motion, TurnAlongZ, "longitudinal turning cycle"),
     MODE(320, Motion, Thread, "thread cutting"),
+    MODE(340, Motion, ThreadVariable, "variable-lead thread cutting"),
     MODE(920, Motion, ThreadSingle, "thread cutting cycle"),
     MODE(940, Motion, TurnAlongX, "face turning cycle"),
     MODE(980, FeedMode, PerMinute, "feed per minute"),
@@ -185,6 +186,7 @@ static const int32_t kSharedA[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 
 static const GCodeInfo kTurningB[] = {
     MODE(770, Motion, TurnAlongZ, "longitudinal turning cycle"),
     MODE(330, Motion, Thread, "thread cutting"),
+    MODE(340, Motion, ThreadVariable, "variable-lead thread cutting"),
     MODE(780, Motion, ThreadSingle, "thread cutting cycle"),
     MODE(790, Motion, TurnAlongX, "face turning cycle"),
 };

@@ -551,6 +551,7 @@ bool BlockLowerer::Block::threadWords(Op &op, ModeValue m) {
            {'Q', Scale::None}, {'H', Scale::None}, {'E', Scale::Linear}, {'L', Scale::None}});
     return true;
   case ModeValue::ThreadSingle: words({{'R', Scale::Linear}, {'Q', Scale::Rotary}}); return true;
+  case ModeValue::ThreadVariable: words({{'K', Scale::Linear}}); return true;  // G34 K the lead change
   case ModeValue::ThreadMulti:  // P and Q lengths in least increments without a point (L3842-3843)
     if (bw.hasAny("XZUW")) words({{'R', Scale::Linear}, {'P', Scale::Increment}, {'Q', Scale::Increment}});
     else words({{'P', Scale::None}, {'Q', Scale::Increment}, {'R', Scale::Linear}});
