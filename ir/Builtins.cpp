@@ -2,7 +2,7 @@
 #include "ir/FrameBuiltins.h"
 #include "ir/Arith.h"
 #include "ir/Strings.h"
-#include "ir/SystemVars.h"
+#include "ir/SystemParams.h"
 #include "ir/Value.h"
 
 #include <fmt/format.h>
@@ -37,17 +37,14 @@ double ncc_builtin_fix(const double *a) { return std::floor(num(a[0])); }
 double ncc_builtin_fup(const double *a) { return std::ceil(num(a[0])); }
 double ncc_builtin_awayfromzero(const double *a) { return arithAwayFromZero(num(a[0])); }
 double ncc_builtin_trunc(const double *a) { return std::trunc(num(a[0])); }
-// A computed parameter number of LinuxCNC (#1-#5000, #5599-#5601) or Fanuc Macro B (#0-#33,
-// #100-#999): the number itself, NaN (out of domain: a run-time error) for the controller-state
-// numbers a constant #n reads as System variables (frontend/iso/SystemParams.cpp).
-double ncc_builtin_ngc_parameter(const double *a) {
-  double n = num(a[0]);
-  return plainNgcParameter(n) ? n : NAN;
-}
-double ncc_builtin_macro_variable(const double *a) {
-  double n = num(a[0]);
-  return plainMacroVariable(n) ? n : NAN;
-}
+// A computed parameter number (ir/SystemParams.h), one function per map: the number itself when
+// it is plain storage, else NaN (the domain error). As the index of `#[…]` the engines resolve
+// the number through the map instead, controller state included; this is the call alone.
+static double plainOrNan(ParamMap m, double n) { return plainParameter(m, parameterNumber(n)) ? n : NAN; }
+double ncc_builtin_ngc_parameter(const double *a) { return plainOrNan(ParamMap::Rs274, num(a[0])); }
+double ncc_builtin_macro_variable(const double *a) { return plainOrNan(ParamMap::MacroB, num(a[0])); }
+double ncc_builtin_macro_variable_c(const double *a) { return plainOrNan(ParamMap::MacroBMemoryC, num(a[0])); }
+double ncc_builtin_macro_variable_lathe(const double *a) { return plainOrNan(ParamMap::MacroBLathe, num(a[0])); }
 double ncc_builtin_ln(const double *a) { return std::log(num(a[0])); }
 double ncc_builtin_exp(const double *a) { return std::exp(num(a[0])); }
 double ncc_builtin_pow(const double *a) { return std::pow(num(a[0]), num(a[1])); }
@@ -232,6 +229,8 @@ static const BuiltinInfo kBuiltins[] = {
     {"EXISTS", 1, ncc_builtin_exists, "ncc_builtin_exists"},
     {"NGC_PARAMETER", 1, ncc_builtin_ngc_parameter, "ncc_builtin_ngc_parameter"},
     {"MACRO_VARIABLE", 1, ncc_builtin_macro_variable, "ncc_builtin_macro_variable"},
+    {"MACRO_VARIABLE_C", 1, ncc_builtin_macro_variable_c, "ncc_builtin_macro_variable_c"},
+    {"MACRO_VARIABLE_LATHE", 1, ncc_builtin_macro_variable_lathe, "ncc_builtin_macro_variable_lathe"},
     {"AWAYFROMZERO", 1, ncc_builtin_awayfromzero, "ncc_builtin_awayfromzero"},
     {"TOLEQ", 3, ncc_builtin_toleq, "ncc_builtin_toleq"},   {"TOLNE", 3, ncc_builtin_tolne, "ncc_builtin_tolne"},
     {"TOLLT", 3, ncc_builtin_tollt, "ncc_builtin_tollt"},   {"TOLLE", 3, ncc_builtin_tolle, "ncc_builtin_tolle"},
@@ -277,10 +276,8 @@ std::string builtinArity(const BuiltinInfo &b) {
 
 std::string builtinDomainError(const BuiltinInfo &b) {
   std::string_view n = b.name;
-  if (n == "NGC_PARAMETER" || n == "MACRO_VARIABLE")  // a computed #[…] number
-    return std::string("computed parameter number is ") +
-           (n == "NGC_PARAMETER" ? "not #1-#5000 or #5599-#5601" : "not #0-#33 or #100-#999") +
-           ": controller state is read with a constant number (#5221), other numbers do not exist";
+  if (ParamMap m; paramMapFromBuiltin(n, m))  // a computed #[…] number used as a value
+    return "computed parameter number is not " + plainRangesText(m) + " (a plain parameter of '" + std::string(n) + "')";
   return "'" + std::string(n) + "' argument out of domain";
 }
 

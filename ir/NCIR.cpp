@@ -162,6 +162,7 @@ static const OpInfo kOps[] = {
     {OpKind::Return, "return", 0, 0, "", "value"},
     {OpKind::CallSection, "call_section", 0, 0, "from", "to count"},
     {OpKind::ModalCall, "modal_call", 0, 0, "", "*"},
+    {OpKind::ModalTrigger, "modal_trigger", 0, 0, "", ""},
 };
 static_assert(sizeof(kOps) / sizeof(kOps[0]) == (size_t)OpKind::Count, "op table out of sync");
 

@@ -127,6 +127,7 @@ enum class OpKind : uint8_t {
   Return,      // value=<expr>?
   CallSection, // from=<label> to=<label>? count=<int>?  run a section of this function, then go on
   ModalCall,   // callee=<string>? a.<key>=<expr>…  call after each following move; no callee: cancel
+  ModalTrigger,  // run the active modal call now, as after a move (Sinumerik MCALL's blocks without path motion)
   Count
 };
 

@@ -43,11 +43,7 @@ enum class ToolField : uint8_t { Length, Radius, LengthWear, RadiusWear, Count }
 constexpr int kToolFields = (int)ToolField::Count;
 constexpr int kMaxToolNumber = 99999;  // T and D numbers of the machine file
 SysVarInfo sysVarInfo(SysVar v);
-// Numbered parameters that are plain storage, not controller state: LinuxCNC #0-#5000 and
-// #5599-#5601; Fanuc Macro B #0-#33 and #100-#999. The ISO front end (constant #n) and the
-// NGC_PARAMETER / MACRO_VARIABLE builtins (computed #[n]) ask these.
-inline bool plainNgcParameter(double n) { return (n >= 0 && n < 5001) || (n >= 5599 && n < 5602); }
-inline bool plainMacroVariable(double n) { return (n >= 0 && n < 34) || (n >= 100 && n < 1000); }
+// Numbered parameters (#5221, #2001) map onto these ids through ir/SystemParams.h.
 // No system variable: what the lookups below return for an id out of range (family members
 // start at SysVar::Count, so Count itself is the first work offset).
 constexpr SysVar kNoSysVar = (SysVar)0xffff;

@@ -5,46 +5,20 @@
 #include "ir/Builtins.h"
 #include "ir/Decls.h"
 #include "ir/ModeTable.h"
+#include "ir/OpSymbols.h"
 #include "ir/SystemVars.h"
 #include "ir/NCIR.h"
 #include "ir/Value.h"
 
 #include <fmt/format.h>
 
+#include <cstring>
 #include <set>
 #include <string>
 
 namespace ncc::ir {
 
 namespace {
-
-// Keys whose value is a symbol from a fixed list.
-struct EnumRule {
-  OpKind kind;
-  const char *key;
-  const char *values;  // space-separated
-};
-const EnumRule kEnumRules[] = {
-    {OpKind::Spindle, "dir", "cw ccw stop orient"},
-    {OpKind::Spindle, "way", "cw ccw shortest"},
-    {OpKind::Coolant, "flood", "on off"},
-    {OpKind::Coolant, "mist", "on off"},
-    {OpKind::CutterComp, "side", "off left right"},
-    {OpKind::CutterComp, "d_default", "modal tool"},
-    {OpKind::Message, "kind", "msg debug print abort"},
-    {OpKind::Stop, "kind", "program optional end end_rewind"},
-    {OpKind::SetOffset, "kind",
-     "g92 g92_1 g92_2 g92_3 g10l2 g10l20 g28_1 g30_1 g52 tool_set tool_touch tool_touch_g593 tool_length tool_length_wear "
-     "tool_radius tool_radius_wear lathe_tool"},
-    {OpKind::Frame, "slot", "local rotation scale mirror"},
-    {OpKind::Frame, "action", "set cancel"},
-    {OpKind::Frame, "form", "plane axis"},
-    {OpKind::Contour, "action", "data begin end"},
-    {OpKind::Contour, "use", "finish rough_z rough_x pattern"},
-    {OpKind::Goto, "dir", "forward backward any"},
-    {OpKind::Call, "frame", "new shared"},
-    {OpKind::Declare, "type", "int real bool char string symbol axis frame"},
-};
 
 // Keys whose value must be a variable reference (something that can be assigned).
 struct VarRule {
@@ -197,13 +171,18 @@ private:
   }
 
   void checkValues(const Op &op, const std::string &name) {
-    for (auto &r : kEnumRules) {
-      if (r.kind != op.kind) continue;
+    // Symbol-valued keys (ir/OpSymbols.h), each key once.
+    size_t count;
+    const OpSymbol *table = opSymbols(count);
+    for (size_t i = 0; i < count; ++i) {
+      const OpSymbol &r = table[i];
+      if (r.op != op.kind || (i > 0 && table[i - 1].op == r.op && !std::strcmp(table[i - 1].key, r.key))) continue;
       const Expr *v = op.get(r.key);
       if (!v) continue;
       std::string word = v->kind == ExprKind::Symbol ? (op.kind == OpKind::Declare ? lower(v->str) : v->str) : "";
-      if (word.empty() || !inList(r.values, word))
-        error(op.loc, fmt::format("'{}' argument '{}' must be one of: {}", name, r.key, r.values));
+      uint8_t code;
+      if (word.empty() || !opSymbolCode(op.kind, r.key, word, code))
+        error(op.loc, fmt::format("'{}' argument '{}' must be one of: {}", name, r.key, opSymbolValues(op.kind, r.key)));
     }
     for (auto &r : kVarRules) {
       const Expr *v = op.kind == r.kind ? op.get(r.key) : nullptr;
@@ -375,7 +354,7 @@ private:
           if (const Expr *val = op.get("value"); val && (kindOf(*val) == 's' || kindOf(*val) == 'f'))
             error(op.loc, fmt::format("'assign': {}", handleMessage(HandleUse::InParameter, kindName(kindOf(*val)))));
         break;
-      case Ctx::Symbol: break;  // checked by kEnumRules / checkModes
+      case Ctx::Symbol: break;  // checked against ir/OpSymbols.h / checkModes
       }
     }
     switch (op.kind) {
@@ -391,12 +370,20 @@ private:
       bool modal = op.kind == OpKind::ModalCall;  // always a new frame
       bool shared = !modal && (!f || f->str != "new");
       std::string calleeName;
+      // A computed callee may be any function: an argument named like a VAR parameter of one of
+      // them must be a variable it can alias. A modal call runs later, when the caller's
+      // variables may be gone: no VAR arguments.
       if (const Expr *c = op.get("callee"); c && (modal || !constantCallee(*c, calleeName)))
-        for (auto &a : op.args)  // the engines pass addresses only to a callee known when compiling
+        for (auto &a : op.args)
           for (auto &fn : m_.functions)
             if (const Param *p = a.key.size() > 2 ? fn.param(std::string_view(a.key).substr(2)) : nullptr; p && p->byRef) {
-              error(op.loc, fmt::format("'{}' argument '{}': {} cannot take VAR parameter '{}' of '@{}' yet", name,
-                                        a.key, modal ? "a modal call" : "a computed callee", p->name, fn.name));
+              if (modal)
+                error(op.loc, fmt::format("'{}' argument '{}': a modal call cannot take VAR parameter '{}' of '@{}'",
+                                          name, a.key, p->name, fn.name));
+              else if (a.value && (a.value->kind != ExprKind::Var || a.value->space == VarSpace::System))
+                error(op.loc, fmt::format("'{}' argument '{}' must be a variable: parameter '{}' of '@{}' is VAR "
+                                          "and the callee is computed",
+                                          name, a.key, p->name, fn.name));
               break;
             }
       for (auto &a : op.args) {
@@ -456,8 +443,7 @@ private:
       return Ctx::Constant;
     for (auto &r : kVarRules)
       if (r.kind == op.kind && key == r.key) return Ctx::Var;
-    for (auto &r : kEnumRules)
-      if (r.kind == op.kind && key == r.key) return Ctx::Symbol;
+    if (!opSymbolValues(op.kind, key).empty()) return Ctx::Symbol;
     if (op.kind == OpKind::Mode && key != "tolerance" && key != "naive_tolerance") return Ctx::Symbol;
     return Ctx::Number;
   }

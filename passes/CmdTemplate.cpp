@@ -1,4 +1,5 @@
 #include "passes/CmdTemplate.h"
+#include "ir/OpSymbols.h"
 
 #include <fmt/format.h>
 
@@ -19,69 +20,6 @@ bool isMachineOp(OpKind k) {
   default:
     return false;
   }
-}
-
-// Symbol-valued arguments and the sub code each value stands for.
-struct SymbolCode {
-  OpKind op;
-  const char *key;
-  const char *value;
-  uint8_t code;
-};
-static const SymbolCode kSymbols[] = {
-    {OpKind::Spindle, "dir", "stop", 0},         {OpKind::Spindle, "dir", "cw", 1},
-    {OpKind::Spindle, "dir", "ccw", 2},          {OpKind::Spindle, "dir", "orient", 3},
-    {OpKind::Spindle, "way", "cw", 0},           {OpKind::Spindle, "way", "ccw", 1},  // sub2
-    {OpKind::Spindle, "way", "shortest", 2},     {OpKind::CutterComp, "side", "off", 0},
-    {OpKind::CutterComp, "side", "left", 1},     {OpKind::CutterComp, "side", "right", 2},
-    {OpKind::Stop, "kind", "program", (uint8_t)StopKind::Program},
-    {OpKind::Stop, "kind", "optional", (uint8_t)StopKind::Optional},
-    {OpKind::Stop, "kind", "end", (uint8_t)StopKind::End},
-    {OpKind::Stop, "kind", "end_rewind", (uint8_t)StopKind::EndRewind},
-    {OpKind::SetOffset, "kind", "g92", (uint8_t)SetOffsetKind::G92},
-    {OpKind::SetOffset, "kind", "g92_1", (uint8_t)SetOffsetKind::G92Cancel},
-    {OpKind::SetOffset, "kind", "g92_2", (uint8_t)SetOffsetKind::G92Suspend},
-    {OpKind::SetOffset, "kind", "g92_3", (uint8_t)SetOffsetKind::G92Restore},
-    {OpKind::SetOffset, "kind", "g28_1", (uint8_t)SetOffsetKind::StoreHome1},
-    {OpKind::SetOffset, "kind", "g30_1", (uint8_t)SetOffsetKind::StoreHome2},
-    {OpKind::SetOffset, "kind", "g10l2", (uint8_t)SetOffsetKind::G10L2},
-    {OpKind::SetOffset, "kind", "g10l20", (uint8_t)SetOffsetKind::G10L20},
-    {OpKind::SetOffset, "kind", "g52", (uint8_t)SetOffsetKind::G52},
-    {OpKind::SetOffset, "kind", "tool_set", (uint8_t)SetOffsetKind::ToolSet},
-    {OpKind::SetOffset, "kind", "tool_touch", (uint8_t)SetOffsetKind::ToolTouch},
-    {OpKind::SetOffset, "kind", "tool_touch_g593", (uint8_t)SetOffsetKind::ToolTouchG593},
-    {OpKind::SetOffset, "kind", "tool_length", (uint8_t)SetOffsetKind::ToolLength},
-    {OpKind::SetOffset, "kind", "tool_length_wear", (uint8_t)SetOffsetKind::ToolLengthWear},
-    {OpKind::SetOffset, "kind", "tool_radius", (uint8_t)SetOffsetKind::ToolRadius},
-    {OpKind::SetOffset, "kind", "tool_radius_wear", (uint8_t)SetOffsetKind::ToolRadiusWear},
-    {OpKind::SetOffset, "kind", "lathe_tool", (uint8_t)SetOffsetKind::LatheTool},
-    {OpKind::Frame, "slot", "local", (uint8_t)FrameSlot::Local},
-    {OpKind::Frame, "slot", "rotation", (uint8_t)FrameSlot::Rotation},
-    {OpKind::Frame, "slot", "scale", (uint8_t)FrameSlot::Scale},
-    {OpKind::Frame, "slot", "mirror", (uint8_t)FrameSlot::Mirror},
-    {OpKind::Frame, "action", "cancel", (uint8_t)FrameAction::Cancel},
-    {OpKind::Frame, "action", "set", (uint8_t)FrameAction::Set},
-    {OpKind::Frame, "form", "plane", 0},
-    {OpKind::Frame, "form", "axis", kFrameFormAxis},
-    {OpKind::Contour, "action", "data", (uint8_t)ContourAction::Data},
-    {OpKind::Contour, "action", "begin", (uint8_t)ContourAction::Begin},
-    {OpKind::Contour, "action", "end", (uint8_t)ContourAction::End},
-    {OpKind::Contour, "use", "finish", (uint8_t)ContourUse::Finish},
-    {OpKind::Contour, "use", "rough_z", (uint8_t)ContourUse::RoughAlongZ},
-    {OpKind::Contour, "use", "rough_x", (uint8_t)ContourUse::RoughAlongX},
-    {OpKind::Contour, "use", "pattern", (uint8_t)ContourUse::PatternRepeat},
-    {OpKind::Message, "kind", "msg", (uint8_t)MessageKind::Msg},
-    {OpKind::Message, "kind", "debug", (uint8_t)MessageKind::Debug},
-    {OpKind::Message, "kind", "print", (uint8_t)MessageKind::Print},
-    {OpKind::Message, "kind", "abort", (uint8_t)MessageKind::Abort},
-    {OpKind::CutterComp, "d_default", "modal", 0},  // sub2: the radius without a D word
-    {OpKind::CutterComp, "d_default", "tool", 1},
-};
-
-static const char *symbolFor(OpKind op, const char *key, uint8_t code) {
-  for (auto &s : kSymbols)
-    if (s.op == op && !std::strcmp(s.key, key) && s.code == code) return s.value;
-  return "?";
 }
 
 // Which word a scalar argument key fills, per op kind.
@@ -162,11 +100,10 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     const Expr *e = op.get(key);
     if (!e) return true;
     std::string_view s = e->str;
-    for (auto &sc : kSymbols)
-      if (sc.op == op.kind && !std::strcmp(sc.key, key) && s == sc.value) {
-        dst = sc.code;
-        return true;
-      }
+    if (uint8_t code; opSymbolCode(op.kind, key, s, code)) {
+      dst = code;
+      return true;
+    }
     diags.error(op.loc, fmt::format("'{}' has an invalid value for '{}'", opInfo(op.kind).name, key));
     return false;
   };
@@ -307,7 +244,7 @@ Op cmdToOp(const MachineCmd &c) {
   case CmdKind::Comment:
   case CmdKind::Message:
     op.set("text", Expr::string(c.text ? c.text : ""));
-    if (c.kind == CmdKind::Message && c.sub) op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub)));
+    if (c.kind == CmdKind::Message && c.sub) op.set("kind", Expr::symbol(opSymbolName(op.kind, "kind", c.sub)));
     return op;
   case CmdKind::Mode:
     for (unsigned i = 0; i < c.nmodes; ++i) {
@@ -316,25 +253,25 @@ Op cmdToOp(const MachineCmd &c) {
     }
     break;  // G64 tolerances below
   case CmdKind::Spindle:
-    op.set("dir", Expr::symbol(symbolFor(op.kind, "dir", c.sub)));
+    op.set("dir", Expr::symbol(opSymbolName(op.kind, "dir", c.sub)));
     if (c.sub != 3) return op;
-    op.set("way", Expr::symbol(symbolFor(op.kind, "way", c.sub2)));
+    op.set("way", Expr::symbol(opSymbolName(op.kind, "way", c.sub2)));
     break;
-  case CmdKind::Stop: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); return op;
+  case CmdKind::Stop: op.set("kind", Expr::symbol(opSymbolName(op.kind, "kind", c.sub))); return op;
   case CmdKind::CutterComp:
-    op.set("side", Expr::symbol(symbolFor(op.kind, "side", c.sub)));
-    if (c.sub2) op.set("d_default", Expr::symbol(symbolFor(op.kind, "d_default", c.sub2)));
+    op.set("side", Expr::symbol(opSymbolName(op.kind, "side", c.sub)));
+    if (c.sub2) op.set("d_default", Expr::symbol(opSymbolName(op.kind, "d_default", c.sub2)));
     break;
-  case CmdKind::SetOffset: op.set("kind", Expr::symbol(symbolFor(op.kind, "kind", c.sub))); break;
+  case CmdKind::SetOffset: op.set("kind", Expr::symbol(opSymbolName(op.kind, "kind", c.sub))); break;
   case CmdKind::Frame:
-    op.set("slot", Expr::symbol(symbolFor(op.kind, "slot", c.sub)));
-    op.set("action", Expr::symbol(symbolFor(op.kind, "action", c.sub2 & 0x0f)));
+    op.set("slot", Expr::symbol(opSymbolName(op.kind, "slot", c.sub)));
+    op.set("action", Expr::symbol(opSymbolName(op.kind, "action", c.sub2 & 0x0f)));
     if (c.sub == (uint8_t)FrameSlot::Rotation && (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set)
-      op.set("form", Expr::symbol(symbolFor(op.kind, "form", c.sub2 & kFrameFormAxis)));
+      op.set("form", Expr::symbol(opSymbolName(op.kind, "form", c.sub2 & kFrameFormAxis)));
     break;
   case CmdKind::Contour:
-    op.set("action", Expr::symbol(symbolFor(op.kind, "action", c.sub)));
-    if (c.sub != (uint16_t)ContourAction::Begin) op.set("use", Expr::symbol(symbolFor(op.kind, "use", c.sub2)));
+    op.set("action", Expr::symbol(opSymbolName(op.kind, "action", c.sub)));
+    if (c.sub != (uint16_t)ContourAction::Begin) op.set("use", Expr::symbol(opSymbolName(op.kind, "use", c.sub2)));
     break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;

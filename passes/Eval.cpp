@@ -6,6 +6,7 @@
 #include "ir/Jumps.h"
 #include "ir/RunErrors.h"
 #include "ir/Strings.h"
+#include "ir/SystemParams.h"
 #include "ir/SystemAccess.h"
 #include "ir/Value.h"
 #include "passes/CmdTemplate.h"
@@ -87,8 +88,29 @@ struct Evaluator::Impl {
 
   // ------------------------------------------------------------ values
   double &numberedRef(Frame &fr, const Expr &v, bool write) {
-    double idx = num(number(fr, *v.args[0]));
-    long n = std::lround(idx);
+    const Expr &ix = *v.args[0];
+    if (ix.kind == ExprKind::Call) [[unlikely]]
+      return computedRef(fr, v, write);
+    return numberedSlot(fr, v, num(number(fr, ix)), write);
+  }
+  // #[(NGC_PARAMETER e)] and the other maps (ir/SystemParams.h): the number through the map.
+  [[gnu::noinline]] double &computedRef(Frame &fr, const Expr &v, bool write) {
+    ParamMap map;
+    const Expr *e = computedParameterNumber(v, map);
+    if (!e) return numberedSlot(fr, v, num(number(fr, *v.args[0])), write);
+    double n = parameterNumber(num(number(fr, *e)));
+    if (plainParameter(map, n)) return numberedSlot(fr, v, n, write);
+    // Controller state: read here (store writes it); a write here is a by-reference argument.
+    static double value;
+    std::string err;
+    if (!accessSystemParameter(sink, pool, map, n, write ? ParamAccess::Reference : ParamAccess::Read, value, v.loc, err))
+      fail(v.loc, err);
+    return value;
+  }
+  double &numberedSlot(Frame &fr, const Expr &v, double idx, bool write) {
+    // lround, without the library call for the usual whole number.
+    long n = idx >= -1e15 && idx <= 1e15 ? (long)idx : -1;
+    if ((double)n != idx) n = std::lround(idx);
     if (n >= 1 && n <= kMacroLocals) return fr.locals[n];
     if (n == 0) {
       if (write) fail(v.loc, "#0 is always vacant and cannot be assigned");
@@ -98,6 +120,15 @@ struct Evaluator::Impl {
     }
     if (n < 0 || n >= (long)numbered.size()) fail(v.loc, runErrorMessage(RunError::Numbered, limits, {}, (double)n));
     return numbered[n];
+  }
+  // A store into a computed `#[e]`: plain storage or, through the map, controller state.
+  [[gnu::noinline]] void storeComputed(const Expr &target, const Expr &e, ParamMap map, double v, Frame &fr,
+                                       CompiledFn &cf) {
+    v = convert(decls.find(*cf.fn, target), target, v, target.loc);  // no strings
+    double n = parameterNumber(num(number(fr, e)));
+    std::string err;
+    if (plainParameter(map, n)) numberedSlot(fr, target, n, true) = v;
+    else if (!accessSystemParameter(sink, pool, map, n, ParamAccess::Write, v, target.loc, err)) fail(target.loc, err);
   }
 
   double &arrayRef(std::vector<double> &arr, Frame &fr, const Expr &v, RunError outOfRange) {
@@ -373,6 +404,9 @@ struct Evaluator::Impl {
       if (!writeSystemValue(sink, pool, systemVar(fr, target), v, target.loc, err)) fail(target.loc, err);
       return;
     }
+    ParamMap map;
+    if (target.space == VarSpace::Numbered && target.args[0]->kind == ExprKind::Call) [[unlikely]]
+      if (const Expr *e = computedParameterNumber(target, map)) return storeComputed(target, *e, map, v, fr, cf);
     v = convert(decls.find(*cf.fn, target), target, v, target.loc);
     varRef(fr, cf, target, true) = v;
   }
@@ -511,6 +545,10 @@ struct Evaluator::Impl {
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
       case IK::ModalCall: setModal(*in.op, fr); ++pc; break;
+      case IK::ModalTrigger:  // as after a move: not inside the modal callee itself
+        if (!modal.callee.empty() && !inModal) runModal(in.op->loc, fr);
+        ++pc;
+        break;
       case IK::SectionCall: {
         double n = in.expr ? std::round(num(number(fr, *in.expr))) : 1;
         if (!(n >= 1)) {

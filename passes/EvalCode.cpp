@@ -132,8 +132,12 @@ void compileRegion(CompiledFn &cf, const Region &r, std::vector<LoopCtx> &loops,
     }
     case OpKind::Call:
     case OpKind::Return:
-    case OpKind::ModalCall: {  // the op is all they need
-      Instr c{op.kind == OpKind::Call ? IK::Call : op.kind == OpKind::Return ? IK::Return : IK::ModalCall};
+    case OpKind::ModalCall:
+    case OpKind::ModalTrigger: {  // the op is all they need
+      Instr c{op.kind == OpKind::Call     ? IK::Call
+              : op.kind == OpKind::Return ? IK::Return
+              : op.kind == OpKind::ModalCall ? IK::ModalCall
+                                             : IK::ModalTrigger};
       c.op = &op;
       emit(c);
       break;

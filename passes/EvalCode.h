@@ -31,6 +31,7 @@ enum class IK : uint8_t {
   CountTest,    // slot: if remaining == 0 -> jump, else remaining -= 1
   Call,         // op
   ModalCall,    // op: set or cancel the modal call
+  ModalTrigger, // op: run the active modal call now
   Return,
   SectionCall,  // op -> jump (the `from` label): push a section, run it (ir/Jumps.h)
   SectionEnd,   // calls: the innermost active section, if one of these, repeats or returns

@@ -7,6 +7,7 @@
 #include "ir/Arith.h"
 #include "ir/Builtins.h"
 #include "ir/Diagnostics.h"
+#include "ir/SystemParams.h"
 #include "ir/SystemVars.h"
 
 #include <fmt/format.h>
@@ -213,6 +214,14 @@ double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint3
              : failed(ctx, file, line, col, err);
 }
 
+double ncrt_param(ncrt_ctx *ctx, uint32_t map, uint32_t access, double n, double v, uint32_t file, uint32_t line,
+                  uint32_t col) {
+  std::string err;
+  if (accessSystemParameter(ctx->sink, ctx->pool, (ParamMap)map, n, (ParamAccess)access, v, {file, line, col}, err))
+    return access == (uint32_t)ParamAccess::Read ? v : 0.0;
+  return failed(ctx, file, line, col, err);
+}
+
 void ncrt_str_clear(ncrt_ctx *ctx) { ctx->text.clear(); }
 void ncrt_str_cat(ncrt_ctx *ctx, const char *s) { ctx->text += s; }
 void ncrt_str_num(ncrt_ctx *ctx, double v) { ctx->text += valueText(ctx->pool, v); }
@@ -223,6 +232,9 @@ void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn) {
   ctx->modal_hook = reinterpret_cast<int (*)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t)>(fn);
 }
 
+int ncrt_modal_trigger(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  return ctx->modal_hook ? ctx->modal_hook(ctx, &ctx->storage, file, line, col) : NCRT_OK;
+}
 int ncrt_save_modal(ncrt_ctx *ctx) { return ctx->sink.saveModal() ? NCRT_OK : NCRT_ERROR; }
 int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   return ctx->sink.restoreModal({file, line, col}) ? NCRT_OK : NCRT_ERROR;

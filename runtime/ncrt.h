@@ -108,6 +108,11 @@ double ncrt_sysvar_at(ncrt_ctx *ctx, uint32_t family, double i, double j, double
                       uint32_t line, uint32_t col);
 /* Writes system variable `ref`: 0, or unset after an error at the loc. */
 double ncrt_sysvar_set(ncrt_ctx *ctx, double ref, double v, uint32_t file, uint32_t line, uint32_t col);
+/* A computed parameter number n that map `map` (ncc::ParamMap) does not make plain storage:
+   access 0 reads it (the value), 1 writes v (0), 2 is a by-reference argument (an error); unset
+   after an error at the loc (ir/SystemParams.h accessSystemParameter, as the eval engine). */
+double ncrt_param(ncrt_ctx *ctx, uint32_t map, uint32_t access, double n, double v, uint32_t file, uint32_t line,
+                  uint32_t col);
 void ncrt_str_num_fixed(ncrt_ctx *ctx, double v);  // fixedNumberText
 const char *ncrt_str(ncrt_ctx *ctx);
 /* modal_call: the program's modal-call function (i32 (ctx, storage, file, line, col)), which the
@@ -116,6 +121,8 @@ const char *ncrt_str(ncrt_ctx *ctx);
 void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn);
 /* SAVE (CmdSink saveModal/restoreModal) around a call: NCRT_OK or NCRT_ERROR (reported). */
 int ncrt_save_modal(ncrt_ctx *ctx);
+/* modal_trigger: the modal-call function now, as after a move (none set: nothing). */
+int ncrt_modal_trigger(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 /* A computed goto (ir/Jumps.h findJump over the function's `count` entries, an ir::JumpEntry
  * array): label != 0 searches the label named by the text buffer, else block number n. Returns

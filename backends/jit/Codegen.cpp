@@ -75,6 +75,7 @@ void Codegen::declareRuntime() {
   fSysVar = decl("ncrt_sysvar", dblTy, {ptrTy, dblTy, ptrTy, i32Ty, i32Ty, i32Ty});
   fSysVarAt = decl("ncrt_sysvar_at", dblTy, {ptrTy, i32Ty, dblTy, dblTy, dblTy, ptrTy, i32Ty, i32Ty, i32Ty});
   fSysVarSet = decl("ncrt_sysvar_set", dblTy, {ptrTy, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
+  fParam = decl("ncrt_param", dblTy, {ptrTy, i32Ty, i32Ty, dblTy, dblTy, i32Ty, i32Ty, i32Ty});
   fStrNumFixed = decl("ncrt_str_num_fixed", voidTy, {ptrTy, dblTy});
   fStr = decl("ncrt_str", ptrTy, {ptrTy});
   fCallee = decl("ncrt_callee", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty});
@@ -86,6 +87,7 @@ void Codegen::declareRuntime() {
   fFill = decl("ncrt_fill", voidTy, {ptrTy, i64Ty, dblTy});
   fSetModalHook = decl("ncrt_set_modal_hook", Type::getVoidTy(C), {ptrTy, ptrTy});
   fSaveModal = decl("ncrt_save_modal", i32Ty, {ptrTy});
+  fModalTrigger = decl("ncrt_modal_trigger", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
   fRestoreModal = decl("ncrt_restore_modal", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
   fJump = decl("ncrt_jump", i64Ty, {ptrTy, i32Ty, dblTy, ptrTy, i64Ty, i32Ty, i32Ty, i32Ty, i32Ty, i32Ty});
   fBadIndex = decl("ncrt_bad_index", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy, dblTy, i32Ty, i32Ty, i32Ty});

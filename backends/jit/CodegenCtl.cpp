@@ -142,6 +142,7 @@ void Codegen::validate(FnInfo &fi) {
       case OpKind::Goto: gotos.push_back(&op); break;
       case OpKind::CallSection: gotos.push_back(&op); break;
       case OpKind::ModalCall:
+      case OpKind::ModalTrigger:
       case OpKind::Label:
       case OpKind::Call:
       case OpKind::Return: break;
@@ -276,6 +277,11 @@ void Codegen::emitOp(const Op &op) {
   case OpKind::Call: emitCall(op); return;
   case OpKind::CallSection: emitCallSection(op); return;
   case OpKind::ModalCall: emitModalCall(op); return;
+  case OpKind::ModalTrigger: {  // the runtime runs the modal call as after a move (ncrt_modal_trigger)
+    auto l = locArgs(op.loc);
+    checkStatus(B.CreateCall(fModalTrigger, {ctxArg, l[0], l[1], l[2]}));
+    return;
+  }
   case OpKind::Return:
     if (const Expr *v = op.get("value"))
       B.CreateStore(expr(*v).v, B.CreateConstGEP1_32(dblTy, frameArg, cur_->frameSize - 1));
@@ -585,43 +591,43 @@ void Codegen::emitCall(const Op &op) {
   Value *depth = B.CreateLoad(i32Ty, depthPtr);
   Value *maxDepth = B.CreateLoad(i32Ty, B.CreateStructGEP(storageTy, stArg, 5));
   faultIf(B.CreateICmpUGE(depth, maxDepth), op.loc, NCRT_FAULT_CALL_DEPTH, "", nullptr);
-  std::vector<std::pair<std::string, Value *>> args;  // key after "a.", value
-  for (auto &a : op.args)
-    if (a.key.rfind("a.", 0) == 0 && a.value) {
-      std::string k = a.key.substr(2);
-      if (const ir::Param *p = fixed ? fixed->fn->param(k) : nullptr; p && p->byRef) {
-        // A VAR parameter gets the address of the caller's variable (in the frame slot's bits).
-        args.push_back({k, B.CreateBitCast(B.CreatePtrToInt(varPtr(*a.value, true), i64Ty), dblTy)});
-        continue;
-      }
-      Val v = expr(*a.value);
-      if (!k.empty() && k[0] >= '0' && k[0] <= '9') checkNotHandle(v, op.loc, HandleUse::InParameter);
-      else if (fixed)  // a typed parameter converts its argument (ir/Strings.h convertForStore)
-        v.v = convertArg(*fixed, k, v, op.loc);
-      args.push_back({k, v.v});
-    }
-  B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
   const Expr *result = op.get("result");
   Value *ret = nullptr;  // the last repetition's return value
   if (result) {
     ret = allocaEntry(dblTy, "call.ret");
     B.CreateStore(ConstantExpr::getBitCast(ConstantInt::get(i64Ty, NCRT_UNSET_BITS), dblTy), ret);
   }
-
-  emitRepeated(count, op.loc, [&] {
-    if (fixed) {
-      Value *r = emitInvoke(*fixed, args, newFrame, op.loc);
-      if (ret) B.CreateStore(r, ret);
-      return;
-    }
-    switchOnFunction(index, allFunctions(), [&](FnInfo &fi) {
-      auto converted = args;  // the callee's typed parameters convert (per repetition, see docs/JIT.md)
-      for (auto &[k, v] : converted)
-        if (!numberedKey(k)) v = convertArg(fi, k, {v, true, true, op.loc}, op.loc);
-      Value *r = emitInvoke(fi, converted, newFrame, op.loc);
+  // The arguments for callee `fi`, evaluated once: a VAR parameter gets the address of the
+  // caller's variable (in the frame slot's bits), a typed one the converted value
+  // (ir/Strings.h convertForStore).
+  auto argsFor = [&](FnInfo &fi) {
+    std::vector<std::pair<std::string, Value *>> args;  // key after "a.", value
+    for (auto &a : op.args)
+      if (a.key.rfind("a.", 0) == 0 && a.value) {
+        std::string k = a.key.substr(2);
+        if (const ir::Param *p = fi.fn->param(k); p && p->byRef) {
+          args.push_back({k, B.CreateBitCast(B.CreatePtrToInt(varPtr(*a.value, true), i64Ty), dblTy)});
+          continue;
+        }
+        Val v = expr(*a.value);
+        if (numberedKey(k)) checkNotHandle(v, op.loc, HandleUse::InParameter);
+        else v.v = convertArg(fi, k, v, op.loc);
+        args.push_back({k, v.v});
+      }
+    B.CreateStore(B.CreateAdd(depth, B.getInt32(1)), depthPtr);
+    return args;
+  };
+  auto invoke = [&](FnInfo &fi) {
+    auto args = argsFor(fi);
+    emitRepeated(count, op.loc, [&] {
+      Value *r = emitInvoke(fi, args, newFrame, op.loc);
       if (ret) B.CreateStore(r, ret);
     });
-  });
+  };
+  // A computed callee: one branch per function of the module, each with its own argument
+  // passing (by value or VAR, its parameters' types).
+  if (fixed) invoke(*fixed);
+  else switchOnFunction(index, allFunctions(), invoke);
   B.CreateStore(depth, depthPtr);
   if (result) {
     Value *r = B.CreateLoad(dblTy, ret);

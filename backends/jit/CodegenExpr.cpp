@@ -9,6 +9,7 @@
 #include "runtime/ncrt.h"
 
 #include <llvm/IR/Intrinsics.h>
+#include <llvm/IR/MDBuilder.h>
 
 #include <fmt/format.h>
 
@@ -121,7 +122,22 @@ Value *Codegen::numberedPtr(const Expr &var, bool write) {
     fail(var.loc, "bad variable");
     return scratch;
   }
-  Value *x = numOf(expr(*var.args[0]));
+  ParamMap map;
+  if (const Expr *e = computedParameterNumber(var, map)) {  // a by-reference argument (loads and stores: below)
+    BasicBlock *plain = newBlock("param.plain"), *sys = newBlock("param.sys");
+    Value *x = splitComputed(*e, map, plain, sys);
+    B.SetInsertPoint(sys);
+    auto l = locArgs(var.loc);
+    B.CreateCall(fParam, {ctxArg, B.getInt32((uint32_t)map), B.getInt32((uint32_t)ParamAccess::Reference), x,
+                          ConstantFP::get(dblTy, 0.0), l[0], l[1], l[2]});
+    B.CreateBr(failBB);
+    B.SetInsertPoint(plain);
+    return numberedSlot(var, x, write);
+  }
+  return numberedSlot(var, numOf(expr(*var.args[0])), write);
+}
+
+Value *Codegen::numberedSlot(const Expr &var, Value *x, bool write) {
   Value *r = roundOf(x);
   Value *inRange = B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, 0.0)),
                                B.CreateFCmpOLT(r, ConstantFP::get(dblTy, (double)NCRT_NUMBERED)));
@@ -131,6 +147,66 @@ Value *Codegen::numberedPtr(const Expr &var, bool write) {
   faultIf(B.CreateNot(B.CreateOr(local, inRange)), var.loc, NCRT_FAULT_NUMBERED, "", x);
   Value *slot = B.CreateFPToSI(r, i64Ty);
   return B.CreateSelect(local, B.CreateGEP(dblTy, frameArg, slot), B.CreateGEP(dblTy, numberedBase, slot));
+}
+
+// The inline test that rounded number r is plain storage under map m: the comparisons of
+// ir/SystemParams.h plainRanges, so a loop over plain parameters never leaves compiled code.
+Value *Codegen::plainNumber(ParamMap m, Value *r) {
+  Value *any = B.getFalse();
+  const PlainRange *pr = plainRanges(m);
+  for (int i = 0; i < kPlainRanges; ++i)
+    if (pr[i].first <= pr[i].last)
+      any = B.CreateOr(any, B.CreateAnd(B.CreateFCmpOGE(r, ConstantFP::get(dblTy, pr[i].first)),
+                                        B.CreateFCmpOLE(r, ConstantFP::get(dblTy, pr[i].last))));
+  return any;
+}
+
+// A computed `#[e]` under map m: evaluates e and branches to `plain` when it is plain storage,
+// else (controller state, or an error) to `sys`; the number e gave.
+Value *Codegen::splitComputed(const Expr &e, ParamMap m, BasicBlock *plain, BasicBlock *sys) {
+  Value *x = numOf(expr(e));
+  B.CreateCondBr(plainNumber(m, roundOf(x)), plain, sys, MDBuilder(C).createBranchWeights(1000, 1));
+  return x;
+}
+
+Val Codegen::loadComputed(const Expr &var, const Expr &e, ParamMap m) {
+  BasicBlock *plain = newBlock("param.plain"), *sys = newBlock("param.sys"), *join = newBlock("param.join");
+  Value *x = splitComputed(e, m, plain, sys);
+  B.SetInsertPoint(sys);
+  auto l = locArgs(var.loc);
+  Value *sv = checked(B.CreateCall(fParam, {ctxArg, B.getInt32((uint32_t)m), B.getInt32((uint32_t)ParamAccess::Read), x,
+                                            ConstantFP::get(dblTy, 0.0), l[0], l[1], l[2]}));
+  BasicBlock *sysEnd = B.GetInsertBlock();
+  B.CreateBr(join);
+  B.SetInsertPoint(plain);
+  Value *pv = B.CreateLoad(dblTy, numberedSlot(var, x, false));
+  BasicBlock *plainEnd = B.GetInsertBlock();
+  B.CreateBr(join);
+  B.SetInsertPoint(join);
+  return {joined(pv, plainEnd, sv, sysEnd), true, false, var.loc};
+}
+
+// The value of two paths meeting at the current block: a when coming from aEnd, b from bEnd.
+Value *Codegen::joined(Value *a, BasicBlock *aEnd, Value *b, BasicBlock *bEnd) {
+  PHINode *phi = B.CreatePHI(dblTy, 2);
+  phi->addIncoming(a, aEnd);
+  phi->addIncoming(b, bEnd);
+  return phi;
+}
+
+void Codegen::storeComputed(const Expr &var, const Expr &e, ParamMap m, Val value) {
+  Value *v = convertFor(var, declOf(var), value);  // no strings
+  BasicBlock *plain = newBlock("param.plain"), *sys = newBlock("param.sys"), *join = newBlock("param.join");
+  Value *x = splitComputed(e, m, plain, sys);
+  B.SetInsertPoint(sys);
+  auto l = locArgs(var.loc);
+  checked(B.CreateCall(fParam, {ctxArg, B.getInt32((uint32_t)m), B.getInt32((uint32_t)ParamAccess::Write), x, v, l[0],
+                                l[1], l[2]}));
+  B.CreateBr(join);
+  B.SetInsertPoint(plain);
+  B.CreateStore(v, numberedSlot(var, x, true));
+  B.CreateBr(join);
+  B.SetInsertPoint(join);
 }
 
 // R and Q parameters: index rounded like #n (no index = 0).
@@ -248,6 +324,8 @@ Val Codegen::loadVar(const Expr &var) {
     return {checked(B.CreateCall(fSysVar, {ctxArg, ref, cstring(var.str), l[0], l[1], l[2]})), false,
             sysVarNameIsFrame(var.str), var.loc};
   }
+  ParamMap map;
+  if (const Expr *e = computedParameterNumber(var, map)) return loadComputed(var, *e, map);
   Value *v = B.CreateLoad(dblTy, varPtr(var, false));
   bool mayHandle = var.space == VarSpace::QParam && var.str == "QS";
   if (var.space == VarSpace::Local || var.space == VarSpace::Global) {
@@ -285,6 +363,8 @@ void Codegen::storeVar(const Expr &var, Val value) {
     checked(B.CreateCall(fSysVarSet, {ctxArg, ref, v, l[0], l[1], l[2]}));
     return;
   }
+  ParamMap map;
+  if (const Expr *e = computedParameterNumber(var, map)) return storeComputed(var, *e, map, value);
   Value *v = convertFor(var, declOf(var), value);
   B.CreateStore(v, varPtr(var, true));
 }
@@ -368,10 +448,7 @@ Val Codegen::compare(const Expr &e, Val a, Val b) {
   BasicBlock *numEnd = B.GetInsertBlock();
   B.CreateBr(done);
   B.SetInsertPoint(done);
-  PHINode *phi = B.CreatePHI(dblTy, 2);
-  phi->addIncoming(rs, strEnd);
-  phi->addIncoming(rn, numEnd);
-  return {phi, false};
+  return {joined(rs, strEnd, rn, numEnd), false};
 }
 
 Val Codegen::expr(const Expr &e) {

@@ -9,6 +9,7 @@
 #include "ir/Decls.h"
 #include "ir/Jumps.h"
 #include "ir/NCIR.h"
+#include "ir/SystemParams.h"
 #include "passes/CmdTemplate.h"
 
 #include <llvm/IR/IRBuilder.h>
@@ -142,6 +143,14 @@ private:
   llvm::Value *roundOf(llvm::Value *v);  // llvm.round: half away from zero, like lround
   llvm::Value *varPtr(const ir::Expr &var, bool write);
   llvm::Value *numberedPtr(const ir::Expr &var, bool write);
+  llvm::Value *numberedSlot(const ir::Expr &var, llvm::Value *x, bool write);  // #[x], x computed
+  // #[(NGC_PARAMETER e)] and the other maps (ir/SystemParams.h): plain numbers inline, the rest
+  // through ncrt_param.
+  llvm::Value *plainNumber(ParamMap m, llvm::Value *r);
+  llvm::Value *splitComputed(const ir::Expr &e, ParamMap m, llvm::BasicBlock *plain, llvm::BasicBlock *sys);
+  Val loadComputed(const ir::Expr &var, const ir::Expr &e, ParamMap m);
+  void storeComputed(const ir::Expr &var, const ir::Expr &e, ParamMap m, Val value);
+  llvm::Value *joined(llvm::Value *a, llvm::BasicBlock *aEnd, llvm::Value *b, llvm::BasicBlock *bEnd);  // a phi
   llvm::Value *elemPtr(const ir::Expr &var, llvm::Value *base);
   llvm::Value *declaredElemPtr(const ir::Expr &var, llvm::Value *base, const VarDecl &d);
   llvm::Value *paramPtr(const ir::Expr &var, llvm::Value *base, int64_t count, unsigned fault);
@@ -170,7 +179,9 @@ private:
   llvm::FunctionType *ncFnTy;
   llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar, fSysVarAt, fSysVarSet;
-  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook;
+  llvm::FunctionCallee fParam;  // ncrt_param: computed parameter numbers that are controller state
+  llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook,
+      fModalTrigger;
   std::map<std::string, llvm::FunctionCallee> builtins_;
   std::map<std::string, FnInfo> functions_;
   std::map<std::string, llvm::Constant *> strings_;

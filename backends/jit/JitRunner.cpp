@@ -111,11 +111,13 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_sysvar", &ncrt_sysvar);
   add("ncrt_sysvar_at", &ncrt_sysvar_at);
   add("ncrt_sysvar_set", &ncrt_sysvar_set);
+  add("ncrt_param", &ncrt_param);
   add("ncrt_str_num_fixed", &ncrt_str_num_fixed);
   add("ncrt_str", &ncrt_str);
   add("ncrt_callee", &ncrt_callee);
   add("ncrt_jump", &ncrt_jump);
   add("ncrt_save_modal", &ncrt_save_modal);
+  add("ncrt_modal_trigger", &ncrt_modal_trigger);
   add("ncrt_set_modal_hook", &ncrt_set_modal_hook);
   add("ncrt_restore_modal", &ncrt_restore_modal);
   add("ncrt_str_const", &ncrt_str_const);

@@ -270,8 +270,7 @@ bool BlockParser::parseAssign(ParsedBlock &out) {
   a.target = parseVariable(true);
   if (!a.target) return false;
   if (a.target->kind == ir::ExprKind::Var && a.target->space == ir::VarSpace::Numbered && !a.target->args.empty() &&
-      a.target->args[0]->kind == ir::ExprKind::Number && classifyParameter(flavour_, mem_, (long)a.target->args[0]->num).kind ==
-                                                             SystemParam::Alarm)
+      a.target->args[0]->kind == ir::ExprKind::Number && classifyParameter(map_, (long)a.target->args[0]->num).kind == SystemParam::Alarm)
     a.alarm = (int)a.target->args[0]->num;
   if (a.target->kind == ir::ExprKind::Vacant) return fail(at, "#0 is always vacant and cannot be assigned");
   skipBlanks();
@@ -717,17 +716,17 @@ ExprPtr BlockParser::parseVariable(bool target) {
     }
     if (v == 0) return Expr::vacant(locAt(at));
     long n = v > 1e9 ? 1000000000L : (long)v;
-    SystemParam sp = classifyParameter(flavour_, mem_, n);
+    SystemParam sp = classifyParameter(map_, n);
     // Offsets and reference points are written through the executor, which applies them when
     // the controller would (docs/MACHINE.md offset_write); the rest is read-only, as in rs274.
     if (target && sp.kind == SystemParam::System && !sysVarWritable(sp.var.var)) {
-      fail(at, fmt::format("#{} ({}) is read-only", n, sp.what), "read-only-parameter");
+      fail(at, readOnlyParameterMessage(n, sp.what), "read-only-parameter");
       return nullptr;
     }
     if (target && sp.kind == SystemParam::Alarm)
       return Expr::var(ir::VarSpace::Numbered, "", Expr::number(v, ir::Type::Int, locAt(b)), locAt(at));
     std::string err;
-    ExprPtr e = numberedParameter(flavour_, mem_, n, locAt(at), err);
+    ExprPtr e = numberedParameter(map_, n, locAt(at), err);
     if (!e) fail(at, err, "unsupported-code");
     return e;
   }
@@ -739,12 +738,8 @@ ExprPtr BlockParser::parseVariable(bool target) {
     ExprPtr idx = *p_ == '[' ? parseBracket() : parseVariable();
     --depth_;
     if (!idx) return nullptr;
-    // A computed number must be a plain parameter when the program runs: the controller-state
-    // numbers are read through System variables (constant #n only), never as empty storage.
-    std::vector<ExprPtr> arg;
-    arg.push_back(std::move(idx));
-    idx = Expr::call(flavour_ == Flavour::RS274 ? "NGC_PARAMETER" : "MACRO_VARIABLE", std::move(arg), locAt(at));
-    return Expr::var(ir::VarSpace::Numbered, "", std::move(idx), locAt(at));
+    // A computed number is resolved when the program runs, through the same map as #n.
+    return computedParameter(map_, std::move(idx), locAt(at));
   }
   if (*p_ == '<' && flavour_ == Flavour::RS274) {
     const char *b = ++p_;

@@ -21,7 +21,7 @@ namespace ncc::iso {
 
 // Which Fanuc Custom Macro B variables hold the tool offsets (machine [controller]
 // offset_memory): none, or tool compensation memory C (#2001… H wear, #2201… H geometry,
-// #10001-#13999 H/D wear/geometry; frontend/iso/SystemParams.cpp).
+// #10001-#13999 H/D wear/geometry; ir/SystemParams.h).
 enum class OffsetMemory : uint8_t { None, C };
 
 struct IsoOptions {

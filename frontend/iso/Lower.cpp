@@ -69,7 +69,7 @@ static ExprPtr substituted(const std::string &text, SourceLoc loc, Flavour flavo
       flush();
       std::string err;
       double n = std::stod(text.substr(i + 1, j - i - 1));
-      ExprPtr p = n == 0 ? Expr::vacant(loc) : numberedParameter(flavour, OffsetMemory::None, n > 1e9 ? 1000000000L : (long)n, loc, err);  // rs274 texts
+      ExprPtr p = n == 0 ? Expr::vacant(loc) : numberedParameter(paramMapFor(flavour, OffsetMemory::None, false), n > 1e9 ? 1000000000L : (long)n, loc, err);  // rs274 texts
       if (!p) {
         diags.error(loc, err, "unsupported-code");
         p = Expr::string("", loc);

@@ -358,7 +358,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
 bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
   const std::string &text = sm_.text(fileId);
   Flavour flavour = flavourForFile(sm_.name(fileId));
-  BlockParser parser(diags_, flavour, opts_.blockDeleteMask, opts_.offsetMemory);
+  BlockParser parser(diags_, flavour, opts_.blockDeleteMask, opts_.offsetMemory, opts_.lathe);
   BlockLowerer lower(opts_, flavour, diags_);
   if (!lower.optionsValid()) {
     error({}, fmt::format("unknown decimal mode '{}' (calculator, is-b, is-c)", opts_.decimalMode), "options");

@@ -86,7 +86,7 @@ bool isoIsStreamable(std::string_view text) {
 struct IsoBlockStream::Impl {
   Impl(SourceManager &sm, uint32_t fileId, const IsoOptions &opts, Diagnostics &diags)
       : diags(diags), text(sm.text(fileId)), fileId(fileId),
-        parser(diags, flavourForFile(sm.name(fileId)), opts.blockDeleteMask, opts.offsetMemory),
+        parser(diags, flavourForFile(sm.name(fileId)), opts.blockDeleteMask, opts.offsetMemory, opts.lathe),
         lower(opts, flavourForFile(sm.name(fileId)), diags) {
     lower.allowCalls = false;
     p = text.data();

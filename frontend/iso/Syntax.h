@@ -4,7 +4,7 @@
 #include "frontend/iso/IsoFrontend.h"
 #include "ir/Diagnostics.h"
 #include "ir/NCIR.h"
-#include "ir/SystemVars.h"
+#include "ir/SystemParams.h"
 
 #include <cstdint>
 #include <string>
@@ -105,27 +105,22 @@ struct ParsedBlock {
 // parameter (System), a global `_name`, or a local. Null for an empty name.
 ir::ExprPtr namedParameter(std::string_view name, SourceLoc loc);
 
-// What a constant numbered parameter `#n` is (frontend/iso/SystemParams.cpp): a plain
-// parameter, controller state (a System variable), Fanuc's #3000/#3006 (alarm and stop with a
-// message, assignment only), or a number ncc does not provide (an error: `what` says why).
-// Fanuc tool offsets (#2001…, #10001…) exist as the machine's offset memory type says
-// ([controller] offset_memory): none, or memory C (H and D, geometry and wear apart).
-struct SystemParam {
-  enum Kind { Plain, System, Alarm, Unsupported } kind = Plain;
-  SysRef var{SysVar::Count};
-  std::string what;  // System: what the parameter is ("work offset 1 X")
-};
-SystemParam classifyParameter(Flavour f, OffsetMemory mem, long n);
-// The expression reading `#n` (n > 0): a Numbered or a System variable; null with err set when
-// ncc does not provide it.
-ir::ExprPtr numberedParameter(Flavour f, OffsetMemory mem, long n, SourceLoc loc, std::string &err);
+// The number -> system variable map (ir/SystemParams.h) of a file: its flavour, and for Macro B
+// the machine's offset memory and kind (frontend/iso/SystemParams.cpp).
+ParamMap paramMapFor(Flavour f, OffsetMemory mem, bool lathe);
+// The expression reading a constant `#n` (n > 0): a Numbered or a System variable; null with err
+// set when ncc does not provide it.
+ir::ExprPtr numberedParameter(ParamMap m, long n, SourceLoc loc, std::string &err);
+// A computed `#[number]`: the map's builtin around the number, resolved when the program runs.
+ir::ExprPtr computedParameter(ParamMap m, ir::ExprPtr number, SourceLoc loc);
 
 // Turns one line into a ParsedBlock. Reports syntax errors and returns false (the block is then
 // dropped by the caller).
 class BlockParser {
 public:
-  BlockParser(Diagnostics &diags, Flavour flavour, unsigned blockDeleteMask, OffsetMemory mem = OffsetMemory::None)
-      : diags_(diags), flavour_(flavour), mem_(mem), skipMask_(blockDeleteMask) {}
+  BlockParser(Diagnostics &diags, Flavour flavour, unsigned blockDeleteMask, OffsetMemory mem = OffsetMemory::None,
+              bool lathe = false)
+      : diags_(diags), flavour_(flavour), map_(paramMapFor(flavour, mem, lathe)), skipMask_(blockDeleteMask) {}
   bool parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out);
 
   // Expression entry points (also used by tests).
@@ -134,7 +129,7 @@ public:
 private:
   Diagnostics &diags_;
   Flavour flavour_;
-  OffsetMemory mem_;
+  ParamMap map_;  // the numbers of #n and #[e]
   unsigned skipMask_;
   const char *begin_ = nullptr, *p_ = nullptr, *end_ = nullptr;
   uint32_t file_ = 0, line_ = 0;

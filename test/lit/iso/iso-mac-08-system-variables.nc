@@ -46,9 +46,16 @@ N900 M30
 ; ERR: :2:1: error: #5041 (current position X) is read-only [read-only-parameter]
 ; ERR: :3:4: error: #50 does not exist in Custom Macro B (#1-#33 local, #100-#999 common) [unsupported-code]
 ; ERR: :4:4: error: #3000 can only be assigned (alarm and message stop) [unsupported-code]
-; A computed number reaching controller state when the program runs is a run-time error too
-; (both engines), not an empty parameter.
-; RUN: printf '#1=5000\n#2=#[#1+41]\nM30\n' > %t.run.nc
-; RUN: not %ncc run %t.run.nc 2>&1 | FileCheck %s --check-prefix=RUNTIME
-; RUN: not %ncc run %t.run.nc --engine=jit 2>&1 | FileCheck %s --check-prefix=RUNTIME
-; RUNTIME: :2:4: error: computed parameter number is not #0-#33 or #100-#999: controller state is read with a constant number (#5221), other numbers do not exist
+; A computed number reads the same variables when the program runs (#[#1+41] = #5041, the
+; position; iso-mac-08-computed-system-variables.nc), and one ncc does not provide is a run-time
+; error at the variable in both engines, not an empty parameter.
+; RUN: printf '#1=5000\nG0 X7.\n#2=#[#1+41]\nG0 Y#2\n#3=#[#1+1000]\nM30\n' > %t.run.nc
+; RUN: not %ncc run %t.run.nc --trace=canon > %t.eval 2> %t.eval.err
+; RUN: not %ncc run %t.run.nc --engine=jit --trace=canon > %t.jit 2> %t.jit.err
+; RUN: FileCheck %s --check-prefix=RUNERR < %t.eval.err
+; RUN: FileCheck %s --check-prefix=RUNERR < %t.jit.err
+; RUN: diff %t.eval %t.jit
+; RUN: FileCheck %s --check-prefix=RUNTIME --input-file=%t.jit
+; RUNTIME: STRAIGHT_TRAVERSE(7.0000, 0.0000
+; RUNTIME-NEXT: STRAIGHT_TRAVERSE(7.0000, 7.0000
+; RUNERR: :5:4: error: Fanuc system variable #6000 is not supported
