@@ -27,6 +27,13 @@ enum class ModeValue : uint8_t {
   // Lathe single cycles (808D system A G90 along Z, G94 along X; runtime/ExecutorTurning.cpp):
   // modal, each move block runs the four-step cycle from the current point.
   TurnAlongZ, TurnAlongX,
+  // Thread cutting (runtime/ExecutorThread.cpp): Thread a spindle-synchronised straight move
+  // (LinuxCNC G33 K, 808D G32/G33 F Q), RigidTap LinuxCNC G33.1 (down and back), ThreadCycle
+  // LinuxCNC's G76 (every parameter in one block), ThreadSingle the lathe's single thread
+  // cycle (808D G92/G78, modal like G90), ThreadMulti the lathe's multiple threading cycle
+  // (808D G76, one-shot: the motion mode before it stays); ThreadVariable the 808D's G34 (the lead
+  // F grows by K every revolution).
+  Thread, RigidTap, ThreadCycle, ThreadSingle, ThreadMulti, ThreadVariable,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -56,5 +63,6 @@ inline bool isPathMotion(ModeValue v) { return v <= ModeValue::ArcTangent; }
 inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= ModeValue::BoreFine; }
 inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && v <= ModeValue::NurbsEnd; }
 inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ || v == ModeValue::TurnAlongX; }
+inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadVariable; }
 
 }  // namespace ncc

@@ -8,7 +8,7 @@ namespace ncc {
 
 static bool isPath(const MotionRecord &r) {
   return r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-         r.kind == RecordKind::Spline || r.kind == RecordKind::Dwell;
+         r.kind == RecordKind::Spline || r.kind == RecordKind::Dwell || r.kind == RecordKind::Thread;
 }
 
 // Zero-length moves carry no path: translators may drop them.
@@ -17,6 +17,12 @@ static bool isNullMove(const MotionRecord &r) {
   for (int i = 0; i < kAxes; ++i)
     if (std::fabs(r.end[i] - r.start[i]) > 1e-9) return false;
   return true;
+}
+
+static double linearDistance(const MotionRecord &r) {
+  double d2 = 0;
+  for (int i = 0; i < 3; ++i) d2 += (r.end[i] - r.start[i]) * (r.end[i] - r.start[i]);
+  return std::sqrt(d2);
 }
 
 static std::vector<const MotionRecord *> pathOf(const std::vector<MotionRecord> &v) {
@@ -64,6 +70,14 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
           if (!near(sx.points[i][k], sy.points[i][k])) why = "spline control points differ";
     }
     if (why.empty() && x.kind == RecordKind::Dwell && std::fabs(x.value - y.value) > 1e-6) why = "dwell times differ";
+    if (why.empty() && x.kind == RecordKind::Thread) {
+      // A lead written with fewer digits is the same thread while the drift it adds over the
+      // move (length / lead revolutions of it) stays within the position tolerance.
+      double lx = threadPathLead(x), ly = threadPathLead(y), len = linearDistance(x);
+      if (!(lx > 0) || std::fabs(lx - ly) * len / lx > opts.tolerance) why = "thread leads differ";
+      else if (x.sync != y.sync || std::fabs(x.value2 - y.value2) > 1e-6) why = "thread start angles or synchronisation differ";
+      else if (std::fabs(threadEndLead(x) - threadEndLead(y)) * len / lx > opts.tolerance) why = "thread lead changes differ";
+    }
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
       why = "feeds differ";

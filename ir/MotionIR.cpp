@@ -16,9 +16,67 @@ const char *recordKindName(RecordKind k) {
                                 "plane",        "comment",       "message",      "optional_stop",
                                 "program_stop", "program_end",   "aux",          "cycle_begin",
                                 "cycle_end",    "frame_change",  "spline",       "spindle_orient",
-                                "spindle_mode"};
+                                "spindle_mode", "thread"};
   static_assert(sizeof(names) / sizeof(names[0]) == (size_t)RecordKind::Count);
   return names[(unsigned)k];
+}
+
+const char *threadAxisName(ThreadAxis a) {
+  static const char *names[] = {"x", "y", "z", "path"};
+  return names[(unsigned)a & 3];
+}
+
+const char *threadSyncName(ThreadSync s) {
+  static const char *names[] = {"index", "chain", "tap_in", "tap_out"};
+  return names[(unsigned)s & 3];
+}
+
+static double moveLength(const MotionRecord &r) {
+  return std::sqrt((r.end[0] - r.start[0]) * (r.end[0] - r.start[0]) + (r.end[1] - r.start[1]) * (r.end[1] - r.start[1]) +
+                   (r.end[2] - r.start[2]) * (r.end[2] - r.start[2]));
+}
+
+// A lead along an axis advances that axis by `lead` per revolution: the path advances by
+// lead * length / |axis travel| (the same number of revolutions over the whole move).
+double threadPathLead(const MotionRecord &r) {
+  if ((ThreadAxis)r.ivalue == ThreadAxis::Path) return r.value;
+  double along = std::fabs(r.end[r.ivalue & 3] - r.start[r.ivalue & 3]);
+  return along > 0 ? r.value * moveLength(r) / along : 0.0;
+}
+
+double threadLeadChange(const MotionRecord &r) {
+  const double *d = r.param("dlead");
+  return d ? *d : 0.0;
+}
+
+static double leadTravel(const MotionRecord &r) {
+  return (ThreadAxis)r.ivalue == ThreadAxis::Path ? moveLength(r) : std::fabs(r.end[r.ivalue & 3] - r.start[r.ivalue & 3]);
+}
+
+double threadEndLead(const MotionRecord &r) {
+  double sq = r.value * r.value + 2 * threadLeadChange(r) * leadTravel(r);
+  return sq > 0 ? std::sqrt(sq) : 0.0;
+}
+
+double threadAxisLead(const MotionRecord &r, int axis) {
+  double len = moveLength(r);
+  return len > 0 ? threadPathLead(r) * std::fabs(r.end[axis] - r.start[axis]) / len : 0.0;
+}
+
+std::string threadError(const MotionRecord &r) {
+  if (!(r.value > 0) || !std::isfinite(r.value)) return fmt::format("a thread lead must be positive, not {}", r.value);
+  if (r.ivalue < 0 || r.ivalue > 3) return "a thread lead is measured along x, y, z or the path";
+  if (!(r.value2 >= 0 && r.value2 < 360)) return fmt::format("a thread start angle is at least 0 and below 360, not {}", r.value2);
+  for (int i = 3; i < kAxes; ++i)
+    if (r.start[i] != r.end[i]) return "a thread moves X, Y and Z only, not A, B or C";
+  if (threadLeadChange(r) != 0 && !(threadEndLead(r) > 0))
+    return fmt::format("the variable lead {} + {} per revolution does not stay positive to the end", r.value,
+                       threadLeadChange(r));
+  if (!std::isfinite(threadLeadChange(r))) return "a thread's lead change must be finite";
+  if (moveLength(r) > 0 && !(threadPathLead(r) > 0))
+    return fmt::format("a thread with its lead along {} must move along {}", threadAxisName((ThreadAxis)r.ivalue),
+                       threadAxisName((ThreadAxis)r.ivalue));
+  return {};
 }
 
 const char *planeName(Plane p) {
@@ -184,6 +242,14 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
     fmt::format_to(out, " F{}", r.feed);
     break;
   }
+  case RecordKind::Thread:
+    axes(r.end);
+    fmt::format_to(out, " lead={}", r.value);
+    if (threadLeadChange(r) != 0) fmt::format_to(out, " dlead={}", threadLeadChange(r));
+    fmt::format_to(out, " along={} sync={}", threadAxisName((ThreadAxis)r.ivalue), threadSyncName(r.sync));
+    if (r.value2 != 0) fmt::format_to(out, " start={}", r.value2);
+    fmt::format_to(out, " F{}", r.feed);
+    break;
   case RecordKind::Comment:
   case RecordKind::Message:
     s += ' ';

@@ -58,10 +58,25 @@ enum class RecordKind : uint8_t {
                  // radius, see docs/IR.md), 2 CSS goes on about a moved origin (no code);
                  // `value` the CSS spindle-speed limit (rpm, 0: none), `value2` the origin:
                  // the machine X of the spindle axis
+  Thread,        // spindle-synchronised straight feed to `end` (thread cutting, rigid tapping):
+                 // `value` the lead (mm per spindle revolution) measured along `ivalue`
+                 // (ThreadAxis), `value2` the start angle (degrees after the spindle's index),
+                 // `sync` (ThreadSync), `feed` the path feed it gives at the programmed speed
   Count
 };
 
 const char *recordKindName(RecordKind k);
+
+// Thread records: what the lead is measured along. LinuxCNC's K is per unit of path length;
+// Fanuc/808D and Sinumerik give it along the thread's main axis (Z, or X for a face thread).
+enum class ThreadAxis : uint8_t { X, Y, Z, Path };
+// How a thread record joins the motion before it: `Index` waits for the spindle's index
+// (plus the start angle) and starts a new synchronisation; `Chain` continues the thread record
+// before it without waiting (chained threads, a lead change inside one pass); `TapIn` is a
+// rigid tap into the hole (waits like Index), `TapOut` its return with the spindle reversed.
+enum class ThreadSync : uint8_t { Index, Chain, TapIn, TapOut };
+const char *threadAxisName(ThreadAxis a);  // "x" "y" "z" "path"
+const char *threadSyncName(ThreadSync s);  // "index" "chain" "tap_in" "tap_out"
 
 // One named number of a CycleBegin or FrameChange record, `key=value` in the text form.
 // Keys are 1..7 characters [A-Za-z_][A-Za-z0-9_]*, stored inline (no allocation per key).
@@ -139,6 +154,7 @@ struct MotionRecord {
   RecordKind kind = RecordKind::Rapid;
   Plane plane = Plane::XY;
   bool exactStop = false;   // stop at the end of this move (G9/G61/cycle holes)
+  ThreadSync sync = ThreadSync::Index;  // Thread records only
   int32_t turns = 0;        // arcs: +n counter-clockwise, -n clockwise (n full turns + 1)
   int64_t ivalue = 0;
   int64_t blockNumber = -1; // N word of the source block, -1 when none
@@ -172,6 +188,19 @@ struct MotionRecord {
   // The value of a named number, or nullptr.
   const double *param(std::string_view key) const;
 };
+
+// Thread records: the lead per revolution along the path (LinuxCNC's K) and along machine axis
+// `axis` (0..2) of the straight move from start to end; 0 when the record does not move there.
+double threadPathLead(const MotionRecord &r);
+// A variable lead (808D G34): the change of the lead per revolution (mm/rev^2, along the same
+// axis as the lead; the named number `dlead`, 0 when absent), and the lead at the end:
+// sqrt(lead^2 + 2 dlead travel) (the lead grows linearly with the revolutions).
+double threadLeadChange(const MotionRecord &r);
+double threadEndLead(const MotionRecord &r);
+double threadAxisLead(const MotionRecord &r, int axis);
+// Why a thread record is not a valid one (empty when it is): a lead > 0 and finite, a move
+// along the lead's axis, a start angle in [0, 360), no A B C motion.
+std::string threadError(const MotionRecord &r);
 
 // FrameChange's transform: the 3x4 matrix that maps program XYZ to machine XYZ, row-major
 // (machine_i = m_i0 x + m_i1 y + m_i2 z + m_i3), as the named numbers m00..m23.

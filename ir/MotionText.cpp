@@ -274,6 +274,34 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
     if (std::string why = splineError(r); !why.empty()) return p.error(at, why);
     break;
   }
+  case RecordKind::Thread: {
+    if (!p.axes(r.end) || !p.expect("lead=", "'lead='") || !p.number(r.value)) return false;
+    p.skipBlanks();
+    if (p.peek("dlead=")) {
+      double d;
+      if (!p.expect("dlead=", "'dlead='") || !p.number(d)) return false;
+      if (d != 0) r.setParam("dlead", d);
+    }
+    if (!p.expect("along=", "'along='")) return false;
+    size_t b = p.pos();
+    std::string_view along = p.word();
+    int a = 0;
+    while (a < 4 && along != threadAxisName((ThreadAxis)a)) ++a;
+    if (a == 4) return p.error(b, fmt::format("expected the lead's axis x, y, z or path, found '{}'", p.token(b)));
+    r.ivalue = a;
+    if (!p.expect("sync=", "'sync='")) return false;
+    b = p.pos();
+    std::string_view sync = p.word();
+    int k = 0;
+    while (k < 4 && sync != threadSyncName((ThreadSync)k)) ++k;
+    if (k == 4) return p.error(b, fmt::format("expected index, chain, tap_in or tap_out, found '{}'", p.token(b)));
+    r.sync = (ThreadSync)k;
+    p.skipBlanks();
+    if (p.peek("start=") && !(p.expect("start=", "'start='") && p.number(r.value2))) return false;
+    if (!p.expect("F", "'F' and the feed") || !p.number(r.feed)) return false;
+    if (std::string why = threadError(r); !why.empty()) return p.error(at, why);
+    break;
+  }
   case RecordKind::Comment:
   case RecordKind::Message:
     if (!p.string(r.text)) return false;
@@ -355,7 +383,7 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
   }
   if (!p.tail(r)) return false;
   if (r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-      r.kind == RecordKind::Spline)
+      r.kind == RecordKind::Spline || r.kind == RecordKind::Thread)
     st.pos = r.end;
   return true;
 }

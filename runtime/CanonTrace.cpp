@@ -136,10 +136,46 @@ void CanonTraceWriter::epilogue(const MotionRecord &r) {
   line(n, "PROGRAM_END()");
 }
 
+void CanonTraceWriter::stopSync(int64_t n) {
+  if (!sync_) return;
+  sync_ = false;
+  line(n, "STOP_SPEED_FEED_SYNCH()");
+  enableAfterMove_ = inG76_;
+}
+
+// G33 prints START, STRAIGHT_FEED, STOP per block; G33.1 START, RIGID_TAP (down and back, so
+// its return record prints nothing), STOP; rs274's G76 changes the lead inside one pass.
+void CanonTraceWriter::thread(const MotionRecord &r) {
+  if (threadLeadChange(r) != 0) {
+    variableLead_ = halted_ = true;
+    variableLeadRecord_ = r;
+    return;
+  }
+  const int64_t n = r.blockNumber;
+  const bool fresh = r.sync == ThreadSync::Index || r.sync == ThreadSync::TapIn;
+  const double lead = threadPathLead(r);
+  if (fresh) stopSync(syncBlock_);
+  if (fresh && inG76_) line(n, "DISABLE_FEED_OVERRIDE()");
+  if (!sync_ || lead != syncLead_) {
+    char tmp[64];
+    std::snprintf(tmp, sizeof tmp, "START_SPEED_FEED_SYNC(%f,0)", lead);
+    line(n, tmp);
+  }
+  sync_ = true, syncLead_ = lead, syncBlock_ = n;
+  if (r.sync == ThreadSync::TapOut) return;
+  begin(n);
+  buf_.append(r.sync == ThreadSync::TapIn ? "RIGID_TAP(" : "STRAIGHT_FEED(");
+  nums(r.end.data(), r.sync == ThreadSync::TapIn ? 3 : kAxes);
+  buf_.push_back(')');
+  end();
+}
+
 void CanonTraceWriter::record(const MotionRecord &r) {
   if (finished_ || halted_) return;
   if (!started_) preamble();
   const int64_t n = r.blockNumber;
+  if (r.kind == RecordKind::Thread) return thread(r);
+  stopSync(syncBlock_);
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
@@ -148,6 +184,8 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     nums(r.end.data(), kAxes);
     buf_.push_back(')');
     end();
+    if (enableAfterMove_) line(n, "ENABLE_FEED_OVERRIDE()");
+    enableAfterMove_ = false;
     break;
   case RecordKind::Arc: {
     // After a tilted arc nothing more is written: the trace would no longer be the path.
@@ -269,10 +307,13 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   case RecordKind::OptionalStop: line(n, "OPTIONAL_PROGRAM_STOP()"); break;
   case RecordKind::ProgramStop: line(n, "PROGRAM_STOP()"); break;
   case RecordKind::ProgramEnd: epilogue(r); break;
-  case RecordKind::Aux:  // user M codes have no canonical command in rs274's standalone canon
+  case RecordKind::Aux: break;  // user M codes have no canonical command in rs274's standalone canon
   case RecordKind::CycleBegin:  // the expanded moves are the trace; rs274 has no bracket
   case RecordKind::CycleEnd:
+    inG76_ = r.kind == RecordKind::CycleBegin && r.text == "rs274.G76";
+    break;
   case RecordKind::FrameChange:  // positions are already machine coordinates
+  case RecordKind::Thread:       // thread() above
   case RecordKind::Count: break;
   }
 }
@@ -284,7 +325,15 @@ bool CanonTraceWriter::finish(Diagnostics &diags) {
     flush();
     return false;
   }
+  if (variableLead_) {
+    diags.error(variableLeadRecord_.loc,
+                "the canonical trace (rs274) has no variable-lead thread (G34): " + printMotionRecord(variableLeadRecord_),
+                "unsupported-code");
+    flush();
+    return false;
+  }
   if (!started_) preamble();
+  stopSync(syncBlock_);
   line(-1, "ON_RESET()");
   line(-1, "ON_RESET()");
   return flush();

@@ -32,6 +32,10 @@ private:
   void nums(const double *v, int n);   // ", "-separated %.4f values
   void preamble();
   void epilogue(const MotionRecord &r);
+  // Thread records: rs274's START_SPEED_FEED_SYNC(k,0) before a new synchronisation or a lead
+  // change, STOP_SPEED_FEED_SYNCH() when the synchronised run ends.
+  void thread(const MotionRecord &r);
+  void stopSync(int64_t blockNumber);
 
   std::FILE *out_;
   std::string buf_;
@@ -40,7 +44,17 @@ private:
   bool halted_ = false;  // a record it cannot write (tilted arc) stopped the trace
   Plane plane_ = Plane::XY;
   bool flood_ = false, mist_ = false;
+  bool sync_ = false;       // inside a spindle-synchronised run
+  double syncLead_ = 0;     // its lead along the path (mm/rev)
+  int64_t syncBlock_ = -1;  // the block of its last record (STOP carries it)
+  // rs274's G76 (a cycle_begin "rs274.G76") disables feed override around each pass: DISABLE
+  // before the pass's first START, ENABLE after the traverse out that follows its STOP.
+  bool inG76_ = false, enableAfterMove_ = false;
   TiltedArcCheck tilted_{"the canonical trace (rs274 ARC_FEED)"};
+  // A variable-lead thread (808D G34) has no rs274 command: the trace stops there and finish()
+  // reports it, as for a tilted arc.
+  bool variableLead_ = false;
+  MotionRecord variableLeadRecord_;
 };
 
 }  // namespace ncc

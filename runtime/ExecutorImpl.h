@@ -4,6 +4,7 @@
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Frame.h"
+#include "runtime/cycles/Thread.h"
 #include "runtime/Executor.h"
 
 #include <vector>
@@ -163,6 +164,8 @@ struct Executor::Impl {
   MotionRecord record(RecordKind k) const;
   // While a corner (chamfer/rounding) waits for its second move, records are held back.
   void emit(const MotionRecord &r) {
+    if (r.kind <= RecordKind::Dwell || r.kind == RecordKind::Spline || r.kind == RecordKind::Thread)
+      threadChain = r.kind == RecordKind::Thread;
     if (corner.active) corner.held.push_back(r);
     else sink.record(r);
   }
@@ -312,6 +315,27 @@ struct Executor::Impl {
   bool turnSet = false;
   AxisVec turnEnd{};
   double turnTaper = 0;
+  // --- thread cutting (ExecutorThread.cpp) ---
+  // Spindle turning at a speed, no compensation, no rotation/scaling/mirror.
+  bool threadAllowed(const char *code);
+  // One thread record from the current position; its feed is the lead along the path x S.
+  // `dlead`: the lead's change per revolution (808D G34), 0 for a constant lead.
+  bool threadTo(const AxisVec &to, double lead, ThreadAxis along, ThreadSync sync, double angle, double dlead = 0);
+  bool threadMove(const MachineCmd &c);   // G33 K (LinuxCNC), G32/G33 F Q (808D)
+  bool rigidTap(const MachineCmd &c);     // G33.1
+  bool threadCycle(const MachineCmd &c);  // LinuxCNC G76
+  bool threadMulti(const MachineCmd &c);  // 808D G76 (both blocks)
+  bool threadSteps(const std::vector<ThreadStep> &steps, ThreadAxis along);
+  bool threadChain = false;  // the last motion record was a thread (an 808D G32 may chain on)
+  double threadSpeed = 0;    // the spindle of the last thread record (a chain must keep it)
+  int threadSpindle = 0;
+  ModeValue threadReturn = ModeValue::Rapid;  // the motion mode an 808D G76 block gives back
+  struct ThreadData {  // 808D G76 P(m r a) Q R, modal
+    bool set = false;
+    int finishPasses = 1;
+    double chamfer = 0;  // in leads
+    double toolAngle = 60, minCut = 0, allowance = 0;
+  } threadData;
   // --- contour capture (ExecutorContour.cpp) ---
   bool execContour(const MachineCmd &c);
   struct Capture {

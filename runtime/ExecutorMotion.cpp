@@ -124,7 +124,13 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::SplineQuadratic: return bezier(c, st.motion == ModeValue::SplineCubic);
   case ModeValue::Nurbs: return nurbsPoint(c);
   case ModeValue::TurnAlongZ:
-  case ModeValue::TurnAlongX: return turnCycle(c);
+  case ModeValue::TurnAlongX:
+  case ModeValue::ThreadSingle: return turnCycle(c);
+  case ModeValue::Thread:
+  case ModeValue::ThreadVariable: return threadMove(c);
+  case ModeValue::RigidTap: return rigidTap(c);
+  case ModeValue::ThreadCycle: return threadCycle(c);
+  case ModeValue::ThreadMulti: return threadMulti(c);
   case ModeValue::NurbsEnd:  // rs274 has no motion mode after G5.3
     if (!(c.mask & kTargetMask)) return true;
     return error("Cannot use axis values without a g code that uses them", "motion-mode-none");

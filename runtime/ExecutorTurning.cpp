@@ -4,6 +4,9 @@
 // out across to A's X, rapid back along Z. G94 (along X): rapid along Z to the end Z (plus R),
 // feed to the end point, feed out along Z to A's Z, rapid back across to A's X. A repeat block
 // gives only what changes: the other end coordinate and R stay from the cycle before.
+// G92 (system B G78), the single thread cycle, runs G90's steps with a thread (lead F, start
+// angle Q, along Z unless the taper is steeper than 45 degrees) for the cut and a rapid out;
+// the run-out chamfer the 808D makes on a machine signal is not modelled (no such signal here).
 #include "runtime/ExecutorImpl.h"
 
 #include <cmath>
@@ -11,8 +14,9 @@
 namespace ncc {
 
 bool Executor::Impl::turnCycle(const MachineCmd &c) {
-  const bool alongZ = st.motion == ModeValue::TurnAlongZ;
-  const char *code = alongZ ? "G90 (G77)" : "G94 (G79)";  // systems A (B)
+  const bool thread = st.motion == ModeValue::ThreadSingle;
+  const bool alongZ = st.motion == ModeValue::TurnAlongZ || thread;
+  const char *code = thread ? "G92 (G78)" : alongZ ? "G90 (G77)" : "G94 (G79)";  // systems A (B)
   if (plane() != Plane::ZX) return error(std::string(code) + " needs the ZX plane (G18)", "unsupported-code");
   if (linearFrame()) return error(std::string(code) + " under a rotation, scaling or mirror is not supported", "unsupported-code");
   if (!compForbids("Cannot use turning cycles with cutter compensation on")) return false;
@@ -22,7 +26,8 @@ bool Executor::Impl::turnCycle(const MachineCmd &c) {
     if (c.has(Word::R)) return error(std::string(code) + " needs X (U) or Z (W)", "missing-word");
     return true;
   }
-  if (!checkFeed(code)) return false;
+  if (thread ? !threadAllowed(code) : !checkFeed(code)) return false;
+  if (thread && !(feedMM > 0)) return error(std::string(code) + " needs F, the thread lead", "thread-invalid");
   const AxisVec a = st.position;
   AxisVec e = target(c);
   if (turnSet) {  // a repeat: the words not given keep the last cycle's end point
@@ -36,12 +41,17 @@ bool Executor::Impl::turnCycle(const MachineCmd &c) {
   if (c.has(Word::R)) turnTaper = c.get(Word::R) * scale();  // a radius (G90) / Z length (G94)
   turnEnd = e, turnSet = true;
   MotionRecord begin = record(RecordKind::CycleBegin);
-  begin.text = alongZ ? "iso.turn_z" : "iso.turn_x";
+  begin.text = thread ? "iso.thread_z" : alongZ ? "iso.turn_z" : "iso.turn_x";
   emit(begin);
   AxisVec p1 = a, p3 = e;
   if (alongZ) p1[0] = e[0] + turnTaper, p3[0] = a[0];
   else p1[2] = e[2] + turnTaper, p3[2] = a[2];
-  bool ok = moveTo(RecordKind::Rapid, p1) && moveTo(RecordKind::Linear, e) && moveTo(RecordKind::Linear, p3) &&
+  auto cut = [&] {
+    if (!thread) return moveTo(RecordKind::Linear, e);
+    const ThreadAxis along = std::fabs(e[0] - p1[0]) <= std::fabs(e[2] - p1[2]) ? ThreadAxis::Z : ThreadAxis::X;
+    return threadTo(e, feedMM, along, ThreadSync::Index, c.has(Word::Q) ? c.get(Word::Q) : 0);
+  };
+  bool ok = moveTo(RecordKind::Rapid, p1) && cut() && moveTo(thread ? RecordKind::Rapid : RecordKind::Linear, p3) &&
             moveTo(RecordKind::Rapid, a);
   emit(record(RecordKind::CycleEnd));
   return ok;

@@ -1,5 +1,7 @@
 #include "runtime/Planner.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -359,13 +361,81 @@ void Planner::flush() {
   entry_ = 0;
 }
 
+void Planner::threadError(const MotionRecord &r, std::string msg, const char *rule) {
+  if (threadFailed_) return;
+  threadErrorRule_ = rule;
+  threadFailed_ = true;
+  threadErrorLoc_ = r.loc;
+  threadErrorMsg_ = std::move(msg);
+}
+
+void Planner::thread(const MotionRecord &r) {
+  // A new synchronisation starts from rest (the spindle's index is waited for); a chained
+  // record joins the thread before it like any path move.
+  if (r.sync != ThreadSync::Chain && r.sync != ThreadSync::TapOut) flush();
+  if (!spindleOn_ || !(spindleRpm_ > 0)) {
+    threadError(r, fmt::format("a thread move needs a turning spindle (speed {} rpm, {})", spindleRpm_,
+                               spindleOn_ ? "on" : "stopped"), "thread-spindle");
+    push(r);
+    inThread_ = true;
+    return;
+  }
+  MotionRecord t = r;
+  t.feed = threadPathLead(r) * spindleRpm_;  // the feed follows the spindle, whatever was recorded
+  if (threadLeadChange(r) != 0) return variableThread(t);
+  if (std::fabs(t.feed - r.feed) > 1e-9 * std::max(1.0, t.feed))
+    threadError(r, fmt::format("the thread's feed F{} is not its lead {} mm/rev x the spindle's {} rpm = {} mm/min",
+                               r.feed, threadPathLead(r), spindleRpm_, t.feed), "thread-feed");
+  push(t);
+  inThread_ = true;
+  const Pending &p = at(count_ - 1);
+  if (p.length > 0 && p.vmax * 60 < t.feed * (1 - 1e-9))
+    threadError(r, fmt::format("the thread's feed {} mm/min exceeds what the machine's axes allow on it ({} mm/min)",
+                               t.feed, p.vmax * 60), "thread-feed");
+}
+
+// A variable lead (808D G34): the speed changes linearly with time (the lead grows by the same
+// amount every revolution at a constant spindle speed), from the start lead x S to the end lead
+// x S: one constant-acceleration segment, entered at its start speed (the synchronisation).
+void Planner::variableThread(const MotionRecord &t) {
+  const double len = linearLength(t.start, t.end), ratio = t.value > 0 ? threadPathLead(t) / t.value : 0;
+  const double v0 = t.feed / 60, v1 = threadEndLead(t) * ratio * spindleRpm_ / 60;
+  if (std::max(v0, v1) * 60 > machine_.maxFeed * (1 + 1e-9))
+    threadError(t, fmt::format("the thread's feed reaches {} mm/min, above the machine's max_feed {}", std::max(v0, v1) * 60,
+                               machine_.maxFeed), "thread-feed");
+  PlannedSegment s;
+  s.record = t;
+  s.record.text.clear();
+  s.vmax = std::max(v0, v1);
+  VelocityProfile &p = s.profile;
+  p.length = len, p.v0 = v0, p.vp = p.v1 = v1, p.jerk = INFINITY;
+  const double tRamp = v0 + v1 > 0 ? 2 * len / (v0 + v1) : 0;
+  if (std::fabs(v1 - v0) <= 1e-12 * std::max(1.0, v0)) {
+    p.vp = p.v1 = v0, p.tCruise = v0 > 0 ? len / v0 : 0, p.accel = 1;  // no change worth a ramp
+  } else {
+    p.tAcc = tRamp, p.accel = std::fabs(v1 - v0) / tRamp;
+  }
+  lastPos_ = t.end;
+  inThread_ = true;
+  emit(s);
+}
+
 void Planner::record(const MotionRecord &r) {
+  if (r.kind == RecordKind::Thread) return thread(r);
+  if (inThread_ && (r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
+                    r.kind == RecordKind::Spline)) {
+    flush();  // a thread ends at rest: nothing blends out of it
+    inThread_ = false;
+  }
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
   case RecordKind::Arc:
   case RecordKind::Spline:
     push(r);
+    return;
+  case RecordKind::SpindleSpeed:
+    spindleRpm_ = r.value;
     return;
   case RecordKind::Dwell: {
     flush();
@@ -382,10 +452,12 @@ void Planner::record(const MotionRecord &r) {
     tolerance_ = r.value > 0 ? r.value : machine_.pathTolerance;
     return;
   // Records that stop motion: the machine decelerates to rest before acting on them.
-  case RecordKind::ToolChange:
   case RecordKind::SpindleCW:
   case RecordKind::SpindleCCW:
   case RecordKind::SpindleStop:
+    spindleOn_ = r.kind != RecordKind::SpindleStop;
+    [[fallthrough]];
+  case RecordKind::ToolChange:
   case RecordKind::SpindleOrient:
   case RecordKind::OptionalStop:
   case RecordKind::ProgramStop:
@@ -399,12 +471,13 @@ void Planner::record(const MotionRecord &r) {
   }
 }
 
-bool Planner::finish(Diagnostics &) {
+bool Planner::finish(Diagnostics &diags) {
   flush();
   if (!finished_)
     for (auto *l : listeners_) l->finished(stats_.totalTime);
+  if (threadFailed_ && !finished_) diags.error(threadErrorLoc_, threadErrorMsg_, threadErrorRule_);
   finished_ = true;
-  return true;
+  return !threadFailed_;
 }
 
 }  // namespace ncc

@@ -93,6 +93,11 @@ private:
     bool stopAfter = false;
   };
   void push(const MotionRecord &r);
+  // Thread records (docs/PLANNER.md "Threads"): the feed is lead x spindle speed, never
+  // blended into the moves around them and never capped; what breaks that is an error.
+  void thread(const MotionRecord &r);
+  void variableThread(const MotionRecord &t);
+  void threadError(const MotionRecord &r, std::string msg, const char *rule);
   void limits(Pending &p) const;
   double junctionSpeed(const Pending &prev, const Pending &next) const;
   void emitFront();
@@ -110,6 +115,13 @@ private:
   AxisVec lastPos_{};         // end of the last move, where dwells happen
   bool finished_ = false;
   PlannerStats stats_;
+  double spindleRpm_ = 0;      // the last spindle_speed record
+  bool spindleOn_ = false;     // spindle_cw / spindle_ccw seen since the last stop
+  bool inThread_ = false;      // the last move pushed was a thread record
+  bool threadFailed_ = false;  // the first thread error, reported by finish()
+  SourceLoc threadErrorLoc_;
+  std::string threadErrorMsg_;
+  const char *threadErrorRule_ = "";
 };
 
 }  // namespace ncc

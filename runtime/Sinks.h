@@ -40,7 +40,7 @@ public:
   std::string text() const;
 
   uint64_t blocks() const { return blockOverride_ >= 0 ? (uint64_t)blockOverride_ : blocks_; }
-  uint64_t rapids = 0, linears = 0, arcs = 0, splines = 0, dwells = 0;
+  uint64_t rapids = 0, linears = 0, arcs = 0, splines = 0, threads = 0, dwells = 0;
   double feedLength = 0, rapidLength = 0;
   struct Box {
     AxisVec lo, hi;

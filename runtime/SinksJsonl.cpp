@@ -42,6 +42,7 @@ std::string motionRecordJson(const MotionRecord &r) {
   case RecordKind::Linear:
   case RecordKind::Arc:
   case RecordKind::Spline:
+  case RecordKind::Thread:
     s += ",\"start\":";
     vec(s, r.start.data(), kAxes);
     s += ",\"end\":";
@@ -58,6 +59,14 @@ std::string motionRecordJson(const MotionRecord &r) {
         s += ",\"normal\":";
         vec(s, r.arcNormal().data(), 3);
       }
+    }
+    if (r.kind == RecordKind::Thread) {
+      s += ",\"lead\":";
+      num(s, r.value);
+      if (threadLeadChange(r) != 0) s += ",\"dlead\":", num(s, threadLeadChange(r));
+      fmt::format_to(std::back_inserter(s), ",\"along\":\"{}\",\"sync\":\"{}\",\"start_angle\":",
+                     threadAxisName((ThreadAxis)r.ivalue), threadSyncName(r.sync));
+      num(s, r.value2);
     }
     if (r.kind == RecordKind::Spline) {
       const SplineData &sp = r.spline();

@@ -33,14 +33,15 @@ void SummaryCollector::record(const MotionRecord &r) {
   AxisVec lo, hi;
   switch (r.kind) {
   case RecordKind::Rapid:
-  case RecordKind::Linear: {
+  case RecordKind::Linear:
+  case RecordKind::Thread: {
     for (int i = 0; i < kAxes; ++i) {
       lo[i] = std::min(r.start[i], r.end[i]);
       hi[i] = std::max(r.start[i], r.end[i]);
     }
     double len = linearLength(r.start, r.end);
     if (r.kind == RecordKind::Rapid) ++rapids, rapidLength += len;
-    else ++linears, feedLength += len;
+    else ++(r.kind == RecordKind::Thread ? threads : linears), feedLength += len;
     break;
   }
   case RecordKind::Arc: {
@@ -110,8 +111,9 @@ std::string SummaryCollector::text() const {
   if (!machine_.empty()) line("machine", machine_);
   line("blocks", std::to_string(blocks()));
   // Splines only when there are some: the summary of every other program stays as it was.
-  line("moves", fmt::format("{} (rapid {}, linear {}, arc {}{}), dwells {}", rapids + linears + arcs + splines, rapids,
-                            linears, arcs, splines ? fmt::format(", spline {}", splines) : "", dwells));
+  line("moves", fmt::format("{} (rapid {}, linear {}, arc {}{}{}), dwells {}", rapids + linears + arcs + splines + threads,
+                            rapids, linears, arcs, splines ? fmt::format(", spline {}", splines) : "",
+                            threads ? fmt::format(", thread {}", threads) : "", dwells));
   line("path length", fmt::format("{:.3f} mm (feed {:.3f}, rapid {:.3f})", feedLength + rapidLength, feedLength,
                                   rapidLength));
   line("cycle time", fmt::format("{} ({:.3f} s)", formatDuration(times_.totalTime), times_.totalTime));

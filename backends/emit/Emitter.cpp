@@ -85,6 +85,17 @@ private:
   void spindleOrient(const MotionRecord &r);
   void spindleMode(const MotionRecord &r);
   void spline(const MotionRecord &r);
+  // Reports `why` (when not empty) as the reason the record cannot be written; true then.
+  bool refused(const MotionRecord &r, const char *what, const std::string &why) {
+    if (why.empty()) return false;
+    diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write this " + what + " (" + why + "): " + printMotionRecord(r),
+                 "unsupported-code");
+    errors_ = true;
+    return true;
+  }
+  // Why this output cannot write the thread record exactly (empty: it can).
+  std::string threadRefusal(const MotionRecord &r) const;
+  void thread(const MotionRecord &r);
   void planeWord(Plane p, Words &w);
   void dwell(const MotionRecord &r);
   void comment(const std::string &text);
@@ -120,6 +131,8 @@ private:
   bool cssWritten_ = false;                 // G96 in force in the written program
   bool cssNeedsS_ = false;                  // a G96 waits in the block for its S word
   std::string surfaceWord_;                 // the last S written under G96
+  bool afterThread_ = false;                // the last motion written was a thread block
+  double startAngle_ = NAN;                 // the Sinumerik SF= in force (NAN: none written yet)
   bool flood_ = false, mist_ = false;            // written coolant state
   bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
 };
@@ -420,6 +433,71 @@ void Emitter::spline(const MotionRecord &r) {
   }
 }
 
+// LinuxCNC: G33 X Y Z K<lead per unit of path>, G33.1 for a rigid tap (its return record is
+// the tap's own retract); a chain is refused (rs274 traces every G33 block as a synchronisation
+// of its own). Sinumerik: G33 with the lead on the address of the axis that travels most (I X,
+// J Y, K Z), SF= the start angle; it runs consecutive G33 blocks as one thread.
+std::string Emitter::threadRefusal(const MotionRecord &r) const {
+  const bool lcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
+  if (!lcnc && st_.target != Target::Sinumerik)
+    return "only LinuxCNC (G33, G33.1: an ISO target of [controller] family \"linuxcnc\") and Sinumerik (G33) are written";
+  if (r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut) {
+    if (!lcnc) return "rigid tapping is written for LinuxCNC (G33.1) only";
+    return {};
+  }
+  if (lcnc && r.value2 != 0) return "LinuxCNC's G33 has no start angle";
+  if (lcnc && threadLeadChange(r) != 0) return "LinuxCNC has no variable-lead thread";
+  if (lcnc && r.sync == ThreadSync::Chain)
+    return "each LinuxCNC G33 block starts a synchronisation of its own, as rs274 traces it: a chained thread cannot be written";
+  if (!lcnc && r.sync == ThreadSync::Index && afterThread_)
+    return "Sinumerik chains consecutive G33 blocks: a new synchronisation right after a thread cannot be written";
+  return {};
+}
+
+void Emitter::thread(const MotionRecord &r) {
+  flushPending();
+  ensurePosition(r);
+  if (r.sync == ThreadSync::TapOut) {  // G33.1 has already come back: only the position follows
+    for (int i = 0; i < 3; ++i) {
+      formatNumber(r.end[i], fmt(WordClass::Axis), posText_[i]);
+      pos_[i] = roundTo(r.end[i], fmt(WordClass::Axis).decimals);
+    }
+    return;
+  }
+  Words w;
+  if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
+  const bool tap = r.sync == ThreadSync::TapIn;
+  const bool variable = threadLeadChange(r) != 0;  // Sinumerik G34/G35: F the lead change
+  const char *g = tap ? "G33.1" : variable ? (threadLeadChange(r) > 0 ? "G34" : "G35") : "G33";
+  if (motion_ != g) push(w, g);
+  motion_ = g;
+  size_t before = w.size();
+  axisWords(r.end, w, r);
+  if (w.size() == before) w.push_back("Z" + posText_[2]);  // a zero-length record stays a block
+  std::string word;
+  if (st_.target == Target::Sinumerik) {
+    int main = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::fabs(r.end[i] - r.start[i]) > std::fabs(r.end[main] - r.start[main])) main = i;
+    if (number(threadAxisLead(r, main), WordClass::Center, std::string(1, kCenterLetters[main]), r, word))
+      w.push_back(word);
+    if (variable) {  // the change of the main axis' lead per revolution, without its sign
+      double ratio = r.value > 0 ? threadAxisLead(r, main) / r.value : 0;
+      if (number(std::fabs(threadLeadChange(r)) * ratio, WordClass::Center, "F", r, word)) w.push_back(word);
+      feedText_.clear();  // F is no feed here: the next feed move writes its own
+    }
+    // SF= stays in force (it sets the thread start angle setting data): written on the first
+    // thread and when it changes.
+    if (r.sync == ThreadSync::Index && !(r.value2 == startAngle_) && number(r.value2, WordClass::Rotary, "SF=", r, word)) {
+      w.push_back(word);
+      startAngle_ = r.value2;
+    }
+  } else if (number(threadPathLead(r), WordClass::Center, "K", r, word)) {
+    w.push_back(word);
+  }
+  writeBlock(w, r.blockNumber);
+}
+
 // An oriented spindle stop at an angle: LinuxCNC `M19 R P [Q]`, Sinumerik `SPOS=ACP|ACN|DC()`.
 // Fanuc's M19 turns to the angle of a machine parameter, so no other ISO target can write one.
 void Emitter::spindleOrient(const MotionRecord &r) {
@@ -551,6 +629,14 @@ std::vector<std::string> Emitter::coolantCodes() {
 
 void Emitter::record(const MotionRecord &r) {
   if (finished_) return;
+  struct AfterThread {  // the record is a thread or another motion: noted once it is written
+    bool &flag;
+    const MotionRecord &r;
+    ~AfterThread() {
+      if (r.kind <= RecordKind::Arc || r.kind == RecordKind::Spline || r.kind == RecordKind::Thread)
+        flag = r.kind == RecordKind::Thread;
+    }
+  } afterThread{afterThread_, r};
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear: move(r); break;
@@ -566,14 +652,10 @@ void Emitter::record(const MotionRecord &r) {
   case RecordKind::Spline:
     // Written exactly (LinuxCNC G5.2/G5.3) or refused, never as chords: those would be a silent
     // approximation.
-    if (std::string why = splineRefusal(r); !why.empty()) {
-      diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write this spline (" + why + "): " +
-                              printMotionRecord(r),
-                   "unsupported-code");
-      errors_ = true;
-      break;
-    }
-    spline(r);
+    if (!refused(r, "spline", splineRefusal(r))) spline(r);
+    break;
+  case RecordKind::Thread:
+    if (!refused(r, "thread", threadRefusal(r))) thread(r);
     break;
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:

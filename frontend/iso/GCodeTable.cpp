@@ -130,6 +130,9 @@ static const GCodeInfo kRs274GCodes[] = {
     MODE(51, Motion, SplineQuadratic, "quadratic spline"),
     MODE(52, Motion, Nurbs, "NURBS control point"),
     MODE(53, Motion, NurbsEnd, "NURBS end"),
+    MODE(330, Motion, Thread, "spindle-synchronised motion"),
+    MODE(331, Motion, RigidTap, "rigid tapping"),
+    MODE(760, Motion, ThreadCycle, "threading cycle"),
 };
 
 const GCodeInfo *findRs274GCode(int32_t code10) {
@@ -154,7 +157,7 @@ static const GCodeInfo kTurningBoth[] = {
     SPECIAL(730, TurnCycle, NonModal, 73, "pattern repeating cycle"),
     UNSUP(740, NonModal, "peck drilling / grooving along Z"),
     UNSUP(750, NonModal, "peck grooving along X"),
-    UNSUP(760, NonModal, "multiple threading cycle"),
+    MODE(760, Motion, ThreadMulti, "multiple threading cycle"),
     UNSUP(830, Motion, "face deep-hole drilling cycle (C axis)"),
     UNSUP(840, Motion, "face tapping cycle (C axis)"),
     UNSUP(850, Motion, "face boring cycle (C axis)"),
@@ -167,7 +170,9 @@ static const GCodeInfo kTurningA[] = {
     SPECIAL(500, SetOffset, NonModal, 1, "coordinate system setting"),
     SPECIAL(503, SetOffset, NonModal, 2, "work coordinate system reset"),
     MODE(900, Motion, TurnAlongZ, "longitudinal turning cycle"),
-    UNSUP(920, Motion, "thread cutting cycle"),
+    MODE(320, Motion, Thread, "thread cutting"),
+    MODE(340, Motion, ThreadVariable, "variable-lead thread cutting"),
+    MODE(920, Motion, ThreadSingle, "thread cutting cycle"),
     MODE(940, Motion, TurnAlongX, "face turning cycle"),
     MODE(980, FeedMode, PerMinute, "feed per minute"),
     MODE(990, FeedMode, PerRev, "feed per revolution"),
@@ -180,7 +185,9 @@ static const int32_t kSharedA[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 
 // coordinate setting, G98/G99 return levels as in milling.
 static const GCodeInfo kTurningB[] = {
     MODE(770, Motion, TurnAlongZ, "longitudinal turning cycle"),
-    UNSUP(780, Motion, "thread cutting cycle"),
+    MODE(330, Motion, Thread, "thread cutting"),
+    MODE(340, Motion, ThreadVariable, "variable-lead thread cutting"),
+    MODE(780, Motion, ThreadSingle, "thread cutting cycle"),
     MODE(790, Motion, TurnAlongX, "face turning cycle"),
 };
 static const int32_t kSharedB[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 121, 131, 170, 180, 190,

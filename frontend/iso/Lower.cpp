@@ -19,7 +19,6 @@ static const char kMoveWords[] = "XYZABCUVW@^";  // words that make a block a mo
 // G codes that mean something else in RS274NGC than in the Fanuc table and are not lowered yet.
 static const char *rs274Meaning(int32_t code10) {
   switch (code10) {
-  case 760: return "RS274NGC threading cycle";
   case 870: return "RS274NGC back boring with I J K";
   case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
   default: return nullptr;
@@ -131,8 +130,10 @@ bool BlockLowerer::Block::classify() {
       }
       if (gi && L.flavour_ != Flavour::RS274 && (gi->code10 == 70 || gi->code10 == 80))
         gi = nullptr;  // LinuxCNC's lathe diameter/radius modes; no such code in the 808D table
-      if (gi && L.flavour_ == Flavour::RS274)
-        if (const GCodeInfo *r = findRs274GCode(gi->code10)) gi = r;
+      if (L.flavour_ == Flavour::RS274 && w.value >= 0 && w.value < 100000)  // also codes only rs274 has (G33.1)
+        if (const GCodeInfo *r = findRs274GCode((int32_t)std::llround(w.value * 10));
+            r && std::fabs(w.value * 10 - r->code10) < 1e-6)
+          gi = r;
       if (!gi) {
         L.diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
         ok = false;
@@ -441,7 +442,7 @@ bool BlockLowerer::Block::motion() {
   // LinuxCNC G5/G5.1 do not change rs274's motion mode: the next block moves as before them.
   const ModeValue m = L.motion_;
   const bool bezier = m == ModeValue::SplineCubic || m == ModeValue::SplineQuadratic;
-  if (bezier) L.motion_ = motionBefore;
+  if (bezier || m == ModeValue::ThreadMulti) L.motion_ = motionBefore;  // one-shot
   if (m == ModeValue::NurbsEnd && G(GGroup::Motion) && bw.hasAny(kMoveWords)) {
     for (const char *c = kMoveWords; *c; ++c)
       if (bw.has(*c)) {
@@ -455,6 +456,7 @@ bool BlockLowerer::Block::motion() {
     // G5/G5.1 always move (the executor reports missing axes as rs274 does); a G5.2 block
     // may give the first point's weight alone (P).
     bool moves = bw.hasAny(kMoveWords) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R')) ||
+                 (m == ModeValue::ThreadMulti && G(GGroup::Motion)) ||
                  (bezier && G(GGroup::Motion)) || (m == ModeValue::Nurbs && (G(GGroup::Motion) || bw.hasAny("PL")));
     if (moves) {
       const bool rs274 = L.flavour_ == Flavour::RS274;
@@ -497,6 +499,7 @@ bool BlockLowerer::Block::motion() {
       if (bw.has('Q') && (m == ModeValue::SplineCubic || params.find('Q') != std::string_view::npos))
         op.set("Q", take('Q', Scale::Linear));
       if (m == ModeValue::Nurbs && bw.has('L')) op.set("L", take('L', Scale::None));  // the order
+      if (isThreadMotion(m) && !threadWords(op, m)) return false;
       // The repeat count: K (Fanuc/808D) or L; rs274 has L only.
       if (cycle && (bw.has('L') || (bw.has('K') && !rs274))) op.set("L", take(bw.has('L') ? 'L' : 'K', Scale::None));
       if (!b.corner.empty() && (arc || m == ModeValue::Linear)) {
@@ -513,6 +516,43 @@ bool BlockLowerer::Block::motion() {
     return false;
   }
   return true;
+}
+
+// The words of the thread codes (docs/ISO-WORDS.md): LinuxCNC G33/G33.1 K the lead, G76 P I J
+// K R Q H E L; the 808D's G32/G33 Q the start angle, G92/G78 R the taper and Q, G76 P Q R (the
+// data block: P the digits m r a, Q and R lengths; with X/Z: R taper, P height, Q first cut; its
+// P and Q lengths without a decimal point are least input increments, 0.001 mm, whatever the
+// decimal mode: L3842-3843).
+bool BlockLowerer::Block::threadWords(Op &op, ModeValue m) {
+  struct W { char c; Scale s; };
+  auto words = [&](std::initializer_list<W> list) {
+    for (const W &w : list)
+      if (bw.has(w.c)) add(op, w.c, take(w.c, w.s));
+  };
+  const bool rs274 = L.flavour_ == Flavour::RS274;
+  switch (m) {
+  case ModeValue::Thread:
+  case ModeValue::RigidTap:
+    if (!rs274) return words({{'Q', Scale::Rotary}}), true;
+    if (!bw.has('K')) {
+      L.diags_.error(b.loc, fmt::format("{} needs K (the lead per revolution)", m == ModeValue::Thread ? "G33" : "G33.1"),
+                     "missing-word");
+      return false;
+    }
+    words({{'K', Scale::Linear}});
+    return true;
+  case ModeValue::ThreadCycle:
+    words({{'P', Scale::Linear}, {'I', Scale::Linear}, {'J', Scale::Linear}, {'K', Scale::Linear}, {'R', Scale::None},
+           {'Q', Scale::None}, {'H', Scale::None}, {'E', Scale::Linear}, {'L', Scale::None}});
+    return true;
+  case ModeValue::ThreadSingle: words({{'R', Scale::Linear}, {'Q', Scale::Rotary}}); return true;
+  case ModeValue::ThreadVariable: words({{'K', Scale::Linear}}); return true;  // G34 K the lead change
+  case ModeValue::ThreadMulti:  // P and Q lengths in least increments without a point (L3842-3843)
+    if (bw.hasAny("XZUW")) words({{'R', Scale::Linear}, {'P', Scale::Increment}, {'Q', Scale::Increment}});
+    else words({{'P', Scale::None}, {'Q', Scale::Increment}, {'R', Scale::Linear}});
+    return true;
+  default: return true;
+  }
 }
 
 // Stops and other M codes.

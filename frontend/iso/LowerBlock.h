@@ -16,7 +16,9 @@ using ir::Region;
 
 inline constexpr char kOffsetAxes[] = "XYZABC";
 
-enum class Scale : uint8_t { None, Linear, Rotary, Feed, DwellX };
+// Increment: a length that is always in least input increments without a decimal point, even in
+// calculator mode (the 808D's G74-G76 P and Q, seed L3842-3843).
+enum class Scale : uint8_t { None, Linear, Rotary, Feed, DwellX, Increment };
 
 inline Scale scaleOf(char letter) {
   switch (letter) {
@@ -77,8 +79,9 @@ struct BlockLowerer::Block {
   // Divisor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1). Dividing
   // by a power of ten keeps X1234 in IS-B exactly 1.234.
   double factor(Scale s) const {
-    if (L.decimal_ == 0) return 1.0;
     bool inch = L.units_ == ModeValue::Inch;
+    if (s == Scale::Increment) return L.decimal_ == 2 ? (inch ? 1e5 : 1e4) : (inch ? 1e4 : 1e3);
+    if (L.decimal_ == 0) return 1.0;
     switch (s) {
     case Scale::Linear: return L.decimal_ == 1 ? (inch ? 1e4 : 1e3) : (inch ? 1e5 : 1e4);
     case Scale::Rotary: return L.decimal_ == 1 ? 1e3 : 1e4;
@@ -174,6 +177,7 @@ struct BlockLowerer::Block {
   bool speedOp();        // S, G96/G97, G50 S / G92 S (LowerTurning.cpp)
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();
+  bool threadWords(Op &op, ModeValue m);  // the words of G32/G33/G33.1/G76/G92/G78
   bool stops();
   bool callsAndReturn();
   bool finish();         // assignments, unused words

@@ -1,5 +1,5 @@
 (The engines test runs this on --machine=%S/lathe-b.toml)
 G1 U2. F1.
 G50 X10.
-G78 X10. Z-5. F1.
+G31 X10. F1.
 M30
