@@ -1,4 +1,5 @@
 #include "ir/MotionIR.h"
+#include "ir/Mat3.h"
 #include "ir/TextQuote.h"
 
 #include <fmt/format.h>
@@ -310,6 +311,44 @@ FrameMatrix frameMatrix(const MotionRecord &r) {
   for (int i = 0; i < 12; ++i)
     if (const double *v = r.param(kFrameKeys[i])) m[i] = *v;
   return m;
+}
+
+static const char *const kRotaryKeys[3] = {"ma", "mb", "mc"};
+
+void setRotaryShift(MotionRecord &r, const RotaryShift &s) {
+  for (int i = 0; i < 3; ++i)
+    if (s[i] != 0) r.setParam(kRotaryKeys[i], s[i]);
+}
+
+RotaryShift rotaryShift(const MotionRecord &r) {
+  RotaryShift s{};
+  for (int i = 0; i < 3; ++i)
+    if (const double *v = r.param(kRotaryKeys[i])) s[i] = *v;
+  return s;
+}
+
+void WorkFrame::note(const MotionRecord &r) {
+  if (r.kind == RecordKind::ToolLength) {
+    toolZ_ = r.value, toolX_ = r.value2;
+    return;
+  }
+  if (r.kind != RecordKind::FrameChange) return;
+  FrameMatrix m = frameMatrix(r);
+  double L[3][3];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) L[i][j] = m[i * 4 + j];
+    origin_[i] = m[i * 4 + 3];
+  }
+  mat3Inverse(L, inv_);  // frames are never singular
+  rotary_ = rotaryShift(r);
+}
+
+AxisVec WorkFrame::work(const AxisVec &machine) const {
+  double d[3] = {machine[0] - toolX_ - origin_[0], machine[1] - origin_[1], machine[2] - toolZ_ - origin_[2]};
+  AxisVec w = machine;
+  for (int i = 0; i < 3; ++i) w[i] = inv_[i][0] * d[0] + inv_[i][1] * d[1] + inv_[i][2] * d[2];
+  for (int i = 0; i < 3; ++i) w[3 + i] = machine[3 + i] - rotary_[i];
+  return w;
 }
 
 std::string TiltedArcCheck::message(const char *consumer, const MotionRecord &r) {

@@ -208,6 +208,26 @@ using FrameMatrix = std::array<double, 12>;
 void setFrameMatrix(MotionRecord &r, const FrameMatrix &m);
 // Reads m00..m23; an entry the record lacks is the identity's.
 FrameMatrix frameMatrix(const MotionRecord &r);
+// Its rotary axes: machine A B C = work A B C + shift, named numbers ma mb mc (written when not 0).
+using RotaryShift = std::array<double, 3>;
+void setRotaryShift(MotionRecord &r, const RotaryShift &s);
+RotaryShift rotaryShift(const MotionRecord &r);
+
+// Work coordinates beside machine coordinates: follows a stream's FrameChange and ToolLength
+// records and gives the work (program) position of a machine position, in mm (a diameter-
+// programmed X as a radius) and degrees: machine XYZ = M · work + the tool offset, A B C = work
+// + shift. Emitters, lint and the JSONL trace read positions through it.
+class WorkFrame {
+public:
+  void note(const MotionRecord &r);  // FrameChange and ToolLength records; others are ignored
+  AxisVec work(const AxisVec &machine) const;
+
+private:
+  double inv_[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::array<double, 3> origin_{};  // M's translation
+  RotaryShift rotary_{};
+  double toolZ_ = 0, toolX_ = 0;
+};
 
 // The plane's own unit normal (+Z, +Y, +X for XY, ZX, YZ).
 std::array<double, 3> planeNormal(Plane p);

@@ -75,11 +75,14 @@ void Executor::Impl::noteFrame(const char *what) {
     f[i * 4 + 2] = ez[i] - o[i];
     f[i * 4 + 3] = o[i];
   }
-  if (f == lastFrame) return;
-  lastFrame = f;
+  RotaryShift rot;
+  for (int i = 0; i < 3; ++i) rot[i] = o[3 + i];  // machine A B C of work 0
+  if (f == lastFrame && rot == lastRotary) return;
+  lastFrame = f, lastRotary = rot;
   MotionRecord r = record(RecordKind::FrameChange);
   r.text = what;
   setFrameMatrix(r, f);
+  setRotaryShift(r, rot);
   emit(r);
 }
 

@@ -209,6 +209,7 @@ struct Executor::Impl {
   // which has its own record) differs from the last one emitted; `what` names the cause.
   void noteFrame(const char *what);
   FrameMatrix lastFrame{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  RotaryShift lastRotary{};
   // Errors for what ncc does not do under a programmable mirror, scaling or rotation.
   bool frameForbids(const char *what);
   // The offset frame's plane `pl` maps onto the same machine plane with equal scale on both axes

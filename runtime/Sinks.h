@@ -15,7 +15,8 @@ namespace ncc {
 // One JSON object per record and line, numbers in shortest round-trip form (full precision),
 // non-finite numbers as null. Keys: kind, file, line, col, n, then the kind's fields (see
 // docs/PLANNER.md "JSONL trace").
-std::string motionRecordJson(const MotionRecord &r);
+// `work`: the work position of a motion record's end (WorkFrame), written as "work".
+std::string motionRecordJson(const MotionRecord &r, const AxisVec *work = nullptr);
 
 class JsonlTraceWriter : public MotionSink {
 public:
@@ -26,6 +27,7 @@ public:
 private:
   std::FILE *out_;
   std::string line_;
+  WorkFrame frame_;
 };
 
 // Counts and measures the record stream for the run summary.

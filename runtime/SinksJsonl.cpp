@@ -30,7 +30,7 @@ void str(std::string &s, const std::string &t) {
 
 }  // namespace
 
-std::string motionRecordJson(const MotionRecord &r) {
+std::string motionRecordJson(const MotionRecord &r, const AxisVec *work) {
   std::string s = "{\"kind\":\"";
   s += recordKindName(r.kind);
   s += '"';
@@ -47,6 +47,10 @@ std::string motionRecordJson(const MotionRecord &r) {
     vec(s, r.start.data(), kAxes);
     s += ",\"end\":";
     vec(s, r.end.data(), kAxes);
+    if (work) {
+      s += ",\"work\":";
+      vec(s, work->data(), kAxes);
+    }
     if (r.kind != RecordKind::Rapid) {
       s += ",\"feed\":";
       num(s, r.feed);
@@ -128,7 +132,9 @@ std::string motionRecordJson(const MotionRecord &r) {
 }
 
 void JsonlTraceWriter::record(const MotionRecord &r) {
-  line_ = motionRecordJson(r);
+  frame_.note(r);
+  AxisVec work = frame_.work(r.end);
+  line_ = motionRecordJson(r, &work);
   line_ += '\n';
   std::fwrite(line_.data(), 1, line_.size(), out_);
 }

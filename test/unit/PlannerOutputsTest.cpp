@@ -288,7 +288,8 @@ TEST(JsonlTrace, OneObjectPerRecordFullPrecision) {
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0],
             "{\"kind\":\"linear\",\"file\":1,\"line\":12,\"col\":4,\"n\":5,\"start\":[0,0,0,0,0,0],"
-            "\"end\":[0.30000000000000004,0.3333333333333333,0,0,0,0],\"feed\":1234.5,\"exact_stop\":true}\n");
+            "\"end\":[0.30000000000000004,0.3333333333333333,0,0,0,0],"
+            "\"work\":[0.30000000000000004,0.3333333333333333,0,0,0,0],\"feed\":1234.5,\"exact_stop\":true}\n");
   EXPECT_EQ(rows[1], "{\"kind\":\"comment\",\"file\":1,\"line\":13,\"col\":1,\"text\":\"say \\\"hi\\\"\\\\\\n\"}\n");
   EXPECT_NE(rows[2].find("\"plane\":\"zx\",\"turns\":-2"), std::string::npos) << rows[2];
   EXPECT_NE(rows[3].find("\"value\":null"), std::string::npos) << rows[3];
