@@ -666,7 +666,10 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::WorkOffset: {
     static const char *kSystems[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
     if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
-    if (c.sub != x.st.workOffset && !x.frameForbids("changing the work offset")) return false;
+    // The ISO manuals forbid it under G68/G51/G51.1; Sinumerik frames are independent members of
+    // one chain (a settable frame under the programmable one), so G54… under $P_PFRAME is fine.
+    if (c.sub != x.st.workOffset && x.machine.dialect != "sinumerik" && !x.frameForbids("changing the work offset"))
+      return false;
     // LinuxCNC re-reads the tables only when the system changes; Sinumerik on every G54….
     bool apply = c.sub != x.st.workOffset || x.offsetWrite != OffsetWrite::OnChange;
     x.st.workOffset = c.sub;
