@@ -62,9 +62,9 @@ void Executor::Impl::noteFrame(const char *what) {
   auto toMachine = [&](double x, double y, double z) {
     AxisVec p{};
     p[0] = x, p[1] = y, p[2] = z;
-    for (int i = 0; i < 3; ++i) p[i] += frameOffset(i);
+    for (int i = 0; i < kAxes; ++i) p[i] += frameOffset(i);  // A B C too: their shift
     AxisVec m = frameOut(p);
-    for (int i = 0; i < 3; ++i) m[i] -= toolOffset(i);
+    for (int i = 0; i < kAxes; ++i) m[i] -= toolOffset(i);
     return m;
   };
   AxisVec o = toMachine(0, 0, 0), ex = toMachine(1, 0, 0), ey = toMachine(0, 1, 0), ez = toMachine(0, 0, 1);
