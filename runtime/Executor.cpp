@@ -718,9 +718,7 @@ bool Executor::restoreModal(SourceLoc loc) {
   Impl &x = *impl_;
   const Impl::SavedModal &s = x.savedModal.back();
   x.loc = loc;
-  bool framed = !std::equal(&s.pf.composite.m[0][0], &s.pf.composite.m[0][0] + 9, &x.pf.composite.m[0][0]) ||
-                s.pf.composite.t != x.pf.composite.t || s.pf.local != x.pf.local;
-  if (framed) {
+  if (!x.pf.sameTransform(s.pf.composite, s.pf.local)) {
     if (x.comp.active())
       return x.error("the return from a SAVE subprogram restores the programmable frame: not with cutter radius "
                      "comp on",

@@ -75,11 +75,9 @@ bool asWorkOffset(const FrameValue &f, double unit, AxisVec &offset, double &rot
 }  // namespace
 
 FrameValue Executor::Impl::programmableFrame() const {
-  const Affine &c = pf.composite;
-  if (pfValue.set && pfValue.composite.t == c.t && std::equal(&c.m[0][0], &c.m[0][0] + 9, &pfValue.composite.m[0][0]) &&
-      pfValue.local == pf.local)
+  if (pfValue.set && pf.sameTransform(pfValue.composite, pfValue.local))
     return pfValue.frame;  // as written (with its coarse/fine split)
-  return frameOf(c.m, c.t, &pf.local[3], scale());
+  return frameOf(pf.composite.m, pf.composite.t, &pf.local[3], scale());
 }
 
 bool Executor::readFrame(const SysRef &ref, FrameValue &out, std::string &err) const {
@@ -121,16 +119,10 @@ bool Executor::writeFrame(const SysRef &ref, const FrameValue &f, SourceLoc loc,
     if (!rotaryPlain(f, err, what.c_str())) return false;
     ProgrammableFrame &pf = x.pf;
     pf.clearMirror(), pf.clearScale(), pf.clearRotation();
-    FrameValue linear = f;  // the matrix in the rotation slot, the offsets in the local shift
-    bool plain = true;
+    // The matrix in the rotation slot, the offsets in the local shift.
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) plain = plain && linear.L[i][j] == (i == j ? 1.0 : 0.0);
-    if (!plain) {
-      pf.rotationLevels = 1;
-      pf.rotation[0] = Affine{};
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) pf.rotation[0].m[i][j] = f.L[i][j];
-    }
+      for (int j = 0; j < 3; ++j) pf.rotation[0].m[i][j] = f.L[i][j];
+    pf.rotationLevels = pf.rotation[0].linearIdentity() ? 0 : 1;
     for (int i = 0; i < kAxes; ++i) pf.local[i] = f.offset(i) * (i < 3 ? u : 1.0);
     pf.update();
     x.pfValue = {true, f, pf.composite, pf.local};

@@ -12,6 +12,8 @@
 #include "ir/MotionIR.h"
 #include "runtime/Geometry.h"
 
+#include <algorithm>
+
 namespace ncc {
 
 // p' = m p + t on X Y Z (rotary axes are not transformed by a frame).
@@ -46,6 +48,10 @@ struct ProgrammableFrame {
   bool linear = false;  // a mirror, scaling or rotation is active (else only the local shift)
 
   void update();
+  // The same transform (composite and local shift) as `o`, exactly: what was written still holds.
+  bool sameTransform(const Affine &c, const AxisVec &l) const {
+    return composite.t == c.t && local == l && std::equal(&composite.m[0][0], &composite.m[0][0] + 9, &c.m[0][0]);
+  }
   // The linear part is a rotation times one scale factor (a mirror allowed): circles stay circles.
   bool similar() const;
   bool mirrorOn() const { return mirrorAxes[0] || mirrorAxes[1] || mirrorAxes[2]; }
