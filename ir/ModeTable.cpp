@@ -98,4 +98,11 @@ bool wordFromLetter(char c, Word &out) {
   return true;
 }
 
+bool wordFromKey(std::string_view key, Word &out) {
+  if (key.size() == 1) return wordFromLetter(key[0], out);
+  for (int i = 0; i < kWords; ++i)
+    if (key == kWordKeys[i]) return out = (Word)i, true;
+  return false;
+}
+
 }  // namespace ncc

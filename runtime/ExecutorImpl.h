@@ -11,7 +11,7 @@
 
 namespace ncc {
 
-constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // the X Y Z A B C words of a MachineCmd
+constexpr WordMask kAxisMask = (WordMask(1) << kAxes) - 1;  // the axis words X..W of a MachineCmd
 
 // Cutter compensation computes in XY: records of a G18/G19 path reach it with their axes turned
 // so that the plane's first and second axes are X and Y (a cyclic permutation, which keeps the
@@ -136,7 +136,7 @@ struct Executor::Impl {
   // mm per unit of an axis word; a diameter-programmed X (machine [controller]) is halved here,
   // so every dialect, offset word and position read-back shares it (arc I/K and R are radii).
   double axisScale(int axis) const {
-    return axis == 0 && machine.controller.diameterProgramming ? scale() * 0.5 : axis < 3 ? scale() : 1.0;
+    return axis == 0 && machine.controller.diameterProgramming ? scale() * 0.5 : isLengthAxis(axis) ? scale() : 1.0;
   }
   double offset(int axis) const {
     return g5xActive[axis] + g92[axis] + pf.local[axis] + toolOffset(axis);
@@ -209,7 +209,7 @@ struct Executor::Impl {
   // which has its own record) differs from the last one emitted; `what` names the cause.
   void noteFrame(const char *what);
   FrameMatrix lastFrame{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-  RotaryShift lastRotary{};
+  AxisShift lastShift{};
   // Errors for what ncc does not do under a programmable mirror, scaling or rotation.
   bool frameForbids(const char *what);
   // The offset frame's plane `pl` maps onto the same machine plane with equal scale on both axes

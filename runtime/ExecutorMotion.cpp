@@ -32,7 +32,7 @@ constexpr double kArcRelTolerance = 0.001;
 constexpr double kArcAbsTolMM = 0.02 * M_SQRT2, kArcAbsTolInch = 0.002 * M_SQRT2;
 
 // Words that give a move a target: the axes and RS274NGC's polar @ ^.
-const uint32_t kTargetMask = kAxisMask | wordBit(Word::PolarR) | wordBit(Word::PolarA);
+const WordMask kTargetMask = kAxisMask | wordBit(Word::PolarR) | wordBit(Word::PolarA);
 
 }  // namespace
 

@@ -57,7 +57,7 @@ private:
 
   const NumberFormat &fmt(WordClass c) const { return st_.formats[(size_t)c]; }
   const std::string &code(Code c) const { return st_.codes[(size_t)c]; }
-  static WordClass axisClass(int axis) { return axis < 3 ? WordClass::Axis : WordClass::Rotary; }
+  static WordClass axisClass(int axis) { return isLengthAxis(axis) ? WordClass::Axis : WordClass::Rotary; }
 
   bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
   void badNumber(double v, const std::string &letter, const MotionRecord &r);

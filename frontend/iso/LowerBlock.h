@@ -14,7 +14,9 @@ using ir::Op;
 using ir::OpKind;
 using ir::Region;
 
-inline constexpr char kOffsetAxes[] = "XYZABC";
+// The axis words of offsets, homing and G53: U V W are axes too, except on lathes, where they
+// are the incremental X Y Z.
+inline const char *offsetAxes(bool lathe) { return lathe ? "XYZABC" : "XYZABCUVW"; }
 
 // Increment: a length that is always in least input increments without a decimal point, even in
 // calculator mode (the 808D's G74-G76 P and Q, seed L3842-3843).
