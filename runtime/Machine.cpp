@@ -352,6 +352,7 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"m19_angle", &Controller::m19Angle, 0, 360},
     {"boring_orient_angle", &Controller::boringOrientAngle, 0, 360},
     {"boring_lift", &Controller::boringLift, 0, 4},
+    {"peck_retract", &Controller::peckRetract, 0, 1000},
     {"tool_write", &Controller::toolWrite, 0, 0, false, "on-select immediate"},
     {"offset_memory", NodeReader(readOffsetMemory)},
     {"offset_numbers", NodeReader(readOffsetNumbers)},
