@@ -11,7 +11,6 @@ namespace ncc::emit::detail {
 std::string Emitter::threadRefusal(const MotionRecord &r) const {
   if (st_.lathe && st_.target == Target::ISO) {  // the 808D/Fanuc lathe's G32 (system B G33)
     if (r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut) return "rigid tapping is not written for lathes";
-    if (threadLeadChange(r) != 0) return "the variable-lead G34 is not written yet";
     return {};
   }
   const bool lcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
@@ -42,7 +41,7 @@ void Emitter::thread(const MotionRecord &r) {
   const bool tap = r.sync == ThreadSync::TapIn;
   const bool variable = threadLeadChange(r) != 0;  // Sinumerik G34/G35: F the lead change
   const char *g = tap ? "G33.1" : variable ? (threadLeadChange(r) > 0 ? "G34" : "G35") : "G33";
-  if (!st_.threadCode.empty()) g = st_.threadCode.c_str();
+  if (!st_.threadCode.empty()) g = variable ? "G34" : st_.threadCode.c_str();  // the 808D's G34 F K
   if (motion_ != g) push(w, g);
   motion_ = g;
   size_t before = w.size();
@@ -77,11 +76,17 @@ void Emitter::thread(const MotionRecord &r) {
 // The 808D/Fanuc lathe thread (seed 001 2.6): F the lead along the axis the executor measures it
 // on (Z up to a 45 degree taper, X beyond), Q the start angle of a new synchronisation; a thread
 // block without Q right after a thread chains on, so a new one after a thread writes Q0 too. F
-// stays the modal feed on the controller.
+// stays the modal feed on the controller. G34 adds K, the lead's change per revolution along the
+// same axis (it always starts a synchronisation of its own).
 void Emitter::latheThreadWords(const MotionRecord &r, Words &w) {
   const int along = std::fabs(r.end[0] - r.start[0]) <= std::fabs(r.end[2] - r.start[2]) ? 2 : 0;
   std::string word;
   if (number(threadAxisLead(r, along), WordClass::Feed, "F", r, word) && word != feedText_) w.push_back(word), feedText_ = word;
+  if (const double dlead = threadLeadChange(r); dlead != 0) {
+    const double ratio = r.value > 0 ? threadAxisLead(r, along) / r.value : 0;
+    if (number(dlead * ratio, WordClass::Center, "K", r, word)) w.push_back(word);
+    return;
+  }
   if (r.sync == ThreadSync::Index && (afterThread_ || r.value2 != 0) && number(r.value2, WordClass::Rotary, "Q", r, word))
     w.push_back(word);
 }
