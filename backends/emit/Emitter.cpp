@@ -393,14 +393,13 @@ void Emitter::record(const MotionRecord &r) {
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:
     // An ISO lathe's T<tt><oo>: offset 00, the positions already hold the tool's offsets.
-    if (st_.lathe && st_.target == Target::ISO && (r.ivalue < 0 || r.ivalue > 99)) {
+    if (latheIso() && (r.ivalue < 0 || r.ivalue > 99)) {
       diags_.error(r.loc, "the [" + st_.section + "] emitter writes lathe tools 0 to 99 (T<tt>00): " + printMotionRecord(r),
                    "unsupported-code");
       errors_ = true;
       break;
     }
-    addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, st_.lathe && st_.target == Target::ISO ? 2 : st_.toolDigits) +
-                                       (st_.lathe && st_.target == Target::ISO ? "00" : ""), r);
+    addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, latheIso() ? 2 : st_.toolDigits) + (latheIso() ? "00" : ""), r);
     break;
   case RecordKind::ToolChange:
     // The change is a block of its own, together with the T word that prepared it.

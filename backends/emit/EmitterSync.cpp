@@ -9,7 +9,7 @@ namespace ncc::emit::detail {
 // of its own). Sinumerik: G33 with the lead on the address of the axis that travels most (I X,
 // J Y, K Z), SF= the start angle; it runs consecutive G33 blocks as one thread.
 std::string Emitter::threadRefusal(const MotionRecord &r) const {
-  if (st_.lathe && st_.target == Target::ISO) {  // the 808D/Fanuc lathe's G32 (system B G33)
+  if (latheIso()) {  // the 808D/Fanuc lathe's G32 (system B G33)
     if (r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut) return "rigid tapping is not written for lathes";
     return {};
   }
@@ -41,14 +41,14 @@ void Emitter::thread(const MotionRecord &r) {
   const bool tap = r.sync == ThreadSync::TapIn;
   const bool variable = threadLeadChange(r) != 0;  // Sinumerik G34/G35: F the lead change
   const char *g = tap ? "G33.1" : variable ? (threadLeadChange(r) > 0 ? "G34" : "G35") : "G33";
-  if (!st_.threadCode.empty()) g = variable ? "G34" : st_.threadCode.c_str();  // the 808D's G34 F K
+  if (latheIso()) g = variable ? "G34" : st_.threadCode.c_str();  // the 808D's G34 F K
   if (motion_ != g) push(w, g);
   motion_ = g;
   size_t before = w.size();
   axisWords(r.end, w, r);
   if (w.size() == before) w.push_back("Z" + posText_[2]);  // a zero-length record stays a block
   std::string word;
-  if (!st_.threadCode.empty()) {
+  if (latheIso()) {
     latheThreadWords(r, w);
   } else if (st_.target == Target::Sinumerik) {
     int main = 0;
@@ -135,7 +135,7 @@ void Emitter::spindleMode(const MotionRecord &r) {
   };
   const bool css = r.ivalue != 0;
   const bool linuxcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
-  const bool latheIso = !st_.speedLimitCode.empty();
+  const bool latheIso = this->latheIso();
   if (css && !linuxcnc && !latheIso && st_.target != Target::Sinumerik)
     return refuse("writes constant surface speed (G96) only for LinuxCNC, Sinumerik and lathes");
   if (css && std::fabs(r.value2) > 1e-9)
