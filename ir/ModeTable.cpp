@@ -39,6 +39,8 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::ThreadSingle, ModeGroup::Motion, "thread_single"},
     {ModeValue::ThreadMulti, ModeGroup::Motion, "thread_multi"},
     {ModeValue::ThreadVariable, ModeGroup::Motion, "thread_variable"},
+    {ModeValue::PeckAlongZ, ModeGroup::Motion, "peck_z"},
+    {ModeValue::PeckAlongX, ModeGroup::Motion, "peck_x"},
     {ModeValue::XY, ModeGroup::Plane, "xy"},
     {ModeValue::ZX, ModeGroup::Plane, "zx"},
     {ModeValue::YZ, ModeGroup::Plane, "yz"},

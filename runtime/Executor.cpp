@@ -175,7 +175,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
                      "spline-invalid");
       if (v == ModeValue::NurbsEnd && !nurbsEnd()) return false;
       if (v == ModeValue::SplineCubic || v == ModeValue::SplineQuadratic) splineReturn = st.motion;
-      if (v == ModeValue::ThreadMulti && st.motion != v) threadReturn = st.motion;
+      if ((v == ModeValue::ThreadMulti || isPeckMotion(v)) && st.motion != v) threadReturn = st.motion;  // one-shot
       if (v != st.motion) turnSet = false;  // a new G90/G94 run takes its words afresh
       st.motion = v;
       if (!isCycleMotion(v)) {

@@ -316,6 +316,9 @@ struct Executor::Impl {
   bool turnSet = false;
   AxisVec turnEnd{};
   double turnTaper = 0;
+  // --- lathe peck cycles G74/G75 (ExecutorTurning.cpp) ---
+  bool peckCycle(const MachineCmd &c);
+  double peckRetract = -1;  // e of the last G74/G75 R, mm; < 0: never programmed (the machine's)
   // --- thread cutting (ExecutorThread.cpp) ---
   // Spindle turning at a speed, no compensation, no rotation/scaling/mirror.
   bool threadAllowed(const char *code);
@@ -330,7 +333,7 @@ struct Executor::Impl {
   bool threadChain = false;  // the last motion record was a thread (an 808D G32 may chain on)
   double threadSpeed = 0;    // the spindle of the last thread record (a chain must keep it)
   int threadSpindle = 0;
-  ModeValue threadReturn = ModeValue::Rapid;  // the motion mode an 808D G76 block gives back
+  ModeValue threadReturn = ModeValue::Rapid;  // the motion mode an 808D G76 (G74, G75) block gives back
   struct ThreadData {  // 808D G76 P(m r a) Q R, modal
     bool set = false;
     int finishPasses = 1;

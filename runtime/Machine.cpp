@@ -352,6 +352,7 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"m19_angle", &Controller::m19Angle, 0, 360},
     {"boring_orient_angle", &Controller::boringOrientAngle, 0, 360},
     {"boring_lift", &Controller::boringLift, 0, 4},
+    {"peck_retract", &Controller::peckRetract, 0, 1000},
     {"tool_write", &Controller::toolWrite, 0, 0, false, "on-select immediate"},
     {"offset_memory", NodeReader(readOffsetMemory)},
     {"offset_numbers", NodeReader(readOffsetNumbers)},
@@ -687,6 +688,11 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
         c.error(doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
                 std::string("axis ") + kAxisNames[i] + ": kinematics \"" + m.kinematics + "\" needs it linear");
     chainChecks(c, doc, m);
+    // ISO lathes read U V W as the incremental X Y Z.
+    for (int i = kBaseAxes; i < kAxes; ++i)
+      if (m.axes[i].present && m.controller.lathe())
+        c.error(doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
+                std::string("axis ") + kAxisNames[i] + ": a lathe reads U V W as the incremental X Y Z, it cannot have the axis");
     // One name per axis: a name may not repeat, nor be the letter of another described axis.
     for (int i = 0; i < kAxes; ++i)
       for (int j = 0; j < i && m.axes[i].present; ++j)

@@ -89,6 +89,9 @@ struct Controller {
   double m19Angle = 0;
   double boringOrientAngle = 0;
   int boringLift = 0;
+  // The retract e after each peck of the lathe's G74/G75 until a program gives `G74 R` (808D GUD
+  // _ZSFI[29]), mm. 1 mm as the 808D's milling peck retract _ZSFR[1] takes for 0.
+  double peckRetract = 1.0;
   // Key tool_write: "on-select" (default) or "immediate".
   std::string toolWrite = "on-select";
   ToolWrite toolWritePolicy() const { return toolWrite == "immediate" ? ToolWrite::Immediate : ToolWrite::OnSelect; }

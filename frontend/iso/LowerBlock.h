@@ -180,6 +180,7 @@ struct BlockLowerer::Block {
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();
   bool threadWords(Op &op, ModeValue m);  // the words of G32/G33/G33.1/G76/G92/G78
+  void peckWords(Op &op);                  // P Q R of the lathe's G74/G75 (LowerTurning.cpp)
   bool stops();
   bool callsAndReturn();
   bool finish();         // assignments, unused words

@@ -434,7 +434,7 @@ TEST(Machine, ShippedMachinesLoad) {
       EXPECT_TRUE(Machine::load(e.path().string(), m, err)) << err;
       ++n;
     }
-  EXPECT_EQ(n, 13);  // default, 8 examples, 3 emitter test machines, the oracle machine
+  EXPECT_EQ(n, 14);  // default, 8 examples, 4 emitter test machines, the oracle machine
   // The embedded text is the file.
   std::ifstream f(root + "/runtime/machines/default-mill.toml");
   std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
