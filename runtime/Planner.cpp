@@ -190,17 +190,18 @@ double Planner::cornerSpeed(const AxisVec &from, const AxisVec &to, double c, do
 }
 
 void Planner::push(const MotionRecord &r) {
+  // The slot is reused as it is: every field the move needs is set below (a full reset of the
+  // slot cost more than the rest of planning a straight move).
   Pending &p = at(count_);
-  // Reset in place: cheaper than assigning a temporary (one zeroing, no move, no second destructor).
-  p.~Pending();
-  new (&p) Pending{};
   p.seg.record = r;
   p.seg.record.text.clear();
+  p.seg.spline.reset();
   lastPos_ = r.end;
   if (r.kind == RecordKind::Arc) {
     p.seg.arc = arcGeometry(r);
     p.length = p.seg.arc.length;
     Vec3 t0 = arcTangent(p.seg.arc, 0), t1 = arcTangent(p.seg.arc, 1);
+    p.tIn = p.tOut = AxisVec{};
     for (int i = 0; i < 3; ++i) p.tIn[i] = t0[i], p.tOut[i] = t1[i];
     if (p.length > 0)
       for (int i = 3; i < kAxes; ++i) p.tIn[i] = p.tOut[i] = (r.end[i] - r.start[i]) / p.length;
@@ -210,6 +211,7 @@ void Planner::push(const MotionRecord &r) {
     p.seg.record.extra.reset();
     p.length = p.seg.spline->length();
     Vec3 t0 = p.seg.spline->startTangent(), t1 = p.seg.spline->endTangent();
+    p.tIn = p.tOut = AxisVec{};
     for (int i = 0; i < 3; ++i) p.tIn[i] = t0[i], p.tOut[i] = t1[i];
   } else {
     p.length = linearLength(r.start, r.end);

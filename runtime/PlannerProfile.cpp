@@ -56,17 +56,19 @@ void changeAt(double vStart, double dv, double a, double j, double tau, double &
   acc = c.sign * (c.apk - j * t3);
 }
 
-// Time within [0, hi] at which s0 + v t + k2 t^2 + k3 t^3 reaches target (increasing there):
-// Newton steps safeguarded by bisection.
+// Time within [0, hi] at which v t + k2 t^2 + k3 t^3 reaches target (increasing there): Newton
+// steps safeguarded by bisection, from the root without the cubic term (a few steps suffice).
 double solvePhase(double v, double k2, double k3, double target, double hi) {
-  double lo = 0, t = v > 0 ? std::min(hi, target / v) : 0.5 * hi;
-  if (v <= 0 && k2 <= 0 && k3 > 0) t = std::min(hi, std::cbrt(target / k3));  // from rest: exact
+  double lo = 0, t;
+  if (v <= 0 && k2 <= 0) t = k3 > 0 ? std::cbrt(target / k3) : 0.5 * hi;  // from rest: exact
+  else t = 2 * target / (v + std::sqrt(std::max(0.0, v * v + 4 * k2 * target)));
+  t = std::clamp(t, 0.0, hi);
   for (int i = 0; i < 60; ++i) {
     double f = ((k3 * t + k2) * t + v) * t - target, d = (3 * k3 * t + 2 * k2) * t + v;
     (f > 0 ? hi : lo) = t;
     double next = d > 0 ? t - f / d : -1;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - t) <= 1e-15 * std::max(hi, 1e-300)) return next;
+    if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - t) <= 1e-13 * next) return next;
     t = next;
   }
   return t;
