@@ -154,3 +154,62 @@ TEST(PlannerAnalytic, SlicesCoverTheRampExactly) {
     EXPECT_LT(mid[0], recs[k].end[0]);
   }
 }
+
+TEST(PlannerAnalytic, RandomPathsStayFeasibleAndContinuous) {
+  // Random polylines with arcs, feed changes, exact stops and zero-length moves, over several
+  // window sizes: every slice ends at its move's length (Recorder), speed is continuous from
+  // move to move, and no slice exceeds its cap or its ramp's acceleration.
+  uint64_t seed = 12345;
+  auto rnd = [&] {
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(seed >> 11) / 9007199254740992.0;
+  };
+  for (int lookahead : {1, 2, 5, 16, 64}) {
+    Machine m = machine(1000, 20000, 0.02, lookahead, 400);
+    std::vector<MotionRecord> recs;
+    AxisVec pos = P(0, 0);
+    for (int i = 0; i < 600; ++i) {
+      double u = rnd(), feed = u < 0.3 ? 3000 : u < 0.6 ? 6000 : 1200;
+      AxisVec next = pos;
+      if (rnd() < 0.05) {
+        recs.push_back(line(pos, pos, feed));  // zero length
+        continue;
+      }
+      if (rnd() < 0.15) {  // a half circle to the side
+        MotionRecord arc;
+        arc.kind = RecordKind::Arc;
+        arc.start = pos;
+        double r = 0.5 + 3 * rnd();
+        next[0] += 2 * r;
+        arc.end = next;
+        arc.center = {pos[0] + r, pos[1], 0};
+        arc.turns = rnd() < 0.5 ? 1 : -1;
+        arc.feed = feed;
+        recs.push_back(arc);
+      } else {
+        double len = rnd() < 0.5 ? 0.05 * rnd() : 5 * rnd(), ang = (rnd() < 0.7 ? 0.2 : 3.0) * (rnd() - 0.5);
+        next[0] += len * std::cos(ang);
+        next[1] += len * std::sin(ang);
+        recs.push_back(line(pos, next, feed, rnd() < 0.03));
+      }
+      pos = next;
+    }
+    Recorder rec;
+    PlannerStats st;
+    run(m, recs, &rec, &st);
+    ASSERT_EQ(rec.segs.size(), recs.size());
+    EXPECT_LE(st.maxQueued, (size_t)lookahead + 1);
+    for (size_t k = 0; k < rec.segs.size(); ++k) {
+      const VelocityProfile &p = rec.segs[k].profile;
+      if (k > 0) EXPECT_NEAR(rec.segs[k - 1].profile.v1, p.v0, 1e-6) << "lookahead " << lookahead << " move " << k;
+      for (int i = 0; i <= 8; ++i) {
+        double s, v, a;
+        p.at(p.duration() * i / 8, s, v, a);
+        EXPECT_LE(v, rec.segs[k].vmax * (1 + 1e-9) + 1e-9) << k;
+        EXPECT_LE(std::fabs(a), p.accel * (1 + 1e-6) + 1e-6) << k;
+        EXPECT_GE(v, -1e-9) << k;
+      }
+    }
+    EXPECT_NEAR(rec.segs.back().profile.v1, 0, 1e-9);
+  }
+}
