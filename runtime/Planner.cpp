@@ -219,7 +219,7 @@ void Planner::push(const MotionRecord &r) {
   }
   if (!std::isfinite(p.length)) p.length = 0;  // absurd coordinates: no time rather than inf/NaN
   p.nIn = normalized(p.tIn);
-  p.nOut = normalized(p.tOut);
+  p.nOut = r.kind == RecordKind::Linear || r.kind == RecordKind::Rapid ? p.nIn : normalized(p.tOut);
   p.stopAfter = r.exactStop || pathMode_ == 1;
   Pending *prev = count_ ? &at(count_ - 1) : nullptr;
   if (p.length < kMinLength) {

@@ -213,14 +213,16 @@ void VelocityProfile::whole() {
 }
 
 double VelocityProfile::slice(double sFrom, double sTo, double tFrom, double vFrom) {
-  double tTo = sTo >= rampLength ? rampDuration() : std::max(tFrom, rampTimeAt(sTo));
+  const bool toEnd = sTo >= rampLength;
+  double tTo = toEnd ? rampDuration() : std::max(tFrom, rampTimeAt(sTo));
   sBegin = sFrom;
   length = sTo - sFrom;
   tBegin = tFrom;
   tSpan = tTo - tFrom;
   v0 = vFrom;
   double s, a;
-  rampAt(tTo, s, v1, a);
+  if (toEnd) v1 = rampV1;
+  else rampAt(tTo, s, v1, a);
   // The ramp's speed rises, cruises, falls: the slice's peak is the cruise when it spans it.
   vp = tFrom <= tAcc + tCruise && tTo >= tAcc ? rampVp : std::max(v0, v1);
   return tTo;
