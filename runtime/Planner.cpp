@@ -136,15 +136,16 @@ void Planner::limits(Pending &p) const {
 
 // Junction-deviation model: the corner is passed on a virtual circle that stays within the
 // tolerance of the corner point, at the highest speed every axis can follow on it.
-double Planner::junctionSpeed(const Pending &prev, const Pending &next) const {
+double Planner::junctionSpeed(const Pending &prev, const Pending &next, double &radius) const {
   double cap = std::min(prev.vmax, next.vmax);
+  radius = kInf;
   if (prev.stopAfter) return 0;
   double c = dot(prev.nOut, next.nIn);
   if (c >= 1 - 1e-12) return cap;  // tangent
   double delta = pathMode_ == 2 ? tolerance_ : 0;
   double sinHalf = std::sqrt(std::max(0.0, 0.5 * (1 + c)));  // sin of half the inner angle
   if (sinHalf >= 1) return cap;
-  double radius = delta * sinHalf / (1 - sinHalf);
+  radius = delta * sinHalf / (1 - sinHalf);
   if (!(radius > 0)) return 0;
   // No axis carries more than the whole path speed, acceleration or jerk: when the smallest
   // axis limits allow the cap, every axis does (the common case of gentle corners).
@@ -230,9 +231,10 @@ void Planner::push(const MotionRecord &r) {
     p.jerk = prev ? prev->jerk : kInf;
     if (prev) p.tIn = p.tOut = prev->tOut, p.nIn = p.nOut = prev->nOut;
     p.vJunction = prev && !prev->stopAfter ? p.vmax : 0;
+    p.cornerRadius = kInf;
   } else {
     limits(p);
-    p.vJunction = prev ? junctionSpeed(*prev, p) : 0;
+    p.vJunction = prev ? junctionSpeed(*prev, p, p.cornerRadius) : 0;
   }
   bool joined = prev && !prev->stopAfter && runCount_ && joins(run(runCount_ - 1), p);
   ++count_;
@@ -252,7 +254,8 @@ void Planner::push(const MotionRecord &r) {
 
 // A move joins the open run when its junction does not limit speed, it has the run's speed cap,
 // its acceleration and jerk limits are within 10 % of the run's (the run takes the smallest),
-// and joining does not lower the run's backward limit (which earlier decisions rely on).
+// the corner can turn the carried acceleration within the axes' jerk, and joining does not
+// lower the run's backward limit (which earlier decisions rely on).
 bool Planner::joins(const Run &run, const Pending &p) const {
   if (run.committed || run.total >= runMax_) return false;
   if (p.length == 0) return true;
@@ -261,6 +264,9 @@ bool Planner::joins(const Run &run, const Pending &p) const {
   if (p.accel < 0.9 * run.accel || run.accel < 0.9 * p.accel) return false;
   if (std::isinf(p.jerk) != std::isinf(run.jerk) || p.jerk < 0.9 * run.jerk || run.jerk < 0.9 * p.jerk) return false;
   double a = std::min(run.accel, p.accel), j = std::min(run.jerk, p.jerk);
+  // Path acceleration carried through the corner turns with the direction: over the virtual
+  // arc (time R Theta / v) every axis' share of it changes at up to a v / R.
+  if (a * p.vmax > minJerk_ * p.cornerRadius) return false;
   return reachCapped(0, run.length + p.length, run.vJunction, a, j) >= run.vBack;
 }
 

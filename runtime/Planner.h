@@ -106,6 +106,7 @@ private:
     AxisVec tIn{}, tOut{};  // tangents (per mm of length) at the start and the end
     AxisVec nIn{}, nOut{};  // the same normalised, for corner angles
     double vJunction = 0;   // entry speed limit from the junction with the previous move
+    double cornerRadius = 0;  // of the junction's virtual arc, mm (inf: tangent)
     bool stopAfter = false;
   };
   // Moves joined by junctions that do not limit speed, planned as one ramp (docs/PLANNER.md
@@ -128,7 +129,7 @@ private:
   void variableThread(const MotionRecord &t);
   void threadError(const MotionRecord &r, std::string msg, const char *rule);
   void limits(Pending &p) const;
-  double junctionSpeed(const Pending &prev, const Pending &next) const;
+  double junctionSpeed(const Pending &prev, const Pending &next, double &radius) const;
   double cornerSpeed(const AxisVec &from, const AxisVec &to, double cosTurn, double radius) const;
   bool joins(const Run &run, const Pending &p) const;
   void addToRuns(const Pending &p);
