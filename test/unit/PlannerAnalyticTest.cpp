@@ -213,3 +213,18 @@ TEST(PlannerAnalytic, RandomPathsStayFeasibleAndContinuous) {
     EXPECT_NEAR(rec.segs.back().profile.v1, 0, 1e-9);
   }
 }
+
+TEST(PlannerAnalytic, CarriedAccelerationTurnsWithinTheJerk) {
+  // a = 1000, j = 2000, F6000 = 100 mm/s, delta = 0.01. A corner with a virtual radius R does not
+  // limit speed once R >= max(v^2/a, sqrt(v^3/j)) = 22.4 mm, but turning the carried
+  // acceleration needs a v / R <= j, R >= 50 mm: at R = 30 the moves are two runs, at R = 100 one.
+  Machine m = machine(1000, 2000, 0.01, 64);
+  for (double radius : {30.0, 100.0}) {
+    double k = radius / 0.01, s = k / (1 + k), c = 2 * s * s - 1, th = std::acos(c);  // R = delta s / (1 - s)
+    Recorder rec;
+    PlannerStats st;
+    run(m, {line(P(0, 0), P(50, 0), 6000), line(P(50, 0), P(50 + 50 * std::cos(th), 50 * std::sin(th)), 6000)}, &rec, &st);
+    EXPECT_EQ(st.runs, radius < 50 ? 2u : 1u) << radius;
+    EXPECT_NEAR(rec.segs[0].profile.v1, 100, 1e-9) << radius;  // the corner itself keeps the feed
+  }
+}
