@@ -42,7 +42,7 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
     std::string why;
     if (x.kind != y.kind) why = "kinds differ";
     for (int k = 0; k < kAxes && why.empty(); ++k)
-      if (std::fabs(x.end[k] - y.end[k]) > opts.tolerance) why = fmt::format("end points differ in {}", "XYZABC"[k]);
+      if (std::fabs(x.end[k] - y.end[k]) > opts.tolerance) why = fmt::format("end points differ in {}", kAxisLetters[k]);
     if (why.empty() && x.kind == RecordKind::Arc) {
       for (int k = 0; k < 3 && why.empty(); ++k)
         if (std::fabs(x.center[k] - y.center[k]) > opts.tolerance) why = "arc centres differ";
