@@ -51,8 +51,10 @@ bool Executor::Impl::cornerRequest(const MachineCmd &c) {
   if (prevBlockFrame || curBlockFrame)  // 808D manual L5950
     return error("a chamfer or rounding must not follow a coordinate-system change or reference-point return",
                  "corner-invalid");
-  if (comp.active() || pf.scaleOn || st.feedMode == ModeValue::InverseTime)
-    return error("a chamfer or rounding with cutter compensation, scaling or inverse-time feed is not supported",
+  // Under compensation the corner joins the programmed contour, which is then offset; on the
+  // move that leaves compensation (G40) there is no contour to round.
+  if (compExit || pf.scaleOn || st.feedMode == ModeValue::InverseTime)
+    return error("a chamfer or rounding on the move after G40, with scaling or with inverse-time feed is not supported",
                  "unsupported-code");
   corner.requested = true;
   corner.reqRound = c.has(Word::Round);
@@ -60,19 +62,20 @@ bool Executor::Impl::cornerRequest(const MachineCmd &c) {
   return true;
 }
 
-void Executor::Impl::cornerRelease(const MotionRecord &first, const MotionRecord *elem) {
+bool Executor::Impl::cornerRelease(const MotionRecord &first, const MotionRecord *elem) {
   corner.active = false;
-  sink.record(first);
-  if (elem) sink.record(*elem);
-  for (auto &h : corner.held) sink.record(h);
+  bool ok = pathOut(first) && (!elem || pathOut(*elem));
+  for (auto &h : corner.held)
+    if (!comp.hold(toCompPlane(h, compOut.plane))) sink.record(h);  // after the pending compensated move
   corner.held.clear();
+  return ok;
 }
 
-void Executor::Impl::cornerFlush(const char *why) {
-  if (!corner.active) return;
+bool Executor::Impl::cornerFlush(const char *why) {
+  if (!corner.active) return true;
   diags.warning(corner.move.loc, std::string(corner.round ? "rounding" : "chamfer") + " not inserted: " + why,
                 "corner-not-inserted");
-  cornerRelease(corner.move, nullptr);
+  return cornerRelease(corner.move, nullptr);
 }
 
 bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
@@ -80,7 +83,8 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
   const PlaneAxes ax = planeAxes(first.plane);
   const int a1 = ax.u, a2 = ax.v, d = ax.n;
   for (auto &h : corner.held)
-    if (h.kind != RecordKind::Comment && h.kind != RecordKind::Message)
+    if (h.kind != RecordKind::Comment && h.kind != RecordKind::Message && h.kind != RecordKind::FeedRate &&
+        h.kind != RecordKind::SpindleSpeed)  // these belong to the next block: they go after the corner
       return error("commands between a chamfer or rounding and the next move are not supported", "unsupported-code");
   if (next.kind != RecordKind::Linear && next.kind != RecordKind::Arc)
     return error("a chamfer or rounding needs a G1, G2 or G3 move after it", "unsupported-code");
@@ -89,8 +93,7 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
   for (int i = 0; i < kAxes; ++i)
     if (i != a1 && i != a2 && (first.end[i] != first.start[i] || next.end[i] != next.start[i])) inPlane = false;
   if (!inPlane) {
-    cornerFlush("a move leaves the plane");
-    return emitMove(next);
+    return cornerFlush("a move leaves the plane") && emitMove(next);
   }
   if (first.kind == RecordKind::Arc || next.kind == RecordKind::Arc) return cornerWithArc(first, next);
   double u1 = first.end[a1] - first.start[a1], u2 = first.end[a2] - first.start[a2];
@@ -100,8 +103,7 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
   u1 /= l1, u2 /= l1, v1 /= l2, v2 /= l2;
   double cross = u1 * v2 - u2 * v1, dot = u1 * v1 + u2 * v2;
   if (std::fabs(cross) < 1e-12 && dot > 0) {
-    cornerFlush("the two moves are collinear");
-    return emitMove(next);
+    return cornerFlush("the two moves are collinear") && emitMove(next);
   }
   if (std::fabs(cross) < 1e-12) return error("a chamfer or rounding where the path reverses", "corner-invalid");
   // The corner angle between the lines, half of it, and the distance from the corner to the
@@ -130,8 +132,7 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
     elem.center[d] = p[d];
     elem.turns = cross > 0 ? 1 : -1;  // a left turn runs counter-clockwise
   }
-  cornerRelease(first, &elem);
-  return emitMove(next);  // it may carry a corner request of its own
+  return cornerRelease(first, &elem) && emitMove(next);  // it may carry a corner request of its own
 }
 
 // A rounding where one element (or both) is an arc: the fillet's centre is where the two
@@ -162,8 +163,7 @@ bool Executor::Impl::cornerWithArc(MotionRecord first, MotionRecord next) {
   B.tangent(p1, p2, tb1, tb2);
   double cross = ta1 * tb2 - ta2 * tb1, dot = ta1 * tb1 + ta2 * tb2;
   if (std::fabs(cross) < 1e-12 && dot > 0) {
-    cornerFlush("the two moves meet tangentially");
-    return emitMove(next);
+    return cornerFlush("the two moves meet tangentially") && emitMove(next);
   }
   if (std::fabs(cross) < 1e-12) return error("a rounding where the path reverses", "corner-invalid");
   const int side = cross > 0 ? 1 : -1;  // the fillet lies left of both elements in a left turn
@@ -234,8 +234,7 @@ bool Executor::Impl::cornerWithArc(MotionRecord first, MotionRecord next) {
   elem2.center = {first.end[0], first.end[1], first.end[2]};
   elem2.center[a1] = best[0], elem2.center[a2] = best[1];
   elem2.turns = side;
-  cornerRelease(first, &elem2);
-  return emitMove(next);
+  return cornerRelease(first, &elem2) && emitMove(next);
 }
 
 }  // namespace ncc

@@ -88,6 +88,10 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
     corner.round = corner.reqRound, corner.size = corner.reqSize;
     return true;
   }
+  return pathOut(r);
+}
+
+bool Executor::Impl::pathOut(const MotionRecord &r) {
   if (comp.active()) return comp.add(toCompPlane(r, compOut.plane)) || error(comp.error(), comp.rule());
   if (compExit) {
     compExit = false;
@@ -95,7 +99,7 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
       return error("The move just after exiting cutter compensation mode must be straight, not an arc",
                    "cutcomp-exit-arc");
     MotionRecord x = r;
-    x.start = fromCompPlane(comp.toolPosition(), compOut.plane);
+    x.start = compOut.toMachine(comp.toolPosition());
     emit(x);
     return true;
   }
