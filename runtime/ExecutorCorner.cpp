@@ -46,7 +46,11 @@ struct Elem {
 
 bool Executor::Impl::cornerRequest(const MachineCmd &c) {
   if (c.has(Word::Chamfer) && c.has(Word::Round)) return error("a chamfer and a rounding in one block", "corner-invalid");
-  double size = (c.has(Word::Chamfer) ? c.get(Word::Chamfer) : c.get(Word::Round)) * scale();
+  corner.reqNextAxis = -1, corner.reqNextSign = 0;
+  if (!c.has(Word::Chamfer) && !c.has(Word::Round) && !turnCornerRequest(c)) return false;
+  double size = c.has(Word::Chamfer) ? c.get(Word::Chamfer) * scale()
+                : c.has(Word::Round) ? c.get(Word::Round) * scale()
+                                     : corner.reqSize;
   if (!(size > 0)) return error("a chamfer or rounding must be greater than 0", "corner-invalid");
   if (prevBlockFrame || curBlockFrame)  // 808D manual L5950
     return error("a chamfer or rounding must not follow a coordinate-system change or reference-point return",
@@ -57,8 +61,37 @@ bool Executor::Impl::cornerRequest(const MachineCmd &c) {
     return error("a chamfer or rounding on the move after G40, with scaling or with inverse-time feed is not supported",
                  "unsupported-code");
   corner.requested = true;
-  corner.reqRound = c.has(Word::Round);
+  corner.reqRound = c.has(Word::Round) || (corner.reqNextAxis >= 0 && corner.reqRound);
   corner.reqSize = size;
+  return true;
+}
+
+// Fanuc-T / 808D lathe corners without a comma (the manual's TNRC example, L2483-2484): on a G01
+// along X alone, K+-k chamfers k mm towards +-Z; along Z alone, I+-i chamfers i mm (a radius)
+// towards +-X; R+-r rounds towards the sign on the other axis. The 45 degree chamfer of legs k is
+// the bevel k sqrt2 long. The next block must move along that axis alone, that way (Fanuc alarms
+// PS0051-PS0055), which cornerNext checks.
+bool Executor::Impl::turnCornerRequest(const MachineCmd &c) {
+  if (!machine.controller.lathe())
+    return error("I, K or R in a G1 move (a chamfer or corner R without a comma is a lathe's)", "unused-word");
+  if (c.has(Word::I) + c.has(Word::K) + c.has(Word::R) > 1)
+    return error("one of I, K (chamfer) and R (corner R) in a G1 move", "corner-invalid");
+  const AxisVec to = target(c);
+  bool alongX = to[0] != st.position[0], alongZ = to[2] != st.position[2];
+  for (int i = 0; i < kAxes; ++i)
+    if (i != 0 && i != 2 && to[i] != st.position[i]) alongX = alongZ = true;
+  if (alongX == alongZ)
+    return error("a chamfer (I, K) or corner R without a comma needs a G1 along X or Z alone", "corner-invalid");
+  const Word w = c.has(Word::I) ? Word::I : c.has(Word::K) ? Word::K : Word::R;
+  if ((w == Word::K && !alongX) || (w == Word::I && !alongZ))
+    return error(w == Word::K ? "chamfer K follows a move along X (towards Z); after a move along Z it is I"
+                              : "chamfer I follows a move along Z (towards X); after a move along X it is K",
+                 "corner-invalid");
+  const double v = c.get(w) * scale();
+  corner.reqRound = w == Word::R;
+  corner.reqSize = std::fabs(v) * (w == Word::R ? 1 : std::sqrt(2.0));
+  corner.reqNextAxis = alongX ? 2 : 0;
+  corner.reqNextSign = v > 0 ? 1 : -1;
   return true;
 }
 
@@ -88,6 +121,15 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
       return error("commands between a chamfer or rounding and the next move are not supported", "unsupported-code");
   if (next.kind != RecordKind::Linear && next.kind != RecordKind::Arc)
     return error("a chamfer or rounding needs a G1, G2 or G3 move after it", "unsupported-code");
+  if (corner.nextAxis >= 0) {  // the lathe form without a comma: the way its sign gave
+    const int along = corner.nextAxis, other = 2 - along;
+    if (next.kind != RecordKind::Linear || next.end[other] != next.start[other] ||
+        (next.end[along] - next.start[along]) * corner.nextSign <= 0)
+      return error(std::string("after a chamfer or corner R without a comma the next move must be a G1 along ") +
+                       (along == 0 ? "X" : "Z") + " alone, towards " + (corner.nextSign > 0 ? "+" : "-") +
+                       (along == 0 ? "X" : "Z") + " (the sign of its I, K or R)",
+                   "corner-invalid");
+  }
   // Moves that leave the plane (or turn a rotary axis): the controller does not insert it.
   bool inPlane = true;
   for (int i = 0; i < kAxes; ++i)

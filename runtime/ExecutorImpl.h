@@ -203,11 +203,15 @@ struct Executor::Impl {
     bool requested = false, active = false;
     bool reqRound = false, round = false;  // requested by the move being executed / of the active corner
     double reqSize = 0, size = 0;          // mm
+    // The lathe form without a comma (G01 X.. K-3.): the axis (0 X, 2 Z; -1 any) and the sign
+    // the next move must go along, requested / of the active corner.
+    int reqNextAxis = -1, nextAxis = -1, reqNextSign = 0, nextSign = 0;
     MotionRecord move;
     std::vector<MotionRecord> held;
   } corner;
   bool prevBlockFrame = false, curBlockFrame = false;  // a coordinate change in the last/this block
   bool cornerRequest(const MachineCmd &c);
+  bool turnCornerRequest(const MachineCmd &c);  // the lathe form without a comma
   bool cornerNext(const MotionRecord &next);
   bool cornerWithArc(MotionRecord first, MotionRecord next);
   // Not inserted (the manual's cases): the first move as programmed, then what was held.

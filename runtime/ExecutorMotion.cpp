@@ -86,6 +86,7 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
     corner.active = true;
     corner.move = r;
     corner.round = corner.reqRound, corner.size = corner.reqSize;
+    corner.nextAxis = corner.reqNextAxis, corner.nextSign = corner.reqNextSign;
     return true;
   }
   return pathOut(r);
@@ -108,7 +109,8 @@ bool Executor::Impl::pathOut(const MotionRecord &r) {
 }
 
 bool Executor::Impl::execMove(const MachineCmd &c) {
-  if ((c.has(Word::Chamfer) || c.has(Word::Round)) && !cornerRequest(c)) return false;
+  const bool turnCorner = st.motion == ModeValue::Linear && (c.has(Word::I) || c.has(Word::K) || c.has(Word::R));
+  if ((c.has(Word::Chamfer) || c.has(Word::Round) || turnCorner) && !cornerRequest(c)) return false;
   switch (st.motion) {
   case ModeValue::Rapid:
     if (!(c.mask & kTargetMask)) return true;

@@ -480,7 +480,13 @@ bool BlockLowerer::Block::motion() {
       if (bw.has('^')) add(op, "polar_a", take('^', Scale::None));
       // Arcs read I J K R; cycles read R (the clearance plane) only; G5/G5.1 I J (the first
       // control point, relative to the start).
-      for (char c : std::string_view(arc ? "IJKR" : cycle || isTurnCycleMotion(m) ? "R" : bezier ? "IJ" : "")) {
+      // A lathe's G01 reads the Fanuc-T chamfer I/K and corner R without a comma (the executor's).
+      const bool turnCorner = L.lathe_ && m == ModeValue::Linear && b.corner.empty();
+      for (char c : std::string_view(arc                                ? "IJKR"
+                                     : cycle || isTurnCycleMotion(m)    ? "R"
+                                     : bezier                           ? "IJ"
+                                     : turnCorner                       ? "IKR"
+                                                                        : "")) {
         if (!bw.has(c)) continue;
         add(op, c, take(c, Scale::Linear));
       }
