@@ -73,8 +73,9 @@ public:
   bool stop(bool check = false);
   // Where the tool really is after stop(); the exit move starts there.
   const AxisVec &toolPosition() const { return tool_; }
-  // A record that rs274 emits after the pending move (a dwell): held until then, placed at the
-  // tool's compensated XY. False when nothing is pending (the caller emits it itself).
+  // A record that rs274 queues behind the pending move (dwell, feed, spindle, coolant, comment):
+  // held until then, placed at the tool's compensated XY. False when nothing is pending (the
+  // caller emits it itself).
   bool hold(const MotionRecord &r);
   const std::string &error() const { return errMsg_; }
   const std::string &rule() const { return errRule_; }

@@ -334,7 +334,8 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     st.cutterComp = 0;
     return true;
   }
-  const bool lathe = machine.controller.lathe();
+  // The 808D/Fanuc turning rules; a LinuxCNC lathe keeps rs274's (noseTipShift refuses its tips).
+  const bool lathe = machine.controller.lathe() && machine.controller.family != "linuxcnc";
   bool sideSwitch = false;  // the 808D lathe's G41 <-> G42 without G40
   if (st.cutterComp != 0) {
     if (!lathe) return error("Cannot turn cutter radius comp on when on", "cutcomp-already-on");
@@ -371,7 +372,7 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
                  "unsupported-code");
   compOut.plane = plane();
   compOut.shift = {};
-  if (radius > 0 && lathe && !noseTipShift(t, radius)) return false;
+  if (radius > 0 && machine.controller.lathe() && !noseTipShift(t, radius)) return false;
   const AxisVec from = sideSwitch ? comp.toolPosition() : compOut.toComp(st.position);
   st.cutterComp = c.sub;
   compExit = false;

@@ -65,6 +65,9 @@ bool Executor::Impl::noseTipShift(const ToolData &t, double radius) {
     return error("tool nose radius compensation under a rotation, scaling or mirror is not supported", "unsupported-code");
   const Point2 v = noseTipVector(t.tip);
   if (v.x == 0 && v.y == 0) return true;
+  if (machine.controller.family == "linuxcnc")  // rs274 reads an orientation with its own rules
+    return error("cutter compensation with a lathe tool orientation (tip 1-8) on a LinuxCNC machine is not supported",
+                 "unsupported-code");
   if (plane() != Plane::ZX)
     return error("tool nose radius compensation with an imaginary tool tip 1-8 needs the ZX plane (G18)",
                  "unsupported-code");
