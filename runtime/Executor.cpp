@@ -374,6 +374,7 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
   compOut.shift = {};
   if (radius > 0 && machine.controller.lathe() && !noseTipShift(t, radius)) return false;
   const AxisVec from = sideSwitch ? comp.toolPosition() : compOut.toComp(st.position);
+  capture.compOn |= capture.active;
   st.cutterComp = c.sub;
   compExit = false;
   if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, from, lathe);

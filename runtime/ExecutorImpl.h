@@ -387,6 +387,7 @@ struct Executor::Impl {
     LastPath lastPath;
     int64_t blockNumber = -1;
     SourceLoc blockLoc;
+    bool compOn = false;  // G41/G42 ran in the contour (a lathe's G70 only)
   } capture;
   // Modal consumer data (ISO G71/G72 U R: layer depth and retract; G73 U W R: relief, count), mm.
   double roughDepth = 0, roughRetract = 0;
