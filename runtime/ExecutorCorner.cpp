@@ -98,8 +98,7 @@ bool Executor::Impl::turnCornerRequest(const MachineCmd &c) {
 bool Executor::Impl::cornerRelease(const MotionRecord &first, const MotionRecord *elem) {
   corner.active = false;
   bool ok = pathOut(first) && (!elem || pathOut(*elem));
-  for (auto &h : corner.held)
-    if (!comp.hold(toCompPlane(h, compOut.plane))) sink.record(h);  // after the pending compensated move
+  for (auto &h : corner.held) emit(h);  // behind the pending compensated move where rs274 queues it
   corner.held.clear();
   return ok;
 }
