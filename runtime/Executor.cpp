@@ -243,6 +243,7 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   r.value2 = toolOffsetX;
   r.ivalue = h;
   emit(r);
+  if (isoLathe() && st.cutterComp != 0 && !comp.active() && t.radius > 0) return noseCompAfterT();
   return true;
 }
 
@@ -334,8 +335,7 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     st.cutterComp = 0;
     return true;
   }
-  // The 808D/Fanuc turning rules; a LinuxCNC lathe keeps rs274's (noseTipShift refuses its tips).
-  const bool lathe = machine.controller.lathe() && machine.controller.family != "linuxcnc";
+  const bool lathe = isoLathe();
   bool sideSwitch = false;  // the 808D lathe's G41 <-> G42 without G40
   if (st.cutterComp != 0) {
     if (!lathe) return error("Cannot turn cutter radius comp on when on", "cutcomp-already-on");

@@ -242,6 +242,10 @@ struct Executor::Impl {
   // A lathe's tool nose radius compensation: the shift from the nose centre to the imaginary
   // tool tip of edge `t` (compOut.shift), or an error where the tip cannot be honoured.
   bool noseTipShift(const ToolData &t, double radius);
+  // The 808D/Fanuc turning rules of G41/G42 apply; a LinuxCNC lathe keeps rs274's.
+  bool isoLathe() const { return machine.controller.lathe() && machine.controller.family != "linuxcnc"; }
+  // G41/G42 in force without a nose radius: the T word that brings one starts it.
+  bool noseCompAfterT();
   bool execFrame(const MachineCmd &c);
   // Emits a FrameChange record when the program -> machine transform (without the tool length,
   // which has its own record) differs from the last one emitted; `what` names the cause.

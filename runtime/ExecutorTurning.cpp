@@ -77,4 +77,15 @@ bool Executor::Impl::noseTipShift(const ToolData &t, double radius) {
   return true;
 }
 
+// Fanuc starts the compensation in the block where G41/G42 is given or where, in G41/G42, the
+// offset number becomes one with a radius [model: the 808D manual says only "G41/G42 with T"]:
+// G41/G42 again, now with the T word's offset.
+bool Executor::Impl::noseCompAfterT() {
+  MachineCmd g;
+  g.kind = CmdKind::CutterComp;
+  g.sub = (uint8_t)st.cutterComp;
+  st.cutterComp = 0;
+  return execCutterComp(g);
+}
+
 }  // namespace ncc

@@ -5,6 +5,8 @@
 ; centre = the nose centre, machine = centre + 0.4 x the tip vector (tip 2: -Z +X; tip 3: -Z -X).
 ; RUN: %ncc compile %s --machine=%S/Inputs/lathe-tnrc.toml --emit=motion 2>&1 | grep -v "^comment" | FileCheck %s --implicit-check-not=error:
 G98 F100
+; The diagnostics come first (the T2300 section below).
+; CHECK:      :{{[0-9]+}}:1: warning: tool nose radius compensation without a tool offset (T<tool><offset>): radius 0 [cutcomp-without-d]
 ; Inside (a boring bar, tip 2) towards the chuck: G41, the nose below the bore wall X12 (centre
 ; X11.6, tip X12: the programmed diameter). The bore/taper corner is concave (cut where X11.6 meets
 ; the taper's offset, Z-10 + 0.4 - 0.4 sqrt2 for the centre), the taper/Z corner convex (an arc about
@@ -46,8 +48,24 @@ G0 X40 Z10
 G42 G0 X20 Z2
 G1 Z-10
 G40 G0 X40 Z10
+; G42 in force without an offset (T2300: radius 0, a warning): the T word that brings one starts it,
+; so the next move is the start-up (Fanuc's rule; the 808D manual: "G41/G42 with T").
+T2300
+G0 X40 Z5
+G42 G0 X30 Z2
+T2323
+G0 X20 Z2
+G1 Z-10
+G40 G0 X40 Z5
 M30
 ; CHECK:      tool_length 10 H10 X5
 ; CHECK:      rapid X15 Y0 Z11.2 A0 B0 C0
 ; CHECK-NEXT: linear X15 Y0 Z-0.{{8|79+[0-9]*}} A0 B0 C0
 ; CHECK-NEXT: rapid X25 Y0 Z20 A0 B0 C0
+; CHECK:      tool_length 0 H0
+; CHECK-NEXT: rapid X20 Y0 Z5 A0 B0 C0
+; CHECK-NEXT: rapid X15 Y0 Z2 A0 B0 C0
+; CHECK:      tool_length 0 H23
+; CHECK-NEXT: rapid X10 Y0 Z1.6 A0 B0 C0
+; CHECK-NEXT: linear X10 Y0 Z-10.4 A0 B0 C0
+; CHECK-NEXT: rapid X20 Y0 Z5 A0 B0 C0
