@@ -274,6 +274,8 @@ bool CutterComp::add(const MotionRecord &rec) {
     return true;
   }
   if (!havePending_) {
+    if (entry_ && normalEntry_ && e.arc)
+      return fail("the start-up move of tool nose radius compensation must be G00 or G01, not an arc", "cutcomp-entry-arc");
     if (entry_ && !normalEntry_ && dist(xy(tool_), e.end) <= r_)
       return fail("Length of cutter compensation entry move is not greater than the tool radius",
                   "cutcomp-entry-too-short");
