@@ -162,10 +162,17 @@ bool offsetIntersection(const PathElem &a, const PathElem &b, int side, double r
   return true;
 }
 
+Point2 noseTipVector(int tip) {
+  static const Point2 kTips[10] = {{0, 0},  {1, 1},  {-1, 1}, {-1, -1}, {1, -1},
+                                   {1, 0},  {0, 1},  {-1, 0}, {0, -1},  {0, 0}};
+  return tip >= 0 && tip <= 9 ? kTips[tip] : Point2{};
+}
+
 // --- the stage ---
 
-void CutterComp::start(int side, double r, const AxisVec &tool) {
+void CutterComp::start(int side, double r, const AxisVec &tool, bool normalEntry) {
   side_ = side;
+  normalEntry_ = normalEntry;
   r_ = r;
   tool_ = tool;
   entry_ = true;
@@ -267,7 +274,9 @@ bool CutterComp::add(const MotionRecord &rec) {
     return true;
   }
   if (!havePending_) {
-    if (entry_ && dist(xy(tool_), e.end) <= r_)
+    if (entry_ && normalEntry_ && e.arc)
+      return fail("the start-up move of tool nose radius compensation must be G00 or G01, not an arc", "cutcomp-entry-arc");
+    if (entry_ && !normalEntry_ && dist(xy(tool_), e.end) <= r_)
       return fail("Length of cutter compensation entry move is not greater than the tool radius",
                   "cutcomp-entry-too-short");
     // After a Z move rs274 still goes round a convex corner with the move before it.
@@ -275,6 +284,9 @@ bool CutterComp::add(const MotionRecord &rec) {
     afterZ_ = false;
     pendingEntry_ = entry_;
     entry_ = false;
+  } else if (pendingEntry_ && normalEntry_) {
+    emitPending(offsetStart(e, side_, r_), true);  // no corner: the next move starts normal to itself
+    pendingEntry_ = false;
   } else {
     CornerKind k = corner(pendingElem_, e);
     Point2 cut = offsetEnd(pendingElem_, side_, r_);

@@ -49,12 +49,21 @@ CornerKind cornerKind(double turn, int side, bool outsideArc);
 // intersection nearest to the offset corner points. False when they do not meet.
 bool offsetIntersection(const PathElem &a, const PathElem &b, int side, double r, Point2 &out);
 
+// A lathe's imaginary tool tip 0-9 (808D "control point", Fanuc imaginary tool nose number):
+// where the point the program and the tool offsets describe lies from the nose centre, in nose
+// radii, as (Z, X): the G18 compensation plane's (first, second) axes. Seen with +Z to the right
+// and +X up the numbers sit round the centre as  2 6 1 / 7 0 5 / 3 8 4  (rows from +X down);
+// 0 and 9 are the centre itself. Out-of-range numbers give the centre.
+Point2 noseTipVector(int tip);
+
 class CutterComp {
 public:
   explicit CutterComp(MotionSink &out) : out_(out) {}
   bool active() const { return side_ != 0; }
   // G41/G42 with radius r > 0 (mm); `tool` = the current (uncompensated) position.
-  void start(int side, double r, const AxisVec &tool);
+  // `normalEntry` (the 808D/Fanuc lathe start-up, Fanuc type A): the entry move ends at the
+  // next move's offset start point, normal to it, instead of rs274's corner with the next move.
+  void start(int side, double r, const AxisVec &tool, bool normalEntry = false);
   // A programmed motion record (Rapid, Linear or Arc in the XY plane; start = programmed start).
   // Returns false on an error (message and rule in error()/rule()); nothing is emitted then.
   bool add(const MotionRecord &programmed);
@@ -64,8 +73,9 @@ public:
   bool stop(bool check = false);
   // Where the tool really is after stop(); the exit move starts there.
   const AxisVec &toolPosition() const { return tool_; }
-  // A record that rs274 emits after the pending move (a dwell): held until then, placed at the
-  // tool's compensated XY. False when nothing is pending (the caller emits it itself).
+  // A record that rs274 queues behind the pending move (dwell, feed, spindle, coolant, comment):
+  // held until then, placed at the tool's compensated XY. False when nothing is pending (the
+  // caller emits it itself).
   bool hold(const MotionRecord &r);
   const std::string &error() const { return errMsg_; }
   const std::string &rule() const { return errRule_; }
@@ -82,6 +92,7 @@ private:
   double r_ = 0;
   AxisVec tool_{};      // compensated tool position (end of what was emitted)
   bool entry_ = false;  // the next XY move is the entry move
+  bool normalEntry_ = false;
   bool havePending_ = false;
   bool pendingEntry_ = false;  // the pending move is the entry move
   double feed_ = 0;             // of the last feed move (corner arcs are feed moves)

@@ -229,6 +229,9 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   ToolData t;
   if (!offsetData(hv, "H", t)) return false;
   int h = (int)hv;
+  if (machine.controller.lathe() && comp.active() && h != st.toolLengthH)
+    return error("a tool offset change with tool nose radius compensation on is not supported: cancel it with G40 first",
+                 "cutcomp-conflict");
   toolLength = t.length;
   // A lathe's offset (T0101) also shifts X by the edge's X offset.
   toolOffsetX = h == 0 || !machine.controller.lathe() ? 0 : t.xOffset;
@@ -238,6 +241,7 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   r.value2 = toolOffsetX;
   r.ivalue = h;
   emit(r);
+  if (isoLathe() && st.cutterComp != 0 && !comp.active() && t.radius > 0) return noseCompAfterT();
   return true;
 }
 
@@ -319,6 +323,8 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
 }
 
 bool Executor::Impl::execCutterComp(const MachineCmd &c) {
+  if (corner.active && (comp.active() || c.sub != 0))  // its first move was programmed on the old path
+    return error("a chamfer or rounding just before G40, G41 or G42 is not supported", "unsupported-code");
   if (c.sub == 0) {  // G40: the pending move ends normal to its end point; the next one exits
     if (comp.active()) {
       if (!comp.stop(true)) return error(comp.error(), comp.rule());
@@ -327,8 +333,17 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     st.cutterComp = 0;
     return true;
   }
-  if (st.cutterComp != 0) return error("Cannot turn cutter radius comp on when on", "cutcomp-already-on");
-  if (c.has(Word::D)) {
+  const bool lathe = isoLathe();
+  bool sideSwitch = false;  // the 808D lathe's G41 <-> G42 without G40
+  if (st.cutterComp != 0) {
+    if (!lathe) return error("Cannot turn cutter radius comp on when on", "cutcomp-already-on");
+    if (c.sub == st.cutterComp) return true;  // modal: already on that side
+    // The last move on the old side ends normal to its end point; the next starts anew from there.
+    sideSwitch = comp.active();
+    if (sideSwitch && !comp.stop(true)) return error(comp.error(), comp.rule());
+  }
+  if (lathe && !c.has(Word::D)) cutterD = st.toolLengthH;  // the offset of the T word (T0202: 2)
+  else if (c.has(Word::D)) {
     double d = c.get(Word::D);
     if (d < 0 || d != std::floor(d) || d > 1e9)
       return error(std::string(c.sub == 1 ? "G41" : "G42") + " requires D word to be a whole number", "unknown-tool");
@@ -337,7 +352,8 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     cutterD = st.toolInSpindle;  // rs274: without D, the radius of the tool in the spindle
   }
   if (!c.has(Word::D) && cutterD == 0)
-    warning(c.sub2 == 1 ? "cutter compensation without a D word and no tool in the spindle: radius 0"
+    warning(lathe ? "tool nose radius compensation without a tool offset (T<tool><offset>): radius 0"
+            : c.sub2 == 1 ? "cutter compensation without a D word and no tool in the spindle: radius 0"
                         : "cutter compensation without a D word: radius 0",
             "cutcomp-without-d");
   ToolData t;
@@ -352,10 +368,14 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
   if (radius > 0 && !frameKeepsPlane(plane(), flip))
     return error("cutter radius compensation under a rotation that tilts its plane is not supported",
                  "unsupported-code");
+  compOut.plane = plane();
+  compOut.shift = {};
+  if (radius > 0 && machine.controller.lathe() && !noseTipShift(t, radius)) return false;
+  const AxisVec from = sideSwitch ? comp.toolPosition() : compOut.toComp(st.position);
+  capture.compOn |= capture.active;
   st.cutterComp = c.sub;
   compExit = false;
-  compOut.plane = plane();
-  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, toCompPlane(st.position, plane()));
+  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, from, lathe);
   return true;
 }
 
@@ -643,7 +663,7 @@ bool Executor::exec(const MachineCmd &c) {
     if (p < 0) return x.error("Dwell time must not be negative", "bad-dwell");
     MotionRecord r = x.record(RecordKind::Dwell);
     r.value = p;
-    if (!x.comp.hold(toCompPlane(r, x.compOut.plane))) x.emit(r);  // with compensation on it waits for the pending move
+    x.emit(r);  // with compensation on it waits for the pending move
     return true;
   }
   case CmdKind::Move: return x.execMove(c);

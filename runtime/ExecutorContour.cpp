@@ -72,6 +72,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     capture.active = true;
     capture.loc = loc;
     capture.records.clear();
+    capture.compOn = false;
     capture.st = st;
     capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX;
     capture.lastPath = lastPath;
@@ -84,6 +85,10 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
       return error("the last contour move must not end in a chamfer or rounding", "contour-invalid");
     route.capture = nullptr;
     capture.active = false;
+    // Compensation the contour turns on (808D: not in G71-G73, L3842-3843) ends in it (G70).
+    if (capture.compOn && (ContourUse)c.sub2 != ContourUse::Finish)
+      return error("no tool nose radius compensation in the contour of G71-G73", "contour-invalid");
+    if (comp.active()) return error("compensation turned on in the contour must be cancelled (G40) in it", "contour-invalid");
     return contourConsume(c);
   }
   return error("bad contour action", "contour-invalid");

@@ -46,33 +46,68 @@ struct Elem {
 
 bool Executor::Impl::cornerRequest(const MachineCmd &c) {
   if (c.has(Word::Chamfer) && c.has(Word::Round)) return error("a chamfer and a rounding in one block", "corner-invalid");
-  double size = (c.has(Word::Chamfer) ? c.get(Word::Chamfer) : c.get(Word::Round)) * scale();
+  corner.reqNextAxis = -1, corner.reqNextSign = 0;
+  if (!c.has(Word::Chamfer) && !c.has(Word::Round) && !turnCornerRequest(c)) return false;
+  double size = c.has(Word::Chamfer) ? c.get(Word::Chamfer) * scale()
+                : c.has(Word::Round) ? c.get(Word::Round) * scale()
+                                     : corner.reqSize;
   if (!(size > 0)) return error("a chamfer or rounding must be greater than 0", "corner-invalid");
   if (prevBlockFrame || curBlockFrame)  // 808D manual L5950
     return error("a chamfer or rounding must not follow a coordinate-system change or reference-point return",
                  "corner-invalid");
-  if (comp.active() || pf.scaleOn || st.feedMode == ModeValue::InverseTime)
-    return error("a chamfer or rounding with cutter compensation, scaling or inverse-time feed is not supported",
+  // Under compensation the corner joins the programmed contour, which is then offset; on the
+  // move that leaves compensation (G40) there is no contour to round.
+  if (compExit || pf.scaleOn || st.feedMode == ModeValue::InverseTime)
+    return error("a chamfer or rounding on the move after G40, with scaling or with inverse-time feed is not supported",
                  "unsupported-code");
   corner.requested = true;
-  corner.reqRound = c.has(Word::Round);
+  corner.reqRound = c.has(Word::Round) || (corner.reqNextAxis >= 0 && corner.reqRound);
   corner.reqSize = size;
   return true;
 }
 
-void Executor::Impl::cornerRelease(const MotionRecord &first, const MotionRecord *elem) {
-  corner.active = false;
-  sink.record(first);
-  if (elem) sink.record(*elem);
-  for (auto &h : corner.held) sink.record(h);
-  corner.held.clear();
+// Fanuc-T / 808D lathe corners without a comma (the manual's TNRC example, L2483-2484): on a G01
+// along X alone, K+-k chamfers k mm towards +-Z; along Z alone, I+-i chamfers i mm (a radius)
+// towards +-X; R+-r rounds towards the sign on the other axis. The 45 degree chamfer of legs k is
+// the bevel k sqrt2 long. The next block must move along that axis alone, that way (Fanuc alarms
+// PS0051-PS0055), which cornerNext checks.
+bool Executor::Impl::turnCornerRequest(const MachineCmd &c) {
+  if (!machine.controller.lathe())
+    return error("I, K or R in a G1 move (a chamfer or corner R without a comma is a lathe's)", "unused-word");
+  if (c.has(Word::I) + c.has(Word::K) + c.has(Word::R) > 1)
+    return error("one of I, K (chamfer) and R (corner R) in a G1 move", "corner-invalid");
+  const AxisVec to = target(c);
+  bool alongX = to[0] != st.position[0], alongZ = to[2] != st.position[2];
+  for (int i = 0; i < kAxes; ++i)
+    if (i != 0 && i != 2 && to[i] != st.position[i]) alongX = alongZ = true;
+  if (alongX == alongZ)
+    return error("a chamfer (I, K) or corner R without a comma needs a G1 along X or Z alone", "corner-invalid");
+  const Word w = c.has(Word::I) ? Word::I : c.has(Word::K) ? Word::K : Word::R;
+  if ((w == Word::K && !alongX) || (w == Word::I && !alongZ))
+    return error(w == Word::K ? "chamfer K follows a move along X (towards Z); after a move along Z it is I"
+                              : "chamfer I follows a move along Z (towards X); after a move along X it is K",
+                 "corner-invalid");
+  const double v = c.get(w) * scale();
+  corner.reqRound = w == Word::R;
+  corner.reqSize = std::fabs(v) * (w == Word::R ? 1 : std::sqrt(2.0));
+  corner.reqNextAxis = alongX ? 2 : 0;
+  corner.reqNextSign = v > 0 ? 1 : -1;
+  return true;
 }
 
-void Executor::Impl::cornerFlush(const char *why) {
-  if (!corner.active) return;
+bool Executor::Impl::cornerRelease(const MotionRecord &first, const MotionRecord *elem) {
+  corner.active = false;
+  bool ok = pathOut(first) && (!elem || pathOut(*elem));
+  for (auto &h : corner.held) emit(h);  // behind the pending compensated move where rs274 queues it
+  corner.held.clear();
+  return ok;
+}
+
+bool Executor::Impl::cornerFlush(const char *why) {
+  if (!corner.active) return true;
   diags.warning(corner.move.loc, std::string(corner.round ? "rounding" : "chamfer") + " not inserted: " + why,
                 "corner-not-inserted");
-  cornerRelease(corner.move, nullptr);
+  return cornerRelease(corner.move, nullptr);
 }
 
 bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
@@ -80,17 +115,26 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
   const PlaneAxes ax = planeAxes(first.plane);
   const int a1 = ax.u, a2 = ax.v, d = ax.n;
   for (auto &h : corner.held)
-    if (h.kind != RecordKind::Comment && h.kind != RecordKind::Message)
+    if (h.kind != RecordKind::Comment && h.kind != RecordKind::Message && h.kind != RecordKind::FeedRate &&
+        h.kind != RecordKind::SpindleSpeed)  // these belong to the next block: they go after the corner
       return error("commands between a chamfer or rounding and the next move are not supported", "unsupported-code");
   if (next.kind != RecordKind::Linear && next.kind != RecordKind::Arc)
     return error("a chamfer or rounding needs a G1, G2 or G3 move after it", "unsupported-code");
+  if (corner.nextAxis >= 0) {  // the lathe form without a comma: the way its sign gave
+    const int along = corner.nextAxis, other = 2 - along;
+    if (next.kind != RecordKind::Linear || next.end[other] != next.start[other] ||
+        (next.end[along] - next.start[along]) * corner.nextSign <= 0)
+      return error(std::string("after a chamfer or corner R without a comma the next move must be a G1 along ") +
+                       (along == 0 ? "X" : "Z") + " alone, towards " + (corner.nextSign > 0 ? "+" : "-") +
+                       (along == 0 ? "X" : "Z") + " (the sign of its I, K or R)",
+                   "corner-invalid");
+  }
   // Moves that leave the plane (or turn a rotary axis): the controller does not insert it.
   bool inPlane = true;
   for (int i = 0; i < kAxes; ++i)
     if (i != a1 && i != a2 && (first.end[i] != first.start[i] || next.end[i] != next.start[i])) inPlane = false;
   if (!inPlane) {
-    cornerFlush("a move leaves the plane");
-    return emitMove(next);
+    return cornerFlush("a move leaves the plane") && emitMove(next);
   }
   if (first.kind == RecordKind::Arc || next.kind == RecordKind::Arc) return cornerWithArc(first, next);
   double u1 = first.end[a1] - first.start[a1], u2 = first.end[a2] - first.start[a2];
@@ -100,8 +144,7 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
   u1 /= l1, u2 /= l1, v1 /= l2, v2 /= l2;
   double cross = u1 * v2 - u2 * v1, dot = u1 * v1 + u2 * v2;
   if (std::fabs(cross) < 1e-12 && dot > 0) {
-    cornerFlush("the two moves are collinear");
-    return emitMove(next);
+    return cornerFlush("the two moves are collinear") && emitMove(next);
   }
   if (std::fabs(cross) < 1e-12) return error("a chamfer or rounding where the path reverses", "corner-invalid");
   // The corner angle between the lines, half of it, and the distance from the corner to the
@@ -130,8 +173,7 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
     elem.center[d] = p[d];
     elem.turns = cross > 0 ? 1 : -1;  // a left turn runs counter-clockwise
   }
-  cornerRelease(first, &elem);
-  return emitMove(next);  // it may carry a corner request of its own
+  return cornerRelease(first, &elem) && emitMove(next);  // it may carry a corner request of its own
 }
 
 // A rounding where one element (or both) is an arc: the fillet's centre is where the two
@@ -162,8 +204,7 @@ bool Executor::Impl::cornerWithArc(MotionRecord first, MotionRecord next) {
   B.tangent(p1, p2, tb1, tb2);
   double cross = ta1 * tb2 - ta2 * tb1, dot = ta1 * tb1 + ta2 * tb2;
   if (std::fabs(cross) < 1e-12 && dot > 0) {
-    cornerFlush("the two moves meet tangentially");
-    return emitMove(next);
+    return cornerFlush("the two moves meet tangentially") && emitMove(next);
   }
   if (std::fabs(cross) < 1e-12) return error("a rounding where the path reverses", "corner-invalid");
   const int side = cross > 0 ? 1 : -1;  // the fillet lies left of both elements in a left turn
@@ -234,8 +275,7 @@ bool Executor::Impl::cornerWithArc(MotionRecord first, MotionRecord next) {
   elem2.center = {first.end[0], first.end[1], first.end[2]};
   elem2.center[a1] = best[0], elem2.center[a2] = best[1];
   elem2.turns = side;
-  cornerRelease(first, &elem2);
-  return emitMove(next);
+  return cornerRelease(first, &elem2) && emitMove(next);
 }
 
 }  // namespace ncc

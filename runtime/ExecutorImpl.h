@@ -24,9 +24,26 @@ class CompPlaneSink : public MotionSink {
 public:
   explicit CompPlaneSink(MotionSink &out) : out_(out) {}
   Plane plane = Plane::XY;
-  void record(const MotionRecord &r) override { out_.record(plane == Plane::XY ? r : fromCompPlane(r, plane)); }
+  // A lathe's imaginary tool tip (machine axes, mm): compensation moves the nose centre, the
+  // machine position is the tip, this far from it (ExecutorTurning.cpp, noseTipShift).
+  AxisVec shift{};
+  void record(const MotionRecord &r) override {
+    MotionRecord o = plane == Plane::XY ? r : fromCompPlane(r, plane);
+    for (int i = 0; i < 3; ++i) {
+      o.start[i] += shift[i], o.end[i] += shift[i];
+      if (o.kind == RecordKind::Arc) o.center[i] += shift[i];
+    }
+    out_.record(o);
+  }
+  // The machine position of a compensation-plane (nose centre) position, and back.
+  AxisVec toMachine(const AxisVec &v) const { return plus(fromCompPlane(v, plane), 1); }
+  AxisVec toComp(const AxisVec &machinePos) const { return toCompPlane(plus(machinePos, -1), plane); }
 
 private:
+  AxisVec plus(AxisVec v, double k) const {
+    for (int i = 0; i < 3; ++i) v[i] += k * shift[i];
+    return v;
+  }
   MotionSink &out_;
 };
 
@@ -167,7 +184,18 @@ struct Executor::Impl {
     if (r.kind <= RecordKind::Dwell || r.kind == RecordKind::Spline || r.kind == RecordKind::Thread)
       threadChain = r.kind == RecordKind::Thread;
     if (corner.active) corner.held.push_back(r);
-    else sink.record(r);
+    else if (!(queuedBehindMotion(r.kind) && comp.hold(toCompPlane(r, compOut.plane)))) sink.record(r);
+  }
+  // What rs274 queues behind a move that cutter compensation still holds (its interp_queue: feed,
+  // spindle, coolant, dwell, comments, M codes), so it takes effect where the program has it.
+  static bool queuedBehindMotion(RecordKind k) {
+    switch (k) {
+    case RecordKind::Dwell: case RecordKind::SpindleSpeed: case RecordKind::SpindleCW: case RecordKind::SpindleCCW:
+    case RecordKind::SpindleStop: case RecordKind::CoolantFlood: case RecordKind::CoolantMist:
+    case RecordKind::FeedRate: case RecordKind::FeedMode: case RecordKind::Comment: case RecordKind::Aux:
+    case RecordKind::SpindleMode: case RecordKind::SpindleOrient: return true;
+    default: return false;
+    }
   }
   // A chamfer or rounding between a move and the next (ExecutorCorner.cpp): `requested` by the
   // move being executed, `active` while its first move waits for the second.
@@ -175,19 +203,26 @@ struct Executor::Impl {
     bool requested = false, active = false;
     bool reqRound = false, round = false;  // requested by the move being executed / of the active corner
     double reqSize = 0, size = 0;          // mm
+    // The lathe form without a comma (G01 X.. K-3.): the axis (0 X, 2 Z; -1 any) and the sign
+    // the next move must go along, requested / of the active corner.
+    int reqNextAxis = -1, nextAxis = -1, reqNextSign = 0, nextSign = 0;
     MotionRecord move;
     std::vector<MotionRecord> held;
   } corner;
   bool prevBlockFrame = false, curBlockFrame = false;  // a coordinate change in the last/this block
   bool cornerRequest(const MachineCmd &c);
+  bool turnCornerRequest(const MachineCmd &c);  // the lathe form without a comma
   bool cornerNext(const MotionRecord &next);
   bool cornerWithArc(MotionRecord first, MotionRecord next);
   // Not inserted (the manual's cases): the first move as programmed, then what was held.
-  void cornerFlush(const char *why);
-  // Sends the first move (trimmed or not), the corner element if any, and what was held.
-  void cornerRelease(const MotionRecord &first, const MotionRecord *elem);
+  bool cornerFlush(const char *why);
+  // Sends the first move (trimmed or not), the corner element if any (through cutter
+  // compensation when it is on), and what was held.
+  bool cornerRelease(const MotionRecord &first, const MotionRecord *elem);
   // Emits a programmed motion record, through cutter compensation when it is on.
   bool emitMove(const MotionRecord &r);
+  // emitMove past the corner step: through cutter compensation, its exit move, or straight out.
+  bool pathOut(const MotionRecord &r);
   // An oriented spindle stop (M19, cycles): the spindle stops at `angle` degrees. A cycle turns
   // the spindle on again itself (`inCycle`: the modal spindle state stays).
   bool orientSpindle(double angle, int way, double wait, bool inCycle = false);
@@ -204,6 +239,13 @@ struct Executor::Impl {
   bool execSetOffset(const MachineCmd &c);
   bool execStop(const MachineCmd &c);
   bool execCutterComp(const MachineCmd &c);
+  // A lathe's tool nose radius compensation: the shift from the nose centre to the imaginary
+  // tool tip of edge `t` (compOut.shift), or an error where the tip cannot be honoured.
+  bool noseTipShift(const ToolData &t, double radius);
+  // The 808D/Fanuc turning rules of G41/G42 apply; a LinuxCNC lathe keeps rs274's.
+  bool isoLathe() const { return machine.controller.lathe() && machine.controller.family != "linuxcnc"; }
+  // G41/G42 in force without a nose radius: the T word that brings one starts it.
+  bool noseCompAfterT();
   bool execFrame(const MachineCmd &c);
   // Emits a FrameChange record when the program -> machine transform (without the tool length,
   // which has its own record) differs from the last one emitted; `what` names the cause.
@@ -352,6 +394,7 @@ struct Executor::Impl {
     LastPath lastPath;
     int64_t blockNumber = -1;
     SourceLoc blockLoc;
+    bool compOn = false;  // G41/G42 ran in the contour (a lathe's G70 only)
   } capture;
   // Modal consumer data (ISO G71/G72 U R: layer depth and retract; G73 U W R: relief, count), mm.
   double roughDepth = 0, roughRetract = 0;

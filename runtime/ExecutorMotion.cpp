@@ -86,8 +86,13 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
     corner.active = true;
     corner.move = r;
     corner.round = corner.reqRound, corner.size = corner.reqSize;
+    corner.nextAxis = corner.reqNextAxis, corner.nextSign = corner.reqNextSign;
     return true;
   }
+  return pathOut(r);
+}
+
+bool Executor::Impl::pathOut(const MotionRecord &r) {
   if (comp.active()) return comp.add(toCompPlane(r, compOut.plane)) || error(comp.error(), comp.rule());
   if (compExit) {
     compExit = false;
@@ -95,7 +100,7 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
       return error("The move just after exiting cutter compensation mode must be straight, not an arc",
                    "cutcomp-exit-arc");
     MotionRecord x = r;
-    x.start = fromCompPlane(comp.toolPosition(), compOut.plane);
+    x.start = compOut.toMachine(comp.toolPosition());
     emit(x);
     return true;
   }
@@ -104,7 +109,8 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
 }
 
 bool Executor::Impl::execMove(const MachineCmd &c) {
-  if ((c.has(Word::Chamfer) || c.has(Word::Round)) && !cornerRequest(c)) return false;
+  const bool turnCorner = st.motion == ModeValue::Linear && (c.has(Word::I) || c.has(Word::K) || c.has(Word::R));
+  if ((c.has(Word::Chamfer) || c.has(Word::Round) || turnCorner) && !cornerRequest(c)) return false;
   switch (st.motion) {
   case ModeValue::Rapid:
     if (!(c.mask & kTargetMask)) return true;

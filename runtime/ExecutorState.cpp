@@ -15,7 +15,7 @@ namespace ncc {
 namespace {
 bool wholeNumber(double n) { return n >= 0 && n <= 1e9 && n == std::floor(n); }
 ToolData resulting(const ToolEdge &e) {
-  return {e.length + e.lengthWear, e.radius + e.radiusWear, e.xOffset + e.xWear};
+  return {e.length + e.lengthWear, e.radius + e.radiusWear, e.xOffset + e.xWear, e.tip};
 }
 // rs274's text for a T, H or D number the table lacks; tool data references use it too.
 std::string unknownTool(long long n) { return "Requested tool " + std::to_string(n) + " not found in the tool table"; }

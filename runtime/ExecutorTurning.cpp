@@ -59,6 +59,37 @@ bool Executor::Impl::turnCycle(const MachineCmd &c) {
   return ok;
 }
 
+// Tool nose radius compensation (808D manual L2186-2512): the program and the tool offsets
+// describe the imaginary tool tip; CutterComp offsets the nose centre's path by the radius and
+// the machine position is that centre plus the tip vector. Tips 0 and 9 are the centre itself.
+bool Executor::Impl::noseTipShift(const ToolData &t, double radius) {
+  if (linearFrame())
+    return error("tool nose radius compensation under a rotation, scaling or mirror is not supported", "unsupported-code");
+  const Point2 v = noseTipVector(t.tip);
+  if (v.x == 0 && v.y == 0) return true;
+  if (machine.controller.family == "linuxcnc")  // rs274 reads an orientation with its own rules
+    return error("cutter compensation with a lathe tool orientation (tip 1-8) on a LinuxCNC machine is not supported",
+                 "unsupported-code");
+  if (plane() != Plane::ZX)
+    return error("tool nose radius compensation with an imaginary tool tip 1-8 needs the ZX plane (G18)",
+                 "unsupported-code");
+  AxisVec s{};
+  s[0] = v.x * radius, s[1] = v.y * radius;  // compensation plane: Z first, X second
+  compOut.shift = fromCompPlane(s, Plane::ZX);
+  return true;
+}
+
+// Fanuc starts the compensation in the block where G41/G42 is given or where, in G41/G42, the
+// offset number becomes one with a radius [model: the 808D manual says only "G41/G42 with T"]:
+// G41/G42 again, now with the T word's offset.
+bool Executor::Impl::noseCompAfterT() {
+  MachineCmd g;
+  g.kind = CmdKind::CutterComp;
+  g.sub = (uint8_t)st.cutterComp;
+  st.cutterComp = 0;
+  return execCutterComp(g);
+}
+
 }  // namespace ncc
 
 // The peck cycles G74 (pecks along Z, grooves shifted along X) and G75 (pecks along X, shifted

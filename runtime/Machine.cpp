@@ -438,6 +438,7 @@ const KeyDef<EdgeIn> kEdgeKeys[] = {
     {"radius_wear", &EdgeIn::radiusWear},
     {"x_offset", &EdgeIn::xOffset},
     {"x_wear", &EdgeIn::xWear},
+    {"tip", &EdgeIn::tip, 0, 9},
 };
 
 struct ToolIn : Tool {
@@ -482,7 +483,7 @@ void readTools(Ctx &c, const toml::node &n, void *obj) {
       continue;
     }
     const ToolEdge &g = edge->second;
-    m.tools[in.number] = ToolData{g.length + g.lengthWear, g.radius + g.radiusWear, g.xOffset + g.xWear};
+    m.tools[in.number] = ToolData{g.length + g.lengthWear, g.radius + g.radiusWear, g.xOffset + g.xWear, g.tip};
     if (m.tools[in.number].radius < 0) c.error(e.source(), tn + ": radius + radius_wear is negative");
     m.toolTable[in.number] = in;
   }

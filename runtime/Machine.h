@@ -26,6 +26,7 @@ struct ToolData {
   double length = 0;  // mm
   double radius = 0;  // mm
   double xOffset = 0; // mm, lathe X offset (a radius: machine X), geometry plus wear
+  int tip = 0;         // lathe imaginary tool tip 0-9 (docs/MACHINE.md "Lathes"), for TNRC
 };
 
 // One cutting edge (Sinumerik D number, Heidenhain/Fanuc offset) of a tool.
@@ -33,6 +34,7 @@ struct ToolEdge {
   double length = 0, radius = 0;          // mm, geometry
   double lengthWear = 0, radiusWear = 0;  // mm, added to the geometry
   double xOffset = 0, xWear = 0;          // mm, lathe X offset (radius, machine X) and its wear
+  int tip = 0;                            // lathe imaginary tool tip 0-9 (0 and 9: the nose centre)
 };
 
 struct Tool {

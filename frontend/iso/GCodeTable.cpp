@@ -145,8 +145,8 @@ const GCodeInfo *findRs274GCode(int32_t code10) {
 // differs from the milling table above: those of both systems, those of one, then the milling
 // codes each system has unchanged. Sorted by code10.
 static const GCodeInfo kTurningBoth[] = {
-    UNSUP(410, CutterComp, "tool nose radius compensation left"),
-    UNSUP(420, CutterComp, "tool nose radius compensation right"),
+    SPECIAL(410, CutterComp, CutterComp, 1, "tool nose radius compensation left"),
+    SPECIAL(420, CutterComp, CutterComp, 2, "tool nose radius compensation right"),
     UNSUP(502, NonModal, "polygon turning off"),
     UNSUP(512, NonModal, "polygon turning"),
     UNSUP(680, NonModal, "turning coordinate rotation / double turret"),

@@ -361,6 +361,11 @@ bool BlockLowerer::Block::setup() {
     static const char *sides[] = {"off", "left", "right"};
     Op &op = emit(OpKind::CutterComp, gloc(GGroup::CutterComp));
     op.set("side", Expr::symbol(sides[gi->arg], gloc(GGroup::CutterComp)));
+    if (gi->arg != 0 && bw.has('D') && L.lathe_) {  // the radius and tip are the T word's offset
+      L.diags_.error(bw.get('D')->loc, "a lathe takes the tool nose radius from the offset of its T word (T0101), not from D",
+                     "unknown-code");
+      return false;
+    }
     if (gi->arg != 0 && bw.has('D')) op.set("d", take('D', Scale::None));
     else if (gi->arg != 0 && L.flavour_ == Flavour::RS274)  // rs274: the loaded tool's radius
       op.set("d_default", Expr::symbol("tool", gloc(GGroup::CutterComp)));
@@ -476,7 +481,13 @@ bool BlockLowerer::Block::motion() {
       if (bw.has('^')) add(op, "polar_a", take('^', Scale::None));
       // Arcs read I J K R; cycles read R (the clearance plane) only; G5/G5.1 I J (the first
       // control point, relative to the start).
-      for (char c : std::string_view(arc ? "IJKR" : cycle || isTurnCycleMotion(m) ? "R" : bezier ? "IJ" : "")) {
+      // A lathe's G01 reads the Fanuc-T chamfer I/K and corner R without a comma (the executor's).
+      const bool turnCorner = L.lathe_ && m == ModeValue::Linear && b.corner.empty();
+      for (char c : std::string_view(arc                                ? "IJKR"
+                                     : cycle || isTurnCycleMotion(m)    ? "R"
+                                     : bezier                           ? "IJ"
+                                     : turnCorner                       ? "IKR"
+                                                                        : "")) {
         if (!bw.has(c)) continue;
         add(op, c, take(c, Scale::Linear));
       }

@@ -61,8 +61,8 @@ bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc
 }
 
 // The 808D turning tool offset write G10 P X(U) Z(W) R(C) (manual L4297-4355): X Z R set, U W C
-// add; which of wear and geometry P names is the executor's (LatheTool). Q (the tool tip) is
-// not kept: ncc has no tool nose radius compensation.
+// add; which of wear and geometry P names is the executor's (LatheTool). Q is an error: the
+// manual's table reads "cutting-edge length" where Fanuc has the imaginary tool tip.
 bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
   if (!bw.has('P')) {
     L.diags_.error(loc, "G10 needs a P word (the offset number) or L2 (a work offset)", "missing-word");
@@ -71,7 +71,8 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
   for (char c : std::string_view("QYV"))
     if (bw.has(c)) {
       L.diags_.error(bw.get(c)->loc,
-                     c == 'Q' ? std::string("G10 Q (the imaginary tool tip) is not kept: ncc has no tool nose radius compensation")
+                     c == 'Q' ? std::string("G10 Q is not supported: the 808D manual's table 1-22 calls it the cutting-edge length, "
+                                                     "Fanuc the imaginary tool tip; set the edge's tip in the machine file")
                               : fmt::format("G10 {}: the lathe has no Y offset", c),
                      "unsupported-code");
       return false;
