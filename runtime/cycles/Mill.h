@@ -10,13 +10,8 @@
 
 namespace ncc {
 
-// A closed tool path from `start`: lines and arcs, each to its `end`; the last ends at `start`.
-struct PathSeg {
-  PlanePoint end{};
-  bool arc = false;
-  PlanePoint centre{};
-  bool ccw = true;
-};
+// A closed tool path from `start`: lines and arcs (PathSeg, Clearing.h), each to its `end`; the
+// last ends at `start`.
 struct Contour {
   PlanePoint start{};
   std::vector<PathSeg> segs;
