@@ -48,6 +48,8 @@ public:
   // Round a clearing ring at `level`, starting at its corner nearest the tool, linked there at
   // the feed (clockwise when !ccw).
   void ring(const Polygon &p, bool ccw, double level, double f);
+  // The corner of `p` nearest the tool, where ring() starts.
+  PlanePoint ringStart(const Polygon &p) const;
   PlanePoint here() const { return here_; }
   double level() const { return level_; }
   // Rapid to a position in program coordinates (the call position), up first.
