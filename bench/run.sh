@@ -2,21 +2,24 @@
 # Benchmarks ncc against LinuxCNC's rs274 (when installed) on the shared benchmark programs.
 # Every figure is measured in this run; ratios compare against rs274 measured alongside.
 #
-# usage: bench/run.sh [--lines N] [--iters N] [--runs K]
+# usage: bench/run.sh [--lines N] [--iters N] [--runs K] [--planner-only]
 #   defaults: 1,000,000 lines, 1,000,000 iterations, 3 runs (median wall time reported)
-# env: NCC (ncc binary), NCC_SHARED (the shared/ folder), BENCH_DIR (work folder)
+#   --planner-only: just the planner rows (planned and unplanned macro_motion runs)
+# env: NCC (ncc binary), NCC_SHARED (the shared/ folder), BENCH_DIR (work folder),
+#      NCC_BASE (a second ncc binary, e.g. an older build: its planner is measured in the same run)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ncc=${NCC:-$root/build/utils/ncc}
 shared=${NCC_SHARED:-$root/../shared}
 dir=${BENCH_DIR:-/tmp/ncc-bench}
-lines=1000000 iters=1000000 runs=3
+lines=1000000 iters=1000000 runs=3 planner_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --lines) lines=$2; shift 2 ;;
     --iters) iters=$2; shift 2 ;;
     --runs) runs=$2; shift 2 ;;
-    *) echo "usage: $0 [--lines N] [--iters N] [--runs K]" >&2; exit 2 ;;
+    --planner-only) planner_only=1; shift ;;
+    *) echo "usage: $0 [--lines N] [--iters N] [--runs K] [--planner-only]" >&2; exit 2 ;;
   esac
 done
 [ -x "$ncc" ] || { echo "bench: build ncc first (utils/bootstrap.sh)" >&2; exit 2; }
@@ -26,24 +29,52 @@ home=$(mktemp -d)
 have_rs274=0
 command -v rs274 >/dev/null && have_rs274=1
 
-# measure NAME CMD...: median wall seconds over $runs runs and the peak RSS (KB) of the last.
+# measure NAME CMD...: median wall seconds over $runs runs, the peak RSS (KB) of the last run and
+# the median CPU seconds (user + system: steadier than wall time when other jobs share the cores).
 measure() {
   local name=$1; shift
-  local times=() rss=0
+  local times=() cpus=() rss=0
   for _ in $(seq "$runs"); do
-    /usr/bin/time -f "%e %M" -o "$dir/time.txt" env HOME="$home" "$@" </dev/null >/dev/null 2>"$dir/$name.err" || {
+    /usr/bin/time -f "%e %M %U %S" -o "$dir/time.txt" env HOME="$home" "$@" </dev/null >/dev/null 2>"$dir/$name.err" || {
       echo "bench: $name failed:" >&2; cat "$dir/$name.err" >&2; return 1; }
-    read -r t r <"$dir/time.txt"
+    read -r t r u k <"$dir/time.txt"
     times+=("$t"); rss=$r
+    cpus+=("$(awk -v u="$u" -v k="$k" 'BEGIN { print u + k }')")
   done
-  local med
+  local med cpu
   med=$(printf '%s\n' "${times[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
-  printf '%s %s %s\n' "$name" "$med" "$rss" >>"$dir/results.txt"
-  printf '  %-28s %8.3f s  %8d KB\n' "$name" "$med" "$rss"
+  cpu=$(printf '%s\n' "${cpus[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
+  printf '%s %s %s %s\n' "$name" "$med" "$rss" "$cpu" >>"$dir/results.txt"
+  printf '  %-28s %8.3f s  %8d KB  (cpu %.3f s)\n' "$name" "$med" "$rss" "$cpu"
+}
+
+get() { awk -v n="$1" '$1==n {print $2}' "$dir/results.txt"; }
+getcpu() { awk -v n="$1" '$1==n {print $4}' "$dir/results.txt"; }
+
+# The planner's rate: macro_motion has one G1 per iteration; the planned run (summary) minus the
+# same run without planning (-q) is the planner's time (CPU seconds, see measure).
+planner_rows() {  # BINARY PREFIX
+  measure "$2-macro-unplanned-jit" "$1" run "$dir/macro_motion.nc" --engine=jit -q
+  measure "$2-macro-planned-jit" "$1" run "$dir/macro_motion.nc" --engine=jit
+}
+planner_rate() {  # PREFIX: M segments/s
+  awk -v p="$(getcpu "$1-macro-planned-jit")" -v u="$(getcpu "$1-macro-unplanned-jit")" -v n="$iters" \
+    'BEGIN { if (p > u) printf "%.2f", n / (p - u) / 1e6; else print "inf" }'
 }
 
 : >"$dir/results.txt"
 echo "ncc: $("$ncc" --version); programs in $dir; median of $runs runs"
+if [ $planner_only = 1 ]; then
+  planner_rows "$ncc" ncc
+  [ -n "${NCC_BASE:-}" ] && planner_rows "$NCC_BASE" base
+  echo "planner: $(planner_rate ncc) M segments/s (target >= 2 M/s)"
+  if [ -n "${NCC_BASE:-}" ]; then
+    echo "planner of NCC_BASE: $(planner_rate base) M segments/s"
+    awk -v a="$(planner_rate ncc)" -v b="$(planner_rate base)" 'BEGIN { if (b > 0) printf "ratio ncc / NCC_BASE: %.1fx\n", a / b }'
+  fi
+  rm -rf "$home"
+  exit 0
+fi
 # Like rs274, these interpret to canonical commands only (-q: no trajectory planning).
 measure ncc-flat-canon        "$ncc" run "$dir/flat_moves.ngc" --trace=canon -o "$dir/flat.ncc.canon" -q
 measure ncc-macro-motion-jit  "$ncc" run "$dir/macro_motion.nc" --engine=jit --trace=canon -o "$dir/macro.ncc.canon" -q
@@ -52,12 +83,12 @@ measure ncc-macro-compute-jit "$ncc" run "$dir/macro_compute.nc" --engine=jit -q
 measure ncc-macro-compute-eval "$ncc" run "$dir/macro_compute.nc" --engine=eval -q
 # The full run: trajectory planning for the summary (cycle time), no trace. rs274 does no planning.
 measure ncc-flat-planned      "$ncc" run "$dir/flat_moves.ngc"
-measure ncc-macro-planned-jit "$ncc" run "$dir/macro_motion.nc" --engine=jit
+planner_rows "$ncc" ncc
+echo "planner: $(planner_rate ncc) M segments/s (target >= 2 M/s)"
 if [ $have_rs274 = 1 ]; then
   measure rs274-flat          rs274 -g "$dir/flat_moves.ngc" "$dir/flat.rs274.canon"
   measure rs274-macro-motion  rs274 -g "$dir/macro_motion.ngc" "$dir/macro.rs274.canon"
   measure rs274-macro-compute rs274 -g "$dir/macro_compute.ngc" "$dir/compute.rs274.canon"
-  get() { awk -v n="$1" '$1==n {print $2}' "$dir/results.txt"; }
   ratio() { awk -v a="$(get "$1")" -v b="$(get "$2")" 'BEGIN { if (b > 0) printf "%.1fx", a / b; else print "n/a" }'; }
   echo
   echo "ratios (rs274 time / ncc time, same run):"

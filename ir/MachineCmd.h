@@ -8,26 +8,35 @@
 #include "ir/ModeTable.h"
 
 #include <cstdint>
+#include <string_view>
 
 namespace ncc {
 
-// The address words a machine op can carry, in a fixed order (a word's slot in `w`). PolarR and
-// PolarA are RS274NGC's `@` (polar radius) and `^` (polar angle, degrees), keys polar_r/polar_a;
-// Chamfer and Round the corner after a move (ISO `,C` `,R`, Sinumerik CHF RND, Heidenhain CHF
-// RND), keys chamfer/round (letters c, r: no address letter). ViaX ViaY ViaZ are the
-// intermediate point of an arc through three points (Sinumerik CIP I1 J1 K1), keys via_x via_y
-// via_z (letters x y z), read like X Y Z.
+// The words a machine op can carry, one table: a word's slot in `w`, its key in NC IR (an
+// address letter, or a name for words without one) and the character messages use. PolarR and
+// PolarA are RS274NGC's `@` (polar radius) and `^` (polar angle, degrees); Chamfer and Round the
+// corner after a move (ISO `,C` `,R`, Sinumerik CHF RND, Heidenhain CHF RND); ViaX ViaY ViaZ the
+// intermediate point of an arc through three points (Sinumerik CIP I1 J1 K1), read like X Y Z.
+// A dialect's new word is one row here (and one in kWordKeys); a command holds up to 64.
 enum class Word : uint8_t {
   X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, PolarR, PolarA, Chamfer, Round,
   ViaX, ViaY, ViaZ, Count
 };
 constexpr int kWords = (int)Word::Count;
+static_assert(kWords <= 64, "MachineCmd::mask has 64 bits");
 constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE@^crxyz";
-inline uint32_t wordBit(Word w) { return 1u << (unsigned)w; }
-// The words a move may make absolute or incremental on their own (MachineCmd sub/sub2).
-constexpr uint32_t kPerWordDistance = 0x3f | 1u << (unsigned)Word::I | 1u << (unsigned)Word::J | 1u << (unsigned)Word::K;
+constexpr const char *kWordKeys[kWords] = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R",
+                                           "P", "Q", "L", "F", "S", "T", "H", "D", "E", "polar_r", "polar_a",
+                                           "chamfer", "round", "via_x", "via_y", "via_z"};
+using WordMask = uint64_t;
+constexpr WordMask wordBit(Word w) { return WordMask(1) << (unsigned)w; }
+// The words a move may make absolute or incremental on their own (MachineCmd sub/sub2, 16
+// bits): the axes X..W and I J K.
+constexpr uint16_t kPerWordDistance = 0x1ff | 1u << (unsigned)Word::I | 1u << (unsigned)Word::J | 1u << (unsigned)Word::K;
 // Returns false for letters that are not words of a machine op.
 bool wordFromLetter(char c, Word &out);
+// The word of an NC IR key: a letter (either case) or a named key of kWordKeys.
+bool wordFromKey(std::string_view key, Word &out);
 
 enum class CmdKind : uint8_t {
   Block,        // start of a source block: blockNumber, loc
@@ -123,7 +132,7 @@ struct MachineCmd {
   uint16_t sub2 = 0;
   uint8_t nmodes = 0;
   ModeValue modes[kMaxModes] = {};
-  uint32_t mask = 0;        // wordBit(...) of the words present
+  WordMask mask = 0;        // wordBit(...) of the words present
   int64_t blockNumber = -1; // for Block: the N word, -1 when none
   SourceLoc loc;
   const char *text = nullptr;  // Comment/Message; owned by the module or a string pool

@@ -39,6 +39,8 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::ThreadSingle, ModeGroup::Motion, "thread_single"},
     {ModeValue::ThreadMulti, ModeGroup::Motion, "thread_multi"},
     {ModeValue::ThreadVariable, ModeGroup::Motion, "thread_variable"},
+    {ModeValue::PeckAlongZ, ModeGroup::Motion, "peck_z"},
+    {ModeValue::PeckAlongX, ModeGroup::Motion, "peck_x"},
     {ModeValue::XY, ModeGroup::Plane, "xy"},
     {ModeValue::ZX, ModeGroup::Plane, "zx"},
     {ModeValue::YZ, ModeGroup::Plane, "yz"},
@@ -96,6 +98,13 @@ bool wordFromLetter(char c, Word &out) {
   if (c < 'A' || c > 'Z' || kLetters.slot[c - 'A'] < 0) return false;
   out = (Word)kLetters.slot[c - 'A'];
   return true;
+}
+
+bool wordFromKey(std::string_view key, Word &out) {
+  if (key.size() == 1) return wordFromLetter(key[0], out);
+  for (int i = 0; i < kWords; ++i)
+    if (key == kWordKeys[i]) return out = (Word)i, true;
+  return false;
 }
 
 }  // namespace ncc

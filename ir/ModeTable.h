@@ -34,6 +34,9 @@ enum class ModeValue : uint8_t {
   // (808D G76, one-shot: the motion mode before it stays); ThreadVariable the 808D's G34 (the lead
   // F grows by K every revolution).
   Thread, RigidTap, ThreadCycle, ThreadSingle, ThreadMulti, ThreadVariable,
+  // The lathe's peck cycles (808D G74 along Z, G75 along X, runtime/ExecutorGrooving.cpp):
+  // one-shot like ThreadMulti, a block without the end point keeps the retract e.
+  PeckAlongZ, PeckAlongX,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -64,5 +67,6 @@ inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= Mo
 inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && v <= ModeValue::NurbsEnd; }
 inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ || v == ModeValue::TurnAlongX; }
 inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadVariable; }
+inline bool isPeckMotion(ModeValue v) { return v == ModeValue::PeckAlongZ || v == ModeValue::PeckAlongX; }
 
 }  // namespace ncc

@@ -201,8 +201,7 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
   auto out = std::back_inserter(s);
   s += recordKindName(r.kind);
   auto axes = [&](const AxisVec &v) {
-    static const char L[] = "XYZABC";
-    for (int i = 0; i < kAxes; ++i) fmt::format_to(out, " {}{}", L[i], v[i]);
+    for (int i = 0, n = writtenAxes({&v}); i < n; ++i) fmt::format_to(out, " {}{}", kAxisLetters[i], v[i]);
   };
   auto named = [&] {
     if (!r.text.empty()) {
@@ -313,17 +312,17 @@ FrameMatrix frameMatrix(const MotionRecord &r) {
   return m;
 }
 
-static const char *const kRotaryKeys[3] = {"ma", "mb", "mc"};
+static const char *const kShiftKeys[kAxes - 3] = {"ma", "mb", "mc", "mu", "mv", "mw"};
 
-void setRotaryShift(MotionRecord &r, const RotaryShift &s) {
-  for (int i = 0; i < 3; ++i)
-    if (s[i] != 0) r.setParam(kRotaryKeys[i], s[i]);
+void setAxisShift(MotionRecord &r, const AxisShift &s) {
+  for (size_t i = 0; i < s.size(); ++i)
+    if (s[i] != 0) r.setParam(kShiftKeys[i], s[i]);
 }
 
-RotaryShift rotaryShift(const MotionRecord &r) {
-  RotaryShift s{};
-  for (int i = 0; i < 3; ++i)
-    if (const double *v = r.param(kRotaryKeys[i])) s[i] = *v;
+AxisShift axisShift(const MotionRecord &r) {
+  AxisShift s{};
+  for (size_t i = 0; i < s.size(); ++i)
+    if (const double *v = r.param(kShiftKeys[i])) s[i] = *v;
   return s;
 }
 
@@ -340,14 +339,14 @@ void WorkFrame::note(const MotionRecord &r) {
     origin_[i] = m[i * 4 + 3];
   }
   mat3Inverse(L, inv_);  // frames are never singular
-  rotary_ = rotaryShift(r);
+  shift_ = axisShift(r);
 }
 
 AxisVec WorkFrame::work(const AxisVec &machine) const {
   double d[3] = {machine[0] - toolX_ - origin_[0], machine[1] - origin_[1], machine[2] - toolZ_ - origin_[2]};
   AxisVec w = machine;
   for (int i = 0; i < 3; ++i) w[i] = inv_[i][0] * d[0] + inv_[i][1] * d[1] + inv_[i][2] * d[2];
-  for (int i = 0; i < 3; ++i) w[3 + i] = machine[3 + i] - rotary_[i];
+  for (size_t i = 0; i < shift_.size(); ++i) w[3 + i] = machine[3 + i] - shift_[i];
   return w;
 }
 

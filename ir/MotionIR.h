@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -15,9 +16,26 @@
 
 namespace ncc {
 
-enum class Axis : uint8_t { X, Y, Z, A, B, C, Count };
+// The machine axes a record positions: the Cartesian X Y Z, the rotary A B C (about X Y Z) and
+// the further linear axes U V W (parallel to X Y Z: LinuxCNC, Heidenhain, Sinumerik channel
+// axes; a machine names them as its controller does, docs/MACHINE.md). A machine describes
+// which of them it has.
+enum class Axis : uint8_t { X, Y, Z, A, B, C, U, V, W, Count };
 constexpr int kAxes = (int)Axis::Count;
+constexpr char kAxisLetters[kAxes + 1] = "XYZABCUVW";
+// X Y Z A B C: what a position is written with while U V W stay at 0 (text form, JSONL,
+// canonical trace), so programs of machines without U V W keep rs274's six-axis form.
+constexpr int kBaseAxes = 6;
 using AxisVec = std::array<double, kAxes>;
+// X Y Z and U V W are lengths (scaled by the program's unit), A B C angles.
+constexpr bool isLengthAxis(int i) { return i < 3 || i >= kBaseAxes; }
+// How many leading axes of the positions to write: kBaseAxes while U V W of all are 0, else kAxes.
+inline int writtenAxes(std::initializer_list<const AxisVec *> vs) {
+  for (const AxisVec *v : vs)
+    for (int i = kBaseAxes; i < kAxes; ++i)
+      if ((*v)[i] != 0) return kAxes;
+  return kBaseAxes;
+}
 
 enum class Plane : uint8_t { XY, ZX, YZ };  // G17, G18, G19
 
@@ -208,15 +226,16 @@ using FrameMatrix = std::array<double, 12>;
 void setFrameMatrix(MotionRecord &r, const FrameMatrix &m);
 // Reads m00..m23; an entry the record lacks is the identity's.
 FrameMatrix frameMatrix(const MotionRecord &r);
-// Its rotary axes: machine A B C = work A B C + shift, named numbers ma mb mc (written when not 0).
-using RotaryShift = std::array<double, 3>;
-void setRotaryShift(MotionRecord &r, const RotaryShift &s);
-RotaryShift rotaryShift(const MotionRecord &r);
+// Its axes after X Y Z: machine A B C U V W = work + shift, named numbers ma mb mc mu mv mw
+// (written when not 0).
+using AxisShift = std::array<double, kAxes - 3>;
+void setAxisShift(MotionRecord &r, const AxisShift &s);
+AxisShift axisShift(const MotionRecord &r);
 
 // Work coordinates beside machine coordinates: follows a stream's FrameChange and ToolLength
 // records and gives the work (program) position of a machine position, in mm (a diameter-
-// programmed X as a radius) and degrees: machine XYZ = M · work + the tool offset, A B C = work
-// + shift. Emitters, lint and the JSONL trace read positions through it.
+// programmed X as a radius) and degrees: machine XYZ = M · work + the tool offset, A B C U V W =
+// work + shift. Emitters, lint and the JSONL trace read positions through it.
 class WorkFrame {
 public:
   void note(const MotionRecord &r);  // FrameChange and ToolLength records; others are ignored
@@ -225,7 +244,7 @@ public:
 private:
   double inv_[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   std::array<double, 3> origin_{};  // M's translation
-  RotaryShift rotary_{};
+  AxisShift shift_{};
   double toolZ_ = 0, toolX_ = 0;
 };
 

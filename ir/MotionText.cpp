@@ -108,11 +108,18 @@ public:
       if (!expect(",", "',' or ')'")) return false;
     }
   }
+  // X Y Z A B C, then U V W when written (all three; absent: 0, see writtenAxes).
   bool axes(AxisVec &v) {
-    static const char L[] = "XYZABC";
     for (int i = 0; i < kAxes; ++i) {
-      char name[2] = {L[i], 0};
-      if (!expect(name, fmt::format("'{}' and a number", L[i]).c_str()) || !number(v[i])) return false;
+      if (i == kBaseAxes) {
+        skipBlanks();
+        if (!peek("U")) {
+          for (; i < kAxes; ++i) v[i] = 0;
+          return true;
+        }
+      }
+      char name[2] = {kAxisLetters[i], 0};
+      if (!expect(name, fmt::format("'{}' and a number", kAxisLetters[i]).c_str()) || !number(v[i])) return false;
     }
     return true;
   }

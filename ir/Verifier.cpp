@@ -404,10 +404,6 @@ private:
         error(op.loc, "'modal_call' without a callee (a cancel) takes no arguments");
       break;
     }
-    case OpKind::Move:
-      for (const char *k : {"U", "V", "W"})
-        if (op.get(k)) error(op.loc, fmt::format("'move' axis '{}' is not supported by the machine model yet", k));
-      break;
     case OpKind::Home: {
       const Expr *r = op.get("ref");
       if (r && !(r->kind == ExprKind::Number && (r->num == 1 || r->num == 2)))

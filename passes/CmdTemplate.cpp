@@ -35,10 +35,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::SetOffset, "index", Word::P},  {OpKind::Aux, "m", Word::P},
     {OpKind::Aux, "b", Word::P},            {OpKind::Aux, "h", Word::P},
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
-    {OpKind::Move, "polar_r", Word::PolarR}, {OpKind::Move, "polar_a", Word::PolarA},
-    {OpKind::Move, "chamfer", Word::Chamfer}, {OpKind::Move, "round", Word::Round},
-    {OpKind::Move, "via_x", Word::ViaX},     {OpKind::Move, "via_y", Word::ViaY},
-    {OpKind::Move, "via_z", Word::ViaZ},     {OpKind::Spindle, "angle", Word::R},
+    {OpKind::Spindle, "angle", Word::R},
     {OpKind::Spindle, "wait", Word::Q},      {OpKind::Speed, "limit", Word::D},
     {OpKind::Contour, "type", Word::P},
 };
@@ -115,10 +112,10 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     for (char l : e->str) {
       Word w;
       if (e->kind != ExprKind::Symbol || !wordFromLetter(l, w) || !(wordBit(w) & kPerWordDistance)) {
-        diags.error(op.loc, fmt::format("'{}' {}= names the words X Y Z A B C I J K (as in {}=XZ)", opInfo(op.kind).name, key, key));
+        diags.error(op.loc, fmt::format("'{}' {}= names the words X Y Z A B C U V W I J K (as in {}=XZ)", opInfo(op.kind).name, key, key));
         return false;
       }
-      bits |= (uint16_t)wordBit(w);
+      bits |= (uint16_t)wordBit(w);  // kPerWordDistance words are the low 16
     }
     return true;
   };
@@ -216,12 +213,12 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   default:
     break;
   }
-  // Scalar words: named keys per the table, axis/parameter letters for motion ops.
+  // Scalar words: named keys per kKeyWords, the words' own keys (kWordKeys) for motion ops.
   bool letters = op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
                  op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour;
   for (auto &a : op.args) {
     Word w;
-    if (letters && a.key.size() == 1 && wordFromLetter(a.key[0], w)) {
+    if (letters && wordFromKey(a.key, w)) {
       addWord(w, a.value.get());
       continue;
     }
@@ -318,9 +315,8 @@ Op cmdToOp(const MachineCmd &c) {
       Word w = (Word)i;
       if (!c.has(w)) continue;
       if ((op.kind == OpKind::SetOffset || op.kind == OpKind::Contour) && w == Word::P) continue;
-      if (w >= Word::PolarR) continue;  // named keys, above
-      if (op.kind == OpKind::Contour && w != Word::U && w != Word::W && w != Word::R) continue;  // below
-      op.set(std::string(1, kWordLetters[i]), real(c.get(w)));
+      if (op.kind == OpKind::Contour && w != Word::U && w != Word::W && w != Word::R) continue;  // the pocket's keys, below
+      op.set(kWordKeys[i], real(c.get(w)));
     }
   if (op.kind == OpKind::Contour)
     for (auto &p : kPocketParams)

@@ -1,4 +1,7 @@
 #include "runtime/CanonDiff.h"
+#include "ir/MotionIR.h"
+
+#include <algorithm>
 
 #include <array>
 #include <charconv>
@@ -100,7 +103,7 @@ enum class MotionKind { Traverse, Feed, Arc, Probe, RigidTap, Dwell, Nurbs };
 struct Motion {
   MotionKind kind;
   CanonLine line;
-  std::array<double, 6> pos{};  // machine mm / degrees (Dwell: pos[0] = seconds, Nurbs: the count)
+  AxisVec pos{};  // machine mm / degrees (Dwell: pos[0] = seconds, Nurbs: the count)
   std::array<double, 2> center{};
   int plane = 0, rot = 0;
   double unitScale = 1;
@@ -117,24 +120,26 @@ public:
 private:
   // Offsets are kept in mm as of the units in force when they were set: rs274 does not reprint
   // them after USE_LENGTH_UNITS.
-  void setOffset(std::array<double, 6> &dst, const double *v) {
-    for (int i = 0; i < 6; ++i) dst[i] = i < 3 ? v[i] * scale_ : v[i];
+  // n values: X Y Z A B C, with U V W when the trace has them (rs274 built with them).
+  void setOffset(AxisVec &dst, const double *v, int n) {
+    dst = {};
+    for (int i = 0; i < std::min(n, kAxes); ++i) dst[i] = isLengthAxis(i) ? v[i] * scale_ : v[i];
   }
-  void toMachine(const std::array<double, 6> &p, std::array<double, 6> &out) const {
-    std::array<double, 6> q;
-    for (int i = 0; i < 6; ++i) q[i] = (i < 3 ? p[i] * scale_ : p[i]) + g92_[i];
+  void toMachine(const AxisVec &p, AxisVec &out) const {
+    AxisVec q;
+    for (int i = 0; i < kAxes; ++i) q[i] = (isLengthAxis(i) ? p[i] * scale_ : p[i]) + g92_[i];
     if (rot_ != 0) {
       double r = rot_ * M_PI / 180, c = std::cos(r), s = std::sin(r);
       double x = q[0] * c - q[1] * s, y = q[0] * s + q[1] * c;
       q[0] = x, q[1] = y;
     }
-    for (int i = 0; i < 6; ++i) out[i] = q[i] + g5x_[i] + tool_[i];
+    for (int i = 0; i < kAxes; ++i) out[i] = q[i] + g5x_[i] + tool_[i];
   }
   LineReader lines_;
   size_t last_ = 0;
-  std::array<double, 6> pos_{};  // machine position after the last straight move
+  AxisVec pos_{};  // machine position after the last straight move
   double scale_ = 1, rot_ = 0;
-  std::array<double, 6> g5x_{}, g92_{}, tool_{};
+  AxisVec g5x_{}, g92_{}, tool_{};
   int plane_ = 0;
 };
 
@@ -146,7 +151,8 @@ bool MachineReader::next(Motion &m, std::string &err) {
     last_ = l.lineNo;
     if (l.name.empty()) continue;
     std::string_view nm = l.name;
-    std::array<double, 10> v{};
+    std::array<double, 16> v{};
+    int count = 0;
     bool ok = true;
     auto bad = [&] {
       err = "line " + std::to_string(l.lineNo) + ": cannot read the arguments of " + std::string(nm);
@@ -157,17 +163,17 @@ bool MachineReader::next(Motion &m, std::string &err) {
       scale_ = l.args.find("INCH") != std::string_view::npos ? 25.4
                : l.args.find("CM") != std::string_view::npos ? 10.0 : 1.0;
     } else if (nm == "SET_G5X_OFFSET") {
-      if (numbers(l.args, v, ok) < 7 || !ok) return bad();
-      setOffset(g5x_, &v[1]);
+      if ((count = numbers(l.args, v, ok)) < 7 || !ok) return bad();
+      setOffset(g5x_, &v[1], count - 1);
     } else if (nm == "SET_G92_OFFSET") {
-      if (numbers(l.args, v, ok) < 6 || !ok) return bad();
-      setOffset(g92_, &v[0]);
+      if ((count = numbers(l.args, v, ok)) < 6 || !ok) return bad();
+      setOffset(g92_, &v[0], count);
     } else if (nm == "SET_XY_ROTATION") {
       if (numbers(l.args, v, ok) < 1 || !ok) return bad();
       rot_ = v[0];
     } else if (nm == "USE_TOOL_LENGTH_OFFSET") {
-      if (numbers(l.args, v, ok) < 6 || !ok) return bad();
-      setOffset(tool_, &v[0]);
+      if ((count = numbers(l.args, v, ok)) < 6 || !ok) return bad();
+      setOffset(tool_, &v[0], count);
     } else if (nm == "SELECT_PLANE") {
       plane_ = l.args.find("XZ") != std::string_view::npos ? 1 : l.args.find("YZ") != std::string_view::npos ? 2 : 0;
     } else {
@@ -175,27 +181,29 @@ bool MachineReader::next(Motion &m, std::string &err) {
     }
     if (state) continue;
     if (nm == "STRAIGHT_TRAVERSE" || nm == "STRAIGHT_FEED" || nm == "STRAIGHT_PROBE") {
-      if (numbers(l.args, v, ok) < 6 || !ok) return bad();
+      if ((count = numbers(l.args, v, ok)) < 6 || !ok) return bad();
       m = Motion();
       m.kind = nm == "STRAIGHT_TRAVERSE" ? MotionKind::Traverse
                : nm == "STRAIGHT_FEED"   ? MotionKind::Feed : MotionKind::Probe;
-      std::array<double, 6> p{v[0], v[1], v[2], v[3], v[4], v[5]};
+      AxisVec p{};
+      for (int i = 0; i < std::min(count, kAxes); ++i) p[i] = v[i];
       toMachine(p, m.pos);
     } else if (nm == "RIGID_TAP") {
       if (numbers(l.args, v, ok) < 3 || !ok) return bad();
       m = Motion();
       m.kind = MotionKind::RigidTap;
-      std::array<double, 6> p{v[0], v[1], v[2], 0, 0, 0};
+      AxisVec p{v[0], v[1], v[2]};
       toMachine(p, m.pos);
     } else if (nm == "ARC_FEED") {
-      if (numbers(l.args, v, ok) < 9 || !ok) return bad();
+      if ((count = numbers(l.args, v, ok)) < 9 || !ok) return bad();
       m = Motion();
       m.kind = MotionKind::Arc;
       const int *ax = kPlaneAxes[plane_];
-      std::array<double, 6> p{};
-      p[ax[0]] = v[0], p[ax[1]] = v[1], p[ax[2]] = v[5], p[3] = v[6], p[4] = v[7], p[5] = v[8];
+      AxisVec p{};
+      p[ax[0]] = v[0], p[ax[1]] = v[1], p[ax[2]] = v[5];
+      for (int i = 3; i < std::min(count - 3, kAxes); ++i) p[i] = v[i + 3];  // A B C (U V W)
       toMachine(p, m.pos);
-      std::array<double, 6> c = p, cm;
+      AxisVec c = p, cm;
       c[ax[0]] = v[2], c[ax[1]] = v[3];
       toMachine(c, cm);
       m.center = {cm[ax[0]], cm[ax[1]]};
@@ -225,7 +233,7 @@ bool MachineReader::next(Motion &m, std::string &err) {
       // bare `G0` after a tool change): not motion at machine level.
       // Positions computed through a rotation differ in the last bits: "where it is" within 1e-9.
       bool still = m.kind == MotionKind::Traverse || m.kind == MotionKind::Feed;
-      for (int i = 0; i < 6 && still; ++i) still = std::fabs(m.pos[i] - pos_[i]) <= 1e-9;
+      for (int i = 0; i < kAxes && still; ++i) still = std::fabs(m.pos[i] - pos_[i]) <= 1e-9;
       pos_ = m.pos;
       if (still) continue;
     }
@@ -238,7 +246,6 @@ bool MachineReader::next(Motion &m, std::string &err) {
 
 const char *kMotionNames[] = {"STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "ARC_FEED", "STRAIGHT_PROBE", "RIGID_TAP", "DWELL",
                               "NURBS_FEED"};
-const char *kAxisNames[] = {"X", "Y", "Z", "A", "B", "C"};
 const char *kPlaneNames[] = {"XY", "XZ", "YZ"};
 
 std::string fmt(double v) {
@@ -266,11 +273,11 @@ std::string compareMotion(const Motion &a, const Motion &b, double tol) {
       return "dwell differs: " + fmt(a.pos[0]) + " vs " + fmt(b.pos[0]) + " s";
     return {};
   }
-  for (int i = 0; i < 6; ++i) {
-    double ti = i < 3 ? t : tol + 1e-9;
+  for (int i = 0; i < kAxes; ++i) {
+    double ti = isLengthAxis(i) ? t : tol + 1e-9;
     if (std::fabs(a.pos[i] - b.pos[i]) > ti)
-      return std::string(kAxisNames[i]) + " differs: " + fmt(a.pos[i]) + " vs " + fmt(b.pos[i]) +
-             (i < 3 ? " mm" : " deg");
+      return std::string(1, kAxisLetters[i]) + " differs: " + fmt(a.pos[i]) + " vs " + fmt(b.pos[i]) +
+             (isLengthAxis(i) ? " mm" : " deg");
   }
   if (a.kind == MotionKind::Arc) {
     if (a.plane != b.plane)
@@ -278,7 +285,7 @@ std::string compareMotion(const Motion &a, const Motion &b, double tol) {
     if (a.rot != b.rot) return "arc turns differ: " + std::to_string(a.rot) + " vs " + std::to_string(b.rot);
     for (int i = 0; i < 2; ++i)
       if (std::fabs(a.center[i] - b.center[i]) > t)
-        return "arc centre " + std::string(kAxisNames[kPlaneAxes[a.plane][i]]) + " differs: " +
+        return "arc centre " + std::string(1, kAxisLetters[kPlaneAxes[a.plane][i]]) + " differs: " +
                fmt(a.center[i]) + " vs " + fmt(b.center[i]) + " mm";
   }
   return {};

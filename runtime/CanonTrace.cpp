@@ -165,7 +165,7 @@ void CanonTraceWriter::thread(const MotionRecord &r) {
   if (r.sync == ThreadSync::TapOut) return;
   begin(n);
   buf_.append(r.sync == ThreadSync::TapIn ? "RIGID_TAP(" : "STRAIGHT_FEED(");
-  nums(r.end.data(), r.sync == ThreadSync::TapIn ? 3 : kAxes);
+  nums(r.end.data(), r.sync == ThreadSync::TapIn ? 3 : writtenAxes({&r.end}));
   buf_.push_back(')');
   end();
 }
@@ -181,7 +181,7 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   case RecordKind::Linear:
     begin(n);
     buf_.append(r.kind == RecordKind::Rapid ? "STRAIGHT_TRAVERSE(" : "STRAIGHT_FEED(");
-    nums(r.end.data(), kAxes);
+    nums(r.end.data(), writtenAxes({&r.end}));
     buf_.push_back(')');
     end();
     if (enableAfterMove_) line(n, "ENABLE_FEED_OVERRIDE()");
@@ -203,8 +203,8 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     buf_.append(", ");
     buf_.append(tmp, (size_t)(res.ptr - tmp));
     buf_.append(", ");
-    double w[4] = {r.end[ax[2]], r.end[3], r.end[4], r.end[5]};
-    nums(w, 4);
+    double w[7] = {r.end[ax[2]], r.end[3], r.end[4], r.end[5], r.end[6], r.end[7], r.end[8]};
+    nums(w, writtenAxes({&r.end}) - 2);
     buf_.push_back(')');
     end();
     break;

@@ -62,7 +62,7 @@ void Executor::Impl::noteFrame(const char *what) {
   auto toMachine = [&](double x, double y, double z) {
     AxisVec p{};
     p[0] = x, p[1] = y, p[2] = z;
-    for (int i = 0; i < kAxes; ++i) p[i] += frameOffset(i);  // A B C too: their shift
+    for (int i = 0; i < kAxes; ++i) p[i] += frameOffset(i);  // A B C U V W too: their shift
     AxisVec m = frameOut(p);
     for (int i = 0; i < kAxes; ++i) m[i] -= toolOffset(i);
     return m;
@@ -75,14 +75,14 @@ void Executor::Impl::noteFrame(const char *what) {
     f[i * 4 + 2] = ez[i] - o[i];
     f[i * 4 + 3] = o[i];
   }
-  RotaryShift rot;
-  for (int i = 0; i < 3; ++i) rot[i] = o[3 + i];  // machine A B C of work 0
-  if (f == lastFrame && rot == lastRotary) return;
-  lastFrame = f, lastRotary = rot;
+  AxisShift shift;
+  for (size_t i = 0; i < shift.size(); ++i) shift[i] = o[3 + i];  // machine A B C U V W of work 0
+  if (f == lastFrame && shift == lastShift) return;
+  lastFrame = f, lastShift = shift;
   MotionRecord r = record(RecordKind::FrameChange);
   r.text = what;
   setFrameMatrix(r, f);
-  setRotaryShift(r, rot);
+  setAxisShift(r, shift);
   emit(r);
 }
 
@@ -144,14 +144,12 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
 }
 
 bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
-  for (int i = 0; i < kAxes && axesDescribed; ++i)
-    if (c.has((Word)i) && !machine.axes[i].present)
+  // Without a described axis set (machines built in code) X Y Z A B C are taken as present.
+  for (int i = 0; i < kAxes; ++i)
+    if (c.has((Word)i) && (axesDescribed || i >= kBaseAxes) && !machine.axes[i].present)
       return error(std::string(1, kWordLetters[i]) + " word used, but the machine has no " + kWordLetters[i] +
                        " axis",
                    "unknown-axis");
-  for (Word w : {Word::U, Word::V, Word::W})
-    if (c.has(w))
-      return error(std::string(1, kWordLetters[(int)w]) + " axis words are not supported", "unsupported-code");
   return true;
 }
 
@@ -177,7 +175,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
                      "spline-invalid");
       if (v == ModeValue::NurbsEnd && !nurbsEnd()) return false;
       if (v == ModeValue::SplineCubic || v == ModeValue::SplineQuadratic) splineReturn = st.motion;
-      if (v == ModeValue::ThreadMulti && st.motion != v) threadReturn = st.motion;
+      if ((v == ModeValue::ThreadMulti || isPeckMotion(v)) && st.motion != v) threadReturn = st.motion;  // one-shot
       if (v != st.motion) turnSet = false;  // a new G90/G94 run takes its words afresh
       st.motion = v;
       if (!isCycleMotion(v)) {

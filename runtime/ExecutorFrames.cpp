@@ -69,7 +69,7 @@ bool asWorkOffset(const FrameValue &f, double unit, AxisVec &offset, double &rot
         return false;
       }
   if (std::fabs(rotation) < 1e-12) rotation = 0;
-  for (int i = 0; i < kAxes; ++i) offset[i] = f.coarse[i] * (i < 3 ? unit : 1.0);
+  for (int i = 0; i < kFrameAxes; ++i) offset[i] = f.coarse[i] * (i < 3 ? unit : 1.0);
   return true;
 }
 }  // namespace
@@ -93,7 +93,7 @@ bool Executor::readFrame(const SysRef &ref, FrameValue &out, std::string &err) c
   case SysVar::IFrame: out = workOffsetFrame(x.g5xActive, x.g5xRotActive, u); return true;
   case SysVar::ActFrame: {  // settable : G92 : programmable (the tool is not part of it)
     FrameValue g92;
-    for (int i = 0; i < kAxes; ++i) g92.coarse[i] = x.g92[i] / (i < 3 ? u : 1.0);
+    for (int i = 0; i < kFrameAxes; ++i) g92.coarse[i] = x.g92[i] / (i < 3 ? u : 1.0);
     out = frameChain(workOffsetFrame(x.g5xActive, x.g5xRotActive, u), frameChain(g92, x.programmableFrame()));
     return true;
   }
@@ -123,7 +123,7 @@ bool Executor::writeFrame(const SysRef &ref, const FrameValue &f, SourceLoc loc,
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) pf.rotation[0].m[i][j] = f.L[i][j];
     pf.rotationLevels = pf.rotation[0].linearIdentity() ? 0 : 1;
-    for (int i = 0; i < kAxes; ++i) pf.local[i] = f.offset(i) * (i < 3 ? u : 1.0);
+    for (int i = 0; i < kFrameAxes; ++i) pf.local[i] = f.offset(i) * (i < 3 ? u : 1.0);
     pf.update();
     x.pfValue = {true, f, pf.composite, pf.local};
     x.noteFrame("$P_PFRAME");

@@ -12,7 +12,7 @@
 
 namespace ncc {
 
-constexpr uint32_t kAxisMask = (1u << kAxes) - 1;  // the X Y Z A B C words of a MachineCmd
+constexpr WordMask kAxisMask = (WordMask(1) << kAxes) - 1;  // the axis words X..W of a MachineCmd
 
 // Cutter compensation computes in XY: records of a G18/G19 path reach it with their axes turned
 // so that the plane's first and second axes are X and Y (a cyclic permutation, which keeps the
@@ -137,7 +137,7 @@ struct Executor::Impl {
   // mm per unit of an axis word; a diameter-programmed X (machine [controller]) is halved here,
   // so every dialect, offset word and position read-back shares it (arc I/K and R are radii).
   double axisScale(int axis) const {
-    return axis == 0 && machine.controller.diameterProgramming ? scale() * 0.5 : axis < 3 ? scale() : 1.0;
+    return axis == 0 && machine.controller.diameterProgramming ? scale() * 0.5 : isLengthAxis(axis) ? scale() : 1.0;
   }
   double offset(int axis) const {
     return g5xActive[axis] + g92[axis] + pf.local[axis] + toolOffset(axis);
@@ -210,7 +210,7 @@ struct Executor::Impl {
   // which has its own record) differs from the last one emitted; `what` names the cause.
   void noteFrame(const char *what);
   FrameMatrix lastFrame{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-  RotaryShift lastRotary{};
+  AxisShift lastShift{};
   // Errors for what ncc does not do under a programmable mirror, scaling or rotation.
   bool frameForbids(const char *what);
   // The offset frame's plane `pl` maps onto the same machine plane with equal scale on both axes
@@ -317,6 +317,9 @@ struct Executor::Impl {
   bool turnSet = false;
   AxisVec turnEnd{};
   double turnTaper = 0;
+  // --- lathe peck cycles G74/G75 (ExecutorTurning.cpp) ---
+  bool peckCycle(const MachineCmd &c);
+  double peckRetract = -1;  // e of the last G74/G75 R, mm; < 0: never programmed (the machine's)
   // --- thread cutting (ExecutorThread.cpp) ---
   // Spindle turning at a speed, no compensation, no rotation/scaling/mirror.
   bool threadAllowed(const char *code);
@@ -331,7 +334,7 @@ struct Executor::Impl {
   bool threadChain = false;  // the last motion record was a thread (an 808D G32 may chain on)
   double threadSpeed = 0;    // the spindle of the last thread record (a chain must keep it)
   int threadSpindle = 0;
-  ModeValue threadReturn = ModeValue::Rapid;  // the motion mode an 808D G76 block gives back
+  ModeValue threadReturn = ModeValue::Rapid;  // the motion mode an 808D G76 (G74, G75) block gives back
   struct ThreadData {  // 808D G76 P(m r a) Q R, modal
     bool set = false;
     int finishPasses = 1;

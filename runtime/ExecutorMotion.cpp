@@ -32,7 +32,7 @@ constexpr double kArcRelTolerance = 0.001;
 constexpr double kArcAbsTolMM = 0.02 * M_SQRT2, kArcAbsTolInch = 0.002 * M_SQRT2;
 
 // Words that give a move a target: the axes and RS274NGC's polar @ ^.
-const uint32_t kTargetMask = kAxisMask | wordBit(Word::PolarR) | wordBit(Word::PolarA);
+const WordMask kTargetMask = kAxisMask | wordBit(Word::PolarR) | wordBit(Word::PolarA);
 
 }  // namespace
 
@@ -131,6 +131,8 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::RigidTap: return rigidTap(c);
   case ModeValue::ThreadCycle: return threadCycle(c);
   case ModeValue::ThreadMulti: return threadMulti(c);
+  case ModeValue::PeckAlongZ:
+  case ModeValue::PeckAlongX: return peckCycle(c);
   case ModeValue::NurbsEnd:  // rs274 has no motion mode after G5.3
     if (!(c.mask & kTargetMask)) return true;
     return error("Cannot use axis values without a g code that uses them", "motion-mode-none");

@@ -320,7 +320,7 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
 // (rs274's #5211…: G92.2 zeroes the applied offsets only).
 double *Executor::Impl::storedOffset(const SysVarInfo &info, double &unit) const {
   Impl &x = const_cast<Impl &>(*this);  // one lookup for readSystem and writeSystem
-  unit = info.axis < 3 ? paramUnit : 1.0;
+  unit = info.axis < 3 ? paramUnit : 1.0;  // X Y Z; A B C and R (axis 6 of a work offset) are angles
   switch (info.family) {
   case SysFamily::WorkOffset: return info.axis == 6 ? &x.g5xRotation[info.system - 1] : &x.g5x[info.system - 1][info.axis];
   case SysFamily::G92: return &x.g92Saved[info.axis];

@@ -8,8 +8,10 @@
 // angle Q, along Z unless the taper is steeper than 45 degrees) for the cut and a rapid out;
 // the run-out chamfer the 808D makes on a machine signal is not modelled (no such signal here).
 #include "runtime/ExecutorImpl.h"
+#include "runtime/cycles/Grooving.h"
 
 #include <cmath>
+#include <fmt/format.h>
 
 namespace ncc {
 
@@ -53,6 +55,83 @@ bool Executor::Impl::turnCycle(const MachineCmd &c) {
   };
   bool ok = moveTo(RecordKind::Rapid, p1) && cut() && moveTo(thread ? RecordKind::Rapid : RecordKind::Linear, p3) &&
             moveTo(RecordKind::Rapid, a);
+  emit(record(RecordKind::CycleEnd));
+  return ok;
+}
+
+}  // namespace ncc
+
+// The peck cycles G74 (pecks along Z, grooves shifted along X) and G75 (pecks along X, shifted
+// along Z), 808D manual 1.5.1 (L3660-3716), Fanuc's two-block form: `G74 R<e>` sets the retract
+// after each peck (modal; the machine's `peck_retract` until then), `G74 X(U) Z(W) P<Δi> Q<Δk>
+// R<Δd> F` cuts from the start point A to the end point. P is the X amount, Q the Z amount (radii,
+// least increments), R the relief Δd when the block names the shift axis (G74 X, G75 Z), else e.
+// Without the shift axis the cycle drills (G74) or cuts one groove (G75); P (G74) / Q (G75) are
+// then errors, as in the manual. runtime/cycles/Grooving.h makes the moves.
+namespace ncc {
+
+bool Executor::Impl::peckCycle(const MachineCmd &c) {
+  const bool alongZ = st.motion == ModeValue::PeckAlongZ;
+  st.motion = threadReturn;  // one-shot
+  const char *code = alongZ ? "G74" : "G75";
+  const int peckAxis = alongZ ? 2 : 0, shiftAxis = alongZ ? 0 : 2;
+  const Word peckWord = alongZ ? Word::Q : Word::P, shiftWord = alongZ ? Word::P : Word::Q;
+  const char *peckName = alongZ ? "Z (W)" : "X (U)", *shiftName = alongZ ? "X (U)" : "Z (W)";
+  const char peckLetter = alongZ ? 'Q' : 'P', shiftLetter = alongZ ? 'P' : 'Q';
+  const bool shifts = c.has(alongZ ? Word::X : Word::Z);
+  auto amount = [&](Word w, char letter, const char *what, double &v) {
+    v = c.has(w) ? c.get(w) * scale() : 0;
+    return v >= 0 || error(fmt::format("{} {} ({}) must not be negative: it is written without a sign", code, letter, what), "cycle-invalid");
+  };
+  if (c.has(Word::R) && !shifts) {
+    double e;
+    if (!amount(Word::R, 'R', "the retract e", e)) return false;
+    peckRetract = e;
+  }
+  if (c.mask & kAxisMask & ~(wordBit(Word::X) | wordBit(Word::Z)))
+    return error(fmt::format("{} takes X (U), Z (W), P, Q, R and F", code), "unsupported-code");
+  if (!(c.mask & (wordBit(Word::X) | wordBit(Word::Z)))) {
+    if (c.has(Word::P) || c.has(Word::Q))
+      return error(fmt::format("{} P and Q need the end point {} in their block", code, peckName), "missing-word");
+    if (!c.has(Word::R)) return error(fmt::format("{} needs R (the retract e) or an end point", code), "missing-word");
+    return true;  // the data block
+  }
+  if (!c.has(alongZ ? Word::Z : Word::X))
+    return error(fmt::format("{} needs the end point {} (the depth of its pecks)", code, peckName), "missing-word");
+  if (!shifts && c.has(shiftWord))
+    return error(fmt::format("{} {} (the shift between grooves) needs {} in its block (without it the cycle {})", code,
+                             shiftLetter, shiftName, alongZ ? "drills" : "cuts one groove"),
+                 "cycle-invalid");
+  if (plane() != Plane::ZX) return error(fmt::format("{} needs the ZX plane (G18)", code), "unsupported-code");
+  if (linearFrame()) return error(fmt::format("{} under a rotation, scaling or mirror is not supported", code), "unsupported-code");
+  if (!compForbids("Cannot use turning cycles with cutter compensation on") || !checkFeed(code)) return false;
+  PeckGroove g;
+  if (!amount(peckWord, peckLetter, "the depth per peck", g.peck) || !amount(shiftWord, shiftLetter, "the shift", g.shift))
+    return false;
+  if (shifts && !amount(Word::R, 'R', "the relief at the bottom", g.relief)) return false;
+  g.retract = peckRetract >= 0 ? peckRetract : machine.controller.peckRetract;
+  const AxisVec a = st.position, e = target(c);
+  g.start = {a[peckAxis], a[shiftAxis]}, g.end = {e[peckAxis], e[shiftAxis]};
+  if (std::fabs(g.end.a - g.start.a) > 1e-9 && !c.has(peckWord))
+    return error(fmt::format("{} needs {} (the depth per peck)", code, peckLetter), "missing-word");
+  if (std::fabs(g.end.b - g.start.b) > 1e-9 && !c.has(shiftWord))
+    return error(fmt::format("{} needs {} (the shift between grooves) to reach its end {}", code, shiftLetter, shiftName),
+                 "missing-word");
+  std::vector<ContourElem> moves;
+  std::string why;
+  if (!peckGrooves(g, moves, why)) return error(fmt::format("{}: {}", code, why), "cycle-invalid");
+  MotionRecord begin = record(RecordKind::CycleBegin);
+  begin.text = alongZ ? "iso.G74" : "iso.G75";
+  begin.setParam("X", e[0] - frameOffset(0)), begin.setParam("Z", e[2] - frameOffset(2));
+  begin.setParam(std::string(1, peckLetter), g.peck), begin.setParam(std::string(1, shiftLetter), g.shift);
+  begin.setParam("R", g.relief), begin.setParam("E", g.retract);
+  emit(begin);
+  bool ok = true;
+  for (const ContourElem &m : moves) {
+    AxisVec to = a;
+    to[peckAxis] = m.end.a, to[shiftAxis] = m.end.b;
+    if (!(ok = moveTo(m.kind == ContourKind::Rapid ? RecordKind::Rapid : RecordKind::Linear, to))) break;
+  }
   emit(record(RecordKind::CycleEnd));
   return ok;
 }

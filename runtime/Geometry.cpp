@@ -115,12 +115,15 @@ Vec3 arcAxisShare(const ArcGeometry &g) {
   return share;
 }
 
+// The length of a straight move as rs274 measures it: X Y Z, else U V W (parallel linear
+// axes), else A B C (degrees).
 double linearLength(const AxisVec &a, const AxisVec &b) {
-  double l = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
-                       (b[2] - a[2]) * (b[2] - a[2]));
-  if (l > 1e-12) return l;
-  return std::sqrt((b[3] - a[3]) * (b[3] - a[3]) + (b[4] - a[4]) * (b[4] - a[4]) +
-                   (b[5] - a[5]) * (b[5] - a[5]));
+  for (int first : {0, 6, 3}) {
+    double l = std::sqrt((b[first] - a[first]) * (b[first] - a[first]) + (b[first + 1] - a[first + 1]) * (b[first + 1] - a[first + 1]) +
+                         (b[first + 2] - a[first + 2]) * (b[first + 2] - a[first + 2]));
+    if (l > 1e-12 || first == 3) return l;
+  }
+  return 0;
 }
 
 AxisVec unitDirection(const AxisVec &start, const AxisVec &end, double length) {

@@ -27,7 +27,7 @@ namespace ncc {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr const char *kAxisNames = "XYZABC";
+constexpr const char *kAxisNames = kAxisLetters;
 constexpr const char *kDialects = "iso fanuc linuxcnc sinumerik heidenhain cldata";
 // Modal groups a controller may reset at M2/M30 (the executor's table in runtime/Executor.cpp).
 constexpr const char *kResetGroups =
@@ -112,7 +112,7 @@ std::optional<std::string> readString(Ctx &c, const toml::node &n, const std::st
   return v;
 }
 
-// [x, y, z (, a, b, c)] into out; out is unchanged after a problem. Not inlined: GCC's bounds
+// [x, y, z (, a, b, c (, u, v, w))] into out; out is unchanged after a problem. Not inlined: GCC's bounds
 // check otherwise warns about the instantiations for structs without an AxisVec member.
 [[gnu::noinline]] void readAxisVec(Ctx &c, const toml::node &n, const std::string &key, AxisVec &out) {
   // An unquoted g59.1 is a dotted key (table g59, key 1): say how to write it.
@@ -120,7 +120,7 @@ std::optional<std::string> readString(Ctx &c, const toml::node &n, const std::st
     return c.error(n.source(), key + ": expected an array, got a table (quote keys with a dot: \"" + key + ".1\")");
   const toml::array *a = n.as_array();
   if (!a || a->size() < 3 || a->size() > (size_t)kAxes)
-    return c.error(n.source(), key + ": expected an array of 3 to 6 numbers [x, y, z, a, b, c], got " +
+    return c.error(n.source(), key + ": expected an array of 3 to 9 numbers [x, y, z, a, b, c, u, v, w], got " +
                                    (a ? std::to_string(a->size()) + " elements" : typeName(n)));
   AxisVec v{};
   for (size_t i = 0; i < a->size(); ++i) {
@@ -352,6 +352,7 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"m19_angle", &Controller::m19Angle, 0, 360},
     {"boring_orient_angle", &Controller::boringOrientAngle, 0, 360},
     {"boring_lift", &Controller::boringLift, 0, 4},
+    {"peck_retract", &Controller::peckRetract, 0, 1000},
     {"tool_write", &Controller::toolWrite, 0, 0, false, "on-select immediate"},
     {"offset_memory", NodeReader(readOffsetMemory)},
     {"offset_numbers", NodeReader(readOffsetNumbers)},
@@ -361,8 +362,20 @@ void readAxisKind(Ctx &c, const toml::node &n, void *obj) {
   if (auto s = readString(c, n, "kind", "linear rotary")) static_cast<AxisLimits *>(obj)->rotary = *s == "rotary";
 }
 
+// The controller's name of the axis (Sinumerik channel axis names such as X1 or Q1): a letter,
+// then letters, digits or '_', at most 8 characters.
+void readAxisName(Ctx &c, const toml::node &n, void *obj) {
+  const std::string *s = n.as_string() ? &n.as_string()->get() : nullptr;
+  if (!s) return c.error(n.source(), "name: expected a string, got " + typeName(n));
+  bool ok = !s->empty() && s->size() <= 8 && std::isupper((unsigned char)(*s)[0]) &&
+            std::all_of(s->begin(), s->end(), [](char ch) { return std::isupper((unsigned char)ch) || std::isdigit((unsigned char)ch) || ch == '_'; });
+  if (!ok) return c.error(n.source(), "name: '" + *s + "' is not an axis name (an upper-case letter, then upper-case letters, digits or '_', at most 8)");
+  static_cast<AxisLimits *>(obj)->name = *s;
+}
+
 const KeyDef<AxisLimits> kAxisKeys[] = {
     {"kind", NodeReader(readAxisKind)},
+    {"name", NodeReader(readAxisName)},
     {"max_velocity", &AxisLimits::maxVelocity, 0, kInf, true, nullptr, true},
     {"max_accel", &AxisLimits::maxAccel, 0, kInf, true, nullptr, true},
     {"max_jerk", &AxisLimits::maxJerk, 0},
@@ -379,13 +392,15 @@ void readAxes(Ctx &c, const toml::node &n, void *obj) {
   Machine &m = *static_cast<Machine *>(obj);
   forEachNamed(c, n, "axes", [&](const std::string &name, const toml::key &k, const toml::node &v) {
     const char *p = name.size() == 1 ? std::strchr(kAxisNames, name[0]) : nullptr;
-    if (!p || !*p) return c.error(k.source(), "axis '" + name + "': the executor models only the axes X Y Z A B C");
+    if (!p || !*p) return c.error(k.source(), "axis '" + name + "': the machine axes are X Y Z A B C U V W (name them with 'name')");
     int i = int(p - kAxisNames);
     AxisLimits a;
     a.present = true;
-    a.rotary = i >= 3;  // A B C turn unless kind says otherwise
+    a.rotary = i >= 3 && i < 6;  // A B C turn unless kind says otherwise
     if (readTable(c, v, "[axes." + name + "]", kAxisKeys, a) && a.minPos >= a.maxPos)
       c.error(v.source(), "[axes." + name + "]: min must be below max");
+    if (i >= kBaseAxes && a.rotary)
+      c.error(v.source(), "[axes." + name + "]: U V W are linear axes (parallel to X Y Z)");
     m.axes[i] = a;
   });
 }
@@ -531,7 +546,7 @@ void readJoints(Ctx &c, const toml::node &n, void *obj) {
     if (in.axisName.empty()) continue;  // reported (missing, or not a string)
     const char *p = in.axisName.size() == 1 ? std::strchr(kAxisNames, in.axisName[0]) : nullptr;
     if (!p || !*p)
-      c.error(e.as_table()->get("axis")->source(), "axis: '" + in.axisName + "' is not one of X, Y, Z, A, B, C");
+      c.error(e.as_table()->get("axis")->source(), "axis: '" + in.axisName + "' is not one of X, Y, Z, A, B, C, U, V, W");
     else if (ok)
       in.axis = int(p - kAxisNames), joints.push_back(in);
   }
@@ -673,6 +688,20 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
         c.error(doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
                 std::string("axis ") + kAxisNames[i] + ": kinematics \"" + m.kinematics + "\" needs it linear");
     chainChecks(c, doc, m);
+    // ISO lathes read U V W as the incremental X Y Z.
+    for (int i = kBaseAxes; i < kAxes; ++i)
+      if (m.axes[i].present && m.controller.lathe())
+        c.error(doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
+                std::string("axis ") + kAxisNames[i] + ": a lathe reads U V W as the incremental X Y Z, it cannot have the axis");
+    // One name per axis: a name may not repeat, nor be the letter of another described axis.
+    for (int i = 0; i < kAxes; ++i)
+      for (int j = 0; j < i && m.axes[i].present; ++j)
+        if (m.axes[j].present && m.axisName(i) == m.axisName(j))
+          c.error(doc["axes"][std::string(1, kAxisNames[i])]["name"].node()
+                      ? doc["axes"][std::string(1, kAxisNames[i])]["name"].node()->source()
+                      : doc["axes"][std::string(1, kAxisNames[i])].node()->source(),
+                  "axis " + std::string(1, kAxisNames[i]) + ": the name '" + m.axisName(i) + "' is already axis " +
+                      std::string(1, kAxisNames[j]) + "'s");
     // Every offset number names an edge of the tool table.
     for (auto &[number, edge] : m.controller.offsetNumbers) {
       auto tool = m.toolTable.find(edge.first);
@@ -769,6 +798,16 @@ int KinematicChain::tiltJoint() const {
 void Machine::addTool(int n, const ToolEdge &edge) {
   toolTable[n].edges[1] = edge;
   tools[n] = ToolData{edge.length + edge.lengthWear, edge.radius + edge.radiusWear};
+}
+
+std::string Machine::axisName(int i) const {
+  return axes[i].name.empty() ? std::string(1, kAxisLetters[i]) : axes[i].name;
+}
+
+int Machine::axisByName(std::string_view name) const {
+  for (int i = 0; i < kAxes; ++i)
+    if (axes[i].present && axisName(i) == name) return i;
+  return -1;
 }
 
 const ToolData *Machine::findTool(int n) const {

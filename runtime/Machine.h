@@ -14,6 +14,7 @@ namespace ncc {
 struct AxisLimits {
   bool present = false;
   bool rotary = false;
+  std::string name;        // the controller's name of the axis; empty: its letter (Machine::axisName)
   double maxVelocity = 0;  // mm/min (deg/min)
   double maxAccel = 0;     // mm/s^2
   double maxJerk = 0;      // mm/s^3
@@ -88,6 +89,9 @@ struct Controller {
   double m19Angle = 0;
   double boringOrientAngle = 0;
   int boringLift = 0;
+  // The retract e after each peck of the lathe's G74/G75 until a program gives `G74 R` (808D GUD
+  // _ZSFI[29]), mm. 1 mm as the 808D's milling peck retract _ZSFR[1] takes for 0.
+  double peckRetract = 1.0;
   // Key tool_write: "on-select" (default) or "immediate".
   std::string toolWrite = "on-select";
   ToolWrite toolWritePolicy() const { return toolWrite == "immediate" ? ToolWrite::Immediate : ToolWrite::OnSelect; }
@@ -157,6 +161,11 @@ struct Machine {
   int freeTools = 0;
   // The tool data of number n (0 = no tool: zero data), or null when n is not a valid tool.
   const ToolData *findTool(int n) const;
+  // The controller's name of axis i (its `name`, else its letter X..W).
+  std::string axisName(int i) const;
+  // The axis a controller name stands for (-1: none): a described axis's name, or the letter of
+  // a described axis that has no other name.
+  int axisByName(std::string_view name) const;
   // Adds tool n with the one edge d = 1 to both tables (machines built in code: the executor
   // reads edges from toolTable, findTool reads tools).
   void addTool(int n, const ToolEdge &edge);

@@ -14,38 +14,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMinLength = 1e-9;  // mm: shorter moves take no time
 
-// Position and speed after time tau into a velocity change of dv (signed) from vStart.
-void changeAt(double vStart, double dv, double a, double j, double tau, double &s, double &v) {
-  double sign = dv < 0 ? -1 : 1, adv = std::fabs(dv);
-  double tj, ta, apk;
-  if (std::isinf(j) || adv >= a * a / j) {
-    tj = std::isinf(j) ? 0 : a / j;
-    ta = adv / a - tj;
-    apk = a;
-  } else {
-    tj = std::sqrt(adv / j);
-    ta = 0;
-    apk = j * tj;
-  }
-  s = 0;
-  v = vStart;
-  double t1 = std::min(tau, tj);  // jerk rising
-  if (tj > 0 && t1 > 0) {
-    s += v * t1 + sign * j * t1 * t1 * t1 / 6;
-    v += sign * j * t1 * t1 / 2;
-  }
-  if (tau <= tj) return;
-  double t2 = std::min(tau - tj, ta);  // constant acceleration
-  if (t2 > 0) {
-    s += v * t2 + sign * apk * t2 * t2 / 2;
-    v += sign * apk * t2;
-  }
-  if (tau <= tj + ta || tj <= 0) return;
-  double t3 = std::min(tau - tj - ta, tj);  // jerk falling
-  s += v * t3 + sign * (apk * t3 * t3 / 2 - j * t3 * t3 * t3 / 6);
-  v += sign * (apk * t3 - j * t3 * t3 / 2);
-}
-
 double dot(const AxisVec &a, const AxisVec &b) {
   double d = 0;
   for (int i = 0; i < kAxes; ++i) d += a[i] * b[i];
@@ -68,98 +36,6 @@ AxisVec normalized(AxisVec v) {
 
 }  // namespace
 
-double velocityChangeTime(double dv, double a, double j) {
-  dv = std::fabs(dv);
-  if (dv <= 0) return 0;
-  if (std::isinf(j)) return dv / a;
-  return dv >= a * a / j ? dv / a + a / j : 2 * std::sqrt(dv / j);
-}
-
-double velocityChangeDistance(double v0, double v1, double a, double j) {
-  // A symmetric S-curve is point-symmetric about its midpoint: mean speed = (v0 + v1) / 2.
-  return 0.5 * (v0 + v1) * velocityChangeTime(v1 - v0, a, j);
-}
-
-double maxReachableSpeed(double v, double len, double a, double j) {
-  if (len <= 0) return v;
-  if (!std::isinf(j)) {
-    double dvStar = a * a / j;  // smallest change that reaches full acceleration
-    double dStar = (2 * v + dvStar) * a / j;
-    if (len <= dStar) {
-      // dv = j s^2 where j s^3 + 2 v s = len (increasing, convex for s > 0): Halley steps from
-      // an upper bound (each term alone reaching len) converge cubically.
-      double s = std::cbrt(len / j);
-      if (v > 0) s = std::min(s, len / (2 * v));
-      for (int i = 0; i < 40; ++i) {
-        double f = j * s * s * s + 2 * v * s - len, d1 = 3 * j * s * s + 2 * v, d2 = 6 * j * s;
-        double step = f * d1 / (d1 * d1 - 0.5 * f * d2);
-        s -= step;
-        if (std::fabs(step) <= 1e-13 * s) break;
-      }
-      return v + j * s * s;
-    }
-  }
-  double k = std::isinf(j) ? 0 : a * a / j;
-  double B = 2 * v + k, C = 2 * v * k - 2 * len * a;  // dv^2 + B dv + C = 0, C < 0
-  return v + (-2 * C) / (B + std::sqrt(B * B - 4 * C));
-}
-
-VelocityProfile planProfile(double len, double v0, double v1, double vmax, double a, double j) {
-  VelocityProfile p;
-  p.length = len;
-  p.accel = a;
-  p.jerk = j;
-  v0 = std::min(v0, vmax);
-  v1 = std::min(v1, vmax);
-  p.v0 = v0;
-  p.v1 = v1;
-  if (len <= 0) {
-    p.vp = std::max(v0, v1);
-    return p;
-  }
-  auto need = [&](double vp) {
-    return velocityChangeDistance(v0, vp, a, j) + velocityChangeDistance(vp, v1, a, j);
-  };
-  double vp = vmax;
-  if (need(vmax) > len) {
-    double lo = std::max(v0, v1), hi = vmax;
-    // Peak of a trapezoid: exact without a jerk limit, an upper estimate with one.
-    vp = std::clamp(std::sqrt(std::max(0.0, a * len + 0.5 * (v0 * v0 + v1 * v1))), lo, hi);
-    if (!std::isinf(j)) {
-      // Safeguarded Newton on the (increasing) distance needed to reach the peak and come back.
-      auto slope = [&](double from, double to) {  // d/d(to) of velocityChangeDistance(from, to)
-        double dv = to - from, t = velocityChangeTime(dv, a, j);
-        double dt = dv >= a * a / j ? 1 / a : (dv > 0 ? 1 / std::sqrt(dv * j) : INFINITY);
-        return 0.5 * t + 0.5 * (from + to) * dt;
-      };
-      for (int i = 0; i < 60; ++i) {
-        double f = need(vp) - len;
-        if (std::fabs(f) <= 1e-13 * len || hi - lo <= 1e-13 * hi) break;
-        (f > 0 ? hi : lo) = vp;
-        double next = vp - f / (slope(v0, vp) + slope(v1, vp));
-        vp = next > lo && next < hi ? next : 0.5 * (lo + hi);
-      }
-    }
-  }
-  p.vp = vp;
-  p.tAcc = velocityChangeTime(vp - v0, a, j);
-  p.tDec = velocityChangeTime(vp - v1, a, j);
-  double rest = len - need(vp);
-  if (rest > 0 && vp > 0) p.tCruise = rest / vp;
-  return p;
-}
-
-void VelocityProfile::at(double t, double &s, double &v) const {
-  if (t <= 0) { s = 0; v = v0; return; }
-  if (t < tAcc) { changeAt(v0, vp - v0, accel, jerk, t, s, v); return; }
-  double sAcc = velocityChangeDistance(v0, vp, accel, jerk);
-  if (t < tAcc + tCruise) { s = sAcc + vp * (t - tAcc); v = vp; return; }
-  double sd, vd;
-  changeAt(vp, v1 - vp, accel, jerk, std::min(t - tAcc - tCruise, tDec), sd, vd);
-  s = std::min(length, sAcc + vp * tCruise + sd);
-  v = vd;
-}
-
 AxisVec PlannedSegment::positionAt(double t) const {
   if (record.kind == RecordKind::Dwell) return record.end;
   double s, v;
@@ -180,10 +56,20 @@ AxisVec PlannedSegment::positionAt(double t) const {
 
 Planner::Planner(const Machine &machine)
     : machine_(machine), tolerance_(machine.pathTolerance) {
+  size_t window = (size_t)std::max(1, machine.lookahead);
   size_t n = 2;
-  while (n < (size_t)std::max(1, machine.lookahead) + 1) n *= 2;
+  while (n < window + 1) n *= 2;
   ring_.resize(n);
+  runs_.resize(n);
   mask_ = n - 1;
+  runMax_ = std::max<size_t>(1, window / 2);
+  minVel_ = minAccel_ = minJerk_ = kInf;
+  for (const AxisLimits &ax : machine.axes) {
+    if (!ax.present) continue;
+    minVel_ = std::min(minVel_, ax.maxVelocity / 60);
+    minAccel_ = std::min(minAccel_, ax.maxAccel);
+    if (ax.maxJerk > 0) minJerk_ = std::min(minJerk_, ax.maxJerk);
+  }
 }
 
 // Speed, acceleration and jerk caps of one move from the machine's per-axis limits.
@@ -249,33 +135,74 @@ void Planner::limits(Pending &p) const {
 }
 
 // Junction-deviation model: the corner is passed on a virtual circle that stays within the
-// tolerance of the corner point, at the speed whose centripetal acceleration is the limit.
-double Planner::junctionSpeed(const Pending &prev, const Pending &next) const {
+// tolerance of the corner point, at the highest speed every axis can follow on it.
+double Planner::junctionSpeed(const Pending &prev, const Pending &next, double &radius) const {
   double cap = std::min(prev.vmax, next.vmax);
+  radius = kInf;
   if (prev.stopAfter) return 0;
   double c = dot(prev.nOut, next.nIn);
   if (c >= 1 - 1e-12) return cap;  // tangent
   double delta = pathMode_ == 2 ? tolerance_ : 0;
   double sinHalf = std::sqrt(std::max(0.0, 0.5 * (1 + c)));  // sin of half the inner angle
   if (sinHalf >= 1) return cap;
-  double radius = delta * sinHalf / (1 - sinHalf);
-  double a = std::min(prev.accel, next.accel);
-  return std::min(cap, std::sqrt(a * radius));
+  radius = delta * sinHalf / (1 - sinHalf);
+  if (!(radius > 0)) return 0;
+  // No axis carries more than the whole path speed, acceleration or jerk: when the smallest
+  // axis limits allow the cap, every axis does (the common case of gentle corners).
+  if (cap <= minVel_ && cap * cap <= minAccel_ * radius && cap * cap * cap <= minJerk_ * radius * radius) return cap;
+  return std::min(cap, cornerSpeed(prev.nOut, next.nIn, c, radius));
+}
+
+namespace {
+
+// Largest |f| over [0, T] of f(phi) = A cos(phi - phi0), given its values and slopes at both ends
+// and its amplitude (T < pi: at most one extremum inside, where the slope changes sign).
+double sinusoidMax(double f0, double d0, double fT, double dT, double amp) {
+  return d0 * dT <= 0 ? amp : std::max(std::fabs(f0), std::fabs(fT));
+}
+
+}  // namespace
+
+// On the virtual arc from direction `from` to `to` (unit vectors, cosine c of the turn) with
+// radius R, the direction at turn angle phi is t = cos(phi) from + sin(phi) q, the centripetal
+// acceleration v^2/R along dt/dphi and the jerk v^3/R^2 along -t. Each axis gets the largest
+// component of each over the turn: v <= max_velocity / |t_i|, v^2 / R <= max_accel / |t'_i|,
+// v^3 / R^2 <= max_jerk / |t_i|.
+double Planner::cornerSpeed(const AxisVec &from, const AxisVec &to, double c, double radius) const {
+  double sinT = std::sqrt(std::max(0.0, 1 - c * c)), v = kInf, accel = kInf, jerk = kInf;
+  for (int i = 0; i < kAxes; ++i) {
+    const AxisLimits &ax = machine_.axes[i];
+    if (!ax.present) continue;
+    double shareV = 1, shareA = 1;  // a near-reversal: the direction sweeps every axis
+    if (sinT > 1e-9) {
+      double p = from[i], q = (to[i] - c * from[i]) / sinT, amp = std::sqrt(p * p + q * q);
+      double gEnd = -p * sinT + q * c;  // t'_i at the end of the turn
+      shareV = sinusoidMax(p, q, to[i], gEnd, amp);
+      shareA = sinusoidMax(q, -p, gEnd, -to[i], amp);
+    }
+    if (shareV > 1e-12) {
+      v = std::min(v, ax.maxVelocity / 60 / shareV);
+      if (ax.maxJerk > 0) jerk = std::min(jerk, ax.maxJerk / shareV);
+    }
+    if (shareA > 1e-12) accel = std::min(accel, ax.maxAccel / shareA);
+  }
+  v = std::min(v, std::sqrt(accel * radius));
+  return std::isinf(jerk) ? v : std::min(v, std::cbrt(jerk * radius * radius));
 }
 
 void Planner::push(const MotionRecord &r) {
-  if (count_ == ring_.size()) emitFront();  // cannot happen with the pop below; kept as a guard
+  // The slot is reused as it is: every field the move needs is set below (a full reset of the
+  // slot cost more than the rest of planning a straight move).
   Pending &p = at(count_);
-  // Reset in place: cheaper than assigning a temporary (one zeroing, no move, no second destructor).
-  p.~Pending();
-  new (&p) Pending{};
   p.seg.record = r;
   p.seg.record.text.clear();
+  p.seg.spline.reset();
   lastPos_ = r.end;
   if (r.kind == RecordKind::Arc) {
     p.seg.arc = arcGeometry(r);
     p.length = p.seg.arc.length;
     Vec3 t0 = arcTangent(p.seg.arc, 0), t1 = arcTangent(p.seg.arc, 1);
+    p.tIn = p.tOut = AxisVec{};
     for (int i = 0; i < 3; ++i) p.tIn[i] = t0[i], p.tOut[i] = t1[i];
     if (p.length > 0)
       for (int i = 3; i < kAxes; ++i) p.tIn[i] = p.tOut[i] = (r.end[i] - r.start[i]) / p.length;
@@ -285,6 +212,7 @@ void Planner::push(const MotionRecord &r) {
     p.seg.record.extra.reset();
     p.length = p.seg.spline->length();
     Vec3 t0 = p.seg.spline->startTangent(), t1 = p.seg.spline->endTangent();
+    p.tIn = p.tOut = AxisVec{};
     for (int i = 0; i < 3; ++i) p.tIn[i] = t0[i], p.tOut[i] = t1[i];
   } else {
     p.length = linearLength(r.start, r.end);
@@ -292,7 +220,7 @@ void Planner::push(const MotionRecord &r) {
   }
   if (!std::isfinite(p.length)) p.length = 0;  // absurd coordinates: no time rather than inf/NaN
   p.nIn = normalized(p.tIn);
-  p.nOut = normalized(p.tOut);
+  p.nOut = r.kind == RecordKind::Linear || r.kind == RecordKind::Rapid ? p.nIn : normalized(p.tOut);
   p.stopAfter = r.exactStop || pathMode_ == 1;
   Pending *prev = count_ ? &at(count_ - 1) : nullptr;
   if (p.length < kMinLength) {
@@ -303,39 +231,98 @@ void Planner::push(const MotionRecord &r) {
     p.jerk = prev ? prev->jerk : kInf;
     if (prev) p.tIn = p.tOut = prev->tOut, p.nIn = p.nOut = prev->nOut;
     p.vJunction = prev && !prev->stopAfter ? p.vmax : 0;
+    p.cornerRadius = kInf;
   } else {
     limits(p);
-    p.vJunction = prev ? junctionSpeed(*prev, p) : 0;
+    p.vJunction = prev ? junctionSpeed(*prev, p, p.cornerRadius) : 0;
   }
+  bool joined = prev && !prev->stopAfter && runCount_ && joins(run(runCount_ - 1), p);
   ++count_;
   stats_.maxQueued = std::max(stats_.maxQueued, count_);
-  // Backward pass: the new move must be able to stop at its end; raise earlier entry speeds
-  // until one does not change (then none before it can).
-  p.vBack = reachCapped(0, p.length, p.vJunction, p.accel, p.jerk);
-  for (size_t i = count_ - 1; i-- > 0;) {
-    Pending &q = at(i);
-    double v = reachCapped(at(i + 1).vBack, q.length, q.vJunction, q.accel, q.jerk);
-    if (v <= q.vBack) break;
-    q.vBack = v;
+  if (!joined) {
+    Run &n = run(runCount_++);
+    n = Run{};
+    n.vmax = p.vmax;
+    n.accel = p.accel;
+    n.jerk = p.jerk;
+    n.vJunction = p.vJunction;
   }
+  addToRuns(p);
   if (p.stopAfter) flush();
   else if (count_ > (size_t)std::max(1, machine_.lookahead)) emitFront();
 }
 
-// Forward pass for the front move: accelerate from the committed entry as far as the length and
-// the next move's backward limit allow.
+// A move joins the open run when its junction does not limit speed, it has the run's speed cap,
+// its acceleration and jerk limits are within 10 % of the run's (the run takes the smallest),
+// the corner can turn the carried acceleration within the axes' jerk, and joining does not
+// lower the run's backward limit (which earlier decisions rely on).
+bool Planner::joins(const Run &run, const Pending &p) const {
+  if (run.committed || run.total >= runMax_) return false;
+  if (p.length == 0) return true;
+  if (run.length == 0 || std::fabs(p.vmax - run.vmax) > 1e-9 * run.vmax || p.vJunction < p.vmax * (1 - 1e-12))
+    return false;
+  if (p.accel < 0.9 * run.accel || run.accel < 0.9 * p.accel) return false;
+  if (std::isinf(p.jerk) != std::isinf(run.jerk) || p.jerk < 0.9 * run.jerk || run.jerk < 0.9 * p.jerk) return false;
+  double a = std::min(run.accel, p.accel), j = std::min(run.jerk, p.jerk);
+  // Path acceleration carried through the corner turns with the direction: over the virtual
+  // arc (time R Theta / v) every axis' share of it changes at up to a v / R.
+  if (a * p.vmax > minJerk_ * p.cornerRadius) return false;
+  return reachCapped(0, run.length + p.length, run.vJunction, a, j) >= run.vBack;
+}
+
+// Adds the move just queued to the last run and runs the backward pass: the last run must be
+// able to stop at its end; earlier entry limits rise until one does not change (then none
+// before it can: every change only raises them).
+void Planner::addToRuns(const Pending &p) {
+  Run &last = run(runCount_ - 1);
+  ++last.moves;
+  ++last.total;
+  last.length += p.length;
+  last.accel = std::min(last.accel, p.accel);
+  last.jerk = std::min(last.jerk, p.jerk);
+  last.stopAfter = p.stopAfter;
+  last.vBack = reachCapped(0, last.length, last.vJunction, last.accel, last.jerk);
+  for (size_t i = runCount_ - 1; i-- > 0;) {
+    Run &q = run(i);
+    if (q.committed) break;
+    double v = reachCapped(run(i + 1).vBack, q.length, q.vJunction, q.accel, q.jerk);
+    if (v <= q.vBack) break;
+    q.vBack = v;
+  }
+}
+
+// Forward pass for the front run: accelerate from the committed entry as far as its length and
+// the next run's backward limit allow, as one ramp.
+void Planner::commit(Run &r) {
+  double next = runCount_ > 1 ? run(1).vBack : 0;
+  double v0 = std::min(entry_, r.vmax);
+  double v1 = r.length == 0 ? std::min(next, v0) : reachCapped(v0, r.length, next, r.accel, r.jerk);
+  r.ramp = planProfile(r.length, v0, v1, r.vmax, r.accel, r.jerk);
+  r.committed = true;
+  r.sDone = r.tDone = 0;
+  r.vDone = r.ramp.rampV0;
+  entry_ = v1;
+  ++stats_.runs;
+}
+
+// The front move leaves the window with its slice of its run's ramp.
 void Planner::emitFront() {
   Pending &p = at(0);
-  double next = count_ > 1 ? at(1).vBack : 0;
-  double v0 = std::min(entry_, p.vmax);
-  double v1 = reachCapped(v0, p.length, next, p.accel, p.jerk);
-  if (p.length == 0) v1 = std::min(next, v0);
+  Run &r = run(0);
+  if (!r.committed) commit(r);
+  double sTo = r.moves == 1 ? r.length : std::min(r.length, r.sDone + p.length);
   p.seg.vmax = p.vmax;
-  p.seg.profile = planProfile(p.length, v0, v1, p.vmax, p.accel, p.jerk);
-  entry_ = v1;
+  p.seg.profile = r.ramp;
+  r.tDone = p.seg.profile.slice(r.sDone, sTo, r.tDone, r.vDone);
+  r.vDone = p.seg.profile.v1;
+  r.sDone = sTo;
   emit(p.seg);
   head_ = (head_ + 1) & mask_;
   --count_;
+  if (--r.moves == 0) {
+    runHead_ = (runHead_ + 1) & mask_;
+    --runCount_;
+  }
   if (count_ == 0) entry_ = 0;
 }
 
@@ -408,13 +395,14 @@ void Planner::variableThread(const MotionRecord &t) {
   s.record.text.clear();
   s.vmax = std::max(v0, v1);
   VelocityProfile &p = s.profile;
-  p.length = len, p.v0 = v0, p.vp = p.v1 = v1, p.jerk = INFINITY;
+  p.rampLength = len, p.rampV0 = v0, p.rampVp = p.rampV1 = v1, p.jerk = INFINITY;
   const double tRamp = v0 + v1 > 0 ? 2 * len / (v0 + v1) : 0;
   if (std::fabs(v1 - v0) <= 1e-12 * std::max(1.0, v0)) {
-    p.vp = p.v1 = v0, p.tCruise = v0 > 0 ? len / v0 : 0, p.accel = 1;  // no change worth a ramp
+    p.rampVp = p.rampV1 = v0, p.tCruise = v0 > 0 ? len / v0 : 0, p.accel = 1;  // no change worth a ramp
   } else {
     p.tAcc = tRamp, p.accel = std::fabs(v1 - v0) / tRamp;
   }
+  p.whole();
   lastPos_ = t.end;
   inThread_ = true;
   emit(s);
@@ -444,6 +432,7 @@ void Planner::record(const MotionRecord &r) {
     // Dwell records need not carry a position: the machine waits where the last move ended.
     s.record.start = s.record.end = lastPos_;
     s.profile.tCruise = std::isfinite(r.value) && r.value > 0 ? std::min(r.value, 1e9) : 0;
+    s.profile.whole();
     emit(s);
     return;
   }

@@ -20,6 +20,12 @@ RunOutputs::RunOutputs(const Machine &machine, const RunOutputOptions &options)
     so.maxPoints = opt_.svgMaxPoints;
     svg_ = std::make_unique<SvgPlot>(so);
   }
+  if (!opt_.velocityPath.empty()) {
+    VelocityPlot::Options vo;
+    vo.title = opt_.programName;
+    velocity_ = std::make_unique<VelocityPlot>(vo);
+    planner_.addListener(velocity_.get());
+  }
 }
 
 RunOutputs::~RunOutputs() = default;
@@ -56,6 +62,10 @@ bool RunOutputs::finish(Diagnostics &diags) {
   }
   if (svg_ && !writeFileAtomic(opt_.svgPath, svg_->render(), err)) {
     diags.error(SourceLoc{}, "cannot write plot to '" + opt_.svgPath + "': " + err);
+    ok = false;
+  }
+  if (velocity_ && !writeFileAtomic(opt_.velocityPath, velocity_->render(), err)) {
+    diags.error(SourceLoc{}, "cannot write velocity plot to '" + opt_.velocityPath + "': " + err);
     ok = false;
   }
   return ok;

@@ -13,6 +13,7 @@ namespace ncc {
 
 struct RunOutputOptions {
   std::string svgPath, csvPath;  // empty = not written
+  std::string velocityPath;      // --plot-velocity: speed/acceleration over time (SVG)
   double samplePeriod = 0.01;    // s, CSV sample period
   std::string programName;       // shown in the summary and the plot title
   size_t svgMaxPoints = 100000;
@@ -41,6 +42,7 @@ private:
   std::unique_ptr<AtomicFile> csvFile_;
   std::unique_ptr<CsvSampler> csv_;
   std::unique_ptr<SvgPlot> svg_;
+  std::unique_ptr<VelocityPlot> velocity_;
   bool finished_ = false;
 };
 

@@ -119,4 +119,43 @@ private:
   bool truncated_ = false;
 };
 
+// Path speed (mm/s) and path acceleration (mm/s^2) over time, two stacked panels with a time
+// axis in s and a legend (docs/PLANNER.md "Velocity plot"). Samples are kept as the minimum and
+// maximum of each time bucket; buckets merge in pairs when there are too many, so memory and
+// the file stay bounded for any program length.
+class VelocityPlot : public PlanListener {
+public:
+  struct Options {
+    double width = 1000, height = 640;  // px
+    size_t maxBuckets = 4000;           // time buckets kept (2 points each per curve)
+    std::string title;
+  };
+  VelocityPlot() : VelocityPlot(Options{}) {}
+  explicit VelocityPlot(Options o) : opt_(std::move(o)) {}
+  void segment(const PlannedSegment &s) override;
+  void finished(double totalTime) override { total_ = totalTime; }
+  std::string render() const;
+  size_t buckets() const { return buckets_.size(); }
+
+private:
+  struct Extreme {
+    double lo = 1e300, hi = -1e300, tLo = 0, tHi = 0;
+    void add(double t, double x);
+    void merge(const Extreme &o);
+  };
+  struct Bucket {
+    Extreme v, a;
+  };
+  void sample(double t, double v, double a);
+  Options opt_;
+  std::vector<Bucket> buckets_;
+  double width_ = 1e-3;  // s per bucket, doubled when the buckets exceed the cap
+  double total_ = 0, vPeak_ = 0, aPeak_ = 0, aLow_ = 0;
+  uint64_t segments_ = 0;
+};
+
+// Shared by the SVG writers: 1, 2 or 5 times a power of ten near a fifth of width; XML text.
+double niceLength(double width);
+std::string xmlEscape(const std::string &text);
+
 }  // namespace ncc

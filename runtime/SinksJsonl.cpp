@@ -43,14 +43,18 @@ std::string motionRecordJson(const MotionRecord &r, const AxisVec *work) {
   case RecordKind::Arc:
   case RecordKind::Spline:
   case RecordKind::Thread:
+  {
+    // Six positions, nine while U V W are in use (writtenAxes).
+    const int n = writtenAxes({&r.start, &r.end, work ? work : &r.end});
     s += ",\"start\":";
-    vec(s, r.start.data(), kAxes);
+    vec(s, r.start.data(), n);
     s += ",\"end\":";
-    vec(s, r.end.data(), kAxes);
+    vec(s, r.end.data(), n);
     if (work) {
       s += ",\"work\":";
-      vec(s, work->data(), kAxes);
+      vec(s, work->data(), n);
     }
+  }
     if (r.kind != RecordKind::Rapid) {
       s += ",\"feed\":";
       num(s, r.feed);

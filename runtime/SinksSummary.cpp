@@ -49,7 +49,7 @@ void SummaryCollector::record(const MotionRecord &r) {
     Vec3 l3, h3;
     arcBounds(g, r.start, r.end, l3, h3);
     for (int i = 0; i < kAxes; ++i) {
-      lo[i] = i < 3 ? l3[i] : std::min(r.start[i], r.end[i]);
+      lo[i] = i < 3 ? l3[i] : std::min(r.start[i], r.end[i]);  // arcs move X Y Z; the rest straight
       hi[i] = i < 3 ? h3[i] : std::max(r.start[i], r.end[i]);
     }
     ++arcs;
@@ -90,13 +90,12 @@ std::string formatDuration(double seconds) {
 namespace {
 std::string boxText(const SummaryCollector::Box &b) {
   if (b.empty) return "none";
-  static const char L[] = "XYZABC";
   std::string s;
   for (int i = 0; i < kAxes; ++i) {
-    // Rotary axes only when they move or sit away from zero.
+    // A B C U V W only when they move or sit away from zero.
     if (i >= 3 && b.lo[i] == 0 && b.hi[i] == 0) continue;
     if (!s.empty()) s += "  ";
-    s += fmt::format("{} {:.3f}..{:.3f}", L[i], b.lo[i] + 0.0, b.hi[i] + 0.0);
+    s += fmt::format("{} {:.3f}..{:.3f}", kAxisLetters[i], b.lo[i] + 0.0, b.hi[i] + 0.0);
   }
   return s;
 }

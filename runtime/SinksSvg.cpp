@@ -98,7 +98,6 @@ void SvgPlot::record(const MotionRecord &r) {
   }
 }
 
-namespace {
 // 1, 2 or 5 times a power of ten, near a fifth of the width.
 double niceLength(double width) {
   double target = std::max(width / 5, 1e-6);
@@ -107,7 +106,12 @@ double niceLength(double width) {
     if (m * p <= target) return m * p;
   return p;
 }
-}  // namespace
+
+std::string xmlEscape(const std::string &text) {
+  std::string esc;
+  for (char c : text) esc += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  return esc;
+}
 
 std::string SvgPlot::render() const {
   double x0 = lo_[0], y0 = lo_[1], x1 = hi_[0], y1 = hi_[1];
@@ -128,9 +132,7 @@ std::string SvgPlot::render() const {
                  "viewBox=\"{:.4f} {:.4f} {:.4f} {:.4f}\">\n",
                  vw * scale, vh * scale, vx, vy, vw, vh);
   std::string title = opt_.title.empty() ? "ncc toolpath (XY)" : opt_.title + " (XY)";
-  std::string esc;
-  for (char c : title) esc += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  fmt::format_to(out, "<title>{}</title>\n", esc);
+  fmt::format_to(out, "<title>{}</title>\n", xmlEscape(title));
   fmt::format_to(out, "<rect x=\"{:.4f}\" y=\"{:.4f}\" width=\"{:.4f}\" height=\"{:.4f}\" fill=\"white\"/>\n", vx, vy,
                  vw, vh);
   // Axes through the origin when it is in view.

@@ -71,7 +71,7 @@ void packCmd(const MachineCmd &c, const char *text, std::string &out) {
   putVarint(c.loc.line, out);
   putVarint(c.loc.col, out);
   for (int w = 0; w < kWords; ++w)
-    if (c.mask & (1u << w)) out.append((const char *)&c.w[w], sizeof(double));
+    if (c.mask & wordBit((Word)w)) out.append((const char *)&c.w[w], sizeof(double));
   if (c.kind == CmdKind::Comment || c.kind == CmdKind::Message) {
     size_t n = text ? std::strlen(text) : 0;
     putVarint(n, out);
@@ -94,7 +94,7 @@ static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
   for (unsigned i = 0; i < c.nmodes; ++i) c.modes[i] = (ModeValue)*p++;
   uint64_t v;
   if (!getVarint(p, end, v)) return false;
-  c.mask = (uint32_t)v;
+  c.mask = v;
   if (c.kind == CmdKind::Block) {
     if (!getVarint(p, end, v)) return false;
     c.blockNumber = (int64_t)v - 1;
@@ -103,7 +103,7 @@ static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
   if (!getVarint(p, end, f) || !getVarint(p, end, l) || !getVarint(p, end, col)) return false;
   c.loc = {(uint32_t)f, (uint32_t)l, (uint32_t)col};
   for (int w = 0; w < kWords; ++w)
-    if (c.mask & (1u << w)) {
+    if (c.mask & wordBit((Word)w)) {
       if (end - p < 8) return false;
       std::memcpy(&c.w[w], p, sizeof(double));
       p += 8;

@@ -295,6 +295,37 @@ ControllerStyle defaultStyle(Target t) {
   return s;
 }
 
+// The 808D turning tables (seed 001 Tables 1-2/1-4): system A has no G90/G91 (U W are the
+// increments) and G98/G99 feed modes, G50 S the speed limit, G32 threads; system B keeps the
+// milling G90 G94 G95 and writes G92 S, G33. Neither has G93 or G61/G64 on a lathe: inverse time
+// is refused by the emitter, the path mode (timing, not geometry) is not written. Tools are
+// T<tt>00 (offset 00: the positions already hold the offsets), no M6.
+bool applyLathe(const Machine &m, ControllerStyle &s, Diagnostics &diags) {
+  if (!m.controller.lathe()) return true;
+  s.lathe = true;
+  s.setupPlane = Plane::ZX;
+  s.xScale = m.controller.diameterProgramming ? 2 : 1;
+  if (s.target == Target::Sinumerik) {
+    s.setup = {std::string("G71 G90 G18 G94 G500 ") + (m.controller.diameterProgramming ? "DIAMON" : "DIAMOF")};
+    return true;
+  }
+  auto refuse = [&](const std::string &why) {
+    diags.error(SourceLoc{}, "machine '" + m.name + "': the [emit.iso] emitter does not write lathe programs " + why);
+    return false;
+  };
+  if (m.controller.family == "linuxcnc") return refuse("for LinuxCNC (G7/G8 diameter modes, T with M6)");
+  if (m.controller.gcodeSystem == "C") return refuse("in G-code system C");
+  const bool a = m.controller.gcodeSystem == "A";
+  s.codes[(size_t)Code::PerMinute] = a ? "G98" : "G94";
+  s.codes[(size_t)Code::PerRev] = a ? "G99" : "G95";
+  for (Code c : {Code::InverseTime, Code::ExactPath, Code::ExactStop, Code::Continuous, Code::ToolChange})
+    s.codes[(size_t)c].clear();
+  s.setup = {"G21", a ? "G18 G98 G54" : "G90 G18 G94 G54"};
+  s.threadCode = a ? "G32" : "G33";
+  s.speedLimitCode = a ? "G50" : "G92";
+  return true;
+}
+
 bool applyMachineSection(const Machine &m, ControllerStyle &style, Diagnostics &diags) {
   auto sec = m.sections.find(style.section);
   if (sec == m.sections.end()) return true;

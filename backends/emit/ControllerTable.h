@@ -66,10 +66,23 @@ struct ControllerStyle {
   bool programNumber = false;    // O0001 line
   int programNumberDigits = 4;
   std::vector<std::string> setup;  // set-up blocks after the header, each a list of words
+  Plane setupPlane = Plane::XY;    // the plane the set-up blocks select
+
+  // A lathe program (machine [controller] kind = "lathe", docs/EMIT.md "Lathes"): X words are
+  // diameters (xScale 2) under diameter programming; ISO writes T<tt>00, the thread code and the
+  // block that limits the spindle speed under G96 of the machine's G-code system.
+  bool lathe = false;
+  double xScale = 1;
+  std::string threadCode;       // ISO lathe: G32 (system A) / G33 (B)
+  std::string speedLimitCode;   // ISO lathe: G50 (A) / G92 (B), with S
 };
 
 // Defaults of a controller (before the machine description is applied).
 ControllerStyle defaultStyle(Target t);
+
+// A lathe machine's changes to the defaults (set-up blocks, feed-mode codes of its G-code system,
+// diameters); nothing for a mill. False (reported) when the lathe's output cannot be written.
+bool applyLathe(const Machine &m, ControllerStyle &style, Diagnostics &diags);
 
 // Applies the machine's [emit.<target>] section over the defaults. Unknown keys warn, bad values
 // are errors; returns false when an error was reported.

@@ -1,141 +1,10 @@
 // The program emitter engine: one block buffer, modal memory and the record -> words mapping.
 // Everything controller-specific comes from ControllerStyle.
-#include "backends/emit/Emitter.h"
-
-#include "backends/emit/ArcGeometry.h"
-#include "backends/emit/ControllerTable.h"
-
-#include <algorithm>
-#include <cctype>
-#include <cmath>
+#include "backends/emit/EmitterImpl.h"
 
 namespace ncc::emit {
 
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-const char kAxisLetters[] = "XYZABC";
-const char kCenterLetters[] = "IJK";
-
-// Where the text goes: a string (tests, translate) or a stream (bounded memory).
-class LineSink {
-public:
-  explicit LineSink(std::string *s) : str_(s) {}
-  explicit LineSink(std::FILE *f) : file_(f) {}
-  void line(const std::string &text, const std::string &eol) {
-    if (str_) {
-      *str_ += text;
-      *str_ += eol;
-    } else if (file_) {
-      std::fputs(text.c_str(), file_);
-      std::fputs(eol.c_str(), file_);
-    }
-  }
-  bool failed() const { return file_ && std::ferror(file_); }
-
-private:
-  std::string *str_ = nullptr;
-  std::FILE *file_ = nullptr;
-};
-
-// State words waiting for the next block. A second word of a group already waiting flushes the
-// buffer first (the passport's "alternative window" rule, seed 004 §3.5).
-enum class PendingGroup : uint8_t { Speed, Spindle, Coolant, Tool, ToolChange, Plane, FeedMode, PathMode, SpindleMode };
-
-class Emitter final : public ProgramEmitter {
-public:
-  Emitter(const Machine &m, ControllerStyle style, const EmitOptions &opts, LineSink out, Diagnostics &diags)
-      : machine_(m), st_(std::move(style)), opts_(opts), out_(out), diags_(diags), nextN_(st_.blockStart) {}
-
-  void writeHeader();
-  void record(const MotionRecord &r) override;
-  bool finish(Diagnostics &diags) override;
-  uint64_t blocksWritten() const override { return blocks_; }
-
-private:
-  using Words = std::vector<std::string>;
-
-  const NumberFormat &fmt(WordClass c) const { return st_.formats[(size_t)c]; }
-  const std::string &code(Code c) const { return st_.codes[(size_t)c]; }
-  static WordClass axisClass(int axis) { return axis < 3 ? WordClass::Axis : WordClass::Rotary; }
-
-  bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
-  void badNumber(double v, const std::string &letter, const MotionRecord &r);
-  void push(Words &w, const std::string &word) {
-    if (!word.empty()) w.push_back(word);
-  }
-  void writeBlock(const Words &words, int64_t sourceN);
-  void writeLine(const std::string &text) {
-    out_.line(text, st_.lineEnding);
-    ++blocks_;
-  }
-
-  void addPending(PendingGroup g, const std::string &word, const MotionRecord &r);
-  void flushPending();
-
-  void ensurePosition(const MotionRecord &r);
-  void axisWords(const AxisVec &end, Words &w, const MotionRecord &r);
-  void feedWord(const MotionRecord &r, Words &w, double lengthMM);
-  void motionCode(Code c, Words &w);
-  void move(const MotionRecord &r);
-  void arc(const MotionRecord &r);
-  void arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull);
-  // Why this output cannot write the spline exactly (empty: it can, as LinuxCNC G5.2/G5.3).
-  std::string splineRefusal(const MotionRecord &r) const;
-  void spindleOrient(const MotionRecord &r);
-  void spindleMode(const MotionRecord &r);
-  void spline(const MotionRecord &r);
-  // Reports `why` (when not empty) as the reason the record cannot be written; true then.
-  bool refused(const MotionRecord &r, const char *what, const std::string &why) {
-    if (why.empty()) return false;
-    diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write this " + what + " (" + why + "): " + printMotionRecord(r),
-                 "unsupported-code");
-    errors_ = true;
-    return true;
-  }
-  // Why this output cannot write the thread record exactly (empty: it can).
-  std::string threadRefusal(const MotionRecord &r) const;
-  void thread(const MotionRecord &r);
-  void planeWord(Plane p, Words &w);
-  void dwell(const MotionRecord &r);
-  void comment(const std::string &text);
-  void message(const std::string &text, const MotionRecord &r);
-  void coolant(const MotionRecord &r, bool flood);
-  std::vector<std::string> coolantCodes();
-
-  const Machine &machine_;
-  ControllerStyle st_;
-  EmitOptions opts_;
-  LineSink out_;
-  Diagnostics &diags_;
-  int64_t nextN_;
-  uint64_t blocks_ = 0, numberedCount_ = 0;
-  bool errors_ = false, ended_ = false, finished_ = false;
-
-  Words pending_;
-  uint32_t pendingGroups_ = 0;
-  int64_t pendingN_ = -1;
-
-  // Modal memory of the written program (what the controller will hold).
-  bool posKnown_ = false;
-  AxisVec pos_{};                           // rounded, as the controller reads it
-  std::array<std::string, kAxes> posText_;  // formatted, for the "unchanged" test
-  std::string motion_;                      // last motion G code written
-  Plane plane_ = Plane::XY;                 // the header selects G17
-  int64_t feedMode_ = 0;                    // the header selects G94
-  int64_t pathMode_ = 2;                    // continuous after reset
-  std::string feedText_;                    // last F value written
-  bool haveProgrammedFeed_ = false;
-  double programmedFeed_ = 0;
-  double speedLimit_ = 0;                   // the CSS limit the written program holds (rpm, 0 none)
-  bool cssWritten_ = false;                 // G96 in force in the written program
-  bool cssNeedsS_ = false;                  // a G96 waits in the block for its S word
-  std::string surfaceWord_;                 // the last S written under G96
-  bool afterThread_ = false;                // the last motion written was a thread block
-  double startAngle_ = NAN;                 // the Sinumerik SF= in force (NAN: none written yet)
-  bool flood_ = false, mist_ = false;            // written coolant state
-  bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
-};
+namespace detail {
 
 void Emitter::badNumber(double v, const std::string &letter, const MotionRecord &r) {
   diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
@@ -222,24 +91,28 @@ void Emitter::flushPending() {
 void Emitter::ensurePosition(const MotionRecord &r) {
   if (posKnown_) return;
   // The controller running the emitted program starts where the source program started.
-  for (int i = 0; i < kAxes; ++i) {
-    pos_[i] = roundTo(r.start[i], fmt(axisClass(i)).decimals);
-    formatNumber(pos_[i], fmt(axisClass(i)), posText_[i]);
-  }
+  notePosition(r.start, kAxes);
   posKnown_ = true;
+}
+
+void Emitter::notePosition(const AxisVec &end, int axes) {
+  for (int i = 0; i < axes; ++i) {
+    formatNumber(written(i, end[i]), fmt(axisClass(i)), posText_[i]);
+    pos_[i] = readBack(i, end[i]);
+  }
 }
 
 void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r) {
   for (int i = 0; i < kAxes; ++i) {
     std::string digits;
     WordClass c = axisClass(i);
-    if (!formatNumber(end[i], fmt(c), digits)) {
-      badNumber(end[i], std::string(1, kAxisLetters[i]), r);
+    if (!formatNumber(written(i, end[i]), fmt(c), digits)) {
+      badNumber(written(i, end[i]), std::string(1, kAxisLetters[i]), r);
       continue;
     }
     if (digits == posText_[i]) continue;
     posText_[i] = digits;
-    pos_[i] = roundTo(end[i], fmt(c).decimals);
+    pos_[i] = readBack(i, end[i]);
     w.push_back(std::string(1, kAxisLetters[i]) + digits);
   }
 }
@@ -325,9 +198,8 @@ void Emitter::arc(const MotionRecord &r) {
 
 void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull) {
   PlaneAxes pa = planeAxes(r.plane);
-  const NumberFormat &af = fmt(WordClass::Axis);
   double s[2] = {pos_[pa.a], pos_[pa.b]};
-  double e[2] = {roundTo(end[pa.a], af.decimals), roundTo(end[pa.b], af.decimals)};
+  double e[2] = {readBack(pa.a, end[pa.a]), readBack(pa.b, end[pa.b])};
   double c[2] = {r.center[pa.a], r.center[pa.b]};
   bool ccw = r.turns >= 0;
   bool full = s[0] == e[0] && s[1] == e[1];
@@ -427,148 +299,9 @@ void Emitter::spline(const MotionRecord &r) {
   w.push_back("G5.3");
   writeBlock(w, -1);
   motion_.clear();  // rs274 has no motion mode after G5.3
-  for (int i = 0; i < 2; ++i) {
-    formatNumber(r.end[i], fmt(WordClass::Axis), posText_[i]);
-    pos_[i] = roundTo(r.end[i], fmt(WordClass::Axis).decimals);
-  }
+  notePosition(r.end, 2);
 }
 
-// LinuxCNC: G33 X Y Z K<lead per unit of path>, G33.1 for a rigid tap (its return record is
-// the tap's own retract); a chain is refused (rs274 traces every G33 block as a synchronisation
-// of its own). Sinumerik: G33 with the lead on the address of the axis that travels most (I X,
-// J Y, K Z), SF= the start angle; it runs consecutive G33 blocks as one thread.
-std::string Emitter::threadRefusal(const MotionRecord &r) const {
-  const bool lcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
-  if (!lcnc && st_.target != Target::Sinumerik)
-    return "only LinuxCNC (G33, G33.1: an ISO target of [controller] family \"linuxcnc\") and Sinumerik (G33) are written";
-  if (r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut) {
-    if (!lcnc) return "rigid tapping is written for LinuxCNC (G33.1) only";
-    return {};
-  }
-  if (lcnc && r.value2 != 0) return "LinuxCNC's G33 has no start angle";
-  if (lcnc && threadLeadChange(r) != 0) return "LinuxCNC has no variable-lead thread";
-  if (lcnc && r.sync == ThreadSync::Chain)
-    return "each LinuxCNC G33 block starts a synchronisation of its own, as rs274 traces it: a chained thread cannot be written";
-  if (!lcnc && r.sync == ThreadSync::Index && afterThread_)
-    return "Sinumerik chains consecutive G33 blocks: a new synchronisation right after a thread cannot be written";
-  return {};
-}
-
-void Emitter::thread(const MotionRecord &r) {
-  flushPending();
-  ensurePosition(r);
-  if (r.sync == ThreadSync::TapOut) {  // G33.1 has already come back: only the position follows
-    for (int i = 0; i < 3; ++i) {
-      formatNumber(r.end[i], fmt(WordClass::Axis), posText_[i]);
-      pos_[i] = roundTo(r.end[i], fmt(WordClass::Axis).decimals);
-    }
-    return;
-  }
-  Words w;
-  if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
-  const bool tap = r.sync == ThreadSync::TapIn;
-  const bool variable = threadLeadChange(r) != 0;  // Sinumerik G34/G35: F the lead change
-  const char *g = tap ? "G33.1" : variable ? (threadLeadChange(r) > 0 ? "G34" : "G35") : "G33";
-  if (motion_ != g) push(w, g);
-  motion_ = g;
-  size_t before = w.size();
-  axisWords(r.end, w, r);
-  if (w.size() == before) w.push_back("Z" + posText_[2]);  // a zero-length record stays a block
-  std::string word;
-  if (st_.target == Target::Sinumerik) {
-    int main = 0;
-    for (int i = 1; i < 3; ++i)
-      if (std::fabs(r.end[i] - r.start[i]) > std::fabs(r.end[main] - r.start[main])) main = i;
-    if (number(threadAxisLead(r, main), WordClass::Center, std::string(1, kCenterLetters[main]), r, word))
-      w.push_back(word);
-    if (variable) {  // the change of the main axis' lead per revolution, without its sign
-      double ratio = r.value > 0 ? threadAxisLead(r, main) / r.value : 0;
-      if (number(std::fabs(threadLeadChange(r)) * ratio, WordClass::Center, "F", r, word)) w.push_back(word);
-      feedText_.clear();  // F is no feed here: the next feed move writes its own
-    }
-    // SF= stays in force (it sets the thread start angle setting data): written on the first
-    // thread and when it changes.
-    if (r.sync == ThreadSync::Index && !(r.value2 == startAngle_) && number(r.value2, WordClass::Rotary, "SF=", r, word)) {
-      w.push_back(word);
-      startAngle_ = r.value2;
-    }
-  } else if (number(threadPathLead(r), WordClass::Center, "K", r, word)) {
-    w.push_back(word);
-  }
-  writeBlock(w, r.blockNumber);
-}
-
-// An oriented spindle stop at an angle: LinuxCNC `M19 R P [Q]`, Sinumerik `SPOS=ACP|ACN|DC()`.
-// Fanuc's M19 turns to the angle of a machine parameter, so no other ISO target can write one.
-void Emitter::spindleOrient(const MotionRecord &r) {
-  flushPending();
-  double a = std::fmod(r.value, 360.0);
-  if (a < 0) a += 360;  // the same orientation; M19 R takes 0..360
-  std::string angle;
-  if (!number(a, WordClass::Rotary, "", r, angle)) return;
-  if (st_.target == Target::Sinumerik) {
-    static const char *ways[] = {"ACP", "ACN", "DC"};
-    writeBlock({"SPOS=" + std::string(ways[std::clamp<int64_t>(r.ivalue, 0, 2)]) + "(" + angle + ")"},
-               r.blockNumber);
-    return;
-  }
-  if (machine_.controller.family != "linuxcnc") {
-    diags_.error(r.loc,
-                 "the [" + st_.section + "] emitter writes an oriented spindle stop at an angle only for LinuxCNC "
-                 "(M19 R P; Fanuc's M19 turns to a parameter angle): " + printMotionRecord(r),
-                 "unsupported-code");
-    errors_ = true;
-    return;
-  }
-  Words w{"M19", "R" + angle, "P" + std::to_string(r.ivalue)};
-  if (r.value2 > 0) {
-    std::string q;
-    if (!number(r.value2, WordClass::Dwell, "Q", r, q)) return;
-    w.push_back(q);
-  }
-  writeBlock(w, r.blockNumber);
-}
-
-// Constant surface speed (docs/IR.md "spindle_mode"): LinuxCNC `G96 D<limit>` (the limit for that
-// G96 only), Sinumerik `G96 LIMS=<limit> SCC[X]` (X the transverse axis the speed follows); the
-// S word (m/min) follows from the spindle_speed record into the same block; `G97` for constant
-// rpm. Other ISO targets are refused: a Fanuc/808D G96 needs a lathe program, which the emitters
-// do not write yet. The written program is in machine coordinates, so its X0 must be the spindle
-// axis the surface speed is measured from.
-void Emitter::spindleMode(const MotionRecord &r) {
-  auto refuse = [&](const std::string &why) {
-    diags_.error(r.loc, "the [" + st_.section + "] emitter " + why + ": " + printMotionRecord(r), "unsupported-code");
-    errors_ = true;
-  };
-  const bool css = r.ivalue != 0;
-  const bool linuxcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
-  if (css && !linuxcnc && st_.target != Target::Sinumerik)
-    return refuse("writes constant surface speed (G96) only for LinuxCNC and Sinumerik");
-  if (css && std::fabs(r.value2) > 1e-9)
-    return refuse("writes machine coordinates, whose X0 is not the spindle axis constant surface speed measures from "
-                  "(it is at machine X" + std::to_string(r.value2) + ")");
-  if (r.ivalue == 2) return;
-  std::string limit;
-  if (r.value > 0 && !number(r.value, WordClass::Speed, "", r, limit)) return;
-  // Sinumerik's LIMS is modal: a limit, once written, cannot be taken back.
-  if (st_.target == Target::Sinumerik && css && speedLimit_ > 0 && !(r.value > 0))
-    return refuse("cannot take back a spindle-speed limit (LIMS) once written");
-  const bool wasCss = cssWritten_;
-  cssWritten_ = css;
-  if (!css && !wasCss) return;  // constant rpm already (a limit alone, or G97 again)
-  // G97 runs before M3-M5 of its block (rs274 order): after a stop it goes in a block of its own.
-  if (!css && (pendingGroups_ & (1u << (unsigned)PendingGroup::Spindle))) flushPending();
-  addPending(PendingGroup::SpindleMode, css ? "G96" : "G97", r);
-  cssNeedsS_ = css && wasCss;
-  if (!css || !(r.value > 0)) return;
-  if (st_.target == Target::Sinumerik) {
-    if (r.value != speedLimit_) pending_.push_back("LIMS=" + limit);
-    pending_.push_back("SCC[X]");
-  } else {
-    pending_.push_back("D" + limit);
-  }
-  speedLimit_ = r.value;
-}
 
 void Emitter::dwell(const MotionRecord &r) {
   flushPending();
@@ -659,7 +392,14 @@ void Emitter::record(const MotionRecord &r) {
     break;
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:
-    addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, st_.toolDigits), r);
+    // An ISO lathe's T<tt><oo>: offset 00, the positions already hold the tool's offsets.
+    if (latheIso() && (r.ivalue < 0 || r.ivalue > 99)) {
+      diags_.error(r.loc, "the [" + st_.section + "] emitter writes lathe tools 0 to 99 (T<tt>00): " + printMotionRecord(r),
+                   "unsupported-code");
+      errors_ = true;
+      break;
+    }
+    addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, latheIso() ? 2 : st_.toolDigits) + (latheIso() ? "00" : ""), r);
     break;
   case RecordKind::ToolChange:
     // The change is a block of its own, together with the T word that prepared it.
@@ -691,6 +431,12 @@ void Emitter::record(const MotionRecord &r) {
   case RecordKind::FeedMode: {
     static const Code codes[] = {Code::PerMinute, Code::PerRev, Code::InverseTime};
     if (r.ivalue < 0 || r.ivalue > 2 || r.ivalue == feedMode_) break;
+    if (code(codes[r.ivalue]).empty()) {  // a lathe has no inverse time
+      diags_.error(r.loc, "the [" + st_.section + "] emitter has no code for this feed mode on a lathe: " + printMotionRecord(r),
+                   "unsupported-code");
+      errors_ = true;
+      break;
+    }
     feedMode_ = r.ivalue;
     feedText_.clear();  // a new feed mode needs a new F
     addPending(PendingGroup::FeedMode, code(codes[r.ivalue]), r);
@@ -771,10 +517,17 @@ bool Emitter::finish(Diagnostics &diags) {
   return !errors_;
 }
 
+}  // namespace detail
+
+namespace {
+
+using detail::Emitter;
+using detail::LineSink;
+
 std::unique_ptr<ProgramEmitter> makeEmitter(const Machine &m, const EmitOptions &opts, LineSink out,
                                             Diagnostics &diags) {
   ControllerStyle style = defaultStyle(opts.target);
-  if (!applyMachineSection(m, style, diags)) return nullptr;
+  if (!applyLathe(m, style, diags) || !applyMachineSection(m, style, diags)) return nullptr;
   auto e = std::make_unique<Emitter>(m, std::move(style), opts, out, diags);
   e->writeHeader();
   return e;

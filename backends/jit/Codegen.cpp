@@ -45,7 +45,7 @@ Codegen::Codegen(const ir::Module &src, LLVMContext &ctx, Diagnostics &diags)
   i1Ty = Type::getInt1Ty(C);
   ptrTy = PointerType::getUnqual(C);
   cmdTy = StructType::create(C,
-                             {i8Ty, i16Ty, i16Ty, i8Ty, ArrayType::get(i8Ty, kMaxModes), i32Ty, i64Ty,
+                             {i8Ty, i16Ty, i16Ty, i8Ty, ArrayType::get(i8Ty, kMaxModes), i64Ty, i64Ty,
                               ArrayType::get(i32Ty, 3), ptrTy, ArrayType::get(dblTy, kWords)},
                              "ncrt_cmd");
   storageTy = StructType::create(C, {ptrTy, ptrTy, ptrTy, ptrTy, i64Ty, i32Ty, i32Ty, i64Ty}, "ncrt_storage");

@@ -25,7 +25,7 @@ Constant *Codegen::cmdConstant(const MachineCmd &c) {
   Constant *text = hasText(c) && c.text ? cstring(c.text) : ConstantPointerNull::get(ptrTy);
   return ConstantStruct::get(
       cmdTy, {B.getInt8((uint8_t)c.kind), B.getInt16(c.sub), B.getInt16(c.sub2), B.getInt8(c.nmodes),
-              ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, kMaxModes)), B.getInt32(c.mask),
+              ConstantDataArray::get(C, ArrayRef<uint8_t>(modes, kMaxModes)), B.getInt64(c.mask),
               B.getInt64((uint64_t)c.blockNumber), ConstantDataArray::get(C, ArrayRef<uint32_t>(loc, 3)), text,
               ConstantDataArray::get(C, ArrayRef<double>(c.w, kWords))});
 }
@@ -81,7 +81,7 @@ void Codegen::flushRun() {
 void Codegen::emitDynamicCmd(const CmdTemplate &t) {
   if (!cmdSlot) cmdSlot = allocaEntry(cmdTy, "cmd");
   B.CreateStore(cmdConstant(t.base), cmdSlot);
-  Value *mask = B.getInt32(t.base.mask);
+  Value *mask = B.getInt64(t.base.mask);
   Constant *inf = ConstantFP::getInfinity(dblTy);
   for (auto &slot : t.slots) {
     Val v = expr(*slot.expr);
@@ -90,8 +90,8 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
     Value *vacant = v.mayVacant ? isVacant(v.v) : B.getFalse();
     failIf(B.CreateAnd(B.CreateNot(vacant), B.CreateNot(finite)), slot.expr->loc, "value is not a finite number");
     B.CreateStore(v.v, B.CreateInBoundsGEP(cmdTy, cmdSlot, {B.getInt32(0), B.getInt32(9), B.getInt32((unsigned)slot.word)}));
-    Value *bit = B.getInt32(wordBit(slot.word));
-    if (v.mayVacant) bit = B.CreateSelect(vacant, B.getInt32(0), bit);
+    Value *bit = B.getInt64(wordBit(slot.word));
+    if (v.mayVacant) bit = B.CreateSelect(vacant, B.getInt64(0), bit);
     mask = B.CreateOr(mask, bit);
   }
   B.CreateStore(mask, B.CreateStructGEP(cmdTy, cmdSlot, 5));

@@ -442,7 +442,8 @@ bool BlockLowerer::Block::motion() {
   // LinuxCNC G5/G5.1 do not change rs274's motion mode: the next block moves as before them.
   const ModeValue m = L.motion_;
   const bool bezier = m == ModeValue::SplineCubic || m == ModeValue::SplineQuadratic;
-  if (bezier || m == ModeValue::ThreadMulti) L.motion_ = motionBefore;  // one-shot
+  const bool turnOneShot = m == ModeValue::ThreadMulti || isPeckMotion(m);  // G76, G74/G75
+  if (bezier || turnOneShot) L.motion_ = motionBefore;  // one-shot
   if (m == ModeValue::NurbsEnd && G(GGroup::Motion) && bw.hasAny(kMoveWords)) {
     for (const char *c = kMoveWords; *c; ++c)
       if (bw.has(*c)) {
@@ -456,7 +457,7 @@ bool BlockLowerer::Block::motion() {
     // G5/G5.1 always move (the executor reports missing axes as rs274 does); a G5.2 block
     // may give the first point's weight alone (P).
     bool moves = bw.hasAny(kMoveWords) || (arc && bw.hasAny("IJKR")) || (cycle && bw.has('R')) ||
-                 (m == ModeValue::ThreadMulti && G(GGroup::Motion)) ||
+                 (turnOneShot && G(GGroup::Motion)) ||
                  (bezier && G(GGroup::Motion)) || (m == ModeValue::Nurbs && (G(GGroup::Motion) || bw.hasAny("PL")));
     if (moves) {
       const bool rs274 = L.flavour_ == Flavour::RS274;
@@ -500,6 +501,7 @@ bool BlockLowerer::Block::motion() {
         op.set("Q", take('Q', Scale::Linear));
       if (m == ModeValue::Nurbs && bw.has('L')) op.set("L", take('L', Scale::None));  // the order
       if (isThreadMotion(m) && !threadWords(op, m)) return false;
+      if (isPeckMotion(m)) peckWords(op);
       // The repeat count: K (Fanuc/808D) or L; rs274 has L only.
       if (cycle && (bw.has('L') || (bw.has('K') && !rs274))) op.set("L", take(bw.has('L') ? 'L' : 'K', Scale::None));
       if (!b.corner.empty() && (arc || m == ModeValue::Linear)) {

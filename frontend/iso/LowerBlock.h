@@ -14,7 +14,9 @@ using ir::Op;
 using ir::OpKind;
 using ir::Region;
 
-inline constexpr char kOffsetAxes[] = "XYZABC";
+// The axis words of offsets, homing and G53: U V W are axes too, except on lathes, where they
+// are the incremental X Y Z.
+inline const char *offsetAxes(bool lathe) { return lathe ? "XYZABC" : "XYZABCUVW"; }
 
 // Increment: a length that is always in least input increments without a decimal point, even in
 // calculator mode (the 808D's G74-G76 P and Q, seed L3842-3843).
@@ -178,6 +180,7 @@ struct BlockLowerer::Block {
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();
   bool threadWords(Op &op, ModeValue m);  // the words of G32/G33/G33.1/G76/G92/G78
+  void peckWords(Op &op);                  // P Q R of the lathe's G74/G75 (LowerTurning.cpp)
   bool stops();
   bool callsAndReturn();
   bool finish();         // assignments, unused words

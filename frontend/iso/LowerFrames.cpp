@@ -126,7 +126,7 @@ bool BlockLowerer::Block::coordinateOps() {
     // G10 and G92 take axis values; Fanuc's G92.1 X0 Y0 names the axes to reset; otherwise the
     // block's axis words are a move in the current mode (rs274: `G92.1 X0` resets, then moves).
     bool takesAxes = nonModal->arg <= 1 || (nonModal->arg == 2 && L.flavour_ == Flavour::Fanuc);
-    if (takesAxes) axisWords(op, kOffsetAxes);
+    if (takesAxes) axisWords(op, offsetAxes(L.lathe_));
     out.push_back(std::move(op));
     axesTaken = takesAxes;
   }
@@ -136,7 +136,7 @@ bool BlockLowerer::Block::coordinateOps() {
     ExprPtr ref = Expr::number(nonModal->arg, ir::Type::Int, loc);
     if (nonModal->arg == 2 && bw.has('P')) ref = take('P', Scale::None);  // G30 P3
     op.set("ref", std::move(ref));
-    axisWords(op, kOffsetAxes);
+    axisWords(op, offsetAxes(L.lathe_));
     if (L.lathe_ && !latheAxisWords(op)) return false;  // G28 U0 W0: home from where the tool is
     out.push_back(std::move(op));
     axesTaken = true;
@@ -145,7 +145,7 @@ bool BlockLowerer::Block::coordinateOps() {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::MachineMove, loc);
     op.set("rapid", Expr::boolean(L.motion_ == ModeValue::Rapid, loc));
-    axisWords(op, kOffsetAxes);
+    axisWords(op, offsetAxes(L.lathe_));
     out.push_back(std::move(op));
     axesTaken = true;
   }
@@ -181,7 +181,7 @@ bool BlockLowerer::Block::frameOps() {
     }
     Op &op = emit(OpKind::SetOffset, loc);  // LinuxCNC's G52: the G92 register
     op.set("kind", Expr::symbol("g52", loc));
-    axisWords(op, kOffsetAxes);
+    axisWords(op, offsetAxes(L.lathe_));
     return true;
   }
   if (group == GGroup::Rotation)  // 808D: G68 and G69 blocks hold no other G code
@@ -249,7 +249,7 @@ bool BlockLowerer::Block::frameOps() {
     break;
   }
   case 511: case 501: axisWords(op, "XYZ"); break;
-  case 520: axisWords(op, kOffsetAxes); break;
+  case 520: axisWords(op, offsetAxes(L.lathe_)); break;
   default: break;  // G69, G50
   }
   out.push_back(std::move(op));

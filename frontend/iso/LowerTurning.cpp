@@ -147,6 +147,14 @@ long long blockNumber(const Op &op) {
 
 }  // namespace
 
+// G74/G75 (808D manual 1.5.1, L3660-3716): `G74 R<e>` and `G74 X(U) Z(W) P<Δi> Q<Δk> R<Δd> F`.
+// P and Q are least input increments without a decimal point in every decimal mode (L3842-3843);
+// R is a length. Whether R is e or Δd depends on the end-point words: the executor decides.
+void BlockLowerer::Block::peckWords(Op &op) {
+  for (char c : std::string_view("PQR"))
+    if (bw.has(c)) add(op, c, take(c, c == 'R' ? Scale::Linear : Scale::Increment));
+}
+
 bool placeContourLabels(ir::Function &f, Diagnostics &diags) {
   // The ranges the function's contour cycles name (top level only: they follow the program).
   struct Range {

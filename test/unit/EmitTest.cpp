@@ -575,3 +575,33 @@ TEST(EmitBoth, DefaultMillFileKeys) {
   iso.set("emit.iso", "block_numbers", "false");
   EXPECT_EQ(iso.run(Target::ISO, s, "/x/1234.nc"), "%\nO1234\nG21\nG90 G17 G94 G54\nG0 X1.235\nG1 X2. F99.96\nM30\n%\n");
 }
+
+// Lathes (docs/EMIT.md "Lathes"): X words are diameters under diameter programming, the
+// unchanged test works on the written diameter, arc centres stay radii; system A codes.
+TEST(EmitLathe, DiametersToolsAndSpeedLimit) {
+  Emit e;
+  e.machine.controller.kind = "lathe";
+  e.machine.controller.diameterProgramming = true;
+  Stream s;
+  s.state(RecordKind::ToolSelect, 3);
+  s.state(RecordKind::ToolChange, 3);
+  s.add(RecordKind::SpindleMode).ivalue = 0, s.recs.back().value = 2000;
+  s.add(RecordKind::SpindleMode).ivalue = 1, s.recs.back().value = 2000;
+  s.state(RecordKind::SpindleSpeed, 0, 150);
+  s.state(RecordKind::FeedMode, 1);
+  s.state(RecordKind::FeedRate, 0, 0.15);
+  s.move(RecordKind::Rapid, 10.0003, 0, 2);
+  s.move(RecordKind::Linear, 10.0004, 0, -5, 100);  // 20.0008 is written X20.001 again: not repeated
+  s.arc(12.0004, 0, -7, 10.0004, 0, -7, 1, Plane::ZX);
+  s.state(RecordKind::ProgramEnd, 30);
+  std::string out = e.run(Target::ISO, s);
+  ASSERT_TRUE(e.ok) << out;
+  EXPECT_EQ(out, "%\nO0001\nG21\nG18 G98 G54\nT0300\nG50 S2000\nG96 S150 G99\nG0 X20.001 Z2.\nG1 Z-5. F0.15\n"
+                 "G3 X24.001 Z-7. I-0.0001 K-2.\nM30\n%\n");  // I from the start the controller reads (20.001 / 2)
+  // Tools above 99 have no T<tt>00 form; inverse time no code.
+  Stream big;
+  big.state(RecordKind::ToolSelect, 120);
+  big.state(RecordKind::FeedMode, 2);
+  e.run(Target::ISO, big);
+  EXPECT_FALSE(e.ok);
+}

@@ -115,7 +115,7 @@ std::string diffCmd(const MachineCmd &a, const std::string &ta, const MachineCmd
     return "header differs";
   if (std::memcmp(a.modes, b.modes, a.nmodes)) return "modes differ";
   for (int w = 0; w < kWords; ++w)
-    if ((a.mask & (1u << w)) && std::memcmp(&a.w[w], &b.w[w], sizeof(double)))
+    if ((a.mask & wordBit((Word)w)) && std::memcmp(&a.w[w], &b.w[w], sizeof(double)))
       return std::string("word ") + kWordLetters[w] + " differs";
   return "";
 }

@@ -302,10 +302,16 @@ TEST(Machine, ErrorsAreLocated) {
        "m.toml:7:19: error: unknown key 'lenght' in edge"},
       {b + "[emit.fanuc]\nx = 1\n",
        "m.toml:5:7: error: unknown emitter 'fanuc' in [emit] (iso, sinumerik)"},
-      {b + "[axes.U]\n",
-       "m.toml:5:7: error: axis 'U': the executor models only the axes X Y Z A B C"},
+      {b + "[axes.Q]\n",
+       "m.toml:5:7: error: axis 'Q': the machine axes are X Y Z A B C U V W (name them with 'name')"},
       {b + "[axes.x]\n",
-       "m.toml:5:7: error: axis 'x': the executor models only the axes X Y Z A B C"},
+       "m.toml:5:7: error: axis 'x': the machine axes are X Y Z A B C U V W (name them with 'name')"},
+      {b + "[axes.U]\nmax_velocity = 1\nmax_accel = 1\nkind = \"rotary\"\n",
+       "m.toml:5:1: error: [axes.U]: U V W are linear axes (parallel to X Y Z)"},
+      {b + "[axes.U]\nmax_velocity = 1\nmax_accel = 1\nname = \"x1\"\n",
+       "m.toml:8:8: error: name: 'x1' is not an axis name (an upper-case letter, then upper-case letters, digits or '_', at most 8)"},
+      {b + "[axes.U]\nmax_velocity = 1\nmax_accel = 1\nname = \"X\"\n",
+       "m.toml:8:8: error: axis U: the name 'X' is already axis X's"},
       // Wrong types, at the value.
       {b + "[machine]\nrapid_feed = \"fast\"\n",
        "m.toml:6:14: error: rapid_feed: expected a number, got a string"},
@@ -316,7 +322,7 @@ TEST(Machine, ErrorsAreLocated) {
       {b + "[controller]\ndiameter_programming = \"yes\"\n",
        "m.toml:6:24: error: diameter_programming: expected true or false, got a string"},
       {b + "[offsets]\ng54 = [1, 2]\n",
-       "m.toml:6:7: error: g54: expected an array of 3 to 6 numbers [x, y, z, a, b, c], got 2 elements"},
+       "m.toml:6:7: error: g54: expected an array of 3 to 9 numbers [x, y, z, a, b, c, u, v, w], got 2 elements"},
       {b + "[offsets]\ng54 = [1, 2, \"z\"]\n",
        "m.toml:6:14: error: g54[2]: expected a number, got a string"},
       {b + "[controller]\nreset = \"all\"\n",
@@ -428,9 +434,31 @@ TEST(Machine, ShippedMachinesLoad) {
       EXPECT_TRUE(Machine::load(e.path().string(), m, err)) << err;
       ++n;
     }
-  EXPECT_EQ(n, 13);  // default, 8 examples, 3 emitter test machines, the oracle machine
+  EXPECT_EQ(n, 14);  // default, 8 examples, 4 emitter test machines, the oracle machine
   // The embedded text is the file.
   std::ifstream f(root + "/runtime/machines/default-mill.toml");
   std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   EXPECT_EQ(text, Machine::builtinDefaultText());
+}
+
+// U V W are machine axes (linear); `name` gives an axis the controller's name.
+TEST(Machine, NamedAxesAndUVW) {
+  const std::string text = "schema = 1\n"
+                           "[axes.X]\nmax_velocity = 1\nmax_accel = 1\n"
+                           "[axes.Z]\nmax_velocity = 1\nmax_accel = 1\nname = \"Z1\"\n"
+                           "[axes.W]\nmax_velocity = 1\nmax_accel = 1\nname = \"Z2\"\n"
+                           "[offsets]\ng54 = [1, 2, 3, 4, 5, 6, 7, 8, 9]\n";
+  Machine m;
+  std::string err;
+  ASSERT_TRUE(Machine::parse(text, "m.toml", m, err)) << err;
+  EXPECT_TRUE(m.axes[(int)Axis::W].present);
+  EXPECT_FALSE(m.axes[(int)Axis::W].rotary);
+  EXPECT_EQ(m.axisName(0), "X");
+  EXPECT_EQ(m.axisName(2), "Z1");
+  EXPECT_EQ(m.axisByName("Z2"), (int)Axis::W);
+  EXPECT_EQ(m.axisByName("Z1"), (int)Axis::Z);
+  EXPECT_EQ(m.axisByName("X"), (int)Axis::X);
+  EXPECT_EQ(m.axisByName("Z"), -1);  // Z is called Z1 on this machine
+  EXPECT_EQ(m.axisByName("Y"), -1);  // not described
+  EXPECT_EQ(m.workOffsets[0][(int)Axis::W], 9);
 }

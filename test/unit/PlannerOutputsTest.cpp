@@ -2,6 +2,7 @@
 #include "runtime/RunOutputs.h"
 #include "runtime/Sinks.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -246,18 +247,49 @@ TEST(RunSvg, SizeStaysBoundedForHugePrograms) {
   EXPECT_TRUE(wellFormed(svg));
 }
 
+TEST(RunVelocityPlot, BoundedAndKeepsPeaksForLongPrograms) {
+  // 200,000 planned moves and a long dwell: the buckets merge instead of growing, the extremes
+  // survive the merges, and the document stays small and well formed.
+  Machine m = trapezoidMachine();
+  VelocityPlot::Options o;
+  o.maxBuckets = 500;
+  VelocityPlot plot(o);
+  Planner planner(m);
+  planner.addListener(&plot);
+  MotionRecord r = move(RecordKind::Linear, P(0, 0), P(0, 0), 6000);
+  for (int i = 0; i < 200000; ++i) {
+    r.start = r.end;
+    r.end = P((i + 1) * 0.5, (i % 2) * 0.5);  // zig-zag: a speed dip at every corner
+    planner.record(r);
+  }
+  planner.record(event(RecordKind::Dwell, 0, 5000));
+  SourceManager sm;
+  Diagnostics d(sm);
+  planner.finish(d);
+  EXPECT_LE(plot.buckets(), o.maxBuckets);
+  std::string svg = plot.render();
+  EXPECT_TRUE(wellFormed(svg));
+  EXPECT_LT(svg.size(), 200000u);
+  // Each 45-degree move may use 1000 mm/s^2 per axis: sqrt(2) * 1000 along the path.
+  EXPECT_NE(svg.find(fmt::format("data-peak-accel=\"{:.6f}\"", 1000 * std::sqrt(2.0))), std::string::npos)
+      << svg.substr(0, 400);
+  EXPECT_NE(svg.find(fmt::format("data-duration=\"{:.6f}\"", planner.totalTime())), std::string::npos);
+  EXPECT_NE(svg.find("data-segments=\"200001\""), std::string::npos);
+}
+
 TEST(RunOutputs, UnwritablePathIsADiagnostic) {
   Machine m = trapezoidMachine();
   RunOutputOptions opt;
   opt.svgPath = "/nonexistent-dir/x.svg";
   opt.csvPath = "/nonexistent-dir/x.csv";
+  opt.velocityPath = "/nonexistent-dir/v.svg";
   RunOutputs out(m, opt);
   out.record(move(RecordKind::Linear, P(0, 0), P(1, 0), 1000));
   SourceManager sm;
   Diagnostics d(sm);
   d.setCollect(true);
   EXPECT_FALSE(out.finish(d));
-  EXPECT_EQ(d.errorCount(), 2u);
+  EXPECT_EQ(d.errorCount(), 3u);
 }
 
 TEST(JsonlTrace, OneObjectPerRecordFullPrecision) {

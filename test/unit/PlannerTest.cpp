@@ -1,4 +1,5 @@
 #include "runtime/Planner.h"
+#include "PlannerTestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -7,62 +8,12 @@
 
 using namespace ncc;
 
+using namespace ncc::plannertest;
+
 namespace {
 
-// X/Y/Z 1000 mm/s^2; jerk as given (0 = trapezoid); feed cap 10000 mm/min.
 Machine testMachine(double jerk, double tolerance = 0.01, int lookahead = 32) {
-  std::string text = "schema = 1\n[machine]\nrapid_feed = 12000\nmax_feed = 10000\nlookahead = " +
-                     std::to_string(lookahead) + "\npath_tolerance = " + std::to_string(tolerance) + "\n";
-  for (const char *ax : {"X", "Y", "Z"})
-    text += std::string("[axes.") + ax + "]\nmax_velocity = 60000\nmax_accel = 1000\nmax_jerk = " +
-            std::to_string(jerk) + "\n";
-  Machine m;
-  std::string err;
-  EXPECT_TRUE(Machine::parse(text, "test.toml", m, err)) << err;
-  return m;
-}
-
-MotionRecord line(AxisVec a, AxisVec b, double feed, bool exact = false) {
-  MotionRecord r;
-  r.kind = RecordKind::Linear;
-  r.start = a;
-  r.end = b;
-  r.feed = feed;
-  r.exactStop = exact;
-  return r;
-}
-
-AxisVec P(double x, double y, double z = 0) { return AxisVec{x, y, z, 0, 0, 0}; }
-
-// Checks continuity of the planned stream and keeps the segments' speeds.
-struct Recorder : PlanListener {
-  std::vector<PlannedSegment> segs;
-  double t = 0, lastExit = 0;
-  bool keep = true;
-  uint64_t count = 0;
-  void segment(const PlannedSegment &s) override {
-    EXPECT_NEAR(s.t0, t, 1e-9);
-    if (s.record.kind != RecordKind::Dwell) {
-      EXPECT_LE(s.profile.vp, s.vmax * (1 + 1e-9));
-      EXPECT_LE(s.profile.v0, s.profile.vp * (1 + 1e-9) + 1e-12);
-      double dist, v;
-      s.profile.at(s.duration(), dist, v);
-      EXPECT_NEAR(dist, s.length(), 1e-6 * std::max(1.0, s.length()));
-    }
-    t = s.t0 + s.duration();
-    ++count;
-    if (keep) segs.push_back(s);
-  }
-};
-
-double run(const Machine &m, const std::vector<MotionRecord> &recs, Recorder *rec = nullptr) {
-  Planner p(m);
-  if (rec) p.addListener(rec);
-  for (auto &r : recs) p.record(r);
-  SourceManager sm;
-  Diagnostics d(sm);
-  p.finish(d);
-  return p.totalTime();
+  return planMachine(1000, jerk, tolerance, lookahead);
 }
 
 }  // namespace

@@ -69,6 +69,13 @@ int cmdMachine(int argc, char **argv) {
     }
     if (!ok) return kExitErrors;
     std::printf("%s: ok (machine '%s')\n", check.c_str(), m.name.c_str());
+    // The axes with the controller's names (a named axis: NAME=slot).
+    std::string axes;
+    for (int i = 0; i < kAxes; ++i)
+      if (m.axes[i].present)
+        axes += " " + (m.axes[i].name.empty() ? std::string(1, kAxisLetters[i]) : m.axes[i].name + "=" + kAxisLetters[i]) +
+                (m.axes[i].rotary ? " (rotary)" : "");
+    std::printf("axes:%s\n", axes.c_str());
     return kExitOk;
   }
   std::fprintf(stderr, "ncc: error: nothing to do (see ncc machine --help)\n");

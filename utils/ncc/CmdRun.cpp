@@ -12,7 +12,7 @@ namespace ncc::driver {
 
 int cmdRun(int argc, char **argv) {
   Session s;
-  std::string file, trace, out, plot, samples;
+  std::string file, trace, out, plot, samples, velocityPlot;
   double period = 0.01;
   bool quiet = false;
   po::options_description desc("ncc run options");
@@ -22,8 +22,9 @@ int cmdRun(int argc, char **argv) {
       ("output,o", po::value(&out), "trace file (default: standard output)")
       ("plot", po::value(&plot), "write an SVG plot of the toolpath")
       ("samples", po::value(&samples), "write CSV samples of the planned motion")
+      ("plot-velocity", po::value(&velocityPlot), "write an SVG plot of path speed and acceleration over time")
       ("sample-period", po::value(&period)->default_value(0.01), "sample period in seconds")
-      ("quiet,q", po::bool_switch(&quiet), "do not print the summary (and skip planning unless --plot/--samples)");
+      ("quiet,q", po::bool_switch(&quiet), "do not print the summary (and skip planning unless --plot/--samples/--plot-velocity)");
   addCommonOptions(desc, s.opts);
   po::positional_options_description pos;
   pos.add("file", 1);
@@ -40,12 +41,13 @@ int cmdRun(int argc, char **argv) {
   RunOutputOptions ro;
   ro.svgPath = plot;
   ro.csvPath = samples;
+  ro.velocityPath = velocityPlot;
   ro.samplePeriod = period;
   ro.programName = file;
   RunOutputs outputs(s.machine, ro);
   MotionTee tee;
   // The planner runs for the summary, the plot and the samples; a quiet trace-only run skips it.
-  bool plan = !quiet || !plot.empty() || !samples.empty();
+  bool plan = !quiet || !plot.empty() || !samples.empty() || !velocityPlot.empty();
   if (plan) tee.add(&outputs);
 
   // The trace goes to a temporary file renamed on success, or to stdout.

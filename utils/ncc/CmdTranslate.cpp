@@ -36,10 +36,6 @@ int cmdTranslate(int argc, char **argv) {
   eo.programName = file;
   uint32_t f = s.start(file);
   if (!f) return kExitErrors;
-  if (s.machine.controller.lathe()) {  // they would write milling codes and radius X words
-    s.diags.error({}, "ncc translate: the emitters do not write lathe programs (machine kind = \"lathe\") yet");
-    return kExitErrors;
-  }
 
   MotionBuffer source;
   if (!s.execute(f, source)) return kExitErrors;

@@ -6,8 +6,8 @@ G31 Z-10. F1.
 G43 H1
 G91 X1.
 T#1
-G74 R1.
-G75 R1.
+G83 Z1.
+G87 X1.
 G96
 G10 P1 X1. Q3
 G10 P1 Z1. W2.
@@ -16,7 +16,7 @@ M30
 %
 ; FEATURES: ISO-MOT-12
 ; Lathe mode errors: X with U, the turning codes ncc does not do (tool nose radius compensation,
-; the skip function G31, the grooving cycles G74/G75), G96 without S, a zero G50 S limit, milling codes that are not turning codes, a computed T.
+; the skip function G31, the C-axis drilling cycles G83/G87), G96 without S, a zero G50 S limit, milling codes that are not turning codes, a computed T.
 ; RUN: not %ncc compile %s --machine=%srcroot/examples/machines/lathe.toml --emit=motion 2>&1 | FileCheck %s --implicit-check-not=error:
 ; CHECK: 3:9: error: X and U in one block (U is the incremental X) [duplicate-word]
 ; CHECK: 4:1: error: G41 (tool nose radius compensation left) is not supported [unsupported-code]
@@ -24,8 +24,8 @@ M30
 ; CHECK: 6:1: error: G43 is not a turning G code (808D G-code system A) [unknown-code]
 ; CHECK: 7:1: error: G91 is not a turning G code (808D G-code system A) [unknown-code]
 ; CHECK: 8:1: error: a lathe T word is a constant tool and offset number T<tt><oo> (T0101) [bad-number]
-; CHECK: 9:1: error: G74 (peck drilling / grooving along Z) is not supported [unsupported-code]
-; CHECK: 10:1: error: G75 (peck grooving along X) is not supported [unsupported-code]
+; CHECK: 9:1: error: G83 (face deep-hole drilling cycle (C axis)) is not supported [unsupported-code]
+; CHECK: 10:1: error: G87 (side deep-hole drilling cycle (C axis)) is not supported [unsupported-code]
 ; CHECK: 11:1: error: G96 needs S (the surface speed, m/min or ft/min) [missing-word]
 ; CHECK: 12:12: error: G10 Q (the imaginary tool tip) is not kept: ncc has no tool nose radius compensation [unsupported-code]
 ; CHECK: 13:12: error: G10: Z and W in one block (W adds to the offset Z sets) [duplicate-word]

@@ -1,0 +1,151 @@
+// Private to backends/emit: the emitter engine (Emitter.cpp: blocks, modal memory, moves, arcs,
+// splines, the record switch; EmitterSync.cpp: threads and the spindle's modes and orientation).
+#pragma once
+#include "backends/emit/ArcGeometry.h"
+#include "backends/emit/ControllerTable.h"
+#include "backends/emit/Emitter.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace ncc::emit::detail {
+
+
+constexpr double kPi = 3.14159265358979323846;
+const char kCenterLetters[] = "IJK";
+
+// Where the text goes: a string (tests, translate) or a stream (bounded memory).
+class LineSink {
+public:
+  explicit LineSink(std::string *s) : str_(s) {}
+  explicit LineSink(std::FILE *f) : file_(f) {}
+  void line(const std::string &text, const std::string &eol) {
+    if (str_) {
+      *str_ += text;
+      *str_ += eol;
+    } else if (file_) {
+      std::fputs(text.c_str(), file_);
+      std::fputs(eol.c_str(), file_);
+    }
+  }
+  bool failed() const { return file_ && std::ferror(file_); }
+
+private:
+  std::string *str_ = nullptr;
+  std::FILE *file_ = nullptr;
+};
+
+// State words waiting for the next block. A second word of a group already waiting flushes the
+// buffer first (the passport's "alternative window" rule, seed 004 §3.5).
+enum class PendingGroup : uint8_t { Speed, Spindle, Coolant, Tool, ToolChange, Plane, FeedMode, PathMode, SpindleMode };
+
+class Emitter final : public ProgramEmitter {
+public:
+  Emitter(const Machine &m, ControllerStyle style, const EmitOptions &opts, LineSink out, Diagnostics &diags)
+      : machine_(m), st_(std::move(style)), opts_(opts), out_(out), diags_(diags), nextN_(st_.blockStart) {
+    plane_ = st_.setupPlane;
+  }
+
+  void writeHeader();
+  void record(const MotionRecord &r) override;
+  bool finish(Diagnostics &diags) override;
+  uint64_t blocksWritten() const override { return blocks_; }
+
+private:
+  using Words = std::vector<std::string>;
+
+  const NumberFormat &fmt(WordClass c) const { return st_.formats[(size_t)c]; }
+  const std::string &code(Code c) const { return st_.codes[(size_t)c]; }
+  bool latheIso() const { return st_.lathe && st_.target == Target::ISO; }  // docs/EMIT.md "Lathes"
+  static WordClass axisClass(int axis) { return isLengthAxis(axis) ? WordClass::Axis : WordClass::Rotary; }
+  // Written value of a machine position (a lathe's X as a diameter) and the position the
+  // controller reads back from the rounded word.
+  double written(int axis, double v) const { return axis == 0 ? v * st_.xScale : v; }
+  double readBack(int axis, double v) const {
+    return roundTo(written(axis, v), fmt(axisClass(axis)).decimals) / (axis == 0 ? st_.xScale : 1);
+  }
+  // The position after a block that wrote no axis words for `end` (G5.3, a rigid tap's return).
+  void notePosition(const AxisVec &end, int axes);
+
+  bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
+  void badNumber(double v, const std::string &letter, const MotionRecord &r);
+  void push(Words &w, const std::string &word) {
+    if (!word.empty()) w.push_back(word);
+  }
+  void writeBlock(const Words &words, int64_t sourceN);
+  void writeLine(const std::string &text) {
+    out_.line(text, st_.lineEnding);
+    ++blocks_;
+  }
+
+  void addPending(PendingGroup g, const std::string &word, const MotionRecord &r);
+  void flushPending();
+
+  void ensurePosition(const MotionRecord &r);
+  void axisWords(const AxisVec &end, Words &w, const MotionRecord &r);
+  void feedWord(const MotionRecord &r, Words &w, double lengthMM);
+  void motionCode(Code c, Words &w);
+  void move(const MotionRecord &r);
+  void arc(const MotionRecord &r);
+  void arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull);
+  // Why this output cannot write the spline exactly (empty: it can, as LinuxCNC G5.2/G5.3).
+  std::string splineRefusal(const MotionRecord &r) const;
+  void spindleOrient(const MotionRecord &r);
+  void spindleMode(const MotionRecord &r);
+  void spline(const MotionRecord &r);
+  // Reports `why` (when not empty) as the reason the record cannot be written; true then.
+  bool refused(const MotionRecord &r, const char *what, const std::string &why) {
+    if (why.empty()) return false;
+    diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write this " + what + " (" + why + "): " + printMotionRecord(r),
+                 "unsupported-code");
+    errors_ = true;
+    return true;
+  }
+  // Why this output cannot write the thread record exactly (empty: it can).
+  std::string threadRefusal(const MotionRecord &r) const;
+  void thread(const MotionRecord &r);
+  void latheThreadWords(const MotionRecord &r, Words &w);  // ISO lathe G32/G33: F the lead, Q the start angle
+  void latheSpeedLimit(const MotionRecord &r, const std::string &limit);
+  void planeWord(Plane p, Words &w);
+  void dwell(const MotionRecord &r);
+  void comment(const std::string &text);
+  void message(const std::string &text, const MotionRecord &r);
+  void coolant(const MotionRecord &r, bool flood);
+  std::vector<std::string> coolantCodes();
+
+  const Machine &machine_;
+  ControllerStyle st_;
+  EmitOptions opts_;
+  LineSink out_;
+  Diagnostics &diags_;
+  int64_t nextN_;
+  uint64_t blocks_ = 0, numberedCount_ = 0;
+  bool errors_ = false, ended_ = false, finished_ = false;
+
+  Words pending_;
+  uint32_t pendingGroups_ = 0;
+  int64_t pendingN_ = -1;
+
+  // Modal memory of the written program (what the controller will hold).
+  bool posKnown_ = false;
+  AxisVec pos_{};                           // rounded, as the controller reads it
+  std::array<std::string, kAxes> posText_;  // formatted, for the "unchanged" test
+  std::string motion_;                      // last motion G code written
+  Plane plane_ = Plane::XY;                 // the header selects G17
+  int64_t feedMode_ = 0;                    // the header selects G94
+  int64_t pathMode_ = 2;                    // continuous after reset
+  std::string feedText_;                    // last F value written
+  bool haveProgrammedFeed_ = false;
+  double programmedFeed_ = 0;
+  double speedLimit_ = 0;                   // the CSS limit the written program holds (rpm, 0 none)
+  bool cssWritten_ = false;                 // G96 in force in the written program
+  bool cssNeedsS_ = false;                  // a G96 waits in the block for its S word
+  std::string surfaceWord_;                 // the last S written under G96
+  bool afterThread_ = false;                // the last motion written was a thread block
+  double startAngle_ = NAN;                 // the Sinumerik SF= in force (NAN: none written yet)
+  bool flood_ = false, mist_ = false;            // written coolant state
+  bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
+};
+
+}  // namespace ncc::emit::detail
