@@ -52,6 +52,11 @@ bool ringLevels(const ClearingSpec &s, ClipperLib::Paths &region, std::vector<do
   region.clear();
   c.Execute(ClipperLib::ctDifference, region, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   if (region.empty()) return err = "the islands cover the whole region", false;
+  // No ring lies deeper than half the narrower side of the bounding box: refuse a stepover that
+  // would need more rings than any machine runs before offsetting that often.
+  const ClipperLib::IntRect box = c.GetBounds();
+  if (std::min(box.right - box.left, box.bottom - box.top) / kScale / 2 / s.stepover > 20000)
+    return err = "too many clearing rings (stepover far too small)", false;
   // First ring: the tool touching the walls (plus the allowance); then inward by the stepover
   // until nothing is left. Each offset is taken from the region, so errors do not accumulate.
   // A stepover wider than the radius can leave material between the sharp corners of two rings
@@ -73,7 +78,9 @@ bool ringLevels(const ClearingSpec &s, ClipperLib::Paths &region, std::vector<do
       if (ring.empty()) break;
       levels.push_back(std::move(ring)), ds.push_back(d);
     }
-    if (!leavesMaterial(levels, s)) return true;
+    // Rings at most a radius apart reach every point between them (a point's distance to the
+    // ring further out is at most its depth beyond it): only wider steps need the check.
+    if (step <= s.toolRadius || !leavesMaterial(levels, s)) return true;
     if (attempt == 30) return err = "the clearing rings leave material standing", false;
     step *= 0.85;
   }
