@@ -13,6 +13,8 @@ namespace ncc {
 
 bool Executor::Impl::regionCapture(const MachineCmd &c, const Contour &ct) {
   const bool island = (ContourUse)c.sub2 == ContourUse::Island;
+  // The region is the programmed path (a front end drops Heidenhain's RL/RR in contour subprograms).
+  if (comp.active()) return error("a region contour must be captured with cutter compensation off", "contour-invalid");
   if (island && region.plane < 0) return error("an island needs its outline first (contour use=outline)", "contour-invalid");
   if (island && region.plane != (int)plane()) return error("an island must lie in the plane of its outline", "contour-invalid");
   RegionLoop loop;
