@@ -89,7 +89,7 @@ static const LintRule kRules[] = {
     {"cycle-invalid", Severity::Error, "executor",
      "R below the bottom, Q ≤ 0, a rotary axis word in a cycle block, …"},
     {"contour-invalid", Severity::Error, "front end, executor",
-     "contour cycles (ISO G70-G73): a code the contour blocks must not hold, a contour range out of order, a contour the cycle cannot cut (type II, not monotonic), a chamfer ending it"},
+     "contour cycles (ISO G70-G73, region pockets): a code the contour blocks must not hold, a contour range out of order, a contour the cycle cannot cut (type II, not monotonic; a region contour open or crossing itself, an island outside its outline), a chamfer ending it"},
     {"cycle-bad-repeat", Severity::Error, "executor",
      "L/K repeat count below 1"},
     {"cycle-spindle", Severity::Error, "executor",

@@ -63,7 +63,8 @@ enum class CmdKind : uint8_t {
   Stop,         // sub: StopKind
   Aux,          // w[P] the M number (or other aux value); sub: letter ('M', 'B', 'H')
   Frame,        // sub: FrameSlot; sub2: FrameAction | FrameFlag bits; values in mask words
-  Contour,      // sub: ContourAction; sub2: ContourUse; the consumer's parameters in U W R
+  Contour,      // sub: ContourAction; sub2: ContourUse; the consumer's parameters in U W R (the
+                //   region pocket's: kPocketParams)
   Count
 };
 
@@ -96,8 +97,30 @@ constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
 // (records go to the capture, not the sinks), `End` hands it to a consumer (`ContourUse`) with
 // its parameters; `Data` sets a consumer's modal data (the ISO G71/G72 `U R` and G73 `U W R`
 // first blocks).
-enum class ContourAction : uint8_t { Data, Begin, End };
-enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat };
+// `Run` runs a consumer on what earlier captures collected (the region pocket: `Outline` and
+// `Island` captures collect the region, `Pocket` roughs it out; runtime/ExecutorRegion.cpp).
+enum class ContourAction : uint8_t { Data, Begin, End, Run };
+enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket };
+// The region pocket's parameters (docs/IR.md §5.6) ride in word slots until MachineCmd has named
+// words: this table is the one place that maps a key to its slot (passes/CmdTemplate and the
+// executor read it).
+enum class PocketParam : uint8_t {
+  Depth, Infeed, Surface, Clearance, Height, Stepover, Overlap, SideAllowance, FloorAllowance, Direction,
+  PlungeFeed, Feed, Count
+};
+struct PocketParamSlot {
+  const char *key;
+  Word word;
+  const char *bracket;  // its name in the Motion IR cycle_begin record (at most 7 characters)
+};
+inline constexpr PocketParamSlot kPocketParams[(int)PocketParam::Count] = {
+    {"depth", Word::Z, "depth"},          {"infeed", Word::Q, "infeed"},
+    {"surface", Word::K, "surface"},      {"clearance", Word::I, "clear"},
+    {"height", Word::J, "height"},        {"stepover", Word::X, "step"},
+    {"overlap", Word::Y, "overlap"},      {"side_allowance", Word::A, "side"},
+    {"floor_allowance", Word::B, "floor"}, {"direction", Word::D, "dir"},
+    {"plunge_feed", Word::E, "fplunge"},  {"feed", Word::F, "feed"},
+};
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a
 // key given twice), so every key of the op fits.

@@ -150,7 +150,9 @@ static const OpInfo kOps[] = {
     {OpKind::Stop, "stop", 0, 0, "kind", ""},
     {OpKind::Aux, "aux", 0, 0, "", "m b h"},
     {OpKind::Frame, "frame", 0, 0, "slot action", "form X Y Z A B C I J K R"},
-    {OpKind::Contour, "contour", 0, 0, "action", "use U W R type"},
+    {OpKind::Contour, "contour", 0, 0, "action",
+     "use U W R type depth infeed surface clearance height stepover overlap side_allowance floor_allowance direction "
+     "plunge_feed feed"},
     {OpKind::Declare, "declare", 0, 0, "var type", "init len"},
     {OpKind::Assign, "assign", 0, 0, "target value", ""},
     {OpKind::If, "if", 1, 2, "cond", ""},

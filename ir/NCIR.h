@@ -110,7 +110,7 @@ enum class OpKind : uint8_t {
   Aux,         // m=<int>  other M codes; h=/b= auxiliary values
   Frame,       // slot=local|rotation|scale|mirror action=set|cancel form=plane|axis? X Y Z I J K R
                //   a programmable frame slot (ISO G52 G68 G51 G51.1, see docs/IR.md)
-  Contour,     // action=data|begin|end use=finish|rough_z|rough_x|pattern U W R  contour capture
+  Contour,     // action=data|begin|end|run use=finish|rough_z|rough_x|pattern|outline|island|pocket  contour capture
                //   (docs/IR.md): begin..end runs blocks whose path goes to the `use` consumer
   // data
   Declare,     // var=<var>[dims]? type=<symbol> init=<expr>? len=<int>?  (ir/Decls.h)

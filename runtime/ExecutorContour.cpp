@@ -79,6 +79,10 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     capture.blockNumber = blockNumber, capture.blockLoc = blockLoc;
     route.capture = &capture.records;
     return true;
+  case ContourAction::Run:
+    if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
+    if ((ContourUse)c.sub2 != ContourUse::Pocket) return error("only the pocket consumer runs without a capture", "contour-invalid");
+    return regionRun(c);
   case ContourAction::End:
     if (!capture.active) return error("a contour ends that did not begin", "contour-invalid");
     if (corner.active || corner.requested)
@@ -94,21 +98,12 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
   return error("bad contour action", "contour-invalid");
 }
 
-bool Executor::Impl::contourConsume(const MachineCmd &c) {
-  const ContourUse use = (ContourUse)c.sub2;
-  const AxisVec start = capture.st.position;
-  if (use == ContourUse::Finish) {
-    // The blocks ran for real (their F, S, T count): their records go out now, then back to the
-    // start point at rapid.
-    for (auto &r : capture.records) sink.record(r);
-    blockNumber = capture.blockNumber, blockLoc = capture.blockLoc;
-    return moveTo(RecordKind::Rapid, start);
-  }
-  // Roughing: the blocks were only read; the state comes back as it was at the start.
+// The blocks were only read: the captured motion becomes a contour in the active plane and the
+// state comes back as it was at `begin`.
+bool Executor::Impl::capturedContour(Contour &ct) {
   SourceLoc at = loc;
   const PlaneAxes ax = planeAxes(plane());
-  Contour ct;
-  ct.start = {start[ax.u], start[ax.v]};
+  ct.start = {capture.st.position[ax.u], capture.st.position[ax.v]};
   for (auto &r : capture.records) {
     if (const char *what = forbiddenInContour(r.kind)) {
       diags.error(r.loc, fmt::format("{} is not allowed inside a contour", what), "contour-invalid");
@@ -140,6 +135,24 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
   lastPath = capture.lastPath;
   blockNumber = capture.blockNumber, blockLoc = capture.blockLoc;
   loc = at;
+  return true;
+}
+
+bool Executor::Impl::contourConsume(const MachineCmd &c) {
+  const ContourUse use = (ContourUse)c.sub2;
+  const AxisVec start = capture.st.position;
+  if (use == ContourUse::Finish) {
+    // The blocks ran for real (their F, S, T count): their records go out now, then back to the
+    // start point at rapid.
+    for (auto &r : capture.records) sink.record(r);
+    blockNumber = capture.blockNumber, blockLoc = capture.blockLoc;
+    return moveTo(RecordKind::Rapid, start);
+  }
+  if (use == ContourUse::Pocket) return error("the pocket consumer runs with action=run, not after a capture", "contour-invalid");
+  Contour ct;
+  if (!capturedContour(ct)) return false;
+  if (use == ContourUse::Outline || use == ContourUse::Island) return regionCapture(c, ct);
+  const PlaneAxes ax = planeAxes(plane());
   std::vector<ContourElem> moves;
   std::string err;
   // Plane coordinates of X and Z: the turning consumers need the ZX plane.

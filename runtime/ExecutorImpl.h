@@ -4,6 +4,7 @@
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Frame.h"
+#include "runtime/cycles/Region.h"
 #include "runtime/cycles/Thread.h"
 #include "runtime/Executor.h"
 
@@ -403,6 +404,12 @@ struct Executor::Impl {
   bool patternSet = false;
   bool contourData(const MachineCmd &c);
   bool contourConsume(const MachineCmd &c);
+  // The captured records as a contour in the active plane (the state put back as at `begin`).
+  bool capturedContour(struct Contour &ct);
+  // Region pockets (ExecutorRegion.cpp): the outline and islands collected so far.
+  PocketRegion region;
+  bool regionCapture(const MachineCmd &c, const struct Contour &ct);
+  bool regionRun(const MachineCmd &c);
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
   bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.

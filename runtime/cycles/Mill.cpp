@@ -139,14 +139,26 @@ void Mill::run(const Contour &c, bool ccw, double level, double f) {
   }
 }
 
-void Mill::ring(const Polygon &p, bool ccw, double level, double f) {
+namespace {
+size_t nearestCorner(const Polygon &p, PlanePoint at, double &best) {
   size_t first = 0;
-  double best = 1e300;
+  best = 1e300;
   for (size_t i = 0; i < p.size(); ++i) {
-    double d = std::hypot(p[i][0] - here_[0], p[i][1] - here_[1]);
+    double d = std::hypot(p[i][0] - at[0], p[i][1] - at[1]);
     if (d < best) best = d, first = i;
   }
-  const size_t n = p.size();
+  return first;
+}
+}  // namespace
+
+PlanePoint Mill::ringStart(const Polygon &p) const {
+  double best;
+  return p[nearestCorner(p, here_, best)];
+}
+
+void Mill::ring(const Polygon &p, bool ccw, double level, double f) {
+  double best;
+  const size_t first = nearestCorner(p, here_, best), n = p.size();
   if (best > 0) feed(p[first], level, f);
   for (size_t k = 1; k <= n; ++k) feed(p[ccw ? (first + k) % n : (first + n - k) % n], level, f);
 }

@@ -10,13 +10,8 @@
 
 namespace ncc {
 
-// A closed tool path from `start`: lines and arcs, each to its `end`; the last ends at `start`.
-struct PathSeg {
-  PlanePoint end{};
-  bool arc = false;
-  PlanePoint centre{};
-  bool ccw = true;
-};
+// A closed tool path from `start`: lines and arcs (PathSeg, Clearing.h), each to its `end`; the
+// last ends at `start`.
 struct Contour {
   PlanePoint start{};
   std::vector<PathSeg> segs;
@@ -53,6 +48,8 @@ public:
   // Round a clearing ring at `level`, starting at its corner nearest the tool, linked there at
   // the feed (clockwise when !ccw).
   void ring(const Polygon &p, bool ccw, double level, double f);
+  // The corner of `p` nearest the tool, where ring() starts.
+  PlanePoint ringStart(const Polygon &p) const;
   PlanePoint here() const { return here_; }
   double level() const { return level_; }
   // Rapid to a position in program coordinates (the call position), up first.

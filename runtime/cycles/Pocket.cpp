@@ -126,12 +126,27 @@ bool millPocket(const MillJob &m, const PocketShape &p, Mill &mill, std::string 
   if (m.roughing()) {
     std::vector<Polygon> rough;
     if (!rings(m, p, m.sideAllowance, rough, err)) return false;
+    // Links stay at the level only when clear of the wall (Region.h's rule; a circular slot's
+    // inner wall is concave), as close as the rings' own chords come; else over the surface.
+    const std::vector<Polygon> walls{contourPolygon(p.wall, kChordTolerance)};
+    const double keep = m.r + m.sideAllowance - kChordSagFactor * kChordTolerance;
+    auto clear = [&](PlanePoint to) { return segmentClear(walls, mill.here(), to, keep); };
     mill.go(centre, m.lv.zsc);
+    double floor = -m.clearance;  // the depth already cut at the plunge points (above: the clearance)
     for (double t : infeeds(m.infeed, roughDepth)) {
       plunge(m, centre, t, mill);
-      for (const Polygon &ring : rough) mill.ring(ring, m.ccw, m.level(t), m.millFeed);
+      for (const Polygon &ring : rough) {
+        if (const PlanePoint s = mill.ringStart(ring); !clear(s)) {
+          mill.go(s, m.level(-m.clearance));
+          mill.up(m.level(std::max(floor, 0.0) - m.clearance));
+          mill.feed(s, m.level(t), m.plungeFeed);
+        }
+        mill.ring(ring, m.ccw, m.level(t), m.millFeed);
+      }
       mill.up(m.level(t - m.clearance));
+      if (!clear(centre)) mill.up(m.level(-m.clearance));
       mill.go(centre, m.level(t - m.clearance));
+      floor = t;
     }
   }
   if (m.wallPass) finishWalls(m, p.finish, m.ccw, mill);

@@ -1,0 +1,30 @@
+// Polygons to and from Clipper's integer paths (the clearing code, region pockets and their
+// tests): 1e-6 mm resolution keeps rounding far below any machine's.
+#pragma once
+#include "runtime/cycles/Clearing.h"
+
+#include <polyclipping/clipper.hpp>
+
+#include <cmath>
+
+namespace ncc {
+
+constexpr double kClipperScale = 1e6;
+
+inline ClipperLib::IntPoint toClipper(PlanePoint q) {
+  return {(ClipperLib::cInt)std::llround(q[0] * kClipperScale), (ClipperLib::cInt)std::llround(q[1] * kClipperScale)};
+}
+
+inline ClipperLib::Path toPath(const Polygon &p) {
+  ClipperLib::Path out;
+  for (auto &q : p) out.push_back(toClipper(q));
+  return out;
+}
+
+inline Polygon fromPath(const ClipperLib::Path &p) {
+  Polygon out;
+  for (auto &q : p) out.push_back({q.X / kClipperScale, q.Y / kClipperScale});
+  return out;
+}
+
+}  // namespace ncc

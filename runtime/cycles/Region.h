@@ -1,0 +1,77 @@
+// Region pockets: an outline and islands, each a closed contour captured from the program
+// (docs/IR.md §5.6 `use=outline|island`), roughed out level by level (`use=pocket`) for the
+// Heidenhain SL cycles (20 CONTOUR DATA + 22 ROUGH-OUT) and Sinumerik CYCLE63. The route through
+// the clearing rings (roughingRoute) never crosses an island or leaves the region at cutting
+// depth; any pocket entry can use it. Plane coordinates as Mill.h's (the active plane's first and
+// second axes); this header stays free of Mill.h so the executor's contour code can include it.
+#pragma once
+#include "runtime/cycles/Clearing.h"
+#include "runtime/cycles/Step.h"
+
+#include <string>
+#include <vector>
+
+namespace ncc {
+
+// A closed path of lines and arcs: from `start` through the segments back to `start`.
+// Arcs of region contours are sampled within this (mm); the rings keep their margin from it.
+constexpr double kRegionChordTolerance = 0.001;
+
+struct RegionLoop {
+  PlanePoint start{};
+  std::vector<PathSeg> segs;
+};
+
+// A captured path as a region loop: closed (the last point is the first, or the first move only
+// led to the contour's start and the rest closes there) and not crossing itself; sampled within
+// `tol` so that the polygon takes in no more than the contour (an outline) or leaves out nothing
+// of it (an island). False with a message otherwise.
+bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::string &err);
+
+// The region collected for the next pocket: the outline and its islands (overlapping islands
+// merge), in the plane they were captured in.
+struct PocketRegion {
+  int plane = -1;  // -1: no outline yet
+  Polygon outline;
+  std::vector<Polygon> islands;
+};
+// Whether `island` lies inside the outline (within `tol`): an island reaching out of it is an error.
+bool islandInside(const PocketRegion &r, const Polygon &island, double tol);
+
+// One stretch of a roughing route cut without lifting: the tool plunges at path[0] and feeds
+// along the rest at the level.
+struct RoughPass {
+  std::vector<PlanePoint> path;
+};
+// The route of one level through the rings of `spec`: area by area (the separate parts of the
+// region), in each from the innermost ring outward, every ring once round (counter-clockwise
+// outer rings and clockwise island rings when `ccw`, all reversed otherwise) from the point
+// nearest the tool. A link stays at the level when the straight move keeps the tool radius plus
+// the allowance off every wall and island (segmentClear against `walls`); otherwise a new pass
+// begins. The first pass starts on the ring nearest `from`.
+bool roughingRoute(const ClearingSpec &spec, bool ccw, PlanePoint from, std::vector<RoughPass> &passes,
+                   std::vector<Polygon> &walls, std::string &err);
+
+// The roughing job (docs/IR.md `contour action=run use=pocket`), lengths in mm, levels on the
+// tool axis in the coordinates of `at`.
+struct RegionPocketJob {
+  int plane = 0;
+  std::array<double, 3> at{};  // where the tool is
+  double surface = 0, depth = 0, infeed = 0;  // depth > 0 below the surface; infeed 0: one level
+  double clearance = 0, height = 0;  // set-up clearance above the surface; clearance height (absolute)
+  double stepover = 0, sideAllowance = 0, floorAllowance = 0;
+  double plungeFeed = 0, feed = 0;  // 0: the programmed feed
+  double toolRadius = 0;
+  bool ccw = true;  // outer walls counter-clockwise (climb with M3)
+  double chordTolerance = kRegionChordTolerance;
+};
+// Roughing of the region less its islands in levels of `infeed` down to depth - floorAllowance:
+// over the first plunge point at the clearance height, down to the set-up clearance; each level
+// runs the route's passes; between passes (and back to the first at the next level) the tool
+// stays up by the set-up clearance over the last level when the straight move is clear of the
+// walls, else it rises to the set-up clearance over the surface, moves across and comes down;
+// it plunges vertically at the plunge feed. The end: up to the clearance height.
+bool regionPocket(const PocketRegion &region, const RegionPocketJob &job, std::vector<CycleStep> &out,
+                  std::string &err);
+
+}  // namespace ncc
