@@ -32,23 +32,28 @@ bool CanonTraceWriter::flush() {
 }
 
 void CanonTraceWriter::begin(int64_t n) {
-  char tmp[48];
-  ++seq_;
   // "%5d " then the N column: "N....." + blank, or N and the number left-aligned in 6 columns.
-  auto seq = std::to_chars(tmp, tmp + sizeof tmp, (long long)seq_);
-  size_t width = (size_t)(seq.ptr - tmp);
-  if (width < 5) buf_.append(5 - width, ' ');
-  buf_.append(tmp, width);
-  buf_.push_back(' ');
+  // Built in one stack buffer, appended once.
+  char tmp[64];
+  char *p = tmp;
+  ++seq_;
+  char digits[24];
+  auto seq = std::to_chars(digits, digits + sizeof digits, (long long)seq_);
+  size_t width = (size_t)(seq.ptr - digits);
+  for (size_t i = width; i < 5; ++i) *p++ = ' ';
+  std::memcpy(p, digits, width);
+  p += width;
+  *p++ = ' ';
   if (n < 0) {
-    buf_.append("N..... ");
+    std::memcpy(p, "N..... ", 7);
+    p += 7;
   } else {
-    buf_.push_back('N');
-    auto res = std::to_chars(tmp, tmp + sizeof tmp, (long long)n);
-    size_t digits = (size_t)(res.ptr - tmp);
-    buf_.append(tmp, digits);
-    if (digits < 6) buf_.append(6 - digits, ' ');
+    *p++ = 'N';
+    char *q = std::to_chars(p, p + 24, (long long)n).ptr;
+    for (size_t i = (size_t)(q - p); i < 6; ++i) *q++ = ' ';
+    p = q;
   }
+  buf_.append(tmp, (size_t)(p - tmp));
 }
 
 void CanonTraceWriter::end() {
@@ -65,47 +70,59 @@ void CanonTraceWriter::line(int64_t n, std::string_view text) {
   end();
 }
 
-void CanonTraceWriter::num(double v) {
+namespace {
+// "00".."99": two fraction digits per lookup.
+constexpr char kDigitPairs[] =
+    "0001020304050607080910111213141516171819202122232425262728293031323334353637383940414243444546474849"
+    "5051525354555657585960616263646566676869707172737475767778798081828384858687888990919293949596979899";
+
+// Writes v as printf's %.4f at p (room for kMaxNum characters), returns the end.
+constexpr size_t kMaxNum = 400;  // %.4f of the largest double takes 315 characters
+char *fixed4(char *p, double v) {
   // Fast path: |v| < 1e9 and not near a rounding tie: the scaled value rounds to the same
   // integer as the exact decimal expansion, so printing that integer equals printf's %.4f.
   double scaled = v * 1e4;
   if (std::fabs(v) < 1e9) {
     double r = std::nearbyint(scaled);
-    double frac = std::fabs(scaled - r);
-    if (frac < 0.4999) {
+    if (std::fabs(scaled - r) < 0.4999) {
       long long q = (long long)r;
-      char tmp[32];
-      char *p = tmp;
       if (q < 0 || (q == 0 && std::signbit(v))) *p++ = '-';  // "-0.0000" like printf
       unsigned long long a = q < 0 ? (unsigned long long)(-q) : (unsigned long long)q;
-      auto res = std::to_chars(p, tmp + sizeof tmp, a / 10000);
-      p = res.ptr;
-      *p++ = '.';
+      p = std::to_chars(p, p + 16, a / 10000).ptr;
       unsigned f = (unsigned)(a % 10000);
-      p[0] = (char)('0' + f / 1000);
-      p[1] = (char)('0' + f / 100 % 10);
-      p[2] = (char)('0' + f / 10 % 10);
-      p[3] = (char)('0' + f % 10);
-      buf_.append(tmp, (size_t)(p + 4 - tmp));
-      return;
+      *p = '.';
+      std::memcpy(p + 1, kDigitPairs + 2 * (f / 100), 2);
+      std::memcpy(p + 3, kDigitPairs + 2 * (f % 100), 2);
+      return p + 5;
     }
   }
-  char tmp[400];  // %.4f of the largest double takes 315 characters
   // to_chars with a precision rounds exactly like printf's %.4f (including "-0.0000").
-  auto res = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::fixed, 4);
-  if (res.ec != std::errc()) {
-    int len = std::snprintf(tmp, sizeof tmp, "%.4f", v);
-    buf_.append(tmp, len < 0 ? 0 : std::min((size_t)len, sizeof tmp - 1));
-    return;
-  }
-  buf_.append(tmp, (size_t)(res.ptr - tmp));
+  auto res = std::to_chars(p, p + kMaxNum, v, std::chars_format::fixed, 4);
+  if (res.ec == std::errc()) return res.ptr;
+  int len = std::snprintf(p, kMaxNum, "%.4f", v);
+  return p + (len < 0 ? 0 : std::min((size_t)len, kMaxNum - 1));
+}
+}  // namespace
+
+void CanonTraceWriter::num(double v) {
+  char tmp[kMaxNum];
+  buf_.append(tmp, (size_t)(fixed4(tmp, v) - tmp));
 }
 
+// Formats the values into one stack buffer and appends it once (flushing early only when a
+// huge value could overflow it).
 void CanonTraceWriter::nums(const double *v, int n) {
+  char tmp[1024];
+  char *p = tmp;
   for (int i = 0; i < n; ++i) {
-    if (i) buf_.append(", ");
-    num(v[i]);
+    if ((size_t)(tmp + sizeof tmp - p) < kMaxNum + 2) {
+      buf_.append(tmp, (size_t)(p - tmp));
+      p = tmp;
+    }
+    if (i) *p++ = ',', *p++ = ' ';
+    p = fixed4(p, v[i]);
   }
+  buf_.append(tmp, (size_t)(p - tmp));
 }
 
 void CanonTraceWriter::preamble() {
