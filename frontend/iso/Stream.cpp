@@ -3,12 +3,28 @@
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/iso/Lower.h"
 
+#include <cstdint>
 #include <cstring>
 
 namespace ncc::iso {
 
 static inline char up(char c) { return (c >= 'a' && c <= 'z') ? (char)(c - 32) : c; }
 static inline bool letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+// The scan's byte classes: most bytes of a part program are digits, signs and points (Other),
+// which the scan only notes as content; one table lookup skips them.
+enum class ByteClass : uint8_t { Other, Blank, Special };
+struct ByteClasses {
+  ByteClass c[256];
+  constexpr ByteClasses() : c{} {
+    for (int i = 0; i < 256; ++i) {
+      bool l = (i >= 'A' && i <= 'Z') || (i >= 'a' && i <= 'z');
+      bool s = i == '(' || i == ')' || i == ';' || i == '%';
+      c[i] = l || s ? ByteClass::Special : i == ' ' || i == '\t' || i == '\r' ? ByteClass::Blank : ByteClass::Other;
+    }
+  }
+};
+static constexpr ByteClasses kBytes;
 
 bool isoIsStreamable(std::string_view text) {
   const char *p = text.data(), *end = p + text.size();
@@ -36,6 +52,12 @@ bool isoIsStreamable(std::string_view text) {
     int depth = 0;
     for (; q < le; ++q) {
       char c = *q;
+      ByteClass k = kBytes.c[(unsigned char)c];
+      if (k == ByteClass::Other) {  // not in a comment: content
+        seenContent |= depth == 0;
+        continue;
+      }
+      if (k == ByteClass::Blank) continue;
       if (c == '(') {
         ++depth;
         continue;
