@@ -20,6 +20,40 @@ const char *opCodeName(OpCode op) {
   return names[(unsigned)op];
 }
 
+namespace {
+// A bounded free list per thread: enough for a streamed chunk's expressions; beyond it nodes
+// go back to the heap, so a large module freed at once does not stay pooled. No destructor:
+// the nodes left at thread exit are reclaimed with the process (or leaked by a finished thread).
+struct ExprFreeList {
+  void *head = nullptr;
+  size_t count = 0;
+};
+constexpr size_t kExprPoolMax = 16384;
+thread_local ExprFreeList tExprFree;
+}  // namespace
+
+void *Expr::operator new(std::size_t size) {
+  ExprFreeList &fl = tExprFree;
+  if (size == sizeof(Expr) && fl.head) {
+    void *p = fl.head;
+    fl.head = *static_cast<void **>(p);
+    --fl.count;
+    return p;
+  }
+  return ::operator new(size);
+}
+
+void Expr::operator delete(void *p, std::size_t size) noexcept {
+  ExprFreeList &fl = tExprFree;
+  if (p && size == sizeof(Expr) && fl.count < kExprPoolMax) {
+    *static_cast<void **>(p) = fl.head;
+    fl.head = p;
+    ++fl.count;
+    return;
+  }
+  ::operator delete(p);
+}
+
 ExprPtr Expr::number(double v, Type t, SourceLoc loc) {
   auto e = std::make_unique<Expr>();
   e->kind = ExprKind::Number;

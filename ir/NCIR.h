@@ -67,6 +67,11 @@ struct Expr {
   std::string str;
   std::vector<ExprPtr> args;
 
+  // Expressions come and go per block on the streaming path (3 or 4 per line of a flat
+  // program): freed nodes are kept on a per-thread free list instead of going back to malloc.
+  static void *operator new(std::size_t size);
+  static void operator delete(void *p, std::size_t size) noexcept;
+
   static ExprPtr number(double v, Type t, SourceLoc loc = {});
   static ExprPtr string(std::string s, SourceLoc loc = {});
   static ExprPtr boolean(bool b, SourceLoc loc = {});

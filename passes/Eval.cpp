@@ -362,6 +362,7 @@ struct Evaluator::Impl {
   std::string text;  // the last message text built at run time (the sink copies it)
 
   void execMachine(const CmdTemplate &t, Frame &fr) {
+    if (t.slots.empty() && !t.text) return issue(t.base, fr);  // all constant: no copy
     MachineCmd cmd = t.base;
     if (t.text) {
       text.clear();
@@ -374,10 +375,17 @@ struct Evaluator::Impl {
       if (!std::isfinite(v)) fail(s.expr->loc, "value is not a finite number");
       cmd.set(s.word, v);
     }
+    issue(cmd, fr);
+  }
+
+  // `cmd` may be a template's own command: read before a modal call runs other code.
+  void issue(const MachineCmd &cmd, Frame &fr) {
+    const bool end = cmd.kind == CmdKind::Stop &&
+                     (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind);
+    const SourceLoc loc = cmd.loc;
     if (!sink.exec(cmd)) throw ProgramEnd{};  // the sink reported the error
-    if (cmd.kind == CmdKind::Move && !modal.callee.empty() && !inModal) runModal(cmd.loc, fr);
-    if (cmd.kind == CmdKind::Stop &&
-        (cmd.sub == (uint8_t)StopKind::End || cmd.sub == (uint8_t)StopKind::EndRewind)) {
+    if (cmd.kind == CmdKind::Move && !modal.callee.empty() && !inModal) runModal(loc, fr);
+    if (end) {
       ended = true;
       throw ProgramEnd{};
     }

@@ -116,7 +116,7 @@ struct BlockLowerer::Block {
     if (!gi || gi->kind != GKind::Mode) return;
     // Fanuc's G80 returns to the group-01 mode before the cycle; LinuxCNC's leaves none.
     ModeValue m = gi->mode == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc ? ModeValue::CycleCancel : gi->mode;
-    emit(OpKind::Mode, gloc(g)).set(key, Expr::symbol(modeValueInfo(m).name, gloc(g)));
+    add(emit(OpKind::Mode, gloc(g)), key, Expr::symbol(modeValueInfo(m).name, gloc(g)));
   }
   // Keys are unique here, so args are appended directly (Op::set would search).
   static void add(Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); }
