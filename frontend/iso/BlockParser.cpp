@@ -9,6 +9,7 @@
 #include "ir/SystemVars.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace ncc::iso {
@@ -64,13 +65,23 @@ std::string_view BlockParser::readLetters() {
 }
 
 // Unsigned decimal literal: digits with at most one point ("12", "1.5", "5.", ".5").
+// Powers of ten that are exact doubles (10^22 is the largest).
+static constexpr double kExactPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                         1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
 bool BlockParser::readNumber(double &v, bool &hasPoint, bool &any) {
   const char *b = p_;
   hasPoint = false;
   any = false;
+  // The digits as an integer and the count after the point, while they stay exact (< 2^53).
+  constexpr uint64_t kExact = uint64_t(1) << 53;
+  uint64_t mantissa = 0;
+  int fraction = 0;
   while (p_ < end_) {
     if (isDigit(*p_)) {
       any = true;
+      if (mantissa < kExact) mantissa = mantissa * 10 + (uint64_t)(*p_ - '0');
+      fraction += hasPoint;
       ++p_;
     } else if (*p_ == '.' && !hasPoint) {
       hasPoint = true;
@@ -82,6 +93,12 @@ bool BlockParser::readNumber(double &v, bool &hasPoint, bool &any) {
   if (!any) {
     p_ = b;
     return false;
+  }
+  // Both operands exact and one correctly rounded division: the same double as from_chars
+  // (Clinger's fast path), without its general machinery; typical NC numbers take it.
+  if (mantissa < kExact && fraction <= 22) {
+    v = (double)mantissa / kExactPow10[fraction];
+    return true;
   }
   const char *e = p_;
   if (e[-1] == '.') --e;  // "5." : from_chars needs a digit after the point

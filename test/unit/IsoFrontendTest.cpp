@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <charconv>
 #include <cstdlib>
 #include <random>
 
@@ -84,6 +85,36 @@ TEST(IsoBlockParser, WordsCommentsAndBlockNumber) {
   ASSERT_EQ(b.comments.size(), 2u);
   EXPECT_EQ(b.comments[0].text, "a (nested) c");
   EXPECT_EQ(b.comments[1].text, "tail");
+  EXPECT_FALSE(d.hasErrors());
+}
+
+// Word values are the correctly rounded doubles of their decimals (from_chars), whether the
+// parser takes its fast path (< 2^53 digits, <= 22 after the point) or not.
+TEST(IsoBlockParser, NumbersMatchFromChars) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser p(d, Flavour::Fanuc, 0);
+  std::vector<std::string> texts = {"0", "0.", ".5", "1.866", "0.1", "0.3", "123456.789", "9007199254740991",
+                                    "9007199254740992", "9007199254740993", "90071992547409920.5",
+                                    "0.1234567890123456789012", "0.12345678901234567890123", "1.7976931348623157",
+                                    "000000000000000000000012.5", "4503599627370495.5", "0.0000000000000000000001"};
+  std::mt19937_64 rng(6);
+  for (int i = 0; i < 2000; ++i) {
+    std::string t = std::to_string(rng() % 100000000000ull);
+    size_t point = rng() % (t.size() + 1);
+    t.insert(point, ".");
+    texts.push_back(t);
+  }
+  for (const std::string &t : texts) {
+    ParsedBlock b;
+    ASSERT_TRUE(p.parse("X" + t, 1, 1, b)) << t;
+    ASSERT_EQ(b.words.size(), 1u) << t;
+    std::string digits = t.back() == '.' ? t.substr(0, t.size() - 1) : t;
+    double want = 0;
+    std::from_chars(digits.data(), digits.data() + digits.size(), want, std::chars_format::fixed);
+    EXPECT_EQ(b.words[0].value, want) << t;
+  }
   EXPECT_FALSE(d.hasErrors());
 }
 
