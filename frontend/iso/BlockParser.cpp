@@ -70,30 +70,30 @@ static constexpr double kExactPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6
                                          1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 bool BlockParser::readNumber(double &v, bool &hasPoint, bool &any) {
-  const char *b = p_;
-  hasPoint = false;
-  any = false;
+  // Locals in the loop: stores through the bool references and p_ would be reloaded per
+  // character (a char may alias them).
+  const char *b = p_, *q = p_, *end = end_;
+  bool point = false;
+  int digits = 0;
   // The digits as an integer and the count after the point, while they stay exact (< 2^53).
   constexpr uint64_t kExact = uint64_t(1) << 53;
   uint64_t mantissa = 0;
   int fraction = 0;
-  while (p_ < end_) {
-    if (isDigit(*p_)) {
-      any = true;
-      if (mantissa < kExact) mantissa = mantissa * 10 + (uint64_t)(*p_ - '0');
-      fraction += hasPoint;
-      ++p_;
-    } else if (*p_ == '.' && !hasPoint) {
-      hasPoint = true;
-      ++p_;
+  for (; q < end; ++q) {
+    if (isDigit(*q)) {
+      ++digits;
+      if (mantissa < kExact) mantissa = mantissa * 10 + (uint64_t)(*q - '0');
+      fraction += point;
+    } else if (*q == '.' && !point) {
+      point = true;
     } else {
       break;
     }
   }
-  if (!any) {
-    p_ = b;
-    return false;
-  }
+  hasPoint = point;
+  any = digits > 0;
+  if (!any) return false;
+  p_ = q;
   // Both operands exact and one correctly rounded division: the same double as from_chars
   // (Clinger's fast path), without its general machinery; typical NC numbers take it.
   if (mantissa < kExact && fraction <= 22) {
