@@ -7,7 +7,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <unistd.h>
 
 namespace ncc {
@@ -15,9 +14,20 @@ namespace ncc {
 uint32_t SourceManager::addFile(const std::string &path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return 0;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return addBuffer(path, ss.str());
+  // Read into a string reserved at the file's size: a stringstream would hold the text twice
+  // (its growing buffer, then the copy), doubling the peak memory of a large program. Pipes
+  // cannot seek: they are read without the reservation.
+  in.seekg(0, std::ios::end);
+  std::streamoff size = in.fail() ? -1 : (std::streamoff)in.tellg();
+  in.clear();
+  in.seekg(0, std::ios::beg);
+  in.clear();
+  std::string text;
+  if (size > 0) text.reserve((size_t)size);
+  static constexpr size_t kChunk = 1 << 16;
+  char buf[kChunk];
+  while (in.read(buf, kChunk), in.gcount() > 0) text.append(buf, (size_t)in.gcount());
+  return addBuffer(path, std::move(text));
 }
 
 uint32_t SourceManager::addBuffer(std::string name, std::string text) {

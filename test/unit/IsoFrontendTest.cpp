@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <charconv>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 
@@ -116,6 +117,26 @@ TEST(IsoBlockParser, NumbersMatchFromChars) {
     EXPECT_EQ(b.words[0].value, want) << t;
   }
   EXPECT_FALSE(d.hasErrors());
+}
+
+// A program file is read whole and exactly (several read chunks, NUL and CR bytes kept).
+TEST(SourceManagerFile, ReadsWholeFileExactly) {
+  std::string path = ::testing::TempDir() + "ncc-source-read.ngc";
+  std::string bytes;
+  std::mt19937 rng(7);
+  for (int i = 0; i < 200000; ++i) bytes.push_back((char)(rng() % 256));
+  {
+    std::FILE *f = std::fopen(path.c_str(), "wb");
+    ASSERT_TRUE(f);
+    ASSERT_EQ(std::fwrite(bytes.data(), 1, bytes.size(), f), bytes.size());
+    std::fclose(f);
+  }
+  SourceManager sm;
+  uint32_t id = sm.addFile(path);
+  ASSERT_NE(id, 0u);
+  EXPECT_EQ(sm.text(id), bytes);
+  EXPECT_EQ(sm.addFile(path + ".missing"), 0u);
+  std::remove(path.c_str());
 }
 
 TEST(IsoBlockParser, EmptyAndPercentLines) {
