@@ -41,7 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   s.machine = machine;
   std::string program = kProgram;
   for (int a = 3; a < kAxes; ++a)
-    if (machine.axes[a].present) program += fmt::format("G0 {}30\n", "XYZABC"[a]);
+    if (machine.axes[a].present) program += fmt::format("G0 {}30\n", kAxisLetters[a]);
   program += "M5 M9\nM30\n";
   uint32_t f = s.add("prog.nc", program);
   // ncc translate --verify: the ISO output runs on the same machine.
