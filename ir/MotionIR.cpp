@@ -17,7 +17,7 @@ const char *recordKindName(RecordKind k) {
                                 "plane",        "comment",       "message",      "optional_stop",
                                 "program_stop", "program_end",   "aux",          "cycle_begin",
                                 "cycle_end",    "frame_change",  "spline",       "spindle_orient",
-                                "spindle_mode", "thread"};
+                                "spindle_mode", "thread",        "tool_number"};
   static_assert(sizeof(names) / sizeof(names[0]) == (size_t)RecordKind::Count);
   return names[(unsigned)k];
 }

@@ -80,6 +80,7 @@ enum class RecordKind : uint8_t {
                  // `value` the lead (mm per spindle revolution) measured along `ivalue`
                  // (ThreadAxis), `value2` the start angle (degrees after the spindle's index),
                  // `sync` (ThreadSync), `feed` the path feed it gives at the programmed speed
+  ToolNumber,    // LinuxCNC M61: `ivalue` the tool now declared in the spindle (no change, no motion)
   Count
 };
 

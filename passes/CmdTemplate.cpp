@@ -37,7 +37,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
     {OpKind::Spindle, "angle", Word::R},
     {OpKind::Spindle, "wait", Word::Q},      {OpKind::Speed, "limit", Word::D},
-    {OpKind::Contour, "type", Word::P},
+    {OpKind::Contour, "type", Word::P},     {OpKind::ToolChange, "number", Word::Q},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -157,6 +157,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     if (!symbolArg("mode", c.sub) || !symbolArg("after_css", c.sub2)) return false;
     break;
   case OpKind::Stop: return symbolArg("kind", c.sub);
+  case OpKind::ToolLength:  // G43.1/G43.2 axis values: the words' own keys, below
+    if (!symbolArg("form", c.sub)) return false;
+    break;
   case OpKind::SetOffset:
     if (!symbolArg("kind", c.sub)) return false;
     break;
@@ -215,7 +218,8 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   // Scalar words: named keys per kKeyWords, the words' own keys (kWordKeys) for motion ops.
   bool letters = op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour;
+                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour ||
+                 op.kind == OpKind::ToolLength;
   for (auto &a : op.args) {
     Word w;
     if (letters && wordFromKey(a.key, w)) {

@@ -229,6 +229,9 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     line(n, "STOP_SPINDLE_TURNING(0)");
     line(n, "CHANGE_TOOL(" + std::to_string(r.ivalue) + ")");
     break;
+  case RecordKind::ToolNumber:  // rs274 prints the tool table index; ncc the number (as CHANGE_TOOL)
+    line(n, "CHANGE_TOOL_NUMBER(" + std::to_string(r.ivalue) + ")");
+    break;
   case RecordKind::ToolLength:
     // Already applied to the machine positions: printing it would apply it twice.
     break;

@@ -224,6 +224,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
 }
 
 bool Executor::Impl::execToolLength(const MachineCmd &c) {
+  if ((ToolLengthForm)c.sub != ToolLengthForm::Table) return offsetToolLength(c, (ToolLengthForm)c.sub);
   // Without H (rs274 G43): the tool in the spindle.
   double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
   ToolData t;
@@ -625,6 +626,7 @@ bool Executor::exec(const MachineCmd &c) {
     return true;
   }
   case CmdKind::ToolChange: {
+    if (c.has(Word::Q)) return x.setToolNumber(c.get(Word::Q));
     x.st.toolInSpindle = x.st.toolSelected;
     x.st.spindle = 0;  // the change stops the spindle
     MotionRecord r = x.record(RecordKind::ToolChange);

@@ -409,6 +409,7 @@ void Emitter::record(const MotionRecord &r) {
     flushPending();
     break;
   case RecordKind::ToolLength:
+  case RecordKind::ToolNumber:  // LinuxCNC M61: no motion; its tool's length is in the positions
     break;  // positions already include the offset: the program runs with length comp off
   case RecordKind::SpindleSpeed: {
     std::string w;

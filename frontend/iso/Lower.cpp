@@ -309,6 +309,13 @@ bool BlockLowerer::Block::setup() {
   if (auto *m = findM(MKind::ToolChange)) {
     emit(OpKind::ToolChange, m->word->loc);
   }
+  if (auto *m = findM(MKind::ToolNumber)) {  // LinuxCNC M61 Q<tool>: declares the tool in the spindle
+    if (!bw.has('Q')) {
+      L.diags_.error(m->word->loc, "Need non-negative Q-word to specify tool number with M61", "missing-word");
+      return false;
+    }
+    emit(OpKind::ToolChange, m->word->loc).set("number", take('Q', Scale::None));
+  }
   if (auto *m = findM(MKind::Spindle)) {
     static const char *dirs[] = {"stop", "cw", "ccw", "orient"};
     Op &op = emit(OpKind::Spindle, m->word->loc);
@@ -372,15 +379,21 @@ bool BlockLowerer::Block::setup() {
   }
   if (auto *gi = G(GGroup::ToolLength)) {
     SourceLoc loc = gloc(GGroup::ToolLength);
+    if (gi->arg >= 2 && !offsetToolLength(gi->arg == 3, loc)) return false;
     ExprPtr h;
-    if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
+    if (gi->arg >= 2) {
+    } else if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
+    else if (bw.has('H') && L.flavour_ == Flavour::RS274 && !bw.get('H')->expr && bw.get('H')->value == 0)
+      bw.used |= Words::bit('H');  // rs274 G43 H0: the tool in the spindle, as G43 alone
     else if (bw.has('H')) h = take('H', Scale::None);
     if (!h && L.flavour_ != Flavour::RS274) {
       L.diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
       return false;
     }
-    Op &op = emit(OpKind::ToolLength, loc);
-    if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
+    if (gi->arg < 2) {
+      Op &op = emit(OpKind::ToolLength, loc);
+      if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
+    }
   }
   if (auto *gi = G(GGroup::WorkOffset))
     emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
@@ -395,6 +408,29 @@ bool BlockLowerer::Block::setup() {
   modeOp(GGroup::Distance, "distance");
   modeOp(GGroup::ArcDistance, "arc_distance");
   modeOp(GGroup::Retract, "retract");
+  return true;
+}
+
+// LinuxCNC G43.1 <axes>: each named axis's offset becomes its word, the others keep theirs;
+// G43.2 H<n> (H0: the tool in the spindle) or <axes> adds tool n's length or the values to the
+// active offsets. The axis words move the machine too when the block has a motion code
+// (rs274: `G43.1 Z1 G0 X5` offsets X by 5 and moves to X5).
+bool BlockLowerer::Block::offsetToolLength(bool add, SourceLoc loc) {
+  const bool axes = bw.hasAny("XYZABCUVW");
+  if (add && axes == bw.has('H')) {
+    L.diags_.error(loc, axes ? "G43.2: Can not have both H and axis words" : "G43.2: No axes specified and H word missing",
+                   axes ? "bad-command" : "missing-word");
+    return false;
+  }
+  Op &op = emit(OpKind::ToolLength, loc);
+  op.set("form", Expr::symbol(add ? "add" : "dynamic", loc));
+  if (add && bw.has('H')) op.set("h", take('H', Scale::None));
+  for (const char *a = "XYZABCUVW"; *a; ++a)
+    if (bw.has(*a)) op.set(std::string(1, *a), literal(*bw.get(*a), factor(scaleOf(*a))));
+  if (!G(GGroup::Motion)) {
+    bw.used |= Words::bits("XYZABCUVW") & bw.present;
+    offsetTookAxes = true;
+  }
   return true;
 }
 
