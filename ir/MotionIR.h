@@ -81,6 +81,9 @@ enum class RecordKind : uint8_t {
                  // (ThreadAxis), `value2` the start angle (degrees after the spindle's index),
                  // `sync` (ThreadSync), `feed` the path feed it gives at the programmed speed
   ToolNumber,    // LinuxCNC M61: `ivalue` the tool now declared in the spindle (no change, no motion)
+  DigitalOutput, // LinuxCNC M62-M65: `ivalue` the output, `value` 1 on / 0 off, `value2` 1 synchronized
+                 // with the next move (M62/M63), 0 at once (M64/M65)
+  AnalogOutput,  // LinuxCNC M67/M68: `ivalue` the output, `value` its value, `value2` as DigitalOutput
   Count
 };
 

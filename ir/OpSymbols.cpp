@@ -51,6 +51,8 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::SetOffset, "kind", "tool_radius", (uint8_t)SetOffsetKind::ToolRadius},
     {OpKind::SetOffset, "kind", "tool_radius_wear", (uint8_t)SetOffsetKind::ToolRadiusWear},
     {OpKind::SetOffset, "kind", "lathe_tool", (uint8_t)SetOffsetKind::LatheTool},
+    {OpKind::Aux, "input", "digital", 0},
+    {OpKind::Aux, "input", "analog", 1},
     {OpKind::ToolLength, "form", "table", (uint8_t)ToolLengthForm::Table},
     {OpKind::ToolLength, "form", "dynamic", (uint8_t)ToolLengthForm::Dynamic},
     {OpKind::ToolLength, "form", "add", (uint8_t)ToolLengthForm::Add},

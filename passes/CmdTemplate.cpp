@@ -38,6 +38,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Spindle, "angle", Word::R},
     {OpKind::Spindle, "wait", Word::Q},      {OpKind::Speed, "limit", Word::D},
     {OpKind::Contour, "type", Word::P},     {OpKind::ToolChange, "number", Word::Q},
+    {OpKind::Aux, "index", Word::E},        {OpKind::Aux, "value", Word::Q},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -201,6 +202,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     c.sub = 'M';
     for (const char *key : {"b", "h"})
       if (op.get(key)) c.sub = (uint8_t)(key[0] - 'a' + 'A');
+    if (!symbolArg("input", c.sub2)) return false;  // LinuxCNC M66: 0 digital (P), 1 analog (E)
     break;
   case OpKind::Move:
     // ic=XZ / ac=Y: the axis words that are incremental / absolute whatever the mode is.
@@ -308,9 +310,10 @@ Op cmdToOp(const MachineCmd &c) {
   }
   for (auto &kw : kKeyWords)
     if (kw.op == op.kind && c.has(kw.word) &&
-        (op.kind != OpKind::Aux || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
+        (op.kind != OpKind::Aux || kw.word != Word::P || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
       bool isInt = kw.word == Word::T || kw.word == Word::H || (kw.word == Word::D && op.kind != OpKind::Speed) ||
-                   (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux || op.kind == OpKind::Contour;
+                   (op.kind == OpKind::SetOffset) || (op.kind == OpKind::Aux && kw.word != Word::Q) ||
+                   op.kind == OpKind::Contour;
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }
   if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||

@@ -429,6 +429,13 @@ void Emitter::record(const MotionRecord &r) {
     programmedFeed_ = r.value;
     haveProgrammedFeed_ = true;
     break;
+  case RecordKind::DigitalOutput:
+  case RecordKind::AnalogOutput:  // no emitter writes LinuxCNC's I/O codes yet: refused, not dropped
+    diags_.error(r.loc, "the [" + st_.section + "] emitter has no code for LinuxCNC's digital/analog outputs: " +
+                            printMotionRecord(r),
+                 "unsupported-code");
+    errors_ = true;
+    break;
   case RecordKind::FeedMode: {
     static const Code codes[] = {Code::PerMinute, Code::PerRev, Code::InverseTime};
     if (r.ivalue < 0 || r.ivalue > 2 || r.ivalue == feedMode_) break;

@@ -56,8 +56,9 @@ const GCodeInfo *findRs274GCode(int32_t code10);
 const char *cycleParamWords(ModeValue cycle, bool rs274);
 
 // M codes with a built-in meaning; every other integer M is an `aux`.
-enum class MKind : uint8_t { Stop, ToolChange, ToolNumber, Spindle, Coolant, Call, Return, Aux, Unsupported };  // ToolNumber: LinuxCNC M61 Q
-enum class MGroup : uint8_t { None, Stop, ToolChange, Spindle, Coolant, Sub };
+// ToolNumber: LinuxCNC M61 Q; Io: LinuxCNC M62-M68 (digital and analog outputs, M66 input).
+enum class MKind : uint8_t { Stop, ToolChange, ToolNumber, Spindle, Coolant, Call, Return, Aux, Io, Unsupported };
+enum class MGroup : uint8_t { None, Stop, ToolChange, Spindle, Coolant, Sub, Io };
 
 struct MCodeInfo {
   int32_t code;

@@ -306,6 +306,7 @@ bool BlockLowerer::Block::setup() {
       emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
     }
   }
+  if (auto *m = findM(MKind::Io); m && !ioCode(*m)) return false;  // rs274: after T, before M6
   if (auto *m = findM(MKind::ToolChange)) {
     emit(OpKind::ToolChange, m->word->loc);
   }
@@ -613,6 +614,44 @@ bool BlockLowerer::Block::stops() {
   for (int i = 0; i < nm; ++i)
     if (ms[i].info.kind == MKind::Aux)
       emit(OpKind::Aux, ms[i].word->loc).set("m", Expr::number(ms[i].info.code, ir::Type::Int, ms[i].word->loc));
+  return true;
+}
+
+// LinuxCNC M62/M63 (M64/M65) P<output>: a digital output on/off synchronized with the next move
+// (immediately); M67 (M68) E<output> Q<value>: an analog output; M66 P<digital>|E<analog input>
+// L0: reads an input at once (its result #5399 is not provided). All are `aux m=` with the
+// channel `index` (and `value`, `input`). M66 L1-L4 wait for an input edge or level, which a
+// simulation cannot know: an error, not a wait of unknown length.
+bool BlockLowerer::Block::ioCode(const MUse &m) {
+  const int code = m.info.code;
+  const SourceLoc loc = m.word->loc;
+  auto fail = [&](const std::string &msg, const char *rule) {
+    L.diags_.error(loc, msg, rule);
+    return false;
+  };
+  Op &op = emit(OpKind::Aux, loc);
+  op.set("m", Expr::number(code, ir::Type::Int, loc));
+  if (code <= 65) {
+    if (!bw.has('P')) return fail(fmt::format("No valid P word with M{}", code), "missing-word");
+    op.set("index", take('P', Scale::None));
+  } else if (code == 66) {
+    if (bw.has('P') == bw.has('E')) return fail("Need to have either a valid P or a valid E word with M66", "missing-word");
+    if (IsoWord *l = bw.get('L')) {
+      if (l->expr || l->value != 0)
+        return fail("M66 L1-L4 (wait for an input) is not supported: a simulation cannot know when the input changes; "
+                    "L0 reads it at once",
+                    "unsupported-code");
+      bw.used |= Words::bit('L');
+    }
+    bw.used |= Words::bit('Q') & bw.present;  // the timeout, unused by L0
+    op.set("input", Expr::symbol(bw.has('P') ? "digital" : "analog", loc));
+    op.set("index", take(bw.has('P') ? 'P' : 'E', Scale::None));
+  } else {
+    if (!bw.has('E')) return fail(fmt::format("Invalid analog index with M{}", code), "missing-word");
+    if (!bw.has('Q')) return fail(fmt::format("M{} needs Q (the output value)", code), "missing-word");
+    op.set("index", take('E', Scale::None));
+    op.set("value", take('Q', Scale::None));
+  }
   return true;
 }
 

@@ -184,6 +184,7 @@ struct BlockLowerer::Block {
   bool threadWords(Op &op, ModeValue m);  // the words of G32/G33/G33.1/G76/G92/G78
   void peckWords(Op &op);                  // P Q R of the lathe's G74/G75 (LowerTurning.cpp)
   bool stops();
+  bool ioCode(const MUse &m);       // LinuxCNC M62-M68
   bool callsAndReturn();
   bool finish();         // assignments, unused words
 };
