@@ -18,16 +18,22 @@ namespace ncc {
 // corner after a move (ISO `,C` `,R`, Sinumerik CHF RND, Heidenhain CHF RND); ViaX ViaY ViaZ the
 // intermediate point of an arc through three points (Sinumerik CIP I1 J1 K1), read like X Y Z.
 // A dialect's new word is one row here (and one in kWordKeys); a command holds up to 64.
+// Depth … RoughFeed are the region pocket's parameters (contour action=run use=pocket,
+// docs/IR.md §5.6).
 enum class Word : uint8_t {
   X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, PolarR, PolarA, Chamfer, Round,
-  ViaX, ViaY, ViaZ, Count
+  ViaX, ViaY, ViaZ, Depth, Infeed, Surface, Clearance, Height, Stepover, Overlap, SideAllowance,
+  FloorAllowance, Direction, PlungeFeed, RoughFeed, Count
 };
 constexpr int kWords = (int)Word::Count;
 static_assert(kWords <= 64, "MachineCmd::mask has 64 bits");
-constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE@^crxyz";
-constexpr const char *kWordKeys[kWords] = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R",
-                                           "P", "Q", "L", "F", "S", "T", "H", "D", "E", "polar_r", "polar_a",
-                                           "chamfer", "round", "via_x", "via_y", "via_z"};
+// The character messages use for a word (named words: a stand-in).
+constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE@^crxyz###########";
+constexpr const char *kWordKeys[kWords] = {
+    "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R", "P", "Q", "L", "F", "S", "T", "H", "D", "E",
+    "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
+    "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
+    "plunge_feed", "feed"};
 using WordMask = uint64_t;
 constexpr WordMask wordBit(Word w) { return WordMask(1) << (unsigned)w; }
 // The words a move may make absolute or incremental on their own (MachineCmd sub/sub2, 16
@@ -64,7 +70,7 @@ enum class CmdKind : uint8_t {
   Aux,          // w[P] the M number (or other aux value); sub: letter ('M', 'B', 'H')
   Frame,        // sub: FrameSlot; sub2: FrameAction | FrameFlag bits; values in mask words
   Contour,      // sub: ContourAction; sub2: ContourUse; the consumer's parameters in U W R (the
-                //   region pocket's: kPocketParams)
+                //   region pocket's in its own words, kPocketParams)
   Count
 };
 
@@ -104,25 +110,22 @@ constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
 // `Island` captures collect the region, `Pocket` roughs it out; runtime/ExecutorRegion.cpp).
 enum class ContourAction : uint8_t { Data, Begin, End, Run };
 enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket };
-// The region pocket's parameters (docs/IR.md §5.6) ride in word slots until MachineCmd has named
-// words: this table is the one place that maps a key to its slot (passes/CmdTemplate and the
-// executor read it).
+// The region pocket's parameters (docs/IR.md §5.6): their words and their names in the Motion IR
+// cycle_begin record (at most 7 characters).
 enum class PocketParam : uint8_t {
   Depth, Infeed, Surface, Clearance, Height, Stepover, Overlap, SideAllowance, FloorAllowance, Direction,
   PlungeFeed, Feed, Count
 };
 struct PocketParamSlot {
-  const char *key;
   Word word;
-  const char *bracket;  // its name in the Motion IR cycle_begin record (at most 7 characters)
+  const char *bracket;
+  const char *key() const { return kWordKeys[(int)word]; }
 };
 inline constexpr PocketParamSlot kPocketParams[(int)PocketParam::Count] = {
-    {"depth", Word::Z, "depth"},          {"infeed", Word::Q, "infeed"},
-    {"surface", Word::K, "surface"},      {"clearance", Word::I, "clear"},
-    {"height", Word::J, "height"},        {"stepover", Word::X, "step"},
-    {"overlap", Word::Y, "overlap"},      {"side_allowance", Word::A, "side"},
-    {"floor_allowance", Word::B, "floor"}, {"direction", Word::D, "dir"},
-    {"plunge_feed", Word::E, "fplunge"},  {"feed", Word::F, "feed"},
+    {Word::Depth, "depth"},      {Word::Infeed, "infeed"},       {Word::Surface, "surface"},
+    {Word::Clearance, "clear"},  {Word::Height, "height"},       {Word::Stepover, "step"},
+    {Word::Overlap, "overlap"},  {Word::SideAllowance, "side"},  {Word::FloorAllowance, "floor"},
+    {Word::Direction, "dir"},    {Word::PlungeFeed, "fplunge"},  {Word::RoughFeed, "feed"},
 };
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a

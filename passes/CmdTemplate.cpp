@@ -230,9 +230,6 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     }
     for (auto &kw : kKeyWords)
       if (kw.op == op.kind && a.key == kw.key) addWord(kw.word, a.value.get());
-    if (op.kind == OpKind::Contour)
-      for (auto &p : kPocketParams)
-        if (a.key == p.key) addWord(p.word, a.value.get());
   }
   return true;
 }
@@ -322,12 +319,8 @@ Op cmdToOp(const MachineCmd &c) {
       Word w = (Word)i;
       if (!c.has(w)) continue;
       if ((op.kind == OpKind::SetOffset || op.kind == OpKind::Contour) && w == Word::P) continue;
-      if (op.kind == OpKind::Contour && w != Word::U && w != Word::W && w != Word::R) continue;  // the pocket's keys, below
       op.set(kWordKeys[i], real(c.get(w)));
     }
-  if (op.kind == OpKind::Contour)
-    for (auto &p : kPocketParams)
-      if (c.has(p.word)) op.set(p.key, real(c.get(p.word)));
   return op;
 }
 

@@ -423,6 +423,9 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
   if (comp.active()) return error("Cannot change the programmable frame with cutter radius comp on", "cutcomp-conflict");
   const AxisVec program = programPosition();
   auto word = [&](int axis, double def) { return c.has((Word)axis) ? c.get((Word)axis) * axisScale(axis) : def; };
+  // U V W shift with G52; rotation, scaling and mirroring act on X Y Z only.
+  if (slot != FrameSlot::Local && (c.has(Word::U) || c.has(Word::V) || c.has(Word::W)))
+    return error("rotation, scaling and mirroring take no U V W words", "frame-invalid");
   switch (slot) {
   case FrameSlot::Local:  // G52: the named axes' shift (G52 X0 Y0 cancels); cancel = all
     if (!frameForbids("G52")) return false;

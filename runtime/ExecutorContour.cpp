@@ -90,6 +90,8 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     route.capture = nullptr;
     capture.active = false;
     // Compensation the contour turns on (808D: not in G71-G73, L3842-3843) ends in it (G70).
+    if (capture.compOn && ((ContourUse)c.sub2 == ContourUse::Outline || (ContourUse)c.sub2 == ContourUse::Island))
+      return error("a region contour must be captured with cutter compensation off", "contour-invalid");
     if (capture.compOn && (ContourUse)c.sub2 != ContourUse::Finish)
       return error("no tool nose radius compensation in the contour of G71-G73", "contour-invalid");
     if (comp.active()) return error("compensation turned on in the contour must be cancelled (G40) in it", "contour-invalid");

@@ -42,7 +42,7 @@ bool Executor::Impl::regionRun(const MachineCmd &c) {
   auto has = [&](PocketParam p) { return c.has(kPocketParams[(int)p].word); };
   auto get = [&](PocketParam p, double def) { return has(p) ? c.get(kPocketParams[(int)p].word) : def; };
   for (PocketParam p : {PocketParam::Depth, PocketParam::Surface, PocketParam::Clearance})
-    if (!has(p)) return error(fmt::format("the pocket needs '{}'", kPocketParams[(int)p].key), "missing-word");
+    if (!has(p)) return error(fmt::format("the pocket needs '{}'", kPocketParams[(int)p].key()), "missing-word");
   if (has(PocketParam::Stepover) == has(PocketParam::Overlap))
     return error("the pocket needs one of 'stepover' (mm) and 'overlap' (x the tool radius)", "missing-word");
   const double direction = get(PocketParam::Direction, 1);

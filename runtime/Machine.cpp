@@ -630,13 +630,9 @@ void readSchema(Ctx &c, const toml::node &n, void *) {
     c.error(n.source(), "schema: this ncc reads machine descriptions of schema 1 (write schema = 1)");
 }
 
-// A lathe (`kind = "lathe"`): turning G codes of systems A and B (C has other codes for the
-// same functions, not tabled yet), X and Z axes; feed per revolution (G99) unless the
-// start-up list names a feed mode, as Fanuc-style lathes start.
+// A lathe (`kind = "lathe"`): turning G codes of systems A, B and C, X and Z axes; feed per
+// revolution unless the start-up list names a feed mode, as Fanuc-style lathes start.
 void latheChecks(Ctx &c, const toml::table &doc, Machine &m) {
-  if (m.controller.gcodeSystem == "C")
-    c.error(doc["controller"]["gcode_system"].node()->source(),
-            "gcode_system: lathe mode implements G-code systems A and B (system C is not supported)");
   if (!m.axes[0].present || !m.axes[2].present) c.error({}, "a lathe (kind = \"lathe\") needs [axes.X] and [axes.Z]");
   auto &st = m.controller.startup;
   if (std::none_of(st.begin(), st.end(), [](ModeValue v) { return modeValueInfo(v).group == ModeGroup::FeedMode; }))

@@ -10,7 +10,8 @@ RunOutputs::RunOutputs(const Machine &machine, const RunOutputOptions &options)
     csvFile_ = std::make_unique<AtomicFile>(opt_.csvPath);
     // An unopenable file is reported at finish(), where diagnostics are at hand.
     if (csvFile_->ok()) {
-      csv_ = std::make_unique<CsvSampler>(csvFile_->stream(), opt_.samplePeriod);
+      csv_ = std::make_unique<CsvSampler>(csvFile_->stream(), opt_.samplePeriod, 20000000,
+                                          machine.axes[6].present || machine.axes[7].present || machine.axes[8].present);
       planner_.addListener(csv_.get());
     }
   }

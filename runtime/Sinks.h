@@ -63,12 +63,13 @@ private:
 // "h:mm:ss.s", rounded to tenths.
 std::string formatDuration(double seconds);
 
-// Samples the planned path every `period` seconds: t,x,y,z,a,b,c,v_path,kind,line.
-// Rows at t = k * period for every k with t <= total time, and a last row at the total time.
+// Samples the planned path every `period` seconds: t,x,y,z,a,b,c,v_path,kind,line (with u,v,w
+// after c for a machine that has one of them). Rows at t = k * period for every k with
+// t <= total time, and a last row at the total time.
 class CsvSampler : public PlanListener {
 public:
   // At most maxRows rows are written (a runaway dwell must not fill the disk).
-  CsvSampler(std::FILE *out, double period, uint64_t maxRows = 20000000);
+  CsvSampler(std::FILE *out, double period, uint64_t maxRows = 20000000, bool uvw = false);
   void segment(const PlannedSegment &s) override;
   void finished(double totalTime) override;
   uint64_t rows() const { return rows_; }
@@ -79,6 +80,7 @@ private:
   std::FILE *out_;
   double period_;
   uint64_t k_ = 0, rows_ = 0, maxRows_;
+  int axes_;  // columns of positions: kBaseAxes, or kAxes with U V W
   bool truncated_ = false;
   double lastT_ = -1;
   AxisVec lastPos_{};

@@ -7,9 +7,10 @@
 
 namespace ncc {
 
-CsvSampler::CsvSampler(std::FILE *out, double period, uint64_t maxRows)
-    : out_(out), period_(std::isfinite(period) && period > 0 ? period : 0.01), maxRows_(maxRows) {
-  std::fputs("t,x,y,z,a,b,c,v_path,kind,line\n", out_);
+CsvSampler::CsvSampler(std::FILE *out, double period, uint64_t maxRows, bool uvw)
+    : out_(out), period_(std::isfinite(period) && period > 0 ? period : 0.01), maxRows_(maxRows),
+      axes_(uvw ? kAxes : kBaseAxes) {
+  std::fputs(uvw ? "t,x,y,z,a,b,c,u,v,w,v_path,kind,line\n" : "t,x,y,z,a,b,c,v_path,kind,line\n", out_);
 }
 
 void CsvSampler::row(double t, const AxisVec &p, double v, const char *kind, uint32_t line) {
@@ -18,8 +19,10 @@ void CsvSampler::row(double t, const AxisVec &p, double v, const char *kind, uin
     return;
   }
   buf_.clear();
-  fmt::format_to(std::back_inserter(buf_), "{:.6f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.3f},{},{}\n", t,
-                 p[0] + 0.0, p[1] + 0.0, p[2] + 0.0, p[3] + 0.0, p[4] + 0.0, p[5] + 0.0, v * 60, kind, line);
+  auto out = std::back_inserter(buf_);
+  fmt::format_to(out, "{:.6f}", t);
+  for (int i = 0; i < axes_; ++i) fmt::format_to(out, ",{:.4f}", p[i] + 0.0);
+  fmt::format_to(out, ",{:.3f},{},{}\n", v * 60, kind, line);
   std::fwrite(buf_.data(), 1, buf_.size(), out_);
   lastT_ = t;
   ++rows_;

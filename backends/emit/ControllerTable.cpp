@@ -314,13 +314,13 @@ bool applyLathe(const Machine &m, ControllerStyle &s, Diagnostics &diags) {
     return false;
   };
   if (m.controller.family == "linuxcnc") return refuse("for LinuxCNC (G7/G8 diameter modes, T with M6)");
-  if (m.controller.gcodeSystem == "C") return refuse("in G-code system C");
   const bool a = m.controller.gcodeSystem == "A";
+  const bool c = m.controller.gcodeSystem == "C";  // B with metric G71 (the other codes it moves are not written)
   s.codes[(size_t)Code::PerMinute] = a ? "G98" : "G94";
   s.codes[(size_t)Code::PerRev] = a ? "G99" : "G95";
   for (Code c : {Code::InverseTime, Code::ExactPath, Code::ExactStop, Code::Continuous, Code::ToolChange})
     s.codes[(size_t)c].clear();
-  s.setup = {"G21", a ? "G18 G98 G54" : "G90 G18 G94 G54"};
+  s.setup = {c ? "G71" : "G21", a ? "G18 G98 G54" : "G90 G18 G94 G54"};
   s.threadCode = a ? "G32" : "G33";
   s.speedLimitCode = a ? "G50" : "G92";
   return true;

@@ -113,8 +113,16 @@ void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r) {
     if (digits == posText_[i]) continue;
     posText_[i] = digits;
     pos_[i] = readBack(i, end[i]);
-    w.push_back(std::string(1, kAxisLetters[i]) + digits);
+    w.push_back(axisWord(i) + digits);
   }
+}
+
+// Sinumerik writes the controller's axis names (a name of more than one letter with '=':
+// Q1=3); ISO addresses are the letters.
+std::string Emitter::axisWord(int axis) const {
+  if (st_.target != Target::Sinumerik) return std::string(1, kAxisLetters[axis]);
+  std::string name = machine_.axisName(axis);
+  return name.size() > 1 ? name + "=" : name;
 }
 
 void Emitter::motionCode(Code c, Words &w) {
@@ -159,7 +167,7 @@ void Emitter::move(const MotionRecord &r) {
     int i = 0;
     while (i < kAxes - 1 && !machine_.axes[i].present) ++i;
     if (!machine_.axes[i].present) i = 0;
-    w.push_back(std::string(1, kAxisLetters[i]) + posText_[i]);
+    w.push_back(axisWord(i) + posText_[i]);
   }
   if (!rapid) {
     double d2 = 0;

@@ -58,6 +58,7 @@ private:
   const NumberFormat &fmt(WordClass c) const { return st_.formats[(size_t)c]; }
   const std::string &code(Code c) const { return st_.codes[(size_t)c]; }
   bool latheIso() const { return st_.lathe && st_.target == Target::ISO; }  // docs/EMIT.md "Lathes"
+  std::string axisWord(int axis) const;
   static WordClass axisClass(int axis) { return isLengthAxis(axis) ? WordClass::Axis : WordClass::Rotary; }
   // Written value of a machine position (a lathe's X as a diameter) and the position the
   // controller reads back from the rounded word.

@@ -143,7 +143,7 @@ const GCodeInfo *findRs274GCode(int32_t code10) {
   return nullptr;
 }
 
-// The turning codes of G-code systems A and B (808D Tables 1-2, 1-4, the T column) whose meaning
+// The turning codes of G-code systems A, B and C (808D Tables 1-2, 1-4, the T column) whose meaning
 // differs from the milling table above: those of both systems, those of one, then the milling
 // codes each system has unchanged. Sorted by code10.
 static const GCodeInfo kTurningBoth[] = {
@@ -197,6 +197,29 @@ static const int32_t kSharedB[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 
                                    560, 570, 580, 590, 600, 650, 660, 670, 800, 900, 910, 920, 921, 940,
                                    950, 960, 970, 980, 990, 2900, 2910};
 
+// System C: system B with the single cycles G20/G21/G24, inch/metric G70/G71 and the multiple
+// repetitive cycles two numbers up (G72-G78 for B's G70-G76; 808D Tables 1-2, 1-4).
+static const GCodeInfo kTurningC[] = {
+    MODE(200, Motion, TurnAlongZ, "longitudinal turning cycle"),
+    MODE(210, Motion, ThreadSingle, "thread cutting cycle"),
+    MODE(240, Motion, TurnAlongX, "face turning cycle"),
+    MODE(330, Motion, Thread, "thread cutting"),
+    MODE(340, Motion, ThreadVariable, "variable-lead thread cutting"),
+    MODE(700, Units, Inch, "inch input"),
+    MODE(710, Units, MM, "metric input"),
+    SPECIAL(720, TurnCycle, NonModal, 70, "finishing cycle"),
+    SPECIAL(730, TurnCycle, NonModal, 71, "stock removal in turning"),
+    SPECIAL(740, TurnCycle, NonModal, 72, "stock removal in facing"),
+    SPECIAL(750, TurnCycle, NonModal, 73, "pattern repeating cycle"),
+    MODE(760, Motion, PeckAlongZ, "peck drilling / grooving along Z"),
+    MODE(770, Motion, PeckAlongX, "peck grooving along X"),
+    MODE(780, Motion, ThreadMulti, "multiple threading cycle"),
+};
+static const int32_t kSharedC[] = {0,   10,  20,  30,  40,  50,  51,  71,  100, 121, 131, 170, 180, 190,
+                                   270, 280, 300, 301, 310, 400, 520, 530, 540, 550, 560, 570, 580, 590,
+                                   600, 650, 660, 670, 800, 900, 910, 920, 921, 940, 950, 960, 970, 980,
+                                   990, 2900, 2910};
+
 const GCodeInfo *findTurningGCode(int32_t code10, char system) {
   auto own = [&](const auto &table) -> const GCodeInfo * {
     for (auto &g : table)
@@ -208,6 +231,13 @@ const GCodeInfo *findTurningGCode(int32_t code10, char system) {
       if (c == code10) return findGCode(code10);
     return nullptr;
   };
+  if (system == 'C') {
+    if (const GCodeInfo *g = own(kTurningC)) return g;
+    // The codes all systems share, except those C moved (G70-G76 are other codes there).
+    if (code10 < 700 || code10 > 760)
+      if (const GCodeInfo *g = own(kTurningBoth)) return g;
+    return shared(kSharedC);
+  }
   const bool b = system == 'B';
   if (const GCodeInfo *g = b ? own(kTurningB) : own(kTurningA)) return g;
   if (const GCodeInfo *g = own(kTurningBoth)) return g;

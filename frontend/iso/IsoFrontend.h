@@ -35,7 +35,7 @@ struct IsoOptions {
   std::vector<ModeValue> startup;       // start-up modes: units, feed mode, motion as the block words' context
   OffsetMemory offsetMemory = OffsetMemory::None;
   bool lathe = false;                   // machine [controller] kind = "lathe": turning codes, T0101, U/W
-  char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental) or 'B'
+  char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental), 'B' or 'C'
   std::vector<std::string> linkedFunctions;  // defined by linked files: calls to them are not searched
 };
 
