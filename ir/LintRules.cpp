@@ -9,7 +9,7 @@ static const LintRule kRules[] = {
     {"unknown-code", Severity::Error, "front end",
      "unknown G or M code, or a letter that is no address"},
     {"unsupported-code", Severity::Error, "front end / executor",
-     "a known code ncc does not execute yet (LinuxCNC G66, turning cycles, combinations of G68 with G51/G51.1, arcs under unequal scaling, cycles under scaling or mirroring, splines under a rotation, scaling or mirror or in inverse time, M19, LinuxCNC M61-M68, U V W axis words, arcs and cycles outside G17 under a G10 L2 R rotation, …)"},
+     "a known code ncc does not execute yet (LinuxCNC G66, turning cycles, combinations of G68 with G51/G51.1, arcs under unequal scaling, cycles under scaling or mirroring, splines under a rotation, scaling or mirror or in inverse time, M19, LinuxCNC M66 L1-L4, G43.1/G43.2 offsets on axes other than X and Z, U V W axis words, arcs and cycles outside G17 under a G10 L2 R rotation, …)"},
     {"read-only-parameter", Severity::Error, "front end",
      "an assignment to a controller-state parameter programs may only read (`#5420=1`: a position; writable are work offsets, G92 values and reference points)"},
     {"duplicate-word", Severity::Error, "front end",

@@ -62,7 +62,7 @@ enum class CmdKind : uint8_t {
   Home,         // sub: reference 1 (G28) or 2 (G30); intermediate point in mask words; sub2: bits
                 //   of its incremental words (a lathe's G28 U W)
   MachineMove,  // sub: 0 rapid, 1 feed; G53 target in mask words
-  ToolLength,   // w[H] offset number, 0 cancels
+  ToolLength,   // w[H] offset number, 0 cancels; sub: ToolLengthForm (G43.1/G43.2 axis words in the mask)
   CutterComp,   // sub: 0 off, 1 left, 2 right; w[D] when in mask
   WorkOffset,   // sub: 1..9 (G54..G59.3)
   SetOffset,    // sub: SetOffsetKind; index in w[P]; values in mask words
@@ -96,6 +96,9 @@ enum class SetOffsetKind : uint8_t {
 // R absolute or incremental by G90/G91, an omitted centre word = the current position); form=axis
 // the 3-D G68 (about the vector I J K, R absolute, an omitted centre word = 0).
 enum class FrameSlot : uint8_t { Local, Rotation, Scale, Mirror, Count };
+// tool_length form=: the tool table's length (G43 H), LinuxCNC G43.1 (each given axis's offset
+// set to its word), G43.2 (H's length or the axis values added to the active offsets).
+enum class ToolLengthForm : uint8_t { Table, Dynamic, Add };
 enum class FrameAction : uint8_t { Cancel, Set };
 constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
 

@@ -17,7 +17,8 @@ const char *recordKindName(RecordKind k) {
                                 "plane",        "comment",       "message",      "optional_stop",
                                 "program_stop", "program_end",   "aux",          "cycle_begin",
                                 "cycle_end",    "frame_change",  "spline",       "spindle_orient",
-                                "spindle_mode", "thread"};
+                                "spindle_mode", "thread",        "tool_number",
+                                "digital_out",  "analog_out"};
   static_assert(sizeof(names) / sizeof(names[0]) == (size_t)RecordKind::Count);
   return names[(unsigned)k];
 }
@@ -275,6 +276,8 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
     fmt::format_to(out, " {} {} {}", r.value, r.ivalue, r.value2);
     break;
   case RecordKind::SpindleMode:
+  case RecordKind::DigitalOutput:
+  case RecordKind::AnalogOutput:
     fmt::format_to(out, " {} {} {}", r.ivalue, r.value, r.value2);
     break;
   case RecordKind::CycleBegin:

@@ -80,6 +80,10 @@ enum class RecordKind : uint8_t {
                  // `value` the lead (mm per spindle revolution) measured along `ivalue`
                  // (ThreadAxis), `value2` the start angle (degrees after the spindle's index),
                  // `sync` (ThreadSync), `feed` the path feed it gives at the programmed speed
+  ToolNumber,    // LinuxCNC M61: `ivalue` the tool now declared in the spindle (no change, no motion)
+  DigitalOutput, // LinuxCNC M62-M65: `ivalue` the output, `value` 1 on / 0 off, `value2` 1 synchronized
+                 // with the next move (M62/M63), 0 at once (M64/M65)
+  AnalogOutput,  // LinuxCNC M67/M68: `ivalue` the output, `value` its value, `value2` as DigitalOutput
   Count
 };
 

@@ -369,6 +369,20 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
     if (!p.number(r.value2)) return false;
     break;
   }
+  case RecordKind::DigitalOutput:
+  case RecordKind::AnalogOutput: {
+    p.skipBlanks();
+    size_t b = p.pos();
+    if (!p.integer(r.ivalue)) return false;
+    if (r.ivalue < 0) return p.error(b, "an output number must not be negative");
+    p.skipBlanks();
+    if (!p.number(r.value)) return false;
+    p.skipBlanks();
+    b = p.pos();
+    if (!p.number(r.value2)) return false;
+    if (r.value2 != 0 && r.value2 != 1) return p.error(b, "1 (synchronized with motion) or 0 (at once)");
+    break;
+  }
   case RecordKind::CycleBegin:
   case RecordKind::FrameChange:
     p.skipBlanks();

@@ -39,7 +39,8 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},
     {OpKind::Spindle, "angle", Word::R},
     {OpKind::Spindle, "wait", Word::Q},      {OpKind::Speed, "limit", Word::D},
-    {OpKind::Contour, "type", Word::P},
+    {OpKind::Contour, "type", Word::P},     {OpKind::ToolChange, "number", Word::Q},
+    {OpKind::Aux, "index", Word::E},        {OpKind::Aux, "value", Word::Q},
 };
 
 static CmdKind cmdKindOf(OpKind k) {
@@ -168,6 +169,9 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     if (!symbolArg("mode", c.sub) || !symbolArg("after_css", c.sub2)) return false;
     break;
   case OpKind::Stop: return symbolArg("kind", c.sub);
+  case OpKind::ToolLength:  // G43.1/G43.2 axis values: the words' own keys, below
+    if (!symbolArg("form", c.sub)) return false;
+    break;
   case OpKind::SetOffset:
     if (!symbolArg("kind", c.sub)) return false;
     break;
@@ -209,6 +213,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     c.sub = 'M';
     for (const char *key : {"b", "h"})
       if (op.get(key)) c.sub = (uint8_t)(key[0] - 'a' + 'A');
+    if (!symbolArg("input", c.sub2)) return false;  // LinuxCNC M66: 0 digital (P), 1 analog (E)
     break;
   case OpKind::Move:
     // ic=XZ / ac=Y: the axis words that are incremental / absolute whatever the mode is.
@@ -226,7 +231,8 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   // Scalar words: named keys per kKeyWords, the words' own keys (kWordKeys) for motion ops.
   bool letters = op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||
-                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour;
+                 op.kind == OpKind::SetOffset || op.kind == OpKind::Frame || op.kind == OpKind::Contour ||
+                 op.kind == OpKind::ToolLength;
   for (auto &a : op.args) {
     Word w;
     if (letters && wordFromKey(a.key, w)) {
@@ -312,9 +318,10 @@ Op cmdToOp(const MachineCmd &c) {
   }
   for (auto &kw : kKeyWords)
     if (kw.op == op.kind && c.has(kw.word) &&
-        (op.kind != OpKind::Aux || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
+        (op.kind != OpKind::Aux || kw.word != Word::P || kw.key[0] == (c.sub ? c.sub : 'M') - 'A' + 'a')) {
       bool isInt = kw.word == Word::T || kw.word == Word::H || (kw.word == Word::D && op.kind != OpKind::Speed) ||
-                   (op.kind == OpKind::SetOffset) || op.kind == OpKind::Aux || op.kind == OpKind::Contour;
+                   (op.kind == OpKind::SetOffset) || (op.kind == OpKind::Aux && kw.word != Word::Q) ||
+                   op.kind == OpKind::Contour;
       op.set(kw.key, isInt ? Expr::number(c.get(kw.word), Type::Int) : real(c.get(kw.word)));
     }
   if (op.kind == OpKind::Move || op.kind == OpKind::Home || op.kind == OpKind::MachineMove ||

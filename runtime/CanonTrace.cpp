@@ -1,6 +1,7 @@
 #include "runtime/CanonTrace.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include <algorithm>
 #include <charconv>
@@ -246,6 +247,21 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     line(n, "STOP_SPINDLE_TURNING(0)");
     line(n, "CHANGE_TOOL(" + std::to_string(r.ivalue) + ")");
     break;
+  case RecordKind::ToolNumber:  // rs274 prints the tool table index; ncc the number (as CHANGE_TOOL)
+    line(n, "CHANGE_TOOL_NUMBER(" + std::to_string(r.ivalue) + ")");
+    break;
+  case RecordKind::DigitalOutput: {  // M62-M65
+    static const char *kNames[2][2] = {{"CLEAR_AUX_OUTPUT_BIT(", "SET_AUX_OUTPUT_BIT("},
+                                       {"CLEAR_MOTION_OUTPUT_BIT(", "SET_MOTION_OUTPUT_BIT("}};
+    line(n, kNames[r.value2 != 0][r.value != 0] + std::to_string(r.ivalue) + ")");
+    break;
+  }
+  case RecordKind::AnalogOutput: {  // M67/M68: rs274 prints "%d,%f"
+    char v[64];
+    std::snprintf(v, sizeof v, "%lld,%f)", (long long)r.ivalue, r.value);
+    line(n, std::string(r.value2 != 0 ? "SET_MOTION_OUTPUT_VALUE(" : "SET_AUX_OUTPUT_VALUE(") + v);
+    break;
+  }
   case RecordKind::ToolLength:
     // Already applied to the machine positions: printing it would apply it twice.
     break;

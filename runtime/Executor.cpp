@@ -224,6 +224,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
 }
 
 bool Executor::Impl::execToolLength(const MachineCmd &c) {
+  if ((ToolLengthForm)c.sub != ToolLengthForm::Table) return offsetToolLength(c, (ToolLengthForm)c.sub);
   // Without H (rs274 G43): the tool in the spindle.
   double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
   ToolData t;
@@ -628,6 +629,7 @@ bool Executor::exec(const MachineCmd &c) {
     return true;
   }
   case CmdKind::ToolChange: {
+    if (c.has(Word::Q)) return x.setToolNumber(c.get(Word::Q));
     x.st.toolInSpindle = x.st.toolSelected;
     x.st.spindle = 0;  // the change stops the spindle
     MotionRecord r = x.record(RecordKind::ToolChange);
@@ -715,6 +717,7 @@ bool Executor::exec(const MachineCmd &c) {
     double p = c.get(Word::P);
     if (std::fabs(p) > 1e15) return x.error("aux code out of range", "bad-number");
     if (p != std::trunc(p)) return x.error("aux code must be an integer", "bad-number");
+    if (c.has(Word::E)) return x.ioCode((int)p, c);  // LinuxCNC M62-M68: a channel
     r.ivalue = (int64_t)p;
     r.text = std::string(1, c.sub ? (char)c.sub : 'M');
     x.emit(r);
@@ -722,6 +725,22 @@ bool Executor::exec(const MachineCmd &c) {
   }
   default: return x.error("unknown machine command", "bad-command");
   }
+}
+
+// LinuxCNC M62-M65 (digital) and M67/M68 (analog outputs): records the canonical trace prints as
+// rs274 does; M66 L0 reads an input at once, which changes nothing ncc models (its result #5399
+// is not provided). rs274 rounds the channel number.
+bool Executor::Impl::ioCode(int code, const MachineCmd &c) {
+  double channel = std::floor(c.get(Word::E) + 0.5);
+  if (!(channel >= 0 && channel < 1e9))
+    return error(fmt::format("M{} needs a non-negative {} number", code, code == 66 ? "input" : "output"), "bad-number");
+  if (code == 66) return true;
+  MotionRecord r = record(code <= 65 ? RecordKind::DigitalOutput : RecordKind::AnalogOutput);
+  r.ivalue = (int64_t)channel;
+  r.value = code <= 65 ? (code % 2 == 0 ? 1.0 : 0.0) : c.get(Word::Q);
+  r.value2 = code == 62 || code == 63 || code == 67 ? 1 : 0;  // synchronized with the next move
+  emit(r);
+  return true;
 }
 
 bool Executor::saveModal() {

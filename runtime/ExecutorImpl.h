@@ -237,6 +237,9 @@ struct Executor::Impl {
 
   bool execMode(const MachineCmd &c);
   bool execToolLength(const MachineCmd &c);
+  bool offsetToolLength(const MachineCmd &c, ToolLengthForm form);  // LinuxCNC G43.1 / G43.2
+  bool setToolNumber(double q);                                     // LinuxCNC M61 Q
+  bool ioCode(int code, const MachineCmd &c);                       // LinuxCNC M62-M68
   bool execSetOffset(const MachineCmd &c);
   bool execStop(const MachineCmd &c);
   bool execCutterComp(const MachineCmd &c);

@@ -132,6 +132,54 @@ bool Executor::Impl::toolDataRef(const SysRef &r, int &t, int &d, std::string &e
   return err.empty();
 }
 
+// LinuxCNC G43.1 (each given axis's offset becomes its word) and G43.2 (tool H's offsets, H0 the
+// tool in the spindle, or the axis words added to the active ones). ncc keeps tool offsets on Z
+// (the tool axis) and X (a lathe tool's): an offset on another axis is refused, not dropped. The
+// offsets are no table entry's (H 0): a later table write does not replace them.
+bool Executor::Impl::offsetToolLength(const MachineCmd &c, ToolLengthForm form) {
+  const bool add = form == ToolLengthForm::Add;
+  const char *code = add ? "G43.2" : "G43.1";
+  double z = toolLength, x = toolOffsetX;
+  if (c.has(Word::H)) {
+    double h = c.get(Word::H);
+    ToolData t;
+    if (!offsetData(h == 0 ? st.toolInSpindle : h, "H", t)) return false;
+    z += t.length;
+    if (machine.controller.lathe()) x += t.xOffset;
+  }
+  for (int i = 0; i < kAxes; ++i) {
+    if (!c.has((Word)i)) continue;
+    double v = c.get((Word)i) * axisScale(i);
+    double &slot = i == 2 ? z : x;
+    if (i == 0 || i == 2) slot = add ? slot + v : v;
+    else if (v != 0)
+      return error(fmt::format("{} with an offset on the {} axis is not supported (ncc keeps tool offsets on X and Z)", code,
+                               kAxisLetters[i]),
+                   "unsupported-code");
+  }
+  toolLength = z, toolOffsetX = x;
+  st.toolLengthH = 0;
+  MotionRecord r = record(RecordKind::ToolLength);
+  r.value = toolLength;
+  r.value2 = toolOffsetX;
+  r.ivalue = 0;
+  emit(r);
+  return true;
+}
+
+// LinuxCNC M61 Q<tool>: the tool in the spindle is declared without a change (nothing moves, the
+// spindle keeps turning); G43 without H then uses its length. rs274 rounds Q to an integer.
+bool Executor::Impl::setToolNumber(double q) {
+  if (q < 0) return error("Need non-negative Q-word to specify tool number with M61", "bad-number");
+  double n = std::floor(q + 0.5);
+  if (n != 0 && !toolExists(n)) return error(unknownTool((long long)n), "unknown-tool");
+  st.toolInSpindle = (int)n;
+  MotionRecord r = record(RecordKind::ToolNumber);
+  r.ivalue = st.toolInSpindle;
+  emit(r);
+  return true;
+}
+
 // The 808D turning form (SetOffsetKind::LatheTool): P1-P99 the wear, P101-P1600 the geometry of
 // offset P (- 100) (MD20734 bit 1 = 0; the manual's OCR does not say which range is which, this
 // is the Fanuc order); X (a diameter when X is) and Z the X and Z offsets, R the nose radius; U W

@@ -417,6 +417,7 @@ void Emitter::record(const MotionRecord &r) {
     flushPending();
     break;
   case RecordKind::ToolLength:
+  case RecordKind::ToolNumber:  // LinuxCNC M61: no motion; its tool's length is in the positions
     break;  // positions already include the offset: the program runs with length comp off
   case RecordKind::SpindleSpeed: {
     std::string w;
@@ -435,6 +436,13 @@ void Emitter::record(const MotionRecord &r) {
   case RecordKind::FeedRate:
     programmedFeed_ = r.value;
     haveProgrammedFeed_ = true;
+    break;
+  case RecordKind::DigitalOutput:
+  case RecordKind::AnalogOutput:  // no emitter writes LinuxCNC's I/O codes yet: refused, not dropped
+    diags_.error(r.loc, "the [" + st_.section + "] emitter has no code for LinuxCNC's digital/analog outputs: " +
+                            printMotionRecord(r),
+                 "unsupported-code");
+    errors_ = true;
     break;
   case RecordKind::FeedMode: {
     static const Code codes[] = {Code::PerMinute, Code::PerRev, Code::InverseTime};

@@ -15,7 +15,7 @@ enum class GKind : uint8_t {
   Home,          // G28 (ref 1) / G30 (ref 2, or P)
   MachineCoord,  // G53
   CutterComp,    // G40 / G41 / G42 (arg: 0 off, 1 left, 2 right)
-  ToolLength,    // G43 (arg 1) / G49 (arg 0)
+  ToolLength,    // G43 (arg 1) / G49 (arg 0); LinuxCNC G43.1 (arg 2, axis words) / G43.2 (arg 3, H or axis words)
   WorkOffset,    // G54..G59.3 (arg: index)
   MacroCall,     // G65
   ModalMacro,    // G66 (arg 0: set a modal macro call, after each move) / G67 (arg 1: cancel)
@@ -56,8 +56,9 @@ const GCodeInfo *findRs274GCode(int32_t code10);
 const char *cycleParamWords(ModeValue cycle, bool rs274);
 
 // M codes with a built-in meaning; every other integer M is an `aux`.
-enum class MKind : uint8_t { Stop, ToolChange, Spindle, Coolant, Call, Return, Aux, Unsupported };
-enum class MGroup : uint8_t { None, Stop, ToolChange, Spindle, Coolant, Sub };
+// ToolNumber: LinuxCNC M61 Q; Io: LinuxCNC M62-M68 (digital and analog outputs, M66 input).
+enum class MKind : uint8_t { Stop, ToolChange, ToolNumber, Spindle, Coolant, Call, Return, Aux, Io, Unsupported };
+enum class MGroup : uint8_t { None, Stop, ToolChange, Spindle, Coolant, Sub, Io };
 
 struct MCodeInfo {
   int32_t code;

@@ -132,6 +132,8 @@ static const GCodeInfo kRs274GCodes[] = {
     MODE(53, Motion, NurbsEnd, "NURBS end"),
     MODE(330, Motion, Thread, "spindle-synchronised motion"),
     MODE(331, Motion, RigidTap, "rigid tapping"),
+    SPECIAL(431, ToolLength, ToolLength, 2, "dynamic tool length offset"),
+    SPECIAL(432, ToolLength, ToolLength, 3, "additional tool length offset"),
     MODE(760, Motion, ThreadCycle, "threading cycle"),
 };
 
@@ -287,16 +289,15 @@ static const MCodeInfo kMCodes[] = {
     {30, MKind::Stop, MGroup::Stop, (int)StopKind::EndRewind},
     {98, MKind::Call, MGroup::Sub, 0},
     {99, MKind::Return, MGroup::Sub, 0},
-    // Codes that move the machine or change what it does, not modelled yet: an error, never
-    // an aux code whose words are quietly dropped.
-    {61, MKind::Unsupported, MGroup::None, 0, "set the current tool number", true},
-    {62, MKind::Unsupported, MGroup::None, 0, "digital output on, synchronized with motion", true},
-    {63, MKind::Unsupported, MGroup::None, 0, "digital output off, synchronized with motion", true},
-    {64, MKind::Unsupported, MGroup::None, 0, "digital output on, immediate", true},
-    {65, MKind::Unsupported, MGroup::None, 0, "digital output off, immediate", true},
-    {66, MKind::Unsupported, MGroup::None, 0, "wait on an input", true},
-    {67, MKind::Unsupported, MGroup::None, 0, "analog output, synchronized with motion", true},
-    {68, MKind::Unsupported, MGroup::None, 0, "analog output, immediate", true},
+    // LinuxCNC's I/O codes (their words: BlockLowerer::Block::ioCode).
+    {61, MKind::ToolNumber, MGroup::ToolChange, 0, "set the current tool number", true},  // Q
+    {62, MKind::Io, MGroup::Io, 0, "digital output on, synchronized with motion", true},
+    {63, MKind::Io, MGroup::Io, 0, "digital output off, synchronized with motion", true},
+    {64, MKind::Io, MGroup::Io, 0, "digital output on, immediate", true},
+    {65, MKind::Io, MGroup::Io, 0, "digital output off, immediate", true},
+    {66, MKind::Io, MGroup::Io, 0, "wait on an input", true},
+    {67, MKind::Io, MGroup::Io, 0, "analog output, synchronized with motion", true},
+    {68, MKind::Io, MGroup::Io, 0, "analog output, immediate", true},
 };
 
 MCodeInfo findMCode(int32_t code, bool rs274) {

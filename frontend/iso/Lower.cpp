@@ -306,8 +306,16 @@ bool BlockLowerer::Block::setup() {
       emit(OpKind::ToolSelect, bw.get('T')->loc).set("value", take('T', Scale::None));
     }
   }
+  if (auto *m = findM(MKind::Io); m && !ioCode(*m)) return false;  // rs274: after T, before M6
   if (auto *m = findM(MKind::ToolChange)) {
     emit(OpKind::ToolChange, m->word->loc);
+  }
+  if (auto *m = findM(MKind::ToolNumber)) {  // LinuxCNC M61 Q<tool>: declares the tool in the spindle
+    if (!bw.has('Q')) {
+      L.diags_.error(m->word->loc, "Need non-negative Q-word to specify tool number with M61", "missing-word");
+      return false;
+    }
+    emit(OpKind::ToolChange, m->word->loc).set("number", take('Q', Scale::None));
   }
   if (auto *m = findM(MKind::Spindle)) {
     static const char *dirs[] = {"stop", "cw", "ccw", "orient"};
@@ -372,15 +380,21 @@ bool BlockLowerer::Block::setup() {
   }
   if (auto *gi = G(GGroup::ToolLength)) {
     SourceLoc loc = gloc(GGroup::ToolLength);
+    if (gi->arg >= 2 && !offsetToolLength(gi->arg == 3, loc)) return false;
     ExprPtr h;
-    if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
+    if (gi->arg >= 2) {
+    } else if (gi->arg == 0) h = Expr::number(0, ir::Type::Int, loc);
+    else if (bw.has('H') && L.flavour_ == Flavour::RS274 && !bw.get('H')->expr && bw.get('H')->value == 0)
+      bw.used |= Words::bit('H');  // rs274 G43 H0: the tool in the spindle, as G43 alone
     else if (bw.has('H')) h = take('H', Scale::None);
     if (!h && L.flavour_ != Flavour::RS274) {
       L.diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
       return false;
     }
-    Op &op = emit(OpKind::ToolLength, loc);
-    if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
+    if (gi->arg < 2) {
+      Op &op = emit(OpKind::ToolLength, loc);
+      if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
+    }
   }
   if (auto *gi = G(GGroup::WorkOffset))
     emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
@@ -395,6 +409,29 @@ bool BlockLowerer::Block::setup() {
   modeOp(GGroup::Distance, "distance");
   modeOp(GGroup::ArcDistance, "arc_distance");
   modeOp(GGroup::Retract, "retract");
+  return true;
+}
+
+// LinuxCNC G43.1 <axes>: each named axis's offset becomes its word, the others keep theirs;
+// G43.2 H<n> (H0: the tool in the spindle) or <axes> adds tool n's length or the values to the
+// active offsets. The axis words move the machine too when the block has a motion code
+// (rs274: `G43.1 Z1 G0 X5` offsets X by 5 and moves to X5).
+bool BlockLowerer::Block::offsetToolLength(bool add, SourceLoc loc) {
+  const bool axes = bw.hasAny("XYZABCUVW");
+  if (add && axes == bw.has('H')) {
+    L.diags_.error(loc, axes ? "G43.2: Can not have both H and axis words" : "G43.2: No axes specified and H word missing",
+                   axes ? "bad-command" : "missing-word");
+    return false;
+  }
+  Op &op = emit(OpKind::ToolLength, loc);
+  op.set("form", Expr::symbol(add ? "add" : "dynamic", loc));
+  if (add && bw.has('H')) op.set("h", take('H', Scale::None));
+  for (const char *a = "XYZABCUVW"; *a; ++a)
+    if (bw.has(*a)) op.set(std::string(1, *a), literal(*bw.get(*a), factor(scaleOf(*a))));
+  if (!G(GGroup::Motion)) {
+    bw.used |= Words::bits("XYZABCUVW") & bw.present;
+    offsetTookAxes = true;
+  }
   return true;
 }
 
@@ -577,6 +614,44 @@ bool BlockLowerer::Block::stops() {
   for (int i = 0; i < nm; ++i)
     if (ms[i].info.kind == MKind::Aux)
       emit(OpKind::Aux, ms[i].word->loc).set("m", Expr::number(ms[i].info.code, ir::Type::Int, ms[i].word->loc));
+  return true;
+}
+
+// LinuxCNC M62/M63 (M64/M65) P<output>: a digital output on/off synchronized with the next move
+// (immediately); M67 (M68) E<output> Q<value>: an analog output; M66 P<digital>|E<analog input>
+// L0: reads an input at once (its result #5399 is not provided). All are `aux m=` with the
+// channel `index` (and `value`, `input`). M66 L1-L4 wait for an input edge or level, which a
+// simulation cannot know: an error, not a wait of unknown length.
+bool BlockLowerer::Block::ioCode(const MUse &m) {
+  const int code = m.info.code;
+  const SourceLoc loc = m.word->loc;
+  auto fail = [&](const std::string &msg, const char *rule) {
+    L.diags_.error(loc, msg, rule);
+    return false;
+  };
+  Op &op = emit(OpKind::Aux, loc);
+  op.set("m", Expr::number(code, ir::Type::Int, loc));
+  if (code <= 65) {
+    if (!bw.has('P')) return fail(fmt::format("No valid P word with M{}", code), "missing-word");
+    op.set("index", take('P', Scale::None));
+  } else if (code == 66) {
+    if (bw.has('P') == bw.has('E')) return fail("Need to have either a valid P or a valid E word with M66", "missing-word");
+    if (IsoWord *l = bw.get('L')) {
+      if (l->expr || l->value != 0)
+        return fail("M66 L1-L4 (wait for an input) is not supported: a simulation cannot know when the input changes; "
+                    "L0 reads it at once",
+                    "unsupported-code");
+      bw.used |= Words::bit('L');
+    }
+    bw.used |= Words::bit('Q') & bw.present;  // the timeout, unused by L0
+    op.set("input", Expr::symbol(bw.has('P') ? "digital" : "analog", loc));
+    op.set("index", take(bw.has('P') ? 'P' : 'E', Scale::None));
+  } else {
+    if (!bw.has('E')) return fail(fmt::format("Invalid analog index with M{}", code), "missing-word");
+    if (!bw.has('Q')) return fail(fmt::format("M{} needs Q (the output value)", code), "missing-word");
+    op.set("index", take('E', Scale::None));
+    op.set("value", take('Q', Scale::None));
+  }
   return true;
 }
 

@@ -73,6 +73,7 @@ struct BlockLowerer::Block {
   bool macroCall = false;  // G65, G66: every other address is an argument (M too)
   bool axesTaken = false;  // a non-modal code took the axis words
   bool dwellTookAxis = false;  // Fanuc G4 X<seconds>
+  bool offsetTookAxes = false;  // LinuxCNC G43.1/G43.2 axis words in a block without a motion code
   ModeValue motionBefore = ModeValue::Rapid;  // the motion mode a G5/G5.1 block gives back
   const GCodeInfo *nonModal = nullptr;
 
@@ -123,6 +124,7 @@ struct BlockLowerer::Block {
   static void add(Op &op, const char *key, ExprPtr v) { op.args.push_back({key, std::move(v)}); }
   bool toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc);
   bool orientWords(Op &op, SourceLoc loc);
+  bool offsetToolLength(bool add, SourceLoc loc);
   void axisWords(Op &op, const char *axes) {
     for (const char *a = axes; *a; ++a)
       if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));
@@ -182,6 +184,7 @@ struct BlockLowerer::Block {
   bool threadWords(Op &op, ModeValue m);  // the words of G32/G33/G33.1/G76/G92/G78
   void peckWords(Op &op);                  // P Q R of the lathe's G74/G75 (LowerTurning.cpp)
   bool stops();
+  bool ioCode(const MUse &m);       // LinuxCNC M62-M68
   bool callsAndReturn();
   bool finish();         // assignments, unused words
 };

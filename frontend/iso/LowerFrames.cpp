@@ -96,7 +96,7 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
 bool BlockLowerer::Block::coordinateOps() {
   // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
   // unless Fanuc's G4 X took X as the time.
-  axesTaken = macroCall || dwellTookAxis;
+  axesTaken = macroCall || dwellTookAxis || offsetTookAxes;
   if (nonModal && nonModal->kind == GKind::SetOffset) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::SetOffset, loc);

@@ -31,6 +31,8 @@ ExprPtr valueFor(OpKind op, const std::string &key) {
       {"mode", "css"},      {"after_css", "error"},
   };
   if (key == "text") return Expr::string("x");
+  if (op == OpKind::ToolLength && key == "form") return Expr::symbol("dynamic");
+  if (key == "input") return Expr::symbol("analog");
   if (op == OpKind::Contour && key == "action") return Expr::symbol("end");
   if (key == "use") return Expr::symbol("pattern");
   if (key == "rapid") return Expr::boolean(false);
