@@ -28,7 +28,18 @@ struct ExprFreeList {
   void *head = nullptr;
   size_t count = 0;
 };
+// Under AddressSanitizer the pool is off, so a use after free of an expression stays visible.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr size_t kExprPoolMax = 0;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr size_t kExprPoolMax = 0;
+#else
 constexpr size_t kExprPoolMax = 16384;
+#endif
+#else
+constexpr size_t kExprPoolMax = 16384;
+#endif
 thread_local ExprFreeList tExprFree;
 }  // namespace
 
