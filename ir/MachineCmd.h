@@ -27,13 +27,13 @@ enum class Word : uint8_t {
 };
 constexpr int kWords = (int)Word::Count;
 static_assert(kWords <= 64, "MachineCmd::mask has 64 bits");
-// The character messages use for a word (named words: a stand-in).
-constexpr char kWordLetters[kWords + 1] = "XYZABCUVWIJKRPQLFSTHDE@^crxyz###########";
 constexpr const char *kWordKeys[kWords] = {
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R", "P", "Q", "L", "F", "S", "T", "H", "D", "E",
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
     "plunge_feed", "feed"};
+// A word's address letter (the key's one character), 0 for a named word.
+constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;
 constexpr WordMask wordBit(Word w) { return WordMask(1) << (unsigned)w; }
 // The words a move may make absolute or incremental on their own (MachineCmd sub/sub2, 16

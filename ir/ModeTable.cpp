@@ -83,13 +83,13 @@ bool modeValueFromName(std::string_view s, ModeValue &out) {
   return false;
 }
 
-// Letter -> word slot, built once from kWordLetters (on the hot path of every move).
+// Letter -> word slot, built once from the words' letters (on the hot path of every move).
 static const struct LetterTable {
   int8_t slot[26];
   LetterTable() {
     for (auto &s : slot) s = -1;
     for (int i = 0; i < kWords; ++i)
-      if (kWordLetters[i] >= 'A' && kWordLetters[i] <= 'Z') slot[kWordLetters[i] - 'A'] = (int8_t)i;
+      if (char l = wordLetter((Word)i); l >= 'A' && l <= 'Z') slot[l - 'A'] = (int8_t)i;
   }
 } kLetters;
 

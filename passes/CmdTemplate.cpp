@@ -304,7 +304,7 @@ Op cmdToOp(const MachineCmd &c) {
       uint16_t bits = k == 0 ? c.sub : c.sub2;
       std::string axes;
       for (int i = 0; i < kWords; ++i)
-        if (bits & wordBit((Word)i) & kPerWordDistance) axes += kWordLetters[i];
+        if (bits & wordBit((Word)i) & kPerWordDistance) axes += wordLetter((Word)i);
       if (!axes.empty()) op.set(k == 0 || c.kind == CmdKind::Home ? "ic" : "ac", Expr::symbol(axes));
     }
     if (c.kind == CmdKind::Home) op.set("ref", Expr::number(c.sub, Type::Int));

@@ -147,7 +147,7 @@ bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
   // Without a described axis set (machines built in code) X Y Z A B C are taken as present.
   for (int i = 0; i < kAxes; ++i)
     if (c.has((Word)i) && (axesDescribed || i >= kBaseAxes) && !machine.axes[i].present)
-      return error(std::string(1, kWordLetters[i]) + " word used, but the machine has no " + kWordLetters[i] +
+      return error(std::string(kWordKeys[i]) + " word used, but the machine has no " + kWordKeys[i] +
                        " axis",
                    "unknown-axis");
   return true;
@@ -451,8 +451,8 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
       for (int i = 0; i < 3; ++i) centre[i] = word(i, 0);
     } else {  // 2-D: about the plane's normal through the plane-axis words (omitted: here)
       if (c.has((Word)ax.n))
-        return error(std::string("G68 in the ") + kWordLetters[ax.u] + kWordLetters[ax.v] + " plane takes no " +
-                         kWordLetters[ax.n] + " word (a 3-D rotation needs I J K)",
+        return error(std::string("G68 in the ") + kWordKeys[ax.u] + kWordKeys[ax.v] + " plane takes no " +
+                         kWordKeys[ax.n] + " word (a 3-D rotation needs I J K)",
                      "frame-invalid");
       axis[ax.n] = 1;
       centre = {program[0], program[1], program[2]};
@@ -563,10 +563,10 @@ bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
   // Never let NaN or infinity reach positions: a diagnostic instead.
-  for (uint32_t m = c.mask; m; m &= m - 1) {  // only the words present
-    int i = __builtin_ctz(m);
+  for (WordMask m = c.mask; m; m &= m - 1) {  // only the words present (all 64 bits)
+    int i = __builtin_ctzll(m);
     if (i < kWords && !std::isfinite(c.w[i]))
-      return x.error(std::string("invalid number in ") + kWordLetters[i] + " word", "bad-number");
+      return x.error(std::string("invalid number in ") + kWordKeys[i] + " word", "bad-number");
   }
   bool motion = c.kind == CmdKind::Move || c.kind == CmdKind::Home || c.kind == CmdKind::MachineMove;
   // (The lathe's G10 P X Z R U W C words are tool offsets, not axes.)
@@ -575,7 +575,7 @@ bool Executor::exec(const MachineCmd &c) {
   if (c.has(Word::PolarR) || c.has(Word::PolarA)) {
     for (Word w : {Word::X, Word::Y})  // rs274's messages
       if (c.has(w))
-        return x.error(std::string("Cannot specify both polar coordinate and ") + kWordLetters[(int)w] + " word",
+        return x.error(std::string("Cannot specify both polar coordinate and ") + kWordKeys[(int)w] + " word",
                        "polar-with-xy");
   }
   if (motion && x.st.ended && !x.warnedAfterEnd) {

@@ -27,10 +27,10 @@ void cycleParams(MotionRecord &r, const CycleInput &in, const std::vector<CycleS
   for (const CycleStep &s : steps)
     if (!s.preMove) {
       for (int i = 0; i < 3; ++i)
-        if (i != d) r.setParam(std::string_view(&kWordLetters[i], 1), s.pos[i] - frameOffset[i]);
+        if (i != d) r.setParam(kWordKeys[i], s.pos[i] - frameOffset[i]);
       break;
     }
-  r.setParam(std::string_view(&kWordLetters[d], 1), z);
+  r.setParam(kWordKeys[d], z);
   r.setParam("R", rLevel);
   const bool boring = in.cycle == ModeValue::BoreFine || in.cycle == ModeValue::BoreBack;
   if (in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak || boring) r.setParam("Q", in.q);
@@ -51,7 +51,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   const bool inc = st.distance == ModeValue::Incremental;
 
   if (first && !c.has(zWord))
-    return error(std::string(1, kWordLetters[(int)zWord]) + " value unspecified in " + kPlaneName[pl] +
+    return error(std::string(kWordKeys[(int)zWord]) + " value unspecified in " + kPlaneName[pl] +
                      " plane canned cycle",
                  "cycle-missing-word");
   if (first && !c.has(Word::R)) return error("R clearance plane unspecified in cycle", "cycle-missing-word");
@@ -67,7 +67,7 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   if (c.has(Word::P)) cycleP = c.get(Word::P);
   for (int i = 3; i < kAxes; ++i)  // rs274: "Cannot put an a in canned cycle"
     if (c.has((Word)i))
-      return error(std::string("Cannot put ") + (i == 3 ? "an " : "a ") + (char)std::tolower(kWordLetters[i]) +
+      return error(std::string("Cannot put ") + (i == 3 ? "an " : "a ") + (char)std::tolower(kWordKeys[i][0]) +
                        " in canned cycle",
                    "cycle-invalid");
   if (!cycleFrameOk()) return false;

@@ -190,7 +190,7 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   static const char *kPlaneNames[] = {"xy", "xz", "yz"};
   Word normal = kNormalWord[(int)plane()];
   if (c.has(normal))
-    return error(std::string(1, kWordLetters[(int)normal]) + " word given for arc in " + kPlaneNames[(int)plane()] +
+    return error(std::string(kWordKeys[(int)normal]) + " word given for arc in " + kPlaneNames[(int)plane()] +
                      " plane",
                  "arc-invalid");
   if (!c.has(Word::R) && !c.has(ax.o1) && !c.has(ax.o2))

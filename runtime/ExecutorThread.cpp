@@ -132,7 +132,7 @@ bool Executor::Impl::threadCycle(const MachineCmd &c) {
   if (c.mask & kAxisMask & ~(wordBit(Word::X) | wordBit(Word::Z)))
     return error("Cannot move rotary axes with G76", "unsupported-code");
   for (Word w : {Word::P, Word::I, Word::J, Word::K})
-    if (!c.has(w)) return error(fmt::format("G76 needs {}", kWordLetters[(int)w]), "missing-word");
+    if (!c.has(w)) return error(fmt::format("G76 needs {}", kWordKeys[(int)w]), "missing-word");
   const double xs = axisScale(0);  // I J K are X distances (diameters on a diameter machine)
   const double i = c.get(Word::I) * xs, j = c.get(Word::J) * xs, k = c.get(Word::K) * xs;
   if (c.get(Word::I) == 0) return error("In G76, I must not be 0", "thread-invalid");
@@ -193,7 +193,7 @@ bool Executor::Impl::threadMulti(const MachineCmd &c) {
   st.motion = threadReturn;  // one-shot
   if (!(c.mask & kAxisMask)) {  // the data block
     for (Word w : {Word::P, Word::Q, Word::R})
-      if (!c.has(w)) return error(fmt::format("G76 P Q R (the data block) needs {}", kWordLetters[(int)w]), "missing-word");
+      if (!c.has(w)) return error(fmt::format("G76 P Q R (the data block) needs {}", kWordKeys[(int)w]), "missing-word");
     double p = c.get(Word::P);
     if (p < 0 || p != std::floor(p) || p > 999999)
       return error("G76 P of the data block is six digits: finishing passes, chamfer, tool angle", "thread-invalid");

@@ -116,7 +116,7 @@ std::string diffCmd(const MachineCmd &a, const std::string &ta, const MachineCmd
   if (std::memcmp(a.modes, b.modes, a.nmodes)) return "modes differ";
   for (int w = 0; w < kWords; ++w)
     if ((a.mask & wordBit((Word)w)) && std::memcmp(&a.w[w], &b.w[w], sizeof(double)))
-      return std::string("word ") + kWordLetters[w] + " differs";
+      return std::string("word ") + kWordKeys[w] + " differs";
   return "";
 }
 
@@ -264,7 +264,7 @@ TEST(Jit, CallWithNewFrame) {
 
 TEST(Jit, VacantSemantics) {
   auto flag = [](OpCode op, ExprPtr a, ExprPtr b, Word w) {
-    return mk(OpKind::Move, L(9), kWordLetters[(unsigned)w] == 'X' ? "X" : kWordLetters[(unsigned)w] == 'Y' ? "Y" : "Z",
+    return mk(OpKind::Move, L(9), kWordKeys[(unsigned)w],
               Bin(op, std::move(a), std::move(b)));
   };
   Module m = module(reg(assign(2, Bin(OpCode::Add, Var(1), N(1))), assign(500, Expr::vacant()),
