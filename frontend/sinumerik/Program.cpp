@@ -1,0 +1,151 @@
+// The program: the main file, the subprogram files it calls (found on the search path), the
+// lines of each file and their control structures.
+#include "frontend/sinumerik/Parser.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace ncc::sin {
+
+FunctionParser::FunctionParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain)
+    : pp(pp), file(file), isMain(isMain) {
+  fn.name = std::move(name);
+  fn.loc = {file, 1, 1};
+  regions.push_back(&fn.body);
+}
+
+// A header line `%_N_NAME_MPF` (punched-tape form) or `%` alone: no block.
+static bool headerLine(std::string_view s) {
+  size_t i = s.find_first_not_of(" \t");
+  return i != std::string_view::npos && s[i] == '%';
+}
+
+bool FunctionParser::run() {
+  const std::string &text = pp.sm.text(file);
+  size_t pos = 0;
+  uint32_t lineNo = 0;
+  bool ok = true;
+  std::vector<Token> toks;
+  while (pos <= text.size()) {
+    size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) nl = text.size();
+    std::string_view line(text.data() + pos, nl - pos);
+    ++lineNo;
+    pos = nl + 1;
+    if (headerLine(line)) {
+      if (nl >= text.size()) break;
+      continue;
+    }
+    // Skip level: `/` or `/0`…`/9` before the block (the Fundamentals manual). Blanked out
+    // in a copy so that columns stay those of the source line.
+    std::string copy(line);
+    size_t first = copy.find_first_not_of(" \t");
+    if (first != std::string::npos && copy[first] == '/') {
+      int skip = 0;
+      copy[first] = ' ';
+      if (first + 1 < copy.size() && copy[first + 1] >= '0' && copy[first + 1] <= '9') {
+        skip = copy[first + 1] - '0';
+        copy[first + 1] = ' ';
+      }
+      if (pp.opts.blockDeleteMask & (1u << skip)) {
+        if (nl >= text.size()) break;
+        continue;
+      }
+    }
+    std::string err;
+    uint32_t errCol = 0;
+    if (!lexLine(copy, toks, err, errCol)) {
+      pp.error({file, lineNo, errCol}, err);
+      ok = false;
+    } else if (toks.size() > 1) {
+      BlockParser bp(*this, toks, lineNo);
+      if (!bp.parse()) ok = false;
+    }
+    if (nl >= text.size()) break;
+  }
+  for (auto &c : ctl) {
+    static const char *kOpen[] = {"IF", "IF … ELSE", "WHILE", "FOR", "LOOP", "REPEAT"};
+    static const char *kClose[] = {"ENDIF", "ENDIF", "ENDWHILE", "ENDFOR", "ENDLOOP", "UNTIL"};
+    pp.error(c.loc, fmt::format("{} without {}", kOpen[(int)c.kind], kClose[(int)c.kind]), "loop-mismatch");
+    ok = false;
+  }
+  return ok;
+}
+
+// Files a called name may be in (L6859-L6898: the control adds _N_ and _SPF / _MPF).
+static std::vector<std::string> candidateFiles(const std::string &name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return (char)std::tolower(c); });
+  std::vector<std::string> out;
+  for (const std::string &n : {name, lower})
+    for (const char *ext : {".SPF", ".spf", ".MPF", ".mpf"}) out.push_back(n + ext);
+  out.push_back("_N_" + name + "_SPF");
+  out.push_back("_N_" + name + "_MPF");
+  return out;
+}
+
+const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
+  auto it = procs.find(name);
+  if (it != procs.end()) return &it->second;
+  if (std::find(opts.linkedFunctions.begin(), opts.linkedFunctions.end(), name) != opts.linkedFunctions.end()) {
+    procs[name].ready = true;  // a linked file defines it; its parameters are passed by position there
+    return &procs[name];
+  }
+  uint32_t fid = 0;
+  for (auto &d : opts.searchDirs) {
+    for (auto &f : candidateFiles(name)) {
+      std::filesystem::path path = std::filesystem::path(d) / f;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) continue;
+      fid = sm.addFile(path.string());
+      if (fid) break;
+    }
+    if (fid) break;
+  }
+  if (!fid) {
+    std::string where;
+    for (auto &d : opts.searchDirs) where += (where.empty() ? "" : ", ") + d;
+    if (!missing.count(name))
+      error(loc, fmt::format("subprogram {} not found (searched {} for {}.SPF, {}.MPF)", name, where, name, name),
+            "missing-subprogram");
+    else
+      error(loc, fmt::format("subprogram {} not found", name), "missing-subprogram");
+    missing.insert(name);
+    return nullptr;
+  }
+  // Parse the file now: its PROC line gives the signature the call's arguments need.
+  procs[name];
+  FunctionParser fp(*this, fid, name, false);
+  bool good = fp.run();
+  Signature &s = procs[name];
+  s.params.clear();
+  for (auto &p : fp.fn.params) {
+    ir::Param c;
+    c.name = p.name;
+    c.type = p.type;
+    c.byRef = p.byRef;
+    s.params.push_back(std::move(c));
+  }
+  s.ready = true;
+  fp.fn.dialect = ir::Dialect::Unknown;
+  done.push_back(std::move(fp.fn));
+  if (!good) ok = false;
+  return &procs[name];
+}
+
+bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions &opts, Diagnostics &diags,
+                           ir::Module &out) {
+  out.dialect = ir::Dialect::Sinumerik;
+  out.name = sm.name(fileId);
+  ProgramParser pp(sm, opts, diags, out);
+  FunctionParser main(pp, fileId, "main", true);
+  bool ok = main.run();
+  out.functions.clear();
+  out.functions.push_back(std::move(main.fn));
+  for (auto &f : pp.done) out.functions.push_back(std::move(f));
+  return ok && pp.ok;
+}
+
+}  // namespace ncc::sin
