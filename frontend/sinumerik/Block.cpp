@@ -294,13 +294,14 @@ bool BlockParser::gotoStatement(const std::string &kw, std::vector<Op> &into) {
   Op g(OpKind::Goto, l);
   g.set("dir", Expr::symbol(kw == "GOTOF" ? "forward" : kw == "GOTOB" ? "backward" : "any"));
   const Token &t = tok();
-  if (t.kind == Tok::Name && t.text[0] == 'N' && t.digitsAt == 1 && !t.fraction && (peek().kind == Tok::End || peek().kind == Tok::Name)) {
+  if (t.kind == Tok::Name && t.text[0] == 'N' && t.digitsAt == 1 && !t.fraction && peek().kind != Tok::Punct) {
     g.set("n", Expr::number(t.num, ir::Type::Int));
     ++i_;
   } else if (t.kind == Tok::Number && t.isInt) {
     g.set("n", Expr::number(t.num, ir::Type::Int));
     ++i_;
-  } else if (t.kind == Tok::Name && !f_.vars.count(t.text) && (peek().kind == Tok::End || peek().kind == Tok::Name)) {
+  } else if (t.kind == Tok::Name && !f_.vars.count(t.text) && peek().kind != Tok::Punct &&
+             !(t.text[0] == 'R' && t.digitsAt == 1)) {
     g.set("label", Expr::string(t.text == "ENDLABEL" ? "ENDLABEL" : t.text));
     ++i_;
   } else {

@@ -51,10 +51,10 @@ enum class Addr : uint8_t {
   Center,   // I J K
   Via,      // I1 J1 K1 (CIP's intermediate point)
   Radius,   // CR
-  Corner,   // CHR (chamfer leg), RND (rounding)
+  Corner,   // CHF (chamfer length), RND (rounding)
   Feed, Speed, Tool, Edge, Misc, G,
   Ignored,  // ADIS ADISPOS: rounding distances of G641/G642, which are refused themselves
-  Refused,  // an address ncc knows but does not simulate (AR, AP, RP, CHF, RNDM, TURN, OFFN, SF, LIMS …)
+  Refused,  // an address ncc knows but does not simulate (AR, AP, RP, CHR, RNDM, TURN, OFFN, SF, LIMS …)
   None
 };
 struct AddrInfo {

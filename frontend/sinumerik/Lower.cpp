@@ -144,7 +144,14 @@ bool BlockParser::lowerWords() {
     if (comp->arg) o.set("d_default", Expr::symbol("tool"));
     out.push_back(std::move(o));
   }
-  if (offset) {
+  if (offset && offset->arg == 0) {
+    // G500: no settable frame. The core's work offsets are G54…, so the active settable frame
+    // ($P_IFRAME) becomes the identity; the next G54… reads its table entry again.
+    Op o(OpKind::Assign, bl);
+    o.set("target", Expr::var(ir::VarSpace::System, "_iframe", nullptr, bl));
+    o.set("value", Expr::call("CTRANS", {}, bl));
+    out.push_back(std::move(o));
+  } else if (offset) {
     Op o(OpKind::WorkOffset, bl);
     o.set("index", Expr::number(offset->arg, ir::Type::Int));
     out.push_back(std::move(o));
@@ -160,9 +167,12 @@ bool BlockParser::lowerWords() {
     switch (a->kind) {
     case Addr::Axis: path = true; break;
     case Addr::Center: break;
-    case Addr::Via: key = std::string("via_") + (char)std::tolower(w.addr[0]); break;
+    case Addr::Via:  // I1 J1 K1: the intermediate point's X Y Z
+      key = std::string("via_") + (char)('x' + (w.addr[0] - 'I'));
+      if (w.mode) return fail(t_[0], fmt::format("{}=AC()/IC() is not simulated", w.addr), "unsupported-code");
+      break;
     case Addr::Radius: key = "R"; break;
-    case Addr::Corner: key = w.addr == "CHR" ? "chamfer" : "round"; break;
+    case Addr::Corner: key = w.addr == "CHF" ? "chamfer" : "round"; break;
     default: return fail(t_[0], fmt::format("address {} cannot be used here", w.addr), "unused-word");
     }
     if (w.mode && a->kind != Addr::Axis && a->kind != Addr::Center && a->kind != Addr::Via)

@@ -22,6 +22,31 @@ static bool headerLine(std::string_view s) {
   return i != std::string_view::npos && s[i] == '%';
 }
 
+// Jump targets of a function: label names and block numbers.
+static void collectTargets(const ir::Region &r, std::set<std::string> &labels, std::set<double> &blocks) {
+  for (auto &op : r) {
+    if (op.kind == ir::OpKind::Label) labels.insert(op.get("name")->str);
+    if (op.kind == ir::OpKind::Block && op.get("n")) blocks.insert(op.get("n")->num);
+    for (auto &sub : op.regions) collectTargets(sub, labels, blocks);
+  }
+}
+
+// GOTOC continues with the next block when its target is missing (L4414): such a goto (marked
+// by the comment before it) is dropped.
+static void dropMissingGotoc(ir::Region &r, const std::set<std::string> &labels, const std::set<double> &blocks) {
+  for (size_t i = 0; i < r.size(); ++i) {
+    for (auto &sub : r[i].regions) dropMissingGotoc(sub, labels, blocks);
+    const ir::Expr *text = r[i].kind == ir::OpKind::Comment ? r[i].get("text") : nullptr;
+    if (!text || text->str != "GOTOC" || i + 1 >= r.size() || r[i + 1].kind != ir::OpKind::Goto) continue;
+    const ir::Expr *n = r[i + 1].get("n"), *l = r[i + 1].get("label");
+    bool found = n ? blocks.count(n->num) > 0 : labels.count(l->str) > 0;
+    if (!found) {
+      r[i].set("text", ir::Expr::string("GOTOC: target not found, continues"));
+      r.erase(r.begin() + (long)i + 1);
+    }
+  }
+}
+
 bool FunctionParser::run() {
   const std::string &text = pp.sm.text(file);
   size_t pos = 0;
@@ -65,6 +90,10 @@ bool FunctionParser::run() {
     }
     if (nl >= text.size()) break;
   }
+  std::set<std::string> targets;
+  std::set<double> blocks;
+  collectTargets(fn.body, targets, blocks);
+  dropMissingGotoc(fn.body, targets, blocks);
   for (auto &c : ctl) {
     static const char *kOpen[] = {"IF", "IF … ELSE", "WHILE", "FOR", "LOOP", "REPEAT"};
     static const char *kClose[] = {"ENDIF", "ENDIF", "ENDWHILE", "ENDFOR", "ENDLOOP", "UNTIL"};
