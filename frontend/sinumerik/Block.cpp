@@ -41,17 +41,8 @@ bool BlockParser::parse() {
     n = (int64_t)peek().num;
     i_ += 2;
   }
-  // A block that only closes a structure (ELSE, ENDIF …) is no block of its own in the IR
-  // unless it has a number to jump to.
-  static const char *kClosers[] = {"ELSE", "ENDIF", "ENDWHILE", "ENDFOR", "ENDLOOP"};
-  bool closer = false;
-  for (const char *c : kClosers) closer = closer || (tok().isName(c) && peek().kind == Tok::End);
-  if (n >= 0 || !closer) {
-    Op b(OpKind::Block, loc(t_[0]));
-    if (n >= 0) b.set("n", Expr::number((double)n, ir::Type::Int));
-    f_.cur().push_back(std::move(b));
-  }
-  // Label: NAME: (2-32 characters, the first two letters or '_', L4447).
+  // Label: NAME: (2-32 characters, the first two letters or '_', L4447). It goes before the
+  // block op, so a jump or a section repetition to it runs the block's number again.
   if (tok().kind == Tok::Name && peek().is(":") && tok().text[0] != '$') {
     std::string name = tok().text;
     if (name == "ENDLABEL") name = fmt::format("ENDLABEL_{}", line_);
@@ -62,6 +53,16 @@ bool BlockParser::parse() {
     l.set("name", Expr::string(name));
     f_.cur().push_back(std::move(l));
     i_ += 2;
+  }
+  // A block that only closes a structure (ELSE, ENDIF …) is no block of its own in the IR
+  // unless it has a number to jump to.
+  static const char *kClosers[] = {"ELSE", "ENDIF", "ENDWHILE", "ENDFOR", "ENDLOOP"};
+  bool closer = false;
+  for (const char *c : kClosers) closer = closer || (tok().isName(c) && peek().kind == Tok::End);
+  if (n >= 0 || !closer) {
+    Op b(OpKind::Block, loc(t_[0]));
+    if (n >= 0) b.set("n", Expr::number((double)n, ir::Type::Int));
+    f_.cur().push_back(std::move(b));
   }
   while (!atEnd() && !failed_)
     if (!statement()) break;
@@ -198,6 +199,19 @@ bool BlockParser::keyword(const std::string &kw) {
     ++i_;
     return true;
   }
+  if (kw == "SETAL" && peek().is("(")) {
+    // SETAL(n): a cycle alarm stops the program (its text is the alarm number).
+    i_ += 2;
+    ExprPtr n = expr(0);
+    if (!n || !expect(")")) return false;
+    Op m(OpKind::Message, l);
+    std::vector<ExprPtr> a;
+    a.push_back(std::move(n));
+    m.set("text", Expr::binary(ir::OpCode::Concat, Expr::string("alarm ", l), Expr::call("TOSTR", std::move(a), l), l));
+    m.set("kind", Expr::symbol("abort"));
+    post_.push_back(std::move(m));
+    return true;
+  }
   if (kw == "MCALL") return callStatement(true);
   if (kw == "CALL") return callStatement(false);
   if (kw == "EXTERN") {  // the signature comes from the subprogram's own PROC line
@@ -220,7 +234,7 @@ bool BlockParser::keyword(const std::string &kw) {
       "WAITMC",  "WAITE",    "SETM",  "CLEARM",  "SETINT",   "CLRINT",  "DISABLE",  "ENABLE",   "PRIO",
       "BLSYNC",  "LIFTFAST", "ALF",   "RELEASE", "GET",      "GETD",    "AXTOCHAN", "NEWCONF",  "WRITE",
       "READ",    "DELETE",   "EXECSTRING", "EXECTAB", "REDEF", "DEFINE", "PCALL",    "ISOCALL",  "CALLPATH",
-      "EXTCALL", "SETAL",    "GOTOS", "RETB",    "SPOS",     "SPOSA",   "WAITS",    "TRAORI",   "TRANSMIT",
+      "EXTCALL", "GOTOS", "RETB",    "SPOS",     "SPOSA",   "WAITS",    "TRAORI",   "TRANSMIT",
       "TRACYL",  "MEAS",     "MEAW",  "POLY",    "G291"};
   for (const char *c : kNotSimulated)
     if (kw == c)

@@ -270,6 +270,27 @@ bool BlockParser::assignment() {
   auto it = f_.vars.find(target->str);
   if (it != f_.vars.end() && !it->second.dims.empty() && (tok().isName("SET") || tok().isName("REP")))
     return arrayInit(*target, it->second, pre_, false);
+  if (target->space == ir::VarSpace::RParam && (tok().isName("SET") || tok().isName("REP"))) {
+    // R10=REP(2.4, 3): R10…R12 (L2236); R parameters are one array of the machine's size.
+    if (!target->args.empty() && target->args[0]->kind == ir::ExprKind::Number) {
+      VarDecl r;
+      r.dims.push_back(65535);
+      std::vector<Op> ops;
+      auto whole = Expr::var(ir::VarSpace::RParam, "R", nullptr, l);
+      whole->args.push_back(target->args[0]->clone());
+      if (tok().isName("REP") && !peek(2).is(")") && !arrayInit(*whole, r, ops, false)) return false;
+      if (ops.empty()) return fail(tok(), "REP on R parameters needs a count: R10=REP(v, n)");
+      for (auto &o : ops) {  // RParam elements have one index
+        ir::Expr *t = o.get("target");
+        auto idx = std::move(t->args.back());
+        t->args.clear();
+        t->args.push_back(std::move(idx));
+        pre_.push_back(std::move(o));
+      }
+      return true;
+    }
+    return fail(tok(), "SET/REP into R parameters needs a constant R number", "unsupported-code");
+  }
   ExprPtr v = assignValue(*target);
   if (!v) return false;
   if (frameComp) {

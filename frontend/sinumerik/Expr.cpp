@@ -264,6 +264,10 @@ ExprPtr BlockParser::variable(const Token &t, bool target) {
   if (it == f_.vars.end()) return nullptr;
   const VarDecl &d = it->second;
   auto v = Expr::var(d.global ? ir::VarSpace::Global : ir::VarSpace::Local, t.text, nullptr, l);
+  if (tok().is("[") && d.dims.empty() && d.type == ir::Type::String) {
+    fail(tok(), fmt::format("character access {}[i] is not supported", t.text), "unsupported-code");
+    return nullptr;
+  }
   if (tok().is("[")) {
     std::vector<ExprPtr> idx;
     bool frameComp = d.type == ir::Type::Frame && d.dims.empty();

@@ -47,6 +47,34 @@ static void dropMissingGotoc(ir::Region &r, const std::set<std::string> &labels,
   }
 }
 
+// A section's end label stands before its block op; the section ends with that block, so the
+// call's `to` names a label put after the block op (docs/IR.md §5.3: the block of `to` ends
+// before the next block or label).
+static void sectionEndLabels(ir::Region &body) {
+  std::set<std::string> ends;
+  auto collect = [&](auto &self, ir::Region &r) -> void {
+    for (auto &op : r) {
+      if (op.kind == ir::OpKind::CallSection && op.get("to")) {
+        ends.insert(op.get("to")->str);
+        op.set("to", ir::Expr::string(op.get("to")->str + "@end"));
+      }
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  collect(collect, body);
+  auto place = [&](auto &self, ir::Region &r) -> void {
+    for (size_t i = 0; i < r.size(); ++i) {
+      for (auto &sub : r[i].regions) self(self, sub);
+      if (r[i].kind != ir::OpKind::Label || !ends.count(r[i].get("name")->str)) continue;
+      ir::Op l(ir::OpKind::Label, r[i].loc);
+      l.set("name", ir::Expr::string(r[i].get("name")->str + "@end"));
+      size_t at = i + 1 < r.size() && r[i + 1].kind == ir::OpKind::Block ? i + 2 : i + 1;
+      r.insert(r.begin() + (long)at, std::move(l));
+    }
+  };
+  place(place, body);
+}
+
 bool FunctionParser::run() {
   const std::string &text = pp.sm.text(file);
   size_t pos = 0;
@@ -94,6 +122,7 @@ bool FunctionParser::run() {
   std::set<double> blocks;
   collectTargets(fn.body, targets, blocks);
   dropMissingGotoc(fn.body, targets, blocks);
+  sectionEndLabels(fn.body);
   for (auto &c : ctl) {
     static const char *kOpen[] = {"IF", "IF … ELSE", "WHILE", "FOR", "LOOP", "REPEAT"};
     static const char *kClose[] = {"ENDIF", "ENDIF", "ENDWHILE", "ENDFOR", "ENDLOOP", "UNTIL"};

@@ -50,7 +50,10 @@ bool BlockParser::addressWord() {
     w.addr = letters;
     w.value = Expr::number(t.num, t.isInt ? ir::Type::Int : ir::Type::Real, l);
     ++i_;
-    if (letters == "G") return gcode("G" + t.text.substr(1), t);
+    if (letters == "G") {  // G01 is G1
+      if (!t.isInt) return fail(t, fmt::format("unknown G function {}", t.text), "unknown-code");
+      return gcode(fmt::format("G{}", (long)t.num), t);
+    }
   } else if (full && (peek().kind == Tok::Number || ((peek().is("-") || peek().is("+")) && peek(2).kind == Tok::Number))) {
     w.addr = t.text;  // X-10, X 10
     ++i_;
@@ -58,6 +61,10 @@ bool BlockParser::addressWord() {
     if (tok().kind == Tok::Punct) ++i_;
     w.value = Expr::number(neg ? -tok().num : tok().num, tok().isInt ? ir::Type::Int : ir::Type::Real, l);
     ++i_;
+  } else if (pre && peek().is("=")) {
+    // S1=300, M2=19, X1=5: an address with an extension (spindle or channel axis number).
+    return fail(t, fmt::format("the address extension {}= (a spindle or axis number) is not simulated", t.text),
+                "unsupported-code");
   } else {
     return callStatement(false);  // a subprogram called by its name
   }
