@@ -142,6 +142,14 @@ bool BlockParser::keyword(const std::string &kw) {
     if (!to) return false;
     if (!atEnd()) return fail(tok(), "unexpected text after the FOR end value");
     // FOR v = a TO b: v = a; while v <= b { body; v = v + 1 } (the step is always 1, L5103).
+    // A REAL counter (an R parameter) counts whole numbers: its start is rounded (L5097-L5101).
+    auto vd = f_.vars.find(var->str);
+    bool real = var->space == ir::VarSpace::RParam || (vd != f_.vars.end() && vd->second.type == ir::Type::Real);
+    if (real) {
+      std::vector<ExprPtr> a;
+      a.push_back(std::move(from));
+      from = Expr::call("ROUND", std::move(a), l);
+    }
     Op init(OpKind::Assign, l);
     init.set("target", var->clone());
     init.set("value", std::move(from));
@@ -329,8 +337,11 @@ bool BlockParser::gotoStatement(const std::string &kw, std::vector<Op> &into) {
         g.set("n", Expr::number(std::stod(s.substr(1)), ir::Type::Int));
       else
         g.set("label", Expr::string(s));
-    } else {
-      g.set("label", std::move(e));
+    } else {  // names are case-insensitive: labels are kept in upper case
+      std::vector<ExprPtr> a;
+      a.push_back(Expr::call("TOSTR", {}, l));
+      a[0]->args.push_back(std::move(e));
+      g.set("label", Expr::call("TOUPPER", std::move(a), l));
     }
   }
   if (kw == "GOTOC") {
