@@ -239,30 +239,12 @@ bool BlockParser::assignment() {
   const Token &t = tok();
   SourceLoc l = loc(t);
   ++i_;
-  ExprPtr target;
-  bool frameComp = false;
-  std::string axis, comp;
-  if (t.text[0] == '$') {
-    target = systemVar(t);
-  } else if (f_.vars.count(t.text)) {
-    const VarDecl &d = f_.vars[t.text];
-    if (d.type == ir::Type::Frame && d.dims.empty() && tok().is("[")) {
-      // F[X, TR] = v: FRAME_SET (docs/IR.md §2.4)
-      ++i_;
-      if (tok().kind != Tok::Name || !peek().is(",") || peek(2).kind != Tok::Name || !peek(3).is("]"))
-        return fail(tok(), fmt::format("a frame component is written {}[axis, TR|FI|RT|SC|MI]", t.text));
-      axis = tok().text;
-      comp = peek(2).text;
-      i_ += 4;
-      frameComp = true;
-      target = Expr::var(d.global ? ir::VarSpace::Global : ir::VarSpace::Local, t.text, nullptr, l);
-    } else {
-      target = variable(t, true);
-    }
-  } else {
-    --i_;
-    ++i_;
-    target = nameExpr(t);
+  ExprPtr target = t.text[0] == '$' ? systemVar(t) : f_.vars.count(t.text) ? variable(t, true) : nameExpr(t);
+  // F[X, TR] = v, $P_PFRAME[X, TR] = v: the frame with one component replaced (FRAME_SET).
+  ExprPtr comp;
+  if (target && target->kind == ir::ExprKind::Call && target->str == "FRAME_GET") {
+    comp = std::move(target);
+    target = std::move(comp->args[0]);
   }
   if (!target) return false;
   if (target->kind != ir::ExprKind::Var) return fail(t, "the left side of '=' must be a variable");
@@ -293,11 +275,11 @@ bool BlockParser::assignment() {
   }
   ExprPtr v = assignValue(*target);
   if (!v) return false;
-  if (frameComp) {
+  if (comp) {
     std::vector<ExprPtr> a;
     a.push_back(target->clone());
-    a.push_back(Expr::string(axis, l));
-    a.push_back(Expr::string(comp, l));
+    a.push_back(std::move(comp->args[1]));
+    a.push_back(std::move(comp->args[2]));
     a.push_back(std::move(v));
     v = Expr::call("FRAME_SET", std::move(a), l);
   }

@@ -176,6 +176,10 @@ ExprPtr BlockParser::indexList(std::vector<ExprPtr> &out, bool axisOk) {
   return Expr::boolean(true);  // success marker
 }
 
+static bool frameSys(std::string_view ir) {
+  return ir == "_pframe" || ir == "_iframe" || ir == "_actframe" || ir == "_uifr";
+}
+
 ExprPtr BlockParser::systemVar(const Token &t) {
   std::string name = t.text.substr(1);
   const SysMap *m = findSystemVar(name);
@@ -192,17 +196,22 @@ ExprPtr BlockParser::systemVar(const Token &t) {
       return nullptr;
     }
     idx.push_back(Expr::number(m->toolField, ir::Type::Int, l));
-  } else if (name == "P_UIFR" && idx.size() == 3) {
-    // $P_UIFR[n, X, TR]: the offset of settable frame n on an axis (docs/IR.md §3).
-    const Expr &c = *idx[2];
-    if (c.kind != ir::ExprKind::Symbol && !(c.kind == ir::ExprKind::Var && c.str == "TR")) {
-      fail(t, "only the TR component of $P_UIFR[n, axis, …] is provided", "unsupported-code");
+  } else if (frameSys(m->irName) && (int)idx.size() == m->indices + 2) {
+    // $P_PFRAME[X, TR], $P_UIFR[n, X, RT]: a component of the frame (FRAME_GET).
+    const Expr &ax = *idx[m->indices], &comp = *idx[m->indices + 1];
+    if (ax.kind != ir::ExprKind::Symbol || comp.kind != ir::ExprKind::Var) {
+      fail(t, fmt::format("a frame component is written ${}[{}axis, TR|FI|RT|SC|MI]", name, m->indices ? "n, " : ""));
       return nullptr;
     }
-    idx.pop_back();
-    auto v = Expr::var(ir::VarSpace::System, "_work_offset", nullptr, l);
+    std::string axis = ax.str, c = comp.str;
+    idx.resize(m->indices);
+    auto v = Expr::var(ir::VarSpace::System, m->irName, nullptr, l);
     v->args = std::move(idx);
-    return v;
+    std::vector<ExprPtr> a;
+    a.push_back(std::move(v));
+    a.push_back(Expr::string(axis, l));
+    a.push_back(Expr::string(c, l));
+    return Expr::call("FRAME_GET", std::move(a), l);
   } else if ((int)idx.size() != m->indices) {
     fail(t, fmt::format("'${}' takes {} ind{}", name, m->indices, m->indices == 1 ? "ex" : "ices"));
     return nullptr;
