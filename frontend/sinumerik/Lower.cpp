@@ -78,6 +78,7 @@ bool BlockParser::lowerWords() {
     d.set("seconds", std::move(f));
     out.push_back(std::move(d));
   }
+  bool hadFeedOrSpeed = word("F") || word("S");
   if (ExprPtr f = take("F")) {
     Op o(OpKind::Feed, bl);
     o.set("value", std::move(f));
@@ -203,6 +204,11 @@ bool BlockParser::lowerWords() {
     if (!ac.empty()) mv.set("ac", Expr::symbol(ac));
     if (!ic.empty()) mv.set("ic", Expr::symbol(ic));
     out.push_back(std::move(mv));
+  } else if (f_.pp.modalCalls && (f_.motion == ModeValue::Rapid || f_.motion == ModeValue::Linear)) {
+    // MCALL also runs after a block with G0/G1 alone or with F or S under G0/G1 (L8470-L8479).
+    bool g01 = false;
+    for (auto &[g, l] : gcodes_) g01 = g01 || g.mode == ModeValue::Rapid || g.mode == ModeValue::Linear;
+    if (g01 || hadFeedOrSpeed) out.push_back(Op(OpKind::ModalTrigger, bl));
   }
   for (auto &[m, l] : ms) {
     if (!m) continue;

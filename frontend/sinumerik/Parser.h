@@ -72,6 +72,7 @@ public:
   std::map<std::string, Signature> procs;  // by upper-case name
   std::set<std::string> missing, loading;
   std::vector<ir::Function> done;
+  bool modalCalls = false;  // some file read so far has MCALL: blocks may trigger it (docs/IR.md §5.5)
   bool ok = true;
 
   // The signature of a subprogram: loads and parses its file on first use. Null (with an

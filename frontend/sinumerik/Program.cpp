@@ -75,8 +75,15 @@ static void sectionEndLabels(ir::Region &body) {
   place(place, body);
 }
 
+static bool mentionsMcall(const std::string &text) {
+  std::string up(text);
+  for (auto &c : up) c = (char)std::toupper((unsigned char)c);
+  return up.find("MCALL") != std::string::npos;
+}
+
 bool FunctionParser::run() {
   const std::string &text = pp.sm.text(file);
+  pp.modalCalls = pp.modalCalls || mentionsMcall(text);
   size_t pos = 0;
   uint32_t lineNo = 0;
   bool ok = true;
