@@ -145,15 +145,8 @@ bool BlockParser::keyword(const std::string &kw) {
     // A REAL counter (an R parameter) counts whole numbers: its start is rounded (L5097-L5101).
     auto vd = f_.vars.find(var->str);
     bool real = var->space == ir::VarSpace::RParam || (vd != f_.vars.end() && vd->second.type == ir::Type::Real);
-    if (real) {
-      std::vector<ExprPtr> a;
-      a.push_back(std::move(from));
-      from = Expr::call("ROUND", std::move(a), l);
-    }
-    Op init(OpKind::Assign, l);
-    init.set("target", var->clone());
-    init.set("value", std::move(from));
-    f_.cur().push_back(std::move(init));
+    if (real) from = callOf("ROUND", l, std::move(from));
+    f_.cur().push_back(assignOp(var->clone(), std::move(from), l));
     Op w(OpKind::While, l);
     w.set("cond", Expr::binary(ir::OpCode::Le, var->clone(), std::move(to), l));
     openCtl(Ctl::For, std::move(w), l);
@@ -213,9 +206,7 @@ bool BlockParser::keyword(const std::string &kw) {
     ExprPtr n = expr(0);
     if (!n || !expect(")")) return false;
     Op m(OpKind::Message, l);
-    std::vector<ExprPtr> a;
-    a.push_back(std::move(n));
-    m.set("text", Expr::binary(ir::OpCode::Concat, Expr::string("alarm ", l), Expr::call("TOSTR", std::move(a), l), l));
+    m.set("text", Expr::binary(ir::OpCode::Concat, Expr::string("alarm ", l), callOf("TOSTR", l, std::move(n)), l));
     m.set("kind", Expr::symbol("abort"));
     post_.push_back(std::move(m));
     return true;
@@ -273,10 +264,8 @@ bool BlockParser::closeCtl(Ctl want, const char *name, const Token &at) {
   CtlFrame &c = f_.ctl.back();
   if (c.kind == Ctl::For) {
     SourceLoc l = loc(at);
-    Op inc(OpKind::Assign, l);
-    inc.set("target", c.forVar->clone());
-    inc.set("value", Expr::binary(ir::OpCode::Add, c.forVar->clone(), Expr::number(1, ir::Type::Int, l), l));
-    c.region->push_back(std::move(inc));
+    c.region->push_back(
+        assignOp(c.forVar->clone(), Expr::binary(ir::OpCode::Add, c.forVar->clone(), Expr::number(1, ir::Type::Int, l), l), l));
   }
   f_.ctl.pop_back();
   f_.regions.pop_back();
@@ -338,10 +327,7 @@ bool BlockParser::gotoStatement(const std::string &kw, std::vector<Op> &into) {
       else
         g.set("label", Expr::string(s));
     } else {  // names are case-insensitive: labels are kept in upper case
-      std::vector<ExprPtr> a;
-      a.push_back(Expr::call("TOSTR", {}, l));
-      a[0]->args.push_back(std::move(e));
-      g.set("label", Expr::call("TOUPPER", std::move(a), l));
+      g.set("label", callOf("TOUPPER", l, callOf("TOSTR", l, std::move(e))));
     }
   }
   if (kw == "GOTOC") {

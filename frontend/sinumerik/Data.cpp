@@ -10,6 +10,20 @@ using ir::ExprPtr;
 using ir::Op;
 using ir::OpKind;
 
+ir::Op assignOp(ExprPtr target, ExprPtr value, SourceLoc l) {
+  Op a(OpKind::Assign, l);
+  a.set("target", std::move(target));
+  a.set("value", std::move(value));
+  return a;
+}
+
+ExprPtr callOf(const char *fn, SourceLoc l, ExprPtr a, ExprPtr b) {
+  std::vector<ExprPtr> args;
+  args.push_back(std::move(a));
+  if (b) args.push_back(std::move(b));
+  return Expr::call(fn, std::move(args), l);
+}
+
 size_t elementCount(const VarDecl &d) {
   size_t n = 1;
   for (uint32_t x : d.dims) n *= x;
@@ -91,12 +105,9 @@ bool BlockParser::arrayInit(const Expr &target, const VarDecl &d, std::vector<Op
   if (count > 10000) return fail(t_[i_ - 1], "SET/REP of more than 10000 elements is not supported", "unsupported-code");
   (void)atDef;
   for (size_t k = 0; k < count; ++k) {
-    Op a(OpKind::Assign, l);
     auto v = Expr::var(target.space, target.str, nullptr, l);
     v->args = indicesAt(d, start + k, l);
-    a.set("target", std::move(v));
-    a.set("value", rep ? value->clone() : std::move(vals[k]));
-    into.push_back(std::move(a));
+    into.push_back(assignOp(std::move(v), rep ? value->clone() : std::move(vals[k]), l));
   }
   return true;
 }
@@ -227,10 +238,7 @@ ExprPtr BlockParser::assignValue(const Expr &target) {
     ++i_;
     ExprPtr b = expr(0);
     if (!b) return nullptr;
-    std::vector<ExprPtr> a;
-    a.push_back(std::move(v));
-    a.push_back(std::move(b));
-    v = Expr::call("FRAME_CHAIN", std::move(a), l);
+    v = callOf("FRAME_CHAIN", l, std::move(v), std::move(b));
   }
   return v;
 }
@@ -283,10 +291,7 @@ bool BlockParser::assignment() {
     a.push_back(std::move(v));
     v = Expr::call("FRAME_SET", std::move(a), l);
   }
-  Op a(OpKind::Assign, l);
-  a.set("target", std::move(target));
-  a.set("value", std::move(v));
-  pre_.push_back(std::move(a));
+  pre_.push_back(assignOp(std::move(target), std::move(v), l));
   return true;
 }
 

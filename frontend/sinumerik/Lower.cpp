@@ -148,10 +148,7 @@ bool BlockParser::lowerWords() {
   if (offset && offset->arg == 0) {
     // G500: no settable frame. The core's work offsets are G54…, so the active settable frame
     // ($P_IFRAME) becomes the identity; the next G54… reads its table entry again.
-    Op o(OpKind::Assign, bl);
-    o.set("target", Expr::var(ir::VarSpace::System, "_iframe", nullptr, bl));
-    o.set("value", Expr::call("CTRANS", {}, bl));
-    out.push_back(std::move(o));
+    out.push_back(assignOp(Expr::var(ir::VarSpace::System, "_iframe", nullptr, bl), Expr::call("CTRANS", {}, bl), bl));
   } else if (offset) {
     Op o(OpKind::WorkOffset, bl);
     o.set("index", Expr::number(offset->arg, ir::Type::Int));

@@ -157,5 +157,9 @@ private:
 
 // The number of elements of a declared array (1 for a scalar).
 size_t elementCount(const VarDecl &d);
+// `assign target= value=` at l.
+ir::Op assignOp(ir::ExprPtr target, ir::ExprPtr value, SourceLoc l);
+// A builtin call with the given arguments.
+ir::ExprPtr callOf(const char *fn, SourceLoc l, ir::ExprPtr a, ir::ExprPtr b = nullptr);
 
 }  // namespace ncc::sin

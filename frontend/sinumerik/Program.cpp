@@ -1,11 +1,11 @@
 // The program: the main file, the subprogram files it calls (found on the search path), the
 // lines of each file and their control structures.
+#include "frontend/SubprogramFiles.h"
 #include "frontend/sinumerik/Parser.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <filesystem>
 
 namespace ncc::sin {
 
@@ -158,22 +158,11 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
     procs[name].ready = true;  // a linked file defines it; its parameters are passed by position there
     return &procs[name];
   }
-  uint32_t fid = 0;
-  for (auto &d : opts.searchDirs) {
-    for (auto &f : candidateFiles(name)) {
-      std::filesystem::path path = std::filesystem::path(d) / f;
-      std::error_code ec;
-      if (!std::filesystem::is_regular_file(path, ec)) continue;
-      fid = sm.addFile(path.string());
-      if (fid) break;
-    }
-    if (fid) break;
-  }
+  uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name));
   if (!fid) {
-    std::string where;
-    for (auto &d : opts.searchDirs) where += (where.empty() ? "" : ", ") + d;
     if (!missing.count(name))
-      error(loc, fmt::format("subprogram {} not found (searched {} for {}.SPF, {}.MPF)", name, where, name, name),
+      error(loc, fmt::format("subprogram {} not found (searched {} for {}.SPF, {}.MPF)", name,
+                             folderList(opts.searchDirs), name, name),
             "missing-subprogram");
     else
       error(loc, fmt::format("subprogram {} not found", name), "missing-subprogram");

@@ -140,16 +140,8 @@ bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
   if (!words_.empty() || !gcodes_.empty()) return fail(at, fmt::format("{} must stand alone in its block", g.code->name));
   ExprPtr f = Expr::call(kBuiltin[(int)k], std::move(args), l);
   auto pf = Expr::var(ir::VarSpace::System, "_pframe", nullptr, l);
-  if (g.additive) {
-    std::vector<ExprPtr> a;
-    a.push_back(pf->clone());
-    a.push_back(std::move(f));
-    f = Expr::call("FRAME_CHAIN", std::move(a), l);
-  }
-  Op as(OpKind::Assign, l);
-  as.set("target", std::move(pf));
-  as.set("value", std::move(f));
-  pre_.push_back(std::move(as));
+  if (g.additive) f = callOf("FRAME_CHAIN", l, pf->clone(), std::move(f));
+  pre_.push_back(assignOp(std::move(pf), std::move(f), l));
   return true;
 }
 

@@ -1,0 +1,17 @@
+// Looking up a called subprogram's file, shared by the front ends: the first of the candidate
+// file names found in the first folder that has one.
+#pragma once
+#include "ir/Diagnostics.h"
+
+#include <string>
+#include <vector>
+
+namespace ncc {
+
+// The id of the file (added to sm), 0 when none of the candidates is in any of the folders.
+uint32_t findSubprogramFile(SourceManager &sm, const std::vector<std::string> &dirs,
+                            const std::vector<std::string> &candidates);
+// The folders for a message: "a, b".
+std::string folderList(const std::vector<std::string> &dirs);
+
+}  // namespace ncc
