@@ -145,9 +145,9 @@ static std::vector<std::string> candidateFiles(const std::string &name) {
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return (char)std::tolower(c); });
   std::vector<std::string> out;
   for (const std::string &n : {name, lower})
-    for (const char *ext : {".SPF", ".spf", ".MPF", ".mpf"}) out.push_back(n + ext);
-  out.push_back("_N_" + name + "_SPF");
+    for (const char *ext : {".MPF", ".mpf", ".SPF", ".spf"}) out.push_back(n + ext);  // MPF first (L8307)
   out.push_back("_N_" + name + "_MPF");
+  out.push_back("_N_" + name + "_SPF");
   return out;
 }
 
@@ -161,7 +161,7 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
   uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name));
   if (!fid) {
     if (!missing.count(name))
-      error(loc, fmt::format("subprogram {} not found (searched {} for {}.SPF, {}.MPF)", name,
+      error(loc, fmt::format("subprogram {} not found (searched {} for {}.MPF, {}.SPF)", name,
                              folderList(opts.searchDirs), name, name),
             "missing-subprogram");
     else

@@ -16,8 +16,8 @@ struct SinOptions {
   double realTolerance = 1e-12;         // relative tolerance of REAL comparisons (MD, manual L3284)
 };
 
-// Parses the main program and every subprogram it calls (looked up in searchDirs as NAME.SPF,
-// NAME.MPF, _N_NAME_SPF …) into `out`: functions[0] is "main". False when an error was reported.
+// Parses the main program and every subprogram it calls (looked up in searchDirs as NAME.MPF,
+// NAME.SPF, _N_NAME_MPF …) into `out`: functions[0] is "main". False when an error was reported.
 bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions &opts, Diagnostics &diags,
                            ir::Module &out);
 
