@@ -151,6 +151,18 @@ static std::vector<std::string> candidateFiles(const std::string &name) {
   return out;
 }
 
+// The names of the Siemens standard cycles (CYCLE81, POCKET3, HOLES1 …).
+static bool siemensCycle(const std::string &name) {
+  static const char *kPrefixes[] = {"CYCLE", "POCKET", "SLOT", "HOLES", "LONGHOLE"};
+  for (const char *p : kPrefixes) {
+    std::string_view n(name), pre(p);
+    if (n.substr(0, pre.size()) != pre) continue;
+    std::string_view rest = n.substr(pre.size());
+    if (rest.empty() ? pre == "LONGHOLE" : rest.find_first_not_of("0123456789") == std::string_view::npos) return true;
+  }
+  return false;
+}
+
 const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
   auto it = procs.find(name);
   if (it != procs.end()) return &it->second;
@@ -159,6 +171,16 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
     return &procs[name];
   }
   uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name));
+  if (!fid && siemensCycle(name)) {
+    // A standard cycle without a user subprogram of that name (which would override it).
+    if (!missing.count(name))
+      error(loc, fmt::format("{} is a Siemens standard cycle: calling it from a program is not simulated yet (no {}.SPF "
+                             "in {}; `ncc cycle sin.{}` runs the library's entry alone)",
+                             name, name, folderList(opts.searchDirs), name),
+            "unsupported-code");
+    missing.insert(name);
+    return nullptr;
+  }
   if (!fid) {
     if (!missing.count(name))
       error(loc, fmt::format("subprogram {} not found (searched {} for {}.MPF, {}.SPF)", name,
