@@ -232,7 +232,7 @@ bool BlockParser::keyword(const std::string &kw) {
       "WHEN",    "WHENEVER", "EVERY", "ID",      "IDS",      "DO",      "INIT",     "START",    "WAITM",
       "WAITMC",  "WAITE",    "SETM",  "CLEARM",  "SETINT",   "CLRINT",  "DISABLE",  "ENABLE",   "PRIO",
       "BLSYNC",  "LIFTFAST", "ALF",   "RELEASE", "GET",      "GETD",    "AXTOCHAN", "NEWCONF",  "WRITE",
-      "READ",    "DELETE",   "EXECSTRING", "EXECTAB", "REDEF", "DEFINE", "PCALL",    "ISOCALL",  "CALLPATH",
+      "READ",    "DELETE",   "EXECSTRING", "EXECTAB", "REDEF", "PCALL",    "ISOCALL",  "CALLPATH",
       "EXTCALL", "GOTOS", "RETB",    "SPOS",     "SPOSA",   "WAITS",    "TRAORI",   "TRANSMIT",
       "TRACYL",  "MEAS",     "MEAW",  "POLY",    "G291"};
   for (const char *c : kNotSimulated)

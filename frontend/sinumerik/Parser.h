@@ -58,6 +58,10 @@ public:
   ModeValue motion = ModeValue::Count;  // static: G0/G1 for G53 blocks
   bool sawStatement = false;                // a statement before: PROC must be first
   unsigned endLabels = 0;
+  std::map<std::string, std::vector<Token>> macros;  // DEFINE NAME AS … of this program
+  // DEFINE NAME AS tokens: stores the macro (true); other lines: replaces macro names by their
+  // tokens (SIN-MAC-01). False with an error reported.
+  bool macroLine(std::vector<Token> &toks, uint32_t line, bool &defined);
   ir::Region &cur() { return *regions.back(); }
 };
 

@@ -81,6 +81,38 @@ static bool mentionsMcall(const std::string &text) {
   return up.find("MCALL") != std::string::npos;
 }
 
+bool FunctionParser::macroLine(std::vector<Token> &toks, uint32_t line, bool &defined) {
+  defined = false;
+  size_t k = toks[0].kind == Tok::Name && toks[0].text[0] == 'N' && toks[0].digitsAt == 1 ? 1 : 0;  // N10 DEFINE
+  if (toks[k].isName("DEFINE")) {
+    defined = true;
+    if (toks.size() < k + 4 || toks[k + 1].kind != Tok::Name || !toks[k + 2].isName("AS"))
+      return pp.error({file, line, toks[k].col}, "a macro is written DEFINE NAME AS text");
+    static const char *kReserved[] = {"IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "LOOP",
+                                      "ENDLOOP", "REPEAT", "UNTIL", "GOTO", "GOTOF", "GOTOB", "GOTOC", "DEFINE"};
+    for (const char *r : kReserved)
+      if (toks[k + 1].text == r)  // L4936: control keywords and jump targets are no macros
+        return pp.error({file, line, toks[k + 1].col}, fmt::format("'{}' cannot be redefined by a macro", r));
+    macros[toks[k + 1].text] = std::vector<Token>(toks.begin() + (long)k + 3, toks.end() - 1);
+    return true;
+  }
+  if (macros.empty()) return true;
+  std::vector<Token> out;
+  for (auto &t : toks) {
+    auto it = t.kind == Tok::Name ? macros.find(t.text) : macros.end();
+    if (it == macros.end()) {
+      out.push_back(t);
+      continue;
+    }
+    for (Token m : it->second) {  // the macro's tokens stand where its name stood
+      m.col = t.col;
+      out.push_back(std::move(m));
+    }
+  }
+  toks = std::move(out);
+  return true;
+}
+
 bool FunctionParser::run() {
   const std::string &text = pp.sm.text(file);
   pp.modalCalls = pp.modalCalls || mentionsMcall(text);
@@ -119,7 +151,9 @@ bool FunctionParser::run() {
     if (!lexLine(copy, toks, err, errCol)) {
       pp.error({file, lineNo, errCol}, err);
       ok = false;
-    } else if (toks.size() > 1) {
+    } else if (bool def = false; toks.size() > 1 && !macroLine(toks, lineNo, def)) {
+      ok = false;
+    } else if (toks.size() > 1 && !def) {
       BlockParser bp(*this, toks, lineNo);
       if (!bp.parse()) ok = false;
     }
