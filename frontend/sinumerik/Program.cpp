@@ -204,7 +204,7 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
     procs[name].ready = true;  // a linked file defines it; its parameters are passed by position there
     return &procs[name];
   }
-  uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name));
+  uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name), true);
   if (!fid && siemensCycle(name)) {
     // A standard cycle without a user subprogram of that name (which would override it).
     if (!missing.count(name))

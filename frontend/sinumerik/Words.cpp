@@ -65,6 +65,9 @@ bool BlockParser::addressWord() {
     // S1=300, M2=19, X1=5: an address with an extension (spindle or channel axis number).
     return fail(t, fmt::format("the address extension {}= (a spindle or axis number) is not simulated", t.text),
                 "unsupported-code");
+  } else if (peek().is("[")) {
+    // G[8]=2, AX[AXVAR]=10, S[SPINU]=300: indirect addresses (SIN-IND-01…03).
+    return fail(t, fmt::format("the indexed address {}[…] is not simulated", t.text), "unsupported-code");
   } else {
     return callStatement(false);  // a subprogram called by its name
   }
