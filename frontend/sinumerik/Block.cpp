@@ -195,7 +195,9 @@ bool BlockParser::keyword(const std::string &kw) {
     ++i_;
     return true;
   }
-  if (kw == "RET" && (peek().kind == Tok::End || !peek().is("("))) {
+  if (kw == "RET" && peek().is("("))  // RET(target, …) jumps in the caller (SIN-SUB-13)
+    return fail(t, "RET(…) with a jump target is not simulated", "unsupported-code");
+  if (kw == "RET") {
     post_.push_back(Op(OpKind::Return, l));
     ++i_;
     return true;
