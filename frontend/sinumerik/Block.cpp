@@ -131,7 +131,7 @@ bool BlockParser::keyword(const std::string &kw) {
     ++i_;
     const Token &v = tok();
     ++i_;
-    ExprPtr var = v.kind == Tok::Name ? (f_.vars.count(v.text) ? variable(v, true) : nameExpr(v)) : nullptr;
+    ExprPtr var = v.kind == Tok::Name ? (f_.vars.count(v.text) ? variable(v) : nameExpr(v)) : nullptr;
     if (!var || var->kind != ir::ExprKind::Var) return failed_ ? false : fail(v, "FOR needs a variable as its counter");
     if (!expect("=")) return false;
     ExprPtr from = expr(0);
@@ -249,7 +249,7 @@ void BlockParser::openCtl(Ctl kind, Op op, SourceLoc l) {
   ir::Region &outer = f_.cur();
   outer.push_back(std::move(op));
   Op &o = outer.back();
-  f_.ctl.push_back({kind, l, &o.regions[0], &o, nullptr, &outer});
+  f_.ctl.push_back({kind, l, &o.regions[0], &o, nullptr});
   f_.regions.push_back(&o.regions[0]);
   if (f_.ctl.size() > 16) fail(t_[0], "control structures nested deeper than 16 in one subprogram", "loop-mismatch");
 }

@@ -247,7 +247,7 @@ bool BlockParser::assignment() {
   const Token &t = tok();
   SourceLoc l = loc(t);
   ++i_;
-  ExprPtr target = t.text[0] == '$' ? systemVar(t) : f_.vars.count(t.text) ? variable(t, true) : nameExpr(t);
+  ExprPtr target = t.text[0] == '$' ? systemVar(t) : f_.vars.count(t.text) ? variable(t) : nameExpr(t);
   // F[X, TR] = v, $P_PFRAME[X, TR] = v: the frame with one component replaced (FRAME_SET).
   ExprPtr comp;
   if (target && target->kind == ir::ExprKind::Call && target->str == "FRAME_GET") {

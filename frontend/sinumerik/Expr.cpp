@@ -266,9 +266,8 @@ ExprPtr BlockParser::function(const Token &t) {
   return Expr::call(fm->irName, std::move(args), l);
 }
 
-ExprPtr BlockParser::variable(const Token &t, bool target) {
+ExprPtr BlockParser::variable(const Token &t) {
   SourceLoc l = loc(t);
-  (void)target;
   auto it = f_.vars.find(t.text);
   if (it == f_.vars.end()) return nullptr;
   const VarDecl &d = it->second;
@@ -302,7 +301,7 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   if (t.text == "TRUE" || t.text == "FALSE") return Expr::boolean(t.text == "TRUE", l);
   if (t.text[0] == '$') return systemVar(t);
   if (tok().is("(") ) return function(t);
-  if (f_.vars.count(t.text)) return variable(t, false);
+  if (f_.vars.count(t.text)) return variable(t);
   if (t.text == "R" && tok().is("[")) {
     ++i_;
     ExprPtr e = expr(0);

@@ -113,8 +113,6 @@ bool lexLine(std::string_view s, std::vector<Token> &out, std::string &err, uint
       size_t used = readSinNumber(s.substr(i), t.num, t.isInt);
       t.kind = Tok::Number;
       i += used;
-      if (i < n && nameStart(s[i]) && s[i] != '$' && !std::isalpha((unsigned char)s[i]))
-        return err = "invalid number", errCol = t.col, false;
     } else if (c == '"') {
       size_t j = i + 1;
       std::string v;

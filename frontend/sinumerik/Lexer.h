@@ -16,8 +16,7 @@ enum class Tok : uint8_t {
   Name,     // [A-Za-z_$][A-Za-z0-9_]*, upper-cased in text; `X10.5` is one name with a fraction
   Number,   // 12, 1.5, .5, 1.5EX-3, 'H1F', 'B101'
   String,   // "text" (value without quotes)
-  Punct,    // + - * / ( ) [ ] , = == <> < > <= >= << :
-  Slash0,   // never produced: `/` is a Punct; skip levels are read before lexing
+  Punct,    // + - * / ( ) [ ] , = == <> < > <= >= << :  (skip levels are read before lexing)
 };
 
 struct Token {

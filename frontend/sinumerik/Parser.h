@@ -36,7 +36,6 @@ struct CtlFrame {
   ir::Region *region;       // where the body's ops go
   ir::Op *op = nullptr;     // the if/while/loop op (its regions)
   ir::ExprPtr forVar;       // FOR: the counter
-  ir::Region *outer;        // the region the structure's op is in
 };
 
 // One file's function.
@@ -57,7 +56,6 @@ public:
   ModeValue plane = ModeValue::XY;  // static: the plane of ROT RPL= (docs/SINUMERIK.md)
   ModeValue motion = ModeValue::Count;  // static: G0/G1 for G53 blocks
   bool sawStatement = false;                // a statement before: PROC must be first
-  unsigned endLabels = 0;
   std::map<std::string, std::vector<Token>> macros;  // DEFINE NAME AS … of this program
   // DEFINE NAME AS tokens: stores the macro (true); other lines: replaces macro names by their
   // tokens (SIN-MAC-01). False with an error reported.
@@ -74,7 +72,7 @@ public:
   Diagnostics &diags;
   ir::Module &module;
   std::map<std::string, Signature> procs;  // by upper-case name
-  std::set<std::string> missing, loading;
+  std::set<std::string> missing;
   std::vector<ir::Function> done;
   bool modalCalls = false;  // some file read so far has MCALL: blocks may trigger it (docs/IR.md §5.5)
   bool ok = true;
@@ -148,7 +146,7 @@ private:
   ir::ExprPtr unary();
   ir::ExprPtr primary();
   ir::ExprPtr nameExpr(const Token &t);
-  ir::ExprPtr variable(const Token &t, bool target);
+  ir::ExprPtr variable(const Token &t);  // a declared variable, its element or frame component
   ir::ExprPtr systemVar(const Token &t);
   ir::ExprPtr function(const Token &t);
   ir::ExprPtr indexList(std::vector<ir::ExprPtr> &out, bool axisOk);
