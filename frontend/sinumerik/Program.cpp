@@ -133,6 +133,7 @@ bool FunctionParser::run() {
     // Skip level: `/` or `/0`…`/9` before the block (the Fundamentals manual). Blanked out
     // in a copy so that columns stay those of the source line.
     std::string copy(line);
+    if (lineNo == 1 && copy.rfind("\xEF\xBB\xBF", 0) == 0) copy.replace(0, 3, "   ");  // a UTF-8 byte order mark
     size_t first = copy.find_first_not_of(" \t");
     if (first != std::string::npos && copy[first] == '/') {
       int skip = 0;
