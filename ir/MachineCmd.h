@@ -19,11 +19,12 @@ namespace ncc {
 // intermediate point of an arc through three points (Sinumerik CIP I1 J1 K1), read like X Y Z.
 // A dialect's new word is one row here (and one in kWordKeys); a command holds up to 64.
 // Depth … RoughFeed are the region pocket's parameters (contour action=run use=pocket,
-// docs/IR.md §5.6).
+// docs/IR.md §5.6). Opening is an arc's opening angle in degrees (Sinumerik AR=),
+// ChamferLeg a chamfer given by its legs, the distance from the corner along each move (CHR=).
 enum class Word : uint8_t {
   X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, PolarR, PolarA, Chamfer, Round,
   ViaX, ViaY, ViaZ, Depth, Infeed, Surface, Clearance, Height, Stepover, Overlap, SideAllowance,
-  FloorAllowance, Direction, PlungeFeed, RoughFeed, Count
+  FloorAllowance, Direction, PlungeFeed, RoughFeed, Opening, ChamferLeg, Count
 };
 constexpr int kWords = (int)Word::Count;
 static_assert(kWords <= 64, "MachineCmd::mask has 64 bits");
@@ -31,7 +32,7 @@ constexpr const char *kWordKeys[kWords] = {
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R", "P", "Q", "L", "F", "S", "T", "H", "D", "E",
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
-    "plunge_feed", "feed"};
+    "plunge_feed", "feed", "opening", "chamfer_leg"};
 // A word's address letter (the key's one character), 0 for a named word.
 constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;

@@ -45,10 +45,13 @@ struct Elem {
 }  // namespace
 
 bool Executor::Impl::cornerRequest(const MachineCmd &c) {
-  if (c.has(Word::Chamfer) && c.has(Word::Round)) return error("a chamfer and a rounding in one block", "corner-invalid");
+  const bool leg = c.has(Word::ChamferLeg);
+  if (c.has(Word::Chamfer) + leg + c.has(Word::Round) > 1)
+    return error("one chamfer or rounding in a block", "corner-invalid");
   corner.reqNextAxis = -1, corner.reqNextSign = 0;
-  if (!c.has(Word::Chamfer) && !c.has(Word::Round) && !turnCornerRequest(c)) return false;
+  if (!c.has(Word::Chamfer) && !leg && !c.has(Word::Round) && !turnCornerRequest(c)) return false;
   double size = c.has(Word::Chamfer) ? c.get(Word::Chamfer) * scale()
+                : leg                ? c.get(Word::ChamferLeg) * scale()
                 : c.has(Word::Round) ? c.get(Word::Round) * scale()
                                      : corner.reqSize;
   if (!(size > 0)) return error("a chamfer or rounding must be greater than 0", "corner-invalid");
@@ -63,6 +66,7 @@ bool Executor::Impl::cornerRequest(const MachineCmd &c) {
   corner.requested = true;
   corner.reqRound = c.has(Word::Round) || (corner.reqNextAxis >= 0 && corner.reqRound);
   corner.reqSize = size;
+  corner.reqLeg = leg;
   return true;
 }
 
@@ -150,7 +154,7 @@ bool Executor::Impl::cornerNext(const MotionRecord &nextIn) {
   // The corner angle between the lines, half of it, and the distance from the corner to the
   // points where the element meets each line.
   double half = std::acos(std::max(-1.0, std::min(1.0, -dot))) / 2;
-  double dist = corner.round ? corner.size / std::tan(half) : corner.size / (2 * std::sin(half));
+  double dist = corner.round ? corner.size / std::tan(half) : corner.leg ? corner.size : corner.size / (2 * std::sin(half));
   if (dist > l1 + 1e-9 || dist > l2 + 1e-9) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "the %s does not fit: it takes %.4f mm of each move (%.4f and %.4f long)",

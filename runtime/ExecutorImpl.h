@@ -203,6 +203,7 @@ struct Executor::Impl {
   struct Corner {
     bool requested = false, active = false;
     bool reqRound = false, round = false;  // requested by the move being executed / of the active corner
+    bool reqLeg = false, leg = false;      // a chamfer's size is its legs (Sinumerik CHR), not its length
     double reqSize = 0, size = 0;          // mm
     // The lathe form without a comma (G01 X.. K-3.): the axis (0 X, 2 Z; -1 any) and the sign
     // the next move must go along, requested / of the active corner.

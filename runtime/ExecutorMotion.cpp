@@ -85,7 +85,7 @@ bool Executor::Impl::emitMove(const MotionRecord &r) {
       return error("a chamfer or rounding needs a G1, G2 or G3 move", "unsupported-code");
     corner.active = true;
     corner.move = r;
-    corner.round = corner.reqRound, corner.size = corner.reqSize;
+    corner.round = corner.reqRound, corner.size = corner.reqSize, corner.leg = corner.reqLeg;
     corner.nextAxis = corner.reqNextAxis, corner.nextSign = corner.reqNextSign;
     return true;
   }
@@ -110,7 +110,7 @@ bool Executor::Impl::pathOut(const MotionRecord &r) {
 
 bool Executor::Impl::execMove(const MachineCmd &c) {
   const bool turnCorner = st.motion == ModeValue::Linear && (c.has(Word::I) || c.has(Word::K) || c.has(Word::R));
-  if ((c.has(Word::Chamfer) || c.has(Word::Round) || turnCorner) && !cornerRequest(c)) return false;
+  if ((c.has(Word::Chamfer) || c.has(Word::ChamferLeg) || c.has(Word::Round) || turnCorner) && !cornerRequest(c)) return false;
   switch (st.motion) {
   case ModeValue::Rapid:
     if (!(c.mask & kTargetMask)) return true;
@@ -179,11 +179,13 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
         tilted = false;
       }
   }
-  const AxisVec end = target(c);
+  AxisVec end = target(c);
   // Computed in the offset frame (ExecutorImpl.h): I J K and R are program values.
-  const AxisVec start = frameIn(st.position), fend = frameIn(end);
+  const AxisVec start = frameIn(st.position);
+  AxisVec fend = frameIn(end);
   const bool inch = st.units == ModeValue::Inch;
-  const double s1 = start[ax.a1], s2 = start[ax.a2], e1 = fend[ax.a1], e2 = fend[ax.a2];
+  const double s1 = start[ax.a1], s2 = start[ax.a2];
+  double e1 = fend[ax.a1], e2 = fend[ax.a2];
   double c1, c2;
   // The offset word of the axis normal to the plane (K in G17, J in G18, I in G19).
   static const Word kNormalWord[] = {Word::K, Word::J, Word::I};
@@ -193,10 +195,23 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
     return error(std::string(kWordKeys[(int)normal]) + " word given for arc in " + kPlaneNames[(int)plane()] +
                      " plane",
                  "arc-invalid");
-  if (!c.has(Word::R) && !c.has(ax.o1) && !c.has(ax.o2))
+  if (!c.has(Word::R) && !c.has(ax.o1) && !c.has(ax.o2) && !c.has(Word::Opening))
     return error("R i j k words all missing for arc", "arc-invalid");
-  if (c.has(Word::R)) {
-    double rr = c.get(Word::R) * scale();
+  // Sinumerik AR= (degrees, 0 < AR < 360): with the end point it gives the radius, with the
+  // centre the end point (the plane's end coordinates must then be left out).
+  const bool opening = c.has(Word::Opening), openingCentre = opening && (c.has(ax.o1) || c.has(ax.o2));
+  const double ar = c.get(Word::Opening);
+  if (opening && !(ar > 0 && ar < 360)) return error("the opening angle AR must lie between 0 and 360 degrees", "arc-invalid");
+  if (opening && c.has(Word::R)) return error("an arc takes one of a radius and an opening angle", "arc-invalid");
+  if (openingCentre && (c.has((Word)ax.a1) || c.has((Word)ax.a2)))
+    return error(std::string("an arc with its centre and opening angle takes no end point in the plane (") + ax.l1 + ", " +
+                     ax.l2 + ")",
+                 "arc-invalid");
+  if (c.has(Word::R) || (opening && !openingCentre)) {
+    double dx0 = e1 - s1, dy0 = e2 - s2, chord0 = std::hypot(dx0, dy0);
+    // The chord subtends AR at the centre: r = (chord / 2) / sin(AR / 2), past 180 the long way.
+    double rr = c.has(Word::R) ? c.get(Word::R) * scale()
+                               : chord0 / 2 / std::sin(ar * M_PI / 360) * (ar > 180 ? -1.0 : 1.0);
     double dx = e1 - s1, dy = e2 - s2, chord = std::hypot(dx, dy);
     if (chord == 0) return error("Current point same as end point of arc", "arc-invalid");
     double half = chord / 2, h = 0;
@@ -218,6 +233,13 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
     };
     c1 = absolute(ax.o1) ? o1 + frameOffset(ax.a1) : s1 + o1;
     c2 = absolute(ax.o2) ? o2 + frameOffset(ax.a2) : s2 + o2;
+    if (openingCentre) {  // the start turned about the centre by AR, clockwise under G2
+      double a = (cw ? -ar : ar) * M_PI / 180, u = s1 - c1, v = s2 - c2;
+      e1 = c1 + u * std::cos(a) - v * std::sin(a);
+      e2 = c2 + u * std::sin(a) + v * std::cos(a);
+      fend[ax.a1] = e1, fend[ax.a2] = e2;
+      end = frameOut(fend);
+    }
     double r1 = std::hypot(s1 - c1, s2 - c2), r2 = std::hypot(e1 - c1, e2 - c2);
     if (r1 == 0) return error("Zero-radius arc", "arc-invalid");
     double absErr = std::fabs(r1 - r2), relErr = absErr / std::max(r1, r2);

@@ -21,6 +21,7 @@ enum class GAct : uint8_t {
   CutterComp,    // G40/G41/G42 (arg: 0 off, 1 left, 2 right)
   Frame,         // TRANS ROT SCALE MIRROR and their additive forms (arg: FrameKind)
   Units,         // G70/G71/G700/G710 (arg: 0 mm, 1 inch, 2 G70 refused: its feed stays metric)
+  Pole,          // G110/G111/G112 (arg: 0 last position, 1 workpiece origin, 2 last pole)
 };
 
 enum class FrameKind : uint8_t { Trans, Rot, Scale, Mirror };
@@ -51,7 +52,10 @@ enum class Addr : uint8_t {
   Center,   // I J K
   Via,      // I1 J1 K1 (CIP's intermediate point)
   Radius,   // CR
-  Corner,   // CHF (chamfer length), RND (rounding)
+  Opening,  // AR (the opening angle of an arc, degrees)
+  Turns,    // TURN (extra full turns of a helix)
+  Polar,    // AP RP (polar angle and radius about the pole)
+  Corner,   // CHF (chamfer length), CHR (chamfer legs), RND (rounding)
   Feed, Speed, Tool, Edge, Misc, G,
   Ignored,  // ADIS ADISPOS: rounding distances of G641/G642, which are refused themselves
   Refused,  // an address ncc knows but does not simulate (AR, AP, RP, CHR, RNDM, TURN, OFFN, SF, LIMS …)

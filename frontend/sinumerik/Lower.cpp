@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace ncc::sin {
 
 using ir::Expr;
@@ -45,7 +47,7 @@ bool BlockParser::lowerWords() {
     w->addr.clear();
     return std::move(w->value);
   };
-  const GInfo *dwell = nullptr, *offset = nullptr, *machine = nullptr, *comp = nullptr;
+  const GInfo *dwell = nullptr, *offset = nullptr, *machine = nullptr, *comp = nullptr, *pole = nullptr;
   Op mode(OpKind::Mode, loc(t_[0]));
   for (auto &[g, l] : gcodes_) {
     switch (g.act) {
@@ -54,10 +56,13 @@ bool BlockParser::lowerWords() {
       ModeGroup grp = modeValueInfo(g.mode).group;
       mode.set(modeGroupName(grp), Expr::symbol(modeValueInfo(g.mode).name));
       mode.loc = l;
+      if (grp == ModeGroup::Plane && g.mode != f_.plane) f_.poleKnown = f_.apKnown = false;  // polar: PGsl
       if (grp == ModeGroup::Plane) f_.plane = g.mode;
       if (grp == ModeGroup::Motion) f_.motion = g.mode;
+      if (grp == ModeGroup::Distance) f_.distance = g.mode;
       break;
     }
+    case GAct::Pole: pole = &g; break;
     case GAct::Dwell: dwell = &g; break;
     case GAct::WorkOffset: offset = &g; break;
     case GAct::MachineCoord: machine = &g; break;
@@ -66,6 +71,7 @@ bool BlockParser::lowerWords() {
     }
   }
   SourceLoc bl = loc(t_[0]);
+  if (pole) return lowerPole(*pole, out);
   if (dwell) {
     // G4 F<seconds> or G4 S<revolutions>, alone in its block (L: G4 programming).
     for (auto &w : words_)
@@ -158,6 +164,10 @@ bool BlockParser::lowerWords() {
   Op mv(OpKind::Move, bl);
   std::string ac, ic;
   bool any = false, path = false;
+  if (word("AP") || word("RP")) {
+    if (!lowerPolarMove(mv, ac, out)) return false;
+    any = path = true;
+  }
   for (auto &w : words_) {
     if (w.addr.empty()) continue;
     const AddrInfo *a = findAddress(w.addr);
@@ -170,7 +180,19 @@ bool BlockParser::lowerWords() {
       if (w.mode) return fail(t_[0], fmt::format("{}=AC()/IC() is not simulated", w.addr), "unsupported-code");
       break;
     case Addr::Radius: key = "R"; break;
-    case Addr::Corner: key = w.addr == "CHF" ? "chamfer" : "round"; break;
+    case Addr::Opening: key = "opening"; break;
+    case Addr::Turns:
+      // TURN=n: n full turns beyond the programmed arc, the core's turn count n + 1 (RS274NGC's P).
+      if (f_.motion != ModeValue::ArcCW && f_.motion != ModeValue::ArcCCW && f_.motion != ModeValue::Count)
+        return fail(t_[0], "TURN= (extra full turns) needs G2 or G3", "arc-invalid");
+      if (w.value->kind == ir::ExprKind::Number && (w.value->num < 0 || w.value->num > 999 || w.value->num != std::floor(w.value->num)))
+        return fail(t_[0], "TURN= takes a whole number of turns from 0 to 999", "arc-invalid");
+      key = "P";
+      w.value = Expr::binary(ir::OpCode::Add, std::move(w.value), Expr::number(1, ir::Type::Int), w.loc);
+      break;
+    case Addr::Corner:  // CHF the chamfer's length, CHR its legs along the two moves
+      key = w.addr == "CHF" ? "chamfer" : w.addr == "CHR" ? "chamfer_leg" : "round";
+      break;
     default: return fail(t_[0], fmt::format("address {} cannot be used here", w.addr), "unused-word");
     }
     if (w.mode && a->kind != Addr::Axis && a->kind != Addr::Center && a->kind != Addr::Via)

@@ -55,6 +55,9 @@ public:
   std::vector<ir::Region *> regions;        // innermost last
   ModeValue plane = ModeValue::XY;  // static: the plane of ROT RPL= (docs/SINUMERIK.md)
   ModeValue motion = ModeValue::Count;  // static: G0/G1 for G53 blocks
+  ModeValue distance;                    // static: G90/G91 (the main program starts in G90)
+  bool poleKnown = true;                 // static: no plane change since the last G110/G111 (docs/SINUMERIK.md)
+  bool apKnown = false;                  // static: AP= programmed since the last pole definition
   bool sawStatement = false;                // a statement before: PROC must be first
   std::map<std::string, std::vector<Token>> macros;  // DEFINE NAME AS … of this program
   // DEFINE NAME AS tokens: stores the macro (true); other lines: replaces macro names by their
@@ -74,6 +77,7 @@ public:
   std::map<std::string, Signature> procs;  // by upper-case name
   std::set<std::string> missing;
   std::vector<ir::Function> done;
+  bool polar = false;       // some file uses polar coordinates: the main program declares their state
   bool modalCalls = false;  // some file read so far has MCALL: blocks may trigger it (docs/IR.md §5.5)
   bool ok = true;
 
@@ -141,6 +145,10 @@ private:
   bool closeCtl(Ctl want, const char *name, const Token &at);
   void openCtl(Ctl kind, ir::Op op, SourceLoc l);
   bool lowerWords();
+  Word *findWord(std::string_view addr);
+  ir::ExprPtr takeWord(std::string_view addr, char *mode);  // the value; the word is used up
+  bool lowerPole(const GInfo &g, ir::Region &out);           // Polar.cpp
+  bool lowerPolarMove(ir::Op &mv, std::string &ac, ir::Region &out);
 
   // expressions
   ir::ExprPtr unary();
@@ -159,6 +167,8 @@ private:
 
 // The number of elements of a declared array (1 for a scalar).
 size_t elementCount(const VarDecl &d);
+// Declares the polar coordinates' program-wide state at the start of the main program.
+void declarePolarState(ir::Region &mainBody);
 // `assign target= value=` at l.
 ir::Op assignOp(ir::ExprPtr target, ir::ExprPtr value, SourceLoc l);
 // A builtin call with the given arguments.

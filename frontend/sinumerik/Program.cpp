@@ -10,7 +10,7 @@
 namespace ncc::sin {
 
 FunctionParser::FunctionParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain)
-    : pp(pp), file(file), isMain(isMain) {
+    : pp(pp), file(file), isMain(isMain), distance(isMain ? ModeValue::Absolute : ModeValue::Count) {
   fn.name = std::move(name);
   fn.loc = {file, 1, 1};
   regions.push_back(&fn.body);
@@ -253,6 +253,7 @@ bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions 
   ProgramParser pp(sm, opts, diags, out);
   FunctionParser main(pp, fileId, "main", true);
   bool ok = main.run();
+  if (pp.polar) declarePolarState(main.fn.body);
   out.functions.clear();
   out.functions.push_back(std::move(main.fn));
   for (auto &f : pp.done) out.functions.push_back(std::move(f));

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compiles a one-block program for every G code of GCodeTable.inc and counts what the front end
 does with it: runs (executed or the group's initial setting), refused as not simulated, needs
-words of its block (G4 F, G53 X …), or any other error (printed: there must be none).
+words of its block (G4 F, G53 X …, G110-G112 a pole), or any other error (printed: there must be none).
 
 usage: each-gcode.py NCC GCodeTable.inc TMPDIR"""
 import os
