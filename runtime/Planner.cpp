@@ -420,6 +420,7 @@ void Planner::record(const MotionRecord &r) {
   case RecordKind::Linear:
   case RecordKind::Arc:
   case RecordKind::Spline:
+  case RecordKind::Probe:  // a straight feed; its exact_stop ends it at rest
     push(r);
     return;
   case RecordKind::SpindleSpeed:
