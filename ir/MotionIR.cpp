@@ -209,7 +209,7 @@ std::string probeError(const MotionRecord &r) {
   const ProbeData &p = r.probe();
   if (!(r.feed > 0) || !std::isfinite(r.feed)) return fmt::format("a probe move needs a positive feed, not {}", r.feed);
   if (!r.exactStop) return "a probe move stops at its end (exact_stop)";
-  if (p.target == r.start) return "a probe move's target is its start";
+  if (p.target == r.start && p.missIsError) return "a probe that must trip (miss=error) cannot have its start as its target";
   for (double v : p.target)
     if (!std::isfinite(v)) return "a probe target is not finite";
   if (!p.tripped) {
@@ -222,6 +222,7 @@ std::string probeError(const MotionRecord &r) {
   int k = 0;
   for (int i = 1; i < kAxes; ++i)
     if (std::fabs(p.target[i] - r.start[i]) > std::fabs(p.target[k] - r.start[k])) k = i;
+  if (p.target == r.start) return r.end == r.start ? "" : "a probe to its start stops there";
   double t = (r.end[k] - r.start[k]) / (p.target[k] - r.start[k]);
   if (!(t >= 0 && t <= 1)) return "a probe stops between its start and its target";
   for (int i = 0; i < kAxes; ++i)

@@ -157,7 +157,8 @@ bool sysFamilyWritable(SysFamily f) {
 }
 
 bool sysVarWritable(SysVar v) {
-  return v == SysVar::PFrame || v == SysVar::IFrame || sysFamilyWritable(sysVarInfo(v).family);
+  return v == SysVar::PFrame || v == SysVar::IFrame || (v >= SysVar::ProbeX && v <= SysVar::ProbeTripped) ||
+         sysFamilyWritable(sysVarInfo(v).family);
 }
 
 bool sysVarIsFrame(SysVar v) {

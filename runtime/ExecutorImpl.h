@@ -391,7 +391,7 @@ struct Executor::Impl {
   AxisVec programUnits(const AxisVec &machinePos) const;  // program coordinates and units
   size_t probeNext = 0;    // the probe-results line the next probe move takes
   AxisVec probeResult{};   // #5061-#5069: the last probe's stop, program coordinates and units
-  bool probeTripped = false;  // #5070
+  double probeTripped = 0;  // #5070: 1 after a trip (a program may write any value)
   // --- contour capture (ExecutorContour.cpp) ---
   bool execContour(const MachineCmd &c);
   struct Capture {

@@ -40,7 +40,8 @@ bool Executor::Impl::probeMove(const MachineCmd &c) {
   if (compExit || corner.active || corner.requested)  // the move would not start where it is programmed
     return error(fmt::format("{} cannot be the move after G40 or a chamfer/rounding", m.code), "unsupported-code");
   const AxisVec to = target(c);
-  if (to == st.position) return error("Start point too close to probe point", "probe-invalid");
+  // rs274 checks this for G38.2 and G38.4 only: G38.3 and G38.5 may probe where they stand.
+  if (m.missIsError && to == st.position) return error("Start point too close to probe point", "probe-invalid");
   const std::shared_ptr<const ProbeResults> &results = machine.probeResults;
   if (!results)
     return error(fmt::format("{} needs a probe-results file (--probe-results=FILE, docs/PROBING.md): where the probe "
@@ -75,7 +76,7 @@ bool Executor::Impl::probeMove(const MachineCmd &c) {
   r.setProbe(ProbeData{to, m.signal, m.missIsError, o.tripped});
   if (std::string bad = probeError(r); !bad.empty()) return error(bad, "probe-invalid");
   for (int i = 0; i < kAxes; ++i) probeResult[i] = t == 1 ? aim[i] : from[i] + t * (aim[i] - from[i]);
-  probeTripped = o.tripped;
+  probeTripped = o.tripped ? 1 : 0;
   st.position = r.end;
   return emitMove(r);
 }

@@ -363,7 +363,7 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::ProbeU:
   case SysVar::ProbeV:
   case SysVar::ProbeW: out = x.probeResult[(int)v - (int)SysVar::ProbeX]; return true;
-  case SysVar::ProbeTripped: out = is(x.probeTripped); return true;
+  case SysVar::ProbeTripped: out = x.probeTripped; return true;
   case SysVar::PFrame:
   case SysVar::IFrame:
   case SysVar::ActFrame:  // FRAME values: readFrame (ExecutorFrames.cpp)
@@ -395,6 +395,11 @@ bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::
   if (!sysVarWritable(ref.var)) {
     err = fmt::format("system variable '${}' is read-only", sysRefText(ref));
     return false;
+  }
+  if (ref.var >= SysVar::ProbeX && ref.var <= SysVar::ProbeTripped) {  // rs274 lets a program set them
+    if (ref.var == SysVar::ProbeTripped) x.probeTripped = value;
+    else x.probeResult[(int)ref.var - (int)SysVar::ProbeX] = value;
+    return true;
   }
   if (!std::isfinite(value) || std::fabs(value) > 1e9) {
     err = fmt::format("system variable '${}': {} is not a valid offset", sysRefText(ref), numberText(value));

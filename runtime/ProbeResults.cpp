@@ -95,6 +95,14 @@ bool probeStopFraction(const ProbeOutcome &o, const AxisVec &start, const AxisVe
   for (int i = 0; i < kAxes; ++i)
     if (o.has[i] && (k < 0 || std::fabs(target[i] - start[i]) > std::fabs(target[k] - start[k]))) k = i;
   if (!o.tripped || k < 0) return true;
+  if (target == start) {  // G38.3/G38.5 where the machine stands: a trip can only be there
+    for (int i = 0; i < kAxes; ++i)
+      if (o.has[i] && !(std::fabs(o.at[i] - start[i]) <= kOnLine)) {
+        err = fmt::format("{}{} is not where this probe move starts and ends ({})", kAxisLetters[i], o.at[i], start[i]);
+        return false;
+      }
+    return true;
+  }
   if (target[k] == start[k]) {
     err = fmt::format("{} does not move in this probe move: give an axis that does", kAxisLetters[k]);
     return false;

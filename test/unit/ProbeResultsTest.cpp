@@ -81,6 +81,8 @@ TEST(ProbeResults, StopFractionRefusals) {
   EXPECT_FALSE(probeStopFraction(outcome({{2, -1}}), start, target, t, err));  // past the target
   EXPECT_FALSE(probeStopFraction(outcome({{2, 10}}), start, target, t, err));  // at the start
   EXPECT_NE(err.find("between"), std::string::npos);
+  EXPECT_TRUE(probeStopFraction(outcome({{2, 10}}), start, start, t, err)) << err;  // no motion: there
+  EXPECT_FALSE(probeStopFraction(outcome({{2, 9}}), start, start, t, err));
 }
 
 TEST(ProbeRecord, Verifier) {
@@ -104,6 +106,11 @@ TEST(ProbeRecord, Verifier) {
   EXPECT_EQ(probeError(r), "");
   r.setProbe(ProbeData{{0, 0, 0}, ProbeSignal::Release, true, false});
   EXPECT_NE(probeError(r), "");  // a miss that is an error never becomes a record
+  r.start = r.end = {0, 0, 0};  // G38.3/G38.5 where the machine stands
+  r.setProbe(ProbeData{{0, 0, 0}, ProbeSignal::Release, false, true});
+  EXPECT_EQ(probeError(r), "");
+  r.setProbe(ProbeData{{0, 0, 0}, ProbeSignal::Release, true, true});
+  EXPECT_NE(probeError(r), "");
 }
 
 }  // namespace
