@@ -217,12 +217,12 @@ std::string probeError(const MotionRecord &r) {
     if (r.end != p.target) return "a probe that did not trip ends at its target";
     return {};
   }
+  if (p.target == r.start) return r.end == r.start ? "" : "a probe to its start stops there";  // G38.3/G38.5
   // The stop lies on the segment: its parameter along the axis that moves most, every axis
   // within 1 nm (1e-6 degree) of that point.
   int k = 0;
   for (int i = 1; i < kAxes; ++i)
     if (std::fabs(p.target[i] - r.start[i]) > std::fabs(p.target[k] - r.start[k])) k = i;
-  if (p.target == r.start) return r.end == r.start ? "" : "a probe to its start stops there";
   double t = (r.end[k] - r.start[k]) / (p.target[k] - r.start[k]);
   if (!(t >= 0 && t <= 1)) return "a probe stops between its start and its target";
   for (int i = 0; i < kAxes; ++i)

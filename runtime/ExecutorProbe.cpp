@@ -32,7 +32,9 @@ AxisVec Executor::Impl::programUnits(const AxisVec &machinePos) const {
 }
 
 bool Executor::Impl::probeMove(const MachineCmd &c) {
-  const ProbeMode &m = kProbeModes[(int)st.motion - (int)ModeValue::ProbeToward];
+  const ProbeMode *mode = kProbeModes;
+  while (mode->mode != st.motion) ++mode;  // execMove calls it in the four probe modes only
+  const ProbeMode &m = *mode;
   if (!compForbids("Cannot probe with cutter radius comp on")) return false;
   if (st.feedMode == ModeValue::InverseTime) return error("Cannot probe in inverse time feed mode", "motion-without-feed");
   if (st.feedMode == ModeValue::PerRev) return error("Cannot probe with feed per rev mode", "motion-without-feed");
