@@ -48,6 +48,8 @@ static const LintRule kRules[] = {
      "a probe move (G38.2-G38.5) without a probe-results file (--probe-results, docs/PROBING.md): where the probe switches is not in the program"},
     {"probe-results", Severity::Error, "driver / executor",
      "a probe-results file ncc cannot read (a line other than trip, end or miss with axis positions), more probe moves than its lines, or a line whose point is not on its probe move between the start and the target"},
+    {"probe-results-unused", Severity::Warning, "executor",
+     "a run that ended before it used every line of its probe-results file: the file does not describe this run"},
     {"probe-miss", Severity::Error, "executor",
      "G38.2 or G38.4 whose probe-results line is miss: LinuxCNC stops with an error when the probe does not switch"},
     {"probe-invalid", Severity::Error, "executor",

@@ -389,6 +389,7 @@ struct Executor::Impl {
   // --- probing G38.2-G38.5 (ExecutorProbe.cpp) ---
   bool probeMove(const MachineCmd &c);
   AxisVec programUnits(const AxisVec &machinePos) const;  // program coordinates and units
+  void probeResultsUnused();  // at the end of a run: a warning when lines of the file were left
   size_t probeNext = 0;    // the probe-results line the next probe move takes
   AxisVec probeResult{};   // #5061-#5069: the last probe's stop, program coordinates and units
   double probeTripped = 0;  // #5070: 1 after a trip (a program may write any value)

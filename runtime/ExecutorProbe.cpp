@@ -83,4 +83,16 @@ bool Executor::Impl::probeMove(const MachineCmd &c) {
   return emitMove(r);
 }
 
+// Lines left over mean the file does not describe this run (another branch was taken, or it
+// belongs to another program).
+void Executor::Impl::probeResultsUnused() {
+  const ProbeResults *results = machine.probeResults.get();
+  if (!results || probeNext >= results->outcomes.size()) return;
+  diags.warning(results->outcomes[probeNext].loc,
+                fmt::format("the run made {} probe move{}, but the probe-results file has {} lines: this one and the "
+                            "ones after it were not used",
+                            probeNext, probeNext == 1 ? "" : "s", results->outcomes.size()),
+                "probe-results-unused");
+}
+
 }  // namespace ncc
