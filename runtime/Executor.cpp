@@ -559,6 +559,15 @@ uint64_t Executor::blockCount() const { return impl_->blocks; }
 
 const ModalState &Executor::state() const { return impl_->st; }
 
+// The blocks before `last` only count: a block that follows a block sees no frame change.
+bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
+  if (count > 1) {
+    impl_->curBlockFrame = false;
+    impl_->blocks += count - 1;
+  }
+  return count == 0 || exec(last);
+}
+
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;

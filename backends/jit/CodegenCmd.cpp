@@ -36,7 +36,8 @@ void Codegen::emitMachineOp(const ir::Op &op) {
   CmdTemplate t;
   if (!buildCmdTemplate(op, t, quiet)) return;
   if (t.slots.empty() && !t.text) {
-    appendToRun(t.base);
+    if (t.base.kind == CmdKind::Block && blkOn_ && run_.empty() && packed_.empty()) emitBlockCmd(t.base);
+    else appendToRun(t.base);
     return;
   }
   flushRun();
@@ -66,15 +67,26 @@ void Codegen::flushRun() {
     auto *arrTy = ArrayType::get(cmdTy, cmds.size());
     auto *gv = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage, ConstantArray::get(arrTy, cmds),
                                   "nc.cmds");
-    st = B.CreateCall(fExecTable, {ctxArg, gv, B.getInt64(cmds.size())});
+    st = sinkCall(fExecTable, {ctxArg, gv, B.getInt64(cmds.size())});
   } else {
     Constant *data = ConstantDataArray::getString(C, packed_, false);
     auto *gv = new GlobalVariable(*M, data->getType(), true, GlobalValue::PrivateLinkage, data, "nc.table");
-    st = B.CreateCall(fExecPacked, {ctxArg, gv, B.getInt64(packed_.size())});
+    st = sinkCall(fExecPacked, {ctxArg, gv, B.getInt64(packed_.size())});
     std::string().swap(packed_);
   }
   run_.clear();
   checkStatus(st);
+}
+
+// A Block command that starts a run waits for the next call that reaches the target (a loop of
+// assignments makes no call per block).
+void Codegen::emitBlockCmd(const MachineCmd &c) {
+  ensureOpen();
+  auto *arrTy = ArrayType::get(cmdTy, 1);
+  auto *gv = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage,
+                                ConstantArray::get(arrTy, {cmdConstant(c)}), "nc.block");
+  B.CreateStore(B.CreateAdd(B.CreateLoad(i64Ty, blkCount), B.getInt64(1)), blkCount);
+  B.CreateStore(gv, blkLast);
 }
 
 // Operands in template order: a vacant value leaves its word out, a non-finite one is an error.
@@ -99,7 +111,7 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
     bool fixed = t.base.kind == CmdKind::Message && t.base.sub != (uint8_t)MessageKind::Msg;
     B.CreateStore(stringValue(*t.text, fixed), B.CreateStructGEP(cmdTy, cmdSlot, 8));
   }
-  checkStatus(B.CreateCall(fExec, {ctxArg, cmdSlot}));
+  checkStatus(sinkCall(fExec, {ctxArg, cmdSlot}));
 }
 
 }  // namespace ncc::jit
