@@ -323,6 +323,7 @@ void Codegen::emitFunction(FnInfo &fi) {
   depthPtr = field(6);
   pollPtr = field(7);
   cmdSlot = argSlot = nullptr;
+  siteSlots_ = 0;
   backJumps = B.CreateAlloca(i64Ty, nullptr, "backjumps");
   scratch = B.CreateAlloca(dblTy, nullptr, "scratch");
   B.CreateStore(B.getInt64(0), backJumps);

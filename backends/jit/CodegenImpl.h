@@ -182,6 +182,7 @@ private:
   void appendToRun(const MachineCmd &c);
   void flushRun();
   void emitDynamicCmd(const CmdTemplate &t);
+  llvm::Value *cmdSiteSlot(const MachineCmd &base);
   llvm::Constant *cmdConstant(const MachineCmd &c);
 
   const ir::Module &src_;
@@ -230,6 +231,7 @@ private:
   llvm::Value *lastIndex = nullptr;    // index of the last array element addressed
   llvm::Value *cmdSlot = nullptr, *argSlot = nullptr, *backJumps = nullptr, *scratch = nullptr;
   llvm::Value *blkCount = nullptr, *blkLast = nullptr;
+  unsigned siteSlots_ = 0;  // commands in loops with a slot of their own (cmdSiteSlot)
   struct LoopTargets {
     llvm::BasicBlock *cont, *brk;
   };
