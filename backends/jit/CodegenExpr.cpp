@@ -525,6 +525,13 @@ Val Codegen::binary(const Expr &e) {
   return {ConstantFP::get(dblTy, 0.0), false};
 }
 
+// Builtins that are one IEEE operation on num() of their argument: inline, bit for bit the
+// C function's result (ir/Builtins.cpp), and no call left in a loop.
+static const std::pair<std::string_view, Intrinsic::ID> kInlineBuiltins[] = {
+    {"ncc_builtin_abs", Intrinsic::fabs},   {"ncc_builtin_round", Intrinsic::round},
+    {"ncc_builtin_fix", Intrinsic::floor},  {"ncc_builtin_fup", Intrinsic::ceil},
+    {"ncc_builtin_trunc", Intrinsic::trunc}};
+
 // Builtins get num() arguments; a NaN result is the eval engine's domain error.
 Val Codegen::callBuiltin(const Expr &e) {
   if (isExistsCall(e.str, e.args.size()) && e.args[0]) {
@@ -563,8 +570,13 @@ Val Codegen::callBuiltin(const Expr &e) {
     a.mayHandle = false;
     vals.push_back(numOf(a));
   }
-  for (unsigned i = 0; i < vals.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
-  Value *r = B.CreateCall(builtins_.at(bi->name), {argSlot});
+  Value *r = nullptr;
+  for (auto &[symbol, id] : kInlineBuiltins)
+    if (vals.size() == 1 && symbol == bi->symbol) r = B.CreateUnaryIntrinsic(id, vals[0]);
+  if (!r) {
+    for (unsigned i = 0; i < vals.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
+    r = B.CreateCall(builtins_.at(bi->name), {argSlot});
+  }
   failIf(B.CreateFCmpUNO(r, r), e.loc, builtinDomainError(*bi));
   return {r, false};
 }
