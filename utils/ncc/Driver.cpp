@@ -4,6 +4,7 @@
 #include "passes/Eval.h"
 #include "passes/Pass.h"
 #include "runtime/Executor.h"
+#include "runtime/ProbeResults.h"
 
 #include <fmt/format.h>
 
@@ -22,6 +23,7 @@ void addCommonOptions(po::options_description &desc, CommonOptions &o) {
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
       ("include,I", po::value(&o.includeDirs), "folder with subprogram files (after the program's own folder; repeatable)")
       ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)")
+      ("probe-results", po::value(&o.probeResults), "where each probe move (G38.2-G38.5) stops: a probe-results file (docs/PROBING.md)")
       ("max-loop-iterations", po::value(&o.limits.maxLoopIterations)->default_value(o.limits.maxLoopIterations),
        "stop a loop after this many iterations")
       ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
@@ -57,6 +59,12 @@ bool Session::setUp() {
   diags.setFormat(opts.diagnosticsFormat == "json" ? Diagnostics::Format::Json : Diagnostics::Format::Text);
   diags.setWarningsAsErrors(opts.werror);
   if (!loadMachine(opts.machine, machine)) return false;
+  if (!opts.probeResults.empty()) {
+    uint32_t f = open(opts.probeResults);
+    auto results = std::make_shared<ProbeResults>();
+    if (!f || !parseProbeResults(sm, f, diags, *results)) return false;
+    machine.probeResults = std::move(results);
+  }
   if (opts.engine != "eval" && opts.engine != "jit") {
     diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));
     return false;

@@ -29,6 +29,7 @@ struct CommonOptions {
   std::vector<unsigned> blockDelete;
   std::vector<std::string> includeDirs;  // subprogram files, searched after the program's folder
   std::vector<std::string> linkFiles;    // programs/libraries linked in, each read by its own front end
+  std::string probeResults;              // what the simulated probe meets (docs/PROBING.md)
   ExecLimits limits;
   std::string diagnosticsFormat = "text";
   bool werror = false;
