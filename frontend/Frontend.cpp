@@ -99,7 +99,7 @@ namespace {
 class IsoStream : public BlockStream {
 public:
   IsoStream(SourceManager &sm, uint32_t file, const iso::IsoOptions &o, Diagnostics &d) : s_(sm, file, o, d) {}
-  bool next(ir::Region &out, size_t maxBlocks) override { return s_.next(out, maxBlocks); }
+  bool next(ir::Region &out, size_t maxBlocks, CmdSink *lean) override { return s_.next(out, maxBlocks, lean); }
 
 private:
   iso::IsoBlockStream s_;
@@ -108,7 +108,7 @@ private:
 
 std::unique_ptr<BlockStream> openBlockStream(SourceKind kind, SourceManager &sm, uint32_t file,
                                              const FrontendOptions &opts, Diagnostics &diags) {
-  if (kind == SourceKind::ISO && iso::isoIsStreamable(sm.text(file)))
+  if (kind == SourceKind::ISO && iso::isoIsStreamable(sm.text(file), &sm, file))
     return std::make_unique<IsoStream>(sm, file, isoOptions(opts), diags);
   return nullptr;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 namespace ncc {
+class CmdSink;
 
 struct FrontendOptions {
   std::string decimalMode = "calculator";  // numbers without '.', see docs/MACHINE.md
@@ -41,8 +42,10 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
 class BlockStream {
 public:
   virtual ~BlockStream() = default;
-  // Appends up to maxBlocks blocks' ops; false at end of input.
-  virtual bool next(ir::Region &out, size_t maxBlocks) = 0;
+  // Appends up to maxBlocks blocks' ops; false at end of input. With `lean`, blocks that need no
+  // evaluation may go to it as machine commands instead (after `out` has run: the call then
+  // returns early); false also when it refused one.
+  virtual bool next(ir::Region &out, size_t maxBlocks, CmdSink *lean = nullptr) = 0;
 };
 std::unique_ptr<BlockStream> openBlockStream(SourceKind kind, SourceManager &sm, uint32_t file,
                                              const FrontendOptions &opts, Diagnostics &diags);

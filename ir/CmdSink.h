@@ -15,6 +15,15 @@ public:
   virtual ~CmdSink() = default;
   // Returns false to stop the program (the sink has reported why).
   virtual bool exec(const MachineCmd &cmd) = 0;
+  // A sink that answers true takes a run of Block commands with no other command between them
+  // as execBlocks(last, count): the compiled engine (backends/jit) then counts the blocks of a
+  // loop without a call per block. The earlier blocks' numbers and locations are not passed.
+  virtual bool mergesBlocks() const { return false; }
+  virtual bool execBlocks(const MachineCmd &last, uint64_t count) {
+    for (uint64_t i = 0; i < count; ++i)
+      if (!exec(last)) return false;
+    return true;
+  }
   // A system variable's current value (ir/SystemVars.h); false when this sink has none (err
   // empty: the engine reports RunError::SysVar) or it does not exist (a tool or edge the
   // machine lacks: the reason in err, which the engine reports).

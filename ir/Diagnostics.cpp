@@ -5,37 +5,71 @@
 #include <cstdlib>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace ncc {
 
+SourceManager::SourceManager() = default;
+SourceManager::~SourceManager() = default;
+
+SourceManager::File::~File() {
+  if (map) munmap(map, mapSize);
+}
+
 uint32_t SourceManager::addFile(const std::string &path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return 0;
-  // Read into a string reserved at the file's size: a stringstream would hold the text twice
-  // (its growing buffer, then the copy), doubling the peak memory of a large program. Pipes
-  // cannot seek: they are read without the reservation.
-  in.seekg(0, std::ios::end);
-  std::streamoff size = in.fail() ? -1 : (std::streamoff)in.tellg();
-  in.clear();
-  in.seekg(0, std::ios::beg);
-  in.clear();
+  int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return 0;
+  struct stat st;
+  if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    void *m = mmap(nullptr, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
+    if (m != MAP_FAILED) {
+      close(fd);
+      madvise(m, (size_t)st.st_size, MADV_SEQUENTIAL);  // read once from the front: read ahead
+      auto f = std::make_unique<File>();
+      f->name = path;
+      f->map = m;
+      f->mapSize = (size_t)st.st_size;
+      f->text = std::string_view(static_cast<const char *>(m), f->mapSize);
+      files_.push_back(std::move(f));
+      return (uint32_t)files_.size();
+    }
+  }
+  // Pipes, empty files, or no mapping: read.
   std::string text;
-  if (size > 0) text.reserve((size_t)size);
-  static constexpr size_t kChunk = 1 << 16;
-  char buf[kChunk];
-  while (in.read(buf, kChunk), in.gcount() > 0) text.append(buf, (size_t)in.gcount());
+  char buf[1 << 16];
+  for (ssize_t n; (n = read(fd, buf, sizeof buf)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      close(fd);
+      return 0;
+    }
+    text.append(buf, (size_t)n);
+  }
+  close(fd);
   return addBuffer(path, std::move(text));
 }
 
 uint32_t SourceManager::addBuffer(std::string name, std::string text) {
   auto f = std::make_unique<File>();
   f->name = std::move(name);
-  f->text = std::move(text);
+  f->owned = std::move(text);
+  f->text = f->owned;
   files_.push_back(std::move(f));
   return (uint32_t)files_.size();
+}
+
+void SourceManager::released(uint32_t file, size_t offset) const {
+  auto *f = get(file);
+  if (!f || !f->map) return;
+  static const size_t page = (size_t)sysconf(_SC_PAGESIZE);
+  size_t n = std::min(offset, f->mapSize) / page * page;
+  if (n) madvise(f->map, n, MADV_DONTNEED);  // clean private pages: dropped, read again on use
 }
 
 const SourceManager::File *SourceManager::get(uint32_t file) const {
@@ -49,10 +83,9 @@ const std::string &SourceManager::name(uint32_t file) const {
   return f ? f->name : none;
 }
 
-const std::string &SourceManager::text(uint32_t file) const {
-  static const std::string none;
+std::string_view SourceManager::text(uint32_t file) const {
   auto *f = get(file);
-  return f ? f->text : none;
+  return f ? f->text : std::string_view();
 }
 
 std::string_view SourceManager::lineText(uint32_t file, uint32_t line) const {
@@ -69,7 +102,7 @@ std::string_view SourceManager::lineText(uint32_t file, uint32_t line) const {
   uint32_t e = line < f->lineStarts.size() ? f->lineStarts[line] - 1 : (uint32_t)f->text.size();
   if (e > b && f->text[e - 1] == '\r') --e;
   if (e < b) e = b;
-  return std::string_view(f->text).substr(b, e - b);
+  return f->text.substr(b, e - b);
 }
 
 static const char *severityName(Severity s) {

@@ -19,22 +19,35 @@ struct SourceLoc {
 };
 
 // Owns the text of every file a compilation reads (main program and subprogram files).
+// A regular file is mapped (mmap), not copied: a long program costs its pages, which the kernel
+// can drop and read again, not heap memory.
 class SourceManager {
 public:
-  // Reads a file; returns its id, or 0 when it cannot be read.
+  SourceManager();
+  ~SourceManager();
+  SourceManager(const SourceManager &) = delete;
+  SourceManager &operator=(const SourceManager &) = delete;
+  // Reads (maps) a file; returns its id, or 0 when it cannot be read.
   uint32_t addFile(const std::string &path);
   // Registers text under a name (tests, stdin, generated programs).
   uint32_t addBuffer(std::string name, std::string text);
   const std::string &name(uint32_t file) const;
-  const std::string &text(uint32_t file) const;
+  std::string_view text(uint32_t file) const;
   // The text of one line (without newline); empty when out of range.
   std::string_view lineText(uint32_t file, uint32_t line) const;
   uint32_t fileCount() const { return (uint32_t)files_.size(); }
+  // A streaming reader is done with the text before `offset`: a mapped file's pages there may
+  // leave memory (they are read again if a diagnostic quotes a line).
+  void released(uint32_t file, size_t offset) const;
 
 private:
   struct File {
-    std::string name, text;
+    std::string name, owned;  // owned: the text of a buffer or a file that could not be mapped
+    std::string_view text;
+    void *map = nullptr;      // the mapping of `text`, if any
+    size_t mapSize = 0;
     std::vector<uint32_t> lineStarts;  // computed lazily
+    ~File();
   };
   std::vector<std::unique_ptr<File>> files_;
   const File *get(uint32_t file) const;

@@ -80,17 +80,8 @@ static bool constNumber(const Expr *e, double &v) {
   return false;
 }
 
-// A reused template's command back to MachineCmd{}: the fields before the words copied, and only
-// the words its mask says were set cleared (set() is the only writer), not all 40 slots.
-static void resetCmd(MachineCmd &c) {
-  static_assert(std::is_trivially_copyable_v<MachineCmd>);
-  static const MachineCmd kEmpty{};
-  for (WordMask m = c.mask; m; m &= m - 1) c.w[__builtin_ctzll(m)] = 0;
-  std::memcpy(&c, &kEmpty, offsetof(MachineCmd, w));
-}
-
 bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
-  resetCmd(out.base);
+  out.base.clear();  // reused: templates are rebuilt per op on the streaming path
   out.slots.clear();  // keeps its capacity: templates are rebuilt per op on the streaming path
   out.text = nullptr;
   MachineCmd &c = out.base;

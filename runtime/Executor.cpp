@@ -120,18 +120,21 @@ bool Executor::Impl::frameKeepsPlane(Plane pl, bool &flip) const {
 
 AxisVec Executor::Impl::target(const MachineCmd &c) const {
   // Axes without a word keep their program position (under a rotation that moves X and Y).
-  AxisVec t = frameIn(st.position);
+  // Without a rotation, mirror or scaling the offset frame is the machine's: no mapping.
+  const bool linear = linearFrame();
+  AxisVec t = linear ? frameIn(st.position) : st.position;
   bool inc = st.distance == ModeValue::Incremental;
   // A move's own absolute/incremental axes (sub/sub2, MachineCmd.h) override the mode.
   uint16_t incAxes = c.kind == CmdKind::Move ? c.sub : c.kind == CmdKind::Home ? c.sub2 : 0,
            absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
-  for (int i = 0; i < kAxes; ++i) {
-    Word w = (Word)i;  // X Y Z A B C are the first six words
-    if (!c.has(w)) continue;
-    double v = c.get(w) * axisScale(i);
+  constexpr WordMask kAxisWords = (WordMask(1) << kAxes) - 1;  // X Y Z A B C U V W are the first words
+  for (WordMask m = c.mask & kAxisWords; m; m &= m - 1) {
+    const int i = __builtin_ctzll(m);
+    double v = c.w[i] * axisScale(i);
     bool axisInc = (incAxes >> i) & 1 ? true : (absAxes >> i) & 1 ? false : inc;
-    double prog = axisInc ? t[i] - frameOffset(i) + v : v;
-    t[i] = prog + frameOffset(i);
+    const double off = frameOffset(i);
+    double prog = axisInc ? t[i] - off + v : v;
+    t[i] = prog + off;
   }
   if (c.has(Word::PolarR) || c.has(Word::PolarA)) {  // X and Y from @ ^ (exec rejects X/Y with them)
     double x = t[0] - frameOffset(0), y = t[1] - frameOffset(1);
@@ -140,7 +143,7 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
     t[0] = x + frameOffset(0);
     t[1] = y + frameOffset(1);
   }
-  return frameOut(t);
+  return linear ? frameOut(t) : t;
 }
 
 bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
@@ -558,6 +561,15 @@ Executor::~Executor() { delete impl_; }
 uint64_t Executor::blockCount() const { return impl_->blocks; }
 
 const ModalState &Executor::state() const { return impl_->st; }
+
+// The blocks before `last` only count: a block that follows a block sees no frame change.
+bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
+  if (count > 1) {
+    impl_->curBlockFrame = false;
+    impl_->blocks += count - 1;
+  }
+  return count == 0 || exec(last);
+}
 
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;

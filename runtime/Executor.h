@@ -46,6 +46,8 @@ public:
   // Executes one command. Errors go to diags (with the command's loc); returns false on error,
   // after which the caller stops the program.
   bool exec(const MachineCmd &cmd);
+  // `count` Block commands in a row ending with `last`: the state they leave (CmdSink::execBlocks).
+  bool execBlocks(const MachineCmd &last, uint64_t count);
   // Flushes pending state at program end; returns false on error. ranToEnd: the program ran
   // to its end (not stopped by an error), so a missing M2/M30 is worth a warning.
   bool finish(bool ranToEnd = true);
@@ -81,6 +83,8 @@ class ExecutorSink : public CmdSink {
 public:
   explicit ExecutorSink(Executor &e) : exec_(e) {}
   bool exec(const MachineCmd &cmd) override { return exec_.exec(cmd); }
+  bool mergesBlocks() const override { return true; }
+  bool execBlocks(const MachineCmd &last, uint64_t count) override { return exec_.execBlocks(last, count); }
   bool readSystem(const SysRef &v, double &out, std::string &err) override { return exec_.readSystem(v, out, err); }
   bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) override {
     return exec_.writeSystem(v, value, loc, err);

@@ -148,6 +148,10 @@ int ncrt_exec_table(ncrt_ctx *ctx, const ncrt_cmd *cmds, uint64_t n) {
   return NCRT_OK;
 }
 
+int ncrt_exec_blocks(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t count) {
+  return !count || ctx->sink.execBlocks(*last, count) ? NCRT_OK : NCRT_ERROR;
+}
+
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes) {
   const uint8_t *p = data, *end = data + nbytes;
   MachineCmd c;

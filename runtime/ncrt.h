@@ -81,6 +81,9 @@ void ncrt_unset(double *p, uint64_t n);
 int ncrt_exec(ncrt_ctx *ctx, const ncrt_cmd *cmd);
 /* Executes n commands of a constant table. */
 int ncrt_exec_table(ncrt_ctx *ctx, const ncrt_cmd *cmds, uint64_t n);
+/* Executes `count` Block commands in a row that end with `last` (CmdSink::execBlocks: code
+ * compiled to merge blocks calls this; count 0 does nothing). */
+int ncrt_exec_blocks(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t count);
 /* Executes a packed command stream (ncc::ncrt::packCmd encoding) of nbytes bytes. */
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes);
 /* Reports a run-time error at a source location. */

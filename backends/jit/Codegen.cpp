@@ -9,6 +9,7 @@
 #include "runtime/ncrt.h"
 
 #include <llvm/IR/Verifier.h>
+#include <llvm/Transforms/Utils/BasicBlockUtils.h>
 #include <llvm/Support/raw_ostream.h>
 
 #include <algorithm>
@@ -34,8 +35,8 @@ static_assert(offsetof(ncrt_storage, max_loop) == 32 && offsetof(ncrt_storage, d
               offsetof(ncrt_storage, poll) == 48 && sizeof(ncrt_storage) == 56,
               "ncrt_storage layout changed: update storageTy");
 
-Codegen::Codegen(const ir::Module &src, LLVMContext &ctx, Diagnostics &diags)
-    : src_(src), C(ctx), diags_(diags), M(std::make_unique<Module>(src.name.empty() ? "nc" : src.name, ctx)),
+Codegen::Codegen(const ir::Module &src, LLVMContext &ctx, Diagnostics &diags, bool mergeBlocks)
+    : src_(src), C(ctx), diags_(diags), mergeBlocks_(mergeBlocks), M(std::make_unique<Module>(src.name.empty() ? "nc" : src.name, ctx)),
       B(ctx) {
   dblTy = Type::getDoubleTy(C);
   i8Ty = Type::getInt8Ty(C);
@@ -60,6 +61,7 @@ void Codegen::declareRuntime() {
   fBegin = decl("ncrt_begin", ptrTy, {ptrTy, i32Ty, i32Ty});
   fExec = decl("ncrt_exec", i32Ty, {ptrTy, ptrTy});
   fExecTable = decl("ncrt_exec_table", i32Ty, {ptrTy, ptrTy, i64Ty});
+  fExecBlocks = decl("ncrt_exec_blocks", i32Ty, {ptrTy, ptrTy, i64Ty});
   fExecPacked = decl("ncrt_exec_packed", i32Ty, {ptrTy, ptrTy, i64Ty});
   fError = decl("ncrt_error", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy});
   fFault = decl("ncrt_fault", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, i32Ty, ptrTy, dblTy});
@@ -106,9 +108,26 @@ void Codegen::declareRuntime() {
     auto fc = decl(tab[i].symbol, dblTy, {ptrTy});
     auto *fn = cast<Function>(fc.getCallee());
     fn->setMemoryEffects(MemoryEffects::argMemOnly(ModRefInfo::Ref));  // reads only its arguments
+    fn->addParamAttr(0, Attribute::NoCapture);  // so the argument slot aliases no variable
     fn->setDoesNotThrow();
     fn->addFnAttr(Attribute::WillReturn);
     builtins_[tab[i].name] = fc;
+  }
+}
+
+// Runtime calls that touch only their arguments (the context, a command) and the runtime's own
+// state (executor, diagnostics, clock), never the program's variables: LLVM may then keep
+// variables in registers across them (a loop's numbers are loaded once, stored at its exits).
+// The command calls run the modal call's NC code after a move, so they qualify only without one.
+void Codegen::markRuntimeOnly() {
+  std::vector<FunctionCallee *> calls = {&fPoll};
+  if (!modalFn_) calls.insert(calls.end(), {&fExec, &fExecTable, &fExecPacked, &fExecBlocks});
+  for (FunctionCallee *fc : calls)
+    cast<Function>(fc->getCallee())
+        ->setMemoryEffects(MemoryEffects::argMemOnly() | MemoryEffects::inaccessibleMemOnly());
+  for (FunctionCallee *fc : {&fExec, &fExecTable, &fExecPacked, &fExecBlocks}) {  // commands are read, not kept
+    cast<Function>(fc->getCallee())->addParamAttr(1, Attribute::NoCapture);
+    cast<Function>(fc->getCallee())->addParamAttr(1, Attribute::ReadOnly);
   }
 }
 
@@ -141,6 +160,7 @@ void Codegen::scanExprNames(FnInfo &fi, const Expr &e) {
 
 void Codegen::scanNames(FnInfo &fi, const ir::Region &r) {
   for (auto &op : r) {
+    fi.hasBlocks |= op.kind == OpKind::Block;
     for (auto &a : op.args)
       if (a.value) scanExprNames(fi, *a.value);
     for (auto &sub : op.regions) scanNames(fi, sub);
@@ -240,17 +260,49 @@ void Codegen::emitTimeCheck(SourceLoc loc) {
 // ---------------------------------------------------------------- functions
 // After the entry block's set-up: the shared fail (returns NCRT_ERROR) and exit (returns the
 // status checkStatus passes on) blocks, then the body, where emission continues.
+// Both pass on the blocks still waiting (their status does not matter: the run stops).
 void Codegen::startBody() {
+  if (blkOn_) {
+    blkCount = B.CreateAlloca(i64Ty, nullptr, "blocks.count");
+    blkLast = B.CreateAlloca(ptrTy, nullptr, "blocks.last");
+    B.CreateStore(B.getInt64(0), blkCount);
+    B.CreateStore(ConstantPointerNull::get(ptrTy), blkLast);
+  }
   failBB = newBlock("fail");
   exitBB = newBlock("exit");
   BasicBlock *body = newBlock("body");
   B.CreateBr(body);
   B.SetInsertPoint(failBB);
+  flushBlocks(false);
   B.CreateRet(B.getInt32(NCRT_ERROR));
   B.SetInsertPoint(exitBB);
   exitPhi = B.CreatePHI(i32Ty, 4, "status");
+  flushBlocks(false);
   B.CreateRet(exitPhi);
   B.SetInsertPoint(body);
+}
+
+void Codegen::flushBlocks(bool check) {
+  if (!blkOn_) return;
+  Value *n = B.CreateLoad(i64Ty, blkCount);
+  BasicBlock *flush = newBlock("blocks.flush"), *cont = newBlock("blocks.done");
+  B.CreateCondBr(B.CreateICmpNE(n, B.getInt64(0)), flush, cont);  // folds away where none wait
+  B.SetInsertPoint(flush);
+  Value *st = B.CreateCall(fExecBlocks, {ctxArg, B.CreateLoad(ptrTy, blkLast), n});
+  B.CreateStore(B.getInt64(0), blkCount);
+  if (check) checkStatus(st);
+  B.CreateBr(cont);
+  B.SetInsertPoint(cont);
+}
+
+CallInst *Codegen::sinkCall(FunctionCallee f, ArrayRef<Value *> args) {
+  flushBlocks();
+  return B.CreateCall(f, args);
+}
+
+void Codegen::emitReturn() {
+  flushBlocks();
+  B.CreateRet(B.getInt32(NCRT_OK));
 }
 
 void Codegen::emitFunction(FnInfo &fi) {
@@ -259,6 +311,7 @@ void Codegen::emitFunction(FnInfo &fi) {
   ctxArg = F->getArg(0);
   stArg = F->getArg(1);
   frameArg = F->getArg(2);
+  blkOn_ = mergeBlocks_ && fi.hasBlocks;
   entryBB = newBlock("entry");
   B.SetInsertPoint(entryBB);
   auto field = [&](unsigned i) { return B.CreateStructGEP(storageTy, stArg, i); };
@@ -270,6 +323,7 @@ void Codegen::emitFunction(FnInfo &fi) {
   depthPtr = field(6);
   pollPtr = field(7);
   cmdSlot = argSlot = nullptr;
+  siteSlots_ = 0;
   backJumps = B.CreateAlloca(i64Ty, nullptr, "backjumps");
   scratch = B.CreateAlloca(dblTy, nullptr, "scratch");
   B.CreateStore(B.getInt64(0), backJumps);
@@ -298,6 +352,7 @@ void Codegen::emitFunction(FnInfo &fi) {
   jumpOps_.clear();
   targetBBs_.clear();
   loops_.clear();
+  kept_.clear();
   run_.clear();
   packed_.clear();
   if (!fi.compileErrors.empty()) {
@@ -312,9 +367,9 @@ void Codegen::emitFunction(FnInfo &fi) {
     startSections(fi);
     scanTargets(fi.fn->body);
     emitRegion(fi.fn->body);
-    if (!B.GetInsertBlock()->getTerminator()) B.CreateRet(B.getInt32(NCRT_OK));
+    if (!B.GetInsertBlock()->getTerminator()) emitReturn();
   }
-  if (pred_empty(exitBB)) exitBB->eraseFromParent();
+  EliminateUnreachableBlocks(*F);  // an unused exit (and its block flush), dead blocks
 }
 
 // The module's modal calls: their argument keys, the functions they may call (all of them for a
@@ -451,6 +506,7 @@ std::unique_ptr<Module> Codegen::run() {
     B.CreateRet(B.getInt32(NCRT_OK));
   } else {
     scanModalCalls();
+    markRuntimeOnly();
     if (modalFn_) emitModalRun();
     for (auto &fn : src_.functions) emitFunction(functions_.at(fn.name));
     emitEntry();
@@ -465,8 +521,8 @@ std::unique_ptr<Module> Codegen::run() {
   return std::move(M);
 }
 
-std::unique_ptr<Module> buildModule(const ir::Module &m, LLVMContext &ctx, Diagnostics &diags) {
-  Codegen cg(m, ctx, diags);
+std::unique_ptr<Module> buildModule(const ir::Module &m, LLVMContext &ctx, Diagnostics &diags, bool mergeBlocks) {
+  Codegen cg(m, ctx, diags, mergeBlocks);
   return cg.run();
 }
 

@@ -13,7 +13,10 @@ class TargetMachine;
 namespace ncc::jit {
 
 // Builds the LLVM module (entry `i32 ncc_program_main(ptr ctx)`); null after reporting errors.
-std::unique_ptr<llvm::Module> buildModule(const ir::Module &m, llvm::LLVMContext &ctx, Diagnostics &diags);
+// mergeBlocks: the code passes a run of Block commands as one ncrt_exec_blocks (for a target whose
+// CmdSink::mergesBlocks; another target then sees the last block of each run `count` times).
+std::unique_ptr<llvm::Module> buildModule(const ir::Module &m, llvm::LLVMContext &ctx, Diagnostics &diags,
+                                          bool mergeBlocks = true);
 // Runs the standard O1..O3 pipeline (level 0 does nothing).
 void optimizeModule(llvm::Module &mod, llvm::TargetMachine *tm, int level);
 // Host target machine (PIC, default CPU features); null after reporting an error.

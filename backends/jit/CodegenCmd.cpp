@@ -36,7 +36,8 @@ void Codegen::emitMachineOp(const ir::Op &op) {
   CmdTemplate t;
   if (!buildCmdTemplate(op, t, quiet)) return;
   if (t.slots.empty() && !t.text) {
-    appendToRun(t.base);
+    if (t.base.kind == CmdKind::Block && blkOn_ && run_.empty() && packed_.empty()) emitBlockCmd(t.base);
+    else appendToRun(t.base);
     return;
   }
   flushRun();
@@ -66,40 +67,75 @@ void Codegen::flushRun() {
     auto *arrTy = ArrayType::get(cmdTy, cmds.size());
     auto *gv = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage, ConstantArray::get(arrTy, cmds),
                                   "nc.cmds");
-    st = B.CreateCall(fExecTable, {ctxArg, gv, B.getInt64(cmds.size())});
+    st = sinkCall(fExecTable, {ctxArg, gv, B.getInt64(cmds.size())});
   } else {
     Constant *data = ConstantDataArray::getString(C, packed_, false);
     auto *gv = new GlobalVariable(*M, data->getType(), true, GlobalValue::PrivateLinkage, data, "nc.table");
-    st = B.CreateCall(fExecPacked, {ctxArg, gv, B.getInt64(packed_.size())});
+    st = sinkCall(fExecPacked, {ctxArg, gv, B.getInt64(packed_.size())});
     std::string().swap(packed_);
   }
   run_.clear();
   checkStatus(st);
 }
 
+// A Block command that starts a run waits for the next call that reaches the target (a loop of
+// assignments makes no call per block).
+void Codegen::emitBlockCmd(const MachineCmd &c) {
+  ensureOpen();
+  auto *arrTy = ArrayType::get(cmdTy, 1);
+  auto *gv = new GlobalVariable(*M, arrTy, true, GlobalValue::PrivateLinkage,
+                                ConstantArray::get(arrTy, {cmdConstant(c)}), "nc.block");
+  B.CreateStore(B.CreateAdd(B.CreateLoad(i64Ty, blkCount), B.getInt64(1)), blkCount);
+  B.CreateStore(gv, blkLast);
+}
+
+// Where a computed command is built. In a loop, up to kLoopCmdSlots sites per function get a slot
+// of their own whose constant part (kind, modes, location, constant words) is stored on the
+// first pass only; each pass then writes just the computed words and the mask. Elsewhere one
+// shared slot, filled whole.
+static constexpr unsigned kLoopCmdSlots = 16;
+
+Value *Codegen::cmdSiteSlot(const MachineCmd &base) {
+  if (loops_.empty() || siteSlots_ >= kLoopCmdSlots) {
+    if (!cmdSlot) cmdSlot = allocaEntry(cmdTy, "cmd");
+    B.CreateStore(cmdConstant(base), cmdSlot);
+    return cmdSlot;
+  }
+  ++siteSlots_;
+  Value *slot = allocaEntry(cmdTy, "cmd.site");
+  Value *filled = allocaEntry(i1Ty, "cmd.filled", B.getFalse());
+  BasicBlock *fill = newBlock("cmd.fill"), *ready = newBlock("cmd.ready");
+  B.CreateCondBr(B.CreateLoad(i1Ty, filled), ready, fill);
+  B.SetInsertPoint(fill);
+  B.CreateStore(cmdConstant(base), slot);
+  B.CreateStore(B.getTrue(), filled);
+  B.CreateBr(ready);
+  B.SetInsertPoint(ready);
+  return slot;
+}
+
 // Operands in template order: a vacant value leaves its word out, a non-finite one is an error.
 void Codegen::emitDynamicCmd(const CmdTemplate &t) {
-  if (!cmdSlot) cmdSlot = allocaEntry(cmdTy, "cmd");
-  B.CreateStore(cmdConstant(t.base), cmdSlot);
+  Value *slot = cmdSiteSlot(t.base);
   Value *mask = B.getInt64(t.base.mask);
   Constant *inf = ConstantFP::getInfinity(dblTy);
-  for (auto &slot : t.slots) {
-    Val v = expr(*slot.expr);
-    checkNotHandle(v, slot.expr->loc, HandleUse::AsNumber);
+  for (auto &s : t.slots) {
+    Val v = expr(*s.expr);
+    checkNotHandle(v, s.expr->loc, HandleUse::AsNumber);
     Value *finite = B.CreateFCmpOLT(B.CreateUnaryIntrinsic(Intrinsic::fabs, v.v), inf);
     Value *vacant = v.mayVacant ? isVacant(v.v) : B.getFalse();
-    failIf(B.CreateAnd(B.CreateNot(vacant), B.CreateNot(finite)), slot.expr->loc, "value is not a finite number");
-    B.CreateStore(v.v, B.CreateInBoundsGEP(cmdTy, cmdSlot, {B.getInt32(0), B.getInt32(9), B.getInt32((unsigned)slot.word)}));
-    Value *bit = B.getInt64(wordBit(slot.word));
+    failIf(B.CreateAnd(B.CreateNot(vacant), B.CreateNot(finite)), s.expr->loc, "value is not a finite number");
+    B.CreateStore(v.v, B.CreateInBoundsGEP(cmdTy, slot, {B.getInt32(0), B.getInt32(9), B.getInt32((unsigned)s.word)}));
+    Value *bit = B.getInt64(wordBit(s.word));
     if (v.mayVacant) bit = B.CreateSelect(vacant, B.getInt64(0), bit);
     mask = B.CreateOr(mask, bit);
   }
-  B.CreateStore(mask, B.CreateStructGEP(cmdTy, cmdSlot, 5));
+  B.CreateStore(mask, B.CreateStructGEP(cmdTy, slot, 5));
   if (t.text) {
     bool fixed = t.base.kind == CmdKind::Message && t.base.sub != (uint8_t)MessageKind::Msg;
-    B.CreateStore(stringValue(*t.text, fixed), B.CreateStructGEP(cmdTy, cmdSlot, 8));
+    B.CreateStore(stringValue(*t.text, fixed), B.CreateStructGEP(cmdTy, slot, 8));
   }
-  checkStatus(B.CreateCall(fExec, {ctxArg, cmdSlot}));
+  checkStatus(sinkCall(fExec, {ctxArg, slot}));
 }
 
 }  // namespace ncc::jit

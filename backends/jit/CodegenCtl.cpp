@@ -9,6 +9,8 @@
 #include "ir/Value.h"
 #include "runtime/ncrt.h"
 
+#include <llvm/Transforms/Utils/BasicBlockUtils.h>
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -279,13 +281,13 @@ void Codegen::emitOp(const Op &op) {
   case OpKind::ModalCall: emitModalCall(op); return;
   case OpKind::ModalTrigger: {  // the runtime runs the modal call as after a move (ncrt_modal_trigger)
     auto l = locArgs(op.loc);
-    checkStatus(B.CreateCall(fModalTrigger, {ctxArg, l[0], l[1], l[2]}));
+    checkStatus(sinkCall(fModalTrigger, {ctxArg, l[0], l[1], l[2]}));
     return;
   }
   case OpKind::Return:
     if (const Expr *v = op.get("value"))
       B.CreateStore(expr(*v).v, B.CreateConstGEP1_32(dblTy, frameArg, cur_->frameSize - 1));
-    B.CreateRet(B.getInt32(NCRT_OK));
+    emitReturn();
     return;
   default: return;  // rejected by validate()
   }
@@ -322,6 +324,7 @@ void Codegen::emitLoop(const Op &op) {
   }
   BasicBlock *head = newBlock("loop.head"), *body = newBlock("loop.body"), *latch = newBlock("loop.latch"),
              *done = newBlock("loop.end");
+  std::vector<KeptVar> kept = keepLoopVars(op);
   startBlock(head);
   if (remaining) {
     Value *r = B.CreateLoad(dblTy, remaining);
@@ -345,6 +348,7 @@ void Codegen::emitLoop(const Op &op) {
   emitTimeCheck(op.loc);
   B.CreateBr(head);
   B.SetInsertPoint(done);
+  releaseLoopVars(kept);
 }
 
 // A jump to `target`: a backward one counts toward the loop limit (per activation).
@@ -539,6 +543,7 @@ void Codegen::emitModalRun() {
   ctxArg = F->getArg(0);
   stArg = F->getArg(1);
   frameArg = nullptr;  // the modal callee always gets a new frame
+  blkOn_ = false;      // no blocks of its own
   dynLoc_ = {F->getArg(2), F->getArg(3), F->getArg(4)};
   entryBB = newBlock("entry");
   B.SetInsertPoint(entryBB);
@@ -570,7 +575,7 @@ void Codegen::emitModalRun() {
   B.CreateStore(B.getInt32(0), modalIn_);
   B.CreateStore(depth, depthPtr);
   B.CreateRet(B.getInt32(NCRT_OK));
-  if (pred_empty(exitBB)) exitBB->eraseFromParent();
+  EliminateUnreachableBlocks(*F);  // an unused exit (and its block flush), dead blocks
   dynLoc_.clear();
 }
 
@@ -651,7 +656,7 @@ Value *Codegen::convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc 
 // One activation of `fi` with the caller's evaluated arguments.
 Value *Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, Value *>> &args, bool newFrame,
                            SourceLoc loc) {
-  if (fi.fn->save) checkStatus(B.CreateCall(fSaveModal, {ctxArg}));  // SAVE (docs/IR.md §5.4)
+  if (fi.fn->save) checkStatus(sinkCall(fSaveModal, {ctxArg}));  // SAVE (docs/IR.md §5.4)
   Value *frame = allocaEntry(ArrayType::get(dblTy, fi.frameSize), "callee.frame");
   const uint64_t localsBytes = (kFrameLocals + 1) * sizeof(double);
   if (newFrame) {
@@ -670,12 +675,12 @@ Value *Codegen::emitInvoke(FnInfo &fi, const std::vector<std::pair<std::string, 
     B.CreateMemCpy(frame, MaybeAlign(8), frameArg, MaybeAlign(8), localsBytes);
     initFrame(frame, fi.frameSize, kFrameLocals + 1);
   }
-  Value *st = B.CreateCall(fi.F, {ctxArg, stArg, frame});
+  Value *st = sinkCall(fi.F, {ctxArg, stArg, frame});
   checkStatus(st);
   if (!newFrame) B.CreateMemCpy(frameArg, MaybeAlign(8), frame, MaybeAlign(8), localsBytes);
   if (fi.fn->save) {
     auto l = locArgs(loc);
-    checkStatus(B.CreateCall(fRestoreModal, {ctxArg, l[0], l[1], l[2]}));
+    checkStatus(sinkCall(fRestoreModal, {ctxArg, l[0], l[1], l[2]}));
   }
   return B.CreateLoad(dblTy, B.CreateConstGEP1_32(dblTy, frame, fi.frameSize - 1));
 }

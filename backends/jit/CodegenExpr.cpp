@@ -128,7 +128,7 @@ Value *Codegen::numberedPtr(const Expr &var, bool write) {
     Value *x = splitComputed(*e, map, plain, sys);
     B.SetInsertPoint(sys);
     auto l = locArgs(var.loc);
-    B.CreateCall(fParam, {ctxArg, B.getInt32((uint32_t)map), B.getInt32((uint32_t)ParamAccess::Reference), x,
+    sinkCall(fParam, {ctxArg, B.getInt32((uint32_t)map), B.getInt32((uint32_t)ParamAccess::Reference), x,
                           ConstantFP::get(dblTy, 0.0), l[0], l[1], l[2]});
     B.CreateBr(failBB);
     B.SetInsertPoint(plain);
@@ -174,7 +174,7 @@ Val Codegen::loadComputed(const Expr &var, const Expr &e, ParamMap m) {
   Value *x = splitComputed(e, m, plain, sys);
   B.SetInsertPoint(sys);
   auto l = locArgs(var.loc);
-  Value *sv = checked(B.CreateCall(fParam, {ctxArg, B.getInt32((uint32_t)m), B.getInt32((uint32_t)ParamAccess::Read), x,
+  Value *sv = checked(sinkCall(fParam, {ctxArg, B.getInt32((uint32_t)m), B.getInt32((uint32_t)ParamAccess::Read), x,
                                             ConstantFP::get(dblTy, 0.0), l[0], l[1], l[2]}));
   BasicBlock *sysEnd = B.GetInsertBlock();
   B.CreateBr(join);
@@ -200,7 +200,7 @@ void Codegen::storeComputed(const Expr &var, const Expr &e, ParamMap m, Val valu
   Value *x = splitComputed(e, m, plain, sys);
   B.SetInsertPoint(sys);
   auto l = locArgs(var.loc);
-  checked(B.CreateCall(fParam, {ctxArg, B.getInt32((uint32_t)m), B.getInt32((uint32_t)ParamAccess::Write), x, v, l[0],
+  checked(sinkCall(fParam, {ctxArg, B.getInt32((uint32_t)m), B.getInt32((uint32_t)ParamAccess::Write), x, v, l[0],
                                 l[1], l[2]}));
   B.CreateBr(join);
   B.SetInsertPoint(plain);
@@ -262,6 +262,8 @@ Value *Codegen::declaredElemPtr(const Expr &var, Value *base, const VarDecl &d) 
 const VarDecl *Codegen::declOf(const Expr &var) { return decls_.find(*cur_->fn, var); }
 
 Value *Codegen::varPtr(const Expr &var, bool write) {
+  if (!kept_.empty())  // in a loop that keeps its variables in slots
+    if (auto it = kept_.find(cacheKey(var)); it != kept_.end()) return it->second;
   const VarDecl *d = declOf(var);
   if (d && d->rank) {
     Value *base = var.space == VarSpace::Global
@@ -314,14 +316,14 @@ Value *Codegen::sysVarRef(const Expr &var) {
                                                    : numOf(expr(*var.args[k]));
   auto l = locArgs(var.loc);
   return checked(
-      B.CreateCall(fSysVarAt, {ctxArg, B.getInt32((uint32_t)f), ix[0], ix[1], ix[2], cstring(var.str), l[0], l[1], l[2]}));
+      sinkCall(fSysVarAt, {ctxArg, B.getInt32((uint32_t)f), ix[0], ix[1], ix[2], cstring(var.str), l[0], l[1], l[2]}));
 }
 
 Val Codegen::loadVar(const Expr &var) {
   if (var.space == VarSpace::System) {  // asked of the executor when the program runs
     Value *ref = sysVarRef(var);
     auto l = locArgs(var.loc);
-    return {checked(B.CreateCall(fSysVar, {ctxArg, ref, cstring(var.str), l[0], l[1], l[2]})), false,
+    return {checked(sinkCall(fSysVar, {ctxArg, ref, cstring(var.str), l[0], l[1], l[2]})), false,
             sysVarNameIsFrame(var.str), var.loc};
   }
   ParamMap map;
@@ -360,7 +362,7 @@ void Codegen::storeVar(const Expr &var, Val value) {
     Value *ref = sysVarRef(var);
     // A frame variable takes the handle as it is; the runtime checks what a store holds.
     Value *v = sysVarNameIsFrame(var.str) ? value.v : numOf(value);
-    checked(B.CreateCall(fSysVarSet, {ctxArg, ref, v, l[0], l[1], l[2]}));
+    checked(sinkCall(fSysVarSet, {ctxArg, ref, v, l[0], l[1], l[2]}));
     return;
   }
   ParamMap map;
@@ -523,6 +525,13 @@ Val Codegen::binary(const Expr &e) {
   return {ConstantFP::get(dblTy, 0.0), false};
 }
 
+// Builtins that are one IEEE operation on num() of their argument: inline, bit for bit the
+// C function's result (ir/Builtins.cpp), and no call left in a loop.
+static const std::pair<std::string_view, Intrinsic::ID> kInlineBuiltins[] = {
+    {"ncc_builtin_abs", Intrinsic::fabs},   {"ncc_builtin_round", Intrinsic::round},
+    {"ncc_builtin_fix", Intrinsic::floor},  {"ncc_builtin_fup", Intrinsic::ceil},
+    {"ncc_builtin_trunc", Intrinsic::trunc}};
+
 // Builtins get num() arguments; a NaN result is the eval engine's domain error.
 Val Codegen::callBuiltin(const Expr &e) {
   if (isExistsCall(e.str, e.args.size()) && e.args[0]) {
@@ -551,7 +560,7 @@ Val Codegen::callBuiltin(const Expr &e) {
     const BuiltinInfo *tab = builtinTable(count);
     for (unsigned i = 0; i < raw.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(raw[i].v, B.CreateConstGEP1_32(dblTy, argSlot, i));
     auto l = locArgs(e.loc);
-    Value *r = checked(B.CreateCall(fStrFn, {ctxArg, B.getInt32((uint32_t)(bi - tab)), argSlot,
+    Value *r = checked(sinkCall(fStrFn, {ctxArg, B.getInt32((uint32_t)(bi - tab)), argSlot,
                                              B.getInt32((uint32_t)raw.size()), l[0], l[1], l[2]}));
     return {r, false, bi->result != 'n', e.loc};
   }
@@ -561,8 +570,13 @@ Val Codegen::callBuiltin(const Expr &e) {
     a.mayHandle = false;
     vals.push_back(numOf(a));
   }
-  for (unsigned i = 0; i < vals.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
-  Value *r = B.CreateCall(builtins_.at(bi->name), {argSlot});
+  Value *r = nullptr;
+  for (auto &[symbol, id] : kInlineBuiltins)
+    if (vals.size() == 1 && symbol == bi->symbol) r = B.CreateUnaryIntrinsic(id, vals[0]);
+  if (!r) {
+    for (unsigned i = 0; i < vals.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
+    r = B.CreateCall(builtins_.at(bi->name), {argSlot});
+  }
   failIf(B.CreateFCmpUNO(r, r), e.loc, builtinDomainError(*bi));
   return {r, false};
 }

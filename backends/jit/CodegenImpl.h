@@ -56,17 +56,19 @@ struct FnInfo {
   uint64_t arraySlots = 0;                   // doubles in that block
   unsigned frameSize = 35;                 // #0..#33, the named locals, the return value (unset: none)
   std::vector<std::pair<SourceLoc, std::string>> compileErrors;
+  bool hasBlocks = false;  // a block op anywhere in the body
 };
 
 class Codegen {
 public:
-  Codegen(const ir::Module &src, llvm::LLVMContext &ctx, Diagnostics &diags);
+  Codegen(const ir::Module &src, llvm::LLVMContext &ctx, Diagnostics &diags, bool mergeBlocks);
   std::unique_ptr<llvm::Module> run();
   // A goto whose target is a constant (resolved when compiled); else computed when it runs.
 
 private:
   // ------------------------------------------------ module level (Codegen.cpp)
   void declareRuntime();
+  void markRuntimeOnly();
   void scanNames(FnInfo &fi, const ir::Region &r);
   void scanExprNames(FnInfo &fi, const ir::Expr &e);
   void emitFunction(FnInfo &fi);
@@ -81,6 +83,15 @@ private:
   void emitOp(const ir::Op &op);
   void emitIf(const ir::Op &op);
   void emitLoop(const ir::Op &op);
+  // Loop variables in slots (CodegenLoop.cpp).
+  struct KeptVar {
+    std::string key;
+    llvm::Value *home, *slot;
+  };
+  std::string cacheKey(const ir::Expr &var);
+  bool loopVars(const ir::Op &loop, std::vector<const ir::Expr *> &vars);
+  std::vector<KeptVar> keepLoopVars(const ir::Op &loop);
+  void releaseLoopVars(const std::vector<KeptVar> &kept);
   void emitGoto(const ir::Op &op);
   void emitCall(const ir::Op &op);
   llvm::Value *convertArg(FnInfo &fi, const std::string &key, Val v, SourceLoc loc);
@@ -113,6 +124,13 @@ private:
   // eval engine, for gotos that jump into a loop body without entering the loop).
   llvm::Value *allocaEntry(llvm::Type *t, const char *name, llvm::Constant *init = nullptr);
   void checkStatus(llvm::Value *status);  // returns the status when it is not NCRT_OK
+  // With mergeBlocks_, a Block command waits in blkCount/blkLast until a call that reaches the
+  // target: sinkCall passes the waiting ones on first (flushBlocks, CmdSink::execBlocks), as do
+  // the function's exits.
+  llvm::CallInst *sinkCall(llvm::FunctionCallee f, llvm::ArrayRef<llvm::Value *> args);
+  void flushBlocks(bool check = true);
+  void emitBlockCmd(const MachineCmd &c);
+  void emitReturn();  // flushBlocks, return NCRT_OK
   void failIf(llvm::Value *cond, SourceLoc loc, const std::string &msg);
   void fail(SourceLoc loc, const std::string &msg);  // unconditional; continues in a dead block
   void faultIf(llvm::Value *cond, SourceLoc loc, unsigned kind, const std::string &name, llvm::Value *value);
@@ -164,11 +182,14 @@ private:
   void appendToRun(const MachineCmd &c);
   void flushRun();
   void emitDynamicCmd(const CmdTemplate &t);
+  llvm::Value *cmdSiteSlot(const MachineCmd &base);
   llvm::Constant *cmdConstant(const MachineCmd &c);
 
   const ir::Module &src_;
   llvm::LLVMContext &C;
   Diagnostics &diags_;
+  bool mergeBlocks_;  // the target takes runs of blocks as one call (CmdSink::mergesBlocks)
+  bool blkOn_ = false;  // mergeBlocks_ and the function being emitted has block ops
   std::unique_ptr<llvm::Module> M;
   llvm::IRBuilder<> B;
   bool failed_ = false;
@@ -177,7 +198,7 @@ private:
   llvm::PointerType *ptrTy;
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
-  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
+  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecBlocks, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar, fSysVarAt, fSysVarSet;
   llvm::FunctionCallee fParam;  // ncrt_param: computed parameter numbers that are controller state
   llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook,
@@ -209,10 +230,13 @@ private:
   llvm::Value *localArrays = nullptr;  // this activation's named local arrays
   llvm::Value *lastIndex = nullptr;    // index of the last array element addressed
   llvm::Value *cmdSlot = nullptr, *argSlot = nullptr, *backJumps = nullptr, *scratch = nullptr;
+  llvm::Value *blkCount = nullptr, *blkLast = nullptr;
+  unsigned siteSlots_ = 0;  // commands in loops with a slot of their own (cmdSiteSlot)
   struct LoopTargets {
     llvm::BasicBlock *cont, *brk;
   };
   std::vector<LoopTargets> loops_;
+  std::map<std::string, llvm::Value *> kept_;  // cacheKey -> the slot of an enclosing loop
   // Jump targets: every op in pre-order (the eval engine's instruction order), block numbers
   // and labels (the last definition of a label wins, as in the eval engine).
   std::unordered_map<const ir::Op *, unsigned> order_;

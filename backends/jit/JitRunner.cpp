@@ -97,6 +97,7 @@ static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   add("ncrt_exec", &ncrt_exec);
   add("ncrt_exec_table", &ncrt_exec_table);
   add("ncrt_exec_packed", &ncrt_exec_packed);
+  add("ncrt_exec_blocks", &ncrt_exec_blocks);
   add("ncrt_error", &ncrt_error);
   add("ncrt_fault", &ncrt_fault);
   add("ncrt_poll", &ncrt_poll);
@@ -185,7 +186,7 @@ bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const Jit
     return false;
   }
   auto ctx = std::make_unique<LLVMContext>();
-  std::unique_ptr<Module> mod = buildModule(m, *ctx, diags);
+  std::unique_ptr<Module> mod = buildModule(m, *ctx, diags, sink.mergesBlocks());
   if (!mod) return false;
   mod->setDataLayout((*tm)->createDataLayout());
   mod->setTargetTriple(jtmb->getTargetTriple().str());

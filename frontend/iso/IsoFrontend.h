@@ -8,6 +8,7 @@
 //    point is milliseconds; RS274NGC P is seconds);
 //  - the canned-cycle repeat count is always `L` (Fanuc writes K).
 #pragma once
+#include "ir/CmdSink.h"
 #include "ir/Diagnostics.h"
 #include "ir/ModeTable.h"
 #include "ir/NCIR.h"
@@ -47,7 +48,8 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
 
 // True when the text can be parsed block by block: no Macro B control flow (IF/WHILE/GOTO/DO/
 // END), no M98/M99/G65/G66, no RS274 O-words and no O-number program after the main program.
-bool isoIsStreamable(std::string_view text);
+// With `sm`, the text is `file`'s, whose scanned pages may leave memory (SourceManager::released).
+bool isoIsStreamable(std::string_view text, const SourceManager *sm = nullptr, uint32_t file = 0);
 
 class IsoBlockStream {
 public:
@@ -57,8 +59,10 @@ public:
   IsoBlockStream &operator=(const IsoBlockStream &) = delete;
   // Parses at most maxBlocks source blocks and appends their ops to `out`. Returns false when
   // nothing more was produced: end of file, or a fatal error (a construct that needs the whole
-  // program, reported as an error).
-  bool next(ir::Region &out, size_t maxBlocks);
+  // program, reported as an error; or `lean` refused a command). With `lean`, plain blocks
+  // become machine commands sent to it at once (BlockLowerer::lowerLean), after the ops
+  // appended before them have run: the call then returns early.
+  bool next(ir::Region &out, size_t maxBlocks, CmdSink *lean = nullptr);
 
 private:
   struct Impl;

@@ -160,6 +160,7 @@ bool BlockLowerer::Block::classify() {
         auto plainMotion = [](const GCodeInfo *g) { return !isCycleMotion(g->mode) && g->code10 != 800; };
         if (slot.info->code10 == 800 && plainMotion(gi)) {
           slot = {gi, &w};
+          groups |= 1u << (unsigned)gi->group;
           continue;
         }
         if (gi->code10 == 800 && plainMotion(slot.info)) continue;
@@ -181,6 +182,7 @@ bool BlockLowerer::Block::classify() {
         continue;
       }
       slot = {gi, &w};
+      groups |= 1u << (unsigned)gi->group;
       continue;
     }
     if (w.letter == 'M' && !macroCall) {
@@ -268,8 +270,8 @@ bool BlockLowerer::Block::orientWords(Op &op, SourceLoc loc) {
   return true;
 }
 
-bool BlockLowerer::Block::setup() {
-  // The block's own units and feed mode apply to its words.
+// The block's own units and feed mode apply to its words.
+void BlockLowerer::Block::trackModes() {
   if (auto *gi = G(GGroup::Units)) L.units_ = gi->mode;
   if (auto *gi = G(GGroup::FeedMode)) L.feedMode_ = gi->mode;
   if (auto *gi = G(GGroup::Motion)) {
@@ -278,6 +280,15 @@ bool BlockLowerer::Block::setup() {
     if (isPathMotion(L.motion_)) L.pathMotion_ = L.motion_;
     if (L.motion_ == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc) L.motion_ = L.pathMotion_;  // as the executor
   }
+}
+
+void BlockLowerer::Block::checkFeed(const IsoWord &f) {
+  if (!f.expr && f.value <= 0 && L.flavour_ == Flavour::Fanuc)  // 808D alarm 14800
+    L.diags_.warning(f.loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
+}
+
+bool BlockLowerer::Block::setup() {
+  trackModes();
   nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
 
@@ -295,8 +306,7 @@ bool BlockLowerer::Block::setup() {
   if (!macroCall) {
     if (bw.has('F')) {
       IsoWord *f = bw.get('F');
-      if (!f->expr && f->value <= 0 && L.flavour_ == Flavour::Fanuc)  // 808D alarm 14800
-        L.diags_.warning(f->loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
+      checkFeed(*f);
       emit(OpKind::Feed, f->loc).set("value", take('F', Scale::Feed));
     }
     if (!speedOp()) return false;

@@ -5,6 +5,7 @@
 #include "frontend/iso/Codes.h"
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/iso/Syntax.h"
+#include "ir/CmdSink.h"
 
 namespace ncc::iso {
 
@@ -27,12 +28,22 @@ public:
   // Words (G/M codes, addresses) and assignments. Returns false when an error was reported.
   bool lowerActions(ParsedBlock &b, ir::Region &out);
 
+  // The lean path of a streamed flat program (LowerLean.cpp): a plain block (constant words,
+  // mode codes, a feed and a move) goes straight to machine commands, the same commands
+  // lowerActions and the command templates would give. Fallback: the block needs lowerActions
+  // (nothing was done); Held: it fits, but `pending` said ops wait to run first (nothing done);
+  // Error: a lowering error was reported; Stopped: the sink refused a command.
+  enum class Lean : uint8_t { Done, Fallback, Held, Error, Stopped };
+  Lean lowerLean(ParsedBlock &b, CmdSink &sink, bool pending);
+
   std::vector<CallRef> calls;  // every callee referenced, for subprogram resolution
   bool allowCalls = true;      // false when streaming: M98/G65 are then errors
 
 private:
   struct Block;  // one block being lowered (Lower.cpp)
   Diagnostics &diags_;
+  ir::Region none_;  // the lean path's Block writes no ops
+  MachineCmd cmd_;   // the lean path's command, cleared after each use
   Flavour flavour_;
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
   bool axesScaleEnable_ = false;  // G51 factors: I J K (else P)

@@ -1,6 +1,7 @@
 // Private to the ISO front end's lowering (Lower.cpp, LowerFrames.cpp): one block being lowered.
 #pragma once
 #include "frontend/iso/Lower.h"
+#include "ir/CmdSink.h"
 #include "ir/MachineCmd.h"
 
 #include <algorithm>
@@ -48,10 +49,10 @@ struct BlockLowerer::Block {
   };
   // Which words are present, which were consumed. Slots: A-Z, then RS274NGC's polar `@` `^`.
   struct Words {
-    static int slot(char c) { return c == '@' ? 26 : c == '^' ? 27 : c - 'A'; }
-    static char letter(int slot) { return slot == 26 ? '@' : slot == 27 ? '^' : (char)('A' + slot); }
-    static uint32_t bit(char c) { return 1u << slot(c); }
-    static uint32_t bits(const char *letters) {
+    static constexpr int slot(char c) { return c == '@' ? 26 : c == '^' ? 27 : c - 'A'; }
+    static constexpr char letter(int slot) { return slot == 26 ? '@' : slot == 27 ? '^' : (char)('A' + slot); }
+    static constexpr uint32_t bit(char c) { return 1u << slot(c); }
+    static constexpr uint32_t bits(const char *letters) {
       uint32_t m = 0;
       for (; *letters; ++letters) m |= bit(*letters);
       return m;
@@ -68,6 +69,7 @@ struct BlockLowerer::Block {
   Region &out;
   Words bw;
   GUse gs[(size_t)GGroup::Count];
+  uint32_t groups = 0;  // bit per GGroup with a code in gs
   MUse ms[8];
   int nm = 0;
   bool macroCall = false;  // G65, G66: every other address is an argument (M too)
@@ -96,9 +98,11 @@ struct BlockLowerer::Block {
     default: return 1.0;
     }
   }
+  // A constant word's value: without a decimal point divided by the factor.
+  static double constValue(const IsoWord &w, double f) { return !w.hasPoint && f != 1.0 ? w.value / f : w.value; }
   static ExprPtr literal(const IsoWord &w, double f) {
     if (w.expr) return w.expr->clone();
-    if (!w.hasPoint && f != 1.0) return Expr::number(w.value / f, ir::Type::Real, w.loc);
+    if (!w.hasPoint && f != 1.0) return Expr::number(constValue(w, f), ir::Type::Real, w.loc);
     return Expr::number(w.value, w.hasPoint ? ir::Type::Real : ir::Type::Int, w.loc);
   }
   const GCodeInfo *G(GGroup g) const { return gs[(size_t)g].info; }
@@ -112,13 +116,19 @@ struct BlockLowerer::Block {
     out.emplace_back(k, loc);
     return out.back();
   }
+  // The value a mode code of group g sets (its GKind is Mode).
+  ModeValue modeValue(GGroup g) const {
+    // Fanuc's G80 returns to the group-01 mode before the cycle; LinuxCNC's leaves none.
+    const GCodeInfo *gi = G(g);
+    return gi->mode == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc ? ModeValue::CycleCancel : gi->mode;
+  }
   void modeOp(GGroup g, const char *key) {
     auto *gi = G(g);
     if (!gi || gi->kind != GKind::Mode) return;
-    // Fanuc's G80 returns to the group-01 mode before the cycle; LinuxCNC's leaves none.
-    ModeValue m = gi->mode == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc ? ModeValue::CycleCancel : gi->mode;
-    add(emit(OpKind::Mode, gloc(g)), key, Expr::symbol(modeValueInfo(m).name, gloc(g)));
+    add(emit(OpKind::Mode, gloc(g)), key, Expr::symbol(modeValueInfo(modeValue(g)).name, gloc(g)));
   }
+  void trackModes();                 // the block's units, feed mode and motion mode, for its words
+  void checkFeed(const IsoWord &f);  // F <= 0 (a warning on Fanuc)
   // Keys are unique here, so args are appended directly (Op::set would search).
   static void add(Op &op, char key, ExprPtr v) { op.args.push_back({std::string(1, key), std::move(v)}); }
   static void add(Op &op, const char *key, ExprPtr v) { op.args.push_back({key, std::move(v)}); }
@@ -187,6 +197,9 @@ struct BlockLowerer::Block {
   bool ioCode(const MUse &m);       // LinuxCNC M62-M68
   bool callsAndReturn();
   bool finish();         // assignments, unused words
+  // The lean path (LowerLean.cpp), after classify().
+  bool leanFits() const;
+  bool leanEmit(CmdSink &sink);
 };
 
 // G and M codes through the tables; group conflicts, duplicate words.

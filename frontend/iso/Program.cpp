@@ -357,7 +357,7 @@ void ProgramParser::oword(ParsedBlock &b, BlockLowerer &lower) {
 }
 
 bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
-  const std::string &text = sm_.text(fileId);
+  std::string_view text = sm_.text(fileId);
   Flavour flavour = flavourForFile(sm_.name(fileId));
   BlockParser parser(diags_, flavour, opts_.blockDeleteMask, opts_.offsetMemory, opts_.lathe);
   BlockLowerer lower(opts_, flavour, diags_);

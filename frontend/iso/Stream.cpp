@@ -26,8 +26,11 @@ struct ByteClasses {
 };
 static constexpr ByteClasses kBytes;
 
-bool isoIsStreamable(std::string_view text) {
+bool isoIsStreamable(std::string_view text, const SourceManager *sm, uint32_t file) {
   const char *p = text.data(), *end = p + text.size();
+  // A mapped file's scanned pages go as the scan moves on, or the whole text would be resident.
+  constexpr size_t kReleaseEvery = 1 << 20;
+  const char *released = p;
   if (text.size() >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;  // UTF-8 BOM
   bool seenContent = false;  // a block before: a later O line is a subprogram
   while (p < end) {
@@ -101,13 +104,14 @@ bool isoIsStreamable(std::string_view text) {
       if (L == 'G' && v >= 70 && v <= 73 && (r >= le || *r != '.')) return false;
     }
     p = nl ? nl + 1 : end;
+    if (sm && (size_t)(p - released) >= kReleaseEvery) sm->released(file, (size_t)((released = p) - text.data()));
   }
   return true;
 }
 
 struct IsoBlockStream::Impl {
   Impl(SourceManager &sm, uint32_t fileId, const IsoOptions &opts, Diagnostics &diags)
-      : diags(diags), text(sm.text(fileId)), fileId(fileId),
+      : diags(diags), sm(sm), text(sm.text(fileId)), fileId(fileId),
         parser(diags, flavourForFile(sm.name(fileId)), opts.blockDeleteMask, opts.offsetMemory, opts.lathe),
         lower(opts, flavourForFile(sm.name(fileId)), diags) {
     lower.allowCalls = false;
@@ -119,7 +123,8 @@ struct IsoBlockStream::Impl {
     }
   }
   Diagnostics &diags;
-  const std::string &text;
+  const SourceManager &sm;
+  std::string_view text;  // mapped: the pages read are released (SourceManager::released)
   uint32_t fileId;
   BlockParser parser;
   BlockLowerer lower;
@@ -134,11 +139,12 @@ IsoBlockStream::IsoBlockStream(SourceManager &sm, uint32_t fileId, const IsoOpti
 
 IsoBlockStream::~IsoBlockStream() = default;
 
-bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks) {
+bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks, CmdSink *lean) {
   Impl &s = *impl_;
   size_t before = out.size();
   size_t blocks = 0;
   while (s.p < s.end && blocks < maxBlocks && !s.fatal && !s.ended) {
+    const char *lineStart = s.p;
     const char *nl = static_cast<const char *>(std::memchr(s.p, '\n', (size_t)(s.end - s.p)));
     const char *le = nl ? nl : s.end;
     std::string_view line(s.p, (size_t)(le - s.p));
@@ -165,12 +171,33 @@ bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks) {
       break;
     }
     if (!b.words.empty() || !b.assigns.empty()) s.content = true;
+    if (lean) {
+      // Commands go to the sink at once, so ops appended before must run first: the block is
+      // read again by the next call.
+      BlockLowerer::Lean r = s.lower.lowerLean(b, *lean, out.size() > before);
+      if (r == BlockLowerer::Lean::Held) {
+        s.p = lineStart;
+        --s.lineNo;
+        break;
+      }
+      if (r == BlockLowerer::Lean::Stopped) {
+        s.fatal = true;
+        break;
+      }
+      if (r != BlockLowerer::Lean::Fallback) {  // done, or an error reported as lowerActions would
+        ++blocks;
+        continue;
+      }
+    }
     ++blocks;
     out.push_back(s.lower.blockOp(b));
     s.lower.lowerComments(b, out);
     s.lower.lowerActions(b, out);
     if (s.fatal) break;
   }
+  // The text read so far is only needed again for a diagnostic: its pages may go (the chunk's
+  // ops keep locations, not text).
+  s.sm.released(s.fileId, (size_t)(s.p - s.text.data()));
   return out.size() > before || (blocks > 0 && s.p < s.end && !s.fatal);
 }
 

@@ -75,7 +75,7 @@ static void sectionEndLabels(ir::Region &body) {
   place(place, body);
 }
 
-static bool mentionsMcall(const std::string &text) {
+static bool mentionsMcall(std::string_view text) {
   std::string up(text);
   for (auto &c : up) c = (char)std::toupper((unsigned char)c);
   return up.find("MCALL") != std::string::npos;
@@ -114,7 +114,7 @@ bool FunctionParser::macroLine(std::vector<Token> &toks, uint32_t line, bool &de
 }
 
 bool FunctionParser::run() {
-  const std::string &text = pp.sm.text(file);
+  std::string_view text = pp.sm.text(file);
   pp.modalCalls = pp.modalCalls || mentionsMcall(text);
   size_t pos = 0;
   uint32_t lineNo = 0;

@@ -403,9 +403,9 @@ TEST(Jit, FlatProgramIsOneTable) {
   std::string ll;
   ASSERT_TRUE(jit::emitLLVM(m, ll, diags));
   EXPECT_NE(ll.find("@nc.table = private constant"), std::string::npos);
-  size_t calls = 0;
+  size_t calls = 0;  // command calls; the first block waits for the table (ncrt_exec_blocks)
   for (size_t p = ll.find("call i32 @ncrt_exec"); p != std::string::npos; p = ll.find("call i32 @ncrt_exec", p + 1))
-    ++calls;
+    calls += ll.compare(p, 26, "call i32 @ncrt_exec_blocks") != 0;
   EXPECT_EQ(calls, 1u);
 }
 
@@ -584,20 +584,90 @@ struct RandomProgram {
     return r;
   }
 };
-}  // namespace
+// A block before every op, as an ISO program has one per line.
+Region withLines(Region in, int &n) {
+  Region out;
+  for (auto &op : in) {
+    for (auto &sub : op.regions) sub = withLines(std::move(sub), n);
+    out.push_back(block(1000 + ++n));
+    out.push_back(std::move(op));
+  }
+  return out;
+}
 
-TEST(Jit, RandomProgramsMatchEval) {
+// Random program `seed` (main and O1; `lines`: a block before every op) and its limits.
+Module randomModule(uint64_t seed, bool lines) {
+  RandomProgram g(seed);
+  int blocks = 0, subBlocks = 0;
+  Region body = g.body(2, blocks), sub = g.body(1, subBlocks);
+  Module m = module(lines ? withLines(std::move(body), blocks) : std::move(body));
+  addFunction(m, "O1", lines ? withLines(std::move(sub), subBlocks) : std::move(sub));
+  return m;
+}
+
+jit::JitOptions randomLimits() {
   jit::JitOptions opts;
   opts.limits.maxLoopIterations = 50;
   opts.limits.maxCallDepth = 4;
+  return opts;
+}
+}  // namespace
+
+TEST(Jit, RandomProgramsMatchEval) {
+  jit::JitOptions opts = randomLimits();
   for (uint64_t seed = 1; seed <= 150; ++seed) {
-    RandomProgram g(seed);
-    int blocks = 0;
-    Module m = module(g.body(2, blocks));
-    int subBlocks = 0;
-    addFunction(m, "O1", g.body(1, subBlocks));
+    Module m = randomModule(seed, false);
     SCOPED_TRACE("seed " + std::to_string(seed) + "\n" + printModule(m));
     run(m, opts);  // compares both engines
     if (::testing::Test::HasFailure()) break;
   }
+}
+
+// A target that takes runs of blocks merged (CmdSink::execBlocks; the default expands a run to
+// `count` copies of its last block): the same commands as the eval engine in the same order,
+// and every maximal run of blocks as long as the eval engine's, ending with the same block.
+// Random programs (loops, gotos, calls) check where the JIT passes waiting blocks on.
+TEST(Jit, RandomProgramsMergedBlocks) {
+  struct Merging : Recorder {
+    uint64_t merged = 0;  // blocks that came in a run of more than one
+    bool mergesBlocks() const override { return true; }
+    bool execBlocks(const MachineCmd &last, uint64_t count) override {
+      merged += count > 1 ? count : 0;
+      return CmdSink::execBlocks(last, count);
+    }
+  };
+  uint64_t merged = 0;
+  // Each maximal run of blocks as (length, last block's line and number), other commands as they are.
+  auto runs = [](const Recorder &r) {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < r.cmds.size();) {
+      const MachineCmd &c = r.cmds[i];
+      if (c.kind != CmdKind::Block) {
+        out.push_back(std::to_string((int)c.kind) + " " + std::to_string(c.loc.line) + " " + std::to_string(c.mask));
+        ++i;
+        continue;
+      }
+      size_t j = i;
+      while (j < r.cmds.size() && r.cmds[j].kind == CmdKind::Block) ++j;
+      out.push_back("blocks " + std::to_string(j - i) + " last N" + std::to_string(r.cmds[j - 1].blockNumber));
+      i = j;
+    }
+    return out;
+  };
+  jit::JitOptions opts = randomLimits();
+  for (uint64_t seed = 1; seed <= 150; ++seed) {
+    Module m = randomModule(seed, true);
+    SCOPED_TRACE("seed " + std::to_string(seed) + "\n" + printModule(m));
+    ::Run jr, er;
+    Merging merging;
+    jr.ok = jit::runModule(m, merging, jr.diags, opts);
+    Evaluator ev(er.rec, er.diags, opts.limits);
+    er.ok = ev.run(m);
+    EXPECT_EQ(jr.ok, er.ok);
+    EXPECT_EQ(jr.errors(), er.errors());
+    EXPECT_EQ(runs(merging), runs(er.rec));
+    merged += merging.merged;
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(merged, 100u);  // the programs do merge runs of blocks
 }

@@ -1,0 +1,105 @@
+// The lean path of a streamed flat program (issue 6): a plain block goes from the parsed words
+// straight to machine commands, with no NC IR ops, argument vectors, keys or expressions in
+// between. A plain block has constant words only and nothing but mode codes, F and a move (the
+// axis words, and I J K R of an arc); anything else falls back to lowerActions. The classification
+// (the G/M code tables, conflicts, duplicate words), the modal tracking, the word scaling and the
+// mode values are lowerActions' own (LowerBlock.h); the commands are the ones buildCmdTemplate
+// makes of lowerActions' ops, in the same order (test/unit/LeanLowerTest.cpp compares both).
+#include "frontend/iso/LowerBlock.h"
+
+namespace ncc::iso {
+
+namespace {
+// The mode groups of a plain block, in lowerActions' order: setup() emits these before the
+// motion mode (feed mode first, then the feed), motion() the motion mode before the move.
+constexpr GGroup kModesBeforeMotion[] = {GGroup::Plane, GGroup::Units, GGroup::PathMode, GGroup::Distance,
+                                         GGroup::ArcDistance, GGroup::Retract};
+constexpr uint32_t groupBit(GGroup g) { return 1u << (unsigned)g; }
+constexpr uint32_t kLeanGroups = groupBit(GGroup::FeedMode) | groupBit(GGroup::Plane) | groupBit(GGroup::Units) |
+                                 groupBit(GGroup::PathMode) | groupBit(GGroup::Distance) |
+                                 groupBit(GGroup::ArcDistance) | groupBit(GGroup::Retract) | groupBit(GGroup::Motion);
+static_assert((size_t)GGroup::Count <= 32);
+
+bool plainMotion(ModeValue m) {
+  return m == ModeValue::Rapid || m == ModeValue::Linear || m == ModeValue::ArcCW || m == ModeValue::ArcCCW;
+}
+bool isArc(ModeValue m) { return m == ModeValue::ArcCW || m == ModeValue::ArcCCW; }
+}  // namespace
+
+// Every word constant, no assignment, comment, corner or statement: checked on the parsed block.
+static bool plainWords(const ParsedBlock &b) {
+  if (!b.assigns.empty() || !b.comments.empty() || !b.corner.empty() || b.stmt != StmtKind::None ||
+      b.programNumber >= 0)
+    return false;
+  for (const IsoWord &w : b.words)
+    if (w.expr) return false;
+  return true;
+}
+
+// After classify(): only mode codes of the lean groups, no M code, a plain motion mode, and words
+// the block's mode and move use (an unused word takes lowerActions, which reports it).
+bool BlockLowerer::Block::leanFits() const {
+  if (nm || macroCall || (groups & ~kLeanGroups)) return false;
+  for (uint32_t g = groups; g; g &= g - 1)
+    if (gs[__builtin_ctz(g)].info->kind != GKind::Mode) return false;
+  const ModeValue m = G(GGroup::Motion) ? G(GGroup::Motion)->mode : L.motion_;
+  if (!plainMotion(m)) return false;
+  constexpr uint32_t kPlain = Words::bits("XYZABCUVWF"), kArc = Words::bits("IJKR");
+  return (bw.present & ~(isArc(m) ? kPlain | kArc : kPlain)) == 0;
+}
+
+bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
+  MachineCmd &c = L.cmd_;
+  auto issue = [&] {
+    bool ok = sink.exec(c);
+    c.clear();
+    return ok;
+  };
+  auto mode = [&](GGroup g) {
+    if (!G(g)) return true;
+    c.kind = CmdKind::Mode;
+    c.loc = gloc(g);
+    c.nmodes = 1;
+    c.modes[0] = modeValue(g);
+    return issue();
+  };
+  c.kind = CmdKind::Block;
+  c.loc = b.loc;
+  c.blockNumber = b.n;
+  if (!issue()) return false;
+  trackModes();
+  if (!mode(GGroup::FeedMode)) return false;
+  if (IsoWord *f = bw.get('F')) {
+    checkFeed(*f);
+    c.kind = CmdKind::Feed;
+    c.loc = f->loc;
+    c.set(Word::F, constValue(*f, factor(Scale::Feed)));
+    if (!issue()) return false;
+  }
+  if (groups & ~groupBit(GGroup::FeedMode))
+    for (GGroup g : kModesBeforeMotion)
+      if (!mode(g)) return false;
+  if (!mode(GGroup::Motion)) return false;
+  const uint32_t moveWords = bw.present & ~Words::bit('F');
+  if (!moveWords) return true;  // I J K R alone still move an arc (as motion()); F alone does not
+  c.kind = CmdKind::Move;
+  c.loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
+  for (uint32_t m = moveWords; m; m &= m - 1) {
+    const char letter = Words::letter(__builtin_ctz(m));
+    Word w;
+    wordFromLetter(letter, w);
+    c.set(w, constValue(*bw.w[__builtin_ctz(m)], factor(scaleOf(letter))));
+  }
+  return issue();
+}
+
+BlockLowerer::Lean BlockLowerer::lowerLean(ParsedBlock &b, CmdSink &sink, bool pending) {
+  if (lathe_ || !plainWords(b)) return Lean::Fallback;
+  Block blk(*this, b, none_);
+  if (!blk.classify()) return Lean::Error;
+  if (!blk.leanFits()) return Lean::Fallback;
+  if (pending) return Lean::Held;
+  return blk.leanEmit(sink) ? Lean::Done : Lean::Stopped;
+}
+
+}  // namespace ncc::iso

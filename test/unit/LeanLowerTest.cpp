@@ -1,0 +1,156 @@
+// The lean path of the ISO stream (BlockLowerer::lowerLean) against the ops path: the same
+// program streamed with and without a lean sink must give the same machine commands in the
+// same order (the ops through buildCmdTemplate), the same diagnostics, and the plain blocks
+// must really take the lean path.
+#include "frontend/iso/IsoFrontend.h"
+#include "passes/CmdTemplate.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace ncc;
+using namespace ncc::iso;
+
+namespace {
+
+class Recorder : public CmdSink {
+public:
+  std::vector<MachineCmd> cmds;
+  size_t direct = 0;  // commands that came from the lean path
+  bool exec(const MachineCmd &c) override {
+    cmds.push_back(c);
+    ++direct;
+    return true;
+  }
+};
+
+struct Streamed {
+  std::vector<MachineCmd> cmds;
+  size_t direct = 0;
+  std::vector<std::string> diags;
+};
+
+Streamed stream(const std::string &src, const char *name, bool lean, IsoOptions opts = {}) {
+  SourceManager sm;
+  Diagnostics diags(sm);
+  diags.setCollect(true);
+  uint32_t f = sm.addBuffer(name, src);
+  IsoBlockStream s(sm, f, opts, diags);
+  Recorder rec;
+  ir::Region r;
+  CmdTemplate t;
+  auto drain = [&] {
+    for (const ir::Op &op : r) {
+      if (!isMachineOp(op.kind)) continue;  // #1=2: the ops path both times
+      EXPECT_TRUE(buildCmdTemplate(op, t, diags));
+      rec.cmds.push_back(t.base);  // X#1: its slot unevaluated, the ops path both times
+    }
+    r.clear();
+  };
+  for (int calls = 0; calls < 10000; ++calls) {
+    bool more = s.next(r, 3, lean ? &rec : nullptr);  // small chunks: held blocks at the seams
+    drain();
+    if (!more) break;
+  }
+  Streamed out;
+  out.cmds = std::move(rec.cmds);
+  out.direct = rec.direct;
+  for (auto &d : diags.collected())
+    out.diags.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.col) + " " + d.message + " [" + d.rule + "]");
+  return out;
+}
+
+void expectSameCmd(const MachineCmd &a, const MachineCmd &b, size_t i) {
+  SCOPED_TRACE("command " + std::to_string(i));
+  EXPECT_EQ((int)a.kind, (int)b.kind);
+  EXPECT_EQ(a.sub, b.sub);
+  EXPECT_EQ(a.sub2, b.sub2);
+  ASSERT_EQ(a.nmodes, b.nmodes);
+  for (int k = 0; k < a.nmodes; ++k) EXPECT_EQ((int)a.modes[k], (int)b.modes[k]);
+  EXPECT_EQ(a.mask, b.mask);
+  EXPECT_EQ(a.blockNumber, b.blockNumber);
+  EXPECT_EQ(a.loc.file, b.loc.file);
+  EXPECT_EQ(a.loc.line, b.loc.line);
+  EXPECT_EQ(a.loc.col, b.loc.col);
+  EXPECT_EQ(a.text == nullptr, b.text == nullptr);
+  for (int k = 0; k < kWords; ++k) EXPECT_EQ(a.w[k], b.w[k]) << "word " << kWordKeys[k];
+}
+
+// Returns how many commands took the lean path.
+size_t expectSame(const std::string &src, const char *name, IsoOptions opts = {}) {
+  Streamed ops = stream(src, name, false, opts), lean = stream(src, name, true, opts);
+  EXPECT_EQ(ops.direct, 0u);
+  EXPECT_EQ(ops.diags, lean.diags);
+  // A program with errors never runs (the driver stops after the stream's call): its commands
+  // need not agree.
+  for (const std::string &d : ops.diags)
+    if (d.find("[unused-word]") != std::string::npos || d.find("[modal-group-conflict]") != std::string::npos ||
+        d.find("[unknown-code]") != std::string::npos)
+      return lean.direct;
+  EXPECT_EQ(ops.cmds.size(), lean.cmds.size());
+  for (size_t i = 0; i < ops.cmds.size() && i < lean.cmds.size(); ++i) expectSameCmd(ops.cmds[i], lean.cmds[i], i);
+  return lean.direct;
+}
+
+const char *const kMill =
+    "%\n"
+    "O0001\n"
+    "G21 G90 G17 G94\n"
+    "N5 G0 X0 Y0 Z1\n"
+    "F1500\n"
+    "G1 X1.866 Y-0.237 Z-0.993\n"
+    "X3.5 Y1.52\n"
+    "G2 X5.246 Y-0.079 I2.912 J0\n"
+    "G3 X1 Y1 R2.5\n"
+    "I1 J1\n"                     // an arc from I J alone
+    "G91 G1 X1 A90\n"
+    "G90 G18 G2 X1 Z1 I0.5 K0.5\n"
+    "G17 G20 X1 Y1\n"
+    "G21 G61 G0 Z5\n"
+    "G64 X2\n"
+    "G1 X1 (a comment)\n"          // comments, parameters, M and S codes: the ops path
+    "#1=2\n"
+    "G1 X#1\n"
+    "M3 S1000\n"
+    "G54 X4\n"
+    "G93 G1 X2 F10\n"
+    "G94 F0\n"                     // a warning on Fanuc, the same way
+    "G81 X1 Y1 Z-1 R1\n"
+    "X2\n"                         // a cycle's position: the ops path
+    "G80 G0 X0\n"
+    "M30\n"
+    "%\n";
+
+TEST(LeanLower, ErrorsReportedTheSame) {
+  // Two codes of one group, an unused word (the ops path reports it), an unknown code.
+  const char *src = "G1 X1 F10\nG98 G99 X3\nG0 G1 X1\nG1 X1 P2\nG12.7 X1\nG1 X2\nG0 I1\n";
+  for (const char *name : {"t.nc", "t.ngc"}) {
+    Streamed lean = stream(src, name, true);
+    EXPECT_EQ(lean.diags.size(), 5u);
+    EXPECT_EQ(expectSame(src, name), 7u);  // lines 1 and 6
+  }
+}
+
+TEST(LeanLower, MillFanucSameCommands) { EXPECT_GT(expectSame(kMill, "t.nc"), 30u); }
+
+TEST(LeanLower, MillRs274SameCommands) { EXPECT_GT(expectSame(kMill, "t.ngc"), 30u); }
+
+TEST(LeanLower, DecimalModesScaleAsTheOpsPath) {
+  const char *src = "G21 G90\nG1 X1000 Y2.5 Z-300 A45 F1500\nG95 F20 X1\nG20 X1000 F100\nG2 X10 I5 J0\nM30\n";
+  for (const char *mode : {"calculator", "is-b", "is-c"}) {
+    SCOPED_TRACE(mode);
+    IsoOptions opts;
+    opts.decimalMode = mode;
+    EXPECT_GT(expectSame(src, "t.nc", opts), 10u);
+  }
+}
+
+TEST(LeanLower, LatheTakesTheOpsPath) {
+  IsoOptions opts;
+  opts.lathe = true;
+  EXPECT_EQ(expectSame("G18 G90\nG0 X10 Z1\nG1 U-2 W-1 F0.2\nM30\n", "t.nc", opts), 0u);
+}
+
+}  // namespace
