@@ -5,6 +5,7 @@
 #pragma once
 #include "ir/NCIR.h"
 #include "ir/ExecLimits.h"
+#include "runtime/ncrt.h"
 
 #include <string>
 
@@ -40,7 +41,9 @@ bool runObjectFile(const std::string &path, CmdSink &sink, Diagnostics &diags, c
 
 // Textual LLVM IR of the program, before optimisation (`ncc compile --emit=llvm`).
 bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags);
-// Host object file (O2), written atomically (`ncc compile --emit=obj`).
-bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags);
+// Host object file (O2), written atomically (`ncc compile --emit=obj`). Beside the entry it
+// defines `ncc_program_info`, the encoded `info` (its abi is set here), so that the object runs
+// without its source (docs/AOT.md).
+bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info = {});
 
 }  // namespace ncc::jit

@@ -14,48 +14,18 @@
 namespace ncc::driver {
 
 void addCommonOptions(po::options_description &desc, CommonOptions &o) {
+  addRunTimeOptions(desc, o);
   desc.add_options()
-      ("machine", po::value(&o.machine)->default_value("default"), "machine description: 'default' or a file")
       ("dialect", po::value(&o.dialect), "source dialect: iso|sinumerik|heidenhain|cldata|ncir|motion (default: from the file)")
       ("engine", po::value(&o.engine)->default_value("eval"), "execution engine: eval|jit")
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
       ("include,I", po::value(&o.includeDirs), "folder with subprogram files (after the program's own folder; repeatable)")
-      ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)")
-      ("max-loop-iterations", po::value(&o.limits.maxLoopIterations)->default_value(o.limits.maxLoopIterations),
-       "stop a loop after this many iterations")
-      ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
-      ("max-seconds", po::value(&o.limits.maxSeconds)->default_value(o.limits.maxSeconds), "run-time limit in seconds")
-      ("diagnostics-format", po::value(&o.diagnosticsFormat)->default_value("text"), "text|json")
-      ("Werror", po::bool_switch(&o.werror), "treat warnings as errors");
-}
-
-int parseArgs(int argc, char **argv, po::options_description &desc, po::positional_options_description &pos,
-              po::variables_map &vm, const char *usage) {
-  desc.add_options()("help,h", "show this help");
-  try {
-    // allow_long_disguise accepts -Werror as well as --Werror (compiler habit).
-    po::store(po::command_line_parser(argc, argv)
-                  .options(desc)
-                  .positional(pos)
-                  .style(po::command_line_style::default_style | po::command_line_style::allow_long_disguise)
-                  .run(),
-              vm);
-    if (vm.count("help")) {
-      std::cout << "usage: " << usage << "\n\n" << desc << "\n";
-      return kExitOk;
-    }
-    po::notify(vm);
-  } catch (const po::error &e) {
-    std::cerr << "ncc: error: " << e.what() << "\nusage: " << usage << "\n";
-    return kExitUsage;
-  }
-  return -1;
+      ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)");
 }
 
 bool Session::setUp() {
-  diags.setFormat(opts.diagnosticsFormat == "json" ? Diagnostics::Format::Json : Diagnostics::Format::Text);
-  diags.setWarningsAsErrors(opts.werror);
+  applyDiagnosticsOptions(opts, diags);
   if (!loadMachine(opts.machine, machine)) return false;
   if (opts.engine != "eval" && opts.engine != "jit") {
     diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));

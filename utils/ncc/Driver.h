@@ -8,6 +8,7 @@
 #include "ir/NCIR.h"
 #include "ir/ExecLimits.h"
 #include "runtime/Machine.h"
+#include "utils/ncc/RunOutput.h"
 
 #include <boost/program_options.hpp>
 
@@ -16,22 +17,15 @@
 
 namespace ncc::driver {
 
-namespace po = boost::program_options;
-
-// Exit codes (README "Exit codes").
-constexpr int kExitOk = 0, kExitErrors = 1, kExitUsage = 2;
-
-struct CommonOptions {
-  std::string machine = "default";
+// The run-time options (machine, limits, diagnostics: utils/ncc/RunOutput.h), then those that
+// act when the program is read and compiled.
+struct CommonOptions : RunTimeOptions {
   std::string dialect;  // empty = detect
   std::string engine = "eval";
   std::string decimalMode;  // empty = the machine's
   std::vector<unsigned> blockDelete;
   std::vector<std::string> includeDirs;  // subprogram files, searched after the program's folder
   std::vector<std::string> linkFiles;    // programs/libraries linked in, each read by its own front end
-  ExecLimits limits;
-  std::string diagnosticsFormat = "text";
-  bool werror = false;
 };
 
 // Adds the options every program-reading subcommand takes.
@@ -77,10 +71,6 @@ public:
 
 // Output helper: writes `text` to `path` atomically, or to stdout for "" / "-".
 bool writeOutput(Session &s, const std::string &path, const std::string &text);
-
-// Parses argv for a subcommand; prints help/usage errors. Returns -1 to continue, else an exit code.
-int parseArgs(int argc, char **argv, po::options_description &desc, po::positional_options_description &pos,
-              po::variables_map &vm, const char *usage);
 
 int cmdRun(int argc, char **argv);
 int cmdCompile(int argc, char **argv);
