@@ -46,4 +46,23 @@ bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags);
 // without its source (docs/AOT.md).
 bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info = {});
 
+// The JIT as a separately loaded part (libncc-jit.so, dlopen'ed by the driver on first use), so
+// that a process that compiles nothing never maps LLVM. The module resolves everything outside
+// backends/jit from the ncc binary, which exports its symbols; the stamp guards against a module
+// of another build.
+struct JitApi {
+  uint64_t stamp;
+  bool (*runModule)(const ir::Module &, CmdSink &, Diagnostics &, const JitOptions &);
+  bool (*compilesQuickly)(const ir::Module &, std::string &);
+  bool (*emitLLVM)(const ir::Module &, std::string &, Diagnostics &);
+  bool (*emitObject)(const ir::Module &, const std::string &, Diagnostics &, const ncrt::ProgramInfo &);
+};
+// What both sides compute from the headers they were built with.
+constexpr uint64_t jitApiStamp() {
+  return (uint64_t)NCRT_ABI_VERSION << 56 ^ (uint64_t)sizeof(ir::Module) << 40 ^ (uint64_t)sizeof(Diagnostics) << 24 ^
+         (uint64_t)sizeof(JitOptions) << 12 ^ sizeof(ncrt::ProgramInfo);
+}
+// The entry point libncc-jit.so exports.
+#define NCC_JIT_API_SYMBOL "ncc_jit_api_v1"
+
 }  // namespace ncc::jit

@@ -79,6 +79,7 @@ int runCompiled(const CompiledProgram &p, const RunTimeOptions &rt, bool machine
   RunOutputSet outputs(machine, out, program);
   if (!outputs.open(diags)) return kExitErrors;
   Executor exec(machine, outputs.sink(), diags);
+  outputs.watch(exec);
   ExecutorSink sink(exec);
   bool ok = ncrt::runEntry(p.entry, sink, diags, rt.limits);
   ok &= exec.finish(ok);

@@ -1,10 +1,10 @@
 // ncc compile: stop after a stage and print it (NC IR, Motion IR, LLVM IR, object file);
 // ncc opt: run named passes on a program or on textual NC IR.
-#include "backends/jit/Jit.h"
 #include "passes/Pass.h"
 #include "utils/ncc/AotRun.h"
 #include "utils/ncc/Driver.h"
 #include "utils/ncc/ExeLink.h"
+#include "utils/ncc/JitLoader.h"
 
 #include <fmt/format.h>
 
@@ -36,9 +36,10 @@ bool programInfo(Session &s, ncrt::ProgramInfo &info) {
 }
 
 // The object beside the executable, linked, then removed.
-bool emitExecutable(Session &s, const ir::Module &m, const ncrt::ProgramInfo &info, const std::string &out) {
+bool emitExecutable(Session &s, const jit::JitApi &jit, const ir::Module &m, const ncrt::ProgramInfo &info,
+                    const std::string &out) {
   std::string obj = out + ".ncc-" + std::to_string(getpid()) + ".o";
-  bool ok = jit::emitObject(m, obj, s.diags, info) && linkExecutable(obj, out, s.diags);
+  bool ok = jit.emitObject(m, obj, s.diags, info) && linkExecutable(obj, out, s.diags);
   std::remove(obj.c_str());
   return ok;
 }
@@ -81,14 +82,19 @@ int cmdCompile(int argc, char **argv) {
   if (!s.load(f, m)) return kExitErrors;
   if (emit == "ir") {
     writeOutput(s, out, ir::printModule(m, s.sm));
-  } else if (emit == "llvm") {
+    return s.exitCode();
+  }
+  const jit::JitApi *jit = jitBackend(s.diags);
+  if (!jit) return kExitErrors;
+  if (emit == "llvm") {
     std::string text;
-    if (!jit::emitLLVM(m, text, s.diags)) return kExitErrors;
+    if (!jit->emitLLVM(m, text, s.diags)) return kExitErrors;
     writeOutput(s, out, text);
   } else {
     ncrt::ProgramInfo info;
     if (!programInfo(s, info)) return kExitErrors;
-    if (emit == "obj" ? !jit::emitObject(m, out, s.diags, info) : !emitExecutable(s, m, info, out)) return kExitErrors;
+    if (emit == "obj" ? !jit->emitObject(m, out, s.diags, info) : !emitExecutable(s, *jit, m, info, out))
+      return kExitErrors;
   }
   return s.exitCode();
 }

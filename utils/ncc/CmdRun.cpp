@@ -55,6 +55,7 @@ int cmdRun(int argc, char **argv) {
 
   RunOutputSet outputs(s.machine, out, file);
   if (!outputs.open(s.diags)) return kExitErrors;
+  s.onExecutor = [&](const Executor &e) { outputs.watch(e); };
   uint64_t blocks = 0;
   bool ok = s.execute(f, outputs.sink(), &blocks);
   // Motion IR text has no blocks to count: the summary counts the source positions of the records.

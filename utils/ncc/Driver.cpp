@@ -1,6 +1,6 @@
 #include "utils/ncc/Driver.h"
 
-#include "backends/jit/Jit.h"
+#include "utils/ncc/JitLoader.h"
 #include "passes/Eval.h"
 #include "passes/Pass.h"
 #include "runtime/Executor.h"
@@ -108,14 +108,18 @@ bool Session::load(uint32_t file, ir::Module &out) {
 
 bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blocks) {
   Executor exec(machine, sink, diags);
+  if (onExecutor) onExecutor(exec);
   bool ok;
   std::string why;
-  if (opts.engine == "jit" && !jit::compilesQuickly(m, why))
+  const jit::JitApi *jit = opts.engine == "jit" ? jitBackend(diags) : nullptr;
+  if (opts.engine == "jit" && !jit) return false;
+  if (jit && !jit->compilesQuickly(m, why))
     diags.note({}, fmt::format("running with the eval engine: {}, which the JIT compiles too slowly", why));
-  if (opts.engine == "jit" && why.empty()) {
+  if (jit && why.empty()) {
     jit::JitOptions jo;
     jo.limits = opts.limits;
-    ok = jit::runModule(m, exec, diags, jo);
+    ExecutorSink es(exec);
+    ok = jit->runModule(m, es, diags, jo);
   } else {
     ExecutorSink es(exec);
     Evaluator ev(es, diags, opts.limits);

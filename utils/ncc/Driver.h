@@ -12,6 +12,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,8 @@ public:
   // `ncc lint` on one file: load (recovering after front-end errors), static rules, a run that
   // keeps going after executor errors. Diagnostics go to diags; false when it reported errors.
   bool lint(uint32_t file);
+  // Called with each executor a run creates (the progress line counts its blocks).
+  std::function<void(const Executor &)> onExecutor;
   // Blocks per streamed chunk (the fuzz targets use tiny chunks to reach the chunk boundaries).
   size_t streamChunkBlocks = 4096;
 

@@ -22,14 +22,20 @@ namespace fs = std::filesystem;
 // from CMake (utils/CMakeLists.txt).
 static const char *const kLibraryDirs[] = {NCC_BUILD_LIBDIR_FROM_BIN, NCC_INSTALL_LIBDIR_FROM_BIN};
 
-std::string runtimeLibraryDir() {
+std::vector<std::string> nccLibraryDirs() {
   std::error_code ec;
   fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return "";
-  for (const char *rel : kLibraryDirs) {
-    fs::path dir = (self.parent_path() / rel).lexically_normal();
-    if (fs::exists(dir / "libncc_main.a", ec)) return dir.string();
-  }
+  if (ec) return {};
+  std::vector<std::string> dirs;
+  for (const char *rel : kLibraryDirs) dirs.push_back((self.parent_path() / rel).lexically_normal().string());
+  dirs.push_back(self.parent_path().string());
+  return dirs;
+}
+
+std::string runtimeLibraryDir() {
+  std::error_code ec;
+  for (const std::string &dir : nccLibraryDirs())
+    if (fs::exists(fs::path(dir) / "libncc_main.a", ec)) return dir;
   return "";
 }
 

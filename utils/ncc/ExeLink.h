@@ -5,14 +5,17 @@
 #include "ir/Diagnostics.h"
 
 #include <string>
+#include <vector>
 
 namespace ncc::driver {
 
 // False after reporting (no linker on PATH, runtime libraries not found, the link failed).
 bool linkExecutable(const std::string &object, const std::string &out, Diagnostics &diags);
 
-// The folder with the runtime libraries: beside the build tree's ncc or in its install tree;
-// empty when neither has them.
+// Where ncc's libraries may be, best first: the build tree's lib folder (beside utils/ncc), the
+// install tree's (from bin/ncc), the binary's own folder.
+std::vector<std::string> nccLibraryDirs();
+// The one of them with the runtime libraries; empty when none has them.
 std::string runtimeLibraryDir();
 // The first of c++, g++, clang++ on PATH; empty when none.
 std::string findLinker();

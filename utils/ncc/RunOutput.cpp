@@ -1,6 +1,7 @@
 #include "utils/ncc/RunOutput.h"
 
 #include "runtime/CanonTrace.h"
+#include "runtime/Executor.h"
 #include "runtime/Sinks.h"
 
 #include <fmt/format.h>
@@ -104,6 +105,10 @@ bool RunOutputSet::open(Diagnostics &diags) {
   return true;
 }
 
+void RunOutputSet::watch(const Executor &exec) {
+  if (progress_) progress_->watch(exec);
+}
+
 int RunOutputSet::finish(bool ok, Diagnostics &diags) {
   ok &= tee_.finish(diags);
   std::fflush(stdout);
@@ -150,7 +155,7 @@ void ProgressLine::tick() {
   if (t < kDelay || t - lastDraw_ < kRedraw) return;
   lastDraw_ = t;
   drawn_ = true;
-  std::fputs(format(blocks_, t).c_str(), out_);
+  std::fputs(format(exec_ ? exec_->blockCount() : blocks_, t).c_str(), out_);
   std::fflush(out_);
 }
 

@@ -15,6 +15,10 @@
 #include <memory>
 #include <string>
 
+namespace ncc {
+class Executor;
+}
+
 namespace ncc::driver {
 
 namespace po = boost::program_options;
@@ -44,6 +48,35 @@ struct RunOutputArgs {
 };
 void addRunOutputOptions(po::options_description &desc, RunOutputArgs &a);
 
+// The progress line on stderr for long runs: blocks done (the executor's count; without one, a
+// block per change of the records' source line), rate, elapsed. Reads the clock every
+// kCheckEvery records and redraws at most every kRedraw seconds, from kDelay seconds on.
+// finish() erases it.
+class ProgressLine : public MotionSink {
+public:
+  static constexpr uint64_t kCheckEvery = 4096;
+  static constexpr double kDelay = 1.0, kRedraw = 0.25;
+  // Shown when not quiet and stderr is a terminal (the caller asks isatty, tests inject it).
+  static bool wanted(bool quiet, bool stderrIsTerminal) { return !quiet && stderrIsTerminal; }
+  // "\r12,345 blocks  6,172 blocks/s  2.0 s" (then erase to the end of the line).
+  static std::string format(uint64_t blocks, double seconds);
+
+  explicit ProgressLine(std::FILE *out);
+  void watch(const Executor &exec) { exec_ = &exec; }
+  void record(const MotionRecord &r) override;
+  bool finish(Diagnostics &diags) override;
+
+private:
+  void tick();
+  std::FILE *out_;
+  const Executor *exec_ = nullptr;
+  std::chrono::steady_clock::time_point start_;
+  double lastDraw_ = 0;
+  uint64_t records_ = 0, blocks_ = 0;
+  SourceLoc last_{};
+  bool drawn_ = false;
+};
+
 // The sinks of a run: planner + summary + files, the trace, the progress line.
 class RunOutputSet {
 public:
@@ -55,41 +88,18 @@ public:
   bool open(Diagnostics &diags);
   MotionSink &sink() { return tee_; }
   void setBlockCount(uint64_t n) { outputs_.setBlockCount(n); }
+  // The executor whose blocks the progress line counts (when there is one).
+  void watch(const Executor &exec);
   // Finishes the sinks, commits the trace file and prints the summary: the exit code.
   int finish(bool ok, Diagnostics &diags);
 
 private:
   RunOutputArgs args_;
+  MotionTee tee_;                       // outputs_ (when planning), trace_, progress_
   RunOutputs outputs_;
-  MotionTee tee_;
-  std::unique_ptr<AtomicFile> traceFile_;
-  std::unique_ptr<MotionSink> trace_, progress_;
-};
-
-// The progress line on stderr for long runs: blocks done, rate, elapsed. Counts a block per
-// change of the records' source position; reads the clock every kCheckEvery records and
-// redraws at most every kRedraw seconds, from kDelay seconds on. finish() erases it.
-class ProgressLine : public MotionSink {
-public:
-  static constexpr uint64_t kCheckEvery = 4096;
-  static constexpr double kDelay = 1.0, kRedraw = 0.25;
-  // Shown when not quiet and stderr is a terminal (the caller asks isatty, tests inject it).
-  static bool wanted(bool quiet, bool stderrIsTerminal) { return !quiet && stderrIsTerminal; }
-  // "\r12,345 blocks  6,172 blocks/s  2.0 s" (then erase to the end of the line).
-  static std::string format(uint64_t blocks, double seconds);
-
-  explicit ProgressLine(std::FILE *out);
-  void record(const MotionRecord &r) override;
-  bool finish(Diagnostics &diags) override;
-
-private:
-  void tick();
-  std::FILE *out_;
-  std::chrono::steady_clock::time_point start_;
-  double lastDraw_ = 0;
-  uint64_t records_ = 0, blocks_ = 0;
-  SourceLoc last_{};
-  bool drawn_ = false;
+  std::unique_ptr<ProgressLine> progress_;
+  std::unique_ptr<AtomicFile> traceFile_;  // trace_ writes to it (so it goes after trace_)
+  std::unique_ptr<MotionSink> trace_;
 };
 
 }  // namespace ncc::driver
