@@ -98,7 +98,7 @@ private:
   MotionTee tee_;                       // outputs_ (when planning), trace_, progress_
   RunOutputs outputs_;
   std::unique_ptr<ProgressLine> progress_;
-  std::unique_ptr<AtomicFile> traceFile_;  // trace_ writes to it (so it goes after trace_)
+  std::unique_ptr<AtomicFile> traceFile_;  // trace_ writes to it: declared first, destroyed last
   std::unique_ptr<MotionSink> trace_;
 };
 
