@@ -81,6 +81,10 @@ measure ncc-macro-motion-jit  "$ncc" run "$dir/macro_motion.nc" --engine=jit --t
 measure ncc-macro-motion-eval "$ncc" run "$dir/macro_motion.nc" --engine=eval --trace=canon -o "$dir/macro.ncc.eval.canon" -q
 measure ncc-macro-compute-jit "$ncc" run "$dir/macro_compute.nc" --engine=jit -q
 measure ncc-macro-compute-eval "$ncc" run "$dir/macro_compute.nc" --engine=eval -q
+# The Sinumerik twins (frontend/sinumerik): the same loop, the same trace as the .nc one.
+measure ncc-sin-motion-jit    "$ncc" run "$dir/macro_motion.mpf" --engine=jit --trace=canon -o "$dir/macro.sin.canon" -q
+measure ncc-sin-compute-jit   "$ncc" run "$dir/macro_compute.mpf" --engine=jit -q
+"$ncc" canon-diff --level=machine "$dir/macro.ncc.canon" "$dir/macro.sin.canon" && echo "macro_motion.mpf trace = macro_motion.nc trace: yes" || echo "macro_motion.mpf trace = macro_motion.nc trace: NO"
 # The full run: trajectory planning for the summary (cycle time), no trace. rs274 does no planning.
 measure ncc-flat-planned      "$ncc" run "$dir/flat_moves.ngc"
 planner_rows "$ncc" ncc

@@ -1,6 +1,7 @@
 #include "frontend/Frontend.h"
 
 #include "frontend/iso/IsoFrontend.h"
+#include "frontend/sinumerik/SinFrontend.h"
 
 #include <fmt/format.h>
 
@@ -75,6 +76,13 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
                   Diagnostics &diags, ir::Module &out) {
   switch (kind) {
   case SourceKind::ISO: return iso::parseIsoProgram(sm, file, isoOptions(opts), diags, out);
+  case SourceKind::Sinumerik: {
+    sin::SinOptions so;
+    so.blockDeleteMask = opts.blockDeleteMask;
+    so.searchDirs = opts.searchDirs;
+    so.linkedFunctions = opts.linkedFunctions;
+    return sin::parseSinumerikProgram(sm, file, so, diags, out);
+  }
   case SourceKind::NCIR: return ir::parseModule(sm.text(file), file, sm, diags, out);
   case SourceKind::Motion:
     diags.error({}, fmt::format("{}: Motion IR text is an executed program without NC IR: only ncc run, ncc "

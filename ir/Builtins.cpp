@@ -50,6 +50,12 @@ double ncc_builtin_exp(const double *a) { return std::exp(num(a[0])); }
 double ncc_builtin_pow(const double *a) { return std::pow(num(a[0]), num(a[1])); }
 double ncc_builtin_min(const double *a) { return std::fmin(num(a[0]), num(a[1])); }
 double ncc_builtin_max(const double *a) { return std::fmax(num(a[0]), num(a[1])); }
+// Sinumerik BOUND(min, max, x): x clamped to [min, max] (a value equal to a limit is x).
+double ncc_builtin_bound(const double *a) { return std::fmin(std::fmax(num(a[2]), num(a[0])), num(a[1])); }
+// Sinumerik ROUNDUP: the smallest integer >= x (ROUNDUP(-3.6) = -3).
+double ncc_builtin_roundup(const double *a) { return std::ceil(num(a[0])); }
+// Sinumerik ATAN2(a, b): the angle of the vector (b, a) in (-180, 180], unlike Fanuc's [0, 360).
+double ncc_builtin_atan2_signed(const double *a) { return std::atan2(num(a[0]), num(a[1])) / kDeg; }
 // EXISTS[#<name>] (RS274NGC) asks whether a variable has a value: both engines answer it from
 // their variable storage (isExistsCall), never through this function.
 double ncc_builtin_exists(const double *) { return 1.0; }
@@ -227,6 +233,8 @@ static const BuiltinInfo kBuiltins[] = {
     {"EXP", 1, ncc_builtin_exp, "ncc_builtin_exp"},       {"POT", 2, ncc_builtin_pow, "ncc_builtin_pow"},
     {"MINVAL", 2, ncc_builtin_min, "ncc_builtin_min"},    {"MAXVAL", 2, ncc_builtin_max, "ncc_builtin_max"},
     {"EXISTS", 1, ncc_builtin_exists, "ncc_builtin_exists"},
+    {"BOUND", 3, ncc_builtin_bound, "ncc_builtin_bound"},   {"ROUNDUP", 1, ncc_builtin_roundup, "ncc_builtin_roundup"},
+    {"ATAN2_SIGNED", 2, ncc_builtin_atan2_signed, "ncc_builtin_atan2_signed"},
     {"NGC_PARAMETER", 1, ncc_builtin_ngc_parameter, "ncc_builtin_ngc_parameter"},
     {"MACRO_VARIABLE", 1, ncc_builtin_macro_variable, "ncc_builtin_macro_variable"},
     {"MACRO_VARIABLE_C", 1, ncc_builtin_macro_variable_c, "ncc_builtin_macro_variable_c"},

@@ -37,6 +37,10 @@ enum class ModeValue : uint8_t {
   // The lathe's peck cycles (808D G74 along Z, G75 along X, runtime/ExecutorGrooving.cpp):
   // one-shot like ThreadMulti, a block without the end point keeps the retract e.
   PeckAlongZ, PeckAlongX,
+  // LinuxCNC straight probing (runtime/ExecutorProbe.cpp, docs/PROBING.md): G38.2 toward the
+  // work, stop on contact; G38.3 the same without an error on a miss; G38.4 away from the work,
+  // stop on loss of contact; G38.5 the same without an error.
+  ProbeToward, ProbeTowardNoError, ProbeAway, ProbeAwayNoError,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -68,5 +72,6 @@ inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && 
 inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ || v == ModeValue::TurnAlongX; }
 inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadVariable; }
 inline bool isPeckMotion(ModeValue v) { return v == ModeValue::PeckAlongZ || v == ModeValue::PeckAlongX; }
+inline bool isProbeMotion(ModeValue v) { return v >= ModeValue::ProbeToward && v <= ModeValue::ProbeAwayNoError; }
 
 }  // namespace ncc

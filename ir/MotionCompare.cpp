@@ -6,10 +6,7 @@
 
 namespace ncc {
 
-static bool isPath(const MotionRecord &r) {
-  return r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-         r.kind == RecordKind::Spline || r.kind == RecordKind::Dwell || r.kind == RecordKind::Thread;
-}
+static bool isPath(const MotionRecord &r) { return isMoveRecord(r.kind) || r.kind == RecordKind::Dwell; }
 
 // Zero-length moves carry no path: translators may drop them.
 static bool isNullMove(const MotionRecord &r) {
@@ -77,6 +74,13 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
       if (!(lx > 0) || std::fabs(lx - ly) * len / lx > opts.tolerance) why = "thread leads differ";
       else if (x.sync != y.sync || std::fabs(x.value2 - y.value2) > 1e-6) why = "thread start angles or synchronisation differ";
       else if (std::fabs(threadEndLead(x) - threadEndLead(y)) * len / lx > opts.tolerance) why = "thread lead changes differ";
+    }
+    if (why.empty() && x.kind == RecordKind::Probe) {
+      const ProbeData &px = x.probe(), &py = y.probe();
+      for (int k = 0; k < kAxes && why.empty(); ++k)
+        if (std::fabs(px.target[k] - py.target[k]) > opts.tolerance) why = fmt::format("probe targets differ in {}", kAxisLetters[k]);
+      if (why.empty() && (px.signal != py.signal || px.missIsError != py.missIsError || px.tripped != py.tripped))
+        why = "probe signal, miss rule or trip differ";
     }
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))

@@ -18,7 +18,7 @@ const char *recordKindName(RecordKind k) {
                                 "program_stop", "program_end",   "aux",          "cycle_begin",
                                 "cycle_end",    "frame_change",  "spline",       "spindle_orient",
                                 "spindle_mode", "thread",        "tool_number",
-                                "digital_out",  "analog_out"};
+                                "digital_out",  "analog_out",    "probe"};
   static_assert(sizeof(names) / sizeof(names[0]) == (size_t)RecordKind::Count);
   return names[(unsigned)k];
 }
@@ -32,6 +32,8 @@ const char *threadSyncName(ThreadSync s) {
   static const char *names[] = {"index", "chain", "tap_in", "tap_out"};
   return names[(unsigned)s & 3];
 }
+
+const char *probeSignalName(ProbeSignal s) { return s == ProbeSignal::Release ? "release" : "contact"; }
 
 static double moveLength(const MotionRecord &r) {
   return std::sqrt((r.end[0] - r.start[0]) * (r.end[0] - r.start[0]) + (r.end[1] - r.start[1]) * (r.end[1] - r.start[1]) +
@@ -198,6 +200,37 @@ void MotionRecord::setSpline(SplineData s) {
   extra.make().spline = std::move(s);
 }
 
+const ProbeData &MotionRecord::probe() const {
+  static const ProbeData none;
+  return extra.get() ? extra.get()->probe : none;
+}
+
+std::string probeError(const MotionRecord &r) {
+  const ProbeData &p = r.probe();
+  if (!(r.feed > 0) || !std::isfinite(r.feed)) return fmt::format("a probe move needs a positive feed, not {}", r.feed);
+  if (!r.exactStop) return "a probe move stops at its end (exact_stop)";
+  if (p.target == r.start && p.missIsError) return "a probe that must trip (miss=error) cannot have its start as its target";
+  for (double v : p.target)
+    if (!std::isfinite(v)) return "a probe target is not finite";
+  if (!p.tripped) {
+    if (p.missIsError) return "a probe that must trip (miss=error) did not";
+    if (r.end != p.target) return "a probe that did not trip ends at its target";
+    return {};
+  }
+  if (p.target == r.start) return r.end == r.start ? "" : "a probe to its start stops there";  // G38.3/G38.5
+  // The stop lies on the segment: its parameter along the axis that moves most, every axis
+  // within 1 nm (1e-6 degree) of that point.
+  int k = 0;
+  for (int i = 1; i < kAxes; ++i)
+    if (std::fabs(p.target[i] - r.start[i]) > std::fabs(p.target[k] - r.start[k])) k = i;
+  double t = (r.end[k] - r.start[k]) / (p.target[k] - r.start[k]);
+  if (!(t >= 0 && t <= 1)) return "a probe stops between its start and its target";
+  for (int i = 0; i < kAxes; ++i)
+    if (!(std::fabs(r.start[i] + t * (p.target[i] - r.start[i]) - r.end[i]) <= 1e-6))
+      return "a probe stops on the straight line from its start to its target";
+  return {};
+}
+
 void appendMotionRecord(std::string &s, const MotionRecord &r) {
   auto out = std::back_inserter(s);
   s += recordKindName(r.kind);
@@ -251,6 +284,15 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
     if (r.value2 != 0) fmt::format_to(out, " start={}", r.value2);
     fmt::format_to(out, " F{}", r.feed);
     break;
+  case RecordKind::Probe: {
+    const ProbeData &p = r.probe();
+    axes(r.end);
+    s += " target=(";
+    for (int i = 0, n = writtenAxes({&r.end, &p.target}); i < n; ++i) fmt::format_to(out, "{}{}", i ? ", " : "", p.target[i]);
+    fmt::format_to(out, ") signal={} miss={} tripped={} F{}", probeSignalName(p.signal), p.missIsError ? "error" : "ok",
+                   p.tripped ? 1 : 0, r.feed);
+    break;
+  }
   case RecordKind::Comment:
   case RecordKind::Message:
     s += ' ';

@@ -84,6 +84,9 @@ enum class RecordKind : uint8_t {
   DigitalOutput, // LinuxCNC M62-M65: `ivalue` the output, `value` 1 on / 0 off, `value2` 1 synchronized
                  // with the next move (M62/M63), 0 at once (M64/M65)
   AnalogOutput,  // LinuxCNC M67/M68: `ivalue` the output, `value` its value, `value2` as DigitalOutput
+  Probe,         // straight feed at `feed` toward a programmed target that stops where a probe's
+                 // signal came (LinuxCNC G38.2-G38.5; later ISO G31, Sinumerik MEAS/MEAW):
+                 // `end` is where the machine stopped, probe() (ProbeData) the target and mode
   Count
 };
 
@@ -99,6 +102,20 @@ enum class ThreadAxis : uint8_t { X, Y, Z, Path };
 enum class ThreadSync : uint8_t { Index, Chain, TapIn, TapOut };
 const char *threadAxisName(ThreadAxis a);  // "x" "y" "z" "path"
 const char *threadSyncName(ThreadSync s);  // "index" "chain" "tap_in" "tap_out"
+
+// Probe records: what stops the move and what a miss means. `Contact` stops on the signal's
+// coming (G38.2/G38.3, G31, MEAS=1), `Release` on its going (G38.4/G38.5, MEAS=-1). `tripped`
+// says the signal came: `end` is where (on the segment start..target); otherwise the move
+// reached `target` (= end) without it, which is an error when `missIsError` (G38.2, G38.4), so
+// such a record never exists.
+enum class ProbeSignal : uint8_t { Contact, Release };
+struct ProbeData {
+  AxisVec target{};  // the programmed end, machine coordinates
+  ProbeSignal signal = ProbeSignal::Contact;
+  bool missIsError = true;
+  bool tripped = true;
+};
+const char *probeSignalName(ProbeSignal s);  // "contact" "release"
 
 // One named number of a CycleBegin or FrameChange record, `key=value` in the text form.
 // Keys are 1..7 characters [A-Za-z_][A-Za-z0-9_]*, stored inline (no allocation per key).
@@ -138,6 +155,7 @@ struct MotionExtra {
   std::array<double, 3> normal{};  // unit normal of a tilted arc (see MotionRecord::arcNormal)
   std::vector<NamedNumber> params;
   SplineData spline;  // Spline records
+  ProbeData probe;    // Probe records
 };
 
 // A copyable owning pointer (deep copy), null by default: keeps the rarely used part of a hot,
@@ -203,6 +221,9 @@ struct MotionRecord {
   // Sets the curve; unit weights and the default knot vector are dropped, so one curve has one
   // spelling (as the text form prints it).
   void setSpline(SplineData s);
+  // Probe records: the target and the mode (a probe toward the record's end when never set).
+  const ProbeData &probe() const;
+  void setProbe(const ProbeData &p) { extra.make().probe = p; }
   // CycleBegin / FrameChange: the named numbers in order.
   const std::vector<NamedNumber> &params() const;
   // Appends (or replaces) a named number; false when the key is not a valid key.
@@ -223,6 +244,16 @@ double threadAxisLead(const MotionRecord &r, int axis);
 // Why a thread record is not a valid one (empty when it is): a lead > 0 and finite, a move
 // along the lead's axis, a start angle in [0, 360), no A B C motion.
 std::string threadError(const MotionRecord &r);
+
+// Why a probe record is not a valid one (empty when it is): a positive finite feed, a target
+// other than the start, the end on the segment start..target (the target itself when it did not
+// trip), not a miss that is an error, and a stop at its end (exact_stop).
+std::string probeError(const MotionRecord &r);
+// The records that move the machine from `start` to `end` (the text form's and the stream's
+// position follows them).
+inline bool isMoveRecord(RecordKind k) {
+  return k <= RecordKind::Arc || k == RecordKind::Spline || k == RecordKind::Thread || k == RecordKind::Probe;
+}
 
 // FrameChange's transform: the 3x4 matrix that maps program XYZ to machine XYZ, row-major
 // (machine_i = m_i0 x + m_i1 y + m_i2 z + m_i3), as the named numbers m00..m23.

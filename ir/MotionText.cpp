@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -309,6 +310,33 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
     if (std::string why = threadError(r); !why.empty()) return p.error(at, why);
     break;
   }
+  case RecordKind::Probe: {
+    ProbeData pd;
+    std::vector<double> target;
+    if (!p.axes(r.end) || !p.expect("target=", "'target='")) return false;
+    size_t b = p.pos();
+    if (!p.list(target, &LineParser::number)) return false;
+    if (target.size() != kBaseAxes && target.size() != kAxes)
+      return p.error(b, fmt::format("a probe target has {} or {} positions, not {}", kBaseAxes, kAxes, target.size()));
+    std::copy(target.begin(), target.end(), pd.target.begin());
+    // Named choices: `key=` then one of two words.
+    auto choice = [&](const char *key, const char *no, const char *yes, bool &out) {
+      if (!p.expect(key, fmt::format("'{}'", key).c_str())) return false;
+      size_t at = p.pos();
+      std::string_view w = p.word();
+      if (w != no && w != yes) return p.error(at, fmt::format("expected {} or {}, found '{}'", no, yes, p.token(at)));
+      out = w == yes;
+      return true;
+    };
+    bool release, error, tripped;
+    if (!choice("signal=", "contact", "release", release) || !choice("miss=", "ok", "error", error) ||
+        !choice("tripped=", "0", "1", tripped) || !p.expect("F", "'F' and the feed") || !p.number(r.feed))
+      return false;
+    pd.signal = release ? ProbeSignal::Release : ProbeSignal::Contact;
+    pd.missIsError = error, pd.tripped = tripped;
+    r.setProbe(pd);
+    break;
+  }
   case RecordKind::Comment:
   case RecordKind::Message:
     if (!p.string(r.text)) return false;
@@ -403,9 +431,10 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
   }
   }
   if (!p.tail(r)) return false;
-  if (r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-      r.kind == RecordKind::Spline || r.kind == RecordKind::Thread)
-    st.pos = r.end;
+  // The probe's rules need its exact_stop, which the tail gives.
+  if (r.kind == RecordKind::Probe)
+    if (std::string why = probeError(r); !why.empty()) return p.error(at, why);
+  if (isMoveRecord(r.kind)) st.pos = r.end;
   return true;
 }
 

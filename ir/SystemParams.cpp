@@ -41,6 +41,16 @@ struct ParamRange {
 
 const ParamRange kRanges[] = {
     // LinuxCNC (Numbered Parameters of the G-code manual). Axes U V W: ncc has none.
+    {R, 5061, 5061, SysFamily::None, SysVar::ProbeX, 0, 1, 1, "probe result X"},
+    {R, 5062, 5062, SysFamily::None, SysVar::ProbeY, 0, 1, 1, "probe result Y"},
+    {R, 5063, 5063, SysFamily::None, SysVar::ProbeZ, 0, 1, 1, "probe result Z"},
+    {R, 5064, 5064, SysFamily::None, SysVar::ProbeA, 0, 1, 1, "probe result A"},
+    {R, 5065, 5065, SysFamily::None, SysVar::ProbeB, 0, 1, 1, "probe result B"},
+    {R, 5066, 5066, SysFamily::None, SysVar::ProbeC, 0, 1, 1, "probe result C"},
+    {R, 5067, 5067, SysFamily::None, SysVar::ProbeU, 0, 1, 1, "probe result U"},
+    {R, 5068, 5068, SysFamily::None, SysVar::ProbeV, 0, 1, 1, "probe result V"},
+    {R, 5069, 5069, SysFamily::None, SysVar::ProbeW, 0, 1, 1, "probe result W"},
+    {R, 5070, 5070, SysFamily::None, SysVar::ProbeTripped, 0, 1, 1, "probe tripped"},
     {R, 5161, 5166, SysFamily::Home1, SysVar::Count, 0, 1, 6, "G28 reference point"},
     {R, 5181, 5186, SysFamily::Home2, SysVar::Count, 0, 1, 6, "G30 reference point"},
     {R, 5210, 5210, SysFamily::None, SysVar::G92On, 0, 1, 1, "G92 offsets applied"},

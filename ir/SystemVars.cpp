@@ -17,7 +17,8 @@ static const char *const kNames[] = {
     "_adaptive_feed", "_feed_hold", "_feed", "_rpm", "_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v",
     "_w", "_current_tool", "_current_pocket", "_selected_tool", "_selected_pocket",
     "_remap_level", "_task", "_g92_on", "_coord_system_number", "_tool_diameter", "_tool_length_h",
-    "_cutter_d", "_pframe", "_iframe", "_actframe"};
+    "_cutter_d", "_probe_x", "_probe_y", "_probe_z", "_probe_a", "_probe_b", "_probe_c", "_probe_u",
+    "_probe_v", "_probe_w", "_probe_tripped", "_pframe", "_iframe", "_actframe"};
 static_assert(sizeof(kNames) / sizeof(kNames[0]) == (size_t)SysVar::Count);
 
 namespace {
@@ -156,7 +157,8 @@ bool sysFamilyWritable(SysFamily f) {
 }
 
 bool sysVarWritable(SysVar v) {
-  return v == SysVar::PFrame || v == SysVar::IFrame || sysFamilyWritable(sysVarInfo(v).family);
+  return v == SysVar::PFrame || v == SysVar::IFrame || (v >= SysVar::ProbeX && v <= SysVar::ProbeTripped) ||
+         sysFamilyWritable(sysVarInfo(v).family);
 }
 
 bool sysVarIsFrame(SysVar v) {

@@ -22,6 +22,9 @@ enum class SysVar : uint16_t {
   SpindleCw, Mist, Flood, SpeedOverride, FeedOverride, AdaptiveFeed, FeedHold, Feed, Rpm, PosX,
   PosY, PosZ, PosA, PosB, PosC, PosU, PosV, PosW, CurrentTool, CurrentPocket, SelectedTool,
   SelectedPocket, RemapLevel, Task, G92On, CoordSystemNumber, ToolDiameter, ToolLengthH, CutterD,
+  // The last probe's result (LinuxCNC #5061-#5069: where it stopped, X Y Z A B C U V W in the work
+  // coordinates and units of its block; #5070: 1 when it tripped), docs/PROBING.md.
+  ProbeX, ProbeY, ProbeZ, ProbeA, ProbeB, ProbeC, ProbeU, ProbeV, ProbeW, ProbeTripped,
   // Frames (FRAME values, ir/FrameValue.h): the programmable frame (Sinumerik $P_PFRAME), the
   // active settable frame ($P_IFRAME), the whole chain without the tool ($P_ACTFRAME, read-only).
   PFrame, IFrame, ActFrame, Count

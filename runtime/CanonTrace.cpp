@@ -227,6 +227,17 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     end();
     break;
   }
+  case RecordKind::Probe: {  // rs274's G38.x: the programmed target, bracketed by the probe's switching
+    const AxisVec &target = r.probe().target;
+    line(n, "TURN_PROBE_ON()");
+    begin(n);
+    buf_.append("STRAIGHT_PROBE(");
+    nums(target.data(), writtenAxes({&target}));
+    buf_.push_back(')');
+    end();
+    line(n, "TURN_PROBE_OFF()");
+    break;
+  }
   case RecordKind::Spline:
     // rs274's standalone canon prints only the number of control points (start and end
     // included) for G5, G5.1 and G5.2/G5.3 alike; the curve itself is in the Motion IR.

@@ -808,6 +808,7 @@ bool Executor::finish(bool ranToEnd) {
   }
   // A run stopped by an error did not reach its end: no warning about how it ends.
   if (ranToEnd && !x.st.ended) x.diags.warning(x.blockLoc, "program ends without M2 or M30", "missing-program-end");
+  if (ranToEnd) x.probeResultsUnused();
   return true;
 }
 

@@ -21,6 +21,7 @@ const char *forbiddenInContour(RecordKind k) {
   switch (k) {
   case RecordKind::Spline: return "a spline";
   case RecordKind::Thread: return "a thread";
+  case RecordKind::Probe: return "a probe move";
   case RecordKind::CycleBegin: return "a canned cycle";
   case RecordKind::FrameChange: return "a change of the coordinate system";
   case RecordKind::ProgramEnd: case RecordKind::ProgramStop: case RecordKind::OptionalStop: return "a program stop";

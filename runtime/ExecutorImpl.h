@@ -182,7 +182,7 @@ struct Executor::Impl {
   MotionRecord record(RecordKind k) const;
   // While a corner (chamfer/rounding) waits for its second move, records are held back.
   void emit(const MotionRecord &r) {
-    if (r.kind <= RecordKind::Dwell || r.kind == RecordKind::Spline || r.kind == RecordKind::Thread)
+    if (isMoveRecord(r.kind) || r.kind == RecordKind::Dwell)
       threadChain = r.kind == RecordKind::Thread;
     if (corner.active) corner.held.push_back(r);
     else if (!(queuedBehindMotion(r.kind) && comp.hold(toCompPlane(r, compOut.plane)))) sink.record(r);
@@ -386,6 +386,13 @@ struct Executor::Impl {
     double chamfer = 0;  // in leads
     double toolAngle = 60, minCut = 0, allowance = 0;
   } threadData;
+  // --- probing G38.2-G38.5 (ExecutorProbe.cpp) ---
+  bool probeMove(const MachineCmd &c);
+  AxisVec programUnits(const AxisVec &machinePos) const;  // program coordinates and units
+  void probeResultsUnused();  // at the end of a run: a warning when lines of the file were left
+  size_t probeNext = 0;    // the probe-results line the next probe move takes
+  AxisVec probeResult{};   // #5061-#5069: the last probe's stop, program coordinates and units
+  double probeTripped = 0;  // #5070: 1 after a trip (a program may write any value)
   // --- contour capture (ExecutorContour.cpp) ---
   bool execContour(const MachineCmd &c);
   struct Capture {

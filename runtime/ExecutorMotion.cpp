@@ -139,6 +139,12 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::ThreadMulti: return threadMulti(c);
   case ModeValue::PeckAlongZ:
   case ModeValue::PeckAlongX: return peckCycle(c);
+  case ModeValue::ProbeToward:
+  case ModeValue::ProbeTowardNoError:
+  case ModeValue::ProbeAway:
+  case ModeValue::ProbeAwayNoError:
+    if (!(c.mask & kTargetMask)) return true;
+    return probeMove(c);
   case ModeValue::NurbsEnd:  // rs274 has no motion mode after G5.3
     if (!(c.mask & kTargetMask)) return true;
     return error("Cannot use axis values without a g code that uses them", "motion-mode-none");

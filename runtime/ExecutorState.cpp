@@ -269,7 +269,8 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
         {ModeValue::DrillDwell, 820},  {ModeValue::Peck, 830},       {ModeValue::Tap, 840},
         {ModeValue::BoreFeed, 850},    {ModeValue::BoreStop, 860},   {ModeValue::BoreBack, 870},
         {ModeValue::BoreDwell, 890},   {ModeValue::XY, 170},         {ModeValue::ZX, 180},
-        {ModeValue::YZ, 190},          {ModeValue::Nurbs, 520}};
+        {ModeValue::YZ, 190},          {ModeValue::Nurbs, 520},      {ModeValue::ProbeToward, 382},
+        {ModeValue::ProbeTowardNoError, 383}, {ModeValue::ProbeAway, 384}, {ModeValue::ProbeAwayNoError, 385}};
     for (auto &c : kCodes)
       if (c.m == m) return c.code;
     return -1;
@@ -353,6 +354,16 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   }
   case SysVar::ToolLengthH: out = st.toolLengthH; return true;
   case SysVar::CutterD: out = x.cutterD; return true;
+  case SysVar::ProbeX:
+  case SysVar::ProbeY:
+  case SysVar::ProbeZ:
+  case SysVar::ProbeA:
+  case SysVar::ProbeB:
+  case SysVar::ProbeC:
+  case SysVar::ProbeU:
+  case SysVar::ProbeV:
+  case SysVar::ProbeW: out = x.probeResult[(int)v - (int)SysVar::ProbeX]; return true;
+  case SysVar::ProbeTripped: out = x.probeTripped; return true;
   case SysVar::PFrame:
   case SysVar::IFrame:
   case SysVar::ActFrame:  // FRAME values: readFrame (ExecutorFrames.cpp)
@@ -384,6 +395,11 @@ bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::
   if (!sysVarWritable(ref.var)) {
     err = fmt::format("system variable '${}' is read-only", sysRefText(ref));
     return false;
+  }
+  if (ref.var >= SysVar::ProbeX && ref.var <= SysVar::ProbeTripped) {  // rs274 lets a program set them
+    if (ref.var == SysVar::ProbeTripped) x.probeTripped = value;
+    else x.probeResult[(int)ref.var - (int)SysVar::ProbeX] = value;
+    return true;
   }
   if (!std::isfinite(value) || std::fabs(value) > 1e9) {
     err = fmt::format("system variable '${}': {} is not a valid offset", sysRefText(ref), numberText(value));

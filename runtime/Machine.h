@@ -6,6 +6,7 @@
 #include "ir/MotionIR.h"
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -134,6 +135,8 @@ struct MachineError {
   std::string message;
 };
 
+struct ProbeResults;  // runtime/ProbeResults.h
+
 struct Machine {
   std::string name = "default-mill";
   std::string dialect = "iso";           // controller dialect of the machine
@@ -174,6 +177,9 @@ struct Machine {
   // The [emit.NAME] tables as text, section "emit.NAME", nested keys dotted ("format.X"), for
   // the emitters, which check their own keys.
   std::map<std::string, std::map<std::string, std::string>> sections;
+  // What the simulated probe meets (the driver's --probe-results, docs/PROBING.md); null: a probe
+  // move is an error.
+  std::shared_ptr<const ProbeResults> probeResults;
 
   std::string get(const std::string &section, const std::string &key, const std::string &def = "") const;
 

@@ -410,8 +410,7 @@ void Planner::variableThread(const MotionRecord &t) {
 
 void Planner::record(const MotionRecord &r) {
   if (r.kind == RecordKind::Thread) return thread(r);
-  if (inThread_ && (r.kind == RecordKind::Rapid || r.kind == RecordKind::Linear || r.kind == RecordKind::Arc ||
-                    r.kind == RecordKind::Spline)) {
+  if (inThread_ && isMoveRecord(r.kind)) {
     flush();  // a thread ends at rest: nothing blends out of it
     inThread_ = false;
   }
@@ -420,6 +419,7 @@ void Planner::record(const MotionRecord &r) {
   case RecordKind::Linear:
   case RecordKind::Arc:
   case RecordKind::Spline:
+  case RecordKind::Probe:  // a straight feed; its exact_stop ends it at rest
     push(r);
     return;
   case RecordKind::SpindleSpeed:

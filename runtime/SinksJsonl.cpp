@@ -43,6 +43,7 @@ std::string motionRecordJson(const MotionRecord &r, const AxisVec *work) {
   case RecordKind::Arc:
   case RecordKind::Spline:
   case RecordKind::Thread:
+  case RecordKind::Probe:
   {
     // Six positions, nine while U V W are in use (writtenAxes).
     const int n = writtenAxes({&r.start, &r.end, work ? work : &r.end});
@@ -75,6 +76,13 @@ std::string motionRecordJson(const MotionRecord &r, const AxisVec *work) {
       fmt::format_to(std::back_inserter(s), ",\"along\":\"{}\",\"sync\":\"{}\",\"start_angle\":",
                      threadAxisName((ThreadAxis)r.ivalue), threadSyncName(r.sync));
       num(s, r.value2);
+    }
+    if (r.kind == RecordKind::Probe) {
+      const ProbeData &p = r.probe();
+      s += ",\"target\":";
+      vec(s, p.target.data(), writtenAxes({&r.start, &r.end, &p.target}));
+      fmt::format_to(std::back_inserter(s), ",\"signal\":\"{}\",\"miss\":\"{}\",\"tripped\":{}", probeSignalName(p.signal),
+                     p.missIsError ? "error" : "ok", p.tripped ? "true" : "false");
     }
     if (r.kind == RecordKind::Spline) {
       const SplineData &sp = r.spline();

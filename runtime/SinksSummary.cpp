@@ -34,6 +34,7 @@ void SummaryCollector::record(const MotionRecord &r) {
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
+  case RecordKind::Probe:  // a straight feed (counted with the linear moves)
   case RecordKind::Thread: {
     for (int i = 0; i < kAxes; ++i) {
       lo[i] = std::min(r.start[i], r.end[i]);

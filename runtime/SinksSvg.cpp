@@ -65,6 +65,7 @@ void SvgPlot::record(const MotionRecord &r) {
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear:
+  case RecordKind::Probe:
   case RecordKind::Thread:
     // A plunge is invisible in XY: mark it (capped, consecutive duplicates dropped).
     if (!rapid && r.end[2] < r.start[2] && std::hypot(r.end[0] - r.start[0], r.end[1] - r.start[1]) <= tol_ &&

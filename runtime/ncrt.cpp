@@ -406,7 +406,7 @@ uint64_t abiFingerprint() {
 }
 
 // Layout: "NCCPROG1", u64 total size, u64 abi, strings (u32 length + bytes) version, machine
-// name, machine text, u32 file count, then per file its name and u64 hash. Little endian.
+// name, machine text, program, u32 file count, then per file its name and u64 hash. Little endian.
 static constexpr char kInfoMagic[8] = {'N', 'C', 'C', 'P', 'R', 'O', 'G', '1'};
 
 std::string encodeProgramInfo(const ProgramInfo &info) {
@@ -419,6 +419,7 @@ std::string encodeProgramInfo(const ProgramInfo &info) {
   str(info.nccVersion);
   str(info.machineName);
   str(info.machineText);
+  str(info.program);
   u32((uint32_t)info.files.size());
   for (auto &f : info.files) str(f.name), u64(f.hash);
   uint64_t size = out.size();
@@ -457,7 +458,7 @@ bool decodeProgramInfo(const unsigned char *data, size_t size, ProgramInfo &out,
                       ok ? out.nccVersion : "unknown", out.abi, ncrt_version(), abiFingerprint());
     return false;
   }
-  str(out.nccVersion), str(out.machineName), str(out.machineText), take(&files, 4);
+  str(out.nccVersion), str(out.machineName), str(out.machineText), str(out.program), take(&files, 4);
   for (uint32_t i = 0; ok && i < files; ++i) {
     out.files.emplace_back();
     str(out.files.back().name), take(&out.files.back().hash, 8);

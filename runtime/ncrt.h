@@ -204,6 +204,7 @@ bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLim
 struct ProgramInfo {
   uint64_t abi = 0;
   std::string nccVersion, machineName, machineText;
+  std::string program;  // the program's file (summary, plot title)
   struct File {
     std::string name;
     uint64_t hash = 0;

@@ -374,8 +374,7 @@ void Emitter::record(const MotionRecord &r) {
     bool &flag;
     const MotionRecord &r;
     ~AfterThread() {
-      if (r.kind <= RecordKind::Arc || r.kind == RecordKind::Spline || r.kind == RecordKind::Thread)
-        flag = r.kind == RecordKind::Thread;
+      if (isMoveRecord(r.kind)) flag = r.kind == RecordKind::Thread;
     }
   } afterThread{afterThread_, r};
   switch (r.kind) {
@@ -397,6 +396,9 @@ void Emitter::record(const MotionRecord &r) {
     break;
   case RecordKind::Thread:
     if (!refused(r, "thread", threadRefusal(r))) thread(r);
+    break;
+  case RecordKind::Probe:
+    if (!refused(r, "probe move", probeRefusal(r))) probe(r);
     break;
   case RecordKind::Dwell: dwell(r); break;
   case RecordKind::ToolSelect:

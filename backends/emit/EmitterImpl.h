@@ -1,5 +1,6 @@
 // Private to backends/emit: the emitter engine (Emitter.cpp: blocks, modal memory, moves, arcs,
-// splines, the record switch; EmitterSync.cpp: threads and the spindle's modes and orientation).
+// splines, the record switch; EmitterSync.cpp: threads and the spindle's modes and orientation;
+// EmitterProbe.cpp: probe moves).
 #pragma once
 #include "backends/emit/ArcGeometry.h"
 #include "backends/emit/ControllerTable.h"
@@ -106,7 +107,11 @@ private:
   // Why this output cannot write the thread record exactly (empty: it can).
   std::string threadRefusal(const MotionRecord &r) const;
   void thread(const MotionRecord &r);
-  void latheThreadWords(const MotionRecord &r, Words &w);  // ISO lathe G32/G33: F the lead, Q the start angle
+  void latheThreadWords(const MotionRecord &r, Words &w);
+  // Probe records (EmitterProbe.cpp): why this output cannot write one (empty: it can).
+  std::string probeRefusal(const MotionRecord &r) const;
+  void probe(const MotionRecord &r);
+  bool probeWarned_ = false;  // the warning that later moves follow the simulated probe, once  // ISO lathe G32/G33: F the lead, Q the start angle
   void latheSpeedLimit(const MotionRecord &r, const std::string &limit);
   void planeWord(Plane p, Words &w);
   void dwell(const MotionRecord &r);

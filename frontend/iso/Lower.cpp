@@ -493,6 +493,11 @@ bool BlockLowerer::Block::motion() {
         return false;
       }
   }
+  // rs274 refuses a probe block without a target (a bare G1 is accepted).
+  if (isProbeMotion(m) && G(GGroup::Motion) && !bw.hasAny(kMoveWords)) {
+    L.diags_.error(gloc(GGroup::Motion), "All axes missing with motion code", "missing-word");
+    return false;
+  }
   if (!axesTaken) {
     bool cycle = isCycleMotion(m);
     bool arc = m == ModeValue::ArcCW || m == ModeValue::ArcCCW;

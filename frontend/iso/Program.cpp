@@ -1,6 +1,7 @@
 // Whole-program parsing: splits the file into blocks, builds the control structure (Macro B
 // WHILE/DO/END, IF, GOTO; RS274 O-words), separates the main program from O-number
 // subprograms and loads subprogram files for the calls that are not defined in the main file.
+#include "frontend/SubprogramFiles.h"
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/iso/Lower.h"
 
@@ -505,21 +506,9 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
       ok = false;
       continue;
     }
-    uint32_t fid = 0;
-    for (auto &d : dirs) {
-      for (auto &f : candidateFiles(c.callee)) {
-        std::filesystem::path path = std::filesystem::path(d) / f;
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec)) continue;
-        fid = sm.addFile(path.string());
-        if (fid) break;
-      }
-      if (fid) break;
-    }
+    uint32_t fid = findSubprogramFile(sm, dirs, candidateFiles(c.callee));
     if (!fid) {
-      std::string where;
-      for (auto &d : dirs) where += (where.empty() ? "" : ", ") + d;
-      diags.error(c.loc, fmt::format("subprogram {} not found (searched {})", c.callee, where),
+      diags.error(c.loc, fmt::format("subprogram {} not found (searched {})", c.callee, folderList(dirs)),
                   "missing-subprogram");
       missing.insert(c.callee);
       ok = false;

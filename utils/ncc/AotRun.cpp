@@ -75,7 +75,8 @@ int runCompiled(const CompiledProgram &p, const RunTimeOptions &rt, bool machine
   Machine machine;
   if (!programMachine(info, rt, machineGiven, p.name, machine, diags)) return kExitErrors;
   registerSources(info, p.name, sm, diags);
-  std::string program = info.files.empty() ? p.name : info.files[0].name;
+  if (!loadProbeResults(rt, sm, diags, machine)) return kExitErrors;
+  std::string program = info.program.empty() ? p.name : info.program;
   RunOutputSet outputs(machine, out, program);
   if (!outputs.open(diags)) return kExitErrors;
   Executor exec(machine, outputs.sink(), diags);

@@ -24,7 +24,8 @@ std::vector<std::string> splitList(const std::string &s) {
   return out;
 }
 // What an object carries so that it runs without its source (runtime/ncrt.h ProgramInfo).
-bool programInfo(Session &s, ncrt::ProgramInfo &info) {
+bool programInfo(Session &s, uint32_t program, ncrt::ProgramInfo &info) {
+  info.program = s.sm.name(program);
   info.nccVersion = ncrt_version();
   info.machineName = s.opts.machine;
   if (!readMachineText(s.opts.machine, info.machineText)) {
@@ -92,7 +93,7 @@ int cmdCompile(int argc, char **argv) {
     writeOutput(s, out, text);
   } else {
     ncrt::ProgramInfo info;
-    if (!programInfo(s, info)) return kExitErrors;
+    if (!programInfo(s, f, info)) return kExitErrors;
     if (emit == "obj" ? !jit->emitObject(m, out, s.diags, info) : !emitExecutable(s, *jit, m, info, out))
       return kExitErrors;
   }

@@ -21,19 +21,15 @@ public:
   void record(const MotionRecord &) override {}
 };
 
-// Lint keeps running after an executor error so one run reports every rule it can.
-class KeepGoingSink : public CmdSink {
+// Lint keeps running after an executor error so one run reports every rule it can; system
+// variables and frames go to the executor as in a run (ExecutorSink).
+class KeepGoingSink : public ExecutorSink {
 public:
-  explicit KeepGoingSink(Executor &e) : exec_(e) {}
+  explicit KeepGoingSink(Executor &e) : ExecutorSink(e), exec_(e) {}
   bool exec(const MachineCmd &c) override {
     exec_.exec(c);
     return true;
   }
-  bool readSystem(const SysRef &v, double &out, std::string &err) override { return exec_.readSystem(v, out, err); }
-  bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) override {
-    return exec_.writeSystem(v, value, loc, err);
-  }
-  bool saveModal() override { return exec_.saveModal(); }
   bool restoreModal(SourceLoc loc) override {
     exec_.restoreModal(loc);
     return true;

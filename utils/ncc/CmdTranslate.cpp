@@ -46,14 +46,12 @@ int cmdTranslate(int argc, char **argv) {
   if (!emitter->finish(s.diags)) return kExitErrors;
 
   if (verify) {
-    if (eo.target != emit::Target::ISO) {
-      s.diags.error({}, fmt::format("--verify for '{}' output needs its front end, which is not implemented yet", to));
-      return kExitErrors;
-    }
-    std::string name = (out.empty() || out == "-") ? "<translated>.nc" : out;
+    // The output is read back by the target's own front end.
+    bool sin = eo.target == emit::Target::Sinumerik;
+    std::string name = (out.empty() || out == "-") ? (sin ? "<translated>.mpf" : "<translated>.nc") : out;
     uint32_t tf = s.sm.addBuffer(name, text);
     std::string savedDialect = s.opts.dialect;
-    s.opts.dialect = "iso";
+    s.opts.dialect = sin ? "sinumerik" : "iso";
     MotionBuffer back;
     bool ok = s.execute(tf, back);
     s.opts.dialect = savedDialect;

@@ -4,6 +4,7 @@
 #include "passes/Eval.h"
 #include "passes/Pass.h"
 #include "runtime/Executor.h"
+#include "runtime/ProbeResults.h"
 
 #include <fmt/format.h>
 
@@ -27,6 +28,7 @@ void addCommonOptions(po::options_description &desc, CommonOptions &o) {
 bool Session::setUp() {
   applyDiagnosticsOptions(opts, diags);
   if (!loadMachine(opts.machine, machine)) return false;
+  if (!loadProbeResults(opts, sm, diags, machine)) return false;
   if (opts.engine != "eval" && opts.engine != "jit") {
     diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));
     return false;

@@ -2,6 +2,7 @@
 
 #include "runtime/CanonTrace.h"
 #include "runtime/Executor.h"
+#include "runtime/ProbeResults.h"
 #include "runtime/Sinks.h"
 
 #include <fmt/format.h>
@@ -41,6 +42,7 @@ void addRunTimeOptions(po::options_description &desc, RunTimeOptions &o) {
        "stop a loop after this many iterations")
       ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
       ("max-seconds", po::value(&o.limits.maxSeconds)->default_value(o.limits.maxSeconds), "run-time limit in seconds")
+      ("probe-results", po::value(&o.probeResults), "where each probe move (G38.2-G38.5) stops: a probe-results file (docs/PROBING.md)")
       ("diagnostics-format", po::value(&o.diagnosticsFormat)->default_value("text"), "text|json")
       ("Werror", po::bool_switch(&o.werror), "treat warnings as errors");
 }
@@ -48,6 +50,16 @@ void addRunTimeOptions(po::options_description &desc, RunTimeOptions &o) {
 void applyDiagnosticsOptions(const RunTimeOptions &o, Diagnostics &diags) {
   diags.setFormat(o.diagnosticsFormat == "json" ? Diagnostics::Format::Json : Diagnostics::Format::Text);
   diags.setWarningsAsErrors(o.werror);
+}
+
+bool loadProbeResults(const RunTimeOptions &o, SourceManager &sm, Diagnostics &diags, Machine &machine) {
+  if (o.probeResults.empty()) return true;
+  uint32_t f = sm.addFile(o.probeResults);
+  if (!f) diags.error({}, fmt::format("cannot read '{}'", o.probeResults));
+  auto results = std::make_shared<ProbeResults>();
+  if (!f || !parseProbeResults(sm, f, diags, *results)) return false;
+  machine.probeResults = std::move(results);
+  return true;
 }
 
 void addRunOutputOptions(po::options_description &desc, RunOutputArgs &a) {

@@ -36,10 +36,13 @@ struct RunTimeOptions {
   ExecLimits limits;
   std::string diagnosticsFormat = "text";
   bool werror = false;
+  std::string probeResults;  // what the simulated probe meets (docs/PROBING.md)
 };
 void addRunTimeOptions(po::options_description &desc, RunTimeOptions &o);
 // Applies the diagnostics options.
 void applyDiagnosticsOptions(const RunTimeOptions &o, Diagnostics &diags);
+// Reads --probe-results into the machine (its file joins sm); false after reporting.
+bool loadProbeResults(const RunTimeOptions &o, SourceManager &sm, Diagnostics &diags, Machine &machine);
 
 struct RunOutputArgs {
   std::string trace, out, plot, samples, velocityPlot;

@@ -26,6 +26,11 @@ def run(prog, engine):
         if m:
             base = root if m.group(1) == "%srcroot" else os.path.dirname(prog)
             args.append("--machine=" + os.path.join(base, m.group(2)))
+    with open(prog, errors="replace") as f:  # a probing program runs against its probe results
+        m = re.search(r"--probe-results=(%srcroot|%S)/(\S+)", f.read())
+    if m:
+        base = root if m.group(1) == "%srcroot" else os.path.dirname(prog)
+        args.append("--probe-results=" + os.path.join(base, m.group(2)))
     p = subprocess.run(args, capture_output=True, text=True, timeout=120)
     first_error = next((l for l in p.stderr.splitlines() if ": error: " in l), "")
     return p.returncode, p.stdout, first_error

@@ -1,0 +1,156 @@
+#include "frontend/sinumerik/Codes.h"
+
+#include <cstring>
+
+namespace ncc::sin {
+
+static const GCode kGCodes[] = {
+#include "frontend/sinumerik/GCodeTable.inc"
+};
+
+const GCode *gcodeTable(size_t &count) {
+  count = sizeof(kGCodes) / sizeof(kGCodes[0]);
+  return kGCodes;
+}
+
+// What ncc executes; every other code of the table is Default (when it is its group's initial
+// setting) or Unsupported.
+struct GRow {
+  const char *name;
+  GAct act;
+  ModeValue mode;
+  int arg;
+};
+static const GRow kExecuted[] = {
+    {"G0", GAct::Mode, ModeValue::Rapid, 0},
+    {"G1", GAct::Mode, ModeValue::Linear, 0},
+    {"G2", GAct::Mode, ModeValue::ArcCW, 0},
+    {"G3", GAct::Mode, ModeValue::ArcCCW, 0},
+    {"CIP", GAct::Mode, ModeValue::ArcThrough, 0},
+    {"CT", GAct::Mode, ModeValue::ArcTangent, 0},
+    {"G4", GAct::Dwell, ModeValue::Count, 0},
+    {"G17", GAct::Mode, ModeValue::XY, 0},
+    {"G18", GAct::Mode, ModeValue::ZX, 0},
+    {"G19", GAct::Mode, ModeValue::YZ, 0},
+    {"G40", GAct::CutterComp, ModeValue::Count, 0},
+    {"G41", GAct::CutterComp, ModeValue::Count, 1},
+    {"G42", GAct::CutterComp, ModeValue::Count, 2},
+    {"G500", GAct::WorkOffset, ModeValue::Count, 0},
+    {"G54", GAct::WorkOffset, ModeValue::Count, 1},
+    {"G55", GAct::WorkOffset, ModeValue::Count, 2},
+    {"G56", GAct::WorkOffset, ModeValue::Count, 3},
+    {"G57", GAct::WorkOffset, ModeValue::Count, 4},
+    {"G505", GAct::WorkOffset, ModeValue::Count, 5},
+    {"G506", GAct::WorkOffset, ModeValue::Count, 6},
+    {"G507", GAct::WorkOffset, ModeValue::Count, 7},
+    {"G508", GAct::WorkOffset, ModeValue::Count, 8},
+    {"G509", GAct::WorkOffset, ModeValue::Count, 9},
+    {"G53", GAct::MachineCoord, ModeValue::Count, 0},
+    {"G153", GAct::MachineCoord, ModeValue::Count, 0},
+    {"SUPA", GAct::MachineCoord, ModeValue::Count, 0},
+    {"G60", GAct::Mode, ModeValue::ExactStop, 0},
+    {"G64", GAct::Mode, ModeValue::Continuous, 0},
+    {"G70", GAct::Units, ModeValue::Inch, 2},
+    {"G71", GAct::Units, ModeValue::MM, 0},
+    {"G700", GAct::Units, ModeValue::Inch, 1},
+    {"G710", GAct::Units, ModeValue::MM, 0},
+    {"G90", GAct::Mode, ModeValue::Absolute, 0},
+    {"G91", GAct::Mode, ModeValue::Incremental, 0},
+    {"G93", GAct::Mode, ModeValue::InverseTime, 0},
+    {"G94", GAct::Mode, ModeValue::PerMinute, 0},
+    {"G95", GAct::Mode, ModeValue::PerRev, 0},
+    {"TRANS", GAct::Frame, ModeValue::Count, (int)FrameKind::Trans},
+    {"ATRANS", GAct::Frame, ModeValue::Count, (int)FrameKind::Trans},
+    {"ROT", GAct::Frame, ModeValue::Count, (int)FrameKind::Rot},
+    {"AROT", GAct::Frame, ModeValue::Count, (int)FrameKind::Rot},
+    {"SCALE", GAct::Frame, ModeValue::Count, (int)FrameKind::Scale},
+    {"ASCALE", GAct::Frame, ModeValue::Count, (int)FrameKind::Scale},
+    {"MIRROR", GAct::Frame, ModeValue::Count, (int)FrameKind::Mirror},
+    {"AMIRROR", GAct::Frame, ModeValue::Count, (int)FrameKind::Mirror},
+};
+
+GInfo findGCode(std::string_view name) {
+  GInfo g;
+  for (auto &c : kGCodes)
+    if (name == c.name) {
+      g.code = &c;
+      break;
+    }
+  if (!g.code) return g;
+  for (auto &r : kExecuted)
+    if (name == r.name) {
+      g.act = r.act;
+      g.mode = r.mode;
+      g.arg = r.arg;
+      g.additive = r.act == GAct::Frame && name[0] == 'A';
+      return g;
+    }
+  g.act = g.code->isDefault ? GAct::Default : GAct::Unsupported;
+  return g;
+}
+
+static const AddrInfo kAddrs[] = {
+    {"X", Addr::Axis}, {"Y", Addr::Axis}, {"Z", Addr::Axis}, {"A", Addr::Axis}, {"B", Addr::Axis},
+    {"C", Addr::Axis}, {"U", Addr::Axis}, {"V", Addr::Axis}, {"W", Addr::Axis},
+    {"I", Addr::Center}, {"J", Addr::Center}, {"K", Addr::Center},
+    {"I1", Addr::Via}, {"J1", Addr::Via}, {"K1", Addr::Via},
+    {"CR", Addr::Radius}, {"CHF", Addr::Corner}, {"RND", Addr::Corner},
+    {"F", Addr::Feed}, {"S", Addr::Speed}, {"T", Addr::Tool}, {"D", Addr::Edge}, {"M", Addr::Misc}, {"G", Addr::G},
+    {"ADIS", Addr::Ignored}, {"ADISPOS", Addr::Ignored},
+    {"AR", Addr::Refused, "the opening angle of an arc"},
+    {"TURN", Addr::Refused, "extra full turns of a helix"},
+    {"AP", Addr::Refused, "a polar angle"},
+    {"RP", Addr::Refused, "a polar radius"},
+    {"CHR", Addr::Refused, "a chamfer given by its leg length (CHF, the chamfer length, is simulated)"},
+    {"RNDM", Addr::Refused, "modal rounding"},
+    {"OFFN", Addr::Refused, "a contour offset"},
+    {"SF", Addr::Refused, "a thread's start angle"},
+    {"LIMS", Addr::Refused, "the spindle speed limit of constant cutting speed"},
+    {"H", Addr::Refused, "an auxiliary function H"},
+    {"E", Addr::Refused, "an address without meaning on this machine"},
+};
+
+const AddrInfo *findAddress(std::string_view name) {
+  for (auto &a : kAddrs)
+    if (name == a.name) return &a;
+  return nullptr;
+}
+
+// $TC_DP3/6/12/15 are the tool data fields ncc keeps (docs/IR.md §3 "Tool data"); the other
+// $TC_DP parameters have no place in the machine file, so they are errors, not zeros.
+static const SysMap kSys[] = {
+    {"P_PFRAME", "_pframe", 0},       {"P_IFRAME", "_iframe", 0},       {"P_ACTFRAME", "_actframe", 0},
+    {"P_UIFR", "_uifr", 1},           {"AA_IW", "_abs", 1},             {"P_EP", "_abs", 1},
+    {"P_TOOLNO", "_current_tool", 0}, {"P_TOOL", "_cutter_d", 0},       {"P_UIFRNUM", "_coord_system_number", 0},
+    {"P_F", "_feed", 0},              {"P_S", "_rpm", 0},
+    {"TC_DP3", "_tool_data", 2, 0},   {"TC_DP6", "_tool_data", 2, 1},   {"TC_DP12", "_tool_data", 2, 2},
+    {"TC_DP15", "_tool_data", 2, 3},
+};
+
+const SysMap *findSystemVar(std::string_view name) {
+  for (auto &s : kSys)
+    if (name == s.name) return &s;
+  return nullptr;
+}
+
+static const FnMap kFns[] = {
+    {"SIN", "SIN", false},         {"COS", "COS", false},         {"TAN", "TAN", false},
+    {"ASIN", "ASIN", false},       {"ACOS", "ACOS", false},       {"ATAN2", "ATAN2_SIGNED", false},
+    {"SQRT", "SQRT", false},       {"ABS", "ABS", false},         {"POT", "POT", false},
+    {"TRUNC", "TRUNC", false},     {"ROUND", "ROUND", false},     {"ROUNDUP", "ROUNDUP", false},
+    {"LN", "LN", false},           {"EXP", "EXP", false},         {"MINVAL", "MINVAL", false},
+    {"MAXVAL", "MAXVAL", false},   {"BOUND", "BOUND", false},     {"STRLEN", "STRLEN", false},
+    {"INDEX", "INDEX", false},     {"RINDEX", "RINDEX", false},   {"MINDEX", "MINDEX", false},
+    {"MATCH", "MATCH", false},     {"SUBSTR", "SUBSTR", false},   {"TOUPPER", "TOUPPER", false},
+    {"TOLOWER", "TOLOWER", false}, {"NUMBER", "NUMBER", false},   {"ISNUMBER", "ISNUMBER", false},
+    {"CTRANS", "CTRANS", true},    {"CFINE", "CFINE", true},      {"CROT", "CROT", true},
+    {"CSCALE", "CSCALE", true},    {"CMIRROR", "CMIRROR", true},  {"INVFRAME", "INVFRAME", false},
+};
+
+const FnMap *findFunction(std::string_view name) {
+  for (auto &f : kFns)
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
+}  // namespace ncc::sin

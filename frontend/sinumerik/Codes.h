@@ -1,0 +1,84 @@
+// The Sinumerik tables: every G code of the 60 G groups (generated from the operator table,
+// GCodeTable.inc) with what ncc does with it, the addresses, the system variables ncc provides
+// and the predefined functions. Lowering reads these tables instead of chains of ifs.
+#pragma once
+#include "ir/ModeTable.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace ncc::sin {
+
+// What lowering does with a G code.
+enum class GAct : uint8_t {
+  Unsupported,   // changes the motion in a way ncc does not model: an unsupported-code error
+  Default,       // the group's initial setting, which is what ncc models: nothing to do
+  Mode,          // a mode op (mode holds the value)
+  Dwell,         // G4
+  WorkOffset,    // G500, G54-G57, G505-G509 (arg: index)
+  MachineCoord,  // G53, G153, SUPA: the block's move in machine coordinates
+  CutterComp,    // G40/G41/G42 (arg: 0 off, 1 left, 2 right)
+  Frame,         // TRANS ROT SCALE MIRROR and their additive forms (arg: FrameKind)
+  Units,         // G70/G71/G700/G710 (arg: 0 mm, 1 inch, 2 G70 refused: its feed stays metric)
+};
+
+enum class FrameKind : uint8_t { Trans, Rot, Scale, Mirror };
+
+struct GCode {
+  const char *name;     // upper case: G1, G500, TRANS, CIP
+  int group;            // G group 1..62
+  int modality;         // 0 modal, 1 non-modal, 2 either
+  bool isDefault;       // the group's initial setting
+  const char *meaning;  // from the operator table
+};
+
+struct GInfo {
+  const GCode *code = nullptr;
+  GAct act = GAct::Unsupported;
+  ModeValue mode = ModeValue::Count;
+  int arg = 0;
+  bool additive = false;  // ATRANS AROT ASCALE AMIRROR
+};
+
+// Null code when `name` (upper case) is no G code of the table.
+GInfo findGCode(std::string_view name);
+const GCode *gcodeTable(size_t &count);
+
+// Addresses of a block (X10, CR=5, I1=AC(3)).
+enum class Addr : uint8_t {
+  Axis,     // X Y Z A B C U V W
+  Center,   // I J K
+  Via,      // I1 J1 K1 (CIP's intermediate point)
+  Radius,   // CR
+  Corner,   // CHF (chamfer length), RND (rounding)
+  Feed, Speed, Tool, Edge, Misc, G,
+  Ignored,  // ADIS ADISPOS: rounding distances of G641/G642, which are refused themselves
+  Refused,  // an address ncc knows but does not simulate (AR, AP, RP, CHR, RNDM, TURN, OFFN, SF, LIMS …)
+  None
+};
+struct AddrInfo {
+  const char *name;
+  Addr kind;
+  const char *why = nullptr;  // Refused: what it does
+};
+const AddrInfo *findAddress(std::string_view name);
+
+// A Sinumerik system variable ncc provides: the NC IR System name and how many indices it takes.
+struct SysMap {
+  const char *name;       // upper case without '$': P_UIFR
+  const char *irName;     // NC IR name without '$': _uifr
+  int indices;            // 0, 1 (axis or number) or 2
+  int toolField = -1;     // $TC_DPn: the field k of $_tool_data[t, d, k]
+};
+const SysMap *findSystemVar(std::string_view name);
+
+// A predefined function: its NC IR builtin and how its arguments are read.
+struct FnMap {
+  const char *name;    // Sinumerik name
+  const char *irName;  // NC IR builtin
+  bool axisArgs;       // CTRANS(X, 10 …): odd arguments are axis names, passed as strings
+};
+const FnMap *findFunction(std::string_view name);
+
+}  // namespace ncc::sin

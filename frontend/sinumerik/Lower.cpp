@@ -1,0 +1,230 @@
+// A block's machine words to NC IR ops, in one fixed order (the order the controller applies
+// them within a block): F, S, T, M6, D, spindle, coolant, modes, cutter compensation, work
+// offset, dwell, the move, then program stops and returns.
+#include "frontend/sinumerik/Parser.h"
+
+#include <fmt/format.h>
+
+namespace ncc::sin {
+
+using ir::Expr;
+using ir::ExprPtr;
+using ir::Op;
+using ir::OpKind;
+
+namespace {
+// M functions with a meaning of their own; every other M is an aux function.
+enum class MAct : uint8_t { Stop, End, Return, ToolChange, Spindle, Coolant };
+struct MRow {
+  int code;
+  MAct act;
+  const char *arg;  // stop kind, spindle dir, coolant key=value
+};
+const MRow kM[] = {
+    {0, MAct::Stop, "program"}, {1, MAct::Stop, "optional"}, {2, MAct::End, "end"}, {30, MAct::End, "end_rewind"},
+    {17, MAct::Return, ""},     {6, MAct::ToolChange, ""},  {3, MAct::Spindle, "cw"}, {4, MAct::Spindle, "ccw"},
+    {5, MAct::Spindle, "stop"}, {7, MAct::Coolant, "mist"}, {8, MAct::Coolant, "flood"}, {9, MAct::Coolant, "off"},
+};
+const MRow *findM(int code) {
+  for (auto &m : kM)
+    if (m.code == code) return &m;
+  return nullptr;
+}
+}  // namespace
+
+bool BlockParser::lowerWords() {
+  ir::Region &out = f_.cur();
+  auto word = [&](std::string_view a) -> Word * {
+    for (auto &w : words_)
+      if (w.addr == a) return &w;
+    return nullptr;
+  };
+  auto take = [&](std::string_view a) -> ExprPtr {
+    Word *w = word(a);
+    if (!w) return nullptr;
+    w->addr.clear();
+    return std::move(w->value);
+  };
+  const GInfo *dwell = nullptr, *offset = nullptr, *machine = nullptr, *comp = nullptr;
+  Op mode(OpKind::Mode, loc(t_[0]));
+  for (auto &[g, l] : gcodes_) {
+    switch (g.act) {
+    case GAct::Mode:
+    case GAct::Units: {
+      ModeGroup grp = modeValueInfo(g.mode).group;
+      mode.set(modeGroupName(grp), Expr::symbol(modeValueInfo(g.mode).name));
+      mode.loc = l;
+      if (grp == ModeGroup::Plane) f_.plane = g.mode;
+      if (grp == ModeGroup::Motion) f_.motion = g.mode;
+      break;
+    }
+    case GAct::Dwell: dwell = &g; break;
+    case GAct::WorkOffset: offset = &g; break;
+    case GAct::MachineCoord: machine = &g; break;
+    case GAct::CutterComp: comp = &g; break;
+    default: break;
+    }
+  }
+  SourceLoc bl = loc(t_[0]);
+  if (dwell) {
+    // G4 F<seconds> or G4 S<revolutions>, alone in its block (L: G4 programming).
+    for (auto &w : words_)
+      if (!w.addr.empty() && w.addr != "F" && w.addr != "S")
+        return fail(t_[0], fmt::format("G4 must stand alone in its block (found {})", w.addr), "dwell-with-motion");
+    if (word("S")) return fail(t_[0], "G4 S (a dwell in spindle revolutions) is not simulated", "unsupported-code");
+    ExprPtr f = take("F");
+    if (!f) return fail(t_[0], "G4 needs F<seconds>", "missing-word");
+    Op d(OpKind::Dwell, bl);
+    d.set("seconds", std::move(f));
+    out.push_back(std::move(d));
+  }
+  bool hadFeedOrSpeed = word("F") || word("S");
+  if (ExprPtr f = take("F")) {
+    Op o(OpKind::Feed, bl);
+    o.set("value", std::move(f));
+    out.push_back(std::move(o));
+  }
+  if (ExprPtr s = take("S")) {
+    Op o(OpKind::Speed, bl);
+    o.set("value", std::move(s));
+    out.push_back(std::move(o));
+  }
+  if (ExprPtr t = take("T")) {
+    if (t->kind == ir::ExprKind::String) return fail(t_[0], "tool names (T=\"…\") need tool management, which is not simulated", "unsupported-code");
+    Op o(OpKind::ToolSelect, bl);
+    o.set("value", std::move(t));
+    out.push_back(std::move(o));
+  }
+  std::vector<std::pair<const MRow *, SourceLoc>> ms;
+  for (auto &[code, l] : mcodes_) ms.push_back({findM(code), l});
+  bool changed = false;
+  for (auto &[m, l] : ms)
+    if (m && m->act == MAct::ToolChange) {
+      out.push_back(Op(OpKind::ToolChange, l));
+      changed = true;
+    }
+  // D: the cutting edge of the active tool. The executor keeps edge 1 of the tool in the
+  // spindle (MD20270: D1 after a tool change); D0 cancels; other edges are refused.
+  if (ExprPtr d = take("D")) {
+    if (d->kind != ir::ExprKind::Number || (d->num != 0 && d->num != 1))
+      return fail(t_[0], "D other than D0 and D1 (further cutting edges) is not simulated", "unsupported-code");
+    Op o(OpKind::ToolLength, bl);
+    if (d->num == 0) o.set("h", Expr::number(0, ir::Type::Int));
+    out.push_back(std::move(o));
+  } else if (changed) {
+    out.push_back(Op(OpKind::ToolLength, bl));
+  }
+  for (auto &[m, l] : ms) {
+    if (!m) continue;
+    if (m->act == MAct::Spindle) {
+      Op o(OpKind::Spindle, l);
+      o.set("dir", Expr::symbol(m->arg));
+      out.push_back(std::move(o));
+    } else if (m->act == MAct::Coolant) {
+      Op o(OpKind::Coolant, l);
+      if (std::string_view(m->arg) == "off") {
+        o.set("flood", Expr::symbol("off"));
+        o.set("mist", Expr::symbol("off"));
+      } else {
+        o.set(m->arg, Expr::symbol("on"));
+      }
+      out.push_back(std::move(o));
+    }
+  }
+  for (auto &[code, l] : mcodes_)
+    if (!findM(code)) {
+      Op o(OpKind::Aux, l);
+      o.set("m", Expr::number(code, ir::Type::Int));
+      out.push_back(std::move(o));
+    }
+  if (!mode.args.empty()) out.push_back(std::move(mode));
+  if (comp) {
+    static const char *kSide[] = {"off", "left", "right"};
+    Op o(OpKind::CutterComp, bl);
+    o.set("side", Expr::symbol(kSide[comp->arg]));
+    if (comp->arg) o.set("d_default", Expr::symbol("tool"));
+    out.push_back(std::move(o));
+  }
+  if (offset && offset->arg == 0) {
+    // G500: no settable frame. The core's work offsets are G54…, so the active settable frame
+    // ($P_IFRAME) becomes the identity; the next G54… reads its table entry again.
+    out.push_back(assignOp(Expr::var(ir::VarSpace::System, "_iframe", nullptr, bl), Expr::call("CTRANS", {}, bl), bl));
+  } else if (offset) {
+    Op o(OpKind::WorkOffset, bl);
+    o.set("index", Expr::number(offset->arg, ir::Type::Int));
+    out.push_back(std::move(o));
+  }
+  // The move: every word left.
+  Op mv(OpKind::Move, bl);
+  std::string ac, ic;
+  bool any = false, path = false;
+  for (auto &w : words_) {
+    if (w.addr.empty()) continue;
+    const AddrInfo *a = findAddress(w.addr);
+    std::string key = w.addr;
+    switch (a->kind) {
+    case Addr::Axis: path = true; break;
+    case Addr::Center: break;
+    case Addr::Via:  // I1 J1 K1: the intermediate point's X Y Z
+      key = std::string("via_") + (char)('x' + (w.addr[0] - 'I'));
+      if (w.mode) return fail(t_[0], fmt::format("{}=AC()/IC() is not simulated", w.addr), "unsupported-code");
+      break;
+    case Addr::Radius: key = "R"; break;
+    case Addr::Corner: key = w.addr == "CHF" ? "chamfer" : "round"; break;
+    default: return fail(t_[0], fmt::format("address {} cannot be used here", w.addr), "unused-word");
+    }
+    if (w.mode && a->kind != Addr::Axis && a->kind != Addr::Center && a->kind != Addr::Via)
+      return fail(t_[0], fmt::format("{}=AC()/IC() is only for coordinates", w.addr));
+    if (w.mode == 'A') ac += w.addr;
+    if (w.mode == 'I') ic += w.addr;
+    mv.set(key, std::move(w.value));
+    mv.loc = w.loc;
+    any = true;
+  }
+  if (machine) {
+    // G53 / G153 / SUPA: this block's positions in machine coordinates (non-modal).
+    if (!path) return fail(t_[0], fmt::format("{} needs axis positions in its block", machine->code->name), "missing-word");
+    if (f_.motion != ModeValue::Rapid && f_.motion != ModeValue::Linear)
+      return fail(t_[0], fmt::format("{} is simulated with G0 or G1 active (programmed before in this subprogram)", machine->code->name),
+                  "unsupported-code");
+    if (!ac.empty() || !ic.empty() || mv.args.size() != 0) {
+      for (auto &a : mv.args)
+        if (findAddress(a.key) == nullptr || findAddress(a.key)->kind != Addr::Axis)
+          return fail(t_[0], fmt::format("{} takes axis positions only", machine->code->name));
+      if (!ic.empty()) return fail(t_[0], fmt::format("IC() under {} is not simulated", machine->code->name), "unsupported-code");
+    }
+    Op o(OpKind::MachineMove, bl);
+    o.set("rapid", Expr::boolean(f_.motion == ModeValue::Rapid));
+    for (auto &a : mv.args) o.set(a.key, std::move(a.value));
+    out.push_back(std::move(o));
+  } else if (any) {
+    if (!ac.empty()) mv.set("ac", Expr::symbol(ac));
+    if (!ic.empty()) mv.set("ic", Expr::symbol(ic));
+    out.push_back(std::move(mv));
+  } else if (f_.pp.modalCalls && (f_.motion == ModeValue::Rapid || f_.motion == ModeValue::Linear)) {
+    // MCALL also runs after a block with G0/G1 alone or with F or S under G0/G1 (L8470-L8479).
+    bool g01 = false;
+    for (auto &[g, l] : gcodes_) g01 = g01 || g.mode == ModeValue::Rapid || g.mode == ModeValue::Linear;
+    if (g01 || hadFeedOrSpeed) out.push_back(Op(OpKind::ModalTrigger, bl));
+  }
+  for (auto &[m, l] : ms) {
+    if (!m) continue;
+    if (m->act == MAct::Stop) {
+      Op o(OpKind::Stop, l);
+      o.set("kind", Expr::symbol(m->arg));
+      out.push_back(std::move(o));
+    } else if (m->act == MAct::End || m->act == MAct::Return) {
+      // M2/M30 end the main program; in a subprogram they return like M17 (L8299).
+      if (m->act == MAct::End && f_.isMain) {
+        Op o(OpKind::Stop, l);
+        o.set("kind", Expr::symbol(m->arg));
+        out.push_back(std::move(o));
+      } else {
+        out.push_back(Op(OpKind::Return, l));
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace ncc::sin

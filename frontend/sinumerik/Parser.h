@@ -1,0 +1,167 @@
+// The Sinumerik front end's internals: one ProgramParser for the program and its subprogram
+// files, one FunctionParser per file (its declarations, control-structure stack and labels),
+// and the block parser that reads one line's statements and lowers them to NC IR ops.
+#pragma once
+#include "frontend/sinumerik/Codes.h"
+#include "frontend/sinumerik/Lexer.h"
+#include "frontend/sinumerik/SinFrontend.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ncc::sin {
+
+struct VarDecl {
+  ir::Type type = ir::Type::Real;
+  std::vector<uint32_t> dims;  // empty: a scalar
+  bool global = false;         // DEF NCK / CHAN: %%name
+  unsigned len = 0;            // STRING[n]
+  bool isChar = false;         // CHAR: a one-character string (docs/IR.md §2.2)
+};
+
+struct Signature {
+  std::vector<ir::Param> params;
+  bool ready = false;  // its PROC line was read
+};
+
+class ProgramParser;
+
+// Control structures open in a function (IF, WHILE, FOR, LOOP, REPEAT … UNTIL).
+enum class Ctl : uint8_t { If, Else, While, For, Loop, Repeat };
+struct CtlFrame {
+  Ctl kind;
+  SourceLoc loc;
+  ir::Region *region;       // where the body's ops go
+  ir::Op *op = nullptr;     // the if/while/loop op (its regions)
+  ir::ExprPtr forVar;       // FOR: the counter
+};
+
+// One file's function.
+class FunctionParser {
+public:
+  FunctionParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain);
+  bool run();  // parses every line; the function goes to pp's module
+  ir::Function fn;
+
+  // -- shared with the block parser
+  ProgramParser &pp;
+  uint32_t file;
+  bool isMain;
+  std::map<std::string, VarDecl> vars;     // DEF and parameters, upper-case names
+  std::vector<CtlFrame> ctl;
+  std::vector<std::pair<std::string, uint32_t>> labels;  // in text order, with their line
+  std::vector<ir::Region *> regions;        // innermost last
+  ModeValue plane = ModeValue::XY;  // static: the plane of ROT RPL= (docs/SINUMERIK.md)
+  ModeValue motion = ModeValue::Count;  // static: G0/G1 for G53 blocks
+  bool sawStatement = false;                // a statement before: PROC must be first
+  std::map<std::string, std::vector<Token>> macros;  // DEFINE NAME AS … of this program
+  // DEFINE NAME AS tokens: stores the macro (true); other lines: replaces macro names by their
+  // tokens (SIN-MAC-01). False with an error reported.
+  bool macroLine(std::vector<Token> &toks, uint32_t line, bool &defined);
+  ir::Region &cur() { return *regions.back(); }
+};
+
+class ProgramParser {
+public:
+  ProgramParser(SourceManager &sm, const SinOptions &o, Diagnostics &d, ir::Module &m)
+      : sm(sm), opts(o), diags(d), module(m) {}
+  SourceManager &sm;
+  const SinOptions &opts;
+  Diagnostics &diags;
+  ir::Module &module;
+  std::map<std::string, Signature> procs;  // by upper-case name
+  std::set<std::string> missing;
+  std::vector<ir::Function> done;
+  bool modalCalls = false;  // some file read so far has MCALL: blocks may trigger it (docs/IR.md §5.5)
+  bool ok = true;
+
+  // The signature of a subprogram: loads and parses its file on first use. Null (with an
+  // error at `loc` naming the paths tried) when it cannot be found.
+  const Signature *callee(const std::string &name, SourceLoc loc);
+  bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
+    diags.error(loc, std::move(msg), rule);
+    ok = false;
+    return false;
+  }
+};
+
+// Reads one block (line) and appends its ops to the function's current region.
+class BlockParser {
+public:
+  BlockParser(FunctionParser &f, std::vector<Token> &toks, uint32_t line) : f_(f), t_(toks), line_(line) {}
+  bool parse();
+
+  // Expressions (also used by PROC defaults).
+  ir::ExprPtr expr(int minPrec = 0);
+
+private:
+  FunctionParser &f_;
+  std::vector<Token> &t_;
+  uint32_t line_;
+  size_t i_ = 0;
+  bool failed_ = false;
+
+  // The block's machine words, lowered together at its end.
+  struct Word {
+    std::string addr;  // X, CR, I1, F, …
+    ir::ExprPtr value;
+    char mode = 0;     // 'A' AC(), 'I' IC()
+    SourceLoc loc;
+  };
+  std::vector<Word> words_;
+  std::vector<std::pair<GInfo, SourceLoc>> gcodes_;
+  std::vector<std::pair<int, SourceLoc>> mcodes_;
+  std::vector<ir::Op> pre_, post_;  // ops before the machine words (assignments) and after (calls)
+  ir::Op *blockOp_ = nullptr;
+
+  const Token &tok() const { return t_[i_]; }
+  const Token &peek(size_t k = 1) const { return t_[std::min(i_ + k, t_.size() - 1)]; }
+  SourceLoc loc(const Token &t) const { return {f_.file, line_, t.col}; }
+  SourceLoc loc() const { return loc(tok()); }
+  bool fail(const Token &t, std::string msg, const char *rule = "syntax");
+  bool expect(std::string_view punct);
+  bool atEnd() const { return tok().kind == Tok::End; }
+
+  // statements
+  bool statement();
+  bool keyword(const std::string &kw);
+  bool assignment();
+  bool addressWord();
+  bool gcode(const std::string &name, const Token &at);
+  bool def();
+  bool proc();
+  bool callStatement(bool modal);
+  bool gotoStatement(const std::string &kw, std::vector<ir::Op> &into);
+  bool ifStatement();
+  bool caseStatement();
+  bool repeatStatement(bool single);
+  bool frameStatement(const GInfo &g, const Token &at);
+  bool closeCtl(Ctl want, const char *name, const Token &at);
+  void openCtl(Ctl kind, ir::Op op, SourceLoc l);
+  bool lowerWords();
+
+  // expressions
+  ir::ExprPtr unary();
+  ir::ExprPtr primary();
+  ir::ExprPtr nameExpr(const Token &t);
+  ir::ExprPtr variable(const Token &t);  // a declared variable, its element or frame component
+  ir::ExprPtr systemVar(const Token &t);
+  ir::ExprPtr function(const Token &t);
+  ir::ExprPtr indexList(std::vector<ir::ExprPtr> &out, bool axisOk);
+  ir::ExprPtr comparison(ir::OpCode op, ir::ExprPtr a, ir::ExprPtr b, SourceLoc l);
+  bool stringy(const ir::Expr &e) const;
+  bool frameTyped(const ir::Expr &e) const;
+  ir::ExprPtr assignValue(const ir::Expr &target);  // after '=': SET/REP lists and ':' chains
+  bool arrayInit(const ir::Expr &target, const VarDecl &d, std::vector<ir::Op> &into, bool atDef);
+};
+
+// The number of elements of a declared array (1 for a scalar).
+size_t elementCount(const VarDecl &d);
+// `assign target= value=` at l.
+ir::Op assignOp(ir::ExprPtr target, ir::ExprPtr value, SourceLoc l);
+// A builtin call with the given arguments.
+ir::ExprPtr callOf(const char *fn, SourceLoc l, ir::ExprPtr a, ir::ExprPtr b = nullptr);
+
+}  // namespace ncc::sin

@@ -1,0 +1,262 @@
+// The program: the main file, the subprogram files it calls (found on the search path), the
+// lines of each file and their control structures.
+#include "frontend/SubprogramFiles.h"
+#include "frontend/sinumerik/Parser.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace ncc::sin {
+
+FunctionParser::FunctionParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain)
+    : pp(pp), file(file), isMain(isMain) {
+  fn.name = std::move(name);
+  fn.loc = {file, 1, 1};
+  regions.push_back(&fn.body);
+}
+
+// A header line `%_N_NAME_MPF` (punched-tape form) or `%` alone: no block.
+static bool headerLine(std::string_view s) {
+  size_t i = s.find_first_not_of(" \t");
+  return i != std::string_view::npos && s[i] == '%';
+}
+
+// Jump targets of a function: label names and block numbers.
+static void collectTargets(const ir::Region &r, std::set<std::string> &labels, std::set<double> &blocks) {
+  for (auto &op : r) {
+    if (op.kind == ir::OpKind::Label) labels.insert(op.get("name")->str);
+    if (op.kind == ir::OpKind::Block && op.get("n")) blocks.insert(op.get("n")->num);
+    for (auto &sub : op.regions) collectTargets(sub, labels, blocks);
+  }
+}
+
+// GOTOC continues with the next block when its target is missing (L4414): such a goto (marked
+// by the comment before it) is dropped.
+static void dropMissingGotoc(ir::Region &r, const std::set<std::string> &labels, const std::set<double> &blocks) {
+  for (size_t i = 0; i < r.size(); ++i) {
+    for (auto &sub : r[i].regions) dropMissingGotoc(sub, labels, blocks);
+    const ir::Expr *text = r[i].kind == ir::OpKind::Comment ? r[i].get("text") : nullptr;
+    if (!text || text->str != "GOTOC" || i + 1 >= r.size() || r[i + 1].kind != ir::OpKind::Goto) continue;
+    const ir::Expr *n = r[i + 1].get("n"), *l = r[i + 1].get("label");
+    bool found = n ? blocks.count(n->num) > 0 : labels.count(l->str) > 0;
+    if (!found) {
+      r[i].set("text", ir::Expr::string("GOTOC: target not found, continues"));
+      r.erase(r.begin() + (long)i + 1);
+    }
+  }
+}
+
+// A section's end label stands before its block op; the section ends with that block, so the
+// call's `to` names a label put after the block op (docs/IR.md §5.3: the block of `to` ends
+// before the next block or label).
+static void sectionEndLabels(ir::Region &body) {
+  std::set<std::string> ends;
+  auto collect = [&](auto &self, ir::Region &r) -> void {
+    for (auto &op : r) {
+      if (op.kind == ir::OpKind::CallSection && op.get("to")) {
+        ends.insert(op.get("to")->str);
+        op.set("to", ir::Expr::string(op.get("to")->str + "@end"));
+      }
+      for (auto &sub : op.regions) self(self, sub);
+    }
+  };
+  collect(collect, body);
+  auto place = [&](auto &self, ir::Region &r) -> void {
+    for (size_t i = 0; i < r.size(); ++i) {
+      for (auto &sub : r[i].regions) self(self, sub);
+      if (r[i].kind != ir::OpKind::Label || !ends.count(r[i].get("name")->str)) continue;
+      ir::Op l(ir::OpKind::Label, r[i].loc);
+      l.set("name", ir::Expr::string(r[i].get("name")->str + "@end"));
+      size_t at = i + 1 < r.size() && r[i + 1].kind == ir::OpKind::Block ? i + 2 : i + 1;
+      r.insert(r.begin() + (long)at, std::move(l));
+    }
+  };
+  place(place, body);
+}
+
+static bool mentionsMcall(const std::string &text) {
+  std::string up(text);
+  for (auto &c : up) c = (char)std::toupper((unsigned char)c);
+  return up.find("MCALL") != std::string::npos;
+}
+
+bool FunctionParser::macroLine(std::vector<Token> &toks, uint32_t line, bool &defined) {
+  defined = false;
+  size_t k = toks[0].kind == Tok::Name && toks[0].text[0] == 'N' && toks[0].digitsAt == 1 ? 1 : 0;  // N10 DEFINE
+  if (toks[k].isName("DEFINE")) {
+    defined = true;
+    if (toks.size() < k + 4 || toks[k + 1].kind != Tok::Name || !toks[k + 2].isName("AS"))
+      return pp.error({file, line, toks[k].col}, "a macro is written DEFINE NAME AS text");
+    static const char *kReserved[] = {"IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "LOOP",
+                                      "ENDLOOP", "REPEAT", "UNTIL", "GOTO", "GOTOF", "GOTOB", "GOTOC", "DEFINE"};
+    for (const char *r : kReserved)
+      if (toks[k + 1].text == r)  // L4936: control keywords and jump targets are no macros
+        return pp.error({file, line, toks[k + 1].col}, fmt::format("'{}' cannot be redefined by a macro", r));
+    macros[toks[k + 1].text] = std::vector<Token>(toks.begin() + (long)k + 3, toks.end() - 1);
+    return true;
+  }
+  if (macros.empty()) return true;
+  std::vector<Token> out;
+  for (auto &t : toks) {
+    auto it = t.kind == Tok::Name ? macros.find(t.text) : macros.end();
+    if (it == macros.end()) {
+      out.push_back(t);
+      continue;
+    }
+    for (Token m : it->second) {  // the macro's tokens stand where its name stood
+      m.col = t.col;
+      out.push_back(std::move(m));
+    }
+  }
+  toks = std::move(out);
+  return true;
+}
+
+bool FunctionParser::run() {
+  const std::string &text = pp.sm.text(file);
+  pp.modalCalls = pp.modalCalls || mentionsMcall(text);
+  size_t pos = 0;
+  uint32_t lineNo = 0;
+  bool ok = true;
+  std::vector<Token> toks;
+  while (pos <= text.size()) {
+    size_t nl = text.find('\n', pos);
+    if (nl == std::string::npos) nl = text.size();
+    std::string_view line(text.data() + pos, nl - pos);
+    ++lineNo;
+    pos = nl + 1;
+    if (headerLine(line)) {
+      if (nl >= text.size()) break;
+      continue;
+    }
+    // Skip level: `/` or `/0`…`/9` before the block (the Fundamentals manual). Blanked out
+    // in a copy so that columns stay those of the source line.
+    std::string copy(line);
+    if (lineNo == 1 && copy.rfind("\xEF\xBB\xBF", 0) == 0) copy.replace(0, 3, "   ");  // a UTF-8 byte order mark
+    size_t first = copy.find_first_not_of(" \t");
+    if (first != std::string::npos && copy[first] == '/') {
+      int skip = 0;
+      copy[first] = ' ';
+      if (first + 1 < copy.size() && copy[first + 1] >= '0' && copy[first + 1] <= '9') {
+        skip = copy[first + 1] - '0';
+        copy[first + 1] = ' ';
+      }
+      if (pp.opts.blockDeleteMask & (1u << skip)) {
+        if (nl >= text.size()) break;
+        continue;
+      }
+    }
+    std::string err;
+    uint32_t errCol = 0;
+    if (!lexLine(copy, toks, err, errCol)) {
+      pp.error({file, lineNo, errCol}, err);
+      ok = false;
+    } else if (bool def = false; toks.size() > 1 && !macroLine(toks, lineNo, def)) {
+      ok = false;
+    } else if (toks.size() > 1 && !def) {
+      BlockParser bp(*this, toks, lineNo);
+      if (!bp.parse()) ok = false;
+    }
+    if (nl >= text.size()) break;
+  }
+  std::set<std::string> targets;
+  std::set<double> blocks;
+  collectTargets(fn.body, targets, blocks);
+  dropMissingGotoc(fn.body, targets, blocks);
+  sectionEndLabels(fn.body);
+  for (auto &c : ctl) {
+    static const char *kOpen[] = {"IF", "IF … ELSE", "WHILE", "FOR", "LOOP", "REPEAT"};
+    static const char *kClose[] = {"ENDIF", "ENDIF", "ENDWHILE", "ENDFOR", "ENDLOOP", "UNTIL"};
+    pp.error(c.loc, fmt::format("{} without {}", kOpen[(int)c.kind], kClose[(int)c.kind]), "loop-mismatch");
+    ok = false;
+  }
+  return ok;
+}
+
+// Files a called name may be in (L6859-L6898: the control adds _N_ and _SPF / _MPF).
+static std::vector<std::string> candidateFiles(const std::string &name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return (char)std::tolower(c); });
+  std::vector<std::string> out;
+  for (const std::string &n : {name, lower})
+    for (const char *ext : {".MPF", ".mpf", ".SPF", ".spf"}) out.push_back(n + ext);  // MPF first (L8307)
+  out.push_back("_N_" + name + "_MPF");
+  out.push_back("_N_" + name + "_SPF");
+  return out;
+}
+
+// The names of the Siemens standard cycles (CYCLE81, POCKET3, HOLES1 …).
+static bool siemensCycle(const std::string &name) {
+  static const char *kPrefixes[] = {"CYCLE", "POCKET", "SLOT", "HOLES", "LONGHOLE"};
+  for (const char *p : kPrefixes) {
+    std::string_view n(name), pre(p);
+    if (n.substr(0, pre.size()) != pre) continue;
+    std::string_view rest = n.substr(pre.size());
+    if (rest.empty() ? pre == "LONGHOLE" : rest.find_first_not_of("0123456789") == std::string_view::npos) return true;
+  }
+  return false;
+}
+
+const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
+  auto it = procs.find(name);
+  if (it != procs.end()) return &it->second;
+  if (std::find(opts.linkedFunctions.begin(), opts.linkedFunctions.end(), name) != opts.linkedFunctions.end()) {
+    procs[name].ready = true;  // a linked file defines it; its parameters are passed by position there
+    return &procs[name];
+  }
+  uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name), true);
+  if (!fid && siemensCycle(name)) {
+    // A standard cycle without a user subprogram of that name (which would override it).
+    if (!missing.count(name))
+      error(loc, fmt::format("{} is a Siemens standard cycle: calling it from a program is not simulated yet (no {}.SPF "
+                             "in {}; `ncc cycle sin.{}` runs the library's entry alone)",
+                             name, name, folderList(opts.searchDirs), name),
+            "unsupported-code");
+    missing.insert(name);
+    return nullptr;
+  }
+  if (!fid) {
+    if (!missing.count(name))
+      error(loc, fmt::format("subprogram {} not found (searched {} for {}.MPF, {}.SPF)", name,
+                             folderList(opts.searchDirs), name, name),
+            "missing-subprogram");
+    else
+      error(loc, fmt::format("subprogram {} not found", name), "missing-subprogram");
+    missing.insert(name);
+    return nullptr;
+  }
+  // Parse the file now: its PROC line gives the signature the call's arguments need.
+  procs[name];
+  FunctionParser fp(*this, fid, name, false);
+  bool good = fp.run();
+  Signature &s = procs[name];
+  s.params.clear();
+  for (auto &p : fp.fn.params) {
+    ir::Param c;
+    c.name = p.name;
+    c.type = p.type;
+    c.byRef = p.byRef;
+    s.params.push_back(std::move(c));
+  }
+  s.ready = true;
+  fp.fn.dialect = ir::Dialect::Unknown;
+  done.push_back(std::move(fp.fn));
+  if (!good) ok = false;
+  return &procs[name];
+}
+
+bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions &opts, Diagnostics &diags,
+                           ir::Module &out) {
+  out.dialect = ir::Dialect::Sinumerik;
+  out.name = sm.name(fileId);
+  ProgramParser pp(sm, opts, diags, out);
+  FunctionParser main(pp, fileId, "main", true);
+  bool ok = main.run();
+  out.functions.clear();
+  out.functions.push_back(std::move(main.fn));
+  for (auto &f : pp.done) out.functions.push_back(std::move(f));
+  return ok && pp.ok;
+}
+
+}  // namespace ncc::sin

@@ -1,0 +1,24 @@
+// Sinumerik 840D sl front end: part programs (.MPF) and subprograms (.SPF) in the Siemens
+// high-level language, lowered to NC IR (docs/IR.md §8.2, docs/SINUMERIK.md).
+#pragma once
+#include "ir/Diagnostics.h"
+#include "ir/NCIR.h"
+
+#include <string>
+#include <vector>
+
+namespace ncc::sin {
+
+struct SinOptions {
+  unsigned blockDeleteMask = 0;         // bit n set: blocks with skip level /n are left out (/ = /0)
+  std::vector<std::string> searchDirs;  // where called subprogram files are looked up, in order
+  std::vector<std::string> linkedFunctions;  // defined by linked files: not searched
+  double realTolerance = 1e-12;         // relative tolerance of REAL comparisons (MD, manual L3284)
+};
+
+// Parses the main program and every subprogram it calls (looked up in searchDirs as NAME.MPF,
+// NAME.SPF, _N_NAME_MPF …) into `out`: functions[0] is "main". False when an error was reported.
+bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions &opts, Diagnostics &diags,
+                           ir::Module &out);
+
+}  // namespace ncc::sin

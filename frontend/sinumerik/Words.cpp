@@ -1,0 +1,224 @@
+// Address words (X10, X=AC(5), CR=20, G1, M3, T1 D1 …), subprogram calls and the frame
+// statements, and the lowering of one block's machine words to ops in execution order.
+#include "frontend/sinumerik/Parser.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace ncc::sin {
+
+using ir::Expr;
+using ir::ExprPtr;
+using ir::Op;
+using ir::OpKind;
+
+// The value of an address: `X10` (digits in the name), `X-10` / `X 10`, `X=expr`, `X=AC(e)`.
+bool BlockParser::addressWord() {
+  const Token &t = tok();
+  SourceLoc l = loc(t);
+  const AddrInfo *full = findAddress(t.text);
+  std::string letters = t.text.substr(0, t.digitsAt);
+  const AddrInfo *pre = t.digitsAt < t.text.size() ? findAddress(letters) : nullptr;
+  GInfo g = findGCode(t.text);
+  if (g.code && !(full && peek().is("="))) {
+    ++i_;
+    return gcode(t.text, t);
+  }
+  Word w;
+  w.loc = l;
+  if (full && peek().is("=")) {  // X=…, CR=…, I1=…
+    w.addr = t.text;
+    i_ += 2;
+    const Token &m = tok();
+    if ((m.isName("AC") || m.isName("IC")) && peek().is("(")) {
+      w.mode = m.text[0];
+      i_ += 2;
+      w.value = expr(0);
+      if (!w.value || !expect(")")) return false;
+    } else if ((m.isName("DC") || m.isName("ACP") || m.isName("ACN") || m.isName("CAC") || m.isName("CIC")) &&
+               peek().is("(")) {
+      return fail(m, fmt::format("{}=({}) positioning is not simulated", w.addr, m.text), "unsupported-code");
+    } else {
+      w.value = expr(0);
+      if (!w.value) return false;
+    }
+  } else if (pre && !t.fraction && t.digitsAt == 1 && (letters == "L")) {
+    // L123: a program call; leading zeros count (L8331), so the name is kept as written.
+    return callStatement(false);
+  } else if (pre) {  // X10, G1, M30
+    w.addr = letters;
+    w.value = Expr::number(t.num, t.isInt ? ir::Type::Int : ir::Type::Real, l);
+    ++i_;
+    if (letters == "G") {  // G01 is G1
+      if (!t.isInt) return fail(t, fmt::format("unknown G function {}", t.text), "unknown-code");
+      return gcode(fmt::format("G{}", (long)t.num), t);
+    }
+  } else if (full && (peek().kind == Tok::Number || ((peek().is("-") || peek().is("+")) && peek(2).kind == Tok::Number))) {
+    w.addr = t.text;  // X-10, X 10
+    ++i_;
+    bool neg = tok().is("-");
+    if (tok().kind == Tok::Punct) ++i_;
+    w.value = Expr::number(neg ? -tok().num : tok().num, tok().isInt ? ir::Type::Int : ir::Type::Real, l);
+    ++i_;
+  } else if (pre && peek().is("=")) {
+    // S1=300, M2=19, X1=5: an address with an extension (spindle or channel axis number).
+    return fail(t, fmt::format("the address extension {}= (a spindle or axis number) is not simulated", t.text),
+                "unsupported-code");
+  } else if (peek().is("[")) {
+    // G[8]=2, AX[AXVAR]=10, S[SPINU]=300: indirect addresses (SIN-IND-01…03).
+    return fail(t, fmt::format("the indexed address {}[…] is not simulated", t.text), "unsupported-code");
+  } else {
+    return callStatement(false);  // a subprogram called by its name
+  }
+  const AddrInfo *a = findAddress(w.addr);
+  if (a->kind == Addr::Refused) return fail(t, fmt::format("{} ({}) is not simulated", w.addr, a->why), "unsupported-code");
+  if (a->kind == Addr::Ignored) return true;
+  if (a->kind == Addr::Misc) {
+    if (w.value->kind != ir::ExprKind::Number || w.value->num != std::floor(w.value->num) || w.value->num < 0)
+      return fail(t, "an M function is a constant non-negative integer (M=expressions are not simulated)", "unsupported-code");
+    mcodes_.push_back({(int)w.value->num, l});
+    return true;
+  }
+  for (auto &o : words_)
+    if (o.addr == w.addr) return fail(t, fmt::format("address {} is programmed twice in the block", w.addr), "duplicate-word");
+  words_.push_back(std::move(w));
+  return true;
+}
+
+bool BlockParser::gcode(const std::string &name, const Token &at) {
+  GInfo g = findGCode(name);
+  if (!g.code) return fail(at, fmt::format("unknown G function {}", name), "unknown-code");
+  if (g.act == GAct::Frame) return frameStatement(g, at);
+  for (auto &o : gcodes_)
+    if (o.first.code->group == g.code->group && o.first.code->group != 2 && o.first.code->group != 3)
+      return fail(at, fmt::format("{} and {} are both of G group {}", o.first.code->name, name, g.code->group),
+                  "modal-group-conflict");
+  if (g.act == GAct::Unsupported)
+    return fail(at, fmt::format("{} ({}) is not simulated", name, g.code->meaning), "unsupported-code");
+  if (g.act == GAct::Units && g.arg == 2)
+    return fail(at, "G70 (inch for geometry, feed stays metric) is not simulated: use G700", "unsupported-code");
+  gcodes_.push_back({g, loc(at)});
+  return true;
+}
+
+// TRANS X10, ATRANS, ROT Z45 / ROT RPL=30, SCALE X2, MIRROR X0 … as assignments to $P_PFRAME
+// (docs/IR.md §2.4): the absolute form replaces the programmable frame, the additive one chains.
+bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
+  SourceLoc l = loc(at);
+  static const char *kBuiltin[] = {"CTRANS", "CROT", "CSCALE", "CMIRROR"};
+  FrameKind k = (FrameKind)g.arg;
+  std::vector<ExprPtr> args;
+  while (!atEnd()) {
+    const Token &t = tok();
+    if (k == FrameKind::Rot && t.isName("RPL") && peek().is("=")) {
+      i_ += 2;
+      static const char *kNormal[] = {"Z", "Y", "X"};  // G17, G18, G19
+      int p = f_.plane == ModeValue::XY ? 0 : f_.plane == ModeValue::ZX ? 1 : 2;
+      ExprPtr v = expr(0);
+      if (!v) return false;
+      args.push_back(Expr::string(kNormal[p], l));
+      args.push_back(std::move(v));
+      continue;
+    }
+    const AddrInfo *a = t.kind == Tok::Name ? findAddress(t.text.substr(0, t.digitsAt)) : nullptr;
+    if (!a || a->kind != Addr::Axis || (t.text.size() > 1 && t.digitsAt != 1))
+      return fail(t, fmt::format("{} takes axis words only (and must stand alone in its block)", g.code->name));
+    std::string axis = t.text.substr(0, 1);
+    ExprPtr v;
+    if (t.digitsAt == 1) {
+      v = Expr::number(t.num, t.isInt ? ir::Type::Int : ir::Type::Real, loc(t));
+      ++i_;
+    } else if (peek().is("=")) {
+      i_ += 2;
+      v = expr(0);
+    } else {
+      ++i_;
+      v = unary();
+    }
+    if (!v) return false;
+    args.push_back(Expr::string(axis, l));
+    if (k != FrameKind::Mirror) args.push_back(std::move(v));  // MIRROR X0: the value does not count
+  }
+  if (!words_.empty() || !gcodes_.empty()) return fail(at, fmt::format("{} must stand alone in its block", g.code->name));
+  ExprPtr f = Expr::call(kBuiltin[(int)k], std::move(args), l);
+  auto pf = Expr::var(ir::VarSpace::System, "_pframe", nullptr, l);
+  if (g.additive) f = callOf("FRAME_CHAIN", l, pf->clone(), std::move(f));
+  pre_.push_back(assignOp(std::move(pf), std::move(f), l));
+  return true;
+}
+
+// NAME, NAME(args), NAME P3, L10 P=2, CALL "NAME", MCALL NAME(args), MCALL.
+bool BlockParser::callStatement(bool modal) {
+  const Token &first = tok();
+  SourceLoc l = loc(first);
+  bool viaCall = first.isName("CALL");
+  if (modal || viaCall) ++i_;
+  Op c(modal ? OpKind::ModalCall : OpKind::Call, l);
+  if (modal && atEnd()) {  // MCALL alone: cancel
+    post_.push_back(std::move(c));
+    return true;
+  }
+  const Token &t = tok();
+  std::string name;
+  if (viaCall) {
+    ExprPtr e = expr(0);
+    if (!e) return false;
+    if (e->kind != ir::ExprKind::String) return fail(t, "CALL with a computed name is not supported", "unsupported-code");
+    name = e->str;
+    for (auto &ch : name) ch = (char)std::toupper((unsigned char)ch);
+  } else {
+    if (t.kind != Tok::Name) return fail(t, "expected a subprogram name");
+    name = t.text;
+    ++i_;
+  }
+  if (name.size() < 2 || name[0] == '$')
+    return fail(t, fmt::format("unknown address or name '{}'", name), "unknown-code");
+  const Signature *sig = f_.pp.callee(name, loc(t));
+  if (!sig) {
+    failed_ = true;
+    return false;
+  }
+  c.set("callee", Expr::string(name));
+  if (!modal) c.set("frame", Expr::symbol("new"));
+  if (tok().is("(")) {
+    ++i_;
+    size_t pos = 0;
+    while (!tok().is(")")) {
+      if (tok().is(",")) {  // an omitted argument: the default
+        ++pos;
+        ++i_;
+        continue;
+      }
+      if (pos >= sig->params.size())
+        return fail(tok(), fmt::format("too many arguments for {} ({} parameter{})", name, sig->params.size(),
+                                       sig->params.size() == 1 ? "" : "s"));
+      ExprPtr e = expr(0);
+      if (!e) return false;
+      c.set("a." + sig->params[pos].name, std::move(e));
+      ++pos;
+      if (tok().is(",")) {
+        ++i_;
+        if (tok().is(")")) break;
+      } else if (!tok().is(")")) {
+        return fail(tok(), "expected ',' or ')' in the argument list");
+      }
+    }
+    ++i_;
+  }
+  if (tok().kind == Tok::Name && tok().text[0] == 'P' && (tok().digitsAt == 1 || (tok().text == "P" && peek().is("=")))) {
+    if (tok().digitsAt == 1) {
+      c.set("count", Expr::number(tok().num, ir::Type::Int));
+      ++i_;
+    } else {
+      i_ += 2;
+      ExprPtr n = expr(0);
+      if (!n) return false;
+      c.set("count", std::move(n));
+    }
+  }
+  post_.push_back(std::move(c));
+  return true;
+}
+
+}  // namespace ncc::sin
