@@ -146,7 +146,8 @@ std::string Diagnostics::render(const Diagnostic &d) const {
     out = fmt::format("{}: {}: {}", file, severityName(d.severity), d.message);
   if (!d.rule.empty()) out += fmt::format(" [{}]", d.rule);
   out += '\n';
-  if (d.loc.valid()) {
+  // A file registered without its text (a compiled program whose source changed) has no line to show.
+  if (d.loc.valid() && !sm_.text(d.loc.file).empty()) {
     std::string_view line = sm_.lineText(d.loc.file, d.loc.line);
     if (line.size() > 300) line = line.substr(0, 300);
     out += printable(line);

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 using namespace ncc;
@@ -315,3 +316,163 @@ double ncrt_idiv(double a, double b) { return arithIDiv(a, b); }
 double ncrt_pow(double a, double b) { return arithPow(a, b); }
 
 }  // extern "C"
+
+// ---------------------------------------------------------------- compiled programs
+const char *ncrt_version(void) { return NCC_VERSION; }
+
+namespace ncc::ncrt {
+
+const std::vector<RuntimeSymbol> &runtimeSymbols() {
+  static const std::vector<RuntimeSymbol> table = [] {
+    std::vector<RuntimeSymbol> t;
+    auto add = [&](const char *name, auto *fn) { t.push_back({name, reinterpret_cast<void *>(fn)}); };
+    add("ncrt_begin", &ncrt_begin);
+    add("ncrt_exec", &ncrt_exec);
+    add("ncrt_exec_table", &ncrt_exec_table);
+    add("ncrt_exec_packed", &ncrt_exec_packed);
+    add("ncrt_exec_blocks", &ncrt_exec_blocks);
+    add("ncrt_error", &ncrt_error);
+    add("ncrt_fault", &ncrt_fault);
+    add("ncrt_poll", &ncrt_poll);
+    add("ncrt_mod", &ncrt_mod);
+    add("ncrt_bitwise", &ncrt_bitwise);
+    add("ncrt_idiv", &ncrt_idiv);
+    add("ncrt_pow", &ncrt_pow);
+    add("ncrt_unset", &ncrt_unset);
+    add("ncrt_str_clear", &ncrt_str_clear);
+    add("ncrt_str_cat", &ncrt_str_cat);
+    add("ncrt_str_num", &ncrt_str_num);
+    add("ncrt_sysvar", &ncrt_sysvar);
+    add("ncrt_sysvar_at", &ncrt_sysvar_at);
+    add("ncrt_sysvar_set", &ncrt_sysvar_set);
+    add("ncrt_param", &ncrt_param);
+    add("ncrt_str_num_fixed", &ncrt_str_num_fixed);
+    add("ncrt_str", &ncrt_str);
+    add("ncrt_callee", &ncrt_callee);
+    add("ncrt_jump", &ncrt_jump);
+    add("ncrt_save_modal", &ncrt_save_modal);
+    add("ncrt_modal_trigger", &ncrt_modal_trigger);
+    add("ncrt_set_modal_hook", &ncrt_set_modal_hook);
+    add("ncrt_restore_modal", &ncrt_restore_modal);
+    add("ncrt_str_const", &ncrt_str_const);
+    add("ncrt_str_intern", &ncrt_str_intern);
+    add("ncrt_strfn", &ncrt_strfn);
+    add("ncrt_compare", &ncrt_compare);
+    add("ncrt_convert", &ncrt_convert);
+    add("ncrt_fill", &ncrt_fill);
+    add("ncrt_bad_index", &ncrt_bad_index);
+    unsigned n = 0;
+    const BuiltinInfo *tab = builtinTable(n);
+    for (unsigned i = 0; i < n; ++i)
+      if (tab[i].fn) add(tab[i].symbol, tab[i].fn);
+    return t;
+  }();
+  return table;
+}
+
+bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits) {
+  ncrt_ctx rt(sink, diags, limits);
+  int status = entry(&rt);
+  // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
+  // error was reported.
+  if (status == NCRT_END) return !diags.hasErrors();
+  return status == NCRT_OK;
+}
+
+uint64_t textHash(std::string_view text) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : text) h = (h ^ c) * 0x100000001b3ull;
+  return h;
+}
+
+static constexpr char kTrailerMagic[8] = {'N', 'C', 'C', 'S', 'U', 'M', '1', 0};
+
+std::string objectTrailer(std::string_view object) {
+  uint64_t h = textHash(object);
+  return std::string(kTrailerMagic, 8) + std::string(reinterpret_cast<const char *>(&h), 8);
+}
+
+bool hasObjectTrailer(std::string_view file) {
+  if (file.size() < 16) return false;
+  std::string_view body = file.substr(0, file.size() - 16);
+  return file.substr(body.size()) == objectTrailer(body);
+}
+
+// What generated code bakes in: command and storage layout, word and kind numbering, the
+// builtin and system variable tables it indexes.
+uint64_t abiFingerprint() {
+  unsigned builtins = 0;
+  builtinTable(builtins);
+  const uint64_t parts[] = {NCRT_ABI_VERSION,         sizeof(MachineCmd),    offsetof(MachineCmd, w),
+                            offsetof(MachineCmd, loc), kWords,                (uint64_t)CmdKind::Count,
+                            kMaxModes,                sizeof(ncrt_storage),  builtins,
+                            (uint64_t)kSysVarIds,     NCRT_NUMBERED,         NCRT_QPARAMS};
+  return textHash(std::string_view(reinterpret_cast<const char *>(parts), sizeof parts));
+}
+
+// Layout: "NCCPROG1", u64 total size, u64 abi, strings (u32 length + bytes) version, machine
+// name, machine text, program, u32 file count, then per file its name and u64 hash. Little endian.
+static constexpr char kInfoMagic[8] = {'N', 'C', 'C', 'P', 'R', 'O', 'G', '1'};
+
+std::string encodeProgramInfo(const ProgramInfo &info) {
+  std::string out(kInfoMagic, sizeof kInfoMagic);
+  auto u64 = [&](uint64_t v) { out.append(reinterpret_cast<const char *>(&v), 8); };
+  auto u32 = [&](uint32_t v) { out.append(reinterpret_cast<const char *>(&v), 4); };
+  auto str = [&](const std::string &s) { u32((uint32_t)s.size()), out += s; };
+  u64(0);  // the size, filled in below
+  u64(info.abi);
+  str(info.nccVersion);
+  str(info.machineName);
+  str(info.machineText);
+  str(info.program);
+  u32((uint32_t)info.files.size());
+  for (auto &f : info.files) str(f.name), u64(f.hash);
+  uint64_t size = out.size();
+  std::memcpy(&out[8], &size, 8);
+  return out;
+}
+
+bool decodeProgramInfo(const unsigned char *data, size_t size, ProgramInfo &out, std::string &err) {
+  const unsigned char *p = data, *end = data + size;
+  bool ok = true;
+  auto take = [&](void *dst, size_t n) {
+    if (!ok || (size_t)(end - p) < n) return ok = false;
+    std::memcpy(dst, p, n);
+    p += n;
+    return true;
+  };
+  auto str = [&](std::string &s) {
+    uint32_t n = 0;
+    if (!take(&n, 4) || (size_t)(end - p) < n) return ok = false;
+    s.assign(reinterpret_cast<const char *>(p), n);
+    p += n;
+    return true;
+  };
+  char magic[8];
+  uint64_t total = 0;
+  if (!take(magic, 8) || std::memcmp(magic, kInfoMagic, 8) || !take(&total, 8) || total > size) {
+    err = "it holds no ncc program description";
+    return false;
+  }
+  end = data + total;
+  uint32_t files = 0;
+  take(&out.abi, 8);
+  if (ok && out.abi != abiFingerprint()) {
+    str(out.nccVersion);
+    err = fmt::format("it was compiled by another ncc ({}, runtime ABI {:016x}; this is {}, {:016x}): compile it again",
+                      ok ? out.nccVersion : "unknown", out.abi, ncrt_version(), abiFingerprint());
+    return false;
+  }
+  str(out.nccVersion), str(out.machineName), str(out.machineText), str(out.program), take(&files, 4);
+  for (uint32_t i = 0; ok && i < files; ++i) {
+    out.files.emplace_back();
+    str(out.files.back().name), take(&out.files.back().hash, 8);
+  }
+  if (!ok || p != end) {
+    err = "its program description is corrupt";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc::ncrt

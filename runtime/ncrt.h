@@ -71,6 +71,8 @@ typedef struct ncrt_storage {
 #define NCRT_QPARAMS 2000
 /* Loop iterations between two run-time limit checks. */
 #define NCRT_POLL_INTERVAL 65536
+/* Raised when the C ABI changes in a way abiFingerprint cannot see (a function's meaning). */
+#define NCRT_ABI_VERSION 1
 
 /* Allocates the storage for a program with the given number of named globals and Q prefix
  * arrays (1 + the highest qPrefixIndex it uses; 0 for none). */
@@ -162,6 +164,20 @@ double ncrt_bitwise(int32_t op, double a, double b);  /* arithBitwise: NaN on no
 double ncrt_idiv(double a, double b);
 double ncrt_pow(double a, double b);
 
+/* Running compiled programs (docs/AOT.md). An object from `ncc compile --emit=obj` defines the
+ * entry and, beside it, a description of the program (ncc_program_info: the runtime ABI it was
+ * compiled against, the machine, the source file names), so running it needs no source.
+ * ncrt_main is `ncc run` for such a program: it takes ncc run's output options (--trace, -o, -q,
+ * --plot, --samples, --plot-velocity, the limits, --machine to check the machine) and returns
+ * the exit code (0 success, 1 errors, 2 usage). An executable from `ncc compile --emit=exe` is
+ * this call; it is defined in libncc_aotrun (CMake: ncc::runtime). */
+typedef int (*ncrt_entry)(ncrt_ctx *ctx);
+int ncc_program_main(ncrt_ctx *ctx);
+extern const unsigned char ncc_program_info[];
+int ncrt_main(int argc, char **argv, ncrt_entry entry, const unsigned char *info);
+/* The ncc version this runtime belongs to ("0.1.0"). */
+const char *ncrt_version(void);
+
 #ifdef __cplusplus
 }  // extern "C"
 
@@ -171,6 +187,43 @@ namespace ncrt {
 // LEB128 mask, blockNumber+1 (Block only), file, line, col, then the doubles of the mask words
 // (8 bytes each, in word order), then for Comment/Message LEB128 length + text + NUL.
 void packCmd(const MachineCmd &cmd, const char *text, std::string &out);
+
+// Every C symbol compiled code may call (ncrt_* and the builtins' ncc_builtin_*), with its
+// address: what the JIT and the object loader resolve an object's undefined symbols with.
+struct RuntimeSymbol {
+  const char *name;
+  void *address;
+};
+const std::vector<RuntimeSymbol> &runtimeSymbols();
+
+// Runs a compiled entry against the sink: true unless an error was reported (a program stopped
+// by M2/M30 succeeded). Does not finish the sink's executor.
+bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits);
+
+// What an object carries beside its code (the ncc_program_info bytes): the layout compiled code
+// was built against (abiFingerprint, a stale object is refused), the machine description it was
+// compiled for (the front end read the program with its settings) and the source files, in file
+// id order, with a hash of their text (messages show a source line only while it is unchanged).
+struct ProgramInfo {
+  uint64_t abi = 0;
+  std::string nccVersion, machineName, machineText;
+  std::string program;  // the program's file (summary, plot title)
+  struct File {
+    std::string name;
+    uint64_t hash = 0;
+  };
+  std::vector<File> files;
+};
+uint64_t abiFingerprint();
+uint64_t textHash(std::string_view text);  // FNV-1a
+// An object file ends with a trailer holding the hash of what precedes it (ELF readers ignore
+// bytes after the last section), so a damaged object is refused before its code runs.
+std::string objectTrailer(std::string_view object);
+bool hasObjectTrailer(std::string_view file);
+std::string encodeProgramInfo(const ProgramInfo &info);
+// `size`: the bytes available (the symbol's size); false with the reason when they are not a
+// program description this runtime can read.
+bool decodeProgramInfo(const unsigned char *data, size_t size, ProgramInfo &out, std::string &err);
 }  // namespace ncrt
 }  // namespace ncc
 

@@ -5,6 +5,7 @@
 #pragma once
 #include "ir/NCIR.h"
 #include "ir/ExecLimits.h"
+#include "runtime/ncrt.h"
 
 #include <string>
 
@@ -40,7 +41,28 @@ bool runObjectFile(const std::string &path, CmdSink &sink, Diagnostics &diags, c
 
 // Textual LLVM IR of the program, before optimisation (`ncc compile --emit=llvm`).
 bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags);
-// Host object file (O2), written atomically (`ncc compile --emit=obj`).
-bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags);
+// Host object file (O2), written atomically (`ncc compile --emit=obj`). Beside the entry it
+// defines `ncc_program_info`, the encoded `info` (its abi is set here), so that the object runs
+// without its source (docs/AOT.md).
+bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info = {});
+
+// The JIT as a separately loaded part (libncc-jit.so, dlopen'ed by the driver on first use), so
+// that a process that compiles nothing never maps LLVM. The module resolves everything outside
+// backends/jit from the ncc binary, which exports its symbols; the stamp guards against a module
+// of another build.
+struct JitApi {
+  uint64_t stamp;
+  bool (*runModule)(const ir::Module &, CmdSink &, Diagnostics &, const JitOptions &);
+  bool (*compilesQuickly)(const ir::Module &, std::string &);
+  bool (*emitLLVM)(const ir::Module &, std::string &, Diagnostics &);
+  bool (*emitObject)(const ir::Module &, const std::string &, Diagnostics &, const ncrt::ProgramInfo &);
+};
+// What both sides compute from the headers they were built with.
+constexpr uint64_t jitApiStamp() {
+  return (uint64_t)NCRT_ABI_VERSION << 56 ^ (uint64_t)sizeof(ir::Module) << 40 ^ (uint64_t)sizeof(Diagnostics) << 24 ^
+         (uint64_t)sizeof(JitOptions) << 12 ^ sizeof(ncrt::ProgramInfo);
+}
+// The entry point libncc-jit.so exports.
+#define NCC_JIT_API_SYMBOL "ncc_jit_api_v1"
 
 }  // namespace ncc::jit

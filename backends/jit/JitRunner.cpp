@@ -3,7 +3,6 @@
 #include "backends/jit/Codegen.h"
 #include "backends/jit/Jit.h"
 
-#include "ir/Builtins.h"
 #include "passes/Eval.h"
 #include "runtime/Executor.h"
 #include "runtime/ncrt.h"
@@ -52,6 +51,7 @@ std::unique_ptr<TargetMachine> hostTargetMachine(Diagnostics &diags) {
     return nullptr;
   }
   jtmb->setRelocationModel(Reloc::PIC_);
+  jtmb->setCodeModel(CodeModel::Small);  // as a compiler's objects (the JIT's default is large)
   jtmb->setCodeGenOptLevel(CodeGenOptLevel::Default);
   auto tm = jtmb->createTargetMachine();
   if (!tm) {
@@ -86,52 +86,12 @@ void optimizeModule(Module &mod, TargetMachine *tm, int level) {
   PB.buildPerModuleDefaultPipeline(lvl).run(mod, MAM);
 }
 
-// Every external symbol generated code may reference, with its address in this process.
+// Every external symbol generated code may reference (runtime/ncrt.h), with its address here.
 static orc::SymbolMap runtimeSymbols(orc::LLJIT &jit) {
   orc::SymbolMap syms;
-  auto add = [&](const char *name, auto *fn) {
-    syms[jit.mangleAndIntern(name)] = {orc::ExecutorAddr::fromPtr(fn),
-                                       JITSymbolFlags::Exported | JITSymbolFlags::Callable};
-  };
-  add("ncrt_begin", &ncrt_begin);
-  add("ncrt_exec", &ncrt_exec);
-  add("ncrt_exec_table", &ncrt_exec_table);
-  add("ncrt_exec_packed", &ncrt_exec_packed);
-  add("ncrt_exec_blocks", &ncrt_exec_blocks);
-  add("ncrt_error", &ncrt_error);
-  add("ncrt_fault", &ncrt_fault);
-  add("ncrt_poll", &ncrt_poll);
-  add("ncrt_mod", &ncrt_mod);
-  add("ncrt_bitwise", &ncrt_bitwise);
-  add("ncrt_idiv", &ncrt_idiv);
-  add("ncrt_pow", &ncrt_pow);
-  add("ncrt_unset", &ncrt_unset);
-  add("ncrt_str_clear", &ncrt_str_clear);
-  add("ncrt_str_cat", &ncrt_str_cat);
-  add("ncrt_str_num", &ncrt_str_num);
-  add("ncrt_sysvar", &ncrt_sysvar);
-  add("ncrt_sysvar_at", &ncrt_sysvar_at);
-  add("ncrt_sysvar_set", &ncrt_sysvar_set);
-  add("ncrt_param", &ncrt_param);
-  add("ncrt_str_num_fixed", &ncrt_str_num_fixed);
-  add("ncrt_str", &ncrt_str);
-  add("ncrt_callee", &ncrt_callee);
-  add("ncrt_jump", &ncrt_jump);
-  add("ncrt_save_modal", &ncrt_save_modal);
-  add("ncrt_modal_trigger", &ncrt_modal_trigger);
-  add("ncrt_set_modal_hook", &ncrt_set_modal_hook);
-  add("ncrt_restore_modal", &ncrt_restore_modal);
-  add("ncrt_str_const", &ncrt_str_const);
-  add("ncrt_str_intern", &ncrt_str_intern);
-  add("ncrt_strfn", &ncrt_strfn);
-  add("ncrt_compare", &ncrt_compare);
-  add("ncrt_convert", &ncrt_convert);
-  add("ncrt_fill", &ncrt_fill);
-  add("ncrt_bad_index", &ncrt_bad_index);
-  unsigned n = 0;
-  const BuiltinInfo *tab = builtinTable(n);
-  for (unsigned i = 0; i < n; ++i)
-    if (tab[i].fn) add(tab[i].symbol, tab[i].fn);
+  for (const ncrt::RuntimeSymbol &s : ncrt::runtimeSymbols())
+    syms[jit.mangleAndIntern(s.name)] = {orc::ExecutorAddr::fromPtr(s.address),
+                                         JITSymbolFlags::Exported | JITSymbolFlags::Callable};
   return syms;
 }
 
@@ -164,13 +124,7 @@ static bool runEntry(orc::LLJIT &jit, CmdSink &sink, Diagnostics &diags, const E
     diags.error({}, "JIT: " + errorText(sym.takeError()));
     return false;
   }
-  auto *entry = sym->toPtr<int (*)(ncrt_ctx *)>();
-  ncrt_ctx rt(sink, diags, limits);
-  int status = entry(&rt);
-  // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
-  // error was reported.
-  if (status == NCRT_END) return !diags.hasErrors();
-  return status == NCRT_OK;
+  return ncrt::runEntry(sym->toPtr<ncrt_entry>(), sink, diags, limits);
 }
 
 bool runModule(const ir::Module &m, CmdSink &sink, Diagnostics &diags, const JitOptions &opts) {

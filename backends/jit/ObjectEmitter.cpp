@@ -1,10 +1,13 @@
 // AOT: the JIT's LLVM IR, optimised at O2 and compiled for the host into an object file whose
-// entry is `int ncc_program_main(ncrt_ctx *)`; link it with the ncc runtime (ncrt_*, builtins).
+// entry is `int ncc_program_main(ncrt_ctx *)` and which describes the program in
+// `ncc_program_info`; link it with the ncc runtime (ncrt_*, builtins) or run it with `ncc run`.
 #include "backends/jit/Codegen.h"
 #include "backends/jit/Jit.h"
 
 #include <fmt/format.h>
 
+#include <llvm/IR/Constants.h>
+#include <llvm/IR/GlobalVariable.h>
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/LegacyPassManager.h>
 #include <llvm/IR/Module.h>
@@ -15,7 +18,16 @@ namespace ncc::jit {
 
 using namespace llvm;
 
-bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags) {
+// The program description (runtime/ncrt.h ProgramInfo) as a constant the loader finds by name.
+static void addProgramInfo(Module &mod, ncrt::ProgramInfo info) {
+  info.abi = ncrt::abiFingerprint();
+  std::string bytes = ncrt::encodeProgramInfo(info);
+  Constant *data = ConstantDataArray::getRaw(bytes, bytes.size(), Type::getInt8Ty(mod.getContext()));
+  auto *gv = new GlobalVariable(mod, data->getType(), true, GlobalValue::ExternalLinkage, data, "ncc_program_info");
+  gv->setAlignment(Align(8));
+}
+
+bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info) {
   if (std::string why; !compilesQuickly(m, why)) {  // no engine to fall back to here
     diags.error({}, fmt::format("cannot compile ahead of time: {}, which takes LLVM minutes", why), "unsupported-code");
     return false;
@@ -25,6 +37,7 @@ bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags
   LLVMContext ctx;
   std::unique_ptr<Module> mod = buildHostModule(m, ctx, *tm, diags);
   if (!mod) return false;
+  addProgramInfo(*mod, info);
   optimizeModule(*mod, tm.get(), 2);
 
   SmallVector<char, 0> buf;
@@ -35,8 +48,10 @@ bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags
     return false;
   }
   pm.run(*mod);
+  std::string bytes(buf.data(), buf.size());
+  bytes += ncrt::objectTrailer(bytes);
   std::string err;
-  if (!writeFileAtomic(path, std::string_view(buf.data(), buf.size()), err)) {
+  if (!writeFileAtomic(path, bytes, err)) {
     diags.error({}, "cannot write '" + path + "': " + err);
     return false;
   }

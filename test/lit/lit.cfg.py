@@ -22,6 +22,7 @@ config.environment["PATH"] = os.pathsep.join([tools, llvm_bin, os.environ.get("P
 config.environment["NCC_CHECK_RULES"] = "1"
 config.substitutions.append(("%ncc", os.path.join(tools, "ncc")))
 config.substitutions.append(("%srcroot", src_root))
+config.substitutions.append(("%objroot", obj_root))
 config.substitutions.append(("%shared", os.path.normpath(os.path.join(src_root, "..", "shared"))))
 if os.path.isdir(os.path.join(src_root, "..", "shared", "spec")):
     config.available_features.add("shared")

@@ -1,12 +1,16 @@
 // ncc compile: stop after a stage and print it (NC IR, Motion IR, LLVM IR, object file);
 // ncc opt: run named passes on a program or on textual NC IR.
-#include "backends/jit/Jit.h"
 #include "passes/Pass.h"
+#include "utils/ncc/AotRun.h"
 #include "utils/ncc/Driver.h"
+#include "utils/ncc/ExeLink.h"
+#include "utils/ncc/JitLoader.h"
 
 #include <fmt/format.h>
 
+#include <cstdio>
 #include <sstream>
+#include <unistd.h>
 
 namespace ncc::driver {
 
@@ -19,6 +23,27 @@ std::vector<std::string> splitList(const std::string &s) {
     if (!item.empty()) out.push_back(item);
   return out;
 }
+// What an object carries so that it runs without its source (runtime/ncrt.h ProgramInfo).
+bool programInfo(Session &s, uint32_t program, ncrt::ProgramInfo &info) {
+  info.program = s.sm.name(program);
+  info.nccVersion = ncrt_version();
+  info.machineName = s.opts.machine;
+  if (!readMachineText(s.opts.machine, info.machineText)) {
+    s.diags.error({}, fmt::format("cannot read machine '{}'", s.opts.machine));
+    return false;
+  }
+  for (uint32_t f = 1; f <= s.sm.fileCount(); ++f) info.files.push_back({s.sm.name(f), ncrt::textHash(s.sm.text(f))});
+  return true;
+}
+
+// The object beside the executable, linked, then removed.
+bool emitExecutable(Session &s, const jit::JitApi &jit, const ir::Module &m, const ncrt::ProgramInfo &info,
+                    const std::string &out) {
+  std::string obj = out + ".ncc-" + std::to_string(getpid()) + ".o";
+  bool ok = jit.emitObject(m, obj, s.diags, info) && linkExecutable(obj, out, s.diags);
+  std::remove(obj.c_str());
+  return ok;
+}
 }  // namespace
 
 int cmdCompile(int argc, char **argv) {
@@ -27,20 +52,20 @@ int cmdCompile(int argc, char **argv) {
   po::options_description desc("ncc compile options");
   desc.add_options()
       ("file", po::value(&file)->required(), "program to compile")
-      ("emit", po::value(&emit)->required(), "what to produce: ir|motion|llvm|obj")
-      ("output,o", po::value(&out), "output file (default: standard output; required for obj)");
+      ("emit", po::value(&emit)->required(), "what to produce: ir|motion|llvm|obj|exe")
+      ("output,o", po::value(&out), "output file (default: standard output; required for obj and exe)");
   addCommonOptions(desc, s.opts);
   po::positional_options_description pos;
   pos.add("file", 1);
   po::variables_map vm;
-  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc compile FILE --emit=ir|motion|llvm|obj [-o OUT]");
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc compile FILE --emit=ir|motion|llvm|obj|exe [-o OUT]");
   if (rc >= 0) return rc;
-  if (emit != "ir" && emit != "motion" && emit != "llvm" && emit != "obj") {
-    std::fprintf(stderr, "ncc: error: unknown --emit '%s' (expected ir, motion, llvm or obj)\n", emit.c_str());
+  if (emit != "ir" && emit != "motion" && emit != "llvm" && emit != "obj" && emit != "exe") {
+    std::fprintf(stderr, "ncc: error: unknown --emit '%s' (expected ir, motion, llvm, obj or exe)\n", emit.c_str());
     return kExitUsage;
   }
-  if (emit == "obj" && (out.empty() || out == "-")) {
-    std::fprintf(stderr, "ncc: error: --emit=obj needs -o FILE\n");
+  if ((emit == "obj" || emit == "exe") && (out.empty() || out == "-")) {
+    std::fprintf(stderr, "ncc: error: --emit=%s needs -o FILE\n", emit.c_str());
     return kExitUsage;
   }
   uint32_t f = s.start(file);
@@ -58,12 +83,19 @@ int cmdCompile(int argc, char **argv) {
   if (!s.load(f, m)) return kExitErrors;
   if (emit == "ir") {
     writeOutput(s, out, ir::printModule(m, s.sm));
-  } else if (emit == "llvm") {
+    return s.exitCode();
+  }
+  const jit::JitApi *jit = jitBackend(s.diags);
+  if (!jit) return kExitErrors;
+  if (emit == "llvm") {
     std::string text;
-    if (!jit::emitLLVM(m, text, s.diags)) return kExitErrors;
+    if (!jit->emitLLVM(m, text, s.diags)) return kExitErrors;
     writeOutput(s, out, text);
   } else {
-    if (!jit::emitObject(m, out, s.diags)) return kExitErrors;
+    ncrt::ProgramInfo info;
+    if (!programInfo(s, f, info)) return kExitErrors;
+    if (emit == "obj" ? !jit->emitObject(m, out, s.diags, info) : !emitExecutable(s, *jit, m, info, out))
+      return kExitErrors;
   }
   return s.exitCode();
 }

@@ -1,6 +1,6 @@
 #include "utils/ncc/Driver.h"
 
-#include "backends/jit/Jit.h"
+#include "utils/ncc/JitLoader.h"
 #include "passes/Eval.h"
 #include "passes/Pass.h"
 #include "runtime/Executor.h"
@@ -15,56 +15,20 @@
 namespace ncc::driver {
 
 void addCommonOptions(po::options_description &desc, CommonOptions &o) {
+  addRunTimeOptions(desc, o);
   desc.add_options()
-      ("machine", po::value(&o.machine)->default_value("default"), "machine description: 'default' or a file")
       ("dialect", po::value(&o.dialect), "source dialect: iso|sinumerik|heidenhain|cldata|ncir|motion (default: from the file)")
       ("engine", po::value(&o.engine)->default_value("eval"), "execution engine: eval|jit")
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
       ("include,I", po::value(&o.includeDirs), "folder with subprogram files (after the program's own folder; repeatable)")
-      ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)")
-      ("probe-results", po::value(&o.probeResults), "where each probe move (G38.2-G38.5) stops: a probe-results file (docs/PROBING.md)")
-      ("max-loop-iterations", po::value(&o.limits.maxLoopIterations)->default_value(o.limits.maxLoopIterations),
-       "stop a loop after this many iterations")
-      ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
-      ("max-seconds", po::value(&o.limits.maxSeconds)->default_value(o.limits.maxSeconds), "run-time limit in seconds")
-      ("diagnostics-format", po::value(&o.diagnosticsFormat)->default_value("text"), "text|json")
-      ("Werror", po::bool_switch(&o.werror), "treat warnings as errors");
-}
-
-int parseArgs(int argc, char **argv, po::options_description &desc, po::positional_options_description &pos,
-              po::variables_map &vm, const char *usage) {
-  desc.add_options()("help,h", "show this help");
-  try {
-    // allow_long_disguise accepts -Werror as well as --Werror (compiler habit).
-    po::store(po::command_line_parser(argc, argv)
-                  .options(desc)
-                  .positional(pos)
-                  .style(po::command_line_style::default_style | po::command_line_style::allow_long_disguise)
-                  .run(),
-              vm);
-    if (vm.count("help")) {
-      std::cout << "usage: " << usage << "\n\n" << desc << "\n";
-      return kExitOk;
-    }
-    po::notify(vm);
-  } catch (const po::error &e) {
-    std::cerr << "ncc: error: " << e.what() << "\nusage: " << usage << "\n";
-    return kExitUsage;
-  }
-  return -1;
+      ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)");
 }
 
 bool Session::setUp() {
-  diags.setFormat(opts.diagnosticsFormat == "json" ? Diagnostics::Format::Json : Diagnostics::Format::Text);
-  diags.setWarningsAsErrors(opts.werror);
+  applyDiagnosticsOptions(opts, diags);
   if (!loadMachine(opts.machine, machine)) return false;
-  if (!opts.probeResults.empty()) {
-    uint32_t f = open(opts.probeResults);
-    auto results = std::make_shared<ProbeResults>();
-    if (!f || !parseProbeResults(sm, f, diags, *results)) return false;
-    machine.probeResults = std::move(results);
-  }
+  if (!loadProbeResults(opts, sm, diags, machine)) return false;
   if (opts.engine != "eval" && opts.engine != "jit") {
     diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));
     return false;
@@ -146,14 +110,18 @@ bool Session::load(uint32_t file, ir::Module &out) {
 
 bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blocks) {
   Executor exec(machine, sink, diags);
+  if (onExecutor) onExecutor(exec);
   bool ok;
   std::string why;
-  if (opts.engine == "jit" && !jit::compilesQuickly(m, why))
+  const jit::JitApi *jit = opts.engine == "jit" ? jitBackend(diags) : nullptr;
+  if (opts.engine == "jit" && !jit) return false;
+  if (jit && !jit->compilesQuickly(m, why))
     diags.note({}, fmt::format("running with the eval engine: {}, which the JIT compiles too slowly", why));
-  if (opts.engine == "jit" && why.empty()) {
+  if (jit && why.empty()) {
     jit::JitOptions jo;
     jo.limits = opts.limits;
-    ok = jit::runModule(m, exec, diags, jo);
+    ExecutorSink es(exec);
+    ok = jit->runModule(m, es, diags, jo);
   } else {
     ExecutorSink es(exec);
     Evaluator ev(es, diags, opts.limits);

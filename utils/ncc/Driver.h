@@ -8,31 +8,25 @@
 #include "ir/NCIR.h"
 #include "ir/ExecLimits.h"
 #include "runtime/Machine.h"
+#include "utils/ncc/RunOutput.h"
 
 #include <boost/program_options.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace ncc::driver {
 
-namespace po = boost::program_options;
-
-// Exit codes (README "Exit codes").
-constexpr int kExitOk = 0, kExitErrors = 1, kExitUsage = 2;
-
-struct CommonOptions {
-  std::string machine = "default";
+// The run-time options (machine, limits, diagnostics: utils/ncc/RunOutput.h), then those that
+// act when the program is read and compiled.
+struct CommonOptions : RunTimeOptions {
   std::string dialect;  // empty = detect
   std::string engine = "eval";
   std::string decimalMode;  // empty = the machine's
   std::vector<unsigned> blockDelete;
   std::vector<std::string> includeDirs;  // subprogram files, searched after the program's folder
   std::vector<std::string> linkFiles;    // programs/libraries linked in, each read by its own front end
-  std::string probeResults;              // what the simulated probe meets (docs/PROBING.md)
-  ExecLimits limits;
-  std::string diagnosticsFormat = "text";
-  bool werror = false;
 };
 
 // Adds the options every program-reading subcommand takes.
@@ -70,6 +64,8 @@ public:
   // `ncc lint` on one file: load (recovering after front-end errors), static rules, a run that
   // keeps going after executor errors. Diagnostics go to diags; false when it reported errors.
   bool lint(uint32_t file);
+  // Called with each executor a run creates (the progress line counts its blocks).
+  std::function<void(const Executor &)> onExecutor;
   // Blocks per streamed chunk (the fuzz targets use tiny chunks to reach the chunk boundaries).
   size_t streamChunkBlocks = 4096;
 
@@ -78,10 +74,6 @@ public:
 
 // Output helper: writes `text` to `path` atomically, or to stdout for "" / "-".
 bool writeOutput(Session &s, const std::string &path, const std::string &text);
-
-// Parses argv for a subcommand; prints help/usage errors. Returns -1 to continue, else an exit code.
-int parseArgs(int argc, char **argv, po::options_description &desc, po::positional_options_description &pos,
-              po::variables_map &vm, const char *usage);
 
 int cmdRun(int argc, char **argv);
 int cmdCompile(int argc, char **argv);

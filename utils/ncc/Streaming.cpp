@@ -35,6 +35,7 @@ bool Session::executeStreamed(uint32_t file, MotionSink &sink, uint64_t *blocks,
   // Front-end output is verified by the test suite; per-chunk checks cost ~15% here.
   bool verifyChunks = std::getenv("NCC_VERIFY_CHUNKS") != nullptr;
   Executor exec(machine, sink, diags);
+  if (onExecutor) onExecutor(exec);
   ExecutorSink es(exec);
   LeanSink lean(exec);
   Evaluator ev(es, diags, opts.limits);

@@ -1,4 +1,5 @@
 // ncc: check, translate and run CNC part programs. `ncc --help` lists the subcommands.
+#include "runtime/ncrt.h"
 #include "utils/ncc/Driver.h"
 
 #include <cstdio>
@@ -14,7 +15,7 @@ struct Subcommand {
 
 static const Subcommand kSubcommands[] = {
     {"run", cmdRun, "compile and execute a program, drive the trajectory core, print a summary or a trace"},
-    {"compile", cmdCompile, "stop after a stage and print it: --emit=ir|motion|llvm|obj"},
+    {"compile", cmdCompile, "stop after a stage and print it: --emit=ir|motion|llvm|obj, or link an executable: --emit=exe"},
     {"opt", cmdOpt, "run named passes on a program or textual NC IR (like LLVM's opt)"},
     {"translate", cmdTranslate, "emit the program for another controller (--to=iso|sinumerik), optionally --verify"},
     {"lint", cmdLint, "check programs and report diagnostics"},
@@ -41,7 +42,7 @@ int main(int argc, char **argv) {
     return kExitOk;
   }
   if (!std::strcmp(argv[1], "--version")) {
-    std::printf("ncc %s\n", NCC_VERSION);
+    std::printf("ncc %s\n", ncrt_version());
     return kExitOk;
   }
   for (auto &s : kSubcommands)
