@@ -149,6 +149,7 @@ private:
   bool parseStatement(std::string_view kw, const char *at, ParsedBlock &out);
   bool parseAssign(ParsedBlock &out);
   bool parseOWord(ParsedBlock &out, const char *at);
+  bool parsePlainWords(ParsedBlock &out);  // the fast path of parse (false: parseItems reads the block)
   bool parseItems(ParsedBlock &out);
   ir::ExprPtr parseBracket();   // [ expr ]
   ir::ExprPtr parseUnary();
