@@ -17,13 +17,14 @@ static inline bool letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' &
 // and address letters that cannot begin anything needing the whole program: one table lookup
 // skips them. Word: the letters of M and G codes and the initials of the statements (IF, DO,
 // END, GOTO, WHILE), which are looked at more closely.
-enum class ScanClass : uint8_t { Skip, Word, Comment, EndOfBlock };
+enum class ScanClass : uint8_t { Skip, Word, Comment, EndOfBlock, EndOfLine };
 struct ScanClasses {
   ScanClass c[256];
   constexpr ScanClasses() : c{} {
     for (const char *w = "DEGIMWdegimw"; *w; ++w) c[(unsigned char)*w] = ScanClass::Word;
     c[(unsigned char)'('] = ScanClass::Comment;
     c[(unsigned char)';'] = ScanClass::EndOfBlock;
+    c[(unsigned char)'\n'] = ScanClass::EndOfLine;
   }
 };
 static constexpr ScanClasses kScan;
@@ -71,59 +72,75 @@ static bool needsWholeProgram(const char *&q, const char *le) {
   return !point && (v == 65 || v == 66 || v == 5 || (v >= 70 && v <= 73));
 }
 
+static const char *lineEnd(const char *q, const char *end) {
+  const char *nl = static_cast<const char *>(std::memchr(q, '\n', (size_t)(end - q)));
+  return nl ? nl : end;
+}
+
+// The rest of a block from q (after its block number): null when it needs the whole program,
+// else where it ends (its newline, or the end of the text).
+static const char *scanBlock(const char *q, const char *end) {
+  for (const char *body = q;;) {
+    while (q < end && kScan.c[(unsigned char)*q] == ScanClass::Skip) ++q;
+    if (q >= end) return end;
+    switch (kScan.c[(unsigned char)*q]) {
+    case ScanClass::Skip: break;
+    case ScanClass::EndOfLine: return q;
+    case ScanClass::EndOfBlock: return lineEnd(q, end);
+    case ScanClass::Comment:  // to its closing parenthesis (they nest), or the end of the line
+      for (int depth = 1; ++q < end && *q != '\n';)
+        if (*q == '(') {
+          ++depth;
+        } else if (*q == ')' && --depth == 0) {
+          ++q;
+          break;
+        }
+      break;
+    case ScanClass::Word:
+      if (q > body && letter(q[-1])) {  // inside a word that starts with a skipped letter: no keyword
+        while (q + 1 < end && letter(q[1])) ++q;
+      } else if (needsWholeProgram(q, end)) {
+        return nullptr;
+      }
+      ++q;
+      break;
+    }
+  }
+}
+
 // One pass over the text before streaming: a construct that needs the whole program (control
 // flow, calls, subprograms) anywhere means the program is parsed as a whole. Being wrong towards
 // "not streamable" only costs speed and memory; the stream itself rejects what slips through.
 // (Folding this pass into the stream would need the sinks, the trace file and the diagnostics
 // printed so far to be taken back when a late construct, such as a subprogram after M30, turns
-// up.)
+// up.) The newline is one of the byte classes: lines are not searched for first.
 bool isoIsStreamable(std::string_view text, const SourceManager *sm, uint32_t file) {
-  const char *p = text.data(), *end = p + text.size();
+  const char *q = text.data(), *end = q + text.size();
   // A mapped file's scanned pages go as the scan moves on, or the whole text would be resident.
   constexpr size_t kReleaseEvery = 1 << 20;
-  const char *released = p;
-  if (text.size() >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;  // UTF-8 BOM
+  const char *released = q;
+  if (text.size() >= 3 && std::memcmp(q, "\xEF\xBB\xBF", 3) == 0) q += 3;  // UTF-8 BOM
   bool seenContent = false;  // a block before: a later O line is a subprogram
-  for (; p < end; p = p < end ? p + 1 : end) {
-    const char *le = static_cast<const char *>(std::memchr(p, '\n', (size_t)(end - p)));
-    if (!le) le = end;
-    const char *q = p;
-    p = le;  // the loop steps over the newline
-    while (q < le && (*q == ' ' || *q == '\t' || *q == '\r' || *q == '/')) ++q;
-    if (q < le && up(*q) == 'N') {  // skip the block number
+  while (q < end) {
+    // A line's start: blanks, block skip, the block number (none of these bytes is a newline).
+    while (q < end && (*q == ' ' || *q == '\t' || *q == '\r' || *q == '/')) ++q;
+    if (q < end && up(*q) == 'N') {
       ++q;
-      while (q < le && ((*q >= '0' && *q <= '9') || *q == ' ')) ++q;
+      while (q < end && ((*q >= '0' && *q <= '9') || *q == ' ')) ++q;
     }
-    if (q < le && (up(*q) == 'O' || *q == ':')) {  // O1234 or Fanuc :1234
+    if (q < end && (up(*q) == 'O' || *q == ':')) {  // O1234 or Fanuc :1234
       if (seenContent) return false;  // subprogram or RS274 o-word
       const char *r = q + 1;
-      while (r < le && ((*r >= '0' && *r <= '9') || *r == ' ' || *r == '\t' || *r == '\r')) ++r;
+      while (r < end && ((*r >= '0' && *r <= '9') || *r == ' ' || *r == '\t' || *r == '\r')) ++r;
       // o100 while ..., o<name> sub, o[#1] call, o#<sub> call: RS274NGC o-words.
-      if (r < le && (letter(*r) || *r == '<' || *r == '[' || *r == '#')) return false;
-      continue;
+      if (r < end && (letter(*r) || *r == '<' || *r == '[' || *r == '#')) return false;
+      q = lineEnd(q, end);
+    } else {
+      if (!seenContent) seenContent = lineHasContent(q, lineEnd(q, end));
+      if (!(q = scanBlock(q, end))) return false;
     }
-    if (!seenContent) seenContent = lineHasContent(q, le);
-    for (const char *body = q;;) {
-      while (q < le && kScan.c[(unsigned char)*q] == ScanClass::Skip) ++q;
-      if (q >= le) break;
-      switch (kScan.c[(unsigned char)*q]) {
-      case ScanClass::Skip: break;
-      case ScanClass::EndOfBlock: q = le; break;
-      case ScanClass::Comment:  // to its closing parenthesis (they nest), or the end of the line
-        for (int depth = 1; depth && ++q < le;) depth += *q == '(' ? 1 : *q == ')' ? -1 : 0;
-        q += q < le;
-        break;
-      case ScanClass::Word:
-        if (q > body && letter(q[-1])) {  // inside a word that starts with a skipped letter: no keyword
-          while (q + 1 < le && letter(q[1])) ++q;
-        } else if (needsWholeProgram(q, le)) {
-          return false;
-        }
-        ++q;
-        break;
-      }
-    }
-    if (sm && (size_t)(p - released) >= kReleaseEvery) sm->released(file, (size_t)((released = p) - text.data()));
+    if (q < end) ++q;  // the newline
+    if (sm && (size_t)(q - released) >= kReleaseEvery) sm->released(file, (size_t)((released = q) - text.data()));
   }
   return true;
 }
