@@ -151,6 +151,7 @@ bool BlockParser::parsePlainWords(ParsedBlock &out) {
   }
   p_ = q;
   out.content = true;
+  out.plain = true;
   return true;
 }
 
@@ -591,7 +592,8 @@ static void fanucSemantics(ParsedBlock &b) {
 }
 
 bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out) {
-  out.clear();
+  if (out.plain) out.clearPlain();
+  else out.clear();
   begin_ = p_ = line.data();
   end_ = begin_ + line.size();
   file_ = file;

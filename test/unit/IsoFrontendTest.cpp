@@ -235,6 +235,40 @@ TEST(IsoBlockParser, PlainWordsFastPathMatchesGeneralPath) {
   }
 }
 
+// One ParsedBlock reused line after line (as the stream does): a plain block after a general
+// one, a general one after a plain one, and a fast path given up half way leave nothing behind.
+TEST(IsoBlockParser, PlainAndGeneralBlocksAlternate) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser p(d, Flavour::Fanuc, 0);
+  ParsedBlock b;
+  ASSERT_TRUE(p.parse("N5 G1 X1 Y2 Z3", 1, 1, b));
+  EXPECT_TRUE(b.plain);
+  ASSERT_TRUE(p.parse("G1 X1 Y2 Z3 (c) #1=2", 1, 2, b));  // the fast path reads three words, then gives up
+  EXPECT_FALSE(b.plain);
+  EXPECT_EQ(b.n, -1);
+  EXPECT_EQ(b.words.size(), 4u);
+  EXPECT_EQ(b.comments.size(), 1u);
+  EXPECT_EQ(b.assigns.size(), 1u);
+  ASSERT_TRUE(p.parse("X4", 1, 3, b));
+  EXPECT_TRUE(b.plain);
+  EXPECT_EQ(b.words.size(), 1u);
+  EXPECT_TRUE(b.comments.empty());
+  EXPECT_TRUE(b.assigns.empty());
+  EXPECT_EQ(b.loc.line, 3u);
+  ASSERT_TRUE(p.parse("  ", 1, 4, b));
+  EXPECT_FALSE(b.content);
+  EXPECT_TRUE(b.words.empty());
+  ASSERT_TRUE(p.parse("IF [#1 EQ 2] GOTO 5", 1, 5, b));
+  EXPECT_EQ(b.stmt, StmtKind::IfGoto);
+  ASSERT_TRUE(p.parse("N7 Y1", 1, 6, b));
+  EXPECT_EQ(b.stmt, StmtKind::None);
+  EXPECT_FALSE(b.cond);
+  EXPECT_EQ(b.n, 7);
+  EXPECT_FALSE(d.hasErrors());
+}
+
 // Malformed plain-looking blocks leave the fast path before any diagnostic: the general path
 // reports them, with its message and column.
 TEST(IsoBlockParser, PlainWordsFastPathLeavesErrorsToTheGeneralPath) {
