@@ -30,6 +30,7 @@ bool isArc(ModeValue m) { return m == ModeValue::ArcCW || m == ModeValue::ArcCCW
 
 // Every word constant, no assignment, comment, corner or statement: checked on the parsed block.
 static bool plainWords(const ParsedBlock &b) {
+  if (b.plain) return true;  // the parser's fast path read nothing else
   if (!b.assigns.empty() || !b.comments.empty() || !b.corner.empty() || b.stmt != StmtKind::None ||
       b.programNumber >= 0)
     return false;
