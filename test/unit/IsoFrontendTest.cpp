@@ -235,6 +235,51 @@ TEST(IsoBlockParser, PlainWordsFastPathMatchesGeneralPath) {
   }
 }
 
+// The same comparison on random lines of words (a letter, blanks, a sign, digits with points,
+// now and then a stray byte): a line and its twin with a comment are accepted or refused alike,
+// and when accepted, read alike.
+TEST(IsoBlockParser, PlainWordsFastPathMatchesGeneralPathRandomly) {
+  std::mt19937 rng(66);
+  auto pick = [&](const std::string &from) { return from[rng() % from.size()]; };
+  auto randomLine = [&] {
+    std::string line;
+    for (int words = 1 + (int)(rng() % 5); words > 0; --words) {
+      line.push_back(pick("GXYZIJFNxgn"));
+      while (rng() % 4 == 0) line.push_back(pick(" \t"));
+      if (rng() % 3 == 0) line.push_back(pick("+-"));
+      while (rng() % 4 == 0) line.push_back(' ');
+      for (int n = (int)(rng() % 19); n > 0; --n) line.push_back(rng() % 8 == 0 ? '.' : pick("0123456789"));
+      while (rng() % 3 == 0) line.push_back(' ');
+      if (rng() % 40 == 0) line.push_back(pick("e?#;/"));
+    }
+    return line;
+  };
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser fanuc(d, Flavour::Fanuc, 0), rs274(d, Flavour::RS274, 0);
+  ParsedBlock fast, general;
+  int accepted = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const std::string line = randomLine();
+    BlockParser &p = i % 2 ? rs274 : fanuc;
+    bool a = p.parse(line, 1, 1, fast), b = p.parse(line + " (c)", 1, 1, general);
+    ASSERT_EQ(a, b) << line;
+    if (!a) continue;
+    ++accepted;
+    EXPECT_EQ(fast.n, general.n) << line;
+    ASSERT_EQ(fast.words.size(), general.words.size()) << line;
+    for (size_t k = 0; k < fast.words.size(); ++k) {
+      EXPECT_EQ(fast.words[k].letter, general.words[k].letter) << line;
+      EXPECT_EQ(fast.words[k].hasPoint, general.words[k].hasPoint) << line;
+      EXPECT_EQ(fast.words[k].value, general.words[k].value) << line;
+      EXPECT_EQ(std::signbit(fast.words[k].value), std::signbit(general.words[k].value)) << line;
+      EXPECT_EQ(fast.words[k].loc.col, general.words[k].loc.col) << line;
+    }
+  }
+  EXPECT_GT(accepted, 4000);  // the comparison is not vacuous
+}
+
 // One ParsedBlock reused line after line (as the stream does): a plain block after a general
 // one, a general one after a plain one, and a fast path given up half way leave nothing behind.
 TEST(IsoBlockParser, PlainAndGeneralBlocksAlternate) {
