@@ -219,8 +219,13 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
 
 bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
                         const CycleArgs *patternArgs, SourceLoc loc) {
-  Impl &x = *impl_;
-  x.loc = loc;
+  impl_->loc = loc;
+  return impl_->runLibraryCycle(cycle, args, pattern, patternArgs);
+}
+
+bool Executor::Impl::runLibraryCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
+                                     const CycleArgs *patternArgs) {
+  Impl &x = *this;
   std::string err;
   if (!checkCycleArgs(cycle, args, err) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
     return x.error(err, "cycle-invalid");
@@ -254,6 +259,57 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
     for (auto &[k, v] : patternArgs->num) begin.setParam(k, v);
   x.emit(begin);
   return x.runSteps(steps);
+}
+
+// The `cycle` op (docs/IR.md §5.8): the command's words are the entries' parameters by
+// position (passes/CycleOp.h); absent words are omitted arguments.
+static bool cycleArgsOf(const MachineCmd &c, const CycleDef &def, int first, CycleArgs &out, std::string &err) {
+  auto names = cycleParamNames(def);
+  for (size_t i = 0; i < names.size(); ++i) {
+    Word w = (Word)(first + (int)i);
+    if (!c.has(w)) continue;
+    if (!std::isfinite(c.get(w))) {
+      err = std::string(def.name) + " parameter " + std::string(names[i]) + ": invalid number";
+      return false;
+    }
+    out.num[std::string(names[i])] = c.get(w);
+  }
+  return true;
+}
+
+bool Executor::Impl::execCycle(const MachineCmd &c) {
+  const auto &lib = cycleLibrary();
+  const CycleDef *entry = c.sub ? &lib[c.sub - 1] : nullptr;
+  unsigned p = c.sub2 & kCyclePatternMask;
+  const CycleDef *pattern = p ? &lib[p - 1] : nullptr;
+  CycleArgs args, patternArgs;
+  std::string err;
+  if ((entry && !cycleArgsOf(c, *entry, 0, args, err)) ||
+      (pattern && !cycleArgsOf(c, *pattern, entry ? (int)cycleParamNames(*entry).size() : 0, patternArgs, err)))
+    return error(err, "bad-number");
+  switch (cycleAction(c.sub2)) {
+  case CycleAction::Define:
+  case CycleAction::Modal:
+    storedCycle = {entry, args, cycleAction(c.sub2) == CycleAction::Modal};
+    return true;
+  case CycleAction::Cancel: storedCycle.modal = false; return true;
+  case CycleAction::Trigger:
+    if (!storedCycle.modal) return true;
+    return runLibraryCycle(*storedCycle.def, storedCycle.args, nullptr, nullptr);
+  case CycleAction::Call:
+    if (!storedCycle.def)
+      return error(pattern ? std::string(pattern->name) + ": no cycle to run at its positions (define one first)"
+                           : "no cycle defined to call",
+                   "cycle-invalid");
+    return runLibraryCycle(*storedCycle.def, storedCycle.args, pattern, pattern ? &patternArgs : nullptr);
+  case CycleAction::Run: break;
+  }
+  return runLibraryCycle(*entry, args, pattern, pattern ? &patternArgs : nullptr);
+}
+
+bool Executor::Impl::modalCycleAfterMove(const MachineCmd &c) {
+  if (!storedCycle.modal || !(c.mask & kAxisMask)) return true;
+  return runLibraryCycle(*storedCycle.def, storedCycle.args, nullptr, nullptr);
 }
 
 }  // namespace ncc

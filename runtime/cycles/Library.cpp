@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace ncc {
 
@@ -498,14 +497,33 @@ const CycleDef *findCycle(std::string_view name) {
   return nullptr;
 }
 
+bool cycleSignature(std::string_view name, CycleSignature &out) {
+  const CycleDef *d = findCycle(name);
+  if (!d) return false;
+  out = {d->name, d->params, d->positions != nullptr};
+  return true;
+}
+
+std::vector<std::string_view> cycleParamNames(const CycleDef &def) {
+  std::vector<std::string_view> out;
+  std::string_view s = def.params;
+  for (size_t i = 0; i < s.size();) {
+    size_t j = s.find(' ', i);
+    if (j == std::string_view::npos) j = s.size();
+    if (j > i) out.push_back(s.substr(i, j - i));
+    i = j + 1;
+  }
+  return out;
+}
+
+int cycleParamIndex(const CycleDef &def, std::string_view name) {
+  auto ps = cycleParamNames(def);
+  auto it = std::find(ps.begin(), ps.end(), name);
+  return it == ps.end() ? -1 : (int)(it - ps.begin());
+}
+
 bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err) {
-  auto known = [&](const std::string &k) {
-    std::istringstream in(def.params);
-    std::string p;
-    while (in >> p)
-      if (p == k) return true;
-    return false;
-  };
+  auto known = [&](const std::string &k) { return cycleParamIndex(def, k) >= 0; };
   for (auto &[k, v] : args.num)
     if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
   for (auto &[k, v] : args.text)

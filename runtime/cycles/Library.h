@@ -4,6 +4,7 @@
 // entry by name (`sin.CYCLE83`, `hei.200`); the executor runs it (Executor::runCycle), and
 // `ncc cycle NAME K=V…` runs one alone. docs/CYCLES.md lists the entries.
 #pragma once
+#include "ir/CycleCatalog.h"
 #include "runtime/cycles/Hole.h"
 #include "runtime/cycles/Pattern.h"
 
@@ -60,6 +61,13 @@ const CycleDef *findCycle(std::string_view name);
 // Heidenhain CYCL DEF 200 + CYCL DEF 220 …).
 bool expandPattern(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef &hole, CycleArgs holeArgs,
                    const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
+
+// The front ends' view of an entry (ir/CycleCatalog.h; the driver passes this to them).
+bool cycleSignature(std::string_view name, CycleSignature &out);
+
+// The entry's positional parameter names, in order; the position of `name` among them (-1 none).
+std::vector<std::string_view> cycleParamNames(const CycleDef &def);
+int cycleParamIndex(const CycleDef &def, std::string_view name);
 
 // Checks args against the entry's parameter list: unknown names are errors.
 bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err);
