@@ -50,10 +50,6 @@ bool resolveCycleOp(const Op &op, CycleOpShape &out, std::string &err) {
       err = fmt::format("{} has no parameter {} (it has: {})", def->name, name, def->params);
       return false;
     }
-    if (a.value && a.value->kind == ExprKind::String) {
-      err = fmt::format("{} parameter {}: a string argument is not supported (the command carries numbers)", def->name, name);
-      return false;
-    }
   }
   return true;
 }

@@ -220,14 +220,14 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
 bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
                         const CycleArgs *patternArgs, SourceLoc loc) {
   impl_->loc = loc;
-  return impl_->runLibraryCycle(cycle, args, pattern, patternArgs);
+  return impl_->runLibraryCycle(&cycle, args, pattern, patternArgs);
 }
 
-bool Executor::Impl::runLibraryCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
+bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args, const CycleDef *pattern,
                                      const CycleArgs *patternArgs) {
   Impl &x = *this;
   std::string err;
-  if (!checkCycleArgs(cycle, args, err) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
+  if ((cyc && !checkCycleArgs(*cyc, args, err)) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
     return x.error(err, "cycle-invalid");
   if (x.st.units != ModeValue::MM) return x.error("library cycles run in mm (G21) only", "unsupported-code");
   if (!x.compForbids("Cannot use canned cycles with cutter compensation on")) return false;
@@ -242,21 +242,24 @@ bool Executor::Impl::runLibraryCycle(const CycleDef &cycle, const CycleArgs &arg
   ctx.speed = x.st.speed;
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
   std::vector<CycleStep> steps;
-  bool ok = pattern ? expandPattern(*pattern, *patternArgs, cycle, args, ctx, steps, err)
-                    : cycle.expand ? cycle.expand(args, ctx, steps, err)
-                                   : (err = std::string(cycle.name) + " is a position pattern: give it a cycle to run", false);
-  if (!ok) return x.error(std::string(pattern ? pattern->name : cycle.name) + ": " + err, "cycle-invalid");
+  const char *name = pattern ? pattern->name : cyc->name;
+  bool ok = pattern ? expandPattern(*pattern, *patternArgs, cyc, args, ctx, steps, err)
+                    : cyc->expand ? cyc->expand(args, ctx, steps, err)
+                                  : (err = "a position pattern: give it a cycle to run", false);
+  if (!ok) return x.error(std::string(name) + ": " + err, "cycle-invalid");
   for (const CycleStep &s : steps)
-    if ((s.kind == CycleStepKind::Feed || s.kind == CycleStepKind::Arc) && s.feed <= 0 && !x.checkFeed(cycle.name))
+    if ((s.kind == CycleStepKind::Feed || s.kind == CycleStepKind::Arc) && s.feed <= 0 && !x.checkFeed(name))
       return false;
   for (CycleStep &s : steps)  // program coordinates -> the offset frame
     for (int i = 0; i < 3; ++i) s.pos[i] += x.frameOffset(i), s.centre[i] += x.frameOffset(i);
-  // The bracket names the cycle (and the pattern it runs on) with the arguments as given.
+  // The bracket names the pattern and the cycle it runs ("sin.HOLES1+sin.CYCLE81"; a pattern
+  // alone only positions) with the arguments as given, the pattern's prefixed "p" (both may
+  // have a parameter of one name: _DMODE).
   MotionRecord begin = x.record(RecordKind::CycleBegin);
-  begin.text = pattern ? std::string(pattern->name) + "+" + cycle.name : cycle.name;
+  begin.text = pattern ? std::string(pattern->name) + (cyc ? std::string("+") + cyc->name : "") : cyc->name;
   for (auto &[k, v] : args.num) begin.setParam(k, v);
   if (pattern)
-    for (auto &[k, v] : patternArgs->num) begin.setParam(k, v);
+    for (auto &[k, v] : patternArgs->num) begin.setParam("p" + k, v);
   x.emit(begin);
   return x.runSteps(steps);
 }
@@ -292,24 +295,21 @@ bool Executor::Impl::execCycle(const MachineCmd &c) {
   case CycleAction::Modal:
     storedCycle = {entry, args, cycleAction(c.sub2) == CycleAction::Modal};
     return true;
-  case CycleAction::Cancel: storedCycle.modal = false; return true;
+  case CycleAction::Cancel: storedCycle = {}; return true;
   case CycleAction::Trigger:
     if (!storedCycle.modal) return true;
-    return runLibraryCycle(*storedCycle.def, storedCycle.args, nullptr, nullptr);
-  case CycleAction::Call:
-    if (!storedCycle.def)
-      return error(pattern ? std::string(pattern->name) + ": no cycle to run at its positions (define one first)"
-                           : "no cycle defined to call",
-                   "cycle-invalid");
-    return runLibraryCycle(*storedCycle.def, storedCycle.args, pattern, pattern ? &patternArgs : nullptr);
+    return runLibraryCycle(storedCycle.def, storedCycle.args, nullptr, nullptr);
+  case CycleAction::Call:  // a pattern without a stored cycle only positions (Sinumerik)
+    if (!storedCycle.def && !pattern) return error("no cycle defined to call", "cycle-invalid");
+    return runLibraryCycle(storedCycle.def, storedCycle.args, pattern, pattern ? &patternArgs : nullptr);
   case CycleAction::Run: break;
   }
-  return runLibraryCycle(*entry, args, pattern, pattern ? &patternArgs : nullptr);
+  return runLibraryCycle(entry, args, pattern, pattern ? &patternArgs : nullptr);
 }
 
 bool Executor::Impl::modalCycleAfterMove(const MachineCmd &c) {
   if (!storedCycle.modal || !(c.mask & kAxisMask)) return true;
-  return runLibraryCycle(*storedCycle.def, storedCycle.args, nullptr, nullptr);
+  return runLibraryCycle(storedCycle.def, storedCycle.args, nullptr, nullptr);
 }
 
 }  // namespace ncc

@@ -428,8 +428,8 @@ struct Executor::Impl {
   bool runSteps(const std::vector<CycleStep> &steps);
   // --- library cycles of the `cycle` op (ExecutorCycle.cpp, docs/IR.md §5.8) ---
   bool execCycle(const MachineCmd &c);
-  bool runLibraryCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
-                       const CycleArgs *patternArgs);  // Executor::runCycle at `loc`
+  bool runLibraryCycle(const CycleDef *cycle, const CycleArgs &args, const CycleDef *pattern,
+                       const CycleArgs *patternArgs);  // Executor::runCycle at `loc`; a pattern alone positions
   // After a move with axis words: the modal cycle there (Sinumerik MCALL).
   bool modalCycleAfterMove(const MachineCmd &c);
   struct StoredCycle {

@@ -531,12 +531,13 @@ bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err
   return true;
 }
 
-bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef &hole, CycleArgs ha,
+bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef *hole, CycleArgs ha,
                    const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  if (!pattern.positions || !hole.expand)
-    return fail(err, std::string(pattern.name) + " with " + hole.name + ": a position pattern runs a machining cycle");
+  if (!pattern.positions || (hole && !hole->expand))
+    return fail(err, std::string(pattern.name) + " with " + hole->name + ": a position pattern runs a machining cycle");
   bool hei = std::string_view(pattern.name).substr(0, 4) == "hei.";
-  if (hei != (std::string_view(hole.name).substr(0, 4) == "hei."))
+  if (!hole && hei) return fail(err, std::string(pattern.name) + " needs a cycle to run at its positions");
+  if (hole && hei != (std::string_view(hole->name).substr(0, 4) == "hei."))
     return fail(err, "a pattern runs the cycles of its own controller");
   std::vector<PlanePoint> pts;
   if (!pattern.positions(pa, pts, err)) return false;
@@ -561,10 +562,12 @@ bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef 
     CycleStep to;  // rapid in the plane at the current level
     to.pos = here, to.pos[a1] = pts[i][0], to.pos[a2] = pts[i][1];
     out.push_back(to);
+    here = to.pos;
+    if (!hole) continue;  // Sinumerik: without a modal cycle the pattern only positions
     CycleContext at = ctx;
     at.position = to.pos;
     size_t first = out.size();
-    if (!hole.expand(ha, at, out, err)) return false;
+    if (!hole->expand(ha, at, out, err)) return false;
     // The last retract of the hole goes to the level between holes (Heidenhain Q301); the last
     // hole retracts as the cycle says.
     if (hei && i + 1 < pts.size())

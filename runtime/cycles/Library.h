@@ -58,8 +58,8 @@ const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 
 // A position pattern with the hole cycle run at each position (Sinumerik MCALL + HOLES1,
-// Heidenhain CYCL DEF 200 + CYCL DEF 220 …).
-bool expandPattern(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef &hole, CycleArgs holeArgs,
+// Heidenhain CYCL DEF 200 + CYCL DEF 220 …); without a hole (Sinumerik only) rapids to each.
+bool expandPattern(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef *hole, CycleArgs holeArgs,
                    const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
 
 // The front ends' view of an entry (ir/CycleCatalog.h; the driver passes this to them).
