@@ -260,6 +260,13 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
   for (auto &[k, v] : args.num) begin.setParam(k, v);
   if (pattern)
     for (auto &[k, v] : patternArgs->num) begin.setParam("p" + k, v);
+  // Machine minus program position (mx my mz, each when not 0) under a pure translation, else
+  // frame=1: an emitter writing the call back shifts the entry's absolute positions
+  // (CycleDef::coords) by it.
+  if (x.pf.linear || x.rotated()) begin.setParam("frame", 1);
+  else
+    for (int i = 0; i < 3; ++i)
+      if (double m = x.st.position[i] - here[i]; m != 0) begin.setParam(std::string("m") + (char)('x' + i), m);
   x.emit(begin);
   return x.runSteps(steps);
 }

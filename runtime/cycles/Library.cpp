@@ -445,22 +445,24 @@ bool hei221(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) 
   return true;
 }
 
+constexpr const char *kDrillCoords = "RTP:n RFP:n DP:n";  // the Sinumerik drilling cycles' planes
+
 const CycleDef kHoleEntries[] = {
-    {"sin.CYCLE81", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE", "Sinumerik drilling, centring", sinCycle81, nullptr},
+    {"sin.CYCLE81", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE", "Sinumerik drilling, centring", sinCycle81, nullptr, kDrillCoords},
     {"sin.CYCLE82", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE _VARI S_ZA S_FA S_ZD S_FD",
-     "Sinumerik drilling, counterboring", sinCycle82, nullptr},
+     "Sinumerik drilling, counterboring", sinCycle82, nullptr, kDrillCoords},
     {"sin.CYCLE83",
      "RTP RFP SDIS DP DPR FDEP FDPR _DAM DTB DTS FRF VARI _AXN _MDEP _VRT _DTD _DIS1 _GMODE _DMODE _AMODE",
-     "Sinumerik deep-hole drilling", sinCycle83, nullptr},
-    {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr},
+     "Sinumerik deep-hole drilling", sinCycle83, nullptr, "RTP:n RFP:n DP:n FDEP:n"},
+    {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr, kDrillCoords},
     {"sin.CYCLE86", "RTP RFP SDIS DP DPR DTB SDIR RPA RPO RPAP POSS _GMODE _DMODE _AMODE",
-     "Sinumerik boring with oriented stop and lift-off", sinCycle86, nullptr},
+     "Sinumerik boring with oriented stop and lift-off", sinCycle86, nullptr, kDrillCoords},
     {"sin.CYCLE840", "RTP RFP SDIS DP DPR DTB SDR SDAC ENC MPIT PIT _AXN _PITA _TECHNO _PITM _PTAB _PTABA _GMODE _DMODE _AMODE",
-     "Sinumerik tapping with a compensating chuck", sinCycle840, nullptr},
+     "Sinumerik tapping with a compensating chuck", sinCycle840, nullptr, kDrillCoords},
     {"sin.HOLES1", "SPCA SPCO STA1 FDIS DBH NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik row of holes", nullptr,
-     sinHoles1},
+     sinHoles1, "SPCA:u SPCO:v"},
     {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
-     sinHoles2},
+     sinHoles2, "CPA:u CPO:v"},
     {"hei.200", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395", "Heidenhain drilling", hei200, nullptr},
     {"hei.201", "Q200 Q201 Q206 Q211 Q208 Q203 Q204", "Heidenhain reaming", hei201, nullptr},
     {"hei.203", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395",

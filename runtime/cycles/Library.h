@@ -46,6 +46,11 @@ struct CycleDef {
   bool (*expand)(const CycleArgs &args, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
   // A position pattern: the positions in the plane, in the order they are visited.
   bool (*positions)(const CycleArgs &args, std::vector<PlanePoint> &out, std::string &err);
+  // The parameters that are absolute positions, "NAME:axis …" (n the drilling axis, u v the
+  // plane's first and second), valid while no mode parameter (a name with MODE, _AXN) is set:
+  // an emitter that writes the call back in another frame shifts them (docs/EMIT.md "Cycles").
+  // Null: the call cannot be written back (its expanded moves are).
+  const char *coords = nullptr;
 };
 
 // The entries of each file of the library (Library.cpp: holes and patterns, ClearingEntries.cpp:
