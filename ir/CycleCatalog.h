@@ -10,6 +10,7 @@ namespace ncc {
 struct CycleSignature {
   const char *name = nullptr;    // "sin.CYCLE81"
   const char *params = nullptr;  // the positional parameter names, space-separated
+  const char *strings = nullptr; // the STRING parameters (the others take numbers)
   bool pattern = false;          // a position pattern (HOLES1), not a machining cycle
 };
 // False when the library has no entry of that name.

@@ -73,7 +73,8 @@ enum class CmdKind : uint8_t {
   Contour,      // sub: ContourAction; sub2: ContourUse; the consumer's parameters in U W R (the
                 //   region pocket's in its own words, kPocketParams)
   Cycle,        // a cycle-library entry (docs/IR.md §5.8): sub the machining entry's index in
-                //   cycleLibrary() + 1 (0 none: the stored one), sub2 the position pattern's index
+                //   cycleLibrary() + 1 (0 none: the stored one) in its low byte, the word of the one
+                //   STRING argument + 1 in its high byte (its value: text), sub2 the position pattern's index
                 //   + 1 (0 none) | CycleAction << 12; the words are positional, not letters: word i
                 //   is parameter i of the machining entry, the pattern's follow (kCycleArgSlots)
   Count
@@ -122,6 +123,7 @@ enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepea
 enum class CycleAction : uint8_t { Run, Define, Modal, Call, Cancel, Trigger };
 constexpr unsigned kCycleActionShift = 12;
 constexpr uint16_t kCyclePatternMask = (1u << kCycleActionShift) - 1;
+constexpr unsigned kCycleTextShift = 8;  // sub: entry index + 1 | (STRING argument's word + 1) << 8
 constexpr int kCycleArgSlots = kWords;  // the words of a command: parameters of entry and pattern together
 inline CycleAction cycleAction(uint16_t sub2) { return (CycleAction)(sub2 >> kCycleActionShift); }
 

@@ -451,7 +451,8 @@ private:
     if ((op.kind == OpKind::Assign && key == "value") || (op.kind == OpKind::Declare && key == "init") ||
         (op.kind == OpKind::Return && key == "value") ||
         ((op.kind == OpKind::Call || op.kind == OpKind::ModalCall) && key.rfind("a.", 0) == 0 &&
-         !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
+         !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')) ||
+        (op.kind == OpKind::Cycle && (key.rfind("a.", 0) == 0 || key.rfind("p.", 0) == 0)))  // sema: numbers or a STRING
       return Ctx::Any;
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
     if ((op.kind == OpKind::Move && (key == "ic" || key == "ac")) || (op.kind == OpKind::Home && key == "ic"))

@@ -191,7 +191,13 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
       bool ofPattern = a.key.rfind("p.", 0) == 0;
       if (!ofPattern && a.key.rfind("a.", 0) != 0) continue;
       int i = cycleParamIndex(ofPattern ? *shape.pattern : *shape.entry, std::string_view(a.key).substr(2));
-      addWord(cycleArgWord(shape, ofPattern, i), a.value.get());
+      Word w = cycleArgWord(shape, ofPattern, i);
+      if ((int)w == shape.textWord) {  // the constant STRING argument: the command's text
+        c.text = a.value->str.c_str();
+        c.sub |= (uint16_t)((shape.textWord + 1) << kCycleTextShift);
+      } else {
+        addWord(w, a.value.get());
+      }
     }
     return true;
   }
@@ -329,7 +335,8 @@ Op cmdToOp(const MachineCmd &c) {
     auto &lib = cycleLibrary();
     CycleOpShape shape;
     shape.action = cycleAction(c.sub2);
-    if (c.sub) shape.entry = &lib[c.sub - 1];
+    if (c.sub & 0xff) shape.entry = &lib[(c.sub & 0xff) - 1];
+    const int textWord = (c.sub >> kCycleTextShift) - 1;
     if (c.sub2 & kCyclePatternMask) shape.pattern = &lib[(c.sub2 & kCyclePatternMask) - 1];
     if (shape.action != CycleAction::Run) op.set("action", Expr::symbol(opSymbolName(op.kind, "action", (uint8_t)shape.action)));
     for (const CycleDef *d : {shape.entry, shape.pattern}) {
@@ -338,8 +345,9 @@ Op cmdToOp(const MachineCmd &c) {
       op.set(ofPattern ? "pattern" : "entry", Expr::string(d->name));
       auto names = cycleParamNames(*d);
       for (size_t i = 0; i < names.size(); ++i)
-        if (Word w = cycleArgWord(shape, ofPattern, (int)i); c.has(w))
-          op.set((ofPattern ? "p." : "a.") + std::string(names[i]), real(c.get(w)));
+        if (Word w = cycleArgWord(shape, ofPattern, (int)i); c.has(w) || (int)w == textWord)
+          op.set((ofPattern ? "p." : "a.") + std::string(names[i]),
+                 (int)w == textWord ? Expr::string(c.text ? c.text : "") : real(c.get(w)));
     }
     return op;
   }

@@ -46,9 +46,22 @@ bool resolveCycleOp(const Op &op, CycleOpShape &out, std::string &err) {
     const CycleDef *def = ofPattern ? out.pattern : out.entry;
     std::string_view name = std::string_view(a.key).substr(2);
     if (!def) continue;  // the verifier reports an argument without its entry
-    if (cycleParamIndex(*def, name) < 0) {
+    int index = cycleParamIndex(*def, name);
+    if (index < 0) {
       err = fmt::format("{} has no parameter {} (it has: {})", def->name, name, def->params);
       return false;
+    }
+    if (a.value && a.value->kind == ExprKind::String) {
+      std::string_view strings = def->strings ? def->strings : "";
+      if (strings.find(name) == std::string_view::npos) {
+        err = fmt::format("{} parameter {} takes a number, not a string", def->name, name);
+        return false;
+      }
+      if (out.textWord >= 0) {
+        err = fmt::format("{}: only one STRING argument is supported ({} is the second)", def->name, name);
+        return false;
+      }
+      out.textWord = (int)cycleArgWord(out, ofPattern, index);
     }
   }
   return true;

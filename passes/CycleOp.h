@@ -15,6 +15,9 @@ struct CycleOpShape {
   CycleAction action = CycleAction::Run;
   const CycleDef *entry = nullptr;    // the machining cycle (run, define, modal)
   const CycleDef *pattern = nullptr;  // the position pattern (run, call)
+  // The one STRING argument (a constant: HOLES1's _HIDE) travels as the command's text, its
+  // word's index + 1 in the high byte of sub; -1 none.
+  int textWord = -1;
 };
 
 // Resolves the op's entries and checks each a.<param> / p.<param> against them; false with the

@@ -114,8 +114,10 @@ struct Sema {
         std::string err;
         if (!resolveCycleOp(op, shape, err)) diags.error(op.loc, err);
         for (auto &a : op.args)
-          if (a.value && (a.key.rfind("a.", 0) == 0 || a.key.rfind("p.", 0) == 0) && !numeric(a.value->type))
-            diags.error(a.value->loc.line ? a.value->loc : op.loc, fmt::format("cycle argument '{}' must be a number", a.key.substr(2)));
+          if (a.value && (a.key.rfind("a.", 0) == 0 || a.key.rfind("p.", 0) == 0) && !numeric(a.value->type) &&
+              a.value->kind != ExprKind::String)
+            diags.error(a.value->loc.line ? a.value->loc : op.loc,
+                        fmt::format("cycle argument '{}' must be a number or a constant string", a.key.substr(2)));
       }
       if (op.kind == OpKind::Assign || op.kind == OpKind::Declare) {  // stores the declared type refuses
         bool assign = op.kind == OpKind::Assign;

@@ -257,6 +257,9 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
   // have a parameter of one name: _DMODE).
   MotionRecord begin = x.record(RecordKind::CycleBegin);
   begin.text = pattern ? std::string(pattern->name) + (cyc ? std::string("+") + cyc->name : "") : cyc->name;
+  for (auto &[k, v] : args.text) begin.text += "|" + k + "=" + v;  // STRING arguments after the name
+  if (pattern)
+    for (auto &[k, v] : patternArgs->text) begin.text += "|p" + k + "=" + v;
   for (auto &[k, v] : args.num) begin.setParam(k, v);
   if (pattern)
     for (auto &[k, v] : patternArgs->num) begin.setParam("p" + k, v);
@@ -275,8 +278,10 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
 // position (passes/CycleOp.h); absent words are omitted arguments.
 static bool cycleArgsOf(const MachineCmd &c, const CycleDef &def, int first, CycleArgs &out, std::string &err) {
   auto names = cycleParamNames(def);
+  const int textWord = (c.sub >> kCycleTextShift) - 1;  // the STRING argument's word
   for (size_t i = 0; i < names.size(); ++i) {
     Word w = (Word)(first + (int)i);
+    if ((int)w == textWord) out.text[std::string(names[i])] = c.text ? c.text : "";
     if (!c.has(w)) continue;
     if (!std::isfinite(c.get(w))) {
       err = std::string(def.name) + " parameter " + std::string(names[i]) + ": invalid number";
@@ -289,7 +294,7 @@ static bool cycleArgsOf(const MachineCmd &c, const CycleDef &def, int first, Cyc
 
 bool Executor::Impl::execCycle(const MachineCmd &c) {
   const auto &lib = cycleLibrary();
-  const CycleDef *entry = c.sub ? &lib[c.sub - 1] : nullptr;
+  const CycleDef *entry = c.sub & 0xff ? &lib[(c.sub & 0xff) - 1] : nullptr;
   unsigned p = c.sub2 & kCyclePatternMask;
   const CycleDef *pattern = p ? &lib[p - 1] : nullptr;
   CycleArgs args, patternArgs;

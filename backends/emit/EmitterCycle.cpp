@@ -33,12 +33,30 @@ char coordRole(const CycleDef &d, std::string_view name) {
 // call cannot be written back exactly.
 bool Emitter::cycleArguments(const MotionRecord &r, const CycleDef &d, const char *prefix, std::string &out) {
   if (!d.coords) return false;
+  // STRING arguments follow the name in the bracket's text: "sin.HOLES1+sin.CYCLE81|p_HIDE=2,4".
+  auto textArg = [&](std::string_view key, std::string &value) {
+    std::string_view t = r.text;
+    for (size_t bar = t.find('|'); bar != std::string_view::npos; bar = t.find('|', bar + 1)) {
+      std::string_view item = t.substr(bar + 1, t.find('|', bar + 1) - bar - 1);
+      if (item.substr(0, key.size()) == key && item.size() > key.size() && item[key.size()] == '=') {
+        value = std::string(item.substr(key.size() + 1));
+        return true;
+      }
+    }
+    return false;
+  };
   const ncc::PlaneAxes ax = ncc::planeAxes(plane_);
   std::vector<std::string> args;
   size_t used = 0;
   for (std::string_view name : cycleParamNames(d)) {
     const double *v = r.param(prefix + std::string(name));
     args.emplace_back();
+    if (std::string text; textArg(prefix + std::string(name), text)) {
+      if (text.find('"') != std::string::npos) return false;
+      args.back() = "\"" + text + "\"";
+      used = args.size();
+      continue;
+    }
     if (!v) continue;
     if (modeParam(name) && *v != 0) return false;
     double value = *v;
@@ -62,7 +80,7 @@ bool Emitter::cycleArguments(const MotionRecord &r, const CycleDef &d, const cha
 bool Emitter::nativeCycle(const MotionRecord &r) {
   // The call runs where the tool is: the written program must know that position.
   if (st_.target != Target::Sinumerik || r.param("frame") || !posKnown_) return false;
-  std::string_view text = r.text;
+  std::string_view text = std::string_view(r.text).substr(0, r.text.find('|'));
   size_t plus = text.find('+');
   const CycleDef *pattern = plus != std::string_view::npos || (findCycle(text) && findCycle(text)->positions)
                                 ? findCycle(text.substr(0, plus)) : nullptr;

@@ -37,10 +37,16 @@ bool BlockParser::libraryCycle(bool modal, const std::string &name, const CycleS
   else if (modal) c.set("action", Expr::symbol("modal", l));
   if (!tok().is("(")) return fail(tok(), fmt::format("{} needs its parameters in parentheses", name));
   if (!argumentList(name, params, lib.pattern ? "p." : "a.", c)) return false;
-  for (auto &a : c.args)  // the command carries numbers: a string parameter (_HIDE …) is refused
-    if (a.key[1] == '.' && a.value && a.value->kind == ir::ExprKind::String)
-      return fail(at, fmt::format("{} parameter {}: string arguments are not supported yet", name, a.key.substr(2)),
+  int strings = 0;  // the command carries one constant string (HOLES1's _HIDE "1,3")
+  for (auto &a : c.args) {
+    if (a.key[1] != '.' || !a.value || a.value->kind != ir::ExprKind::String) continue;
+    std::string param = a.key.substr(2);
+    if (std::string_view(lib.strings).find(param) == std::string_view::npos)
+      return fail(at, fmt::format("{} parameter {} takes a number, not a string", name, param));
+    if (++strings > 1)
+      return fail(at, fmt::format("{} parameter {}: only one string argument is supported", name, param),
                   "unsupported-code");
+  }
   if (!atEnd() && tok().kind == Tok::Name && tok().text[0] == 'P')
     return fail(tok(), fmt::format("{} is a cycle: it takes no repetition count", name));
   if (modal) {

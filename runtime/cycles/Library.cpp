@@ -460,9 +460,9 @@ const CycleDef kHoleEntries[] = {
     {"sin.CYCLE840", "RTP RFP SDIS DP DPR DTB SDR SDAC ENC MPIT PIT _AXN _PITA _TECHNO _PITM _PTAB _PTABA _GMODE _DMODE _AMODE",
      "Sinumerik tapping with a compensating chuck", sinCycle840, nullptr, kDrillCoords},
     {"sin.HOLES1", "SPCA SPCO STA1 FDIS DBH NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik row of holes", nullptr,
-     sinHoles1, "SPCA:u SPCO:v"},
+     sinHoles1, "SPCA:u SPCO:v", "_HIDE"},
     {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
-     sinHoles2, "CPA:u CPO:v"},
+     sinHoles2, "CPA:u CPO:v", "_HIDE"},
     {"hei.200", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395", "Heidenhain drilling", hei200, nullptr},
     {"hei.201", "Q200 Q201 Q206 Q211 Q208 Q203 Q204", "Heidenhain reaming", hei201, nullptr},
     {"hei.203", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395",
@@ -502,7 +502,7 @@ const CycleDef *findCycle(std::string_view name) {
 bool cycleSignature(std::string_view name, CycleSignature &out) {
   const CycleDef *d = findCycle(name);
   if (!d) return false;
-  out = {d->name, d->params, d->positions != nullptr};
+  out = {d->name, d->params, d->strings ? d->strings : "", d->positions != nullptr};
   return true;
 }
 
@@ -528,8 +528,12 @@ bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err
   auto known = [&](const std::string &k) { return cycleParamIndex(def, k) >= 0; };
   for (auto &[k, v] : args.num)
     if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
-  for (auto &[k, v] : args.text)
+  for (auto &[k, v] : args.text) {
     if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
+    std::string_view strings = def.strings ? def.strings : "";
+    if (strings.find(k) == std::string_view::npos)
+      return fail(err, std::string(def.name) + " parameter " + k + " takes a number, not a string");
+  }
   return true;
 }
 

@@ -51,6 +51,8 @@ struct CycleDef {
   // an emitter that writes the call back in another frame shifts them (docs/EMIT.md "Cycles").
   // Null: the call cannot be written back (its expanded moves are).
   const char *coords = nullptr;
+  // The STRING parameters, space-separated (HOLES1's _HIDE); the others take numbers.
+  const char *strings = nullptr;
 };
 
 // The entries of each file of the library (Library.cpp: holes and patterns, ClearingEntries.cpp:
