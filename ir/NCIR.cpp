@@ -198,6 +198,7 @@ static const OpInfo kOps[] = {
     {OpKind::Contour, "contour", 0, 0, "action",
      "use U W R type depth infeed surface clearance height stepover overlap side_allowance floor_allowance direction "
      "plunge_feed feed"},
+    {OpKind::Cycle, "cycle", 0, 0, "", "*"},
     {OpKind::Declare, "declare", 0, 0, "var type", "init len"},
     {OpKind::Assign, "assign", 0, 0, "target value", ""},
     {OpKind::If, "if", 1, 2, "cond", ""},

@@ -574,6 +574,7 @@ bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
+  if (c.kind == CmdKind::Cycle) return x.execCycle(c);  // its words are parameters, not axes
   // Never let NaN or infinity reach positions: a diagnostic instead.
   for (WordMask m = c.mask; m; m &= m - 1) {  // only the words present (all 64 bits)
     int i = __builtin_ctzll(m);
@@ -683,7 +684,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.emit(r);  // with compensation on it waits for the pending move
     return true;
   }
-  case CmdKind::Move: return x.execMove(c);
+  case CmdKind::Move: return x.execMove(c) && x.modalCycleAfterMove(c);
   case CmdKind::Home: x.curBlockFrame = true; return x.execHome(c);
   case CmdKind::Contour: return x.execContour(c);
   case CmdKind::MachineMove: return x.execMachineMove(c);

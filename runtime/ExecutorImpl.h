@@ -4,6 +4,7 @@
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Frame.h"
+#include "runtime/cycles/Library.h"
 #include "runtime/cycles/Region.h"
 #include "runtime/cycles/Thread.h"
 #include "runtime/Executor.h"
@@ -425,6 +426,17 @@ struct Executor::Impl {
   bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.
   bool runSteps(const std::vector<CycleStep> &steps);
+  // --- library cycles of the `cycle` op (ExecutorCycle.cpp, docs/IR.md §5.8) ---
+  bool execCycle(const MachineCmd &c);
+  bool runLibraryCycle(const CycleDef *cycle, const CycleArgs &args, const CycleDef *pattern,
+                       const CycleArgs *patternArgs);  // Executor::runCycle at `loc`; a pattern alone positions
+  // After a move with axis words: the modal cycle there (Sinumerik MCALL).
+  bool modalCycleAfterMove(const MachineCmd &c);
+  struct StoredCycle {
+    const CycleDef *def = nullptr;  // action=define / modal; null: none
+    CycleArgs args;
+    bool modal = false;
+  } storedCycle;
 };
 
 }  // namespace ncc

@@ -83,7 +83,9 @@ public:
 
   // The signature of a subprogram: loads and parses its file on first use. Null (with an
   // error at `loc` naming the paths tried) when it cannot be found.
-  const Signature *callee(const std::string &name, SourceLoc loc);
+  // A standard cycle without a subprogram of its name that the cycle library has: null without an
+  // error, its entry in *libCycle.
+  const Signature *callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle = nullptr);
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
     diags.error(loc, std::move(msg), rule);
     ok = false;
@@ -137,6 +139,11 @@ private:
   bool def();
   bool proc();
   bool callStatement(bool modal);
+  bool argumentList(const std::string &name, const std::vector<std::string> &params, const char *prefix, ir::Op &c);
+  // A standard cycle from the library (Cycles.cpp): `NAME(args)` runs it here (a position
+  // pattern: the modal cycle at each position), `MCALL NAME(args)` makes it modal.
+  bool libraryCycle(bool modal, const std::string &name, const CycleSignature &lib, const Token &at);
+  ir::Op cycleCancel(SourceLoc l) const;
   bool gotoStatement(const std::string &kw, std::vector<ir::Op> &into);
   bool ifStatement();
   bool caseStatement();

@@ -148,15 +148,17 @@ bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
   return true;
 }
 
-// NAME, NAME(args), NAME P3, L10 P=2, CALL "NAME", MCALL NAME(args), MCALL.
+// NAME, NAME(args), NAME P3, L10 P=2, CALL "NAME", MCALL NAME(args), MCALL. A Siemens standard
+// cycle the program has no subprogram for runs from the cycle library (Cycles.cpp).
 bool BlockParser::callStatement(bool modal) {
   const Token &first = tok();
   SourceLoc l = loc(first);
   bool viaCall = first.isName("CALL");
   if (modal || viaCall) ++i_;
   Op c(modal ? OpKind::ModalCall : OpKind::Call, l);
-  if (modal && atEnd()) {  // MCALL alone: cancel
+  if (modal && atEnd()) {  // MCALL alone: cancel (a subprogram's or a cycle's)
     post_.push_back(std::move(c));
+    post_.push_back(cycleCancel(l));
     return true;
   }
   const Token &t = tok();
@@ -174,38 +176,18 @@ bool BlockParser::callStatement(bool modal) {
   }
   if (name.size() < 2 || name[0] == '$')
     return fail(t, fmt::format("unknown address or name '{}'", name), "unknown-code");
-  const Signature *sig = f_.pp.callee(name, loc(t));
+  CycleSignature lib;
+  const Signature *sig = f_.pp.callee(name, loc(t), &lib);
+  if (!sig && lib.name) return libraryCycle(modal, name, lib, t);
   if (!sig) {
     failed_ = true;
     return false;
   }
   c.set("callee", Expr::string(name));
   if (!modal) c.set("frame", Expr::symbol("new"));
-  if (tok().is("(")) {
-    ++i_;
-    size_t pos = 0;
-    while (!tok().is(")")) {
-      if (tok().is(",")) {  // an omitted argument: the default
-        ++pos;
-        ++i_;
-        continue;
-      }
-      if (pos >= sig->params.size())
-        return fail(tok(), fmt::format("too many arguments for {} ({} parameter{})", name, sig->params.size(),
-                                       sig->params.size() == 1 ? "" : "s"));
-      ExprPtr e = expr(0);
-      if (!e) return false;
-      c.set("a." + sig->params[pos].name, std::move(e));
-      ++pos;
-      if (tok().is(",")) {
-        ++i_;
-        if (tok().is(")")) break;
-      } else if (!tok().is(")")) {
-        return fail(tok(), "expected ',' or ')' in the argument list");
-      }
-    }
-    ++i_;
-  }
+  std::vector<std::string> params;
+  for (auto &p : sig->params) params.push_back(p.name);
+  if (!argumentList(name, params, "a.", c)) return false;
   if (tok().kind == Tok::Name && tok().text[0] == 'P' && (tok().digitsAt == 1 || (tok().text == "P" && peek().is("=")))) {
     if (tok().digitsAt == 1) {
       c.set("count", Expr::number(tok().num, ir::Type::Int));
@@ -217,7 +199,39 @@ bool BlockParser::callStatement(bool modal) {
       c.set("count", std::move(n));
     }
   }
+  if (modal) post_.push_back(cycleCancel(l));  // the last modal call replaces a modal cycle
   post_.push_back(std::move(c));
+  return true;
+}
+
+// `(a, , c)` after a called name, if there: argument i to key prefix + params[i]; an empty
+// position is an omitted argument.
+bool BlockParser::argumentList(const std::string &name, const std::vector<std::string> &params, const char *prefix,
+                               Op &c) {
+  if (!tok().is("(")) return true;
+  ++i_;
+  size_t pos = 0;
+  while (!tok().is(")")) {
+    if (tok().is(",")) {  // an omitted argument: the default
+      ++pos;
+      ++i_;
+      continue;
+    }
+    if (pos >= params.size())
+      return fail(tok(), fmt::format("too many arguments for {} ({} parameter{})", name, params.size(),
+                                     params.size() == 1 ? "" : "s"));
+    ExprPtr e = expr(0);
+    if (!e) return false;
+    c.set(prefix + params[pos], std::move(e));
+    ++pos;
+    if (tok().is(",")) {
+      ++i_;
+      if (tok().is(")")) break;
+    } else if (!tok().is(")")) {
+      return fail(tok(), "expected ',' or ')' in the argument list");
+    }
+  }
+  ++i_;
   return true;
 }
 
