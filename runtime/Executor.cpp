@@ -177,6 +177,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
         return error("a G5.2 NURBS must be ended with G5.3 before another motion (rs274 would drop its control points)",
                      "spline-invalid");
       if (v == ModeValue::NurbsEnd && !nurbsEnd()) return false;
+      if (sinSpline.open && v != sinSpline.kind && !sinSplineEnd()) return false;
       if (v == ModeValue::SplineCubic || v == ModeValue::SplineQuadratic) splineReturn = st.motion;
       if ((v == ModeValue::ThreadMulti || isPeckMotion(v)) && st.motion != v) threadReturn = st.motion;  // one-shot
       if (v != st.motion) turnSet = false;  // a new G90/G94 run takes its words afresh
@@ -198,6 +199,8 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
       break;
     }
     case ModeGroup::Units: st.units = v; break;
+    case ModeGroup::SplineStart: st.splineStart = v; break;
+    case ModeGroup::SplineEnd: st.splineEnd = v; break;
     case ModeGroup::Distance: st.distance = v; break;
     case ModeGroup::ArcDistance: st.arcDistance = v; break;
     case ModeGroup::Retract: st.retract = v; break;
@@ -523,6 +526,7 @@ bool Executor::Impl::execStop(const MachineCmd &c) {
     if (nurbs.open)
       return error("a G5.2 NURBS must be ended with G5.3 before the program ends (rs274 would drop its control points)",
                    "spline-invalid");
+    if (sinSpline.open && !sinSplineEnd()) return false;
     cornerFlush("no move follows");
     comp.stop();  // flush the pending compensated move
     compExit = false;
@@ -811,6 +815,7 @@ bool Executor::restoreModes(SourceLoc loc) {
 
 bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
+  if (ranToEnd && x.sinSpline.open && !x.sinSplineEnd()) return false;
   if (ranToEnd) x.cornerFlush("no move follows");
   x.comp.stop();
   if (x.capture.active) {  // its records never reached the sinks

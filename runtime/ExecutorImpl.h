@@ -184,7 +184,8 @@ struct Executor::Impl {
   void emit(const MotionRecord &r) {
     if (isMoveRecord(r.kind) || r.kind == RecordKind::Dwell)
       threadChain = r.kind == RecordKind::Thread;
-    if (corner.active) corner.held.push_back(r);
+    if (sinSpline.open && !sinSpline.flushing) sinSpline.held.push_back({sinSpline.segs.size(), r});
+    else if (corner.active) corner.held.push_back(r);
     else if (!(queuedBehindMotion(r.kind) && comp.hold(toCompPlane(r, compOut.plane)))) sink.record(r);
   }
   // What rs274 queues behind a move that cutter compensation still holds (its interp_queue: feed,
@@ -355,6 +356,29 @@ struct Executor::Impl {
     FrameMatrix frame{};  // the program -> machine transform and units when the curve began
     ModeValue units = ModeValue::MM;
   } nurbs;
+  // Sinumerik ASPLINE/BSPLINE/CSPLINE (ExecutorSinSpline.cpp): each move block adds a point
+  // (machine coordinates); the curve needs the points after it, so it is emitted when the spline
+  // ends (another motion mode, the program's end), with the records of the blocks in between
+  // (`held`, after the segment they followed) in their place.
+  struct SinSpline {
+    bool open = false, flushing = false;
+    ModeValue kind = ModeValue::SplineC;
+    int degree = 3;                      // BSPLINE SD
+    std::vector<AxisVec> points;         // the start first
+    std::vector<double> weights;         // BSPLINE PW, one per point
+    struct Seg {
+      int64_t blockNumber;
+      SourceLoc loc;
+      double feed;
+      bool exactStop;
+    };
+    std::vector<Seg> segs;               // the block of each point after the start
+    std::vector<std::pair<size_t, MotionRecord>> held;  // (segments before it, record)
+    Vec3 startTangent{};                 // BTAN: the direction the path had at the start
+    bool hasStartTangent = false;
+  } sinSpline;
+  bool sinSplinePoint(const MachineCmd &c);
+  bool sinSplineEnd();
   bool cycle(const MachineCmd &c);
   // --- lathe single cycles G90/G94 (ExecutorTurning.cpp) ---
   bool turnCycle(const MachineCmd &c);

@@ -129,6 +129,9 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::SplineCubic:
   case ModeValue::SplineQuadratic: return bezier(c, st.motion == ModeValue::SplineCubic);
   case ModeValue::Nurbs: return nurbsPoint(c);
+  case ModeValue::SplineAkima:
+  case ModeValue::SplineB:
+  case ModeValue::SplineC: return sinSplinePoint(c);
   case ModeValue::TurnAlongZ:
   case ModeValue::TurnAlongX:
   case ModeValue::ThreadSingle: return turnCycle(c);

@@ -190,6 +190,7 @@ bool BlockParser::lowerWords() {
       key = "P";
       w.value = Expr::binary(ir::OpCode::Add, std::move(w.value), Expr::number(1, ir::Type::Int), w.loc);
       break;
+    case Addr::SplinePoint: key = w.addr == "PW" ? "weight" : "degree"; break;
     case Addr::Corner:  // CHF the chamfer's length, CHR its legs along the two moves
       key = w.addr == "CHF" ? "chamfer" : w.addr == "CHR" ? "chamfer_leg" : "round";
       break;

@@ -126,7 +126,7 @@ bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
       return fail(t, fmt::format("{} takes axis words only (and must stand alone in its block)", g.code->name));
     std::string axis = t.text.substr(0, 1);
     ExprPtr v;
-    if (t.digitsAt == 1) {
+    if (t.digitsAt == 1 && t.text.size() > 1) {  // Z45; Z alone is followed by =, a sign or a value
       v = Expr::number(t.num, t.isInt ? ir::Type::Int : ir::Type::Real, loc(t));
       ++i_;
     } else if (peek().is("=")) {
