@@ -48,6 +48,7 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::SplineAkima, ModeGroup::Motion, "spline_akima"},
     {ModeValue::SplineB, ModeGroup::Motion, "spline_b"},
     {ModeValue::SplineC, ModeGroup::Motion, "spline_c"},
+    {ModeValue::Poly, ModeGroup::Motion, "poly"},
     {ModeValue::XY, ModeGroup::Plane, "xy"},
     {ModeValue::ZX, ModeGroup::Plane, "zx"},
     {ModeValue::YZ, ModeGroup::Plane, "yz"},

@@ -46,6 +46,8 @@ enum class ModeValue : uint8_t {
   // Sinumerik splines (runtime/ExecutorSinSpline.cpp): ASPLINE (Akima), BSPLINE, CSPLINE (cubic);
   // modal, each move block adds a point; the curve is emitted when the spline ends.
   SplineAkima, SplineB, SplineC,
+  // Sinumerik POLY: each block a polynomial (or rational) curve of degree <= 5 (ExecutorSinSpline.cpp)
+  Poly,
   // Plane
   XY, ZX, YZ,
   // Units

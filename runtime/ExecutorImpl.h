@@ -377,6 +377,14 @@ struct Executor::Impl {
     Vec3 startTangent{};                 // BTAN: the direction the path had at the start
     bool hasStartTangent = false;
   } sinSpline;
+  // POLY: the coefficients a_k of X Y Z and b_k of the denominator (k = 2..5, program units)
+  // of the block being executed, cleared by its move.
+  struct Poly {
+    std::array<std::array<double, 4>, 6> a{};  // [k][axis]: X Y Z, the denominator at 3
+    bool any = false;
+  } poly;
+  bool polyCoefficients(const MachineCmd &c);
+  bool polyMove(const MachineCmd &c);
   bool sinSplinePoint(const MachineCmd &c);
   bool sinSplineEnd();
   bool cycle(const MachineCmd &c);

@@ -100,6 +100,8 @@ bool Executor::Impl::sinSplinePoint(const MachineCmd &c) {
   }
   if (c.has(Word::SplineWeight) && st.motion != ModeValue::SplineB)
     return error(fmt::format("PW= (a point's weight) is for BSPLINE, not {}", name), "spline-invalid");
+  if (c.has(Word::PolyInterval))
+    return error(fmt::format("PL= (knot distances) with {} is not simulated: ncc takes uniform knots", name), "unsupported-code");
   if (c.has(Word::SplineDegree) && st.motion != ModeValue::SplineB)
     return error(fmt::format("SD= (the spline's degree) is for BSPLINE, not {}", name), "spline-invalid");
   if (!(c.mask & kAxisMask)) {
@@ -217,6 +219,96 @@ bool Executor::Impl::sinSplineEnd() {
   }
   sinSpline.flushing = false;
   return ok;
+}
+
+}  // namespace ncc
+
+namespace ncc {
+
+// POLY (manual L11043-L11259): per axis f(p) = a0 + a1·p + a2·p² + … + a5·p⁵ on 0 <= p <= PL with
+// a0 the start and a1 such that f(PL) is the programmed end; PO[]=(…) a common denominator
+// d(p) = 1 + d1·p + d2·p² … (its first value d(PL), d1 from it the same way) that divides the
+// geometry axes, the numerator then ending on end · d(PL). The curve is the Bezier curve of the
+// polynomials over t = p / PL (rational with the denominator's Bernstein coefficients as weights),
+// computed in program coordinates and mapped to the machine point by point.
+bool Executor::Impl::polyCoefficients(const MachineCmd &c) {
+  if (st.motion != ModeValue::Poly) return true;  // without POLY the axes move linearly (L11205)
+  const double k = c.get(Word::PolyIndex);
+  if (k != std::floor(k) || k < 2 || k > 5) return error("a POLY coefficient index is 2 to 5", "spline-invalid");
+  for (int i = 3; i < kAxes; ++i)
+    if (c.has((Word)i)) return error(fmt::format("POLY on {} is not simulated (X, Y and Z only)", kWordKeys[i]), "unsupported-code");
+  for (int i = 0; i < 3; ++i)
+    if (c.has((Word)i)) poly.a[(int)k][i] = c.get((Word)i);
+  if (c.has(Word::PolyDenominator)) poly.a[(int)k][3] = c.get(Word::PolyDenominator);
+  poly.any = true;
+  return true;
+}
+
+bool Executor::Impl::polyMove(const MachineCmd &c) {
+  const Poly pc = poly;
+  poly = Poly{};
+  if (!(c.mask & kAxisMask)) return true;
+  const bool den = c.has(Word::PolyDenominator);
+  int m = 1;
+  for (int k = 2; k <= 5; ++k)
+    for (int i = 0; i < 4; ++i)
+      if (pc.a[k][i] != 0) m = std::max(m, k);
+  if (m == 1 && !den) {  // every axis linear: as G1 (L11108)
+    if (!checkFeed("POLY")) return false;
+    return moveTo(RecordKind::Linear, target(c));
+  }
+  if (st.distance == ModeValue::Incremental || c.sub)
+    return error("POLY with polynomials under G91 or IC() is not simulated (write absolute end points)", "unsupported-code");
+  if (st.units == ModeValue::Inch) return error("POLY with polynomials in inch (G700) is not simulated", "unsupported-code");
+  if (!compForbids("POLY under cutter radius compensation (G41/G42) is not simulated")) return false;
+  if (st.feedMode == ModeValue::InverseTime) return error("POLY in inverse time (G93) is not simulated", "unsupported-code");
+  if (!checkFeed("POLY")) return false;
+  const double pl = c.has(Word::PolyInterval) ? c.get(Word::PolyInterval) : 1.0;
+  if (!(pl > 0)) return error("PL (the parameter interval of POLY) must be positive", "spline-invalid");
+  const AxisVec endMachine = target(c);
+  for (int i = 3; i < kAxes; ++i)
+    if (endMachine[i] != st.position[i])
+      return error(fmt::format("POLY moves X, Y and Z only along its curve; {} is not simulated", kWordKeys[i]),
+                   "unsupported-code");
+  AxisVec start = programPosition(), end = start;
+  {
+    AxisVec f = linearFrame() ? frameIn(endMachine) : endMachine;
+    for (int i = 0; i < 3; ++i) end[i] = f[i] - frameOffset(i);
+  }
+  // Power coefficients over t = p / PL: c[k] = a_k · PL^k; index 3 the denominator.
+  double cf[6][4] = {};
+  const double de = den ? c.get(Word::PolyDenominator) : 1.0;
+  for (int i = 0; i < 4; ++i) {
+    double a0 = i < 3 ? start[i] : 1.0, ae = i < 3 ? end[i] * de : de, rest = 0;
+    for (int k = 2; k <= 5; ++k) cf[k][i] = pc.a[k][i] * std::pow(pl, k), rest += cf[k][i];
+    cf[0][i] = a0;
+    cf[1][i] = ae - a0 - rest;
+  }
+  // Bernstein coefficients of degree m: b_j = Σ_{k<=j} C(j,k) / C(m,k) · c_k.
+  auto binom = [](int n, int k) {
+    double r = 1;
+    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+    return r;
+  };
+  std::vector<std::array<double, 3>> pts;
+  std::vector<double> weights;
+  for (int j = 0; j <= m; ++j) {
+    double b[4] = {};
+    for (int k = 0; k <= j; ++k)
+      for (int i = 0; i < 4; ++i) b[i] += binom(j, k) / binom(m, k) * cf[k][i];
+    if (!(b[3] > 0))
+      return error("the POLY denominator gives a Bezier weight that is not positive: not simulated", "unsupported-code");
+    AxisVec p = start;
+    for (int i = 0; i < 3; ++i) p[i] = b[i] / b[3] + frameOffset(i);
+    if (j == m) p = endMachine;  // the end exactly as programmed
+    else if (linearFrame()) p = frameOut(p);
+    if (j == 0) p = st.position;
+    pts.push_back({p[0], p[1], p[2]});
+    weights.push_back(b[3]);
+  }
+  bool weighted = false;
+  for (double w : weights) weighted = weighted || w != 1;
+  return emitSpline(pts, m + 1, weighted ? weights : std::vector<double>{});
 }
 
 }  // namespace ncc

@@ -161,9 +161,15 @@ bool BlockParser::lowerWords() {
     out.push_back(std::move(o));
   }
   // The move: every word left.
+  ExprPtr denominator;
+  if (!poly_.empty() && !lowerPoly(out, denominator)) return false;
   Op mv(OpKind::Move, bl);
   std::string ac, ic;
   bool any = false, path = false;
+  if (denominator) {
+    mv.set("denominator", std::move(denominator));
+    any = true;
+  }
   if (word("AP") || word("RP")) {
     if (!lowerPolarMove(mv, ac, out)) return false;
     any = path = true;
@@ -190,7 +196,7 @@ bool BlockParser::lowerWords() {
       key = "P";
       w.value = Expr::binary(ir::OpCode::Add, std::move(w.value), Expr::number(1, ir::Type::Int), w.loc);
       break;
-    case Addr::SplinePoint: key = w.addr == "PW" ? "weight" : "degree"; break;
+    case Addr::SplinePoint: key = w.addr == "PW" ? "weight" : w.addr == "SD" ? "degree" : "interval"; break;
     case Addr::Corner:  // CHF the chamfer's length, CHR its legs along the two moves
       key = w.addr == "CHF" ? "chamfer" : w.addr == "CHR" ? "chamfer_leg" : "round";
       break;
