@@ -382,7 +382,9 @@ struct Executor::Impl {
   struct Poly {
     std::array<std::array<double, 4>, 6> a{};  // [k][axis]: X Y Z, the denominator at 3
     bool any = false;
+    bool outside = false;  // polynomials of a block without POLY active: its move must be G1
   } poly;
+  bool polyOutsideMove();
   bool polyCoefficients(const MachineCmd &c);
   bool polyMove(const MachineCmd &c);
   bool sinSplinePoint(const MachineCmd &c);

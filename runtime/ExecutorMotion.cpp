@@ -112,6 +112,7 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   const bool turnCorner = st.motion == ModeValue::Linear && (c.has(Word::I) || c.has(Word::K) || c.has(Word::R));
   if ((c.has(Word::Chamfer) || c.has(Word::ChamferLeg) || c.has(Word::Round) || turnCorner) && !cornerRequest(c)) return false;
   if (c.has(Word::PolyIndex)) return polyCoefficients(c);
+  if (poly.outside && !polyOutsideMove()) return false;
   switch (st.motion) {
   case ModeValue::Rapid:
     if (!(c.mask & kTargetMask)) return true;

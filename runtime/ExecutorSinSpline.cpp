@@ -232,7 +232,10 @@ namespace ncc {
 // polynomials over t = p / PL (rational with the denominator's Bernstein coefficients as weights),
 // computed in program coordinates and mapped to the machine point by point.
 bool Executor::Impl::polyCoefficients(const MachineCmd &c) {
-  if (st.motion != ModeValue::Poly) return true;  // without POLY the axes move linearly (L11205)
+  if (st.motion != ModeValue::Poly) {  // without POLY the axes move linearly as G1 (L11205)
+    poly.outside = true;
+    return true;
+  }
   const double k = c.get(Word::PolyIndex);
   if (k != std::floor(k) || k < 2 || k > 5) return error("a POLY coefficient index is 2 to 5", "spline-invalid");
   for (int i = 3; i < kAxes; ++i)
@@ -242,6 +245,15 @@ bool Executor::Impl::polyCoefficients(const MachineCmd &c) {
   if (c.has(Word::PolyDenominator)) poly.a[(int)k][3] = c.get(Word::PolyDenominator);
   poly.any = true;
   return true;
+}
+
+bool Executor::Impl::polyOutsideMove() {
+  poly.outside = false;
+  if (st.motion == ModeValue::Linear) return true;
+  return error(fmt::format("PO[…] without POLY moves linearly (G1) to its end points (L11205); under {} that is not "
+                           "simulated",
+                           modeValueInfo(st.motion).name),
+               "unsupported-code");
 }
 
 bool Executor::Impl::polyMove(const MachineCmd &c) {

@@ -270,7 +270,7 @@ bool BlockParser::lowerPoly(ir::Region &out, ExprPtr &denominator) {
     Op o(OpKind::Move, bl);
     for (auto &p : poly_)
       if (p.values.size() >= (size_t)k) o.set(p.axis.empty() ? "denominator" : p.axis, std::move(p.values[k - 1]));
-    if (o.args.empty()) continue;
+    if (o.args.empty() && k > 2) continue;  // a2 always: it tells the executor the block has polynomials
     o.set("poly_index", Expr::number(k, ir::Type::Int));
     out.push_back(std::move(o));
   }
