@@ -190,7 +190,7 @@ static const OpInfo kOps[] = {
     {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L H E polar_r polar_a chamfer chamfer_leg round via_x via_y via_z opening weight degree poly_index interval denominator ic ac"},
     {OpKind::Home, "home", 0, 0, "ref", "X Y Z A B C U V W ic"},
     {OpKind::MachineMove, "machine_move", 0, 0, "rapid", "X Y Z A B C U V W"},
-    {OpKind::ToolLength, "tool_length", 0, 0, "", "h form X Y Z A B C U V W"},
+    {OpKind::ToolLength, "tool_length", 0, 0, "", "h D form X Y Z A B C U V W"},
     {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d d_default"},
     {OpKind::WorkOffset, "work_offset", 0, 0, "index", ""},
     {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C U V W R"},

@@ -133,6 +133,9 @@ struct Executor::Impl {
   std::vector<CycleStep> steps;
 
   int cutterD = 0;
+  // Sinumerik D<n>: the cutting edge of the spindle tool whose length is active (0: the ISO
+  // offset number toolLengthH) and whose radius G41/G42 without D took (compEdge).
+  int activeEdge = 0, compEdge = 0;
   // Cutter radius compensation: moves go through `comp` while it is active (radius > 0);
   // compExit marks the move after G40, which starts from the compensated position.
   CompPlaneSink compOut;  // declared before comp, which writes to it
@@ -279,6 +282,7 @@ struct Executor::Impl {
   std::map<std::pair<int, int>, ToolEdge> edgeEdits;
   ToolWrite toolWrite = ToolWrite::OnSelect;
   int offsetEdge(int t) const;          // tool t's edge 1 or only edge
+  ToolData edgeData(int t, int d) const;  // edge d of tool t with the program's edits and wear
   bool hasEdge(int t, int d) const;     // t a valid tool with edge d
   ToolEdge edgeOf(int t, int d) const;  // geometry and wear, edited or the machine's
   // Stores an edit; false with the problem and its rule id.

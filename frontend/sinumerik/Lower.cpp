@@ -109,13 +109,14 @@ bool BlockParser::lowerWords() {
       out.push_back(Op(OpKind::ToolChange, l));
       changed = true;
     }
-  // D: the cutting edge of the active tool. The executor keeps edge 1 of the tool in the
-  // spindle (MD20270: D1 after a tool change); D0 cancels; other edges are refused.
+  // D: the cutting edge of the tool in the spindle (MD20270: D1 after a tool change), its length
+  // and the radius of G41/G42; D0 cancels.
   if (ExprPtr d = take("D")) {
-    if (d->kind != ir::ExprKind::Number || (d->num != 0 && d->num != 1))
-      return fail(t_[0], "D other than D0 and D1 (further cutting edges) is not simulated", "unsupported-code");
+    if (d->kind != ir::ExprKind::Number || d->num < 0 || d->num != std::floor(d->num))
+      return fail(t_[0], "D takes a constant edge number (D0, D1, D2 …)", "unsupported-code");
     Op o(OpKind::ToolLength, bl);
     if (d->num == 0) o.set("h", Expr::number(0, ir::Type::Int));
+    else if (d->num > 1) o.set("D", std::move(d));
     out.push_back(std::move(o));
   } else if (changed) {
     out.push_back(Op(OpKind::ToolLength, bl));
