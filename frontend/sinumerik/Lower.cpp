@@ -77,11 +77,28 @@ bool BlockParser::lowerWords() {
     for (auto &w : words_)
       if (!w.addr.empty() && w.addr != "F" && w.addr != "S")
         return fail(t_[0], fmt::format("G4 must stand alone in its block (found {})", w.addr), "dwell-with-motion");
-    if (word("S")) return fail(t_[0], "G4 S (a dwell in spindle revolutions) is not simulated", "unsupported-code");
-    ExprPtr f = take("F");
-    if (!f) return fail(t_[0], "G4 needs F<seconds>", "missing-word");
+    if (word("F") && word("S")) return fail(t_[0], "G4 takes F<seconds> or S<revolutions>, not both", "dwell-with-motion");
     Op d(OpKind::Dwell, bl);
-    d.set("seconds", std::move(f));
+    if (ExprPtr s = take("S")) {
+      // S revolutions of the spindle at its programmed speed: 60·S / rpm seconds. A stopped
+      // spindle never turns them: an alarm, not a guessed time.
+      auto sys = [&](const char *n) { return Expr::var(ir::VarSpace::System, n, nullptr, bl); };
+      Op stopped(OpKind::If, bl);
+      stopped.set("cond", Expr::binary(ir::OpCode::Or, Expr::unary(ir::OpCode::Not, sys("_spindle_on"), bl),
+                                       Expr::binary(ir::OpCode::Le, sys("_rpm"), Expr::number(0, ir::Type::Int), bl), bl));
+      stopped.regions.emplace_back();
+      Op alarm(OpKind::Message, bl);
+      alarm.set("text", Expr::string("G4 S (a dwell in spindle revolutions) needs the spindle turning (S and M3/M4)", bl));
+      alarm.set("kind", Expr::symbol("abort"));
+      stopped.regions[0].push_back(std::move(alarm));
+      out.push_back(std::move(stopped));
+      d.set("seconds", Expr::binary(ir::OpCode::Div, Expr::binary(ir::OpCode::Mul, Expr::number(60, ir::Type::Int), std::move(s), bl),
+                                    sys("_rpm"), bl));
+    } else if (ExprPtr f = take("F")) {
+      d.set("seconds", std::move(f));
+    } else {
+      return fail(t_[0], "G4 needs F<seconds> or S<revolutions>", "missing-word");
+    }
     out.push_back(std::move(d));
   }
   bool hadFeedOrSpeed = word("F") || word("S");
