@@ -24,7 +24,12 @@ namespace ncc {
 enum class Word : uint8_t {
   X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, PolarR, PolarA, Chamfer, Round,
   ViaX, ViaY, ViaZ, Depth, Infeed, Surface, Clearance, Height, Stepover, Overlap, SideAllowance,
-  FloorAllowance, Direction, PlungeFeed, RoughFeed, Opening, ChamferLeg, Count
+  FloorAllowance, Direction, PlungeFeed, RoughFeed, Opening, ChamferLeg,
+  SplineWeight, SplineDegree,  // Sinumerik BSPLINE PW= (a point's weight) and SD= (the degree)
+  // Sinumerik POLY: a move with PolyIndex k carries the coefficients a_k (X Y Z) and b_k (weight)
+  // of the block's polynomials; the block's move then has the end point and PL (PolyInterval).
+  PolyIndex, PolyInterval, PolyDenominator,
+  Count
 };
 constexpr int kWords = (int)Word::Count;
 static_assert(kWords <= 64, "MachineCmd::mask has 64 bits");
@@ -32,7 +37,7 @@ constexpr const char *kWordKeys[kWords] = {
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R", "P", "Q", "L", "F", "S", "T", "H", "D", "E",
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
-    "plunge_feed", "feed", "opening", "chamfer_leg"};
+    "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator"};
 // A word's address letter (the key's one character), 0 for a named word.
 constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;

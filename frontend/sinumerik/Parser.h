@@ -117,6 +117,14 @@ private:
     SourceLoc loc;
   };
   std::vector<Word> words_;
+  // POLY polynomials PO[X]=(end, a2 … a5), X=PO(…), PO[]=(…)/PO(…) (axis empty: the denominator)
+  struct PolyTerm {
+    std::string axis;
+    std::vector<ir::ExprPtr> values;
+  };
+  std::vector<PolyTerm> poly_;
+  bool polyTerm(std::string axis, const Token &at);
+  bool lowerPoly(ir::Region &out, ir::ExprPtr &denominator);
   std::vector<std::pair<GInfo, SourceLoc>> gcodes_;
   std::vector<std::pair<int, SourceLoc>> mcodes_;
   std::vector<ir::Op> pre_, post_;  // ops before the machine words (assignments) and after (calls)

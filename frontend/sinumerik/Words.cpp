@@ -27,6 +27,10 @@ bool BlockParser::addressWord() {
   }
   Word w;
   w.loc = l;
+  if (full && full->kind == Addr::Axis && peek().is("=") && peek(2).isName("PO")) {  // X=PO(…)
+    i_ += 3;
+    return polyTerm(t.text, t);
+  }
   if (full && peek().is("=")) {  // X=…, CR=…, I1=…
     w.addr = t.text;
     i_ += 2;
@@ -65,6 +69,20 @@ bool BlockParser::addressWord() {
     // S1=300, M2=19, X1=5: an address with an extension (spindle or channel axis number).
     return fail(t, fmt::format("the address extension {}= (a spindle or axis number) is not simulated", t.text),
                 "unsupported-code");
+  } else if (t.isName("PO") && peek().is("[")) {  // PO[X]=(…), PO[]=(…)
+    i_ += 2;
+    std::string axis;
+    if (!tok().is("]")) {
+      const AddrInfo *a = tok().kind == Tok::Name ? findAddress(tok().text) : nullptr;
+      if (!a || a->kind != Addr::Axis) return fail(tok(), "PO[…] takes an axis name (or nothing: the denominator)");
+      axis = tok().text;
+      ++i_;
+    }
+    if (!expect("]") || !expect("=")) return false;
+    return polyTerm(axis, t);
+  } else if (t.isName("PO") && peek().is("(")) {  // PO(…): the denominator
+    ++i_;
+    return polyTerm("", t);
   } else if (peek().is("[")) {
     // G[8]=2, AX[AXVAR]=10, S[SPINU]=300: indirect addresses (SIN-IND-01…03).
     return fail(t, fmt::format("the indexed address {}[…] is not simulated", t.text), "unsupported-code");
@@ -126,7 +144,7 @@ bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
       return fail(t, fmt::format("{} takes axis words only (and must stand alone in its block)", g.code->name));
     std::string axis = t.text.substr(0, 1);
     ExprPtr v;
-    if (t.digitsAt == 1) {
+    if (t.digitsAt == 1 && t.text.size() > 1) {  // Z45; Z alone is followed by =, a sign or a value
       v = Expr::number(t.num, t.isInt ? ir::Type::Int : ir::Type::Real, loc(t));
       ++i_;
     } else if (peek().is("=")) {
@@ -232,6 +250,53 @@ bool BlockParser::argumentList(const std::string &name, const std::vector<std::s
     }
   }
   ++i_;
+  return true;
+}
+
+}  // namespace ncc::sin
+
+namespace ncc::sin {
+
+// The list of a polynomial, `(end, a2, …, a5)`, at the current token.
+bool BlockParser::polyTerm(std::string axis, const Token &at) {
+  if (tok().isName("IC") || tok().isName("AC"))
+    return fail(tok(), "PO with IC()/AC() is not simulated (write absolute end points)", "unsupported-code");
+  if (!expect("(")) return false;
+  PolyTerm p{std::move(axis), {}};
+  do {
+    ExprPtr v = expr(0);
+    if (!v) return false;
+    p.values.push_back(std::move(v));
+  } while (tok().is(",") && (++i_, true));
+  if (!expect(")")) return false;
+  if (p.values.size() > 5) return fail(at, "a polynomial has its end value and at most the coefficients a2 … a5");
+  for (auto &o : poly_)
+    if (o.axis == p.axis) return fail(at, "a polynomial is programmed twice for the same axis in the block", "duplicate-word");
+  poly_.push_back(std::move(p));
+  return true;
+}
+
+// The block's polynomials: the end values become the axis words (the denominator's: `denominator`),
+// the coefficients a_k one move op each with `poly_index` k before the block's move.
+bool BlockParser::lowerPoly(ir::Region &out, ExprPtr &denominator) {
+  SourceLoc bl = loc(t_[0]);
+  for (int k = 2; k <= 5; ++k) {
+    Op o(OpKind::Move, bl);
+    for (auto &p : poly_)
+      if (p.values.size() >= (size_t)k) o.set(p.axis.empty() ? "denominator" : p.axis, std::move(p.values[k - 1]));
+    if (o.args.empty() && k > 2) continue;  // a2 always: it tells the executor the block has polynomials
+    o.set("poly_index", Expr::number(k, ir::Type::Int));
+    out.push_back(std::move(o));
+  }
+  for (auto &p : poly_) {
+    if (p.axis.empty()) {
+      denominator = std::move(p.values[0]);
+      continue;
+    }
+    for (auto &o : words_)
+      if (o.addr == p.axis) return fail(t_[0], fmt::format("address {} is programmed twice in the block", p.axis), "duplicate-word");
+    words_.push_back(Word{p.axis, std::move(p.values[0]), 0, bl});
+  }
   return true;
 }
 
