@@ -424,6 +424,23 @@ bool sinHoles2(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &er
   return true;
 }
 
+// CYCLE801 (seed000c 19.1.34): _NUM1 columns _DIS1 apart along the axis turned by _STA, _NUM2
+// rows _DIS2 apart across; _VARI 1st digit 1 the frame only. [model] the rows meander (the
+// manual leaves the order to the control) and the _HIDE numbers count in that order; the shear
+// angles _ANG1 _ANG2 are errors.
+bool sinCycle801(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
+  int n1, n2;
+  if (!count(a, "_NUM1", n1, err) || !count(a, "_NUM2", n2, err)) return false;
+  if (a.get("_ANG1") != 0 || a.get("_ANG2") != 0)
+    return fail(err, "CYCLE801 with shear angles (_ANG1, _ANG2) is not supported");
+  int form = digit(a.get("_VARI"), 1);
+  if (form > 1) return fail(err, "_VARI 1st digit must be 0 (grid) or 1 (frame)");
+  out = gridPattern({a.get("_SPCA"), a.get("_SPCO")}, a.get("_STA"), std::fabs(a.get("_DIS1")), std::fabs(a.get("_DIS2")),
+                    n1, n2, true, form == 1);
+  auto hide = a.text.find("_HIDE");
+  return hide == a.text.end() || hidePositions(out, hide->second, err);
+}
+
 bool hei220(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
   int n;
   if (!count(a, "Q241", n, err)) return false;
@@ -463,6 +480,8 @@ const CycleDef kHoleEntries[] = {
      sinHoles1, "SPCA:u SPCO:v", "_HIDE"},
     {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
      sinHoles2, "CPA:u CPO:v", "_HIDE"},
+    {"sin.CYCLE801", "_SPCA _SPCO _STA _DIS1 _DIS2 _NUM1 _NUM2 _VARI _UMODE _ANG1 _ANG2 _HIDE _NSP _DMODE",
+     "Sinumerik grid or frame of positions", nullptr, sinCycle801, "_SPCA:u _SPCO:v", "_HIDE"},
     {"hei.200", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395", "Heidenhain drilling", hei200, nullptr},
     {"hei.201", "Q200 Q201 Q206 Q211 Q208 Q203 Q204", "Heidenhain reaming", hei201, nullptr},
     {"hei.203", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395",
