@@ -294,8 +294,9 @@ static bool cycleArgsOf(const MachineCmd &c, const CycleDef &def, int first, Cyc
 
 bool Executor::Impl::execCycle(const MachineCmd &c) {
   const auto &lib = cycleLibrary();
-  const CycleDef *entry = c.sub & 0xff ? &lib[(c.sub & 0xff) - 1] : nullptr;
-  unsigned p = c.sub2 & kCyclePatternMask;
+  unsigned e = c.sub & 0xff, p = c.sub2 & kCyclePatternMask;
+  if (e > lib.size() || p > lib.size()) return error("cycle command names no library entry", "cycle-invalid");
+  const CycleDef *entry = e ? &lib[e - 1] : nullptr;
   const CycleDef *pattern = p ? &lib[p - 1] : nullptr;
   CycleArgs args, patternArgs;
   std::string err;

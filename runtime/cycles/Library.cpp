@@ -3,6 +3,7 @@
 #include "runtime/Geometry.h"
 
 #include <algorithm>
+#include <fmt/format.h>
 #include <cmath>
 
 namespace ncc {
@@ -424,6 +425,48 @@ bool sinHoles2(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &er
   return true;
 }
 
+// CYCLE801 (seed000c 19.1.34): _NUM1 columns _DIS1 apart along the axis turned by _STA, _NUM2
+// rows _DIS2 apart across; _VARI 1st digit 1 the frame only. [model] the rows meander (the
+// manual leaves the order to the control) and the _HIDE numbers count in that order; the shear
+// angles _ANG1 _ANG2 are errors.
+bool sinCycle801(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
+  int n1, n2;
+  if (!count(a, "_NUM1", n1, err) || !count(a, "_NUM2", n2, err)) return false;
+  if (a.get("_ANG1") != 0 || a.get("_ANG2") != 0)
+    return fail(err, "CYCLE801 with shear angles (_ANG1, _ANG2) is not supported");
+  int form = digit(a.get("_VARI"), 1);
+  if (form > 1) return fail(err, "_VARI 1st digit must be 0 (grid) or 1 (frame)");
+  out = gridPattern({a.get("_SPCA"), a.get("_SPCO")}, a.get("_STA"), std::fabs(a.get("_DIS1")), std::fabs(a.get("_DIS2")),
+                    n1, n2, true, form == 1);
+  auto hide = a.text.find("_HIDE");
+  return hide == a.text.end() || hidePositions(out, hide->second, err);
+}
+
+// CYCLE802 (seed000c 19.1.35): up to nine positions _X0 _Y0 … _X8 _Y8, each coordinate absolute
+// or incremental to the position before by its digit of _XA / _YA (digit n, from the units, for
+// position n: 1 absolute, 2 incremental; the first programmed position is absolute). A position
+// with one coordinate keeps the other from the position before [model]. Rotary-axis patterns
+// (_VARI 5th digit): errors.
+bool sinCycle802(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
+  if (digit(a.get("_VARI"), 5) != 0) return fail(err, "CYCLE802 with a rotary axis (_VARI 5th digit) is not supported");
+  PlanePoint at{0, 0};
+  for (int n = 0; n < 9; ++n) {
+    const std::string k[2] = {"_X" + std::to_string(n), "_Y" + std::to_string(n)};
+    if (!a.has(k[0]) && !a.has(k[1])) continue;
+    for (int i = 0; i < 2; ++i) {
+      if (!a.has(k[i])) continue;
+      int mode = out.empty() ? 1 : digit(a.get(i ? "_YA" : "_XA"), n + 1);
+      if (mode != 1 && mode != 2)
+        return fail(err, fmt::format("{} digit {} (position {}) must be 1 (absolute) or 2 (incremental)", i ? "_YA" : "_XA",
+                                     n + 1, n));
+      at[i] = mode == 1 ? a.get(k[i]) : at[i] + a.get(k[i]);
+    }
+    out.push_back(at);
+  }
+  if (out.empty()) return fail(err, "CYCLE802 has no position (_X0 _Y0 …)");
+  return true;
+}
+
 bool hei220(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) {
   int n;
   if (!count(a, "Q241", n, err)) return false;
@@ -463,6 +506,12 @@ const CycleDef kHoleEntries[] = {
      sinHoles1, "SPCA:u SPCO:v", "_HIDE"},
     {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
      sinHoles2, "CPA:u CPO:v", "_HIDE"},
+    {"sin.CYCLE801", "_SPCA _SPCO _STA _DIS1 _DIS2 _NUM1 _NUM2 _VARI _UMODE _ANG1 _ANG2 _HIDE _NSP _DMODE",
+     "Sinumerik grid or frame of positions", nullptr, sinCycle801, "_SPCA:u _SPCO:v", "_HIDE"},
+    {"sin.CYCLE802",
+     "_XA _YA _X0 _Y0 _X1 _Y1 _X2 _Y2 _X3 _Y3 _X4 _Y4 _X5 _Y5 _X6 _Y6 _X7 _Y7 _X8 _Y8 _VARI _UMODE _DMODE S_ABA S_AB0 "
+     "S_AB1 S_AB2 S_AB3 S_AB4 S_AB5 S_AB6 S_AB7 S_AB8",
+     "Sinumerik arbitrary positions", nullptr, sinCycle802},
     {"hei.200", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395", "Heidenhain drilling", hei200, nullptr},
     {"hei.201", "Q200 Q201 Q206 Q211 Q208 Q203 Q204", "Heidenhain reaming", hei201, nullptr},
     {"hei.203", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395",
