@@ -148,8 +148,9 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
 
 bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
   // Without a described axis set (machines built in code) X Y Z A B C are taken as present.
+  if (!(c.mask & missingAxes)) return true;
   for (int i = 0; i < kAxes; ++i)
-    if (c.has((Word)i) && (axesDescribed || i >= kBaseAxes) && !machine.axes[i].present)
+    if (c.mask & missingAxes & wordBit((Word)i))
       return error(std::string(kWordKeys[i]) + " word used, but the machine has no " + kWordKeys[i] +
                        " axis",
                    "unknown-axis");

@@ -76,11 +76,14 @@ struct Executor::Impl {
     home[1] = m.home2;
     // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
     axesDescribed = m.axes[0].present || m.axes[1].present || m.axes[2].present;
+    for (int i = 0; i < kAxes; ++i)
+      if ((axesDescribed || i >= kBaseAxes) && !m.axes[i].present) missingAxes |= wordBit((Word)i);
     resetMask = resetGroupMask(m.controller.reset);
   }
   RouteSink route;  // `sink` is this: the sinks, or a contour capture
   uint32_t resetMask = 0;  // what M2/M30 reset (the machine's [controller] reset list)
   bool axesDescribed = true;
+  WordMask missingAxes = 0;  // the axis words checkAxisWords rejects
   const Machine &machine;
   MotionSink &sink;
   Diagnostics &diags;
