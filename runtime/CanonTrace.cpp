@@ -74,9 +74,9 @@ char *CanonTraceWriter::axes(char *p, const double *v, int n) {
       continue;
     }
     char *e = formatFixed4(p, v[i]);
-    if (size_t len = (size_t)(e - p); len <= sizeof c.text) {
-      c.bits = bits, c.len = (uint8_t)len;
-      std::memcpy(c.text, p, len);
+    if (size_t len = (size_t)(e - p); len <= sizeof c.text) {  // the room after p covers the whole copy
+      c.bits = bits, c.len = len;
+      std::memcpy(c.text, p, sizeof c.text);
     }
     p = e;
   }

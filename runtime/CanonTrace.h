@@ -53,8 +53,8 @@ private:
   int seqFirst_ = 19;
   struct Column {
     uint64_t bits = 0;  // of the double last formatted; +0.0 to start with
-    uint8_t len = 6;
-    char text[23] = "0.0000";
+    size_t len = 6;
+    char text[16] = "0.0000";  // copied whole (fixed size): the bytes past len do not matter
   };
   Column columns_[kAxes];
   int64_t lastBlock_ = -1;  // the N column of the last prefix, kept as text
