@@ -10,24 +10,6 @@
 
 namespace ncc {
 
-Plane Executor::Impl::plane() const {
-  switch (st.plane) {
-  case ModeValue::ZX: return Plane::ZX;
-  case ModeValue::YZ: return Plane::YZ;
-  default: return Plane::XY;
-  }
-}
-
-MotionRecord Executor::Impl::record(RecordKind k) const {
-  MotionRecord r;
-  r.kind = k;
-  r.plane = plane();
-  r.blockNumber = blockNumber;
-  r.loc = loc;
-  r.start = r.end = st.position;
-  return r;
-}
-
 static void rotateXY(AxisVec &p, double degrees) {
   double r = degrees * M_PI / 180, c = std::cos(r), s = std::sin(r);
   double x = p[0] * c - p[1] * s, y = p[0] * s + p[1] * c;

@@ -181,8 +181,23 @@ struct Executor::Impl {
     return f;
   }
   AxisVec frameOut(const AxisVec &framePos) const;
-  Plane plane() const;
-  MotionRecord record(RecordKind k) const;
+  Plane plane() const {
+    switch (st.plane) {
+    case ModeValue::ZX: return Plane::ZX;
+    case ModeValue::YZ: return Plane::YZ;
+    default: return Plane::XY;
+    }
+  }
+  // A record of the current block at the current position (inline: built in place per move).
+  MotionRecord record(RecordKind k) const {
+    MotionRecord r;
+    r.kind = k;
+    r.plane = plane();
+    r.blockNumber = blockNumber;
+    r.loc = loc;
+    r.start = r.end = st.position;
+    return r;
+  }
   // While a corner (chamfer/rounding) waits for its second move, records are held back.
   void emit(const MotionRecord &r) {
     if (isMoveRecord(r.kind) || r.kind == RecordKind::Dwell)
