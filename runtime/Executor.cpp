@@ -153,6 +153,11 @@ MotionRecord Executor::Impl::pathModeRecord() const {
 }
 
 bool Executor::Impl::execMode(const MachineCmd &c) {
+  // G0/G1 repeated in a loop's every iteration: with that mode in force and nothing the Motion
+  // case below resets still set, the command changes nothing.
+  if (c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
+      st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff)
+    return true;
   for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
