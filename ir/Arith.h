@@ -4,13 +4,22 @@
 #include "ir/Value.h"
 
 #include <cmath>
+#include <cstdint>
 
 namespace ncc {
 
 // MOD with the sign of the divisor (LinuxCNC MOD, Fanuc #a - FIX[#a/#b]*#b differs for
 // negative operands: front ends that need that form write it out).
 inline double arithMod(double a, double b) {
-  double r = std::fmod(a, b);
+  double r;
+  // Whole numbers below 2^53 (loop counters: the usual case) take the integer remainder, which
+  // is fmod's exactly (sign of a, -0 for a negative a that divides), at a fraction of its cost.
+  if (std::fabs(a) < 0x1p53 && std::fabs(b) < 0x1p53 && (double)(int64_t)a == a && (double)(int64_t)b == b && b != 0) {
+    r = (double)((int64_t)a % (int64_t)b);
+    if (r == 0) r = std::copysign(0.0, a);
+  } else {
+    r = std::fmod(a, b);
+  }
   if (r != 0 && ((r < 0) != (b < 0))) r += b;
   return r;
 }

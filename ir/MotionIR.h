@@ -300,6 +300,8 @@ public:
 class MotionTee : public MotionSink {
 public:
   void add(MotionSink *s) { sinks_.push_back(s); }
+  // The one sink when there is only one (records then skip the tee's call), else null.
+  MotionSink *single() const { return sinks_.size() == 1 ? sinks_[0] : nullptr; }
   void record(const MotionRecord &r) override {
     for (auto *s : sinks_) s->record(r);
   }

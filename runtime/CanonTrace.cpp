@@ -1,4 +1,5 @@
 #include "runtime/CanonTrace.h"
+#include "runtime/Fixed4.h"
 
 #include <cmath>
 #include <cstdio>
@@ -11,119 +12,116 @@ namespace ncc {
 
 namespace {
 constexpr size_t kFlushAt = 1 << 16;
+// The longest prefix ("%5d N%-6lld ") and the longest move line after it: a name, nine numbers
+// with their separators, the arc's turns and the parentheses.
+constexpr size_t kPrefixMax = 48;
+constexpr size_t kMoveMax = 64 + 9 * (kFixed4Max + 2);
 // Arc argument order per plane: first and second plane axis, normal axis (rs274's ARC_FEED).
 constexpr int kArcAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
 constexpr const char *kPlaneNames[] = {"CANON_PLANE_XY", "CANON_PLANE_XZ", "CANON_PLANE_YZ"};
+
+char *put(char *p, std::string_view s) {
+  std::memcpy(p, s.data(), s.size());
+  return p + s.size();
+}
+
+// ", "-separated %.4f values (room: n * (kFixed4Max + 2)).
+char *nums(char *p, const double *v, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i) *p++ = ',', *p++ = ' ';
+    p = formatFixed4(p, v[i]);
+  }
+  return p;
+}
 }  // namespace
 
-CanonTraceWriter::CanonTraceWriter(std::FILE *out) : out_(out) { buf_.reserve(kFlushAt + 4096); }
+CanonTraceWriter::CanonTraceWriter(std::FILE *out) : out_(out), buf_(kFlushAt + 2 * kMoveMax) {
+  std::memset(seq_, ' ', sizeof seq_);
+  seq_[sizeof seq_ - 1] = '0';
+}
 
 // After finish() the stream may already be closed by its owner (AtomicFile::commit): no access.
 CanonTraceWriter::~CanonTraceWriter() {
   if (!finished_) flush();
 }
 
+void CanonTraceWriter::writeOut() {
+  if (len_ && out_ && std::fwrite(buf_.data(), 1, len_, out_) != len_) ioError_ = true;
+  len_ = 0;
+}
+
 bool CanonTraceWriter::flush() {
-  if (!buf_.empty() && out_) {
-    if (std::fwrite(buf_.data(), 1, buf_.size(), out_) != buf_.size()) ioError_ = true;
-    buf_.clear();
-  }
+  if (out_) writeOut();
   if (out_ && std::fflush(out_) != 0) ioError_ = true;
   return !ioError_;
 }
 
-void CanonTraceWriter::begin(int64_t n) {
-  // "%5d " then the N column: "N....." + blank, or N and the number left-aligned in 6 columns.
-  // Built in one stack buffer, appended once.
-  char tmp[64];
-  char *p = tmp;
-  ++seq_;
-  char digits[24];
-  auto seq = std::to_chars(digits, digits + sizeof digits, (long long)seq_);
-  size_t width = (size_t)(seq.ptr - digits);
-  for (size_t i = width; i < 5; ++i) *p++ = ' ';
-  std::memcpy(p, digits, width);
-  p += width;
-  *p++ = ' ';
-  if (n < 0) {
-    std::memcpy(p, "N..... ", 7);
-    p += 7;
-  } else {
-    *p++ = 'N';
-    char *q = std::to_chars(p, p + 24, (long long)n).ptr;
-    for (size_t i = (size_t)(q - p); i < 6; ++i) *q++ = ' ';
-    p = q;
-  }
-  buf_.append(tmp, (size_t)(p - tmp));
+char *CanonTraceWriter::room(size_t n) {
+  writeOut();
+  if (n > buf_.size()) buf_.resize(n);
+  return buf_.data();
 }
 
-void CanonTraceWriter::end() {
-  buf_.push_back('\n');
-  if (buf_.size() >= kFlushAt && out_) {
-    if (std::fwrite(buf_.data(), 1, buf_.size(), out_) != buf_.size()) ioError_ = true;
-    buf_.clear();
-  }
-}
-
-void CanonTraceWriter::line(int64_t n, std::string_view text) {
-  begin(n);
-  buf_.append(text);
-  end();
-}
-
-namespace {
-// "00".."99": two fraction digits per lookup.
-constexpr char kDigitPairs[] =
-    "0001020304050607080910111213141516171819202122232425262728293031323334353637383940414243444546474849"
-    "5051525354555657585960616263646566676869707172737475767778798081828384858687888990919293949596979899";
-
-// Writes v as printf's %.4f at p (room for kMaxNum characters), returns the end.
-constexpr size_t kMaxNum = 400;  // %.4f of the largest double takes 315 characters
-char *fixed4(char *p, double v) {
-  // Fast path: |v| < 1e9 and not near a rounding tie: the scaled value rounds to the same
-  // integer as the exact decimal expansion, so printing that integer equals printf's %.4f.
-  double scaled = v * 1e4;
-  if (std::fabs(v) < 1e9) {
-    double r = std::nearbyint(scaled);
-    if (std::fabs(scaled - r) < 0.4999) {
-      long long q = (long long)r;
-      if (q < 0 || (q == 0 && std::signbit(v))) *p++ = '-';  // "-0.0000" like printf
-      unsigned long long a = q < 0 ? (unsigned long long)(-q) : (unsigned long long)q;
-      p = std::to_chars(p, p + 16, a / 10000).ptr;
-      unsigned f = (unsigned)(a % 10000);
-      *p = '.';
-      std::memcpy(p + 1, kDigitPairs + 2 * (f / 100), 2);
-      std::memcpy(p + 3, kDigitPairs + 2 * (f % 100), 2);
-      return p + 5;
-    }
-  }
-  // to_chars with a precision rounds exactly like printf's %.4f (including "-0.0000").
-  auto res = std::to_chars(p, p + kMaxNum, v, std::chars_format::fixed, 4);
-  if (res.ec == std::errc()) return res.ptr;
-  int len = std::snprintf(p, kMaxNum, "%.4f", v);
-  return p + (len < 0 ? 0 : std::min((size_t)len, kMaxNum - 1));
-}
-}  // namespace
-
-void CanonTraceWriter::num(double v) {
-  char tmp[kMaxNum];
-  buf_.append(tmp, (size_t)(fixed4(tmp, v) - tmp));
-}
-
-// Formats the values into one stack buffer and appends it once (flushing early only when a
-// huge value could overflow it).
-void CanonTraceWriter::nums(const double *v, int n) {
-  char tmp[1024];
-  char *p = tmp;
+char *CanonTraceWriter::axes(char *p, const double *v, int n) {
   for (int i = 0; i < n; ++i) {
-    if ((size_t)(tmp + sizeof tmp - p) < kMaxNum + 2) {
-      buf_.append(tmp, (size_t)(p - tmp));
-      p = tmp;
-    }
     if (i) *p++ = ',', *p++ = ' ';
-    p = fixed4(p, v[i]);
+    uint64_t bits;
+    std::memcpy(&bits, &v[i], sizeof bits);
+    Column &c = columns_[i];
+    if (bits == c.bits) {
+      std::memcpy(p, c.text, sizeof c.text);
+      p += c.len;
+      continue;
+    }
+    char *e = formatFixed4(p, v[i]);
+    if (size_t len = (size_t)(e - p); len <= sizeof c.text) {  // the room after p covers the whole copy
+      c.bits = bits, c.len = len;
+      std::memcpy(c.text, p, sizeof c.text);
+    }
+    p = e;
   }
-  buf_.append(tmp, (size_t)(p - tmp));
+  return p;
+}
+
+char *CanonTraceWriter::begin(int64_t n, size_t after) {
+  // "%5d " then the N column: "N....." + blank, or N and the number left-aligned in 6 columns.
+  // The counter counts up in its text; the N column is formatted when the block changes.
+  int i = sizeof seq_ - 1;
+  for (; seq_[i] == '9'; --i) seq_[i] = '0';
+  seq_[i] = seq_[i] == ' ' ? '1' : char(seq_[i] + 1);
+  if (i < seqFirst_) seqFirst_ = i;
+  if (n != lastBlock_ || !blockColLen_) {
+    lastBlock_ = n;
+    char *q = blockCol_;
+    if (n < 0) {
+      q = put(q, "N..... ");
+    } else {
+      *q++ = 'N';
+      char *d = std::to_chars(q, q + 24, (long long)n).ptr;
+      for (; d - q < 6; ++d) *d = ' ';
+      q = d;
+    }
+    blockColLen_ = (size_t)(q - blockCol_);
+  }
+  char *p = len_ + kPrefixMax + after + 1 <= buf_.size() ? buf_.data() + len_ : room(kPrefixMax + after + 1);
+  p = put(p, std::string_view(seq_ + seqFirst_, sizeof seq_ - seqFirst_));
+  *p++ = ' ';
+  return put(p, std::string_view(blockCol_, blockColLen_));
+}
+
+void CanonTraceWriter::end(char *p) {
+  *p++ = '\n';
+  len_ = (size_t)(p - buf_.data());
+  if (len_ >= kFlushAt && out_) writeOut();
+}
+
+void CanonTraceWriter::line(int64_t n, std::string_view text) { end(put(begin(n, text.size()), text)); }
+
+void CanonTraceWriter::numLine(int64_t n, std::string_view name, double v) {
+  char *p = put(begin(n, name.size() + kFixed4Max + 1), name);
+  p = formatFixed4(p, v);
+  *p++ = ')';
+  end(p);
 }
 
 void CanonTraceWriter::preamble() {
@@ -181,11 +179,10 @@ void CanonTraceWriter::thread(const MotionRecord &r) {
   }
   sync_ = true, syncLead_ = lead, syncBlock_ = n;
   if (r.sync == ThreadSync::TapOut) return;
-  begin(n);
-  buf_.append(r.sync == ThreadSync::TapIn ? "RIGID_TAP(" : "STRAIGHT_FEED(");
-  nums(r.end.data(), r.sync == ThreadSync::TapIn ? 3 : writtenAxes({&r.end}));
-  buf_.push_back(')');
-  end();
+  char *p = put(begin(n, kMoveMax), r.sync == ThreadSync::TapIn ? "RIGID_TAP(" : "STRAIGHT_FEED(");
+  p = axes(p, r.end.data(), r.sync == ThreadSync::TapIn ? 3 : writtenAxes({&r.end}));
+  *p++ = ')';
+  end(p);
 }
 
 void CanonTraceWriter::record(const MotionRecord &r) {
@@ -196,15 +193,15 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   stopSync(syncBlock_);
   switch (r.kind) {
   case RecordKind::Rapid:
-  case RecordKind::Linear:
-    begin(n);
-    buf_.append(r.kind == RecordKind::Rapid ? "STRAIGHT_TRAVERSE(" : "STRAIGHT_FEED(");
-    nums(r.end.data(), writtenAxes({&r.end}));
-    buf_.push_back(')');
-    end();
+  case RecordKind::Linear: {
+    char *p = put(begin(n, kMoveMax), r.kind == RecordKind::Rapid ? "STRAIGHT_TRAVERSE(" : "STRAIGHT_FEED(");
+    p = axes(p, r.end.data(), writtenAxes({&r.end}));
+    *p++ = ')';
+    end(p);
     if (enableAfterMove_) line(n, "ENABLE_FEED_OVERRIDE()");
     enableAfterMove_ = false;
     break;
+  }
   case RecordKind::Arc: {
     // After a tilted arc nothing more is written: the trace would no longer be the path.
     if (tilted_.reject(r)) {
@@ -212,29 +209,25 @@ void CanonTraceWriter::record(const MotionRecord &r) {
       return;
     }
     const int *ax = kArcAxes[(int)r.plane];
-    begin(n);
-    buf_.append("ARC_FEED(");
+    char *p = put(begin(n, kMoveMax + 2 * kFixed4Max), "ARC_FEED(");
     double v[4] = {r.end[ax[0]], r.end[ax[1]], r.center[ax[0]], r.center[ax[1]]};
-    nums(v, 4);
-    char tmp[24];
-    auto res = std::to_chars(tmp, tmp + sizeof tmp, r.turns);
-    buf_.append(", ");
-    buf_.append(tmp, (size_t)(res.ptr - tmp));
-    buf_.append(", ");
+    p = nums(p, v, 4);
+    p = put(p, ", ");
+    p = std::to_chars(p, p + 24, r.turns).ptr;
+    p = put(p, ", ");
     double w[7] = {r.end[ax[2]], r.end[3], r.end[4], r.end[5], r.end[6], r.end[7], r.end[8]};
-    nums(w, writtenAxes({&r.end}) - 2);
-    buf_.push_back(')');
-    end();
+    p = nums(p, w, writtenAxes({&r.end}) - 2);
+    *p++ = ')';
+    end(p);
     break;
   }
   case RecordKind::Probe: {  // rs274's G38.x: the programmed target, bracketed by the probe's switching
     const AxisVec &target = r.probe().target;
     line(n, "TURN_PROBE_ON()");
-    begin(n);
-    buf_.append("STRAIGHT_PROBE(");
-    nums(target.data(), writtenAxes({&target}));
-    buf_.push_back(')');
-    end();
+    char *p = put(begin(n, kMoveMax), "STRAIGHT_PROBE(");
+    p = nums(p, target.data(), writtenAxes({&target}));
+    *p++ = ')';
+    end(p);
     line(n, "TURN_PROBE_OFF()");
     break;
   }
@@ -244,11 +237,7 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     line(n, "NURBS_FEED(" + std::to_string(r.spline().count()) + ", ...)");
     break;
   case RecordKind::Dwell:
-    begin(n);
-    buf_.append("DWELL(");
-    num(r.value);
-    buf_.push_back(')');
-    end();
+    numLine(n, "DWELL(", r.value);
     break;
   case RecordKind::ToolSelect:
     line(n, "SELECT_TOOL(" + std::to_string(r.ivalue) + ")");
@@ -277,39 +266,24 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     // Already applied to the machine positions: printing it would apply it twice.
     break;
   case RecordKind::SpindleSpeed:
-    begin(n);
-    buf_.append("SET_SPINDLE_SPEED(0, ");
-    num(r.value);
-    buf_.push_back(')');
-    end();
+    numLine(n, "SET_SPINDLE_SPEED(0, ", r.value);
     break;
   case RecordKind::SpindleCW: line(n, "START_SPINDLE_CLOCKWISE(0)"); break;
   case RecordKind::SpindleCCW: line(n, "START_SPINDLE_COUNTERCLOCKWISE(0)"); break;
   case RecordKind::SpindleStop: line(n, "STOP_SPINDLE_TURNING(0)"); break;
-  case RecordKind::SpindleOrient:  // rs274's M19: the orientation, then the wait when Q is given
-    begin(n);
-    buf_.append("ORIENT_SPINDLE(0, ");
-    num(r.value);
-    buf_.append(", ");
-    buf_.append(std::to_string(r.ivalue));
-    buf_.push_back(')');
-    end();
-    if (r.value2 > 0) {
-      begin(n);
-      buf_.append("SPINDLE.0.WAIT_ORIENT_COMPLETE(");
-      num(r.value2);
-      buf_.push_back(')');
-      end();
-    }
+  case RecordKind::SpindleOrient: {  // rs274's M19: the orientation, then the wait when Q is given
+    char *p = put(begin(n, 64 + kFixed4Max), "ORIENT_SPINDLE(0, ");
+    p = put(formatFixed4(p, r.value), ", ");
+    p = std::to_chars(p, p + 24, (long long)r.ivalue).ptr;
+    *p++ = ')';
+    end(p);
+    if (r.value2 > 0) numLine(n, "SPINDLE.0.WAIT_ORIENT_COMPLETE(", r.value2);
     break;
+  }
   case RecordKind::SpindleMode:
     // rs274 prints the G96 limit (D), 1e30 for none, and 0 for G97; a moved origin is no command.
     if (r.ivalue == 2) break;
-    begin(n);
-    buf_.append("SET_SPINDLE_MODE(0 ");
-    num(r.ivalue == 0 ? 0.0 : r.value > 0 ? r.value : 1e30);
-    buf_.push_back(')');
-    end();
+    numLine(n, "SET_SPINDLE_MODE(0 ", r.ivalue == 0 ? 0.0 : r.value > 0 ? r.value : 1e30);
     break;
   case RecordKind::CoolantFlood:
     flood_ = r.ivalue != 0;
@@ -320,11 +294,7 @@ void CanonTraceWriter::record(const MotionRecord &r) {
     line(n, mist_ ? "MIST_ON()" : "MIST_OFF()");
     break;
   case RecordKind::FeedRate:
-    begin(n);
-    buf_.append("SET_FEED_RATE(");
-    num(r.value);
-    buf_.push_back(')');
-    end();
+    numLine(n, "SET_FEED_RATE(", r.value);
     break;
   case RecordKind::FeedMode:
     line(n, r.ivalue == 1 ? "SET_FEED_MODE(0, 1)" : "SET_FEED_MODE(0, 0)");

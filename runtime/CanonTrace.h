@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ncc {
 
@@ -25,11 +26,18 @@ public:
   bool flush();
 
 private:
-  void begin(int64_t blockNumber);     // "%5d N..... " prefix
-  void end();                          // newline, flush when the buffer is large
+  // Lines are formatted straight into buf_: begin() writes the "%5d N..... " prefix where the
+  // line goes and end() the newline. room() makes space for n characters when the buffer is full
+  // (writes it out, grows it for a huge line) and returns where they go.
+  char *room(size_t n);
+  char *begin(int64_t blockNumber, size_t n);  // the prefix, with room for n characters after it
+  void end(char *p);
+  void writeOut();
   void line(int64_t blockNumber, std::string_view text);
-  void num(double v);                  // %.4f
-  void nums(const double *v, int n);   // ", "-separated %.4f values
+  void numLine(int64_t blockNumber, std::string_view name, double v);  // NAME(%.4f)
+  // A move's positions, ", "-separated %.4f: a column whose value is bit for bit the last one
+  // written there (the axes that did not move) copies that text instead of formatting it again.
+  char *axes(char *p, const double *v, int n);
   void preamble();
   void epilogue(const MotionRecord &r);
   // Thread records: rs274's START_SPEED_FEED_SYNC(k,0) before a new synchronisation or a lead
@@ -38,8 +46,20 @@ private:
   void stopSync(int64_t blockNumber);
 
   std::FILE *out_;
-  std::string buf_;
-  int64_t seq_ = 0;
+  std::vector<char> buf_;  // its size is the capacity; len_ characters are in use
+  size_t len_ = 0;
+  // The line counter as "%5d" text, counted up in place: the digits end at seq_ + 24.
+  char seq_[24];
+  int seqFirst_ = 19;
+  struct Column {
+    uint64_t bits = 0;  // of the double last formatted; +0.0 to start with
+    size_t len = 6;
+    char text[16] = "0.0000";  // copied whole (fixed size): the bytes past len do not matter
+  };
+  Column columns_[kAxes];
+  int64_t lastBlock_ = -1;  // the N column of the last prefix, kept as text
+  char blockCol_[32];
+  size_t blockColLen_ = 0;
   bool started_ = false, finished_ = false, ioError_ = false;
   bool halted_ = false;  // a record it cannot write (tilted arc) stopped the trace
   Plane plane_ = Plane::XY;

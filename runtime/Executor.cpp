@@ -10,24 +10,6 @@
 
 namespace ncc {
 
-Plane Executor::Impl::plane() const {
-  switch (st.plane) {
-  case ModeValue::ZX: return Plane::ZX;
-  case ModeValue::YZ: return Plane::YZ;
-  default: return Plane::XY;
-  }
-}
-
-MotionRecord Executor::Impl::record(RecordKind k) const {
-  MotionRecord r;
-  r.kind = k;
-  r.plane = plane();
-  r.blockNumber = blockNumber;
-  r.loc = loc;
-  r.start = r.end = st.position;
-  return r;
-}
-
 static void rotateXY(AxisVec &p, double degrees) {
   double r = degrees * M_PI / 180, c = std::cos(r), s = std::sin(r);
   double x = p[0] * c - p[1] * s, y = p[0] * s + p[1] * c;
@@ -123,33 +105,37 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
   // Without a rotation, mirror or scaling the offset frame is the machine's: no mapping.
   const bool linear = linearFrame();
   AxisVec t = linear ? frameIn(st.position) : st.position;
-  bool inc = st.distance == ModeValue::Incremental;
+  const bool inc = st.distance == ModeValue::Incremental;
   // A move's own absolute/incremental axes (sub/sub2, MachineCmd.h) override the mode.
-  uint16_t incAxes = c.kind == CmdKind::Move ? c.sub : c.kind == CmdKind::Home ? c.sub2 : 0,
-           absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
-  constexpr WordMask kAxisWords = (WordMask(1) << kAxes) - 1;  // X Y Z A B C U V W are the first words
-  for (WordMask m = c.mask & kAxisWords; m; m &= m - 1) {
+  const uint16_t incAxes = c.kind == CmdKind::Move ? c.sub : c.kind == CmdKind::Home ? c.sub2 : 0,
+                 absAxes = c.kind == CmdKind::Move ? c.sub2 : 0;
+  // axisScale and frameOffset per axis, their cases decided once per move (the same sums).
+  const double unit = scale(), xUnit = axisScale(0);
+  const bool shifted = !pf.linear, allOffsets = shifted && !rotated();
+  for (WordMask m = c.mask & kAxisMask; m; m &= m - 1) {  // X Y Z A B C U V W are the first words
     const int i = __builtin_ctzll(m);
-    double v = c.w[i] * axisScale(i);
-    bool axisInc = (incAxes >> i) & 1 ? true : (absAxes >> i) & 1 ? false : inc;
-    const double off = frameOffset(i);
-    double prog = axisInc ? t[i] - off + v : v;
+    const double v = c.w[i] * (i == 0 ? xUnit : isLengthAxis(i) ? unit : 1.0);
+    const bool axisInc = (incAxes >> i) & 1 ? true : (absAxes >> i) & 1 ? false : inc;
+    const double off = !shifted ? 0.0 : allOffsets ? offset(i) : g92[i] + pf.local[i];
+    const double prog = axisInc ? t[i] - off + v : v;
     t[i] = prog + off;
   }
-  if (c.has(Word::PolarR) || c.has(Word::PolarA)) {  // X and Y from @ ^ (exec rejects X/Y with them)
+  if (c.mask & (wordBit(Word::PolarR) | wordBit(Word::PolarA))) {  // X and Y from @ ^ (exec rejects X/Y with them)
     double x = t[0] - frameOffset(0), y = t[1] - frameOffset(1);
     polarStep(x, y, inc, c.has(Word::PolarR), c.get(Word::PolarR) * scale(), c.has(Word::PolarA),
               c.get(Word::PolarA));
     t[0] = x + frameOffset(0);
     t[1] = y + frameOffset(1);
   }
-  return linear ? frameOut(t) : t;
+  if (linear) t = frameOut(t);
+  return t;
 }
 
 bool Executor::Impl::checkAxisWords(const MachineCmd &c) {
   // Without a described axis set (machines built in code) X Y Z A B C are taken as present.
+  if (!(c.mask & missingAxes)) return true;
   for (int i = 0; i < kAxes; ++i)
-    if (c.has((Word)i) && (axesDescribed || i >= kBaseAxes) && !machine.axes[i].present)
+    if (c.mask & missingAxes & wordBit((Word)i))
       return error(std::string(kWordKeys[i]) + " word used, but the machine has no " + kWordKeys[i] +
                        " axis",
                    "unknown-axis");
@@ -167,6 +153,11 @@ MotionRecord Executor::Impl::pathModeRecord() const {
 }
 
 bool Executor::Impl::execMode(const MachineCmd &c) {
+  // G0/G1 repeated in a loop's every iteration: with that mode in force and nothing the Motion
+  // case below resets still set, the command changes nothing.
+  if (c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
+      st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff)
+    return true;
   for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {

@@ -77,11 +77,14 @@ struct Executor::Impl {
     home[1] = m.home2;
     // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
     axesDescribed = m.axes[0].present || m.axes[1].present || m.axes[2].present;
+    for (int i = 0; i < kAxes; ++i)
+      if ((axesDescribed || i >= kBaseAxes) && !m.axes[i].present) missingAxes |= wordBit((Word)i);
     resetMask = resetGroupMask(m.controller.reset);
   }
   RouteSink route;  // `sink` is this: the sinks, or a contour capture
   uint32_t resetMask = 0;  // what M2/M30 reset (the machine's [controller] reset list)
   bool axesDescribed = true;
+  WordMask missingAxes = 0;  // the axis words checkAxisWords rejects
   const Machine &machine;
   MotionSink &sink;
   Diagnostics &diags;
@@ -182,8 +185,23 @@ struct Executor::Impl {
     return f;
   }
   AxisVec frameOut(const AxisVec &framePos) const;
-  Plane plane() const;
-  MotionRecord record(RecordKind k) const;
+  Plane plane() const {
+    switch (st.plane) {
+    case ModeValue::ZX: return Plane::ZX;
+    case ModeValue::YZ: return Plane::YZ;
+    default: return Plane::XY;
+    }
+  }
+  // A record of the current block at the current position (inline: built in place per move).
+  MotionRecord record(RecordKind k) const {
+    MotionRecord r;
+    r.kind = k;
+    r.plane = plane();
+    r.blockNumber = blockNumber;
+    r.loc = loc;
+    r.start = r.end = st.position;
+    return r;
+  }
   // While a corner (chamfer/rounding) waits for its second move, records are held back.
   void emit(const MotionRecord &r) {
     if (isMoveRecord(r.kind) || r.kind == RecordKind::Dwell)

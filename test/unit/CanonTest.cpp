@@ -2,6 +2,7 @@
 // reader (this file) and the executor, compared with rs274's recorded traces; writer format; canon-diff.
 #include "runtime/CanonDiff.h"
 #include "runtime/CanonTrace.h"
+#include "runtime/Fixed4.h"
 #include "runtime/Executor.h"
 
 #include <gtest/gtest.h>
@@ -9,10 +10,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <deque>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 
 using namespace ncc;
@@ -528,3 +531,37 @@ TEST(CanonDiff, NurbsFeedComparesTheControlPointCount) {
 }
 
 }  // namespace
+
+// The trace's numbers: formatFixed4 must print exactly what printf's %.4f prints (rs274's
+// format), on edge cases (signed zero, ties of the exact binary value, rounding at the fifth
+// digit, the ends of the fast path, huge and non-finite values) and on many random values.
+TEST(CanonTrace, Fixed4EqualsPrintf) {
+  auto check = [](double v) {
+    char got[kFixed4Max + 1], want[kFixed4Max + 1];
+    *formatFixed4(got, v) = 0;
+    std::snprintf(want, sizeof want, "%.4f", v);
+    ASSERT_STREQ(got, want) << "value " << std::hexfloat << v;
+  };
+  const double edge[] = {0.0, -0.0, 0.5, -0.5, 0.00005, -0.00005, 0.00004999, 0.00015, 0.00025,
+                         0.03125, -0.03125, 0.09375, 1.03125, 2.5, 9.99995, -9.99995, 9999.99995,
+                         99999.99995, 123.45675, 1234.56785, 1e-300, -1e-300, 5e-324, 1e9, -1e9,
+                         999999999.99995, 1e13, 7e13, 7.1e13, 1e14, 1e15, 1e20, 1e300, -1e300,
+                         1.7976931348623157e308, INFINITY, -INFINITY, NAN, -NAN};
+  for (double v : edge) check(v);
+  for (int k = -1074; k < 1024; ++k) {  // every power of two, its neighbours, 1.5 times it
+    double v = std::ldexp(1.0, k);
+    for (double w : {v, -v, std::nextafter(v, 0.0), std::nextafter(v, INFINITY), 1.5 * v}) check(w);
+  }
+  std::mt19937_64 g(20261128);
+  for (int i = 0; i < 300000; ++i) {
+    double v = std::ldexp((double)(g() >> 11), -53) * std::pow(10.0, (int)(g() % 22) - 6);
+    if (g() & 1) v = -v;
+    check(v);
+    double tie = (std::floor(v * 1e4) + 0.5) / 1e4;  // the nearest decimal tie and its neighbours
+    for (double w : {tie, std::nextafter(tie, INFINITY), std::nextafter(tie, -INFINITY)}) check(w);
+    uint64_t bits = g();  // any bit pattern
+    std::memcpy(&v, &bits, sizeof v);
+    check(v);
+    check((double)(int64_t)(g() % 2000001 - 1000000) / 32.0);  // exact binary ties
+  }
+}

@@ -1,11 +1,16 @@
 // Typed run-time values (ir/Strings.h, ir/Decls.h, string builtins of ir/Builtins.h): the rules
 // both engines share, checked directly.
+#include "ir/Arith.h"
 #include "ir/Builtins.h"
 #include "ir/Decls.h"
 #include "ir/NCIR.h"
 #include "ir/Strings.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
 
 using namespace ncc;
 
@@ -179,4 +184,30 @@ TEST(Values, PoolLimit) {
   EXPECT_FALSE(p.intern("new", h, err));
   EXPECT_EQ(err, poolLimitMessage());
   EXPECT_EQ(err, "string pool limit exceeded: more than 1000000 distinct strings or 67108864 bytes in one run");
+}
+
+// MOD's integer path must give fmod's result bit for bit (then the divisor's sign), so both
+// engines and every earlier trace stay as they were.
+TEST(Values, ModOfWholeNumbersEqualsFmod) {
+  auto reference = [](double a, double b) {
+    double r = std::fmod(a, b);
+    if (r != 0 && ((r < 0) != (b < 0))) r += b;
+    return r;
+  };
+  auto same = [&](double a, double b) {
+    double want = reference(a, b), got = arithMod(a, b);
+    if (std::isnan(want)) return std::isnan(got);
+    return std::memcmp(&want, &got, sizeof want) == 0;
+  };
+  const double edge[] = {0.0, -0.0, 1, -1, 2, -2, 3, -3, 7, -7, 100, -100, 0.5, -0.5, 1e15, -1e15,
+                         9007199254740991.0, -9007199254740991.0, 9007199254740992.0, 1e300,
+                         INFINITY, -INFINITY, NAN};
+  for (double a : edge)
+    for (double b : edge) EXPECT_TRUE(same(a, b)) << a << " MOD " << b;
+  std::mt19937_64 g(6);
+  for (int i = 0; i < 200000; ++i) {
+    double a = (double)(int64_t)(g() % 2000001) - 1000000, b = (double)(int64_t)(g() % 401) - 200;
+    if (i % 3 == 0) a = std::ldexp((double)(int64_t)(g() >> 11), -(int)(g() % 8)) * (g() & 1 ? 1 : -1);
+    ASSERT_TRUE(same(a, b)) << a << " MOD " << b;
+  }
 }

@@ -89,7 +89,7 @@ public:
   static int checkUsage(const RunOutputArgs &args);
   // Creates the trace file; false after reporting.
   bool open(Diagnostics &diags);
-  MotionSink &sink() { return tee_; }
+  MotionSink &sink() { return tee_.single() ? *tee_.single() : tee_; }
   void setBlockCount(uint64_t n) { outputs_.setBlockCount(n); }
   // The executor whose blocks the progress line counts (when there is one).
   void watch(const Executor &exec);
