@@ -1,0 +1,118 @@
+// CYCL DEF n with its parameter lines (`Q200=2 ;SET-UP CLEARANCE`), CYCL CALL and the table of
+// the cycles' parameters.
+#include "frontend/heidenhain/Cycles.h"
+#include "frontend/heidenhain/Parser.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+namespace ncc::hei {
+
+using ir::Expr;
+using ir::Op;
+using ir::OpKind;
+
+namespace {
+const CycleInfo kCycles[] = {
+    {200, false, "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395"},
+    {201, false, "Q200 Q201 Q206 Q211 Q208 Q203 Q204"},
+    {202, false, "Q200 Q201 Q206 Q211 Q208 Q203 Q204 Q214 Q336"},
+    {203, false, "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395"},
+    {206, false, "Q200 Q201 Q206 Q211 Q203 Q204"},
+    {207, false, "Q200 Q201 Q239 Q203 Q204"},
+    {220, true, "Q216 Q217 Q244 Q245 Q246 Q247 Q241 Q200 Q203 Q204 Q301 Q365"},
+    {221, true, "Q225 Q226 Q237 Q238 Q242 Q243 Q224 Q200 Q203 Q204 Q301"},
+    {232, false, "Q389 Q225 Q226 Q227 Q386 Q218 Q219 Q202 Q369 Q370 Q207 Q385 Q253 Q200 Q357 Q204"},
+    {233, false, "Q215 Q389 Q350 Q218 Q219 Q227 Q386 Q369 Q202 Q370 Q207 Q385 Q253 Q357 Q200 Q204 Q347 Q348 Q349 Q220 Q368 Q338 Q367"},
+    {251, false, "Q215 Q218 Q219 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439"},
+    {252, false, "Q215 Q223 Q368 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439"},
+    {253, false, "Q215 Q218 Q219 Q368 Q374 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q366 Q385 Q439"},
+    {254, false, "Q215 Q219 Q368 Q375 Q367 Q216 Q217 Q376 Q248 Q378 Q377 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q366 Q385 Q439"},
+    {256, false, "Q218 Q424 Q219 Q425 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q437 Q215 Q369 Q338 Q385"},
+    {257, false, "Q223 Q222 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q376 Q215 Q369 Q338 Q385"},
+    {258, false, "Q573 Q571 Q222 Q572 Q224 Q220 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q215 Q369 Q338 Q385"},
+};
+// Act at their definition (digest §3.0): transformations 7 8 10 11 19 26 247, dwell 9, SL data
+// 14 20 270, tolerance 32, patterns 220 221, and the touch-probe cycles.
+bool defActiveNumber(int n) {
+  static const std::set<int> k = {7, 8, 9, 10, 11, 14, 19, 20, 26, 32, 220, 221, 247, 270};
+  return k.count(n) || (n >= 400 && n < 500) || (n >= 1400 && n < 1500);
+}
+}  // namespace
+
+const CycleInfo *findCycle(int number) {
+  for (auto &c : kCycles)
+    if (c.number == number) return &c;
+  return nullptr;
+}
+
+bool defActiveCycle(int number) { return defActiveNumber(number); }
+
+bool cycleTakes(const CycleInfo &c, std::string_view q) {
+  std::string_view p = c.params;
+  size_t at = 0;
+  while ((at = p.find(q, at)) != std::string_view::npos) {
+    size_t end = at + q.size();
+    if ((at == 0 || p[at - 1] == ' ') && (end == p.size() || p[end] == ' ')) return true;
+    at = end;
+  }
+  return false;
+}
+
+bool BlockParser::cycl() {
+  SourceLoc bl = loc(t_[0]);
+  if (tok().isWord("CALL")) {
+    ++i_;
+    std::string how = tok().isWord("POS") ? " POS" : tok().isWord("PAT") ? " PAT" : "";
+    if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
+    return fail(t_[0], fmt::format("cycle {} is not simulated yet (CYCL CALL{})", f_.cycle, how), "unsupported-code");
+  }
+  if (!expectWord("DEF")) return false;
+  const Token &n = tok();
+  if (n.kind != Tok::Number) return fail(n, "CYCL DEF needs the cycle number");
+  int number = (int)std::floor(n.num);
+  int sub = n.isInt ? -1 : (int)std::lround((n.num - number) * 10);  // 7.0, 7.1 …: the old sub-blocks
+  ++i_;
+  while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
+  // The parameter lines: Qn=value, each at most once, each one the cycle takes.
+  const CycleInfo *info = findCycle(number);
+  std::set<std::string> seen;
+  while (!atEnd()) {
+    const Token &q = tok();
+    if (!(q.isWord("Q") || q.isWord("QS")) || peek().kind != Tok::Number || !peek().isInt)
+      return fail(q, fmt::format("a cycle parameter line Qn=value was expected, not '{}'", q.text));
+    std::string name = q.text + peek().text;
+    i_ += 2;
+    if (!tok().is("=")) return fail(tok(), fmt::format("'=' expected after {}", name));
+    ++i_;
+    if (seen.count(name)) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
+    seen.insert(name);
+    if (info && !cycleTakes(*info, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
+    if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FAUTO") ||
+        tok().isWord("FU") || tok().isWord("FZ")) {
+      ++i_;
+      continue;
+    }
+    if (!signedValue()) return false;
+  }
+  Op c(OpKind::Comment, bl);
+  c.set("text", Expr::string(fmt::format("CYCL DEF {}", n.text)));
+  out().push_back(std::move(c));
+  if (sub > 0) {  // a sub-block of an old-style cycle: its n.0 block was refused already
+    if (f_.cycleLoc.line == 0 || f_.oldCycle != number)
+      return fail(n, fmt::format("CYCL DEF {} without CYCL DEF {}.0 before it", n.text, number), "cycle-invalid");
+    return true;
+  }
+  if (sub == 0) f_.oldCycle = number;
+  if ((info && info->defActive) || (!info && defActiveCycle(number))) {
+    f_.cycleLoc = bl;
+    return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
+  }
+  f_.cycle = number;
+  f_.cycleLoc = bl;
+  return true;
+}
+
+}  // namespace ncc::hei
