@@ -277,6 +277,7 @@ bool BlockParser::arc() {
   if (!words(w, kCoords | kComp | kFeed | kM | kDir, "C")) return false;
   const Coord *bad = nullptr;
   if (!planeOnly(*this, w, false, bad)) return f_.error(bad->loc, "C moves in the working plane (X, Y) only");
+  if (w.coords.empty()) return fail(t_[0], "C needs its end point (X, Y)", "missing-word");
   if (!w.dr) return fail(t_[0], "C needs the direction DR+ or DR-", "missing-word");
   if (w.fmax) return f_.error(w.feedLoc, "FMAX on an arc: the TNC moves arcs at a feed", "syntax");
   f_.pp.polar = true;
@@ -293,6 +294,7 @@ bool BlockParser::arcRadius() {
   if (!words(w, kCoords | kComp | kFeed | kM | kDir | kRadius, "CR")) return false;
   const Coord *bad = nullptr;
   if (!planeOnly(*this, w, false, bad)) return f_.error(bad->loc, "CR moves in the working plane (X, Y) only");
+  if (w.coords.empty()) return fail(t_[0], "CR needs its end point (X, Y)", "missing-word");
   if (!w.dr) return fail(t_[0], "CR needs the direction DR+ or DR-", "missing-word");
   if (!w.radius) return fail(t_[0], "CR needs the radius R (negative: more than 180 degrees)", "missing-word");
   if (w.fmax) return f_.error(w.feedLoc, "FMAX on an arc: the TNC moves arcs at a feed", "syntax");
@@ -307,6 +309,7 @@ bool BlockParser::arcTangent() {
   if (!words(w, kCoords | kComp | kFeed | kM, "CT")) return false;
   const Coord *bad = nullptr;
   if (!planeOnly(*this, w, false, bad)) return f_.error(bad->loc, "CT moves in the working plane (X, Y) only");
+  if (w.coords.empty()) return fail(t_[0], "CT needs its end point (X, Y)", "missing-word");
   if (w.fmax) return f_.error(w.feedLoc, "FMAX on an arc: the TNC moves arcs at a feed", "syntax");
   if (!emitBefore(w)) return false;
   return emitMove(Op(OpKind::Move), w, "arc_tangent") && emitAfter(w);
