@@ -28,7 +28,7 @@ namespace {
 // Statements of the Klartext language ncc knows but does not run yet: refused, naming them.
 const char *const kNotYet[] = {
     "APPR", "DEP", "FC", "FL", "FPOL", "FSELECT", "FCT", "FLT", "RPL", "PATTERN", "SEL", "DECLARE", "CONTOUR", "GLOBAL",
-    "PLANE", "TCH", "FUNCTION", "QS", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
+    "PLANE", "TCH", "FUNCTION", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
 };
 
 // Text of a block for a comment (BLK FORM is kept that way): the tokens, signs glued to values.
@@ -81,6 +81,7 @@ bool BlockParser::parse() {
       {"CR", &BlockParser::arcRadius},   {"CT", &BlockParser::arcTangent},   {"CC", &BlockParser::centre},
       {"RND", &BlockParser::corner},     {"CHF", &BlockParser::corner},      {"FN", &BlockParser::fn},
       {"Q", &BlockParser::assign},       {"QL", &BlockParser::assign},       {"QR", &BlockParser::assign},
+      {"QS", &BlockParser::assign},
       {"LBL", &BlockParser::label},      {"CALL", &BlockParser::call},       {"CYCL", &BlockParser::cycl},
       {"STOP", &BlockParser::stop},      {"M", &BlockParser::mOnly},
   };
