@@ -104,7 +104,11 @@ LexResult lexFile(std::string_view text, uint32_t file) {
     if (first == std::string_view::npos) continue;
     size_t cut = commentStart(line);
     std::string_view code = line.substr(0, cut);
-    std::string comment = cut == std::string_view::npos ? std::string() : std::string(line.substr(cut + 1));
+    std::string comment;
+    if (cut != std::string_view::npos) {
+      std::string_view c = line.substr(cut + 1);
+      comment = std::string(c.substr(std::min(c.size(), c.find_first_not_of(" \t"))));
+    }
     if (!continues && std::isdigit((unsigned char)line[first])) {
       Block b;
       b.line = lineNo;

@@ -93,7 +93,8 @@ std::string ProgramParser::program(const std::string &written, uint32_t fromFile
   std::vector<std::string> dirs;
   std::filesystem::path here = std::filesystem::path(sm.name(fromFile)).parent_path();
   dirs.push_back(here.empty() ? "." : here.string());
-  for (auto &d : opts.searchDirs) dirs.push_back(d);
+  for (auto &d : opts.searchDirs)
+    if (std::find(dirs.begin(), dirs.end(), d) == dirs.end()) dirs.push_back(d);
   uint32_t fid = findSubprogramFile(sm, dirs, candidates, true);
   if (!fid) {
     error(loc, fmt::format("program {} not found (searched {} for {})", written, folderList(dirs), candidates[0]), "missing-subprogram");
