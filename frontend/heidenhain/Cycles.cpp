@@ -78,6 +78,8 @@ bool BlockParser::cycl() {
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
   // The parameter lines: Qn=value, each at most once, each one the cycle takes.
   const CycleInfo *info = findCycle(number);
+  bool defActive = (info && info->defActive) || (!info && defActiveCycle(number));
+  if (sub <= 0 && !defActive) f_.cycle = number;  // a new definition replaces the last, also when it is wrong
   std::set<std::string> seen;
   while (!atEnd()) {
     const Token &q = tok();
@@ -106,12 +108,8 @@ bool BlockParser::cycl() {
     return true;
   }
   if (sub == 0) f_.oldCycle = number;
-  if ((info && info->defActive) || (!info && defActiveCycle(number))) {
-    f_.cycleLoc = bl;
-    return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
-  }
-  f_.cycle = number;
   f_.cycleLoc = bl;
+  if (defActive) return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
   return true;
 }
 
