@@ -388,16 +388,18 @@ bool BlockParser::label() {
   const Token &t = tok();
   SourceLoc l = loc(t);
   std::string name;
-  if (t.kind == Tok::Number && t.isInt && t.num == 0) {
+  bool end = t.kind == Tok::Number && t.isInt && t.num == 0;
+  if (end) {
     name = fmt::format("LBL0_{}", t.line);
-    f_.lbl0.push_back(out().size());
     ++i_;
   } else {
     if (!labelName(name)) return false;
     if (f_.labels.count(name)) return fail(t, fmt::format("LBL {} is defined twice", t.text), "syntax");
-    f_.labels[name] = out().size();
   }
   if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' after LBL", tok().text));
+  // Recorded with their op only, so that the sections resolve to labels (Program.cpp).
+  if (end) f_.lbl0.push_back(out().size());
+  else f_.labels[name] = out().size();
   Op o(OpKind::Label, l);
   o.set("name", Expr::string(name));
   out().push_back(std::move(o));

@@ -33,6 +33,11 @@
 ; ERR: err.h:2:12: error: CALL LBL to LBL9 that is not defined in this program [missing-block]
 ; ERR: err.h:4:12: error: CALL LBL … REP repeats the section above it: the label must come before the call [syntax]
 ; ERR: err.h:9:12: error: CALL LBL inside the subprogram it calls [syntax]
+; A broken LBL 0 is no section end (a crash the fuzzer found):
+; RUN: printf '0 BEGIN PGM E MM\n1 CALL LBL 1\n2 LBL 1\n3 LBL 0 X\n4 END PGM E MM\n' > %t.lbl0.h
+; RUN: not %ncc compile --emit=ir %t.lbl0.h 2>&1 | FileCheck %s --check-prefix=LBL0
+; LBL0: lbl0.h:4:9: error: unexpected 'X' after LBL [syntax]
+; LBL0: lbl0.h:2:12: error: the subprogram has no LBL 0 after its label (a section repeat needs REP) [syntax]
 0 BEGIN PGM LABELS MM
 1 L X+0 Y+0 Z+0 R0 FMAX
 2 CALL LBL 1
