@@ -242,6 +242,7 @@ bool BlockParser::tool() {
     out().push_back(std::move(o));
   }
   if (f) {
+    if (!inchFeed(fl)) return false;
     f_.pp.fauto = true;
     out().push_back(assignOp(hglobal(kFauto, fl), f->clone(), fl));
     Op o(OpKind::Feed, fl);

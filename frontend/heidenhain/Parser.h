@@ -155,6 +155,7 @@ private:
   bool corner();
   bool words(PathWords &w, unsigned allowed, const char *stmt);
   bool emitBefore(PathWords &w);                 // feed, M at the block start, compensation
+  bool inchFeed(SourceLoc at);                   // false (an error) for F in an INCH program
   bool emitMove(ir::Op mv, PathWords &w, const char *motion);
   bool emitAfter(PathWords &w);                  // M at the block end
   bool polarEnd(PathWords &w, ir::Op &mv, bool arc);

@@ -183,8 +183,15 @@ bool BlockParser::words(PathWords &w, unsigned allowed, const char *stmt) {
   return true;
 }
 
+// Whether an INCH program's F is in inch/min or 0.1 inch/min depends on the control's
+// generation; neither the manual nor the digests say, so it is refused rather than guessed.
+bool BlockParser::inchFeed(SourceLoc at) {
+  return !f_.inch || f_.error(at, "a feed in an INCH program is not simulated (its unit is not settled)", "unsupported-code");
+}
+
 bool BlockParser::emitBefore(PathWords &w) {
   SourceLoc bl = loc(t_[0]);
+  if ((w.feed || w.fauto) && !inchFeed(w.feedLoc)) return false;
   if (w.feed) {
     Op o(OpKind::Feed, w.feedLoc);
     o.set("value", std::move(w.feed));
