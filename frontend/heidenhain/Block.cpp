@@ -131,6 +131,11 @@ bool BlockParser::endPgm() {
   if (!unit.isWord(f_.inch ? "INCH" : "MM"))
     return fail(unit, fmt::format("END PGM must repeat the unit {} of BEGIN PGM", f_.inch ? "INCH" : "MM"), "program-frame");
   f_.ended = true;
+  if (f_.isMain) {  // reaching END PGM ends the run as M2 does; a called program returns
+    Op o(OpKind::Stop, loc(t_[0]));
+    o.set("kind", Expr::symbol("end"));
+    out().push_back(std::move(o));
+  }
   return true;
 }
 
