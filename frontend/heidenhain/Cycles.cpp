@@ -11,6 +11,7 @@
 namespace ncc::hei {
 
 using ir::Expr;
+using ir::ExprPtr;
 using ir::Op;
 using ir::OpKind;
 
@@ -61,6 +62,87 @@ bool cycleTakes(const CycleInfo &c, std::string_view q) {
   return false;
 }
 
+// The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 9 DWELL TIME, 10 ROTATION.
+bool oldCycleRuns(int number) { return number == 7 || number == 9 || number == 10; }
+
+// One sub-block of cycle 7, 9 or 10. The TNC keeps one datum shift and one rotation angle
+// (digest §4.1): each definition replaces it (IX, IROT add to it), kept in program-wide
+// variables. The core's chain applies the rotation before the local shift, as the TNC does
+// (rotation about the shifted datum); it refuses a shift while a rotation is active, so the
+// rotation is taken off around a shift and put back (the composite is the same).
+bool BlockParser::oldCycleBlock(int number, const Token &n) {
+  SourceLoc bl = loc(t_[0]);
+  f_.pp.frames = true;
+  auto rotationOp = [&](bool set) {
+    Op o(OpKind::Frame, bl);
+    o.set("slot", Expr::symbol("rotation"));
+    o.set("action", Expr::symbol(set ? "set" : "cancel"));
+    if (set) {
+      o.set("form", Expr::symbol("plane"));
+      o.set("X", num(0));
+      o.set("Y", num(0));
+      o.set("R", hglobal(kRot, bl));
+    }
+    return o;
+  };
+  auto ifRotated = [&](Op inner) {
+    Op c(OpKind::If, bl);
+    c.set("cond", Expr::binary(ir::OpCode::Ne, hglobal(kRot, bl), num(0), bl));
+    c.regions.emplace_back();
+    c.regions[0].push_back(std::move(inner));
+    return c;
+  };
+  if (number == 9) {  // CYCL DEF 9.1 DWELL 1.5: the time is the block's number
+    while (!atEnd() && tok().kind == Tok::Word) ++i_;
+    ExprPtr t = signedValue();
+    if (!t) return false;
+    if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
+    Op d(OpKind::Dwell, bl);
+    d.set("seconds", std::move(t));
+    out().push_back(std::move(d));
+    return true;
+  }
+  if (number == 10) {  // CYCL DEF 10.1 ROT+35 / IROT+45
+    bool inc = tok().isWord("IROT");
+    if (!inc && !tok().isWord("ROT")) return fail(tok(), "CYCL DEF 10.1 takes ROT or IROT");
+    ++i_;
+    ExprPtr a = signedValue();
+    if (!a) return false;
+    if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
+    Op off(OpKind::CutterComp, bl);  // cycle 10 cancels radius compensation (L12850)
+    off.set("side", Expr::symbol("off"));
+    out().push_back(std::move(off));
+    ExprPtr angle = inc ? Expr::binary(ir::OpCode::Add, hglobal(kRot, bl), std::move(a), bl) : std::move(a);
+    out().push_back(ifRotated(rotationOp(false)));
+    out().push_back(assignOp(hglobal(kRot, bl), std::move(angle), bl));
+    out().push_back(ifRotated(rotationOp(true)));
+    return true;
+  }
+  // Cycle 7: one axis per sub-block; absolute from the preset, IX from the last shift.
+  if (tok().is("#")) return fail(tok(), "datum tables (CYCL DEF 7.1 #n) are not simulated yet", "unsupported-code");
+  const Token &w = tok();
+  std::string_view a = w.text;
+  bool inc = w.kind == Tok::Word && a.size() == 2 && a[0] == 'I';
+  if (inc) a.remove_prefix(1);
+  if (w.kind != Tok::Word || a.size() != 1 || std::string_view("XYZ").find(a[0]) == std::string_view::npos)
+    return fail(w, "CYCL DEF 7 shifts X, Y or Z (one axis per block)");
+  ++i_;
+  ExprPtr v = signedValue();
+  if (!v) return false;
+  if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
+  const char *var = a[0] == 'X' ? kShiftX : a[0] == 'Y' ? kShiftY : kShiftZ;
+  ExprPtr shift = inc ? Expr::binary(ir::OpCode::Add, hglobal(var, bl), std::move(v), bl) : std::move(v);
+  out().push_back(assignOp(hglobal(var, bl), std::move(shift), bl));
+  Op f(OpKind::Frame, bl);
+  f.set("slot", Expr::symbol("local"));
+  f.set("action", Expr::symbol("set"));
+  f.set(std::string(1, a[0]), hglobal(var, bl));
+  out().push_back(ifRotated(rotationOp(false)));
+  out().push_back(std::move(f));
+  out().push_back(ifRotated(rotationOp(true)));
+  return true;
+}
+
 bool BlockParser::cycl() {
   SourceLoc bl = loc(t_[0]);
   if (tok().isWord("CALL")) {
@@ -75,6 +157,7 @@ bool BlockParser::cycl() {
   int number = (int)std::floor(n.num);
   int sub = n.isInt ? -1 : (int)std::lround((n.num - number) * 10);  // 7.0, 7.1 …: the old sub-blocks
   ++i_;
+  if (sub > 0 && number == f_.oldCycle && oldCycleRuns(number)) return oldCycleBlock(number, n);
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
   // The parameter lines: Qn=value, each at most once, each one the cycle takes.
   const CycleInfo *info = findCycle(number);
@@ -108,6 +191,7 @@ bool BlockParser::cycl() {
     return true;
   }
   if (sub == 0) f_.oldCycle = number;
+  if (sub == 0 && oldCycleRuns(number)) return true;  // its sub-blocks act
   f_.cycleLoc = bl;
   if (defActive) return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
   return true;

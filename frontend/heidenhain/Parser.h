@@ -63,6 +63,7 @@ public:
   std::map<std::string, std::string> loaded;      // file path -> function name
   bool polar = false;    // some file uses CC/LP/CP: the main program declares the pole
   bool fauto = false;    // some file uses FAUTO or TOOL CALL F
+  bool frames = false;   // some file uses cycle 7 or 10: the main program declares the shift and angle
   bool mainInch = false;
   bool ok = true;
   // The function of a called program (CALL PGM): parsed on first use; "" with an error at loc.
@@ -142,6 +143,7 @@ private:
   bool label();
   bool call();
   bool cycl();
+  bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
   bool stop();
   bool mOnly();
   // paths (Path.cpp)
@@ -175,6 +177,9 @@ ir::Op assignOp(ir::ExprPtr target, ir::ExprPtr value, SourceLoc l);
 ir::ExprPtr num(double v, SourceLoc l = {});
 // The pole (CC) and FAUTO's feed: program-wide variables declared at the main program's start.
 extern const char *const kCcX, *const kCcY, *const kPr, *const kPa, *const kFauto;
+// The datum shift (cycle 7) and rotation angle (cycle 10), program-wide.
+extern const char *const kShiftX, *const kShiftY, *const kShiftZ, *const kRot;
+bool oldCycleRuns(int number);
 // Sections (call_section) need label names; LBL 0 gets one per occurrence.
 std::string labelOf(const Token &t);
 

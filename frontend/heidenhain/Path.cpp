@@ -22,6 +22,10 @@ const char *const kCcY = "_HEI_CCY";
 const char *const kPr = "_HEI_PR";
 const char *const kPa = "_HEI_PA";
 const char *const kFauto = "_HEI_FAUTO";
+const char *const kShiftX = "_HEI_SHIFTX";
+const char *const kShiftY = "_HEI_SHIFTY";
+const char *const kShiftZ = "_HEI_SHIFTZ";
+const char *const kRot = "_HEI_ROT";
 
 ExprPtr hglobal(const char *name, SourceLoc l) { return Expr::var(ir::VarSpace::Global, name, nullptr, l); }
 

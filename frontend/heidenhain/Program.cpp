@@ -124,6 +124,8 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
   std::vector<const char *> globals;
   if (pp.polar) globals = {kCcX, kCcY, kPr, kPa};
   if (pp.fauto) globals.push_back(kFauto);
+  if (pp.frames)
+    for (const char *g : {kShiftX, kShiftY, kShiftZ, kRot}) globals.push_back(g);
   std::vector<Op> decls;
   for (const char *g : globals) {
     Op d(OpKind::Declare, {});
