@@ -53,15 +53,21 @@ std::string nameText(const std::vector<Token> &t, size_t &k, std::string_view st
 }
 }  // namespace
 
+Op BlockParser::blockOp() const {
+  Op blk(OpKind::Block, {f_.file, b_.line, 1});
+  blk.set("n", Expr::number(b_.number, ir::Type::Int));
+  return blk;
+}
+
 bool BlockParser::parse() {
   SourceLoc bl{f_.file, b_.line, 1};
   const Token &kw = tok();
   if (f_.ended) return fail(kw, "a block after END PGM", "program-frame");
   if (!f_.begun && (b_.star || (!kw.isWord("BEGIN") && !kw.isWord("BEGINN"))))
     return fail(kw, "a Klartext program starts with BEGIN PGM <name> MM|INCH", "program-frame");
-  Op blk(OpKind::Block, bl);
-  blk.set("n", Expr::number(b_.number, ir::Type::Int));
-  out().push_back(std::move(blk));
+  // A label stands before its block (lint: a jump target ends dead code before the block), and
+  // END PGM after M2/M30 adds no block (it is no code after the end).
+  if (!kw.isWord("LBL") && !kw.isWord("END")) out().push_back(blockOp());
   if (b_.star || atEnd()) {  // `5 * text`, `5 ; text`
     if (!b_.comment.empty()) {
       Op c(OpKind::Comment, bl);
@@ -131,7 +137,8 @@ bool BlockParser::endPgm() {
   if (!unit.isWord(f_.inch ? "INCH" : "MM"))
     return fail(unit, fmt::format("END PGM must repeat the unit {} of BEGIN PGM", f_.inch ? "INCH" : "MM"), "program-frame");
   f_.ended = true;
-  if (f_.isMain) {  // reaching END PGM ends the run as M2 does; a called program returns
+  if (f_.isMain && !f_.sawEnd) {  // without M2/M30, END PGM ends the run; a called program returns
+    out().push_back(blockOp());
     Op o(OpKind::Stop, loc(t_[0]));
     o.set("kind", Expr::symbol("end"));
     out().push_back(std::move(o));
@@ -409,6 +416,7 @@ bool BlockParser::label() {
   Op o(OpKind::Label, l);
   o.set("name", Expr::string(name));
   out().push_back(std::move(o));
+  out().push_back(blockOp());
   f_.lastMove = SIZE_MAX;
   return true;
 }

@@ -37,6 +37,7 @@ public:
   std::string pgmName;              // BEGIN PGM name
   bool inch = false;                // BEGIN PGM … INCH
   bool begun = false, ended = false;
+  bool sawEnd = false;              // an M2/M30 block: END PGM adds no program end
   SourceLoc beginLoc;
   bool usesQL = false;              // declares the local QL array at its start
   std::map<std::string, size_t> labels;        // label name -> body index
@@ -131,6 +132,7 @@ private:
   bool fail(const Token &t, std::string msg, const char *rule = "syntax");
   bool expectWord(std::string_view w);
   bool atEnd() const { return tok().kind == Tok::End; }
+  ir::Op blockOp() const;  // `block n=` of this block
   ir::Region &out() { return f_.fn.body; }
 
   // statements (Block.cpp)

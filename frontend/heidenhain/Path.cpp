@@ -258,6 +258,7 @@ bool BlockParser::emitAfter(PathWords &w) {
     if (r.act == MAct::Spindle) out().push_back(spindleOp(r.arg, l));
     if (m == 6) out().push_back(auxOp(6, l));  // the machine's tool change program
     if (r.act == MAct::Coolant) out().push_back(coolantOp(r.arg, l));
+    if (r.act == MAct::End) f_.sawEnd = true;
     if (r.act == MAct::Stop || r.act == MAct::End) {
       Op o(OpKind::Stop, l);
       o.set("kind", Expr::symbol(r.arg));

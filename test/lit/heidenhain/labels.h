@@ -7,6 +7,9 @@
 ; RUN: %ncc compile --emit=motion --engine=jit %s --include=%S/Inputs > %t.j
 ; RUN: diff %t.e %t.j
 ; RUN: FileCheck %s < %t.e
+; Subprograms after M2 are reached by their labels: lint finds no dead code (nor at END PGM).
+; RUN: %ncc lint %s --include=%S/Inputs 2>&1 | FileCheck %s --check-prefix=LINT --allow-empty
+; LINT-NOT: warning
 ; CHECK: rapid X1 Y0 Z0 {{.*}} N12
 ; CHECK-NEXT: rapid X2 Y0 Z0 {{.*}} N15
 ; CHECK-NEXT: rapid X1 Y0 Z0 {{.*}} N12
