@@ -203,7 +203,7 @@ bool BlockParser::tool() {
     number = Expr::number(tok().num, ir::Type::Int);
     ++i_;
   } else if (tok().isWord("Q") || tok().isWord("QL") || tok().isWord("QR")) {
-    number = qParam(false);
+    number = qParam();
     if (!number) return false;
   }
   const Token &axis = tok();
@@ -266,7 +266,7 @@ bool BlockParser::tool() {
 
 bool BlockParser::assign() {
   SourceLoc l = loc();
-  ExprPtr target = qParam(true);
+  ExprPtr target = qParam();
   if (!target) return false;
   if (!tok().is("=")) return fail(tok(), "'=' expected after the parameter");
   ++i_;
@@ -326,7 +326,7 @@ bool BlockParser::fn() {
   }
   if (k > 14)
     return fail(n, fmt::format("FN {} is not simulated yet", k), "unsupported-code");
-  ExprPtr target = qParam(true);
+  ExprPtr target = qParam();
   if (!target) return false;
   if (!tok().is("=")) return fail(tok(), "'=' expected");
   ++i_;
@@ -379,22 +379,17 @@ std::string labelOf(const Token &t) {
   return t.kind == Tok::String ? "LBL:" + t.text : "LBL" + t.text;
 }
 
-ExprPtr BlockParser::labelName(std::string &name) {
+bool BlockParser::labelName(std::string &name) {
   const Token &t = tok();
   if (t.kind == Tok::String || (t.kind == Tok::Number && t.isInt)) {
-    if (t.kind == Tok::Number && t.num == 0) {
-      fail(t, "LBL 0 ends a subprogram: it cannot be called or jumped to");
-      return nullptr;
-    }
+    if (t.kind == Tok::Number && t.num == 0) return fail(t, "LBL 0 ends a subprogram: it cannot be called or jumped to");
     name = labelOf(t);
     ++i_;
-    return Expr::string(name);
+    return true;
   }
   if (t.isWord("Q") || t.isWord("QL") || t.isWord("QR") || t.isWord("QS"))
-    fail(t, "a label given by a parameter is not simulated yet", "unsupported-code");
-  else
-    fail(t, "a label number or \"name\" was expected");
-  return nullptr;
+    return fail(t, "a label given by a parameter is not simulated yet", "unsupported-code");
+  return fail(t, "a label number or \"name\" was expected");
 }
 
 bool BlockParser::label() {

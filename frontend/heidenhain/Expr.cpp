@@ -73,7 +73,7 @@ ExprPtr applyFn(const FnRow &f, ExprPtr a, SourceLoc l) {
 }
 }  // namespace
 
-ExprPtr BlockParser::qParam(bool write) {
+ExprPtr BlockParser::qParam() {
   const Token &w = tok();
   for (auto &q : kQ) {
     if (!w.isWord(q.prefix)) continue;
@@ -93,7 +93,6 @@ ExprPtr BlockParser::qParam(bool write) {
       f_.usesQL = true;
       return Expr::var(ir::VarSpace::Local, "QL", std::move(index), l);
     }
-    (void)write;
     return Expr::var(ir::VarSpace::QParam, q.prefix, std::move(index), l);
   }
   if (w.isWord("QS")) fail(w, "string parameters (QS) are not simulated yet", "unsupported-code");
@@ -115,7 +114,7 @@ ExprPtr BlockParser::signedValue() {
     return v;
   }
   if (tok().kind == Tok::Word && (tok().text == "Q" || tok().text == "QL" || tok().text == "QR" || tok().text == "QS")) {
-    v = qParam(false);
+    v = qParam();
     if (v && neg) v = Expr::unary(OpCode::Neg, std::move(v), l);
     return v;
   }
@@ -203,7 +202,7 @@ ExprPtr BlockParser::primary() {
     ++i_;
     return Expr::number(M_PI, ir::Type::Real, loc(t));
   }
-  if (t.kind == Tok::Word && (t.text == "Q" || t.text == "QL" || t.text == "QR" || t.text == "QS")) return qParam(false);
+  if (t.kind == Tok::Word && (t.text == "Q" || t.text == "QL" || t.text == "QR" || t.text == "QS")) return qParam();
   if (t.kind == Tok::End) fail(t, "the formula ends early");
   else fail(t, fmt::format("'{}' cannot stand in a formula", t.text));
   return nullptr;

@@ -117,7 +117,7 @@ public:
   // Expressions (Expr.cpp)
   ir::ExprPtr formula();           // + - * / ^, functions, parentheses
   ir::ExprPtr signedValue();       // [+|-] number | Q param: a word's value
-  ir::ExprPtr qParam(bool write);  // Q5, QL5, QR5 at the current token
+  ir::ExprPtr qParam();            // Q5, QL5, QR5 at the current token
 
 private:
   FileParser &f_;
@@ -169,8 +169,7 @@ private:
   ir::ExprPtr factor();
   ir::ExprPtr unary();
   ir::ExprPtr primary();
-  ir::ExprPtr labelName(std::string &name);      // LBL n / LBL "name": its label
-  friend struct Statements;
+  bool labelName(std::string &name);             // LBL n / LBL "name": its label
 };
 
 // Helpers shared by the statements.

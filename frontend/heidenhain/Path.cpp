@@ -151,7 +151,7 @@ bool BlockParser::words(PathWords &w, unsigned allowed, const char *stmt) {
         Token q = t;
         q.text = s.substr(1);
         t_[i_] = q;
-        if (!(w.feed = qParam(false))) return false;
+        if (!(w.feed = qParam())) return false;
       }
     } else if (s == "FU" || s == "FZ") {
       return fail(t, fmt::format("{} (feed per {}) is not simulated yet", s, s == "FU" ? "revolution" : "tooth"), "unsupported-code");
@@ -275,7 +275,7 @@ bool BlockParser::line() {
 }
 
 // Circles lie in the working plane of TOOL CALL Z: X and Y (and Z for a helix with CP).
-static bool planeOnly(BlockParser &, const PathWords &w, bool helix, const Coord *&bad) {
+static bool planeOnly(const PathWords &w, bool helix, const Coord *&bad) {
   for (auto &c : w.coords)
     if (c.axis != 'X' && c.axis != 'Y' && !(helix && c.axis == 'Z')) {
       bad = &c;
@@ -288,7 +288,7 @@ bool BlockParser::arc() {
   PathWords w;
   if (!words(w, kCoords | kComp | kFeed | kM | kDir, "C")) return false;
   const Coord *bad = nullptr;
-  if (!planeOnly(*this, w, false, bad)) return f_.error(bad->loc, "C moves in the working plane (X, Y) only");
+  if (!planeOnly(w, false, bad)) return f_.error(bad->loc, "C moves in the working plane (X, Y) only");
   if (w.coords.empty()) return fail(t_[0], "C needs its end point (X, Y)", "missing-word");
   if (!w.dr) return fail(t_[0], "C needs the direction DR+ or DR-", "missing-word");
   if (w.fmax) return f_.error(w.feedLoc, "FMAX on an arc: the TNC moves arcs at a feed", "syntax");
@@ -305,7 +305,7 @@ bool BlockParser::arcRadius() {
   PathWords w;
   if (!words(w, kCoords | kComp | kFeed | kM | kDir | kRadius, "CR")) return false;
   const Coord *bad = nullptr;
-  if (!planeOnly(*this, w, false, bad)) return f_.error(bad->loc, "CR moves in the working plane (X, Y) only");
+  if (!planeOnly(w, false, bad)) return f_.error(bad->loc, "CR moves in the working plane (X, Y) only");
   if (w.coords.empty()) return fail(t_[0], "CR needs its end point (X, Y)", "missing-word");
   if (!w.dr) return fail(t_[0], "CR needs the direction DR+ or DR-", "missing-word");
   if (!w.radius) return fail(t_[0], "CR needs the radius R (negative: more than 180 degrees)", "missing-word");
@@ -320,7 +320,7 @@ bool BlockParser::arcTangent() {
   PathWords w;
   if (!words(w, kCoords | kComp | kFeed | kM, "CT")) return false;
   const Coord *bad = nullptr;
-  if (!planeOnly(*this, w, false, bad)) return f_.error(bad->loc, "CT moves in the working plane (X, Y) only");
+  if (!planeOnly(w, false, bad)) return f_.error(bad->loc, "CT moves in the working plane (X, Y) only");
   if (w.coords.empty()) return fail(t_[0], "CT needs its end point (X, Y)", "missing-word");
   if (w.fmax) return f_.error(w.feedLoc, "FMAX on an arc: the TNC moves arcs at a feed", "syntax");
   if (!emitBefore(w)) return false;
@@ -332,7 +332,7 @@ bool BlockParser::centre() {
   PathWords w;
   if (!words(w, kCoords, "CC")) return false;
   const Coord *bad = nullptr;
-  if (!planeOnly(*this, w, false, bad)) return f_.error(bad->loc, "CC takes the working plane's coordinates (X, Y)");
+  if (!planeOnly(w, false, bad)) return f_.error(bad->loc, "CC takes the working plane's coordinates (X, Y)");
   f_.pp.polar = true;
   SourceLoc bl = loc(t_[0]);
   std::vector<Op> sets;
@@ -387,7 +387,7 @@ bool BlockParser::arcPolar() {
   PathWords w;
   if (!words(w, kCoords | kPolar | kComp | kFeed | kM | kDir, "CP")) return false;
   const Coord *bad = nullptr;
-  if (!planeOnly(*this, w, true, bad) || w.find('X') || w.find('Y'))
+  if (!planeOnly(w, true, bad) || w.find('X') || w.find('Y'))
     return f_.error((bad ? bad : w.find('X') ? w.find('X') : w.find('Y'))->loc, "CP takes PA (and Z for a helix), not X or Y",
                     "polar-with-xy");
   if (w.pr) return f_.error(w.prLoc, "CP keeps the radius: PR cannot be given", "syntax");
@@ -420,7 +420,6 @@ bool BlockParser::corner() {
   bool round = t_[0].isWord("RND");
   ++i_;
   if (round && !expectWord("R")) return false;
-  SourceLoc vl = loc();
   ExprPtr v = signedValue();
   if (!v) return false;
   if (!atEnd()) {
@@ -436,7 +435,6 @@ bool BlockParser::corner() {
   if (r[k - 1].get("chamfer") || r[k - 1].get("round"))
     return fail(t_[0], "two corners after one contour element", "corner-invalid");
   r[k - 1].set(round ? "round" : "chamfer", std::move(v));
-  (void)vl;
   return true;
 }
 
