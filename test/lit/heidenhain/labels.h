@@ -7,6 +7,9 @@
 ; RUN: %ncc compile --emit=motion --engine=jit %s --include=%S/Inputs > %t.j
 ; RUN: diff %t.e %t.j
 ; RUN: FileCheck %s < %t.e
+; The NC IR text (sections, the called program's function, the QL array) reads back alike:
+; RUN: %ncc compile --emit=ir %s --include=%S/Inputs -o %t.ncir
+; RUN: %ncc compile --emit=motion %t.ncir | FileCheck %s
 ; Subprograms after M2 are reached by their labels: lint finds no dead code (nor at END PGM).
 ; RUN: %ncc lint %s --include=%S/Inputs 2>&1 | FileCheck %s --check-prefix=LINT --allow-empty
 ; LINT-NOT: warning
