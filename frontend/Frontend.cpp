@@ -82,12 +82,14 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
     so.blockDeleteMask = opts.blockDeleteMask;
     so.searchDirs = opts.searchDirs;
     so.linkedFunctions = opts.linkedFunctions;
+    so.cycles = opts.cycles;
     return sin::parseSinumerikProgram(sm, file, so, diags, out);
   }
   case SourceKind::Heidenhain: {
     hei::HeiOptions ho;
     ho.searchDirs = opts.searchDirs;
     ho.linkedFunctions = opts.linkedFunctions;
+    ho.cycles = opts.cycles;
     return hei::parseHeidenhainProgram(sm, file, ho, diags, out);
   }
   case SourceKind::NCIR: return ir::parseModule(sm.text(file), file, sm, diags, out);

@@ -1,6 +1,7 @@
 // Front-end dispatch: picks the dialect of a source file and runs its front end. Every front
 // end produces NC IR (ir/NCIR.h); the textual IR (.ncir) is read by the IR parser.
 #pragma once
+#include "ir/CycleCatalog.h"
 #include "ir/ModeTable.h"
 #include "ir/NCIR.h"
 
@@ -22,6 +23,7 @@ struct FrontendOptions {
   bool lathe = false;                      // machine [controller] kind = "lathe"
   char latheSystem = 'A';                  // its gcode_system
   std::vector<std::string> linkedFunctions;  // defined by linked files (driver --link): not searched
+  CycleLookup cycles = nullptr;            // the cycle library's entries (the driver's; null: none)
 };
 
 // What a file holds: a dialect, or textual NC IR.

@@ -24,7 +24,12 @@ namespace ncc {
 enum class Word : uint8_t {
   X, Y, Z, A, B, C, U, V, W, I, J, K, R, P, Q, L, F, S, T, H, D, E, PolarR, PolarA, Chamfer, Round,
   ViaX, ViaY, ViaZ, Depth, Infeed, Surface, Clearance, Height, Stepover, Overlap, SideAllowance,
-  FloorAllowance, Direction, PlungeFeed, RoughFeed, Opening, ChamferLeg, Count
+  FloorAllowance, Direction, PlungeFeed, RoughFeed, Opening, ChamferLeg,
+  SplineWeight, SplineDegree,  // Sinumerik BSPLINE PW= (a point's weight) and SD= (the degree)
+  // Sinumerik POLY: a move with PolyIndex k carries the coefficients a_k (X Y Z) and b_k (weight)
+  // of the block's polynomials; the block's move then has the end point and PL (PolyInterval).
+  PolyIndex, PolyInterval, PolyDenominator,
+  Count
 };
 constexpr int kWords = (int)Word::Count;
 static_assert(kWords <= 64, "MachineCmd::mask has 64 bits");
@@ -32,7 +37,7 @@ constexpr const char *kWordKeys[kWords] = {
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R", "P", "Q", "L", "F", "S", "T", "H", "D", "E",
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
-    "plunge_feed", "feed", "opening", "chamfer_leg"};
+    "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator"};
 // A word's address letter (the key's one character), 0 for a named word.
 constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;
@@ -72,6 +77,11 @@ enum class CmdKind : uint8_t {
   Frame,        // sub: FrameSlot; sub2: FrameAction | FrameFlag bits; values in mask words
   Contour,      // sub: ContourAction; sub2: ContourUse; the consumer's parameters in U W R (the
                 //   region pocket's in its own words, kPocketParams)
+  Cycle,        // a cycle-library entry (docs/IR.md §5.8): sub the machining entry's index in
+                //   cycleLibrary() + 1 (0 none: the stored one) in its low byte, the word of the one
+                //   STRING argument + 1 in its high byte (its value: text), sub2 the position pattern's index
+                //   + 1 (0 none) | CycleAction << 12; the words are positional, not letters: word i
+                //   is parameter i of the machining entry, the pattern's follow (kCycleArgSlots)
   Count
 };
 
@@ -111,6 +121,17 @@ constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
 // `Island` captures collect the region, `Pocket` roughs it out; runtime/ExecutorRegion.cpp).
 enum class ContourAction : uint8_t { Data, Begin, End, Run };
 enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket };
+// What a `cycle` op does (docs/IR.md §5.8): Run the entry here (at each position of its
+// pattern), Define store it for Call (Heidenhain CYCL DEF), Modal store it and run it after each
+// following move (Sinumerik MCALL), Call run the stored one here, Cancel end Modal; Trigger (no
+// op: the engines send it for modal_trigger) runs the modal one as after a move.
+enum class CycleAction : uint8_t { Run, Define, Modal, Call, Cancel, Trigger };
+constexpr unsigned kCycleActionShift = 12;
+constexpr uint16_t kCyclePatternMask = (1u << kCycleActionShift) - 1;
+constexpr unsigned kCycleTextShift = 8;  // sub: entry index + 1 | (STRING argument's word + 1) << 8
+constexpr int kCycleArgSlots = kWords;  // the words of a command: parameters of entry and pattern together
+inline CycleAction cycleAction(uint16_t sub2) { return (CycleAction)(sub2 >> kCycleActionShift); }
+
 // The region pocket's parameters (docs/IR.md §5.6): their words and their names in the Motion IR
 // cycle_begin record (at most 7 characters).
 enum class PocketParam : uint8_t {
@@ -165,5 +186,15 @@ struct MachineCmd {
     text = nullptr;
   }
 };
+
+// The command the engines send for a `modal_trigger` op: the executor runs its modal cycle as
+// after a move (none set: nothing), as the engines run a modal_call.
+inline MachineCmd cycleTriggerCmd(SourceLoc loc) {
+  MachineCmd c;
+  c.kind = CmdKind::Cycle;
+  c.sub2 = (uint16_t)((unsigned)CycleAction::Trigger << kCycleActionShift);
+  c.loc = loc;
+  return c;
+}
 
 }  // namespace ncc

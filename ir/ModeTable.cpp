@@ -4,7 +4,7 @@
 namespace ncc {
 
 static const char *kGroupNames[] = {"motion", "plane", "units", "distance", "arc_distance",
-                                    "feed_mode", "retract", "path_mode"};
+                                    "feed_mode", "retract", "path_mode", "spline_start", "spline_end"};
 static_assert(sizeof(kGroupNames) / sizeof(kGroupNames[0]) == (size_t)ModeGroup::Count);
 
 static const ModeValueInfo kValues[] = {
@@ -45,6 +45,10 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::ProbeTowardNoError, ModeGroup::Motion, "probe_toward_no_error"},
     {ModeValue::ProbeAway, ModeGroup::Motion, "probe_away"},
     {ModeValue::ProbeAwayNoError, ModeGroup::Motion, "probe_away_no_error"},
+    {ModeValue::SplineAkima, ModeGroup::Motion, "spline_akima"},
+    {ModeValue::SplineB, ModeGroup::Motion, "spline_b"},
+    {ModeValue::SplineC, ModeGroup::Motion, "spline_c"},
+    {ModeValue::Poly, ModeGroup::Motion, "poly"},
     {ModeValue::XY, ModeGroup::Plane, "xy"},
     {ModeValue::ZX, ModeGroup::Plane, "zx"},
     {ModeValue::YZ, ModeGroup::Plane, "yz"},
@@ -62,6 +66,12 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::ExactPath, ModeGroup::PathMode, "exact_path"},
     {ModeValue::ExactStop, ModeGroup::PathMode, "exact_stop"},
     {ModeValue::Continuous, ModeGroup::PathMode, "continuous"},
+    {ModeValue::StartNatural, ModeGroup::SplineStart, "start_natural"},
+    {ModeValue::StartAuto, ModeGroup::SplineStart, "start_auto"},
+    {ModeValue::StartTangent, ModeGroup::SplineStart, "start_tangent"},
+    {ModeValue::EndNatural, ModeGroup::SplineEnd, "end_natural"},
+    {ModeValue::EndAuto, ModeGroup::SplineEnd, "end_auto"},
+    {ModeValue::EndTangent, ModeGroup::SplineEnd, "end_tangent"},
 };
 static_assert(sizeof(kValues) / sizeof(kValues[0]) == (size_t)ModeValue::Count);
 

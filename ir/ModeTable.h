@@ -7,7 +7,9 @@
 namespace ncc {
 
 enum class ModeGroup : uint8_t {
-  Motion, Plane, Units, Distance, ArcDistance, FeedMode, Retract, PathMode, Count
+  Motion, Plane, Units, Distance, ArcDistance, FeedMode, Retract, PathMode,
+  // How a Sinumerik A or C spline begins and ends (G groups 19 and 20: BNAT/BAUTO/BTAN, ENAT/EAUTO/ETAN)
+  SplineStart, SplineEnd, Count
 };
 
 // Values are unique across groups so a value alone identifies its group.
@@ -41,6 +43,11 @@ enum class ModeValue : uint8_t {
   // work, stop on contact; G38.3 the same without an error on a miss; G38.4 away from the work,
   // stop on loss of contact; G38.5 the same without an error.
   ProbeToward, ProbeTowardNoError, ProbeAway, ProbeAwayNoError,
+  // Sinumerik splines (runtime/ExecutorSinSpline.cpp): ASPLINE (Akima), BSPLINE, CSPLINE (cubic);
+  // modal, each move block adds a point; the curve is emitted when the spline ends.
+  SplineAkima, SplineB, SplineC,
+  // Sinumerik POLY: each block a polynomial (or rational) curve of degree <= 5 (ExecutorSinSpline.cpp)
+  Poly,
   // Plane
   XY, ZX, YZ,
   // Units
@@ -53,6 +60,8 @@ enum class ModeValue : uint8_t {
   RetractInitial, RetractR,
   // PathMode
   ExactPath, ExactStop, Continuous,
+  // SplineStart / SplineEnd: zero curvature (the default), from the first/last three points, tangent
+  StartNatural, StartAuto, StartTangent, EndNatural, EndAuto, EndTangent,
   Count
 };
 
@@ -72,6 +81,7 @@ inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && 
 inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ || v == ModeValue::TurnAlongX; }
 inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadVariable; }
 inline bool isPeckMotion(ModeValue v) { return v == ModeValue::PeckAlongZ || v == ModeValue::PeckAlongX; }
+inline bool isSinSplineMotion(ModeValue v) { return v >= ModeValue::SplineAkima && v <= ModeValue::SplineC; }
 inline bool isProbeMotion(ModeValue v) { return v >= ModeValue::ProbeToward && v <= ModeValue::ProbeAwayNoError; }
 
 }  // namespace ncc

@@ -162,9 +162,11 @@ bool constantCallee(const Expr &callee, std::string &name) {
 
 // The keys of `mode` are the mode groups (MachineCmd::modes has one slot per group) and the
 // G64 tolerances, which are words (P, Q).
-static constexpr char kModeKeys[] = "motion plane units distance arc_distance feed_mode retract path_mode";
+static constexpr char kModeKeys[] =
+    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end";
 static constexpr char kModeOpKeys[] =
-    "motion plane units distance arc_distance feed_mode retract path_mode tolerance naive_tolerance";
+    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end tolerance "
+    "naive_tolerance";
 static constexpr size_t countWords(std::string_view s) {
   size_t n = 0;
   for (size_t i = 0; i < s.size(); ++i) n += s[i] != ' ' && (i == 0 || s[i - 1] == ' ');
@@ -185,10 +187,10 @@ static const OpInfo kOps[] = {
     {OpKind::Spindle, "spindle", 0, 0, "dir", "angle way wait"},
     {OpKind::Coolant, "coolant", 0, 0, "", "flood mist"},
     {OpKind::Dwell, "dwell", 0, 0, "seconds", ""},
-    {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L H E polar_r polar_a chamfer chamfer_leg round via_x via_y via_z opening ic ac"},
+    {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L H E polar_r polar_a chamfer chamfer_leg round via_x via_y via_z opening weight degree poly_index interval denominator ic ac"},
     {OpKind::Home, "home", 0, 0, "ref", "X Y Z A B C U V W ic"},
     {OpKind::MachineMove, "machine_move", 0, 0, "rapid", "X Y Z A B C U V W"},
-    {OpKind::ToolLength, "tool_length", 0, 0, "", "h form X Y Z A B C U V W"},
+    {OpKind::ToolLength, "tool_length", 0, 0, "", "h D form X Y Z A B C U V W"},
     {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d d_default"},
     {OpKind::WorkOffset, "work_offset", 0, 0, "index", ""},
     {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C U V W R"},
@@ -198,6 +200,7 @@ static const OpInfo kOps[] = {
     {OpKind::Contour, "contour", 0, 0, "action",
      "use U W R type depth infeed surface clearance height stepover overlap side_allowance floor_allowance direction "
      "plunge_feed feed"},
+    {OpKind::Cycle, "cycle", 0, 0, "", "*"},
     {OpKind::Declare, "declare", 0, 0, "var type", "init len"},
     {OpKind::Assign, "assign", 0, 0, "target value", ""},
     {OpKind::If, "if", 1, 2, "cond", ""},

@@ -117,6 +117,8 @@ enum class OpKind : uint8_t {
                //   a programmable frame slot (ISO G52 G68 G51 G51.1, see docs/IR.md)
   Contour,     // action=data|begin|end|run use=finish|rough_z|rough_x|pattern|outline|island|pocket  contour capture
                //   (docs/IR.md): begin..end runs blocks whose path goes to the `use` consumer
+  Cycle,       // entry=<string>? pattern=<string>? action=run|define|modal|call|cancel a.<param>=… p.<param>=…
+               //   a cycle-library entry (runtime/cycles/Library.h) with run-time arguments (docs/IR.md §5.8)
   // data
   Declare,     // var=<var>[dims]? type=<symbol> init=<expr>? len=<int>?  (ir/Decls.h)
   Assign,      // target=<var> value=<expr>
@@ -190,7 +192,7 @@ struct Function {
   std::vector<Param> params;
   bool save = false;       // Sinumerik SAVE: the caller's modal state comes back on return (docs/IR.md §5.4)
   // The dialect its source was written in when it differs from the module's (an ISO program
-  // calling a Sinumerik cycle, docs/IR.md §5.7); Unknown: the module's. Only diagnostics and
+  // calling a Sinumerik cycle, docs/IR.md §5.8); Unknown: the module's. Only diagnostics and
   // tools read it: the ops themselves carry every dialect rule.
   Dialect dialect = Dialect::Unknown;
   Region body;

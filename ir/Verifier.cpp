@@ -229,6 +229,26 @@ private:
     }
   }
 
+  // The shape of a `cycle` op (docs/IR.md §5.7); sema checks the names against the library.
+  void checkCycle(const Op &op) {
+    const Expr *act = op.get("action");
+    std::string a = act ? act->str : "run";
+    bool entry = op.get("entry"), pattern = op.get("pattern");
+    for (auto &arg : op.args) {
+      std::string_view k = arg.key;
+      bool ok = k == "entry" || k == "pattern" || k == "action" || (k.size() > 2 && (k.substr(0, 2) == "a." || k.substr(0, 2) == "p."));
+      if (!ok) error(op.loc, fmt::format("'cycle' has unknown argument '{}'", k));
+      if ((k == "entry" || k == "pattern") && (!arg.value || arg.value->kind != ExprKind::String))
+        error(op.loc, fmt::format("'cycle' argument '{}' must be a string naming a library entry", k));
+      if (k.substr(0, 2) == "a." && !entry) error(op.loc, fmt::format("'cycle' argument '{}' needs entry=", k));
+      if (k.substr(0, 2) == "p." && !pattern) error(op.loc, fmt::format("'cycle' argument '{}' needs pattern=", k));
+    }
+    bool wantsEntry = a == "run" || a == "define" || a == "modal";
+    if (wantsEntry != entry)
+      error(op.loc, fmt::format("'cycle' action={} {} entry=", a, wantsEntry ? "needs" : "takes no"));
+    if (pattern && a != "run" && a != "call") error(op.loc, fmt::format("'cycle' action={} takes no pattern=", a));
+  }
+
   void checkControl(const Op &op, const std::string &name_) {
     switch (op.kind) {
     case OpKind::Break:
@@ -255,6 +275,7 @@ private:
             error(op.loc, fmt::format("'call_section' label '{}' is not in this function", l->str));
         }
       break;
+    case OpKind::Cycle: checkCycle(op); break;
     case OpKind::ModalCall:
     case OpKind::Call: {
       const Expr *c = op.get("callee");
@@ -430,7 +451,8 @@ private:
     if ((op.kind == OpKind::Assign && key == "value") || (op.kind == OpKind::Declare && key == "init") ||
         (op.kind == OpKind::Return && key == "value") ||
         ((op.kind == OpKind::Call || op.kind == OpKind::ModalCall) && key.rfind("a.", 0) == 0 &&
-         !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')))
+         !(key.size() > 2 && key[2] >= '0' && key[2] <= '9')) ||
+        (op.kind == OpKind::Cycle && (key.rfind("a.", 0) == 0 || key.rfind("p.", 0) == 0)))  // sema: numbers or a STRING
       return Ctx::Any;
     if (op.kind == OpKind::Declare && key == "len") return Ctx::Symbol;  // a constant (ir/Decls.cpp)
     if ((op.kind == OpKind::Move && (key == "ic" || key == "ac")) || (op.kind == OpKind::Home && key == "ic"))
@@ -438,7 +460,8 @@ private:
     if ((op.kind == OpKind::Call || op.kind == OpKind::ModalCall) && key == "callee") return Ctx::Callee;
     if (op.kind == OpKind::Goto && key == "label") return Ctx::Text;  // a computed one: any value as text
     if ((op.kind == OpKind::Comment && key == "text") || (op.kind == OpKind::Label && key == "name") ||
-        (op.kind == OpKind::CallSection && (key == "from" || key == "to")))
+        (op.kind == OpKind::CallSection && (key == "from" || key == "to")) ||
+        (op.kind == OpKind::Cycle && (key == "entry" || key == "pattern")))
       return Ctx::Constant;
     for (auto &r : kVarRules)
       if (r.kind == op.kind && key == r.key) return Ctx::Var;

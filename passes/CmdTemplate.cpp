@@ -1,5 +1,6 @@
 #include "passes/CmdTemplate.h"
 #include "ir/OpSymbols.h"
+#include "passes/CycleOp.h"
 
 #include <fmt/format.h>
 
@@ -17,7 +18,7 @@ bool isMachineOp(OpKind k) {
   case OpKind::Spindle: case OpKind::Coolant: case OpKind::Dwell: case OpKind::Move:
   case OpKind::Home: case OpKind::MachineMove: case OpKind::ToolLength: case OpKind::CutterComp:
   case OpKind::WorkOffset: case OpKind::SetOffset: case OpKind::Stop: case OpKind::Aux: case OpKind::Frame:
-  case OpKind::Contour:
+  case OpKind::Contour: case OpKind::Cycle:
     return true;
   default:
     return false;
@@ -67,6 +68,7 @@ static CmdKind cmdKindOf(OpKind k) {
   case OpKind::Aux: return CmdKind::Aux;
   case OpKind::Frame: return CmdKind::Frame;
   case OpKind::Contour: return CmdKind::Contour;
+  case OpKind::Cycle: return CmdKind::Cycle;
   default: return CmdKind::Count;
   }
 }
@@ -175,6 +177,30 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   case OpKind::Contour:
     if (!symbolArg("action", c.sub) || !symbolArg("use", c.sub2)) return false;
     break;
+  case OpKind::Cycle: {  // the entries' places in the library, each argument in its positional word
+    CycleOpShape shape;
+    std::string err;
+    if (!resolveCycleOp(op, shape, err)) {
+      diags.error(op.loc, err);
+      return false;
+    }
+    auto &lib = cycleLibrary();
+    c.sub = shape.entry ? (uint16_t)(shape.entry - lib.data() + 1) : 0;
+    c.sub2 = (uint16_t)((shape.pattern ? shape.pattern - lib.data() + 1 : 0) | (unsigned)shape.action << kCycleActionShift);
+    for (auto &a : op.args) {
+      bool ofPattern = a.key.rfind("p.", 0) == 0;
+      if (!ofPattern && a.key.rfind("a.", 0) != 0) continue;
+      int i = cycleParamIndex(ofPattern ? *shape.pattern : *shape.entry, std::string_view(a.key).substr(2));
+      Word w = cycleArgWord(shape, ofPattern, i);
+      if ((int)w == shape.textWord) {  // the constant STRING argument: the command's text
+        c.text = a.value->str.c_str();
+        c.sub |= (uint16_t)((shape.textWord + 1) << kCycleTextShift);
+      } else {
+        addWord(w, a.value.get());
+      }
+    }
+    return true;
+  }
   case OpKind::WorkOffset: {
     double v = 1;
     if (!constNumber(op.get("index"), v) || v < 1 || v > 9) {
@@ -242,7 +268,7 @@ Op cmdToOp(const MachineCmd &c) {
                                  OpKind::Spindle, OpKind::Coolant, OpKind::Dwell, OpKind::Move,
                                  OpKind::Home, OpKind::MachineMove, OpKind::ToolLength, OpKind::CutterComp,
                                  OpKind::WorkOffset, OpKind::SetOffset, OpKind::Stop, OpKind::Aux,
-                                 OpKind::Frame, OpKind::Contour};
+                                 OpKind::Frame, OpKind::Contour, OpKind::Cycle};
   static_assert(sizeof(kinds) / sizeof(kinds[0]) == (size_t)CmdKind::Count);
   Op op(kinds[(unsigned)c.kind], c.loc);
   auto real = [](double v) { return Expr::number(v, Type::Real); };
@@ -305,6 +331,26 @@ Op cmdToOp(const MachineCmd &c) {
     if (c.sub2 & 2) op.set("mist", Expr::symbol(c.sub & 2 ? "on" : "off"));
     return op;
   case CmdKind::ToolChange: return op;
+  case CmdKind::Cycle: {
+    auto &lib = cycleLibrary();
+    CycleOpShape shape;
+    shape.action = cycleAction(c.sub2);
+    if (c.sub & 0xff) shape.entry = &lib[(c.sub & 0xff) - 1];
+    const int textWord = (c.sub >> kCycleTextShift) - 1;
+    if (c.sub2 & kCyclePatternMask) shape.pattern = &lib[(c.sub2 & kCyclePatternMask) - 1];
+    if (shape.action != CycleAction::Run) op.set("action", Expr::symbol(opSymbolName(op.kind, "action", (uint8_t)shape.action)));
+    for (const CycleDef *d : {shape.entry, shape.pattern}) {
+      if (!d) continue;
+      bool ofPattern = d == shape.pattern;
+      op.set(ofPattern ? "pattern" : "entry", Expr::string(d->name));
+      auto names = cycleParamNames(*d);
+      for (size_t i = 0; i < names.size(); ++i)
+        if (Word w = cycleArgWord(shape, ofPattern, (int)i); c.has(w) || (int)w == textWord)
+          op.set((ofPattern ? "p." : "a.") + std::string(names[i]),
+                 (int)w == textWord ? Expr::string(c.text ? c.text : "") : real(c.get(w)));
+    }
+    return op;
+  }
   default: break;
   }
   for (auto &kw : kKeyWords)

@@ -553,7 +553,8 @@ struct Evaluator::Impl {
       }
       case IK::Call: call(*in.op, fr); curFn = &cf; ++pc; break;
       case IK::ModalCall: setModal(*in.op, fr); ++pc; break;
-      case IK::ModalTrigger:  // as after a move: not inside the modal callee itself
+      case IK::ModalTrigger:  // as after a move: not inside the modal callee itself; the executor's modal cycle too
+        if (!sink.exec(cycleTriggerCmd(in.op->loc))) throw ProgramEnd{};
         if (!modal.callee.empty() && !inModal) runModal(in.op->loc, fr);
         ++pc;
         break;

@@ -4,6 +4,7 @@
 #include "ir/Builtins.h"
 #include "ir/Decls.h"
 #include "ir/SystemVars.h"
+#include "passes/CycleOp.h"
 #include "passes/Pass.h"
 
 #include <fmt/format.h>
@@ -107,6 +108,16 @@ struct Sema {
         bool computed = c && !c->isConstant();  // looked up at run time
         if (!computed && (!c || !constantCallee(*c, name) || !m.find(name)))
           diags.error(op.loc, fmt::format("call to unknown program '{}'", name));
+      }
+      if (op.kind == OpKind::Cycle) {  // the library's entries and parameters (passes/CycleOp.h)
+        CycleOpShape shape;
+        std::string err;
+        if (!resolveCycleOp(op, shape, err)) diags.error(op.loc, err);
+        for (auto &a : op.args)
+          if (a.value && (a.key.rfind("a.", 0) == 0 || a.key.rfind("p.", 0) == 0) && !numeric(a.value->type) &&
+              a.value->kind != ExprKind::String)
+            diags.error(a.value->loc.line ? a.value->loc : op.loc,
+                        fmt::format("cycle argument '{}' must be a number or a constant string", a.key.substr(2)));
       }
       if (op.kind == OpKind::Assign || op.kind == OpKind::Declare) {  // stores the declared type refuses
         bool assign = op.kind == OpKind::Assign;

@@ -177,6 +177,7 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
         return error("a G5.2 NURBS must be ended with G5.3 before another motion (rs274 would drop its control points)",
                      "spline-invalid");
       if (v == ModeValue::NurbsEnd && !nurbsEnd()) return false;
+      if (sinSpline.open && v != sinSpline.kind && !sinSplineEnd()) return false;
       if (v == ModeValue::SplineCubic || v == ModeValue::SplineQuadratic) splineReturn = st.motion;
       if ((v == ModeValue::ThreadMulti || isPeckMotion(v)) && st.motion != v) threadReturn = st.motion;  // one-shot
       if (v != st.motion) turnSet = false;  // a new G90/G94 run takes its words afresh
@@ -198,6 +199,8 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
       break;
     }
     case ModeGroup::Units: st.units = v; break;
+    case ModeGroup::SplineStart: st.splineStart = v; break;
+    case ModeGroup::SplineEnd: st.splineEnd = v; break;
     case ModeGroup::Distance: st.distance = v; break;
     case ModeGroup::ArcDistance: st.arcDistance = v; break;
     case ModeGroup::Retract: st.retract = v; break;
@@ -228,11 +231,22 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
 
 bool Executor::Impl::execToolLength(const MachineCmd &c) {
   if ((ToolLengthForm)c.sub != ToolLengthForm::Table) return offsetToolLength(c, (ToolLengthForm)c.sub);
-  // Without H (rs274 G43): the tool in the spindle.
-  double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
   ToolData t;
-  if (!offsetData(hv, "H", t)) return false;
-  int h = (int)hv;
+  int h;
+  if (c.has(Word::D)) {  // Sinumerik D<n>: edge n of the tool in the spindle
+    const int d = (int)c.get(Word::D);
+    h = st.toolInSpindle;
+    if (h == 0) return error(fmt::format("D{} needs a tool in the spindle (T… M6)", d), "unknown-tool");
+    if (!hasEdge(h, d)) return error(fmt::format("tool {} has no cutting edge D{}", h, d), "unknown-tool");
+    t = edgeData(h, d);
+    activeEdge = d;
+  } else {
+    // Without H (rs274 G43): the tool in the spindle.
+    double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
+    if (!offsetData(hv, "H", t)) return false;
+    h = (int)hv;
+    activeEdge = 0;
+  }
   if (machine.controller.lathe() && comp.active() && h != st.toolLengthH)
     return error("a tool offset change with tool nose radius compensation on is not supported: cancel it with G40 first",
                  "cutcomp-conflict");
@@ -362,6 +376,11 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
             "cutcomp-without-d");
   ToolData t;
   if (!offsetData(cutterD, "D", t)) return false;
+  compEdge = 0;
+  if (activeEdge > 0 && c.sub2 == 1 && !c.has(Word::D)) {  // Sinumerik: the active edge's radius
+    compEdge = activeEdge;
+    t = edgeData(st.toolInSpindle, compEdge);
+  }
   double radius = t.radius;
   // Compensation works on the machine path, in the active plane: a mirrored frame swaps the
   // sides (G41 <-> G42, as the 808D manual's table 2-12 says); a frame that tilts the plane is
@@ -523,6 +542,7 @@ bool Executor::Impl::execStop(const MachineCmd &c) {
     if (nurbs.open)
       return error("a G5.2 NURBS must be ended with G5.3 before the program ends (rs274 would drop its control points)",
                    "spline-invalid");
+    if (sinSpline.open && !sinSplineEnd()) return false;
     cornerFlush("no move follows");
     comp.stop();  // flush the pending compensated move
     compExit = false;
@@ -574,6 +594,7 @@ bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
+  if (c.kind == CmdKind::Cycle) return x.execCycle(c);  // its words are parameters, not axes
   // Never let NaN or infinity reach positions: a diagnostic instead.
   for (WordMask m = c.mask; m; m &= m - 1) {  // only the words present (all 64 bits)
     int i = __builtin_ctzll(m);
@@ -683,7 +704,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.emit(r);  // with compensation on it waits for the pending move
     return true;
   }
-  case CmdKind::Move: return x.execMove(c);
+  case CmdKind::Move: return x.execMove(c) && x.modalCycleAfterMove(c);
   case CmdKind::Home: x.curBlockFrame = true; return x.execHome(c);
   case CmdKind::Contour: return x.execContour(c);
   case CmdKind::MachineMove: return x.execMachineMove(c);
@@ -811,6 +832,7 @@ bool Executor::restoreModes(SourceLoc loc) {
 
 bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
+  if (ranToEnd && x.sinSpline.open && !x.sinSplineEnd()) return false;
   if (ranToEnd) x.cornerFlush("no move follows");
   x.comp.stop();
   if (x.capture.active) {  // its records never reached the sinks

@@ -22,6 +22,7 @@ struct ModalState {
   ModeValue feedMode = ModeValue::PerMinute;
   ModeValue retract = ModeValue::RetractInitial;
   ModeValue pathMode = ModeValue::Continuous;
+  ModeValue splineStart = ModeValue::StartNatural, splineEnd = ModeValue::EndNatural;  // Sinumerik BNAT ENAT
   double feed = 0;          // program units per minute (or rev)
   double speed = 0;
   int spindle = 0;          // 0 stop, 1 cw, 2 ccw

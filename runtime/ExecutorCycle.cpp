@@ -219,10 +219,15 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
 
 bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
                         const CycleArgs *patternArgs, SourceLoc loc) {
-  Impl &x = *impl_;
-  x.loc = loc;
+  impl_->loc = loc;
+  return impl_->runLibraryCycle(&cycle, args, pattern, patternArgs);
+}
+
+bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args, const CycleDef *pattern,
+                                     const CycleArgs *patternArgs) {
+  Impl &x = *this;
   std::string err;
-  if (!checkCycleArgs(cycle, args, err) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
+  if ((cyc && !checkCycleArgs(*cyc, args, err)) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
     return x.error(err, "cycle-invalid");
   if (x.st.units != ModeValue::MM) return x.error("library cycles run in mm (G21) only", "unsupported-code");
   if (!x.compForbids("Cannot use canned cycles with cutter compensation on")) return false;
@@ -237,23 +242,86 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
   ctx.speed = x.st.speed;
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
   std::vector<CycleStep> steps;
-  bool ok = pattern ? expandPattern(*pattern, *patternArgs, cycle, args, ctx, steps, err)
-                    : cycle.expand ? cycle.expand(args, ctx, steps, err)
-                                   : (err = std::string(cycle.name) + " is a position pattern: give it a cycle to run", false);
-  if (!ok) return x.error(std::string(pattern ? pattern->name : cycle.name) + ": " + err, "cycle-invalid");
+  const char *name = pattern ? pattern->name : cyc->name;
+  bool ok = pattern ? expandPattern(*pattern, *patternArgs, cyc, args, ctx, steps, err)
+                    : cyc->expand ? cyc->expand(args, ctx, steps, err)
+                                  : (err = "a position pattern: give it a cycle to run", false);
+  if (!ok) return x.error(std::string(name) + ": " + err, "cycle-invalid");
   for (const CycleStep &s : steps)
-    if ((s.kind == CycleStepKind::Feed || s.kind == CycleStepKind::Arc) && s.feed <= 0 && !x.checkFeed(cycle.name))
+    if ((s.kind == CycleStepKind::Feed || s.kind == CycleStepKind::Arc) && s.feed <= 0 && !x.checkFeed(name))
       return false;
   for (CycleStep &s : steps)  // program coordinates -> the offset frame
     for (int i = 0; i < 3; ++i) s.pos[i] += x.frameOffset(i), s.centre[i] += x.frameOffset(i);
-  // The bracket names the cycle (and the pattern it runs on) with the arguments as given.
+  // The bracket names the pattern and the cycle it runs ("sin.HOLES1+sin.CYCLE81"; a pattern
+  // alone only positions) with the arguments as given, the pattern's prefixed "p" (both may
+  // have a parameter of one name: _DMODE).
   MotionRecord begin = x.record(RecordKind::CycleBegin);
-  begin.text = pattern ? std::string(pattern->name) + "+" + cycle.name : cycle.name;
+  begin.text = pattern ? std::string(pattern->name) + (cyc ? std::string("+") + cyc->name : "") : cyc->name;
+  for (auto &[k, v] : args.text) begin.text += "|" + k + "=" + v;  // STRING arguments after the name
+  if (pattern)
+    for (auto &[k, v] : patternArgs->text) begin.text += "|p" + k + "=" + v;
   for (auto &[k, v] : args.num) begin.setParam(k, v);
   if (pattern)
-    for (auto &[k, v] : patternArgs->num) begin.setParam(k, v);
+    for (auto &[k, v] : patternArgs->num) begin.setParam("p" + k, v);
+  // Machine minus program position (mx my mz, each when not 0) under a pure translation, else
+  // frame=1: an emitter writing the call back shifts the entry's absolute positions
+  // (CycleDef::coords) by it.
+  if (x.pf.linear || x.rotated()) begin.setParam("frame", 1);
+  else
+    for (int i = 0; i < 3; ++i)
+      if (double m = x.st.position[i] - here[i]; m != 0) begin.setParam(std::string("m") + (char)('x' + i), m);
   x.emit(begin);
   return x.runSteps(steps);
+}
+
+// The `cycle` op (docs/IR.md §5.8): the command's words are the entries' parameters by
+// position (passes/CycleOp.h); absent words are omitted arguments.
+static bool cycleArgsOf(const MachineCmd &c, const CycleDef &def, int first, CycleArgs &out, std::string &err) {
+  auto names = cycleParamNames(def);
+  const int textWord = (c.sub >> kCycleTextShift) - 1;  // the STRING argument's word
+  for (size_t i = 0; i < names.size(); ++i) {
+    Word w = (Word)(first + (int)i);
+    if ((int)w == textWord) out.text[std::string(names[i])] = c.text ? c.text : "";
+    if (!c.has(w)) continue;
+    if (!std::isfinite(c.get(w))) {
+      err = std::string(def.name) + " parameter " + std::string(names[i]) + ": invalid number";
+      return false;
+    }
+    out.num[std::string(names[i])] = c.get(w);
+  }
+  return true;
+}
+
+bool Executor::Impl::execCycle(const MachineCmd &c) {
+  const auto &lib = cycleLibrary();
+  const CycleDef *entry = c.sub & 0xff ? &lib[(c.sub & 0xff) - 1] : nullptr;
+  unsigned p = c.sub2 & kCyclePatternMask;
+  const CycleDef *pattern = p ? &lib[p - 1] : nullptr;
+  CycleArgs args, patternArgs;
+  std::string err;
+  if ((entry && !cycleArgsOf(c, *entry, 0, args, err)) ||
+      (pattern && !cycleArgsOf(c, *pattern, entry ? (int)cycleParamNames(*entry).size() : 0, patternArgs, err)))
+    return error(err, "bad-number");
+  switch (cycleAction(c.sub2)) {
+  case CycleAction::Define:
+  case CycleAction::Modal:
+    storedCycle = {entry, args, cycleAction(c.sub2) == CycleAction::Modal};
+    return true;
+  case CycleAction::Cancel: storedCycle = {}; return true;
+  case CycleAction::Trigger:
+    if (!storedCycle.modal) return true;
+    return runLibraryCycle(storedCycle.def, storedCycle.args, nullptr, nullptr);
+  case CycleAction::Call:  // a pattern without a stored cycle only positions (Sinumerik)
+    if (!storedCycle.def && !pattern) return error("no cycle defined to call", "cycle-invalid");
+    return runLibraryCycle(storedCycle.def, storedCycle.args, pattern, pattern ? &patternArgs : nullptr);
+  case CycleAction::Run: break;
+  }
+  return runLibraryCycle(entry, args, pattern, pattern ? &patternArgs : nullptr);
+}
+
+bool Executor::Impl::modalCycleAfterMove(const MachineCmd &c) {
+  if (!storedCycle.modal || !(c.mask & kAxisMask)) return true;
+  return runLibraryCycle(storedCycle.def, storedCycle.args, nullptr, nullptr);
 }
 
 }  // namespace ncc

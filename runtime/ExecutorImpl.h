@@ -4,6 +4,7 @@
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Frame.h"
+#include "runtime/cycles/Library.h"
 #include "runtime/cycles/Region.h"
 #include "runtime/cycles/Thread.h"
 #include "runtime/Executor.h"
@@ -133,6 +134,9 @@ struct Executor::Impl {
   std::vector<CycleStep> steps;
 
   int cutterD = 0;
+  // Sinumerik D<n>: the cutting edge of the spindle tool whose length is active (0: the ISO
+  // offset number toolLengthH) and whose radius G41/G42 without D took (compEdge).
+  int activeEdge = 0, compEdge = 0;
   // Cutter radius compensation: moves go through `comp` while it is active (radius > 0);
   // compExit marks the move after G40, which starts from the compensated position.
   CompPlaneSink compOut;  // declared before comp, which writes to it
@@ -184,7 +188,8 @@ struct Executor::Impl {
   void emit(const MotionRecord &r) {
     if (isMoveRecord(r.kind) || r.kind == RecordKind::Dwell)
       threadChain = r.kind == RecordKind::Thread;
-    if (corner.active) corner.held.push_back(r);
+    if (sinSpline.open && !sinSpline.flushing) sinSpline.held.push_back({sinSpline.segs.size(), r});
+    else if (corner.active) corner.held.push_back(r);
     else if (!(queuedBehindMotion(r.kind) && comp.hold(toCompPlane(r, compOut.plane)))) sink.record(r);
   }
   // What rs274 queues behind a move that cutter compensation still holds (its interp_queue: feed,
@@ -278,6 +283,7 @@ struct Executor::Impl {
   std::map<std::pair<int, int>, ToolEdge> edgeEdits;
   ToolWrite toolWrite = ToolWrite::OnSelect;
   int offsetEdge(int t) const;          // tool t's edge 1 or only edge
+  ToolData edgeData(int t, int d) const;  // edge d of tool t with the program's edits and wear
   bool hasEdge(int t, int d) const;     // t a valid tool with edge d
   ToolEdge edgeOf(int t, int d) const;  // geometry and wear, edited or the machine's
   // Stores an edit; false with the problem and its rule id.
@@ -355,6 +361,39 @@ struct Executor::Impl {
     FrameMatrix frame{};  // the program -> machine transform and units when the curve began
     ModeValue units = ModeValue::MM;
   } nurbs;
+  // Sinumerik ASPLINE/BSPLINE/CSPLINE (ExecutorSinSpline.cpp): each move block adds a point
+  // (machine coordinates); the curve needs the points after it, so it is emitted when the spline
+  // ends (another motion mode, the program's end), with the records of the blocks in between
+  // (`held`, after the segment they followed) in their place.
+  struct SinSpline {
+    bool open = false, flushing = false;
+    ModeValue kind = ModeValue::SplineC;
+    int degree = 3;                      // BSPLINE SD
+    std::vector<AxisVec> points;         // the start first
+    std::vector<double> weights;         // BSPLINE PW, one per point
+    struct Seg {
+      int64_t blockNumber;
+      SourceLoc loc;
+      double feed;
+      bool exactStop;
+    };
+    std::vector<Seg> segs;               // the block of each point after the start
+    std::vector<std::pair<size_t, MotionRecord>> held;  // (segments before it, record)
+    Vec3 startTangent{};                 // BTAN: the direction the path had at the start
+    bool hasStartTangent = false;
+  } sinSpline;
+  // POLY: the coefficients a_k of X Y Z and b_k of the denominator (k = 2..5, program units)
+  // of the block being executed, cleared by its move.
+  struct Poly {
+    std::array<std::array<double, 4>, 6> a{};  // [k][axis]: X Y Z, the denominator at 3
+    bool any = false;
+    bool outside = false;  // polynomials of a block without POLY active: its move must be G1
+  } poly;
+  bool polyOutsideMove();
+  bool polyCoefficients(const MachineCmd &c);
+  bool polyMove(const MachineCmd &c);
+  bool sinSplinePoint(const MachineCmd &c);
+  bool sinSplineEnd();
   bool cycle(const MachineCmd &c);
   // --- lathe single cycles G90/G94 (ExecutorTurning.cpp) ---
   bool turnCycle(const MachineCmd &c);
@@ -425,6 +464,17 @@ struct Executor::Impl {
   bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.
   bool runSteps(const std::vector<CycleStep> &steps);
+  // --- library cycles of the `cycle` op (ExecutorCycle.cpp, docs/IR.md §5.8) ---
+  bool execCycle(const MachineCmd &c);
+  bool runLibraryCycle(const CycleDef *cycle, const CycleArgs &args, const CycleDef *pattern,
+                       const CycleArgs *patternArgs);  // Executor::runCycle at `loc`; a pattern alone positions
+  // After a move with axis words: the modal cycle there (Sinumerik MCALL).
+  bool modalCycleAfterMove(const MachineCmd &c);
+  struct StoredCycle {
+    const CycleDef *def = nullptr;  // action=define / modal; null: none
+    CycleArgs args;
+    bool modal = false;
+  } storedCycle;
 };
 
 }  // namespace ncc

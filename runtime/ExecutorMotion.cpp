@@ -111,6 +111,8 @@ bool Executor::Impl::pathOut(const MotionRecord &r) {
 bool Executor::Impl::execMove(const MachineCmd &c) {
   const bool turnCorner = st.motion == ModeValue::Linear && (c.has(Word::I) || c.has(Word::K) || c.has(Word::R));
   if ((c.has(Word::Chamfer) || c.has(Word::ChamferLeg) || c.has(Word::Round) || turnCorner) && !cornerRequest(c)) return false;
+  if (c.has(Word::PolyIndex)) return polyCoefficients(c);
+  if (poly.outside && !polyOutsideMove()) return false;
   switch (st.motion) {
   case ModeValue::Rapid:
     if (!(c.mask & kTargetMask)) return true;
@@ -129,6 +131,10 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::SplineCubic:
   case ModeValue::SplineQuadratic: return bezier(c, st.motion == ModeValue::SplineCubic);
   case ModeValue::Nurbs: return nurbsPoint(c);
+  case ModeValue::SplineAkima:
+  case ModeValue::SplineB:
+  case ModeValue::SplineC: return sinSplinePoint(c);
+  case ModeValue::Poly: return polyMove(c);
   case ModeValue::TurnAlongZ:
   case ModeValue::TurnAlongX:
   case ModeValue::ThreadSingle: return turnCycle(c);

@@ -58,6 +58,8 @@ bool Executor::Impl::offsetData(double n, const char *word, ToolData &out) {
   return true;
 }
 
+ToolData Executor::Impl::edgeData(int t, int d) const { return resulting(edgeOf(t, d)); }
+
 ToolData Executor::Impl::toolNumberData(int t) const { return resulting(edgeOf(t, offsetEdge(t))); }
 
 namespace {
@@ -106,7 +108,11 @@ bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, 
     int nt, nd;
     return number > 0 && offsetRef(number, nt, nd) && nt == t && nd == d;
   };
-  if (now && st.cutterComp != 0 && inUse(cutterD) && data.radius != resulting(edgeOf(t, d)).radius) {
+  // A Sinumerik D<n> edge in use is addressed by the spindle tool and n, not by a number.
+  auto edgeInUse = [&](int edge) { return t == st.toolInSpindle && d == edge; };
+  const bool radiusInUse = compEdge > 0 ? edgeInUse(compEdge) : inUse(cutterD);
+  const bool lengthInUse = activeEdge > 0 ? edgeInUse(activeEdge) : inUse(st.toolLengthH);
+  if (now && st.cutterComp != 0 && radiusInUse && data.radius != resulting(edgeOf(t, d)).radius) {
     rule = "unsupported-code";
     err = fmt::format("the radius of D{} changes during cutter compensation (tool_write \"immediate\"): not "
                       "supported; write it before G41/G42",
@@ -114,7 +120,7 @@ bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, 
     return false;
   }
   edgeEdits[{t, d}] = e;
-  if (now && inUse(st.toolLengthH) && toolLength != data.length) {
+  if (now && lengthInUse && toolLength != data.length) {
     toolLength = data.length;
     MotionRecord r = record(RecordKind::ToolLength);
     r.value = toolLength;

@@ -238,6 +238,7 @@ void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn) {
 }
 
 int ncrt_modal_trigger(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
+  if (!ctx->sink.exec(cycleTriggerCmd({file, line, col}))) return NCRT_ERROR;  // the executor's modal cycle
   return ctx->modal_hook ? ctx->modal_hook(ctx, &ctx->storage, file, line, col) : NCRT_OK;
 }
 int ncrt_save_modal(ncrt_ctx *ctx) { return ctx->sink.saveModal() ? NCRT_OK : NCRT_ERROR; }

@@ -126,7 +126,7 @@ const char *ncrt_str(ncrt_ctx *ctx);
 void ncrt_set_modal_hook(ncrt_ctx *ctx, void *fn);
 /* SAVE (CmdSink saveModal/restoreModal) around a call: NCRT_OK or NCRT_ERROR (reported). */
 int ncrt_save_modal(ncrt_ctx *ctx);
-/* modal_trigger: the modal-call function now, as after a move (none set: nothing). */
+/* modal_trigger: the executor's modal cycle (cycleTriggerCmd), then the modal-call function, as after a move (none set: nothing). */
 int ncrt_modal_trigger(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 int ncrt_restore_modal(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col);
 /* A computed goto (ir/Jumps.h findJump over the function's `count` entries, an ir::JumpEntry

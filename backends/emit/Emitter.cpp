@@ -377,6 +377,7 @@ void Emitter::record(const MotionRecord &r) {
       if (isMoveRecord(r.kind)) flag = r.kind == RecordKind::Thread;
     }
   } afterThread{afterThread_, r};
+  if (inNativeCycle_) return skipCycleRecord(r);
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear: move(r); break;
@@ -509,7 +510,7 @@ void Emitter::record(const MotionRecord &r) {
     writeBlock({letter + std::to_string(r.ivalue)}, r.blockNumber);
     break;
   }
-  case RecordKind::CycleBegin:  // the expanded moves are written (no cycle output yet)
+  case RecordKind::CycleBegin: nativeCycle(r); break;  // else the expanded moves are written
   case RecordKind::CycleEnd:
   case RecordKind::FrameChange:  // positions are machine coordinates: frames are not written
   case RecordKind::Count: break;

@@ -10,6 +10,10 @@
 #include <cctype>
 #include <cmath>
 
+namespace ncc {
+struct CycleDef;  // runtime/cycles/Library.h
+}
+
 namespace ncc::emit::detail {
 
 
@@ -118,6 +122,12 @@ private:
   void comment(const std::string &text);
   void message(const std::string &text, const MotionRecord &r);
   void coolant(const MotionRecord &r, bool flood);
+  // Library cycles written back as their calls (EmitterCycle.cpp, Sinumerik).
+  bool nativeCycle(const MotionRecord &r);
+  bool cycleArguments(const MotionRecord &r, const CycleDef &d, const char *prefix, std::string &out);
+  void skipCycleRecord(const MotionRecord &r);
+  bool inNativeCycle_ = false, cycleMoved_ = false;
+  AxisVec cycleEnd_{};
   std::vector<std::string> coolantCodes();
 
   const Machine &machine_;

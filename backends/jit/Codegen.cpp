@@ -27,9 +27,9 @@ using ir::OpKind;
 
 
 // The LLVM struct types below mirror these C++ layouts.
-static_assert(offsetof(MachineCmd, sub) == 2 && offsetof(MachineCmd, modes) == 7 && offsetof(MachineCmd, mask) == 16 &&
-              offsetof(MachineCmd, blockNumber) == 24 && offsetof(MachineCmd, loc) == 32 &&
-              offsetof(MachineCmd, text) == 48 && offsetof(MachineCmd, w) == 56 && sizeof(MachineCmd) == 56 + 8 * kWords,
+static_assert(offsetof(MachineCmd, sub) == 2 && offsetof(MachineCmd, modes) == 7 && offsetof(MachineCmd, mask) == 24 &&
+              offsetof(MachineCmd, blockNumber) == 32 && offsetof(MachineCmd, loc) == 40 &&
+              offsetof(MachineCmd, text) == 56 && offsetof(MachineCmd, w) == 64 && sizeof(MachineCmd) == 64 + 8 * kWords,
               "MachineCmd layout changed: update cmdTy");
 static_assert(offsetof(ncrt_storage, max_loop) == 32 && offsetof(ncrt_storage, depth) == 44 &&
               offsetof(ncrt_storage, poll) == 48 && sizeof(ncrt_storage) == 56,

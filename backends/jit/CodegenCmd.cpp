@@ -16,7 +16,9 @@ using namespace llvm;
 // Runs up to this length are MachineCmd arrays (no decoding); longer runs are packed.
 static constexpr size_t kSmallRun = 16;
 
-static bool hasText(const MachineCmd &c) { return c.kind == CmdKind::Comment || c.kind == CmdKind::Message; }
+static bool hasText(const MachineCmd &c) {
+  return c.kind == CmdKind::Comment || c.kind == CmdKind::Message || c.kind == CmdKind::Cycle;
+}
 
 Constant *Codegen::cmdConstant(const MachineCmd &c) {
   uint8_t modes[kMaxModes];

@@ -16,50 +16,28 @@ using ir::Op;
 using ir::OpKind;
 
 namespace {
-const CycleInfo kCycles[] = {
-    {200, false, "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395"},
-    {201, false, "Q200 Q201 Q206 Q211 Q208 Q203 Q204"},
-    {202, false, "Q200 Q201 Q206 Q211 Q208 Q203 Q204 Q214 Q336"},
-    {203, false, "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395"},
-    {206, false, "Q200 Q201 Q206 Q211 Q203 Q204"},
-    {207, false, "Q200 Q201 Q239 Q203 Q204"},
-    {220, true, "Q216 Q217 Q244 Q245 Q246 Q247 Q241 Q200 Q203 Q204 Q301 Q365"},
-    {221, true, "Q225 Q226 Q237 Q238 Q242 Q243 Q224 Q200 Q203 Q204 Q301"},
-    {232, false, "Q389 Q225 Q226 Q227 Q386 Q218 Q219 Q202 Q369 Q370 Q207 Q385 Q253 Q200 Q357 Q204"},
-    {233, false, "Q215 Q389 Q350 Q218 Q219 Q227 Q386 Q369 Q202 Q370 Q207 Q385 Q253 Q357 Q200 Q204 Q347 Q348 Q349 Q220 Q368 Q338 Q367"},
-    {251, false, "Q215 Q218 Q219 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439"},
-    {252, false, "Q215 Q223 Q368 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q370 Q366 Q385 Q439"},
-    {253, false, "Q215 Q218 Q219 Q368 Q374 Q367 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q366 Q385 Q439"},
-    {254, false, "Q215 Q219 Q368 Q375 Q367 Q216 Q217 Q376 Q248 Q378 Q377 Q207 Q351 Q201 Q202 Q369 Q206 Q338 Q200 Q203 Q204 Q366 Q385 Q439"},
-    {256, false, "Q218 Q424 Q219 Q425 Q220 Q368 Q224 Q367 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q437 Q215 Q369 Q338 Q385"},
-    {257, false, "Q223 Q222 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q376 Q215 Q369 Q338 Q385"},
-    {258, false, "Q573 Q571 Q222 Q572 Q224 Q220 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q215 Q369 Q338 Q385"},
-};
 // Act at their definition (digest §3.0): transformations 7 8 10 11 19 26 247, dwell 9, SL data
 // 14 20 270, tolerance 32, patterns 220 221, and the touch-probe cycles.
 bool defActiveNumber(int n) {
   static const std::set<int> k = {7, 8, 9, 10, 11, 14, 19, 20, 26, 32, 220, 221, 247, 270};
   return k.count(n) || (n >= 400 && n < 500) || (n >= 1400 && n < 1500);
 }
-}  // namespace
 
-const CycleInfo *findCycle(int number) {
-  for (auto &c : kCycles)
-    if (c.number == number) return &c;
-  return nullptr;
+bool takes(std::string_view params, std::string_view q) {
+  for (size_t at = 0; (at = params.find(q, at)) != std::string_view::npos; at += q.size()) {
+    size_t end = at + q.size();
+    if ((at == 0 || params[at - 1] == ' ') && (end == params.size() || params[end] == ' ')) return true;
+  }
+  return false;
 }
+}  // namespace
 
 bool defActiveCycle(int number) { return defActiveNumber(number); }
 
-bool cycleTakes(const CycleInfo &c, std::string_view q) {
-  std::string_view p = c.params;
-  size_t at = 0;
-  while ((at = p.find(q, at)) != std::string_view::npos) {
-    size_t end = at + q.size();
-    if ((at == 0 || p[at - 1] == ' ') && (end == p.size() || p[end] == ' ')) return true;
-    at = end;
-  }
-  return false;
+Op cycleCall(SourceLoc l) {
+  Op o(OpKind::Cycle, l);
+  o.set("action", Expr::symbol("call", l));
+  return o;
 }
 
 // The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 9 DWELL TIME, 10 ROTATION.
@@ -149,7 +127,12 @@ bool BlockParser::cycl() {
     ++i_;
     std::string how = tok().isWord("POS") ? " POS" : tok().isWord("PAT") ? " PAT" : "";
     if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
-    return fail(t_[0], fmt::format("cycle {} is not simulated yet (CYCL CALL{})", f_.cycle, how), "unsupported-code");
+    if (!f_.cycleRuns || !how.empty())
+      return fail(t_[0], fmt::format("cycle {} is not simulated yet (CYCL CALL{})", f_.cycle, how), "unsupported-code");
+    PathWords w;  // CYCL CALL M3: the M functions around the call
+    if (!words(w, kM, "CYCL CALL") || !emitBefore(w)) return false;
+    out().push_back(cycleCall(bl));
+    return emitAfter(w);
   }
   if (!expectWord("DEF")) return false;
   const Token &n = tok();
@@ -159,10 +142,21 @@ bool BlockParser::cycl() {
   ++i_;
   if (sub > 0 && number == f_.oldCycle && oldCycleRuns(number)) return oldCycleBlock(number, n);
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
-  // The parameter lines: Qn=value, each at most once, each one the cycle takes.
-  const CycleInfo *info = findCycle(number);
-  bool defActive = (info && info->defActive) || (!info && defActiveCycle(number));
-  if (sub <= 0 && !defActive) f_.cycle = number;  // a new definition replaces the last, also when it is wrong
+  // The parameter lines: Qn=value, each at most once, each one the cycle takes. A cycle of the
+  // library (`ncc cycle --list`) becomes the `cycle` op: a CALL-active one is stored (define)
+  // for CYCL CALL and M99, a pattern (220, 221) runs the stored one at its positions at once.
+  CycleSignature lib;
+  bool inLib = sub < 0 && f_.pp.opts.cycles && f_.pp.opts.cycles(fmt::format("hei.{}", number), lib);
+  bool defActive = defActiveCycle(number);
+  if (sub <= 0 && !defActive) {  // a new definition replaces the last, also when it is wrong
+    f_.cycle = number;
+    f_.cycleRuns = inLib;
+  }
+  Op c(OpKind::Cycle, bl);
+  if (inLib) {
+    c.set(lib.pattern ? "pattern" : "entry", Expr::string(lib.name, bl));
+    c.set("action", Expr::symbol(lib.pattern ? "call" : "define", bl));
+  }
   std::set<std::string> seen;
   while (!atEnd()) {
     const Token &q = tok();
@@ -174,17 +168,27 @@ bool BlockParser::cycl() {
     ++i_;
     if (seen.count(name)) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
     seen.insert(name);
-    if (info && !cycleTakes(*info, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
-    if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FAUTO") ||
-        tok().isWord("FU") || tok().isWord("FZ")) {
+    if (inLib && !takes(lib.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
+    ExprPtr v;
+    if (tok().isWord("FAUTO")) {  // the feed of the last TOOL CALL, taken now (L570)
+      f_.pp.fauto = true;
+      v = hglobal(kFauto, loc());
+      ++i_;
+    } else if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FU") ||
+               tok().isWord("FZ")) {
+      if (inLib)
+        return fail(tok(), fmt::format("{}={} is not simulated yet", name, tok().kind == Tok::String ? "\"…\"" : tok().text),
+                    "unsupported-code");
       ++i_;
       continue;
+    } else if (!(v = signedValue())) {
+      return false;
     }
-    if (!signedValue()) return false;
+    if (inLib) c.set((lib.pattern ? "p." : "a.") + name, std::move(v));
   }
-  Op c(OpKind::Comment, bl);
-  c.set("text", Expr::string(fmt::format("CYCL DEF {}", n.text)));
-  out().push_back(std::move(c));
+  Op note(OpKind::Comment, bl);
+  note.set("text", Expr::string(fmt::format("CYCL DEF {}", n.text)));
+  out().push_back(std::move(note));
   if (sub > 0) {  // a sub-block of an old-style cycle: its n.0 block was refused already
     if (f_.cycleLoc.line == 0 || f_.oldCycle != number)
       return fail(n, fmt::format("CYCL DEF {} without CYCL DEF {}.0 before it", n.text, number), "cycle-invalid");
@@ -193,7 +197,14 @@ bool BlockParser::cycl() {
   if (sub == 0) f_.oldCycle = number;
   if (sub == 0 && oldCycleRuns(number)) return true;  // its sub-blocks act
   f_.cycleLoc = bl;
-  if (defActive) return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
+  if (inLib && lib.pattern) {
+    if (f_.cycle < 0) return fail(n, fmt::format("cycle {} runs the machining cycle defined before it: there is none", number), "cycle-invalid");
+    if (!f_.cycleRuns)
+      return fail(n, fmt::format("cycle {} is not simulated yet (called by cycle {})", f_.cycle, number), "unsupported-code");
+  } else if (defActive) {
+    return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
+  }
+  if (inLib) out().push_back(std::move(c));
   return true;
 }
 

@@ -1,20 +1,13 @@
-// The Heidenhain cycles the front end knows: their parameter lists (the digests' §3, the same
-// lists the cycle library's hei.* entries take) and whether they act at CYCL DEF.
+// The Heidenhain cycles: which act where they are defined. Their parameters come from the cycle
+// library (FrontendOptions::cycles: the `hei.*` entries of `ncc cycle --list`).
 #pragma once
-#include <string_view>
+#include "ir/NCIR.h"
 
 namespace ncc::hei {
 
-struct CycleInfo {
-  int number;
-  bool defActive;      // acts where it is defined (220, 221, transformations …)
-  const char *params;  // "Q200 Q201 …"; null: not checked
-};
-
-// Null when ncc has no row for the cycle.
-const CycleInfo *findCycle(int number);
-// The DEF-active cycles without a row (coordinate transformations, SL data, probing …).
+// Acts where it is defined (220, 221, transformations, SL data, probing …), digest §3.0.
 bool defActiveCycle(int number);
-bool cycleTakes(const CycleInfo &c, std::string_view q);
+// `cycle action=call`: runs the stored cycle here (CYCL CALL, M99).
+ir::Op cycleCall(SourceLoc l);
 
 }  // namespace ncc::hei

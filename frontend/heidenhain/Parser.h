@@ -46,6 +46,7 @@ public:
   std::vector<std::pair<std::string, SourceLoc>> gotos;  // FN 9-12 targets
   size_t lastMove = SIZE_MAX;       // body index of the last move (RND and CHF attach to it)
   int cycle = -1;                   // the last CYCL DEF of a CALL-active cycle (static)
+  bool cycleRuns = false;           // … and the library has it (CYCL CALL and M99 lower to `cycle`)
   int oldCycle = -1;                // the last old-style CYCL DEF n.0
   SourceLoc cycleLoc;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");

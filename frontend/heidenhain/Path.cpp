@@ -3,6 +3,7 @@
 // the block start, radius compensation, the move, the M functions that act at its end.
 // Circles are about the pole CC (program-wide variables, so Q parameters and incremental
 // poles work); polar end points are computed from it (docs/HEIDENHAIN.md).
+#include "frontend/heidenhain/Cycles.h"
 #include "frontend/heidenhain/Parser.h"
 
 #include <fmt/format.h>
@@ -181,7 +182,8 @@ bool BlockParser::words(PathWords &w, unsigned allowed, const char *stmt) {
                       "program-frame");
     if (r.act == MAct::CycleCall) {
       if (f_.cycle < 0) return f_.error(ml, fmt::format("{} without a cycle definition (CYCL DEF) before it", r.arg), "cycle-invalid");
-      return f_.error(ml, fmt::format("cycle {} is not simulated yet ({})", f_.cycle, r.arg), "unsupported-code");
+      if (!f_.cycleRuns) return f_.error(ml, fmt::format("cycle {} is not simulated yet ({})", f_.cycle, r.arg), "unsupported-code");
+      if (m == 89) return f_.error(ml, "the modal cycle call M89 is not simulated yet", "unsupported-code");
     }
   }
   return true;
@@ -258,6 +260,7 @@ bool BlockParser::emitAfter(PathWords &w) {
     if (r.act == MAct::Spindle) out().push_back(spindleOp(r.arg, l));
     if (m == 6) out().push_back(auxOp(6, l));  // the machine's tool change program
     if (r.act == MAct::Coolant) out().push_back(coolantOp(r.arg, l));
+    if (r.act == MAct::CycleCall) out().push_back(cycleCall(l));  // M99: at the block's end point
     if (r.act == MAct::End) f_.sawEnd = true;
     if (r.act == MAct::Stop || r.act == MAct::End) {
       Op o(OpKind::Stop, l);

@@ -107,6 +107,54 @@ bool BlockParser::readNumber(double &v, bool &hasPoint, bool &any) {
   return true;
 }
 
+// The fast path of a block of plain words, the bulk of a flat program: letters each with an
+// optional sign and an unsigned decimal number of at most 15 digits (exact in a double, so the
+// value is readNumber's: G1 Y.25), and an N with an integer. Anything else (comments,
+// O, parameters, expressions, statements, block skip, long numbers, a second N, anything
+// malformed) returns false before a diagnostic or a change to p_: parseItems then reads the
+// block from its start, so every message and its location stay the general path's.
+bool BlockParser::parsePlainWords(ParsedBlock &out) {
+  const char *q = p_, *end = end_;
+  while (q < end) {
+    const char *at = q;
+    if (!isLetter(*q)) return false;
+    const char letter = upper(*q++);
+    if (q < end && isLetter(*q)) return false;  // a statement or function name
+    while (q < end && isBlank(*q)) ++q;
+    bool neg = false;
+    if (q < end && (*q == '-' || *q == '+') && letter != 'N') {
+      neg = *q++ == '-';
+      while (q < end && isBlank(*q)) ++q;
+    }
+    uint64_t mantissa = 0;
+    int digits = 0, fraction = 0;
+    for (; q < end && isDigit(*q); ++q, ++digits) mantissa = mantissa * 10 + (uint64_t)(*q - '0');
+    const bool point = q < end && *q == '.';
+    if (point)
+      for (++q; q < end && isDigit(*q); ++q, ++digits, ++fraction) mantissa = mantissa * 10 + (uint64_t)(*q - '0');
+    if (digits == 0 || digits > 15) return false;  // 10^15 < 2^53: the quotient below is exact
+    if (q < end && !isBlank(*q) && !isLetter(*q)) return false;
+    if (letter == 'N') {  // a block number: an integer, once (parseItems reports the rest)
+      if (point || out.n >= 0) return false;
+      out.n = (int64_t)mantissa;
+    } else if (letter == 'O') {
+      return false;
+    } else {
+      IsoWord &w = out.words.emplace_back();
+      w.letter = letter;
+      w.hasPoint = point;
+      w.value = (double)mantissa / kExactPow10[fraction];
+      if (neg) w.value = -w.value;
+      w.loc = locAt(at);
+    }
+    while (q < end && isBlank(*q)) ++q;
+  }
+  p_ = q;
+  out.content = true;
+  out.plain = true;
+  return true;
+}
+
 bool BlockParser::parseComment(ParsedBlock &out) {
   const char *open = p_;
   int level = 0;
@@ -544,7 +592,8 @@ static void fanucSemantics(ParsedBlock &b) {
 }
 
 bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out) {
-  out.clear();
+  if (out.plain) out.clearPlain();
+  else out.clear();
   begin_ = p_ = line.data();
   end_ = begin_ + line.size();
   file_ = file;
@@ -559,6 +608,9 @@ bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, P
     out.percent = true;
     return true;
   }
+  if (parsePlainWords(out)) return true;
+  out.words.clear();  // what the fast path read before it gave up
+  out.n = -1;
   bool ok = parseItems(out);
   if (ok && flavour_ == Flavour::Fanuc) fanucSemantics(out);
   return ok && !failed_;

@@ -65,8 +65,10 @@ struct MCodeInfo {
   MKind kind;
   MGroup group;
   int arg;          // Stop: StopKind; Spindle: 0 stop 1 cw 2 ccw; Coolant: 7 mist 8 flood 9 off
-  const char *what = nullptr;  // Unsupported: what the code does (for the message)
-  bool rs274Only = false;      // the meaning is LinuxCNC's; elsewhere the code is an aux code
+  const char *what;  // Unsupported: what the code does (for the message)
+  bool rs274Only;    // the meaning is LinuxCNC's; elsewhere the code is an aux code
+  // No default member initializers: always aggregate-initialized (omitted members are zero), and
+  // a lowered block's unused M slots then cost nothing.
 };
 // Returns the built-in meaning, or an Aux entry for any other code.
 MCodeInfo findMCode(int32_t code, bool rs274);

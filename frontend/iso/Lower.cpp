@@ -103,6 +103,44 @@ void BlockLowerer::lowerComments(const ParsedBlock &b, Region &out) {
   }
 }
 
+// The table entry of a constant G word (the flavour's tables, the lathe's system); null when an
+// error was reported: unknown, unsupported, or a code whose LinuxCNC meaning ncc does not lower.
+const GCodeInfo *BlockLowerer::Block::lookupG(const IsoWord &w) {
+  const GCodeInfo *gi = nullptr;
+  if (w.value >= 0 && w.value < 100000) {  // range first: llround of huge values is undefined
+    double t = w.value * 10;
+    long long c10 = std::llround(t);
+    if (std::fabs(t - (double)c10) < 1e-6) gi = L.lathe_ ? findTurningGCode((int32_t)c10, L.system_) : findGCode((int32_t)c10);
+    if (!gi && L.lathe_ && std::fabs(t - (double)c10) < 1e-6 && findGCode((int32_t)c10)) {
+      L.diags_.error(w.loc, fmt::format("{} is not a turning G code (808D G-code system {})", gName((int32_t)c10), L.system_),
+                     "unknown-code");
+      return nullptr;
+    }
+  }
+  if (gi && L.flavour_ != Flavour::RS274 && (gi->code10 == 70 || gi->code10 == 80))
+    gi = nullptr;  // LinuxCNC's lathe diameter/radius modes; no such code in the 808D table
+  if (L.flavour_ == Flavour::RS274 && w.value >= 0 && w.value < 100000)  // also codes only rs274 has (G33.1)
+    if (const GCodeInfo *r = findRs274GCode((int32_t)std::llround(w.value * 10));
+        r && std::fabs(w.value * 10 - r->code10) < 1e-6)
+      gi = r;
+  if (!gi) {
+    L.diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
+    return nullptr;
+  }
+  // Codes whose LinuxCNC meaning differs from Fanuc's and that are not lowered: G76 threading.
+  if (const char *what = L.flavour_ == Flavour::RS274 ? rs274Meaning(gi->code10) : nullptr) {
+    L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), what),
+                   "unsupported-code");
+    return nullptr;
+  }
+  if (gi->kind == GKind::Unsupported) {
+    L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
+                 "unsupported-code");
+    return nullptr;
+  }
+  return gi;
+}
+
 bool BlockLowerer::Block::classify() {
   bool ok = true;
   macroCall = false;  // G65, G66: every other address is an argument (M too)
@@ -116,43 +154,14 @@ bool BlockLowerer::Block::classify() {
         ok = false;
         continue;
       }
-      const GCodeInfo *gi = nullptr;
-      if (w.value >= 0 && w.value < 100000) {  // range first: llround of huge values is undefined
-        double t = w.value * 10;
-        long long c10 = std::llround(t);
-        if (std::fabs(t - (double)c10) < 1e-6) gi = L.lathe_ ? findTurningGCode((int32_t)c10, L.system_) : findGCode((int32_t)c10);
-        if (!gi && L.lathe_ && std::fabs(t - (double)c10) < 1e-6 && findGCode((int32_t)c10)) {
-          L.diags_.error(w.loc, fmt::format("{} is not a turning G code (808D G-code system {})", gName((int32_t)c10), L.system_),
-                         "unknown-code");
-          ok = false;
-          continue;
-        }
-      }
-      if (gi && L.flavour_ != Flavour::RS274 && (gi->code10 == 70 || gi->code10 == 80))
-        gi = nullptr;  // LinuxCNC's lathe diameter/radius modes; no such code in the 808D table
-      if (L.flavour_ == Flavour::RS274 && w.value >= 0 && w.value < 100000)  // also codes only rs274 has (G33.1)
-        if (const GCodeInfo *r = findRs274GCode((int32_t)std::llround(w.value * 10));
-            r && std::fabs(w.value * 10 - r->code10) < 1e-6)
-          gi = r;
-      if (!gi) {
-        L.diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
+      const GCodeInfo *gi = L.cachedGCode(w.value);
+      if (!gi && !(gi = lookupG(w))) {
         ok = false;
         continue;
       }
-      // Codes whose LinuxCNC meaning differs from Fanuc's and that are not lowered: G76 threading.
-      if (const char *what = L.flavour_ == Flavour::RS274 ? rs274Meaning(gi->code10) : nullptr) {
-        L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), what),
-                       "unsupported-code");
-        ok = false;
-        continue;
-      }
-      if (gi->kind == GKind::Unsupported) {
-        L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
-                     "unsupported-code");
-        ok = false;
-        continue;
-      }
+      L.cacheGCode(w.value, gi);
       GUse &slot = gs[(size_t)gi->group];
+      if (!(groups & (1u << (unsigned)gi->group))) slot = {};  // not cleared per block (LowerBlock.h)
       // Fanuc/808D keep the canned cycles in their own group (09), so `G80 G0` is legal there:
       // the group-01 code ends the cycle anyway. A cycle with a group-01 code is not
       // (ISO-CYM-15); RS274NGC has both in one group and rejects either pair.
@@ -295,7 +304,7 @@ bool BlockLowerer::Block::setup() {
   if (macroCall) {
     // G65/G66 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
-      if (gs[g].info && gs[g].info->kind != GKind::MacroCall && gs[g].info->kind != GKind::ModalMacro) {
+      if (G((GGroup)g) && gs[g].info->kind != GKind::MacroCall && gs[g].info->kind != GKind::ModalMacro) {
         L.diags_.error(gs[g].word->loc, fmt::format("{} must not share its block with other G codes", macroName()),
                        "syntax");
         return false;

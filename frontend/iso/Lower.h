@@ -54,6 +54,20 @@ private:
   ModeValue pathMotion_ = ModeValue::Rapid;  // the last G0-G3 (Fanuc's G80 returns to it)
   ModeValue feedMode_ = ModeValue::PerMinute;
   ModeValue units_ = ModeValue::MM;
+  // G0..G99 as classify found them (no error): its table look-ups depend only on the code, the
+  // flavour and the lathe's system, all fixed here, so a flat program's G1s look up once.
+  static constexpr int kGCacheSize = 100;
+  const GCodeInfo *gCache_[kGCacheSize] = {};
+  static int gCacheSlot(double code) {
+    return code >= 0 && code < kGCacheSize && (double)(int)code == code ? (int)code : -1;
+  }
+  const GCodeInfo *cachedGCode(double code) const {
+    int i = gCacheSlot(code);
+    return i >= 0 ? gCache_[i] : nullptr;
+  }
+  void cacheGCode(double code, const GCodeInfo *gi) {
+    if (int i = gCacheSlot(code); i >= 0) gCache_[i] = gi;
+  }
 };
 
 }  // namespace ncc::iso

@@ -23,7 +23,7 @@ inline const char *offsetAxes(bool lathe) { return lathe ? "XYZABC" : "XYZABCUVW
 // calculator mode (the 808D's G74-G76 P and Q, seed L3842-3843).
 enum class Scale : uint8_t { None, Linear, Rotary, Feed, DwellX, Increment };
 
-inline Scale scaleOf(char letter) {
+constexpr Scale scaleOf(char letter) {
   switch (letter) {
   case 'X': case 'Y': case 'Z': case 'U': case 'V': case 'W': case 'I': case 'J': case 'K': case 'Q': case 'R':
     return Scale::Linear;
@@ -39,9 +39,12 @@ std::string gName(int32_t code10);
 // One block being lowered: its words by letter, the G and M codes found, the phases that emit
 // ops in execution order. Members of BlockLowerer (modal tracking, diagnostics) are reached via L.
 struct BlockLowerer::Block {
+  // The slots below are not cleared per block (a plain block would pay for all of them): a G
+  // slot is valid where `groups` has its bit, a word slot where `present` has it, an M slot
+  // below nm.
   struct GUse {
-    const GCodeInfo *info = nullptr;
-    const IsoWord *word = nullptr;
+    const GCodeInfo *info;
+    const IsoWord *word;
   };
   struct MUse {
     MCodeInfo info;
@@ -57,10 +60,10 @@ struct BlockLowerer::Block {
       for (; *letters; ++letters) m |= bit(*letters);
       return m;
     }
-    IsoWord *w[28] = {};
+    IsoWord *w[28];  // valid where present has the bit
     uint32_t used = 0, present = 0;
-    IsoWord *get(char c) { return w[slot(c)]; }
-    bool has(char c) const { return w[slot(c)] != nullptr; }
+    IsoWord *get(char c) { return has(c) ? w[slot(c)] : nullptr; }
+    bool has(char c) const { return (present & bit(c)) != 0; }
     bool hasAny(const char *letters) const { return (present & bits(letters)) != 0; }
   };
 
@@ -105,7 +108,7 @@ struct BlockLowerer::Block {
     if (!w.hasPoint && f != 1.0) return Expr::number(constValue(w, f), ir::Type::Real, w.loc);
     return Expr::number(w.value, w.hasPoint ? ir::Type::Real : ir::Type::Int, w.loc);
   }
-  const GCodeInfo *G(GGroup g) const { return gs[(size_t)g].info; }
+  const GCodeInfo *G(GGroup g) const { return groups & (1u << (unsigned)g) ? gs[(size_t)g].info : nullptr; }
   SourceLoc gloc(GGroup g) const { return gs[(size_t)g].word->loc; }
   ExprPtr take(char c, Scale s) {
     IsoWord *w = bw.get(c);
@@ -183,6 +186,7 @@ struct BlockLowerer::Block {
   bool latheTool();                 // T0101 on a lathe
   bool latheToolOffset(Op &op, SourceLoc loc);  // G10 P X Z R on a lathe (LowerFrames.cpp)
   bool latheAxisWords(Op &op);      // U W on a lathe (system A)
+  const GCodeInfo *lookupG(const IsoWord &w);  // a constant G word's table entry (null: reported)
   bool classify();       // G and M codes through the tables; conflicts and duplicates
   bool setup();          // feed mode ... return level
   bool cornerTaken = false;  // a ,C / ,R went to the move

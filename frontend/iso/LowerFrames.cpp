@@ -187,7 +187,7 @@ bool BlockLowerer::Block::frameOps() {
   }
   if (group == GGroup::Rotation)  // 808D: G68 and G69 blocks hold no other G code
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
-      if (gs[g].info && (GGroup)g != GGroup::Rotation) {
+      if (G((GGroup)g) && (GGroup)g != GGroup::Rotation) {
         L.diags_.error(gs[g].word->loc,
                        fmt::format("{} must not share its block with other G codes", gName(gi->code10)), "syntax");
         return false;

@@ -7,6 +7,8 @@
 // makes of lowerActions' ops, in the same order (test/unit/LeanLowerTest.cpp compares both).
 #include "frontend/iso/LowerBlock.h"
 
+#include <array>
+
 namespace ncc::iso {
 
 namespace {
@@ -28,6 +30,7 @@ bool isArc(ModeValue m) { return m == ModeValue::ArcCW || m == ModeValue::ArcCCW
 
 // Every word constant, no assignment, comment, corner or statement: checked on the parsed block.
 static bool plainWords(const ParsedBlock &b) {
+  if (b.plain) return true;  // the parser's fast path read nothing else
   if (!b.assigns.empty() || !b.comments.empty() || !b.corner.empty() || b.stmt != StmtKind::None ||
       b.programNumber >= 0)
     return false;
@@ -84,11 +87,21 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
   if (!moveWords) return true;  // I J K R alone still move an arc (as motion()); F alone does not
   c.kind = CmdKind::Move;
   c.loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
+  // A move word's command word and scale by its slot (the letters leanFits lets through).
+  struct MoveWord {
+    Word word;
+    Scale scale;
+  };
+  static constexpr auto kMoveWords = [] {
+    std::array<MoveWord, 28> t{};
+    const char *letters = "XYZABCUVWIJKR";
+    for (int i = 0; letters[i]; ++i) t[Words::slot(letters[i])] = {(Word)((int)Word::X + i), scaleOf(letters[i])};
+    return t;
+  }();
+  static_assert(Word::R == (Word)((int)Word::X + 12));
   for (uint32_t m = moveWords; m; m &= m - 1) {
-    const char letter = Words::letter(__builtin_ctz(m));
-    Word w;
-    wordFromLetter(letter, w);
-    c.set(w, constValue(*bw.w[__builtin_ctz(m)], factor(scaleOf(letter))));
+    const int slot = __builtin_ctz(m);
+    c.set(kMoveWords[slot].word, constValue(*bw.w[slot], factor(kMoveWords[slot].scale)));
   }
   return issue();
 }

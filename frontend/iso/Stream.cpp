@@ -4,107 +4,164 @@
 #include "frontend/iso/Lower.h"
 
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
+#include <string_view>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace ncc::iso {
 
 static inline char up(char c) { return (c >= 'a' && c <= 'z') ? (char)(c - 32) : c; }
 static inline bool letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
-// The scan's byte classes: most bytes of a part program are digits, signs and points (Other),
-// which the scan only notes as content; one table lookup skips them.
-enum class ByteClass : uint8_t { Other, Blank, Special };
-struct ByteClasses {
-  ByteClass c[256];
-  constexpr ByteClasses() : c{} {
-    for (int i = 0; i < 256; ++i) {
-      bool l = (i >= 'A' && i <= 'Z') || (i >= 'a' && i <= 'z');
-      bool s = i == '(' || i == ')' || i == ';' || i == '%';
-      c[i] = l || s ? ByteClass::Special : i == ' ' || i == '\t' || i == '\r' ? ByteClass::Blank : ByteClass::Other;
-    }
+// The pre-scan's byte classes. Most bytes of a part program are digits, signs, points, blanks
+// and address letters that cannot begin anything needing the whole program: one table lookup
+// skips them. Word: the letters of M and G codes and the initials of the statements (IF, DO,
+// END, GOTO, WHILE), which are looked at more closely.
+enum class ScanClass : uint8_t { Skip, Word, Comment, EndOfBlock, EndOfLine };
+struct ScanClasses {
+  ScanClass c[256];
+  constexpr ScanClasses() : c{} {
+    for (const char *w = "DEGIMWdegimw"; *w; ++w) c[(unsigned char)*w] = ScanClass::Word;
+    c[(unsigned char)'('] = ScanClass::Comment;
+    c[(unsigned char)';'] = ScanClass::EndOfBlock;
+    c[(unsigned char)'\n'] = ScanClass::EndOfLine;
   }
 };
-static constexpr ByteClasses kBytes;
+static constexpr ScanClasses kScan;
 
+// Whether a line (after its block number) holds anything but blanks, '%' and comments.
+static bool lineHasContent(const char *q, const char *le) {
+  int depth = 0;
+  for (; q < le; ++q) {
+    char c = *q;
+    if (c == '(') ++depth;
+    else if (c == ')') depth -= depth > 0;
+    else if (depth == 0 && c == ';') return false;
+    else if (depth == 0 && c != ' ' && c != '\t' && c != '\r' && c != '%') return true;
+  }
+  return false;
+}
+
+// The words that start a statement, with Fanuc's two-letter abbreviations (GO 10 is a GOTO).
+static constexpr std::string_view kStatementWords[] = {"IF", "DO", "END", "EN", "GOTO", "GO", "WHILE", "WH"};
+
+// A word starting at b (a Word letter, not inside a longer word) that needs the whole program:
+// a statement keyword, a call or return, a macro call, a lathe contour cycle, a computed code.
+// q is left on the word's last letter.
+static bool needsWholeProgram(const char *&q, const char *le) {
+  const char *b = q;
+  while (q + 1 < le && letter(q[1])) ++q;
+  size_t n = (size_t)(q - b + 1);
+  char k0 = up(b[0]);
+  if (n >= 2) {  // statements need the whole program; function names and operators are fine
+    for (std::string_view k : kStatementWords)
+      if (k.size() == n && std::equal(k.begin(), k.end(), b, [](char a, char c) { return a == up(c); })) return true;
+    return false;
+  }
+  if (k0 != 'M' && k0 != 'G') return false;
+  const char *r = q + 1;
+  while (r < le && (*r == ' ' || *r == '\t')) ++r;
+  if (r < le && (*r == '#' || *r == '[')) return true;  // computed code: play safe
+  long v = 0;
+  int digits = 0;
+  while (r < le && *r >= '0' && *r <= '9' && digits < 9) v = v * 10 + (*r++ - '0'), ++digits;
+  const bool point = r < le && *r == '.';
+  if (k0 == 'M') return v == 98 || v == 99;
+  // G65/G66 macro calls, G5 (high-speed cycle call); the lathe contour cycles G70-G73 run a
+  // block range (also G73 of a mill: playing safe).
+  return !point && (v == 65 || v == 66 || v == 5 || (v >= 70 && v <= 73));
+}
+
+// The first byte at or after q that is not ScanClass::Skip (end if none): sixteen bytes at a
+// time where SSE2 is there (every x86-64), then the table. The same classes as kScan: letters
+// fold to lower case with 0x20, which maps no other byte onto a letter.
+static const char *skipPlain(const char *q, const char *end) {
+#if defined(__SSE2__)
+  auto eq = [](__m128i v, char c) { return _mm_cmpeq_epi8(v, _mm_set1_epi8(c)); };
+  for (; end - q >= 16; q += 16) {
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i *>(q));
+    const __m128i l = _mm_or_si128(x, _mm_set1_epi8(0x20));
+    const __m128i marks = _mm_or_si128(_mm_or_si128(eq(x, '\n'), eq(x, '(')), eq(x, ';'));
+    const __m128i words = _mm_or_si128(_mm_or_si128(_mm_or_si128(eq(l, 'd'), eq(l, 'e')), _mm_or_si128(eq(l, 'g'), eq(l, 'i'))),
+                                       _mm_or_si128(eq(l, 'm'), eq(l, 'w')));
+    if (const int hit = _mm_movemask_epi8(_mm_or_si128(marks, words))) return q + __builtin_ctz((unsigned)hit);
+  }
+#endif
+  while (q < end && kScan.c[(unsigned char)*q] == ScanClass::Skip) ++q;
+  return q;
+}
+
+static const char *lineEnd(const char *q, const char *end) {
+  const char *nl = static_cast<const char *>(std::memchr(q, '\n', (size_t)(end - q)));
+  return nl ? nl : end;
+}
+
+// The rest of a block from q (after its block number): null when it needs the whole program,
+// else where it ends (its newline, or the end of the text).
+static const char *scanBlock(const char *q, const char *end) {
+  for (const char *body = q;;) {
+    if ((q = skipPlain(q, end)) >= end) return end;
+    switch (kScan.c[(unsigned char)*q]) {
+    case ScanClass::Skip: ++q; break;  // not reached: skipPlain stops at the other classes only
+    case ScanClass::EndOfLine: return q;
+    case ScanClass::EndOfBlock: return lineEnd(q, end);
+    case ScanClass::Comment:  // to its closing parenthesis (they nest), or the end of the line
+      for (int depth = 1; ++q < end && *q != '\n';)
+        if (*q == '(') {
+          ++depth;
+        } else if (*q == ')' && --depth == 0) {
+          ++q;
+          break;
+        }
+      break;
+    case ScanClass::Word:
+      if (q > body && letter(q[-1])) {  // inside a word that starts with a skipped letter: no keyword
+        while (q + 1 < end && letter(q[1])) ++q;
+      } else if (needsWholeProgram(q, end)) {
+        return nullptr;
+      }
+      ++q;
+      break;
+    }
+  }
+}
+
+// One pass over the text before streaming: a construct that needs the whole program (control
+// flow, calls, subprograms) anywhere means the program is parsed as a whole. Being wrong towards
+// "not streamable" only costs speed and memory; the stream itself rejects what slips through.
+// (Folding this pass into the stream would need the sinks, the trace file and the diagnostics
+// printed so far to be taken back when a late construct, such as a subprogram after M30, turns
+// up.) The newline is one of the byte classes: lines are not searched for first.
 bool isoIsStreamable(std::string_view text, const SourceManager *sm, uint32_t file) {
-  const char *p = text.data(), *end = p + text.size();
+  const char *q = text.data(), *end = q + text.size();
   // A mapped file's scanned pages go as the scan moves on, or the whole text would be resident.
   constexpr size_t kReleaseEvery = 1 << 20;
-  const char *released = p;
-  if (text.size() >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;  // UTF-8 BOM
+  const char *released = q;
+  if (text.size() >= 3 && std::memcmp(q, "\xEF\xBB\xBF", 3) == 0) q += 3;  // UTF-8 BOM
   bool seenContent = false;  // a block before: a later O line is a subprogram
-  while (p < end) {
-    // One line.
-    const char *nl = static_cast<const char *>(std::memchr(p, '\n', (size_t)(end - p)));
-    const char *le = nl ? nl : end;
-    const char *q = p;
-    while (q < le && (*q == ' ' || *q == '\t' || *q == '\r' || *q == '/')) ++q;
-    if (q < le && up(*q) == 'N') {  // skip the block number
+  while (q < end) {
+    // A line's start: blanks, block skip, the block number (none of these bytes is a newline).
+    while (q < end && (*q == ' ' || *q == '\t' || *q == '\r' || *q == '/')) ++q;
+    if (q < end && up(*q) == 'N') {
       ++q;
-      while (q < le && ((*q >= '0' && *q <= '9') || *q == ' ')) ++q;
+      while (q < end && ((*q >= '0' && *q <= '9') || *q == ' ')) ++q;
     }
-    if (q < le && (up(*q) == 'O' || *q == ':')) {  // O1234 or Fanuc :1234
+    if (q < end && (up(*q) == 'O' || *q == ':')) {  // O1234 or Fanuc :1234
       if (seenContent) return false;  // subprogram or RS274 o-word
       const char *r = q + 1;
-      while (r < le && ((*r >= '0' && *r <= '9') || *r == ' ' || *r == '\t' || *r == '\r')) ++r;
+      while (r < end && ((*r >= '0' && *r <= '9') || *r == ' ' || *r == '\t' || *r == '\r')) ++r;
       // o100 while ..., o<name> sub, o[#1] call, o#<sub> call: RS274NGC o-words.
-      if (r < le && (letter(*r) || *r == '<' || *r == '[' || *r == '#')) return false;
-      p = nl ? nl + 1 : end;
-      continue;
+      if (r < end && (letter(*r) || *r == '<' || *r == '[' || *r == '#')) return false;
+      q = lineEnd(q, end);
+    } else {
+      if (!seenContent) seenContent = lineHasContent(q, lineEnd(q, end));
+      if (!(q = scanBlock(q, end))) return false;
     }
-    int depth = 0;
-    for (; q < le; ++q) {
-      char c = *q;
-      ByteClass k = kBytes.c[(unsigned char)c];
-      if (k == ByteClass::Other) {  // not in a comment: content
-        seenContent |= depth == 0;
-        continue;
-      }
-      if (k == ByteClass::Blank) continue;
-      if (c == '(') {
-        ++depth;
-        continue;
-      }
-      if (c == ')') {
-        if (depth) --depth;
-        continue;
-      }
-      if (depth) continue;
-      if (c == ';') break;
-      if (c == '%') continue;
-      if (!letter(c)) {
-        if (c != ' ' && c != '\t' && c != '\r') seenContent = true;
-        continue;
-      }
-      seenContent = true;
-      const char *b = q;
-      while (q + 1 < le && letter(q[1])) ++q;
-      size_t n = (size_t)(q - b + 1);
-      if (n >= 2) {
-        // Keywords that need the whole program; function names and operators are fine.
-        char k0 = up(b[0]), k1 = up(b[1]);
-        if ((n == 2 && k0 == 'I' && k1 == 'F') || (n == 2 && k0 == 'D' && k1 == 'O') ||
-            (n == 3 && k0 == 'E' && k1 == 'N' && up(b[2]) == 'D') ||
-            (n == 4 && k0 == 'G' && k1 == 'O' && up(b[2]) == 'T' && up(b[3]) == 'O') ||
-            (n == 5 && k0 == 'W' && k1 == 'H' && up(b[2]) == 'I'))
-          return false;
-        continue;
-      }
-      char L = up(c);
-      if (L != 'M' && L != 'G') continue;
-      const char *r = q + 1;
-      while (r < le && (*r == ' ' || *r == '\t')) ++r;
-      if (r < le && (*r == '#' || *r == '[')) return false;  // computed code: play safe
-      long v = 0;
-      int digits = 0;
-      while (r < le && *r >= '0' && *r <= '9' && digits < 9) v = v * 10 + (*r++ - '0'), ++digits;
-      if (L == 'M' && (v == 98 || v == 99)) return false;
-      if (L == 'G' && (v == 65 || v == 66 || v == 5) && (r >= le || *r != '.')) return false;
-      // Lathe contour cycles G70-G73 run a block range (also G73 of a mill: playing safe).
-      if (L == 'G' && v >= 70 && v <= 73 && (r >= le || *r != '.')) return false;
-    }
-    p = nl ? nl + 1 : end;
-    if (sm && (size_t)(p - released) >= kReleaseEvery) sm->released(file, (size_t)((released = p) - text.data()));
+    if (q < end) ++q;  // the newline
+    if (sm && (size_t)(q - released) >= kReleaseEvery) sm->released(file, (size_t)((released = q) - text.data()));
   }
   return true;
 }

@@ -79,8 +79,17 @@ struct ParsedBlock {
   std::string oname;         // O-word name: "100" or "name"
   ir::ExprPtr ocomputed;     // computed O-word number: O[#2*10] call, O#1 call
   std::vector<ir::ExprPtr> oargs;  // o<n> call [a] [b]
+  bool plain = false;        // the parser's fast path wrote it: only loc, content, n and words
 
+  // Back to empty; clearPlain after a plain block, which set nothing else.
+  void clearPlain() {
+    loc = {};
+    content = plain = false;
+    n = -1;
+    words.clear();
+  }
   void clear() {
+    plain = false;
     loc = {};
     content = percent = false;
     n = -1;
@@ -149,6 +158,7 @@ private:
   bool parseStatement(std::string_view kw, const char *at, ParsedBlock &out);
   bool parseAssign(ParsedBlock &out);
   bool parseOWord(ParsedBlock &out, const char *at);
+  bool parsePlainWords(ParsedBlock &out);  // the fast path of parse (false: parseItems reads the block)
   bool parseItems(ParsedBlock &out);
   ir::ExprPtr parseBracket();   // [ expr ]
   ir::ExprPtr parseUnary();

@@ -229,6 +229,18 @@ bool BlockParser::keyword(const std::string &kw) {
       ++i_;
       return true;
     }
+  if (kw == "SPLINEPATH") {
+    // SPLINEPATH(1, X, Y, Z): the default spline group (the first three channel axes, L10966),
+    // which is what ncc's splines move; any other group is refused.
+    std::string text;
+    for (size_t j = i_ + 1; j < t_.size() && t_[j].kind != Tok::End; ++j)
+      text += t_[j].kind == Tok::Number ? fmt::format("{}", t_[j].num) : t_[j].text;
+    if (text != "(1,X,Y,Z)")
+      return fail(t, "SPLINEPATH other than SPLINEPATH(1,X,Y,Z) (the default spline group) is not simulated",
+                  "unsupported-code");
+    while (!atEnd()) ++i_;
+    return true;
+  }
   // Machine-only constructs: parsed by name, never silently skipped.
   static const char *kNotSimulated[] = {
       "WHEN",    "WHENEVER", "EVERY", "ID",      "IDS",      "DO",      "INIT",     "START",    "WAITM",
@@ -236,7 +248,7 @@ bool BlockParser::keyword(const std::string &kw) {
       "BLSYNC",  "LIFTFAST", "ALF",   "RELEASE", "GET",      "GETD",    "AXTOCHAN", "NEWCONF",  "WRITE",
       "READ",    "DELETE",   "EXECSTRING", "EXECTAB", "REDEF", "PCALL",    "ISOCALL",  "CALLPATH",
       "EXTCALL", "GOTOS", "RETB",    "SPOS",     "SPOSA",   "WAITS",    "TRAORI",   "TRANSMIT",
-      "TRACYL",  "MEAS",     "MEAW",  "POLY",    "G291"};
+      "TRACYL",  "MEAS",     "MEAW",  "G291"};
   for (const char *c : kNotSimulated)
     if (kw == c)
       return fail(t, fmt::format("'{}' is not simulated (machine-only or not yet supported construct)", kw),

@@ -56,6 +56,7 @@ enum class Addr : uint8_t {
   Turns,    // TURN (extra full turns of a helix)
   Polar,    // AP RP (polar angle and radius about the pole)
   Corner,   // CHF (chamfer length), CHR (chamfer legs), RND (rounding)
+  SplinePoint,  // PW (a BSPLINE point's weight), SD (the BSPLINE's degree), PL (POLY's parameter interval)
   Feed, Speed, Tool, Edge, Misc, G,
   Ignored,  // ADIS ADISPOS: rounding distances of G641/G642, which are refused themselves
   Refused,  // an address ncc knows but does not simulate (AR, AP, RP, CHR, RNDM, TURN, OFFN, SF, LIMS …)

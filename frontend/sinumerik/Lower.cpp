@@ -77,11 +77,28 @@ bool BlockParser::lowerWords() {
     for (auto &w : words_)
       if (!w.addr.empty() && w.addr != "F" && w.addr != "S")
         return fail(t_[0], fmt::format("G4 must stand alone in its block (found {})", w.addr), "dwell-with-motion");
-    if (word("S")) return fail(t_[0], "G4 S (a dwell in spindle revolutions) is not simulated", "unsupported-code");
-    ExprPtr f = take("F");
-    if (!f) return fail(t_[0], "G4 needs F<seconds>", "missing-word");
+    if (word("F") && word("S")) return fail(t_[0], "G4 takes F<seconds> or S<revolutions>, not both", "dwell-with-motion");
     Op d(OpKind::Dwell, bl);
-    d.set("seconds", std::move(f));
+    if (ExprPtr s = take("S")) {
+      // S revolutions of the spindle at its programmed speed: 60·S / rpm seconds. A stopped
+      // spindle never turns them: an alarm, not a guessed time.
+      auto sys = [&](const char *n) { return Expr::var(ir::VarSpace::System, n, nullptr, bl); };
+      Op stopped(OpKind::If, bl);
+      stopped.set("cond", Expr::binary(ir::OpCode::Or, Expr::unary(ir::OpCode::Not, sys("_spindle_on"), bl),
+                                       Expr::binary(ir::OpCode::Le, sys("_rpm"), Expr::number(0, ir::Type::Int), bl), bl));
+      stopped.regions.emplace_back();
+      Op alarm(OpKind::Message, bl);
+      alarm.set("text", Expr::string("G4 S (a dwell in spindle revolutions) needs the spindle turning (S and M3/M4)", bl));
+      alarm.set("kind", Expr::symbol("abort"));
+      stopped.regions[0].push_back(std::move(alarm));
+      out.push_back(std::move(stopped));
+      d.set("seconds", Expr::binary(ir::OpCode::Div, Expr::binary(ir::OpCode::Mul, Expr::number(60, ir::Type::Int), std::move(s), bl),
+                                    sys("_rpm"), bl));
+    } else if (ExprPtr f = take("F")) {
+      d.set("seconds", std::move(f));
+    } else {
+      return fail(t_[0], "G4 needs F<seconds> or S<revolutions>", "missing-word");
+    }
     out.push_back(std::move(d));
   }
   bool hadFeedOrSpeed = word("F") || word("S");
@@ -109,13 +126,14 @@ bool BlockParser::lowerWords() {
       out.push_back(Op(OpKind::ToolChange, l));
       changed = true;
     }
-  // D: the cutting edge of the active tool. The executor keeps edge 1 of the tool in the
-  // spindle (MD20270: D1 after a tool change); D0 cancels; other edges are refused.
+  // D: the cutting edge of the tool in the spindle (MD20270: D1 after a tool change), its length
+  // and the radius of G41/G42; D0 cancels.
   if (ExprPtr d = take("D")) {
-    if (d->kind != ir::ExprKind::Number || (d->num != 0 && d->num != 1))
-      return fail(t_[0], "D other than D0 and D1 (further cutting edges) is not simulated", "unsupported-code");
+    if (d->kind != ir::ExprKind::Number || d->num < 0 || d->num != std::floor(d->num))
+      return fail(t_[0], "D takes a constant edge number (D0, D1, D2 …)", "unsupported-code");
     Op o(OpKind::ToolLength, bl);
     if (d->num == 0) o.set("h", Expr::number(0, ir::Type::Int));
+    else if (d->num > 1) o.set("D", std::move(d));
     out.push_back(std::move(o));
   } else if (changed) {
     out.push_back(Op(OpKind::ToolLength, bl));
@@ -161,9 +179,15 @@ bool BlockParser::lowerWords() {
     out.push_back(std::move(o));
   }
   // The move: every word left.
+  ExprPtr denominator;
+  if (!poly_.empty() && !lowerPoly(out, denominator)) return false;
   Op mv(OpKind::Move, bl);
   std::string ac, ic;
   bool any = false, path = false;
+  if (denominator) {
+    mv.set("denominator", std::move(denominator));
+    any = true;
+  }
   if (word("AP") || word("RP")) {
     if (!lowerPolarMove(mv, ac, out)) return false;
     any = path = true;
@@ -190,6 +214,7 @@ bool BlockParser::lowerWords() {
       key = "P";
       w.value = Expr::binary(ir::OpCode::Add, std::move(w.value), Expr::number(1, ir::Type::Int), w.loc);
       break;
+    case Addr::SplinePoint: key = w.addr == "PW" ? "weight" : w.addr == "SD" ? "degree" : "interval"; break;
     case Addr::Corner:  // CHF the chamfer's length, CHR its legs along the two moves
       key = w.addr == "CHF" ? "chamfer" : w.addr == "CHR" ? "chamfer_leg" : "round";
       break;

@@ -83,7 +83,9 @@ public:
 
   // The signature of a subprogram: loads and parses its file on first use. Null (with an
   // error at `loc` naming the paths tried) when it cannot be found.
-  const Signature *callee(const std::string &name, SourceLoc loc);
+  // A standard cycle without a subprogram of its name that the cycle library has: null without an
+  // error, its entry in *libCycle.
+  const Signature *callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle = nullptr);
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
     diags.error(loc, std::move(msg), rule);
     ok = false;
@@ -115,6 +117,14 @@ private:
     SourceLoc loc;
   };
   std::vector<Word> words_;
+  // POLY polynomials PO[X]=(end, a2 … a5), X=PO(…), PO[]=(…)/PO(…) (axis empty: the denominator)
+  struct PolyTerm {
+    std::string axis;
+    std::vector<ir::ExprPtr> values;
+  };
+  std::vector<PolyTerm> poly_;
+  bool polyTerm(std::string axis, const Token &at);
+  bool lowerPoly(ir::Region &out, ir::ExprPtr &denominator);
   std::vector<std::pair<GInfo, SourceLoc>> gcodes_;
   std::vector<std::pair<int, SourceLoc>> mcodes_;
   std::vector<ir::Op> pre_, post_;  // ops before the machine words (assignments) and after (calls)
@@ -137,6 +147,11 @@ private:
   bool def();
   bool proc();
   bool callStatement(bool modal);
+  bool argumentList(const std::string &name, const std::vector<std::string> &params, const char *prefix, ir::Op &c);
+  // A standard cycle from the library (Cycles.cpp): `NAME(args)` runs it here (a position
+  // pattern: the modal cycle at each position), `MCALL NAME(args)` makes it modal.
+  bool libraryCycle(bool modal, const std::string &name, const CycleSignature &lib, const Token &at);
+  ir::Op cycleCancel(SourceLoc l) const;
   bool gotoStatement(const std::string &kw, std::vector<ir::Op> &into);
   bool ifStatement();
   bool caseStatement();

@@ -198,7 +198,7 @@ static bool siemensCycle(const std::string &name) {
   return false;
 }
 
-const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
+const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle) {
   auto it = procs.find(name);
   if (it != procs.end()) return &it->second;
   if (std::find(opts.linkedFunctions.begin(), opts.linkedFunctions.end(), name) != opts.linkedFunctions.end()) {
@@ -207,11 +207,13 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc) {
   }
   uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name), true);
   if (!fid && siemensCycle(name)) {
-    // A standard cycle without a user subprogram of that name (which would override it).
+    // A standard cycle without a user subprogram of that name (which would override it): the
+    // cycle library's entry.
+    if (libCycle && opts.cycles && opts.cycles("sin." + name, *libCycle)) return nullptr;
     if (!missing.count(name))
-      error(loc, fmt::format("{} is a Siemens standard cycle: calling it from a program is not simulated yet (no {}.SPF "
-                             "in {}; `ncc cycle sin.{}` runs the library's entry alone)",
-                             name, name, folderList(opts.searchDirs), name),
+      error(loc, fmt::format("{} is a Siemens standard cycle the cycle library does not have yet (no {}.SPF in {}; "
+                             "`ncc cycle --list` shows the library)",
+                             name, name, folderList(opts.searchDirs)),
             "unsupported-code");
     missing.insert(name);
     return nullptr;

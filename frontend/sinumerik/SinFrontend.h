@@ -1,6 +1,7 @@
 // Sinumerik 840D sl front end: part programs (.MPF) and subprograms (.SPF) in the Siemens
 // high-level language, lowered to NC IR (docs/IR.md §8.2, docs/SINUMERIK.md).
 #pragma once
+#include "ir/CycleCatalog.h"
 #include "ir/Diagnostics.h"
 #include "ir/NCIR.h"
 
@@ -13,6 +14,7 @@ struct SinOptions {
   unsigned blockDeleteMask = 0;         // bit n set: blocks with skip level /n are left out (/ = /0)
   std::vector<std::string> searchDirs;  // where called subprogram files are looked up, in order
   std::vector<std::string> linkedFunctions;  // defined by linked files: not searched
+  CycleLookup cycles = nullptr;         // the cycle library (sin.CYCLE81 …): standard cycle calls
   double realTolerance = 1e-12;         // relative tolerance of REAL comparisons (MD, manual L3284)
 };
 

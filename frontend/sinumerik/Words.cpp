@@ -27,6 +27,10 @@ bool BlockParser::addressWord() {
   }
   Word w;
   w.loc = l;
+  if (full && full->kind == Addr::Axis && peek().is("=") && peek(2).isName("PO")) {  // X=PO(…)
+    i_ += 3;
+    return polyTerm(t.text, t);
+  }
   if (full && peek().is("=")) {  // X=…, CR=…, I1=…
     w.addr = t.text;
     i_ += 2;
@@ -65,6 +69,20 @@ bool BlockParser::addressWord() {
     // S1=300, M2=19, X1=5: an address with an extension (spindle or channel axis number).
     return fail(t, fmt::format("the address extension {}= (a spindle or axis number) is not simulated", t.text),
                 "unsupported-code");
+  } else if (t.isName("PO") && peek().is("[")) {  // PO[X]=(…), PO[]=(…)
+    i_ += 2;
+    std::string axis;
+    if (!tok().is("]")) {
+      const AddrInfo *a = tok().kind == Tok::Name ? findAddress(tok().text) : nullptr;
+      if (!a || a->kind != Addr::Axis) return fail(tok(), "PO[…] takes an axis name (or nothing: the denominator)");
+      axis = tok().text;
+      ++i_;
+    }
+    if (!expect("]") || !expect("=")) return false;
+    return polyTerm(axis, t);
+  } else if (t.isName("PO") && peek().is("(")) {  // PO(…): the denominator
+    ++i_;
+    return polyTerm("", t);
   } else if (peek().is("[")) {
     // G[8]=2, AX[AXVAR]=10, S[SPINU]=300: indirect addresses (SIN-IND-01…03).
     return fail(t, fmt::format("the indexed address {}[…] is not simulated", t.text), "unsupported-code");
@@ -126,7 +144,7 @@ bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
       return fail(t, fmt::format("{} takes axis words only (and must stand alone in its block)", g.code->name));
     std::string axis = t.text.substr(0, 1);
     ExprPtr v;
-    if (t.digitsAt == 1) {
+    if (t.digitsAt == 1 && t.text.size() > 1) {  // Z45; Z alone is followed by =, a sign or a value
       v = Expr::number(t.num, t.isInt ? ir::Type::Int : ir::Type::Real, loc(t));
       ++i_;
     } else if (peek().is("=")) {
@@ -148,15 +166,17 @@ bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
   return true;
 }
 
-// NAME, NAME(args), NAME P3, L10 P=2, CALL "NAME", MCALL NAME(args), MCALL.
+// NAME, NAME(args), NAME P3, L10 P=2, CALL "NAME", MCALL NAME(args), MCALL. A Siemens standard
+// cycle the program has no subprogram for runs from the cycle library (Cycles.cpp).
 bool BlockParser::callStatement(bool modal) {
   const Token &first = tok();
   SourceLoc l = loc(first);
   bool viaCall = first.isName("CALL");
   if (modal || viaCall) ++i_;
   Op c(modal ? OpKind::ModalCall : OpKind::Call, l);
-  if (modal && atEnd()) {  // MCALL alone: cancel
+  if (modal && atEnd()) {  // MCALL alone: cancel (a subprogram's or a cycle's)
     post_.push_back(std::move(c));
+    post_.push_back(cycleCancel(l));
     return true;
   }
   const Token &t = tok();
@@ -174,38 +194,18 @@ bool BlockParser::callStatement(bool modal) {
   }
   if (name.size() < 2 || name[0] == '$')
     return fail(t, fmt::format("unknown address or name '{}'", name), "unknown-code");
-  const Signature *sig = f_.pp.callee(name, loc(t));
+  CycleSignature lib;
+  const Signature *sig = f_.pp.callee(name, loc(t), &lib);
+  if (!sig && lib.name) return libraryCycle(modal, name, lib, t);
   if (!sig) {
     failed_ = true;
     return false;
   }
   c.set("callee", Expr::string(name));
   if (!modal) c.set("frame", Expr::symbol("new"));
-  if (tok().is("(")) {
-    ++i_;
-    size_t pos = 0;
-    while (!tok().is(")")) {
-      if (tok().is(",")) {  // an omitted argument: the default
-        ++pos;
-        ++i_;
-        continue;
-      }
-      if (pos >= sig->params.size())
-        return fail(tok(), fmt::format("too many arguments for {} ({} parameter{})", name, sig->params.size(),
-                                       sig->params.size() == 1 ? "" : "s"));
-      ExprPtr e = expr(0);
-      if (!e) return false;
-      c.set("a." + sig->params[pos].name, std::move(e));
-      ++pos;
-      if (tok().is(",")) {
-        ++i_;
-        if (tok().is(")")) break;
-      } else if (!tok().is(")")) {
-        return fail(tok(), "expected ',' or ')' in the argument list");
-      }
-    }
-    ++i_;
-  }
+  std::vector<std::string> params;
+  for (auto &p : sig->params) params.push_back(p.name);
+  if (!argumentList(name, params, "a.", c)) return false;
   if (tok().kind == Tok::Name && tok().text[0] == 'P' && (tok().digitsAt == 1 || (tok().text == "P" && peek().is("=")))) {
     if (tok().digitsAt == 1) {
       c.set("count", Expr::number(tok().num, ir::Type::Int));
@@ -217,7 +217,86 @@ bool BlockParser::callStatement(bool modal) {
       c.set("count", std::move(n));
     }
   }
+  if (modal) post_.push_back(cycleCancel(l));  // the last modal call replaces a modal cycle
   post_.push_back(std::move(c));
+  return true;
+}
+
+// `(a, , c)` after a called name, if there: argument i to key prefix + params[i]; an empty
+// position is an omitted argument.
+bool BlockParser::argumentList(const std::string &name, const std::vector<std::string> &params, const char *prefix,
+                               Op &c) {
+  if (!tok().is("(")) return true;
+  ++i_;
+  size_t pos = 0;
+  while (!tok().is(")")) {
+    if (tok().is(",")) {  // an omitted argument: the default
+      ++pos;
+      ++i_;
+      continue;
+    }
+    if (pos >= params.size())
+      return fail(tok(), fmt::format("too many arguments for {} ({} parameter{})", name, params.size(),
+                                     params.size() == 1 ? "" : "s"));
+    ExprPtr e = expr(0);
+    if (!e) return false;
+    c.set(prefix + params[pos], std::move(e));
+    ++pos;
+    if (tok().is(",")) {
+      ++i_;
+      if (tok().is(")")) break;
+    } else if (!tok().is(")")) {
+      return fail(tok(), "expected ',' or ')' in the argument list");
+    }
+  }
+  ++i_;
+  return true;
+}
+
+}  // namespace ncc::sin
+
+namespace ncc::sin {
+
+// The list of a polynomial, `(end, a2, …, a5)`, at the current token.
+bool BlockParser::polyTerm(std::string axis, const Token &at) {
+  if (tok().isName("IC") || tok().isName("AC"))
+    return fail(tok(), "PO with IC()/AC() is not simulated (write absolute end points)", "unsupported-code");
+  if (!expect("(")) return false;
+  PolyTerm p{std::move(axis), {}};
+  do {
+    ExprPtr v = expr(0);
+    if (!v) return false;
+    p.values.push_back(std::move(v));
+  } while (tok().is(",") && (++i_, true));
+  if (!expect(")")) return false;
+  if (p.values.size() > 5) return fail(at, "a polynomial has its end value and at most the coefficients a2 … a5");
+  for (auto &o : poly_)
+    if (o.axis == p.axis) return fail(at, "a polynomial is programmed twice for the same axis in the block", "duplicate-word");
+  poly_.push_back(std::move(p));
+  return true;
+}
+
+// The block's polynomials: the end values become the axis words (the denominator's: `denominator`),
+// the coefficients a_k one move op each with `poly_index` k before the block's move.
+bool BlockParser::lowerPoly(ir::Region &out, ExprPtr &denominator) {
+  SourceLoc bl = loc(t_[0]);
+  for (int k = 2; k <= 5; ++k) {
+    Op o(OpKind::Move, bl);
+    for (auto &p : poly_)
+      if (p.values.size() >= (size_t)k) o.set(p.axis.empty() ? "denominator" : p.axis, std::move(p.values[k - 1]));
+    if (o.args.empty() && k > 2) continue;  // a2 always: it tells the executor the block has polynomials
+    o.set("poly_index", Expr::number(k, ir::Type::Int));
+    out.push_back(std::move(o));
+  }
+  for (auto &p : poly_) {
+    if (p.axis.empty()) {
+      denominator = std::move(p.values[0]);
+      continue;
+    }
+    for (auto &o : words_)
+      if (o.addr == p.axis) return fail(t_[0], fmt::format("address {} is programmed twice in the block", p.axis), "duplicate-word");
+    words_.push_back(Word{p.axis, std::move(p.values[0]), 0, bl});
+  }
   return true;
 }
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace ncc {
 
@@ -446,22 +445,24 @@ bool hei221(const CycleArgs &a, std::vector<PlanePoint> &out, std::string &err) 
   return true;
 }
 
+constexpr const char *kDrillCoords = "RTP:n RFP:n DP:n";  // the Sinumerik drilling cycles' planes
+
 const CycleDef kHoleEntries[] = {
-    {"sin.CYCLE81", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE", "Sinumerik drilling, centring", sinCycle81, nullptr},
+    {"sin.CYCLE81", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE", "Sinumerik drilling, centring", sinCycle81, nullptr, kDrillCoords},
     {"sin.CYCLE82", "RTP RFP SDIS DP DPR DTB _GMODE _DMODE _AMODE _VARI S_ZA S_FA S_ZD S_FD",
-     "Sinumerik drilling, counterboring", sinCycle82, nullptr},
+     "Sinumerik drilling, counterboring", sinCycle82, nullptr, kDrillCoords},
     {"sin.CYCLE83",
      "RTP RFP SDIS DP DPR FDEP FDPR _DAM DTB DTS FRF VARI _AXN _MDEP _VRT _DTD _DIS1 _GMODE _DMODE _AMODE",
-     "Sinumerik deep-hole drilling", sinCycle83, nullptr},
-    {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr},
+     "Sinumerik deep-hole drilling", sinCycle83, nullptr, "RTP:n RFP:n DP:n FDEP:n"},
+    {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr, kDrillCoords},
     {"sin.CYCLE86", "RTP RFP SDIS DP DPR DTB SDIR RPA RPO RPAP POSS _GMODE _DMODE _AMODE",
-     "Sinumerik boring with oriented stop and lift-off", sinCycle86, nullptr},
+     "Sinumerik boring with oriented stop and lift-off", sinCycle86, nullptr, kDrillCoords},
     {"sin.CYCLE840", "RTP RFP SDIS DP DPR DTB SDR SDAC ENC MPIT PIT _AXN _PITA _TECHNO _PITM _PTAB _PTABA _GMODE _DMODE _AMODE",
-     "Sinumerik tapping with a compensating chuck", sinCycle840, nullptr},
+     "Sinumerik tapping with a compensating chuck", sinCycle840, nullptr, kDrillCoords},
     {"sin.HOLES1", "SPCA SPCO STA1 FDIS DBH NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik row of holes", nullptr,
-     sinHoles1},
+     sinHoles1, "SPCA:u SPCO:v", "_HIDE"},
     {"sin.HOLES2", "CPA CPO RAD STA1 INDA NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik circle of holes", nullptr,
-     sinHoles2},
+     sinHoles2, "CPA:u CPO:v", "_HIDE"},
     {"hei.200", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q211 Q395", "Heidenhain drilling", hei200, nullptr},
     {"hei.201", "Q200 Q201 Q206 Q211 Q208 Q203 Q204", "Heidenhain reaming", hei201, nullptr},
     {"hei.203", "Q200 Q201 Q206 Q202 Q210 Q203 Q204 Q212 Q213 Q205 Q211 Q208 Q256 Q395",
@@ -498,27 +499,51 @@ const CycleDef *findCycle(std::string_view name) {
   return nullptr;
 }
 
-bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err) {
-  auto known = [&](const std::string &k) {
-    std::istringstream in(def.params);
-    std::string p;
-    while (in >> p)
-      if (p == k) return true;
-    return false;
-  };
-  for (auto &[k, v] : args.num)
-    if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
-  for (auto &[k, v] : args.text)
-    if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
+bool cycleSignature(std::string_view name, CycleSignature &out) {
+  const CycleDef *d = findCycle(name);
+  if (!d) return false;
+  out = {d->name, d->params, d->strings ? d->strings : "", d->positions != nullptr};
   return true;
 }
 
-bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef &hole, CycleArgs ha,
+std::vector<std::string_view> cycleParamNames(const CycleDef &def) {
+  std::vector<std::string_view> out;
+  std::string_view s = def.params;
+  for (size_t i = 0; i < s.size();) {
+    size_t j = s.find(' ', i);
+    if (j == std::string_view::npos) j = s.size();
+    if (j > i) out.push_back(s.substr(i, j - i));
+    i = j + 1;
+  }
+  return out;
+}
+
+int cycleParamIndex(const CycleDef &def, std::string_view name) {
+  auto ps = cycleParamNames(def);
+  auto it = std::find(ps.begin(), ps.end(), name);
+  return it == ps.end() ? -1 : (int)(it - ps.begin());
+}
+
+bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err) {
+  auto known = [&](const std::string &k) { return cycleParamIndex(def, k) >= 0; };
+  for (auto &[k, v] : args.num)
+    if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
+  for (auto &[k, v] : args.text) {
+    if (!known(k)) return fail(err, std::string(def.name) + " has no parameter " + k + " (it has: " + def.params + ")");
+    std::string_view strings = def.strings ? def.strings : "";
+    if (strings.find(k) == std::string_view::npos)
+      return fail(err, std::string(def.name) + " parameter " + k + " takes a number, not a string");
+  }
+  return true;
+}
+
+bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef *hole, CycleArgs ha,
                    const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  if (!pattern.positions || !hole.expand)
-    return fail(err, std::string(pattern.name) + " with " + hole.name + ": a position pattern runs a machining cycle");
+  if (!pattern.positions || (hole && !hole->expand))
+    return fail(err, std::string(pattern.name) + " with " + hole->name + ": a position pattern runs a machining cycle");
   bool hei = std::string_view(pattern.name).substr(0, 4) == "hei.";
-  if (hei != (std::string_view(hole.name).substr(0, 4) == "hei."))
+  if (!hole && hei) return fail(err, std::string(pattern.name) + " needs a cycle to run at its positions");
+  if (hole && hei != (std::string_view(hole->name).substr(0, 4) == "hei."))
     return fail(err, "a pattern runs the cycles of its own controller");
   std::vector<PlanePoint> pts;
   if (!pattern.positions(pa, pts, err)) return false;
@@ -543,10 +568,12 @@ bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef 
     CycleStep to;  // rapid in the plane at the current level
     to.pos = here, to.pos[a1] = pts[i][0], to.pos[a2] = pts[i][1];
     out.push_back(to);
+    here = to.pos;
+    if (!hole) continue;  // Sinumerik: without a modal cycle the pattern only positions
     CycleContext at = ctx;
     at.position = to.pos;
     size_t first = out.size();
-    if (!hole.expand(ha, at, out, err)) return false;
+    if (!hole->expand(ha, at, out, err)) return false;
     // The last retract of the hole goes to the level between holes (Heidenhain Q301); the last
     // hole retracts as the cycle says.
     if (hei && i + 1 < pts.size())

@@ -4,6 +4,7 @@
 // entry by name (`sin.CYCLE83`, `hei.200`); the executor runs it (Executor::runCycle), and
 // `ncc cycle NAME K=V…` runs one alone. docs/CYCLES.md lists the entries.
 #pragma once
+#include "ir/CycleCatalog.h"
 #include "runtime/cycles/Hole.h"
 #include "runtime/cycles/Pattern.h"
 
@@ -45,6 +46,13 @@ struct CycleDef {
   bool (*expand)(const CycleArgs &args, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
   // A position pattern: the positions in the plane, in the order they are visited.
   bool (*positions)(const CycleArgs &args, std::vector<PlanePoint> &out, std::string &err);
+  // The parameters that are absolute positions, "NAME:axis …" (n the drilling axis, u v the
+  // plane's first and second), valid while no mode parameter (a name with MODE, _AXN) is set:
+  // an emitter that writes the call back in another frame shifts them (docs/EMIT.md "Cycles").
+  // Null: the call cannot be written back (its expanded moves are).
+  const char *coords = nullptr;
+  // The STRING parameters, space-separated (HOLES1's _HIDE); the others take numbers.
+  const char *strings = nullptr;
 };
 
 // The entries of each file of the library (Library.cpp: holes and patterns, ClearingEntries.cpp:
@@ -57,9 +65,16 @@ const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 
 // A position pattern with the hole cycle run at each position (Sinumerik MCALL + HOLES1,
-// Heidenhain CYCL DEF 200 + CYCL DEF 220 …).
-bool expandPattern(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef &hole, CycleArgs holeArgs,
+// Heidenhain CYCL DEF 200 + CYCL DEF 220 …); without a hole (Sinumerik only) rapids to each.
+bool expandPattern(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef *hole, CycleArgs holeArgs,
                    const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
+
+// The front ends' view of an entry (ir/CycleCatalog.h; the driver passes this to them).
+bool cycleSignature(std::string_view name, CycleSignature &out);
+
+// The entry's positional parameter names, in order; the position of `name` among them (-1 none).
+std::vector<std::string_view> cycleParamNames(const CycleDef &def);
+int cycleParamIndex(const CycleDef &def, std::string_view name);
 
 // Checks args against the entry's parameter list: unknown names are errors.
 bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err);

@@ -244,22 +244,22 @@ const CycleDef kSinClearingEntries[] = {
     {"sin.POCKET3",
      "_RTP _RFP _SDIS _DP _LENG _WID _CRAD _PA _PO _STA _MID _FAL _FALD _FFP1 _FFD _CDIR _VARI _MIDA _AP1 _AP2 _AD _RAD1 _DP1 "
      "_UMODE _FS _ZFS _GMODE _DMODE _AMODE",
-     "Sinumerik rectangular pocket", sinPocket3, nullptr},
+     "Sinumerik rectangular pocket", sinPocket3, nullptr, "_RTP:n _RFP:n _DP:n _PA:u _PO:v"},
     {"sin.POCKET4",
      "_RTP _RFP _SDIS _DP _CDIAM _PA _PO _MID _FAL _FALD _FFP1 _FFD _CDIR _VARI _MIDA _AP1 _AD _RAD1 _DP1 _UMODE _FS _ZFS "
      "_GMODE _DMODE _AMODE",
-     "Sinumerik circular pocket", sinPocket4, nullptr},
+     "Sinumerik circular pocket", sinPocket4, nullptr, "_RTP:n _RFP:n _DP:n _PA:u _PO:v"},
     {"sin.SLOT1",
      "RTP RFP SDIS _DP _DPR NUM LENG WID _CPA _CPO RAD STA1 INDA FFD FFP1 _MID CDIR _FAL VARI _MIDF FFP2 SSF _FALD _STA2 "
      "_DP1 _UMODE _FS _ZFS _GMODE _DMODE _AMODE",
-     "Sinumerik longitudinal slot", sinSlot1, nullptr},
+     "Sinumerik longitudinal slot", sinSlot1, nullptr, "RTP:n RFP:n _DP:n _CPA:u _CPO:v"},
     {"sin.SLOT2",
      "RTP RFP SDIS _DP _DPR NUM AFSL WID _CPA _CPO RAD STA1 INDA FFD FFP1 _MID CDIR _FAL VARI _MIDF FFP2 SSF _FFCP _UMODE "
      "_FS _ZFS _GMODE _DMODE _AMODE",
-     "Sinumerik circumferential slots", sinSlot2, nullptr},
+     "Sinumerik circumferential slots", sinSlot2, nullptr, "RTP:n RFP:n _DP:n _CPA:u _CPO:v"},
     {"sin.LONGHOLE",
      "RTP _RFP SDIS _DP _DPR NUM LENG _CPA _CPO RAD STA1 INDA FFD FFP1 MID _VARI _UMODE _GMODE _DMODE _AMODE",
-     "Sinumerik elongated hole", sinLonghole, nullptr},
+     "Sinumerik elongated hole", sinLonghole, nullptr, "RTP:n _RFP:n _DP:n _CPA:u _CPO:v"},
 };
 
 }  // namespace

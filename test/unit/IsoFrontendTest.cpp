@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -197,6 +198,157 @@ TEST(IsoBlockParser, SyntaxErrorsPointAtTheWord) {
   EXPECT_EQ(d.collected()[3].rule, "unknown-code");
 }
 
+// The parser's fast path for blocks of plain words (parsePlainWords) gives what the general
+// path gives: a trailing comment sends the same block through parseItems, and every word,
+// value (sign of zero included), point flag, location and the block number must agree.
+TEST(IsoBlockParser, PlainWordsFastPathMatchesGeneralPath) {
+  const char *lines[] = {"G1 X-1.5 Y.25",        "X+.5 Y-.5",          "X - 1.5 Y+ 2",          "X5. Y-0 Z-0.",
+                         "x1y2z3",               "N10 G1 X1",          "n0010 g1x-1.5",         "N10",
+                         "X1 N5 Y2",             "G1\tX1\r",           "X 1",                   "X123456789012345",
+                         "X.123456789012345",    "X1234567890123456",  "X0.0000000000000001",   "X1e5",
+                         "X1E-5 Y2",             "G2 X5.246 Y-0.079 I2.912 J0", "X000000000000001.5", "N007 X1"};
+  for (Flavour fl : {Flavour::Fanuc, Flavour::RS274}) {
+    for (const char *line : lines) {
+      SCOPED_TRACE(line);
+      SourceManager sm;
+      Diagnostics d(sm);
+      d.setCollect(true);
+      BlockParser p(d, fl, 0);
+      ParsedBlock fast, general;
+      ASSERT_TRUE(p.parse(line, 1, 1, fast));
+      ASSERT_TRUE(p.parse(std::string(line) + " (c)", 1, 1, general));
+      EXPECT_EQ(fast.n, general.n);
+      EXPECT_TRUE(fast.content);
+      EXPECT_TRUE(fast.comments.empty());
+      ASSERT_EQ(fast.words.size(), general.words.size());
+      for (size_t i = 0; i < fast.words.size(); ++i) {
+        const IsoWord &a = fast.words[i], &b = general.words[i];
+        EXPECT_EQ(a.letter, b.letter);
+        EXPECT_EQ(a.hasPoint, b.hasPoint);
+        EXPECT_EQ(a.value, b.value);
+        EXPECT_EQ(std::signbit(a.value), std::signbit(b.value));
+        EXPECT_EQ(a.loc.col, b.loc.col);
+        EXPECT_FALSE(a.expr);
+      }
+      EXPECT_FALSE(d.hasErrors());
+    }
+  }
+}
+
+// The same comparison on random lines of words (a letter, blanks, a sign, digits with points,
+// now and then a stray byte): a line and its twin with a comment are accepted or refused alike,
+// and when accepted, read alike.
+TEST(IsoBlockParser, PlainWordsFastPathMatchesGeneralPathRandomly) {
+  std::mt19937 rng(66);
+  auto pick = [&](const std::string &from) { return from[rng() % from.size()]; };
+  auto randomLine = [&] {
+    std::string line;
+    for (int words = 1 + (int)(rng() % 5); words > 0; --words) {
+      line.push_back(pick("GXYZIJFNxgn"));
+      while (rng() % 4 == 0) line.push_back(pick(" \t"));
+      if (rng() % 3 == 0) line.push_back(pick("+-"));
+      while (rng() % 4 == 0) line.push_back(' ');
+      for (int n = (int)(rng() % 19); n > 0; --n) line.push_back(rng() % 8 == 0 ? '.' : pick("0123456789"));
+      while (rng() % 3 == 0) line.push_back(' ');
+      if (rng() % 40 == 0) line.push_back(pick("e?#;/"));
+    }
+    return line;
+  };
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser fanuc(d, Flavour::Fanuc, 0), rs274(d, Flavour::RS274, 0);
+  ParsedBlock fast, general;
+  int accepted = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const std::string line = randomLine();
+    BlockParser &p = i % 2 ? rs274 : fanuc;
+    bool a = p.parse(line, 1, 1, fast), b = p.parse(line + " (c)", 1, 1, general);
+    ASSERT_EQ(a, b) << line;
+    if (!a) continue;
+    ++accepted;
+    EXPECT_EQ(fast.n, general.n) << line;
+    ASSERT_EQ(fast.words.size(), general.words.size()) << line;
+    for (size_t k = 0; k < fast.words.size(); ++k) {
+      EXPECT_EQ(fast.words[k].letter, general.words[k].letter) << line;
+      EXPECT_EQ(fast.words[k].hasPoint, general.words[k].hasPoint) << line;
+      EXPECT_EQ(fast.words[k].value, general.words[k].value) << line;
+      EXPECT_EQ(std::signbit(fast.words[k].value), std::signbit(general.words[k].value)) << line;
+      EXPECT_EQ(fast.words[k].loc.col, general.words[k].loc.col) << line;
+    }
+  }
+  EXPECT_GT(accepted, 4000);  // the comparison is not vacuous
+}
+
+// One ParsedBlock reused line after line (as the stream does): a plain block after a general
+// one, a general one after a plain one, and a fast path given up half way leave nothing behind.
+TEST(IsoBlockParser, PlainAndGeneralBlocksAlternate) {
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  BlockParser p(d, Flavour::Fanuc, 0);
+  ParsedBlock b;
+  ASSERT_TRUE(p.parse("N5 G1 X1 Y2 Z3", 1, 1, b));
+  EXPECT_TRUE(b.plain);
+  ASSERT_TRUE(p.parse("G1 X1 Y2 Z3 (c) #1=2", 1, 2, b));  // the fast path reads three words, then gives up
+  EXPECT_FALSE(b.plain);
+  EXPECT_EQ(b.n, -1);
+  EXPECT_EQ(b.words.size(), 4u);
+  EXPECT_EQ(b.comments.size(), 1u);
+  EXPECT_EQ(b.assigns.size(), 1u);
+  ASSERT_TRUE(p.parse("X4", 1, 3, b));
+  EXPECT_TRUE(b.plain);
+  EXPECT_EQ(b.words.size(), 1u);
+  EXPECT_TRUE(b.comments.empty());
+  EXPECT_TRUE(b.assigns.empty());
+  EXPECT_EQ(b.loc.line, 3u);
+  ASSERT_TRUE(p.parse("  ", 1, 4, b));
+  EXPECT_FALSE(b.content);
+  EXPECT_TRUE(b.words.empty());
+  ASSERT_TRUE(p.parse("IF [#1 EQ 2] GOTO 5", 1, 5, b));
+  EXPECT_EQ(b.stmt, StmtKind::IfGoto);
+  ASSERT_TRUE(p.parse("N7 Y1", 1, 6, b));
+  EXPECT_EQ(b.stmt, StmtKind::None);
+  EXPECT_FALSE(b.cond);
+  EXPECT_EQ(b.n, 7);
+  EXPECT_FALSE(d.hasErrors());
+}
+
+// Malformed plain-looking blocks leave the fast path before any diagnostic: the general path
+// reports them, with its message and column.
+TEST(IsoBlockParser, PlainWordsFastPathLeavesErrorsToTheGeneralPath) {
+  struct Case {
+    const char *line;
+    unsigned col;
+    const char *message;
+  } cases[] = {
+      {"G1 X", 5, "missing value after 'X'"},
+      {"G1 X-", 6, "missing value after 'X'"},
+      {"G1 X.", 5, "missing value after 'X'"},
+      {"G1 X- Y1", 7, "missing value after 'X'"},
+      {"G1 X1.2.3", 8, "unexpected character '.'"},
+      {"G1 X1?", 6, "unexpected character '?'"},
+      {"N-1 X1", 2, "N needs a block number"},
+      {"N1.5 X1", 1, "block number must be an integer below 10^15"},
+      {"N1 X1 N2", 7, "two N words in one block"},
+      {"X1 O5", 4, "O (program number / o-word) must start the block"},
+      {"G1 XY10", 4, "unknown word 'XY'"},
+      {"G1 X1 Y#", 8, "'#' needs a variable number"},
+  };
+  for (const Case &c : cases) {
+    SCOPED_TRACE(c.line);
+    SourceManager sm;
+    Diagnostics d(sm);
+    d.setCollect(true);
+    BlockParser p(d, Flavour::Fanuc, 0);
+    ParsedBlock b;
+    EXPECT_FALSE(p.parse(c.line, 1, 1, b));
+    ASSERT_EQ(d.collected().size(), 1u);
+    EXPECT_EQ(d.collected()[0].loc.col, c.col);
+    EXPECT_EQ(d.collected()[0].message, c.message);
+  }
+}
+
 static std::string exprOf(const char *src, Flavour fl = Flavour::Fanuc) {
   SourceManager sm;
   Diagnostics d(sm);
@@ -341,6 +493,29 @@ TEST(IsoStream, Streamability) {
   EXPECT_FALSE(isoIsStreamable("G1 X1\nM30\nO2000\nM99\n"));
   EXPECT_FALSE(isoIsStreamable("o100 while [1]\no100 endwhile\n"));
   EXPECT_TRUE(isoIsStreamable("G1 X[SIN[30]] Y#<_a>\n"));
+}
+
+// The pre-scan's edges: what it skips (comments, nested or unclosed, text after ';', function
+// names, words that only contain a keyword), what it must see in either case, and the Fanuc
+// abbreviations of the statements (GO 10 is a GOTO).
+TEST(IsoStream, StreamabilityEdges) {
+  EXPECT_TRUE(isoIsStreamable("G1 X1 (a (IF) b) Y2 (GOTO\nM30\n"));
+  EXPECT_TRUE(isoIsStreamable("G1 X1 ; GOTO 5 (\nG1 X2\n"));
+  EXPECT_TRUE(isoIsStreamable("G1 X[FIX[1.5]+ROUND[2]+EXP[1]+ABS[-1]] Y[1 MOD 2] Z[1 EQ 1]\n"));
+  EXPECT_TRUE(isoIsStreamable("G1 X1\nXIF\nAGOTO 5\n"));  // no keyword: the parser reports these
+  EXPECT_TRUE(isoIsStreamable("G5.1 Q1\nG64 G61 G17 G0 X1\nM3 M8 M990\n"));
+  EXPECT_TRUE(isoIsStreamable("(only a comment)\n%\nN10\nO100\nG1 X1\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1\ng65 p1\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1 M 98 P100\n"));
+  EXPECT_FALSE(isoIsStreamable("G5 P1\n"));
+  EXPECT_FALSE(isoIsStreamable("G71 P10 Q20\n"));
+  EXPECT_FALSE(isoIsStreamable("M#1\n"));
+  EXPECT_FALSE(isoIsStreamable("G[1]\n"));
+  EXPECT_FALSE(isoIsStreamable("N10 G1 X1\nN20 O200\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1 (c) ENDWHILE\nEND1\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1\nGO 3\nG1 X2\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1\nwh [#1 LT 2] do1\n"));
+  EXPECT_FALSE(isoIsStreamable("G1 X1\nEN1\n"));
 }
 
 TEST(IsoStream, SameOpsAsWholeProgramParse) {

@@ -133,6 +133,19 @@ TEST(LeanLower, ErrorsReportedTheSame) {
   }
 }
 
+// G codes are looked up once per number (the lowerer's cache): an unknown one is still reported
+// every time, in both flavours, and G1. G01 G1.0 are G1 (each of these blocks is lean: Block, Mode, Move).
+TEST(LeanLower, GCodeCacheKeepsErrorsAndSpellings) {
+  const char *src = "G1 X1 F10\nG13 X1\nG13 X2\nG1. X3\nG01 X4\nG1.0 X5\nG0 X6\nG00 X7\n";
+  for (const char *name : {"t.nc", "t.ngc"}) {
+    SCOPED_TRACE(name);
+    Streamed lean = stream(src, name, true);
+    std::vector<std::string> want = {"2:1 unknown G code G13 [unknown-code]", "3:1 unknown G code G13 [unknown-code]"};
+    EXPECT_EQ(lean.diags, want);
+    EXPECT_EQ(expectSame(src, name), 4u + 5 * 3u);  // line 1: Block, Mode, Feed, Move
+  }
+}
+
 TEST(LeanLower, MillFanucSameCommands) { EXPECT_GT(expectSame(kMill, "t.nc"), 30u); }
 
 TEST(LeanLower, MillRs274SameCommands) { EXPECT_GT(expectSame(kMill, "t.ngc"), 30u); }

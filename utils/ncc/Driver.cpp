@@ -61,6 +61,7 @@ SourceKind Session::kindOf(uint32_t file) const {
 
 FrontendOptions Session::frontendOptions(uint32_t file) const {
   FrontendOptions fo;
+  fo.cycles = &cycleSignature;  // runtime/cycles/Library.h
   fo.decimalMode = opts.decimalMode.empty() ? machine.decimalMode : opts.decimalMode;
   fo.axesScaleEnable = machine.controller.axesScaleEnable;
   fo.offsetMemory = machine.controller.offsetMemory;

@@ -22,3 +22,9 @@ N100 M30
 ; RUN: printf 'WH [1 LT 0] DO1\nEN1\nM2\n' > %t.ngc
 ; RUN: not %ncc run %t.ngc 2>&1 | FileCheck %s --check-prefix=NGC
 ; NGC: error: unknown word 'WH'
+; A bare GO (no IF or WH in the program) is a GOTO too: the stream's pre-scan sends the program
+; to the whole-program parse (it used to stop with "not streamable").
+; RUN: printf 'G1 X1 F100\nGO 3\nG1 X2\nN3 G1 X3\nM30\n' > %t.go.nc
+; RUN: %ncc run %t.go.nc --trace=canon -q | FileCheck %s --check-prefix=GO
+; GO: STRAIGHT_FEED(1.0000,
+; GO-NEXT: N3 {{ *}}STRAIGHT_FEED(3.0000,
