@@ -1,5 +1,6 @@
 #include "frontend/Frontend.h"
 
+#include "frontend/heidenhain/HeiFrontend.h"
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/sinumerik/SinFrontend.h"
 
@@ -16,7 +17,7 @@ struct SourceKindInfo {
   const char *extensions;  // space-separated, lower case
 };
 static const SourceKindInfo kKinds[] = {
-    {SourceKind::ISO, "iso", ".nc .ngc .tap .cnc .iso .gcode .txt"},
+    {SourceKind::ISO, "iso", ".nc .ngc .tap .cnc .iso .gcode .txt .i"},  // .i: ISO on a TNC
     {SourceKind::Sinumerik, "sinumerik", ".mpf .spf"},
     {SourceKind::Heidenhain, "heidenhain", ".h"},
     {SourceKind::CLData, "cldata", ".cls .cld .apt .aptsource"},
@@ -83,6 +84,13 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
     so.linkedFunctions = opts.linkedFunctions;
     so.cycles = opts.cycles;
     return sin::parseSinumerikProgram(sm, file, so, diags, out);
+  }
+  case SourceKind::Heidenhain: {
+    hei::HeiOptions ho;
+    ho.searchDirs = opts.searchDirs;
+    ho.linkedFunctions = opts.linkedFunctions;
+    ho.cycles = opts.cycles;
+    return hei::parseHeidenhainProgram(sm, file, ho, diags, out);
   }
   case SourceKind::NCIR: return ir::parseModule(sm.text(file), file, sm, diags, out);
   case SourceKind::Motion:

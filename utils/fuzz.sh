@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (test/fuzz) with clang-19 into ./build-fuzz and runs each for
 # SECONDS (default 60), starting from the seed corpus test/fuzz/corpus/<target>, mutating
 # with the words of test/fuzz/<target>.dict.
-# Usage: utils/fuzz.sh [SECONDS] [TARGET...]   (targets: iso ir machine motion; default all)
+# Usage: utils/fuzz.sh [SECONDS] [TARGET...]   (targets: iso ir machine motion heidenhain; default all)
 # New inputs go to build-fuzz/corpus/<target> (not the repository); findings (crash-*, leak-*,
 # timeout-*, oom-*) to build-fuzz/findings/<target>/. Reproduce one with
 #   build-fuzz/test/fuzz/fuzz-<target> FILE
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(iso ir machine motion)
+[ ${#targets[@]} -eq 0 ] && targets=(iso ir machine motion heidenhain)
 
 utils/install-missing.sh clang-19 libclang-rt-19-dev
 

@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 ncc, root = sys.argv[1], sys.argv[2]
-patterns = ["test/lit/**/*.nc", "test/lit/**/*.ngc", "test/lit/**/*.ncir", "examples/*.nc"]
+patterns = ["test/lit/**/*.nc", "test/lit/**/*.ngc", "test/lit/**/*.ncir", "test/lit/**/*.h", "examples/*.nc"]
 programs = sorted({p for pat in patterns for p in glob.glob(os.path.join(root, pat), recursive=True)})
 
 
@@ -29,6 +29,10 @@ def run(prog, engine):
         if m:
             base = root if m.group(1) == "%srcroot" else os.path.dirname(prog)
             args.append("--machine=" + os.path.join(base, m.group(2)))
+    with open(prog, errors="replace") as f:  # called programs on the search path (Heidenhain CALL PGM)
+        m = re.search(r"--include=%S/(\S+)", f.read())
+    if m:
+        args.append("--include=" + os.path.join(os.path.dirname(prog), m.group(1)))
     with open(prog, errors="replace") as f:  # a probing program runs against its probe results
         m = re.search(r"--probe-results=(%srcroot|%S)/(\S+)", f.read())
     if m:

@@ -1,0 +1,211 @@
+// CYCL DEF n with its parameter lines (`Q200=2 ;SET-UP CLEARANCE`), CYCL CALL and the table of
+// the cycles' parameters.
+#include "frontend/heidenhain/Cycles.h"
+#include "frontend/heidenhain/Parser.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+namespace ncc::hei {
+
+using ir::Expr;
+using ir::ExprPtr;
+using ir::Op;
+using ir::OpKind;
+
+namespace {
+// Act at their definition (digest §3.0): transformations 7 8 10 11 19 26 247, dwell 9, SL data
+// 14 20 270, tolerance 32, patterns 220 221, and the touch-probe cycles.
+bool defActiveNumber(int n) {
+  static const std::set<int> k = {7, 8, 9, 10, 11, 14, 19, 20, 26, 32, 220, 221, 247, 270};
+  return k.count(n) || (n >= 400 && n < 500) || (n >= 1400 && n < 1500);
+}
+
+bool takes(std::string_view params, std::string_view q) {
+  for (size_t at = 0; (at = params.find(q, at)) != std::string_view::npos; at += q.size()) {
+    size_t end = at + q.size();
+    if ((at == 0 || params[at - 1] == ' ') && (end == params.size() || params[end] == ' ')) return true;
+  }
+  return false;
+}
+}  // namespace
+
+bool defActiveCycle(int number) { return defActiveNumber(number); }
+
+Op cycleCall(SourceLoc l) {
+  Op o(OpKind::Cycle, l);
+  o.set("action", Expr::symbol("call", l));
+  return o;
+}
+
+// The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 9 DWELL TIME, 10 ROTATION.
+bool oldCycleRuns(int number) { return number == 7 || number == 9 || number == 10; }
+
+// One sub-block of cycle 7, 9 or 10. The TNC keeps one datum shift and one rotation angle
+// (digest §4.1): each definition replaces it (IX, IROT add to it), kept in program-wide
+// variables. The core's chain applies the rotation before the local shift, as the TNC does
+// (rotation about the shifted datum); it refuses a shift while a rotation is active, so the
+// rotation is taken off around a shift and put back (the composite is the same).
+bool BlockParser::oldCycleBlock(int number, const Token &n) {
+  SourceLoc bl = loc(t_[0]);
+  f_.pp.frames = true;
+  auto rotationOp = [&](bool set) {
+    Op o(OpKind::Frame, bl);
+    o.set("slot", Expr::symbol("rotation"));
+    o.set("action", Expr::symbol(set ? "set" : "cancel"));
+    if (set) {
+      o.set("form", Expr::symbol("plane"));
+      o.set("X", num(0));
+      o.set("Y", num(0));
+      o.set("R", hglobal(kRot, bl));
+    }
+    return o;
+  };
+  auto ifRotated = [&](Op inner) {
+    Op c(OpKind::If, bl);
+    c.set("cond", Expr::binary(ir::OpCode::Ne, hglobal(kRot, bl), num(0), bl));
+    c.regions.emplace_back();
+    c.regions[0].push_back(std::move(inner));
+    return c;
+  };
+  if (number == 9) {  // CYCL DEF 9.1 DWELL 1.5: the time is the block's number
+    while (!atEnd() && tok().kind == Tok::Word) ++i_;
+    ExprPtr t = signedValue();
+    if (!t) return false;
+    if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
+    Op d(OpKind::Dwell, bl);
+    d.set("seconds", std::move(t));
+    out().push_back(std::move(d));
+    return true;
+  }
+  if (number == 10) {  // CYCL DEF 10.1 ROT+35 / IROT+45
+    bool inc = tok().isWord("IROT");
+    if (!inc && !tok().isWord("ROT")) return fail(tok(), "CYCL DEF 10.1 takes ROT or IROT");
+    ++i_;
+    ExprPtr a = signedValue();
+    if (!a) return false;
+    if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
+    Op off(OpKind::CutterComp, bl);  // cycle 10 cancels radius compensation (L12850)
+    off.set("side", Expr::symbol("off"));
+    out().push_back(std::move(off));
+    ExprPtr angle = inc ? Expr::binary(ir::OpCode::Add, hglobal(kRot, bl), std::move(a), bl) : std::move(a);
+    out().push_back(ifRotated(rotationOp(false)));
+    out().push_back(assignOp(hglobal(kRot, bl), std::move(angle), bl));
+    out().push_back(ifRotated(rotationOp(true)));
+    return true;
+  }
+  // Cycle 7: one axis per sub-block; absolute from the preset, IX from the last shift.
+  if (tok().is("#")) return fail(tok(), "datum tables (CYCL DEF 7.1 #n) are not simulated yet", "unsupported-code");
+  const Token &w = tok();
+  std::string_view a = w.text;
+  bool inc = w.kind == Tok::Word && a.size() == 2 && a[0] == 'I';
+  if (inc) a.remove_prefix(1);
+  if (w.kind != Tok::Word || a.size() != 1 || std::string_view("XYZ").find(a[0]) == std::string_view::npos)
+    return fail(w, "CYCL DEF 7 shifts X, Y or Z (one axis per block)");
+  ++i_;
+  ExprPtr v = signedValue();
+  if (!v) return false;
+  if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
+  const char *var = a[0] == 'X' ? kShiftX : a[0] == 'Y' ? kShiftY : kShiftZ;
+  ExprPtr shift = inc ? Expr::binary(ir::OpCode::Add, hglobal(var, bl), std::move(v), bl) : std::move(v);
+  out().push_back(assignOp(hglobal(var, bl), std::move(shift), bl));
+  Op f(OpKind::Frame, bl);
+  f.set("slot", Expr::symbol("local"));
+  f.set("action", Expr::symbol("set"));
+  f.set(std::string(1, a[0]), hglobal(var, bl));
+  out().push_back(ifRotated(rotationOp(false)));
+  out().push_back(std::move(f));
+  out().push_back(ifRotated(rotationOp(true)));
+  return true;
+}
+
+bool BlockParser::cycl() {
+  SourceLoc bl = loc(t_[0]);
+  if (tok().isWord("CALL")) {
+    ++i_;
+    std::string how = tok().isWord("POS") ? " POS" : tok().isWord("PAT") ? " PAT" : "";
+    if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
+    if (!f_.cycleRuns || !how.empty())
+      return fail(t_[0], fmt::format("cycle {} is not simulated yet (CYCL CALL{})", f_.cycle, how), "unsupported-code");
+    PathWords w;  // CYCL CALL M3: the M functions around the call
+    if (!words(w, kM, "CYCL CALL") || !emitBefore(w)) return false;
+    out().push_back(cycleCall(bl));
+    return emitAfter(w);
+  }
+  if (!expectWord("DEF")) return false;
+  const Token &n = tok();
+  if (n.kind != Tok::Number) return fail(n, "CYCL DEF needs the cycle number");
+  int number = (int)std::floor(n.num);
+  int sub = n.isInt ? -1 : (int)std::lround((n.num - number) * 10);  // 7.0, 7.1 …: the old sub-blocks
+  ++i_;
+  if (sub > 0 && number == f_.oldCycle && oldCycleRuns(number)) return oldCycleBlock(number, n);
+  while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
+  // The parameter lines: Qn=value, each at most once, each one the cycle takes. A cycle of the
+  // library (`ncc cycle --list`) becomes the `cycle` op: a CALL-active one is stored (define)
+  // for CYCL CALL and M99, a pattern (220, 221) runs the stored one at its positions at once.
+  CycleSignature lib;
+  bool inLib = sub < 0 && f_.pp.opts.cycles && f_.pp.opts.cycles(fmt::format("hei.{}", number), lib);
+  bool defActive = defActiveCycle(number);
+  if (sub <= 0 && !defActive) {  // a new definition replaces the last, also when it is wrong
+    f_.cycle = number;
+    f_.cycleRuns = inLib;
+  }
+  Op c(OpKind::Cycle, bl);
+  if (inLib) {
+    c.set(lib.pattern ? "pattern" : "entry", Expr::string(lib.name, bl));
+    c.set("action", Expr::symbol(lib.pattern ? "call" : "define", bl));
+  }
+  std::set<std::string> seen;
+  while (!atEnd()) {
+    const Token &q = tok();
+    if (!(q.isWord("Q") || q.isWord("QS")) || peek().kind != Tok::Number || !peek().isInt)
+      return fail(q, fmt::format("a cycle parameter line Qn=value was expected, not '{}'", q.text));
+    std::string name = q.text + peek().text;
+    i_ += 2;
+    if (!tok().is("=")) return fail(tok(), fmt::format("'=' expected after {}", name));
+    ++i_;
+    if (seen.count(name)) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
+    seen.insert(name);
+    if (inLib && !takes(lib.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
+    ExprPtr v;
+    if (tok().isWord("FAUTO")) {  // the feed of the last TOOL CALL, taken now (L570)
+      f_.pp.fauto = true;
+      v = hglobal(kFauto, loc());
+      ++i_;
+    } else if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FU") ||
+               tok().isWord("FZ")) {
+      if (inLib)
+        return fail(tok(), fmt::format("{}={} is not simulated yet", name, tok().kind == Tok::String ? "\"…\"" : tok().text),
+                    "unsupported-code");
+      ++i_;
+      continue;
+    } else if (!(v = signedValue())) {
+      return false;
+    }
+    if (inLib) c.set((lib.pattern ? "p." : "a.") + name, std::move(v));
+  }
+  Op note(OpKind::Comment, bl);
+  note.set("text", Expr::string(fmt::format("CYCL DEF {}", n.text)));
+  out().push_back(std::move(note));
+  if (sub > 0) {  // a sub-block of an old-style cycle: its n.0 block was refused already
+    if (f_.cycleLoc.line == 0 || f_.oldCycle != number)
+      return fail(n, fmt::format("CYCL DEF {} without CYCL DEF {}.0 before it", n.text, number), "cycle-invalid");
+    return true;
+  }
+  if (sub == 0) f_.oldCycle = number;
+  if (sub == 0 && oldCycleRuns(number)) return true;  // its sub-blocks act
+  f_.cycleLoc = bl;
+  if (inLib && lib.pattern) {
+    if (f_.cycle < 0) return fail(n, fmt::format("cycle {} runs the machining cycle defined before it: there is none", number), "cycle-invalid");
+    if (!f_.cycleRuns)
+      return fail(n, fmt::format("cycle {} is not simulated yet (called by cycle {})", f_.cycle, number), "unsupported-code");
+  } else if (defActive) {
+    return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
+  }
+  if (inLib) out().push_back(std::move(c));
+  return true;
+}
+
+}  // namespace ncc::hei

@@ -1,0 +1,188 @@
+// The Klartext front end's internals: one ProgramParser for the program and the programs it
+// calls, one FileParser per file (a function: its labels, section calls, Q parameters) and the
+// block parser that lowers one block to NC IR ops.
+#pragma once
+#include "frontend/heidenhain/HeiFrontend.h"
+#include "frontend/heidenhain/Lexer.h"
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace ncc::hei {
+
+class ProgramParser;
+
+// CALL LBL n: resolved once every label of the file is known (a subprogram LBL n … LBL 0, or
+// with REP a section repeat back to LBL n).
+struct LabelCall {
+  size_t at;          // index of its call_section op in the body
+  std::string label;  // "LBL5", "LBL:NAME"
+  bool rep;           // REP written
+  SourceLoc loc;
+};
+
+// One program file: one function.
+class FileParser {
+public:
+  FileParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain);
+  bool run();
+  ir::Function fn;
+
+  ProgramParser &pp;
+  uint32_t file;
+  bool isMain;
+  std::string pgmName;              // BEGIN PGM name
+  bool inch = false;                // BEGIN PGM … INCH
+  bool begun = false, ended = false;
+  bool sawEnd = false;              // an M2/M30 block: END PGM adds no program end
+  SourceLoc beginLoc;
+  bool usesQL = false;              // declares the local QL array at its start
+  std::map<std::string, size_t> labels;        // label name -> body index
+  std::vector<size_t> lbl0;                    // body indices of the LBL 0 labels
+  std::vector<LabelCall> calls;
+  std::vector<std::pair<std::string, SourceLoc>> gotos;  // FN 9-12 targets
+  size_t lastMove = SIZE_MAX;       // body index of the last move (RND and CHF attach to it)
+  int cycle = -1;                   // the last CYCL DEF of a CALL-active cycle (static)
+  bool cycleRuns = false;           // … and the library has it (CYCL CALL and M99 lower to `cycle`)
+  int oldCycle = -1;                // the last old-style CYCL DEF n.0
+  SourceLoc cycleLoc;
+  bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
+
+private:
+  bool resolveLabels();
+};
+
+class ProgramParser {
+public:
+  ProgramParser(SourceManager &sm, const HeiOptions &o, Diagnostics &d) : sm(sm), opts(o), diags(d) {}
+  SourceManager &sm;
+  const HeiOptions &opts;
+  Diagnostics &diags;
+  std::vector<ir::Function> done;                 // called programs
+  std::map<std::string, std::string> loaded;      // file path -> function name
+  bool polar = false;    // some file uses CC/LP/CP: the main program declares the pole
+  bool fauto = false;    // some file uses FAUTO or TOOL CALL F
+  bool frames = false;   // some file uses cycle 7 or 10: the main program declares the shift and angle
+  bool mainInch = false;
+  bool ok = true;
+  // The function of a called program (CALL PGM): parsed on first use; "" with an error at loc.
+  std::string program(const std::string &written, uint32_t fromFile, SourceLoc loc);
+  bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
+    diags.error(loc, std::move(msg), rule);
+    ok = false;
+    return false;
+  }
+};
+
+// The words of a path block (L, C, CR, CT, LP, CP, CC) and what else a block may carry.
+struct Coord {
+  char axis;  // X Y Z A B C U V W
+  bool inc;   // IX …
+  ir::ExprPtr value;
+  SourceLoc loc;
+};
+struct PathWords {
+  std::vector<Coord> coords;
+  ir::ExprPtr pa, pr;
+  bool paInc = false, prInc = false;
+  SourceLoc paLoc, prLoc;
+  int comp = -1;  // R0 0, RL 1, RR 2
+  ir::ExprPtr feed;
+  bool fmax = false, fauto = false;
+  SourceLoc feedLoc;
+  int dr = 0;  // DR+ 1, DR- -1
+  SourceLoc drLoc;
+  ir::ExprPtr radius;  // CR's R
+  SourceLoc radiusLoc;
+  std::vector<std::pair<int, SourceLoc>> ms;
+  const Coord *find(char axis) const {
+    for (auto &c : coords)
+      if (c.axis == axis) return &c;
+    return nullptr;
+  }
+};
+
+// Which words a statement takes.
+enum WordSet : unsigned {
+  kCoords = 1, kPolar = 2, kComp = 4, kFeed = 8, kM = 16, kDir = 32, kRadius = 64,
+};
+
+class BlockParser {
+public:
+  BlockParser(FileParser &f, Block &b) : f_(f), b_(b), t_(b.toks) {}
+  bool parse();
+
+  // Expressions (Expr.cpp)
+  ir::ExprPtr formula();           // + - * / ^, functions, parentheses
+  ir::ExprPtr signedValue();       // [+|-] number | Q param: a word's value
+  ir::ExprPtr qParam();            // Q5, QL5, QR5 at the current token
+
+private:
+  FileParser &f_;
+  Block &b_;
+  std::vector<Token> &t_;
+  size_t i_ = 0;
+
+  const Token &tok() const { return t_[i_]; }
+  const Token &peek(size_t k = 1) const { return t_[std::min(i_ + k, t_.size() - 1)]; }
+  SourceLoc loc(const Token &t) const { return {f_.file, t.line, t.col}; }
+  SourceLoc loc() const { return loc(tok()); }
+  bool fail(const Token &t, std::string msg, const char *rule = "syntax");
+  bool expectWord(std::string_view w);
+  bool atEnd() const { return tok().kind == Tok::End; }
+  ir::Op blockOp() const;  // `block n=` of this block
+  ir::Region &out() { return f_.fn.body; }
+
+  // statements (Block.cpp)
+  bool beginPgm();
+  bool endPgm();
+  bool blkForm();
+  bool tool();
+  bool fn();
+  bool assign();
+  bool label();
+  bool call();
+  bool cycl();
+  bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
+  bool stop();
+  bool mOnly();
+  // paths (Path.cpp)
+  bool line();
+  bool linePolar();
+  bool arc();
+  bool arcPolar();
+  bool arcRadius();
+  bool arcTangent();
+  bool centre();
+  bool corner();
+  bool words(PathWords &w, unsigned allowed, const char *stmt);
+  bool emitBefore(PathWords &w);                 // feed, M at the block start, compensation
+  bool inchFeed(SourceLoc at);                   // false (an error) for F in an INCH program
+  bool emitMove(ir::Op mv, PathWords &w, const char *motion);
+  bool emitAfter(PathWords &w);                  // M at the block end
+  bool polarEnd(PathWords &w, ir::Op &mv, bool arc);
+
+  // expressions
+  ir::ExprPtr term();
+  ir::ExprPtr factor();
+  ir::ExprPtr unary();
+  ir::ExprPtr primary();
+  bool labelName(std::string &name);             // LBL n / LBL "name": its label
+};
+
+// Helpers shared by the statements.
+ir::ExprPtr hglobal(const char *name, SourceLoc l = {});
+ir::Op assignOp(ir::ExprPtr target, ir::ExprPtr value, SourceLoc l);
+ir::ExprPtr num(double v, SourceLoc l = {});
+// The pole (CC) and FAUTO's feed: program-wide variables declared at the main program's start.
+extern const char *const kCcX, *const kCcY, *const kPr, *const kPa, *const kFauto;
+// The datum shift (cycle 7) and rotation angle (cycle 10), program-wide.
+extern const char *const kShiftX, *const kShiftY, *const kShiftZ, *const kRot;
+bool oldCycleRuns(int number);
+// Sections (call_section) need label names; LBL 0 gets one per occurrence.
+std::string labelOf(const Token &t);
+
+}  // namespace ncc::hei
