@@ -1,5 +1,6 @@
 #include "frontend/Frontend.h"
 
+#include "frontend/cldata/CldFrontend.h"
 #include "frontend/heidenhain/HeiFrontend.h"
 #include "frontend/iso/IsoFrontend.h"
 #include "frontend/sinumerik/SinFrontend.h"
@@ -20,7 +21,7 @@ static const SourceKindInfo kKinds[] = {
     {SourceKind::ISO, "iso", ".nc .ngc .tap .cnc .iso .gcode .txt .i"},  // .i: ISO on a TNC
     {SourceKind::Sinumerik, "sinumerik", ".mpf .spf"},
     {SourceKind::Heidenhain, "heidenhain", ".h"},
-    {SourceKind::CLData, "cldata", ".cls .cld .apt .aptsource"},
+    {SourceKind::CLData, "apt", ".cl .cls .apt .aptsource"},  // APT CL text (docs/APT.md); .cl before .cls: the first match counts
     {SourceKind::NCIR, "ncir", ".ncir"},
     {SourceKind::Motion, "motion", ".motion"},
 };
@@ -32,6 +33,7 @@ const char *sourceKindName(SourceKind k) {
 }
 
 bool sourceKindFromName(std::string_view s, SourceKind &out) {
+  if (s == "cldata") s = "apt";  // the kind's older name
   for (auto &i : kKinds)
     if (s == i.name) {
       out = i.kind;
@@ -92,6 +94,7 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
     ho.cycles = opts.cycles;
     return hei::parseHeidenhainProgram(sm, file, ho, diags, out);
   }
+  case SourceKind::CLData: return cld::parseAptProgram(sm, file, diags, out);
   case SourceKind::NCIR: return ir::parseModule(sm.text(file), file, sm, diags, out);
   case SourceKind::Motion:
     diags.error({}, fmt::format("{}: Motion IR text is an executed program without NC IR: only ncc run, ncc "

@@ -1,0 +1,486 @@
+// The records lowered to NC IR, one handler per major word (kRecords). CL coordinates are
+// absolute tool-tip positions, so the front end knows where the tool is after each move and
+// checks arcs against it (docs/APT.md).
+#include "frontend/cldata/CldFrontend.h"
+#include "frontend/cldata/Records.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+
+namespace ncc::cld {
+
+using ir::Expr;
+using ir::Op;
+using ir::OpKind;
+
+namespace {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+};
+
+// CYCLE/ kinds and the library entry that does exactly the same (docs/APT.md "Cycles").
+struct CycleKind {
+  const char *word;
+  const char *entry;  // null: no library entry is exactly equal
+};
+const CycleKind kCycles[] = {
+    {"DRILL", "sin.CYCLE81"}, {"BORE", "sin.CYCLE85"}, {"DEEP", nullptr}, {"TAP", nullptr},
+    {"BRKCHP", nullptr},      {"REAM", nullptr},       {"FACE", nullptr},
+};
+
+// Records that describe the job but cannot change the tool path: read with a warning.
+const char *const kIgnored[] = {"PAINT", "DISPLY", "PLOT", "SEQNO", "INTOL", "OUTTOL", "TOLER", "CLEARP",
+                                "TOOLNO", "PITCH", "LINTOL", "PPLOT", "TRACUT_OFF", "OPNAME", "TPRINT"};
+
+class Lowerer {
+public:
+  Lowerer(SourceManager &sm, uint32_t file, Diagnostics &d, ir::Function &fn) : sm_(sm), file_(file), d_(d), body_(fn.body) {}
+  bool run();
+
+private:
+  using Handler = bool (Lowerer::*)(const Record &);
+  struct Entry {
+    const char *word;
+    Handler fn;
+  };
+  static const Entry kTable[];
+
+  bool error(SourceLoc l, std::string msg, const char *rule = "unsupported-code") {
+    d_.error(l, std::move(msg), rule);
+    return false;
+  }
+  Op &emit(OpKind k, SourceLoc l) { return body_.emplace_back(k, l); }
+  void comment(std::string text, SourceLoc l) { emit(OpKind::Comment, l).set("text", Expr::string(std::move(text))); }
+  static ir::ExprPtr num(double v) { return Expr::number(v, ir::Type::Real); }
+  void motion(const char *m, SourceLoc l) {
+    if (mode_ == m) return;
+    mode_ = m;
+    emit(OpKind::Mode, l).set("motion", Expr::symbol(m));
+  }
+  // The numbers of a record; at least `min`, at most `max`.
+  bool numbers(const Record &r, size_t min, size_t max, std::vector<double> &v, size_t from = 0);
+  bool word(const Record &r, size_t i, std::string &out);
+  void emitFeed(SourceLoc l) {
+    emit(OpKind::Mode, l).set("feed_mode", Expr::symbol(perRev_ ? "per_rev" : "per_minute"));
+    emit(OpKind::Feed, l).set("value", num(feed_));
+  }
+  bool moveTo(const Record &r, Vec3 p, bool rapid);
+  bool endArc(const Record &r, Vec3 p);
+  bool cycleAt(const Record &r, Vec3 p);
+
+  bool comment(const Record &r) { return comment(r.rest, r.loc), true; }
+  bool keep(const Record &r) { return comment(fmt::format("{}/{}", r.word, r.rest), r.loc), true; }
+  bool insert(const Record &r) {
+    d_.warning(r.loc, "INSERT text is kept as a comment, not sent to the controller", "lenient-syntax");
+    return comment(r);
+  }
+  bool partno(const Record &r) { return comment("PARTNO " + r.rest, r.loc), true; }
+  bool units(const Record &r);
+  bool multax(const Record &r);
+  bool loadtl(const Record &r);
+  bool cutter(const Record &r);
+  bool from(const Record &r);
+  bool go(const Record &r);
+  bool godlta(const Record &r);
+  bool rapid(const Record &r) { return rapidNext_ = true, true; }
+  bool fedrat(const Record &r);
+  bool spindl(const Record &r);
+  bool coolnt(const Record &r);
+  bool circle(const Record &r);
+  bool cycle(const Record &r);
+  bool cutcom(const Record &r);
+  bool tlaxis(const Record &r);
+  bool stop(const Record &r);
+  bool delay(const Record &r);
+  bool end(const Record &r);
+  bool msys(const Record &r);
+
+  SourceManager &sm_;
+  uint32_t file_;
+  Diagnostics &d_;
+  ir::Region &body_;
+  std::string mode_;
+  bool rapidNext_ = false;
+  bool inch_ = false;
+  bool ended_ = false;
+  bool feedSet_ = false;
+  bool perRev_ = false;  // the last FEDRAT's mode and value: a cycle's own feed ends with CYCLE/OFF
+  double feed_ = 0;
+  std::optional<Vec3> pos_;
+  struct Arc {
+    Vec3 c, axis;
+    double r;
+    SourceLoc loc;
+  };
+  std::optional<Arc> arc_;
+  struct Cycle {
+    const CycleKind *kind;
+    double depth, feed, clear;
+    SourceLoc loc;
+  };
+  std::optional<Cycle> cycle_;
+};
+
+const Lowerer::Entry Lowerer::kTable[] = {
+    {"PARTNO", &Lowerer::partno}, {"MACHIN", &Lowerer::keep},   {"TLDATA", &Lowerer::keep},
+    {"PPRINT", &Lowerer::comment}, {"INSERT", &Lowerer::insert}, {"UNITS", &Lowerer::units},
+    {"MULTAX", &Lowerer::multax}, {"LOADTL", &Lowerer::loadtl}, {"CUTTER", &Lowerer::cutter},
+    {"FROM", &Lowerer::from},     {"GOTO", &Lowerer::go},       {"GODLTA", &Lowerer::godlta},
+    {"RAPID", &Lowerer::rapid},   {"FEDRAT", &Lowerer::fedrat}, {"SPINDL", &Lowerer::spindl},
+    {"COOLNT", &Lowerer::coolnt}, {"CIRCLE", &Lowerer::circle}, {"CYCLE", &Lowerer::cycle},
+    {"CUTCOM", &Lowerer::cutcom}, {"TLAXIS", &Lowerer::tlaxis}, {"STOP", &Lowerer::stop},
+    {"OPSTOP", &Lowerer::stop},   {"DELAY", &Lowerer::delay},   {"END", &Lowerer::end},
+    {"FINI", &Lowerer::end},      {"MSYS", &Lowerer::msys},
+};
+
+constexpr double kTol = 0.001;  // mm: positions and radii that must agree (scaled in inch)
+
+bool Lowerer::numbers(const Record &r, size_t min, size_t max, std::vector<double> &v, size_t from) {
+  if (r.params.size() < from + min || r.params.size() > from + max)
+    return error(r.loc, min == max ? fmt::format("{} takes {} numbers", r.word, min)
+                                   : fmt::format("{} takes {} to {} numbers", r.word, min, max), "syntax");
+  for (size_t i = from; i < r.params.size(); ++i) {
+    if (!r.params[i].isNumber) return error(r.params[i].loc, fmt::format("a number expected, not '{}'", r.params[i].text), "syntax");
+    v.push_back(r.params[i].value);
+  }
+  return true;
+}
+
+bool Lowerer::word(const Record &r, size_t i, std::string &out) {
+  if (i >= r.params.size()) return error(r.loc, fmt::format("{} needs a word here", r.word), "syntax");
+  out = r.params[i].text;
+  return true;
+}
+
+bool Lowerer::units(const Record &r) {
+  std::string w;
+  if (!word(r, 0, w)) return false;
+  if (w != "MM" && w != "INCHES") return error(r.params[0].loc, fmt::format("UNITS/{}: MM or INCHES expected", w));
+  inch_ = w == "INCHES";
+  emit(OpKind::Mode, r.loc).set("units", Expr::symbol(inch_ ? "inch" : "mm"));
+  return true;
+}
+
+bool Lowerer::multax(const Record &r) {
+  if (r.params.size() == 1 && r.params[0].text == "OFF") return true;
+  return error(r.loc, "MULTAX: 5-axis tool vectors are not read yet (they need the machine's kinematics); only 3-axis CL data");
+}
+
+bool Lowerer::loadtl(const Record &r) {
+  std::vector<double> v;
+  if (!numbers(r, 1, 1, v)) return false;
+  if (v[0] < 1 || v[0] != std::floor(v[0])) return error(r.params[0].loc, "LOADTL needs a tool number (a whole number from 1)", "syntax");
+  auto t = Expr::number(v[0], ir::Type::Int);
+  emit(OpKind::ToolSelect, r.loc).set("value", std::move(t));
+  emit(OpKind::ToolChange, r.loc);
+  // CL points are tool-tip points: the tool's length is compensated.
+  emit(OpKind::ToolLength, r.loc).set("h", Expr::number(v[0], ir::Type::Int));
+  return true;
+}
+
+bool Lowerer::cutter(const Record &r) {
+  std::vector<double> v;
+  if (!numbers(r, 1, 7, v)) return false;
+  comment(fmt::format("CUTTER/{}", r.rest), r.loc);  // the path is the tool tip's: kept (docs/APT.md)
+  return true;
+}
+
+bool Lowerer::moveTo(const Record &r, Vec3 p, bool rapid) {
+  if (arc_) return endArc(r, p);
+  if (cycle_ && !rapid) return cycleAt(r, p);
+  if (!rapid && !feedSet_) return error(r.loc, "a feed move before any FEDRAT", "motion-without-feed");
+  motion(rapid ? "rapid" : "linear", r.loc);
+  Op &m = emit(OpKind::Move, r.loc);
+  m.set("X", num(p.x)).set("Y", num(p.y)).set("Z", num(p.z));
+  pos_ = p;
+  return true;
+}
+
+bool Lowerer::from(const Record &r) {
+  std::vector<double> v;
+  if (!numbers(r, 3, 6, v)) return false;
+  if (v.size() != 3) return error(r.loc, "FROM with a tool axis: only 3-axis CL data is read");
+  return moveTo(r, {v[0], v[1], v[2]}, true);
+}
+
+bool Lowerer::go(const Record &r) {
+  std::vector<double> v;
+  if (!numbers(r, 3, 6, v)) return false;
+  if (v.size() == 4 || v.size() == 5) return error(r.loc, "GOTO takes x,y,z or x,y,z,i,j,k", "syntax");
+  if (v.size() == 6 && (std::fabs(v[3]) > 1e-9 || std::fabs(v[4]) > 1e-9 || v[5] <= 0))
+    return error(r.params[3].loc, fmt::format("GOTO with the tool axis ({},{},{}): only a vertical tool axis (0,0,1) is read without the machine's kinematics",
+                                              r.params[3].text, r.params[4].text, r.params[5].text));
+  bool rapid = rapidNext_;
+  rapidNext_ = false;
+  return moveTo(r, {v[0], v[1], v[2]}, rapid);
+}
+
+bool Lowerer::godlta(const Record &r) {
+  std::vector<double> v;
+  if (!numbers(r, 1, 3, v)) return false;
+  if (!pos_) return error(r.loc, "GODLTA before the tool position is known (no FROM or GOTO before it)");
+  if (v.size() == 1) v = {0, 0, v[0]};  // GODLTA/d: along the tool axis
+  if (v.size() != 3) return error(r.loc, "GODLTA takes dz or dx,dy,dz", "syntax");
+  bool rapid = rapidNext_;
+  rapidNext_ = false;
+  return moveTo(r, {pos_->x + v[0], pos_->y + v[1], pos_->z + v[2]}, rapid);
+}
+
+bool Lowerer::fedrat(const Record &r) {
+  // FEDRAT/f[,unit] or FEDRAT/unit,f (NX writes both orders)
+  size_t n = 0;
+  std::string unit;
+  std::optional<double> f;
+  for (auto &p : r.params) {
+    if (p.isNumber) f = p.value, ++n;
+    else unit = p.text;
+  }
+  if (n != 1 || r.params.size() > 2) return error(r.loc, "FEDRAT takes a feed and its unit", "syntax");
+  struct U {
+    const char *word;
+    bool inch, perRev;
+  };
+  static const U kUnits[] = {{"MMPM", false, false}, {"IPM", true, false}, {"MMPR", false, true}, {"IPR", true, true}};
+  const U *u = nullptr;
+  for (auto &k : kUnits)
+    if (unit == k.word) u = &k;
+  if (!unit.empty() && !u) return error(r.loc, fmt::format("FEDRAT unit {}: MMPM, IPM, MMPR or IPR expected", unit));
+  if (u && u->inch != inch_)
+    return error(r.loc, fmt::format("FEDRAT/{} in a program in {}: the feed's unit must be the program's", unit, inch_ ? "inches" : "mm"));
+  if (*f <= 0) return error(r.loc, "FEDRAT must be positive", "bad-feed");
+  perRev_ = u && u->perRev;
+  feed_ = *f;
+  feedSet_ = true;
+  emitFeed(r.loc);
+  if (mode_ == "rapid") motion("linear", r.loc);
+  return true;
+}
+
+bool Lowerer::spindl(const Record &r) {
+  if (r.params.size() == 1 && r.params[0].text == "OFF") {
+    emit(OpKind::Spindle, r.loc).set("dir", Expr::symbol("stop"));
+    return true;
+  }
+  std::optional<double> rpm;
+  const char *dir = nullptr;
+  for (auto &p : r.params) {
+    if (p.isNumber && !rpm) rpm = p.value;
+    else if (p.text == "CLW") dir = "cw";
+    else if (p.text == "CCLW") dir = "ccw";
+    else if (p.text != "RPM") return error(p.loc, fmt::format("SPINDL/{} is not read (rpm with CLW or CCLW, or OFF)", p.text));
+  }
+  if (!rpm || *rpm <= 0) return error(r.loc, "SPINDL needs a positive speed in rpm", "bad-speed");
+  if (!dir) dir = "cw";  // ISO 4343: CLW is the default
+  emit(OpKind::Speed, r.loc).set("value", num(*rpm));
+  emit(OpKind::Spindle, r.loc).set("dir", Expr::symbol(dir));
+  return true;
+}
+
+bool Lowerer::coolnt(const Record &r) {
+  std::string w;
+  if (!word(r, 0, w)) return false;
+  Op c(OpKind::Coolant, r.loc);
+  if (w == "ON" || w == "FLOOD") c.set("flood", Expr::symbol("on"));
+  else if (w == "MIST") c.set("mist", Expr::symbol("on"));
+  else if (w == "OFF") c.set("flood", Expr::symbol("off")).set("mist", Expr::symbol("off"));
+  else return error(r.params[0].loc, fmt::format("COOLNT/{} is not read (ON, FLOOD, MIST or OFF)", w));
+  body_.push_back(std::move(c));
+  return true;
+}
+
+bool Lowerer::circle(const Record &r) {
+  std::vector<double> v;
+  if (r.params.size() < 7) return error(r.loc, "CIRCLE takes xc,yc,zc,i,j,k,r", "syntax");
+  for (size_t i = 0; i < 7; ++i) {
+    if (!r.params[i].isNumber) return error(r.params[i].loc, fmt::format("a number expected, not '{}'", r.params[i].text), "syntax");
+    v.push_back(r.params[i].value);
+  }
+  // Parameters after the radius (tolerances, the CAM's extra data) describe the same circle.
+  if (arc_) return error(r.loc, "CIRCLE after a CIRCLE without the GOTO that ends it", "syntax");
+  if (cycle_) return error(r.loc, "CIRCLE inside a CYCLE: CYCLE/OFF first", "syntax");
+  if (!pos_) return error(r.loc, "CIRCLE before the tool position is known (no FROM or GOTO before it)");
+  arc_ = Arc{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], r.loc};
+  return true;
+}
+
+bool Lowerer::endArc(const Record &r, Vec3 p) {
+  Arc a = *arc_;
+  arc_.reset();
+  // The plane from the axis: it must be one of the coordinate axes.
+  struct PlaneRow {
+    const char *plane;
+    int axis;  // 0 x, 1 y, 2 z: the plane's normal
+  };
+  static const PlaneRow kPlanes[] = {{"yz", 0}, {"zx", 1}, {"xy", 2}};
+  double ax[3] = {a.axis.x, a.axis.y, a.axis.z};
+  const PlaneRow *pl = nullptr;
+  for (auto &row : kPlanes)
+    if (std::fabs(std::fabs(ax[row.axis]) - 1) < 1e-6 && std::fabs(ax[(row.axis + 1) % 3]) < 1e-6 && std::fabs(ax[(row.axis + 2) % 3]) < 1e-6)
+      pl = &row;
+  if (!pl) return error(a.loc, "CIRCLE with a tool axis that is not X, Y or Z: only arcs in the XY, ZX and YZ planes are read");
+  if (!feedSet_) return error(r.loc, "an arc before any FEDRAT", "motion-without-feed");
+  // Start and end must lie at the radius from the centre, in the plane.
+  double tol = inch_ ? kTol / 25.4 : kTol;
+  auto inPlane = [&](Vec3 q) {
+    double d[3] = {q.x - a.c.x, q.y - a.c.y, q.z - a.c.z};
+    d[pl->axis] = 0;
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  };
+  for (auto [q, what] : {std::pair{*pos_, "start"}, std::pair{p, "end"}}) {
+    double rr = inPlane(q);
+    if (std::fabs(rr - a.r) > tol)
+      return error(what == std::string("end") ? r.loc : a.loc,
+                   fmt::format("the arc's {} point is {:.4f} from the CIRCLE centre, its radius is {}", what, rr, a.r),
+                   "arc-radius-mismatch");
+  }
+  emit(OpKind::Mode, a.loc).set("plane", Expr::symbol(pl->plane));
+  mode_.clear();
+  motion(ax[pl->axis] > 0 ? "arc_ccw" : "arc_cw", a.loc);
+  Op &m = emit(OpKind::Move, r.loc);
+  m.set("X", num(p.x)).set("Y", num(p.y)).set("Z", num(p.z));
+  // The centre as offsets from the start (I J K incremental, the IR's default).
+  const char *keys[3] = {"I", "J", "K"};
+  double off[3] = {a.c.x - pos_->x, a.c.y - pos_->y, a.c.z - pos_->z};
+  for (int k = 0; k < 3; ++k)
+    if (k != pl->axis) m.set(keys[k], num(off[k]));
+  pos_ = p;
+  return true;
+}
+
+bool Lowerer::cycle(const Record &r) {
+  std::string w;
+  if (!word(r, 0, w)) return false;
+  if (w == "OFF") {
+    if (cycle_ && feedSet_) emitFeed(r.loc);  // the FEDRAT before the cycle again
+    cycle_.reset();
+    return true;
+  }
+  const CycleKind *k = nullptr;
+  for (auto &c : kCycles)
+    if (w == c.word) k = &c;
+  if (!k) return error(r.params[0].loc, fmt::format("CYCLE/{} is not a cycle ncc reads", w));
+  if (!k->entry)
+    return error(r.params[0].loc, fmt::format("CYCLE/{}: the cycle library has no entry that does exactly the same", w));
+  // CYCLE/DRILL|BORE, depth, MMPM|IPM, feed, clearance: nothing else (dwell, RAPTO, peck) is read.
+  if (r.params.size() != 5 || !r.params[1].isNumber || r.params[2].isNumber || !r.params[3].isNumber || !r.params[4].isNumber)
+    return error(r.loc, fmt::format("CYCLE/{} is read as CYCLE/{},depth,MMPM|IPM,feed,clearance", w, w), "syntax");
+  const std::string &u = r.params[2].text;
+  if (u != (inch_ ? "IPM" : "MMPM")) return error(r.params[2].loc, fmt::format("the cycle's feed unit {} is not the program's", u));
+  if (r.params[1].value <= 0 || r.params[3].value <= 0 || r.params[4].value < 0)
+    return error(r.loc, "the cycle's depth and feed must be positive, its clearance not negative", "cycle-invalid");
+  cycle_ = Cycle{k, r.params[1].value, r.params[3].value, r.params[4].value, r.loc};
+  return true;
+}
+
+// One hole: to the point above it in the plane at rapid, then the library cycle with the hole's
+// top at z (ISO G81/G85 with G99: the R plane is the clearance above the top).
+bool Lowerer::cycleAt(const Record &r, Vec3 p) {
+  const Cycle &c = *cycle_;
+  motion("rapid", r.loc);
+  emit(OpKind::Move, r.loc).set("X", num(p.x)).set("Y", num(p.y));
+  emit(OpKind::Mode, c.loc).set("feed_mode", Expr::symbol("per_minute"));
+  emit(OpKind::Feed, c.loc).set("value", num(c.feed));
+  Op &o = emit(OpKind::Cycle, r.loc);
+  o.set("entry", Expr::string(c.kind->entry));
+  o.set("a.RTP", num(p.z + c.clear)).set("a.RFP", num(p.z)).set("a.SDIS", num(c.clear)).set("a.DP", num(p.z - c.depth));
+  if (std::string_view(c.kind->entry) == "sin.CYCLE85")
+    o.set("a.FFR", num(c.feed)).set("a.RFF", num(c.feed));
+  pos_ = Vec3{p.x, p.y, p.z + c.clear};  // CYCLE81/85 end at RTP
+  return true;
+}
+
+bool Lowerer::cutcom(const Record &r) {
+  if (r.params.size() == 1 && r.params[0].text == "OFF") {
+    emit(OpKind::CutterComp, r.loc).set("side", Expr::symbol("off"));
+    return true;
+  }
+  return error(r.loc, "CUTCOM: only CUTCOM/OFF is read (the CL path is already the tool's)");
+}
+
+bool Lowerer::tlaxis(const Record &r) {
+  std::vector<double> v;
+  if (r.params.size() == 3 && numbers(r, 3, 3, v) && std::fabs(v[0]) < 1e-9 && std::fabs(v[1]) < 1e-9 && v[2] > 0) return true;
+  return error(r.loc, "TLAXIS: only the vertical tool axis 0,0,1 is read without the machine's kinematics");
+}
+
+bool Lowerer::stop(const Record &r) {
+  emit(OpKind::Stop, r.loc).set("kind", Expr::symbol(r.word == "STOP" ? "program" : "optional"));
+  return true;
+}
+
+bool Lowerer::delay(const Record &r) {
+  std::vector<double> v;
+  if (!numbers(r, 1, 1, v)) return false;
+  if (v[0] < 0) return error(r.params[0].loc, "DELAY must not be negative", "bad-dwell");
+  emit(OpKind::Dwell, r.loc).set("seconds", num(v[0]));
+  return true;
+}
+
+bool Lowerer::end(const Record &r) {
+  if (!ended_) emit(OpKind::Stop, r.loc).set("kind", Expr::symbol("end"));
+  ended_ = true;
+  return true;
+}
+
+bool Lowerer::msys(const Record &r) {
+  std::vector<double> v;
+  if (!numbers(r, 9, 9, v)) return false;
+  const double id[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  for (int i = 0; i < 9; ++i)
+    if (std::fabs(v[i] - id[i]) > 1e-9)
+      return error(r.loc, "MSYS with a shifted or rotated system is not read yet (only the identity)");
+  return true;
+}
+
+bool Lowerer::run() {
+  std::vector<RecordError> errs;
+  auto recs = readRecords(sm_.text(file_), file_, errs);
+  bool ok = true;
+  for (auto &e : errs) ok = error(e.loc, e.message, "syntax");
+  emit(OpKind::Mode, {file_, 1, 1}).set("units", Expr::symbol("mm")).set("distance", Expr::symbol("absolute")).set("plane", Expr::symbol("xy"));
+  for (auto &r : recs) {
+    if (r.word.empty()) {
+      if (r.loc.valid() && !r.rest.empty()) comment(r.rest, r.loc);
+      continue;
+    }
+    if (ended_ && r.word != "FINI") {
+      d_.warning(r.loc, fmt::format("{} after the program's end is not run", r.word), "code-after-end");
+      continue;
+    }
+    const Entry *e = nullptr;
+    for (auto &t : kTable)
+      if (r.word == t.word) e = &t;
+    if (e) {
+      if (arc_ && r.word != "GOTO" && r.word != "PPRINT")
+        ok = error(r.loc, fmt::format("{} between CIRCLE and the GOTO that ends its arc", r.word), "syntax");
+      else if (!(this->*(e->fn))(r)) ok = false;
+      continue;
+    }
+    bool ignored = false;
+    for (auto *w : kIgnored) ignored = ignored || r.word == w;
+    if (ignored) d_.warning(r.loc, fmt::format("{} does not change the tool path: skipped", r.word), "lenient-syntax");
+    else ok = error(r.loc, fmt::format("{} is not a record ncc reads", r.word), "unknown-code");
+  }
+  if (arc_) ok = error(arc_->loc, "CIRCLE without the GOTO that ends its arc", "syntax");
+  return ok;
+}
+
+}  // namespace
+
+bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
+  out.dialect = ir::Dialect::CLData;
+  out.name = sm.name(fileId);
+  out.functions.clear();
+  ir::Function fn;
+  fn.name = "main";
+  fn.loc = {fileId, 1, 1};
+  Lowerer lw(sm, fileId, diags, fn);
+  bool ok = lw.run();
+  out.functions.push_back(std::move(fn));
+  return ok;
+}
+
+}  // namespace ncc::cld
