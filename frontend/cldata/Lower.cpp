@@ -454,7 +454,7 @@ bool Lowerer::run() {
     for (auto &t : kTable)
       if (r.word == t.word) e = &t;
     if (e) {
-      if (arc_ && r.word != "GOTO" && r.word != "PPRINT")
+      if (arc_ && r.word != "GOTO" && r.word != "PPRINT" && r.word != "FINI" && r.word != "END")
         ok = error(r.loc, fmt::format("{} between CIRCLE and the GOTO that ends its arc", r.word), "syntax");
       else if (!(this->*(e->fn))(r)) ok = false;
       continue;
