@@ -55,6 +55,7 @@ SourceKind detectSourceKind(const std::string &path, std::string_view text) {
   std::string_view head = text.substr(0, 4096);
   if (head.find("BEGIN PGM") != std::string_view::npos) return SourceKind::Heidenhain;
   if (head.rfind("module \"", 0) == 0) return SourceKind::NCIR;
+  if (head.find("GOTO/") != std::string_view::npos || head.rfind("PARTNO", 0) == 0) return SourceKind::CLData;
   if (head.find("PROC ") != std::string_view::npos || head.find("DEF ") != std::string_view::npos)
     return SourceKind::Sinumerik;
   return SourceKind::ISO;

@@ -77,7 +77,8 @@ std::vector<Record> readRecords(std::string_view text, uint32_t file, std::vecto
     if (!ln.empty() && ln.back() == '\r') ln.remove_suffix(1);
     size_t cmt = ln.find("$$");
     std::string_view code = ln.substr(0, cmt);
-    if (cmt != std::string_view::npos && code.find_first_not_of(" \t") == std::string_view::npos && !continuing) {
+    if (cmt != std::string_view::npos && code.find_first_not_of(" \t") == std::string_view::npos) {
+      if (continuing) continue;  // a comment line inside a continued record
       Record c;  // a comment line: kept as a comment
       c.loc = {file, line, (uint32_t)cmt + 1};
       c.rest = std::string(ln.substr(cmt + 2));
