@@ -55,6 +55,11 @@ private:
   Op &emit(OpKind k, SourceLoc l) { return body_.emplace_back(k, l); }
   void comment(std::string text, SourceLoc l) { emit(OpKind::Comment, l).set("text", Expr::string(std::move(text))); }
   static ir::ExprPtr num(double v) { return Expr::number(v, ir::Type::Real); }
+  void setPlane(const char *p, SourceLoc l) {
+    if (plane_ == p) return;
+    plane_ = p;
+    emit(OpKind::Mode, l).set("plane", Expr::symbol(p));
+  }
   void motion(const char *m, SourceLoc l) {
     if (mode_ == m) return;
     mode_ = m;
@@ -103,6 +108,7 @@ private:
   Diagnostics &d_;
   ir::Region &body_;
   std::string mode_;
+  std::string plane_ = "xy";
   bool rapidNext_ = false;
   bool inch_ = false;
   bool ended_ = false;
@@ -336,8 +342,7 @@ bool Lowerer::endArc(const Record &r, Vec3 p) {
                    fmt::format("the arc's {} point is {:.4f} from the CIRCLE centre, its radius is {}", what, rr, a.r),
                    "arc-radius-mismatch");
   }
-  emit(OpKind::Mode, a.loc).set("plane", Expr::symbol(pl->plane));
-  mode_.clear();
+  setPlane(pl->plane, a.loc);
   motion(ax[pl->axis] > 0 ? "arc_ccw" : "arc_cw", a.loc);
   Op &m = emit(OpKind::Move, r.loc);
   m.set("X", num(p.x)).set("Y", num(p.y)).set("Z", num(p.z));
@@ -379,6 +384,7 @@ bool Lowerer::cycle(const Record &r) {
 // top at z (ISO G81/G85 with G99: the R plane is the clearance above the top).
 bool Lowerer::cycleAt(const Record &r, Vec3 p) {
   const Cycle &c = *cycle_;
+  setPlane("xy", r.loc);  // the library cycles drill along the plane's normal: Z
   motion("rapid", r.loc);
   emit(OpKind::Move, r.loc).set("X", num(p.x)).set("Y", num(p.y));
   emit(OpKind::Mode, c.loc).set("feed_mode", Expr::symbol("per_minute"));
