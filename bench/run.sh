@@ -50,6 +50,9 @@ measure() {
 
 get() { awk -v n="$1" '$1==n {print $2}' "$dir/results.txt"; }
 getcpu() { awk -v n="$1" '$1==n {print $4}' "$dir/results.txt"; }
+# ratio A B: A's time / B's, wall, then CPU (user + system: steadier when other jobs share the cores).
+ratio() { awk -v a="$(get "$1")" -v b="$(get "$2")" -v c="$(getcpu "$1")" -v d="$(getcpu "$2")" \
+  'BEGIN { if (b > 0) printf "%.1fx", a / b; else printf "n/a"; if (d > 0) printf " (cpu %.1fx)", c / d }'; }
 
 # The planner's rate: macro_motion has one G1 per iteration; the planned run (summary) minus the
 # same run without planning (-q) is the planner's time (CPU seconds, see measure).
@@ -89,23 +92,33 @@ measure ncc-sin-compute-jit   "$ncc" run "$dir/macro_compute.mpf" --engine=jit -
 measure ncc-flat-planned      "$ncc" run "$dir/flat_moves.ngc"
 planner_rows "$ncc" ncc
 echo "planner: $(planner_rate ncc) M segments/s (target >= 2 M/s)"
+# A small program (55 lines) end to end (start-up, compilation with the JIT, run), as rs274 runs it.
+small=$(dirname "$0")/../test/lit/oracle/param_computed.ngc
+# Each small row is 20 runs in a row (one run is below the timer's 10 ms resolution).
+small20=$dir/small20.sh
+printf '%s\n' 'for i in $(seq 20); do "$@" || exit 1; done' >"$small20"
+measure ncc-small-eval        sh "$small20" "$ncc" run "$small" --trace=canon -o "$dir/small.ncc.canon" -q
+measure ncc-small-jit         sh "$small20" "$ncc" run "$small" --engine=jit --trace=canon -o "$dir/small.ncc.jit.canon" -q
 if [ $have_rs274 = 1 ]; then
   measure rs274-flat          rs274 -g "$dir/flat_moves.ngc" "$dir/flat.rs274.canon"
   measure rs274-macro-motion  rs274 -g "$dir/macro_motion.ngc" "$dir/macro.rs274.canon"
   measure rs274-macro-compute rs274 -g "$dir/macro_compute.ngc" "$dir/compute.rs274.canon"
-  ratio() { awk -v a="$(get "$1")" -v b="$(get "$2")" 'BEGIN { if (b > 0) printf "%.1fx", a / b; else print "n/a" }'; }
+  measure rs274-small         sh "$small20" rs274 -g "$small" "$dir/small.rs274.canon"
   echo
   echo "ratios (rs274 time / ncc time, same run):"
-  echo "  flat_moves to a canonical trace file:        $(ratio rs274-flat ncc-flat-canon)   (target >= 10x)"
-  echo "  macro_motion, jit engine (trace to file):    $(ratio rs274-macro-motion ncc-macro-motion-jit)   (target >= 20x)"
+  echo "  flat_moves to a canonical trace file:        $(ratio rs274-flat ncc-flat-canon)   (target >= 20x)"
+  echo "  macro_motion, jit engine (trace to file):    $(ratio rs274-macro-motion ncc-macro-motion-jit)   (target >= 100x)"
   echo "  macro_motion, eval engine (trace to file):   $(ratio rs274-macro-motion ncc-macro-motion-eval)"
   echo "  macro_compute, jit engine:                   $(ratio rs274-macro-compute ncc-macro-compute-jit)"
   echo "  macro_compute, eval engine:                  $(ratio rs274-macro-compute ncc-macro-compute-eval)"
+  echo "  small program end to end, eval engine:       $(ratio rs274-small ncc-small-eval)   (target: ncc / rs274 <= 1.0, i.e. >= 1.0x)"
+  echo "  small program end to end, jit engine:        $(ratio rs274-small ncc-small-jit)   (target >= 1.0x)"
   echo "traces agree at machine level:"
   "$ncc" canon-diff --level=machine "$dir/flat.rs274.canon" "$dir/flat.ncc.canon" && echo "  flat_moves: yes" || echo "  flat_moves: NO"
   "$ncc" canon-diff --level=machine "$dir/macro.rs274.canon" "$dir/macro.ncc.canon" && echo "  macro_motion (jit): yes" || echo "  macro_motion (jit): NO"
 else
   echo "(rs274 not installed: apt-get install linuxcnc-uspace for the comparison)"
 fi
-echo "peak RSS of ncc on flat_moves with a trace: $(awk '$1=="ncc-flat-canon" {print $3}' "$dir/results.txt") KB (target <= 131072 KB)"
+echo "peak RSS of ncc on flat_moves with a trace: $(awk '$1=="ncc-flat-canon" {print $3}' "$dir/results.txt") KB (target <= 49152 KB)"
+echo "macro_compute, eval time / jit time:        $(ratio ncc-macro-compute-eval ncc-macro-compute-jit)   (target >= 10x)"
 rm -rf "$home"
