@@ -40,36 +40,18 @@ Op cycleCall(SourceLoc l) {
   return o;
 }
 
-// The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 9 DWELL TIME, 10 ROTATION.
-bool oldCycleRuns(int number) { return number == 7 || number == 9 || number == 10; }
+// The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 8 MIRROR IMAGE, 9 DWELL TIME,
+// 10 ROTATION, 11 SCALING, 26 AXIS-SPECIFIC SCALING.
+bool oldCycleRuns(int number) { return number == 7 || number == 8 || number == 9 || number == 10 || number == 11 || number == 26; }
 
-// One sub-block of cycle 7, 9 or 10. The TNC keeps one datum shift and one rotation angle
-// (digest §4.1): each definition replaces it (IX, IROT add to it), kept in program-wide
-// variables. The core's chain applies the rotation before the local shift, as the TNC does
-// (rotation about the shifted datum); it refuses a shift while a rotation is active, so the
-// rotation is taken off around a shift and put back (the composite is the same).
+// One sub-block of cycle 7, 9 or 10 (8, 11, 26: Transforms.cpp). The TNC keeps one datum shift
+// and one rotation angle (digest §4.1): each definition replaces it (IX, IROT add to it), kept in
+// program-wide variables. The core's chain applies the rotation before the local shift, as the
+// TNC does (rotation about the shifted datum).
 bool BlockParser::oldCycleBlock(int number, const Token &n) {
   SourceLoc bl = loc(t_[0]);
+  if (number != 7 && number != 9 && number != 10) return transformBlock(number, n);
   f_.pp.frames = true;
-  auto rotationOp = [&](bool set) {
-    Op o(OpKind::Frame, bl);
-    o.set("slot", Expr::symbol("rotation"));
-    o.set("action", Expr::symbol(set ? "set" : "cancel"));
-    if (set) {
-      o.set("form", Expr::symbol("plane"));
-      o.set("X", num(0));
-      o.set("Y", num(0));
-      o.set("R", hglobal(kRot, bl));
-    }
-    return o;
-  };
-  auto ifRotated = [&](Op inner) {
-    Op c(OpKind::If, bl);
-    c.set("cond", Expr::binary(ir::OpCode::Ne, hglobal(kRot, bl), num(0), bl));
-    c.regions.emplace_back();
-    c.regions[0].push_back(std::move(inner));
-    return c;
-  };
   if (number == 9) {  // CYCL DEF 9.1 DWELL 1.5: the time is the block's number
     while (!atEnd() && tok().kind == Tok::Word) ++i_;
     ExprPtr t = signedValue();
@@ -91,9 +73,9 @@ bool BlockParser::oldCycleBlock(int number, const Token &n) {
     off.set("side", Expr::symbol("off"));
     out().push_back(std::move(off));
     ExprPtr angle = inc ? Expr::binary(ir::OpCode::Add, hglobal(kRot, bl), std::move(a), bl) : std::move(a);
-    out().push_back(ifRotated(rotationOp(false)));
+    frameTakeOff(out(), bl);
     out().push_back(assignOp(hglobal(kRot, bl), std::move(angle), bl));
-    out().push_back(ifRotated(rotationOp(true)));
+    framePutOn(out(), bl);
     return true;
   }
   // Cycle 7: one axis per sub-block; absolute from the preset, IX from the last shift.
@@ -115,9 +97,9 @@ bool BlockParser::oldCycleBlock(int number, const Token &n) {
   f.set("slot", Expr::symbol("local"));
   f.set("action", Expr::symbol("set"));
   f.set(std::string(1, a[0]), hglobal(var, bl));
-  out().push_back(ifRotated(rotationOp(false)));
+  frameTakeOff(out(), bl);
   out().push_back(std::move(f));
-  out().push_back(ifRotated(rotationOp(true)));
+  framePutOn(out(), bl);
   return true;
 }
 

@@ -147,6 +147,7 @@ private:
   bool call();
   bool cycl();
   bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
+  bool transformBlock(int number, const Token &n);  // Transforms.cpp: 8.k, 11.k, 26.k
   bool stop();
   bool mOnly();
   // paths (Path.cpp)
@@ -181,6 +182,11 @@ ir::ExprPtr num(double v, SourceLoc l = {});
 extern const char *const kCcX, *const kCcY, *const kPr, *const kPa, *const kFauto;
 // The datum shift (cycle 7) and rotation angle (cycle 10), program-wide.
 extern const char *const kShiftX, *const kShiftY, *const kShiftZ, *const kRot;
+// Scaling (cycle 11; cycle 26's factors and centres) and mirroring (cycle 8), program-wide.
+extern const char *const kScl, *const kAxisScl[3], *const kAxisCc[3], *const kMirror[2];
+// Around a change of the frame's state: the active rotation, scaling, mirror off, then back on.
+void frameTakeOff(ir::Region &out, SourceLoc l);
+void framePutOn(ir::Region &out, SourceLoc l);
 bool oldCycleRuns(int number);
 // Sections (call_section) need label names; LBL 0 gets one per occurrence.
 std::string labelOf(const Token &t);
