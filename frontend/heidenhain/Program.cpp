@@ -125,6 +125,7 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
   if (pp.polar)
     for (const char *g : {kCcX, kCcY, kPr, kPa}) globals.push_back({g, 0});
   if (pp.fauto) globals.push_back({kFauto, 0});
+  if (pp.surface) globals.push_back({kSurface, 0});
   if (pp.frames) {
     for (const char *g : {kShiftX, kShiftY, kShiftZ, kRot, kMirror[0], kMirror[1], kAxisCc[0], kAxisCc[1], kAxisCc[2]})
       globals.push_back({g, 0});
