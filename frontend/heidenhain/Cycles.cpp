@@ -157,6 +157,7 @@ bool BlockParser::cyclCallPos() {
   if (shift) shiftZ(std::move(z));
   out().push_back(cycleCall(bl));
   if (shift) shiftZ(nullptr);
+  moved_ = false;  // its call is the block's: M89 adds none
   return emitAfter(w);
 }
 
@@ -192,6 +193,7 @@ bool BlockParser::cycl() {
     f_.cycle = number;
     f_.cycleRuns = inLib;
     f_.cycleSurface = false;
+    f_.m89 = false;  // a new definition ends M89 (L903)
   }
   Op c(OpKind::Cycle, bl);
   if (inLib) {

@@ -47,6 +47,7 @@ public:
   size_t lastMove = SIZE_MAX;       // body index of the last move (RND and CHF attach to it)
   int cycle = -1;                   // the last CYCL DEF of a CALL-active cycle (static)
   bool cycleRuns = false;           // … and the library has it (CYCL CALL and M99 lower to `cycle`)
+  bool m89 = false;                 // the modal cycle call M89 is on (static: no labels, calls, jumps)
   bool cycleSurface = false;        // … and gives Q203 (kept in %_HEI_Q203 for CYCL CALL POS)
   int oldCycle = -1;                // the last old-style CYCL DEF n.0
   SourceLoc cycleLoc;
@@ -127,6 +128,7 @@ private:
   Block &b_;
   std::vector<Token> &t_;
   size_t i_ = 0;
+  bool moved_ = false;  // the block emitted a move (M89 calls the cycle after it)
 
   const Token &tok() const { return t_[i_]; }
   const Token &peek(size_t k = 1) const { return t_[std::min(i_ + k, t_.size() - 1)]; }
