@@ -103,6 +103,10 @@ bool BlockParser::transformBlock(int number, const Token &n) {
   SourceLoc bl = loc(t_[0]);
   f_.pp.frames = true;
   ir::Region set;  // the state changes, between taking the frame off and putting it back
+  auto inRange = [&](const char *var) {  // a factor from a Q parameter, checked when it runs
+    ExprPtr bad = bin(OpCode::Or, bin(OpCode::Lt, g(var, bl), num(0.000001), bl), bin(OpCode::Gt, g(var, bl), num(99.999999), bl), bl);
+    set.push_back(when(std::move(bad), abortOp("a scaling factor is 0.000001 … 99.999999", bl), bl));
+  };
   auto end = [&]() {
     if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
     frameTakeOff(out(), bl);
@@ -137,6 +141,7 @@ bool BlockParser::transformBlock(int number, const Token &n) {
     ExprPtr v = factor(at);
     if (!v) return false;
     set.push_back(assignOp(g(kScl, bl), std::move(v), bl));
+    inRange(kScl);
     return end();
   }
   // Cycle 26: the named axes get their factor and centre; the others keep theirs [model].
@@ -158,6 +163,7 @@ bool BlockParser::transformBlock(int number, const Token &n) {
     if (!v) return false;
     seen[i] = true;
     set.push_back(assignOp(g(kAxisScl[i], bl), std::move(v), bl));
+    inRange(kAxisScl[i]);
   }
   for (int i = 0; i < 3; ++i) {
     if (centre[i] && !seen[i]) return fail(n, fmt::format("CC{} without a factor for {}", kAxis[i], kAxis[i]));
