@@ -91,6 +91,12 @@ bool BlockParser::parse() {
       {"LBL", &BlockParser::label},      {"CALL", &BlockParser::call},       {"CYCL", &BlockParser::cycl},
       {"STOP", &BlockParser::stop},      {"M", &BlockParser::mOnly},
   };
+  // M89's calls follow the blocks in file order: control flow or a rounding of the move before
+  // would need them at run time.
+  bool jump = kw.isWord("FN") && peek().kind == Tok::Number && peek().num >= 9 && peek().num <= 12;
+  if (f_.m89 && (jump || kw.isWord("LBL") || kw.isWord("CALL") || kw.isWord("RND") || kw.isWord("CHF")))
+    return fail(kw, fmt::format("{} while the modal cycle call M89 is on is not simulated yet", jump ? "a jump" : kw.text),
+                "unsupported-code");
   if (kw.kind == Tok::Word) {
     for (auto &s : kStmts)
       if (kw.text == s.kw) {

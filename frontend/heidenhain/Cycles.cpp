@@ -40,36 +40,18 @@ Op cycleCall(SourceLoc l) {
   return o;
 }
 
-// The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 9 DWELL TIME, 10 ROTATION.
-bool oldCycleRuns(int number) { return number == 7 || number == 9 || number == 10; }
+// The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 8 MIRROR IMAGE, 9 DWELL TIME,
+// 10 ROTATION, 11 SCALING, 26 AXIS-SPECIFIC SCALING.
+bool oldCycleRuns(int number) { return number == 7 || number == 8 || number == 9 || number == 10 || number == 11 || number == 26; }
 
-// One sub-block of cycle 7, 9 or 10. The TNC keeps one datum shift and one rotation angle
-// (digest §4.1): each definition replaces it (IX, IROT add to it), kept in program-wide
-// variables. The core's chain applies the rotation before the local shift, as the TNC does
-// (rotation about the shifted datum); it refuses a shift while a rotation is active, so the
-// rotation is taken off around a shift and put back (the composite is the same).
+// One sub-block of cycle 7, 9 or 10 (8, 11, 26: Transforms.cpp). The TNC keeps one datum shift
+// and one rotation angle (digest §4.1): each definition replaces it (IX, IROT add to it), kept in
+// program-wide variables. The core's chain applies the rotation before the local shift, as the
+// TNC does (rotation about the shifted datum).
 bool BlockParser::oldCycleBlock(int number, const Token &n) {
   SourceLoc bl = loc(t_[0]);
+  if (number != 7 && number != 9 && number != 10) return transformBlock(number, n);
   f_.pp.frames = true;
-  auto rotationOp = [&](bool set) {
-    Op o(OpKind::Frame, bl);
-    o.set("slot", Expr::symbol("rotation"));
-    o.set("action", Expr::symbol(set ? "set" : "cancel"));
-    if (set) {
-      o.set("form", Expr::symbol("plane"));
-      o.set("X", num(0));
-      o.set("Y", num(0));
-      o.set("R", hglobal(kRot, bl));
-    }
-    return o;
-  };
-  auto ifRotated = [&](Op inner) {
-    Op c(OpKind::If, bl);
-    c.set("cond", Expr::binary(ir::OpCode::Ne, hglobal(kRot, bl), num(0), bl));
-    c.regions.emplace_back();
-    c.regions[0].push_back(std::move(inner));
-    return c;
-  };
   if (number == 9) {  // CYCL DEF 9.1 DWELL 1.5: the time is the block's number
     while (!atEnd() && tok().kind == Tok::Word) ++i_;
     ExprPtr t = signedValue();
@@ -91,9 +73,9 @@ bool BlockParser::oldCycleBlock(int number, const Token &n) {
     off.set("side", Expr::symbol("off"));
     out().push_back(std::move(off));
     ExprPtr angle = inc ? Expr::binary(ir::OpCode::Add, hglobal(kRot, bl), std::move(a), bl) : std::move(a);
-    out().push_back(ifRotated(rotationOp(false)));
+    frameTakeOff(out(), bl);
     out().push_back(assignOp(hglobal(kRot, bl), std::move(angle), bl));
-    out().push_back(ifRotated(rotationOp(true)));
+    framePutOn(out(), bl);
     return true;
   }
   // Cycle 7: one axis per sub-block; absolute from the preset, IX from the last shift.
@@ -115,10 +97,68 @@ bool BlockParser::oldCycleBlock(int number, const Token &n) {
   f.set("slot", Expr::symbol("local"));
   f.set("action", Expr::symbol("set"));
   f.set(std::string(1, a[0]), hglobal(var, bl));
-  out().push_back(ifRotated(rotationOp(false)));
+  frameTakeOff(out(), bl);
   out().push_back(std::move(f));
-  out().push_back(ifRotated(rotationOp(true)));
+  framePutOn(out(), bl);
   return true;
+}
+
+const char *const kSurface = "_HEI_Q203";
+
+// CYCL CALL POS X Y Z [FMAX] [M] (L851-L888): the tool moves to X Y in the plane, then the stored
+// cycle runs there with Z as an extra datum shift in the tool axis (its Q203 counts from Z). The
+// manual's positioning logic moves in the plane first when the tool is above the surface Q203 (+Z)
+// and otherwise retracts "to the clearance height" first: that height it does not give, so a call
+// from below the surface stops the run. A feed of its own (for the approach only) is not yet.
+bool BlockParser::cyclCallPos() {
+  SourceLoc bl = loc(t_[0]);
+  ++i_;  // POS
+  PathWords w;
+  if (!words(w, kCoords | kFeed | kM, "CYCL CALL POS")) return false;
+  for (auto &c : w.coords) {
+    if (c.axis != 'X' && c.axis != 'Y' && c.axis != 'Z')
+      return f_.error(c.loc, fmt::format("CYCL CALL POS takes X, Y and Z, not {}", c.axis));
+    if (c.inc) return f_.error(c.loc, "incremental coordinates in CYCL CALL POS are not simulated yet", "unsupported-code");
+  }
+  if (!w.find('X') || !w.find('Y') || !w.find('Z'))
+    return fail(t_[0], "CYCL CALL POS needs all three coordinates X, Y and Z (L869)", "missing-word");
+  if (w.feed || w.fauto)
+    return f_.error(w.feedLoc, "a feed on CYCL CALL POS (for the approach only) is not simulated yet: FMAX or none", "unsupported-code");
+  if (!f_.cycleSurface)
+    return fail(t_[0], fmt::format("CYCL CALL POS needs the surface Q203 in the definition of cycle {}", f_.cycle), "cycle-invalid");
+  if (!emitBefore(w)) return false;
+  ExprPtr z = w.find('Z')->value->clone();
+  ExprPtr surface = Expr::binary(ir::OpCode::Add, hglobal(kSurface, bl), z->clone(), bl);
+  Op below(OpKind::If, bl);
+  below.set("cond", Expr::binary(ir::OpCode::Le, Expr::var(ir::VarSpace::System, "_z", nullptr, bl), std::move(surface), bl));
+  below.regions.emplace_back();
+  Op stop(OpKind::Message, bl);
+  stop.set("text", Expr::string("CYCL CALL POS with the tool at or below the surface (Q203 + Z): the retract to the "
+                                "clearance height first is not simulated yet", bl));
+  stop.set("kind", Expr::symbol("abort"));
+  below.regions[0].push_back(std::move(stop));
+  out().push_back(std::move(below));
+  PathWords plane;  // the move in the plane at the current height
+  plane.fmax = w.fmax;
+  for (auto &c : w.coords)
+    if (c.axis != 'Z') plane.coords.push_back({c.axis, false, std::move(c.value), c.loc});
+  if (!emitMove(Op(OpKind::Move), plane, "linear")) return false;
+  bool shift = !(z->kind == ir::ExprKind::Number && z->num == 0);
+  auto shiftZ = [&](ExprPtr by) {  // the local shift in Z, with the frame's other parts kept
+    f_.pp.frames = true;
+    Op f(OpKind::Frame, bl);
+    f.set("slot", Expr::symbol("local"));
+    f.set("action", Expr::symbol("set"));
+    f.set("Z", by ? Expr::binary(ir::OpCode::Add, hglobal(kShiftZ, bl), std::move(by), bl) : hglobal(kShiftZ, bl));
+    frameTakeOff(out(), bl);
+    out().push_back(std::move(f));
+    framePutOn(out(), bl);
+  };
+  if (shift) shiftZ(std::move(z));
+  out().push_back(cycleCall(bl));
+  if (shift) shiftZ(nullptr);
+  moved_ = false;  // its call is the block's: M89 adds none
+  return emitAfter(w);
 }
 
 bool BlockParser::cycl() {
@@ -127,6 +167,7 @@ bool BlockParser::cycl() {
     ++i_;
     std::string how = tok().isWord("POS") ? " POS" : tok().isWord("PAT") ? " PAT" : "";
     if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
+    if (f_.cycleRuns && how == " POS") return cyclCallPos();
     if (!f_.cycleRuns || !how.empty())
       return fail(t_[0], fmt::format("cycle {} is not simulated yet (CYCL CALL{})", f_.cycle, how), "unsupported-code");
     PathWords w;  // CYCL CALL M3: the M functions around the call
@@ -151,6 +192,8 @@ bool BlockParser::cycl() {
   if (sub <= 0 && !defActive) {  // a new definition replaces the last, also when it is wrong
     f_.cycle = number;
     f_.cycleRuns = inLib;
+    f_.cycleSurface = false;
+    f_.m89 = false;  // a new definition ends M89 (L903)
   }
   Op c(OpKind::Cycle, bl);
   if (inLib) {
@@ -183,6 +226,10 @@ bool BlockParser::cycl() {
       continue;
     } else if (!(v = signedValue())) {
       return false;
+    }
+    if (inLib && !lib.pattern && name == "Q203") {  // CYCL CALL POS compares the tool with it
+      f_.pp.surface = f_.cycleSurface = true;
+      out().push_back(assignOp(hglobal(kSurface, bl), v->clone(), bl));
     }
     if (inLib) c.set((lib.pattern ? "p." : "a.") + name, std::move(v));
   }

@@ -47,6 +47,8 @@ public:
   size_t lastMove = SIZE_MAX;       // body index of the last move (RND and CHF attach to it)
   int cycle = -1;                   // the last CYCL DEF of a CALL-active cycle (static)
   bool cycleRuns = false;           // … and the library has it (CYCL CALL and M99 lower to `cycle`)
+  bool m89 = false;                 // the modal cycle call M89 is on (static: no labels, calls, jumps)
+  bool cycleSurface = false;        // … and gives Q203 (kept in %_HEI_Q203 for CYCL CALL POS)
   int oldCycle = -1;                // the last old-style CYCL DEF n.0
   SourceLoc cycleLoc;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
@@ -66,6 +68,7 @@ public:
   bool polar = false;    // some file uses CC/LP/CP: the main program declares the pole
   bool fauto = false;    // some file uses FAUTO or TOOL CALL F
   bool frames = false;   // some file uses cycle 7 or 10: the main program declares the shift and angle
+  bool surface = false;  // some file uses CYCL CALL POS: the main program declares the cycle's Q203
   bool mainInch = false;
   bool ok = true;
   // The function of a called program (CALL PGM): parsed on first use; "" with an error at loc.
@@ -125,6 +128,7 @@ private:
   Block &b_;
   std::vector<Token> &t_;
   size_t i_ = 0;
+  bool moved_ = false;  // the block emitted a move (M89 calls the cycle after it)
 
   const Token &tok() const { return t_[i_]; }
   const Token &peek(size_t k = 1) const { return t_[std::min(i_ + k, t_.size() - 1)]; }
@@ -147,6 +151,8 @@ private:
   bool call();
   bool cycl();
   bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
+  bool transformBlock(int number, const Token &n);  // Transforms.cpp: 8.k, 11.k, 26.k
+  bool cyclCallPos();                              // Cycles.cpp
   bool stop();
   bool mOnly();
   // paths (Path.cpp)
@@ -181,6 +187,12 @@ ir::ExprPtr num(double v, SourceLoc l = {});
 extern const char *const kCcX, *const kCcY, *const kPr, *const kPa, *const kFauto;
 // The datum shift (cycle 7) and rotation angle (cycle 10), program-wide.
 extern const char *const kShiftX, *const kShiftY, *const kShiftZ, *const kRot;
+extern const char *const kSurface;  // Q203 of the stored cycle
+// Scaling (cycle 11; cycle 26's factors and centres) and mirroring (cycle 8), program-wide.
+extern const char *const kScl, *const kAxisScl[3], *const kAxisCc[3], *const kMirror[2];
+// Around a change of the frame's state: the active rotation, scaling, mirror off, then back on.
+void frameTakeOff(ir::Region &out, SourceLoc l);
+void framePutOn(ir::Region &out, SourceLoc l);
 bool oldCycleRuns(int number);
 // Sections (call_section) need label names; LBL 0 gets one per occurrence.
 std::string labelOf(const Token &t);

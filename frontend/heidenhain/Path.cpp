@@ -183,7 +183,6 @@ bool BlockParser::words(PathWords &w, unsigned allowed, const char *stmt) {
     if (r.act == MAct::CycleCall) {
       if (f_.cycle < 0) return f_.error(ml, fmt::format("{} without a cycle definition (CYCL DEF) before it", r.arg), "cycle-invalid");
       if (!f_.cycleRuns) return f_.error(ml, fmt::format("cycle {} is not simulated yet ({})", f_.cycle, r.arg), "unsupported-code");
-      if (m == 89) return f_.error(ml, "the modal cycle call M89 is not simulated yet", "unsupported-code");
     }
   }
   return true;
@@ -250,17 +249,27 @@ bool BlockParser::emitMove(Op mv, PathWords &w, const char *motion) {
   mv.loc = bl;
   out().push_back(std::move(mv));
   f_.lastMove = out().size() - 1;
+  moved_ = true;
   return true;
 }
 
+// M99 calls the cycle once after the block's move; M89 does and keeps calling it after every
+// positioning block (L889-L907) until an M99 block (its call the last) or a new CYCL DEF.
 bool BlockParser::emitAfter(PathWords &w) {
+  bool called = false;
+  for (auto &[m, l] : w.ms)
+    if (mRow(m).act == MAct::CycleCall) {
+      if (!called) out().push_back(cycleCall(l));
+      called = true;
+      f_.m89 = m == 89 || (f_.m89 && m != 99);
+    }
+  if (!called && moved_ && f_.m89) out().push_back(cycleCall(loc(t_[0])));
   for (auto &[m, l] : w.ms) {
     MRow r = mRow(m);
     if (r.when != When::End) continue;
     if (r.act == MAct::Spindle) out().push_back(spindleOp(r.arg, l));
     if (m == 6) out().push_back(auxOp(6, l));  // the machine's tool change program
     if (r.act == MAct::Coolant) out().push_back(coolantOp(r.arg, l));
-    if (r.act == MAct::CycleCall) out().push_back(cycleCall(l));  // M99: at the block's end point
     if (r.act == MAct::End) f_.sawEnd = true;
     if (r.act == MAct::Stop || r.act == MAct::End) {
       Op o(OpKind::Stop, l);

@@ -121,17 +121,22 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
   ProgramParser pp(sm, opts, diags);
   FileParser main(pp, fileId, "main", true);
   bool ok = main.run();
-  std::vector<const char *> globals;
-  if (pp.polar) globals = {kCcX, kCcY, kPr, kPa};
-  if (pp.fauto) globals.push_back(kFauto);
-  if (pp.frames)
-    for (const char *g : {kShiftX, kShiftY, kShiftZ, kRot}) globals.push_back(g);
+  std::vector<std::pair<const char *, double>> globals;  // name, initial value
+  if (pp.polar)
+    for (const char *g : {kCcX, kCcY, kPr, kPa}) globals.push_back({g, 0});
+  if (pp.fauto) globals.push_back({kFauto, 0});
+  if (pp.surface) globals.push_back({kSurface, 0});
+  if (pp.frames) {
+    for (const char *g : {kShiftX, kShiftY, kShiftZ, kRot, kMirror[0], kMirror[1], kAxisCc[0], kAxisCc[1], kAxisCc[2]})
+      globals.push_back({g, 0});
+    for (const char *g : {kScl, kAxisScl[0], kAxisScl[1], kAxisScl[2]}) globals.push_back({g, 1});
+  }
   std::vector<Op> decls;
-  for (const char *g : globals) {
+  for (auto [g, init] : globals) {
     Op d(OpKind::Declare, {});
     d.set("var", hglobal(g));
     d.set("type", Expr::symbol("real"));
-    d.set("init", Expr::number(0, ir::Type::Real));
+    d.set("init", Expr::number(init, ir::Type::Real));
     decls.push_back(std::move(d));
   }
   main.fn.body.insert(main.fn.body.begin(), std::make_move_iterator(decls.begin()), std::make_move_iterator(decls.end()));
