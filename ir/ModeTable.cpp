@@ -4,7 +4,7 @@
 namespace ncc {
 
 static const char *kGroupNames[] = {"motion", "plane", "units", "distance", "arc_distance",
-                                    "feed_mode", "retract", "path_mode", "spline_start", "spline_end"};
+                                    "feed_mode", "retract", "path_mode", "spline_start", "spline_end", "stop_once"};
 static_assert(sizeof(kGroupNames) / sizeof(kGroupNames[0]) == (size_t)ModeGroup::Count);
 
 static const ModeValueInfo kValues[] = {
@@ -72,6 +72,7 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::EndNatural, ModeGroup::SplineEnd, "end_natural"},
     {ModeValue::EndAuto, ModeGroup::SplineEnd, "end_auto"},
     {ModeValue::EndTangent, ModeGroup::SplineEnd, "end_tangent"},
+    {ModeValue::ExactStopOnce, ModeGroup::StopOnce, "exact_stop_once"},
 };
 static_assert(sizeof(kValues) / sizeof(kValues[0]) == (size_t)ModeValue::Count);
 

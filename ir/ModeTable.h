@@ -9,7 +9,10 @@ namespace ncc {
 enum class ModeGroup : uint8_t {
   Motion, Plane, Units, Distance, ArcDistance, FeedMode, Retract, PathMode,
   // How a Sinumerik A or C spline begins and ends (G groups 19 and 20: BNAT/BAUTO/BTAN, ENAT/EAUTO/ETAN)
-  SplineStart, SplineEnd, Count
+  SplineStart, SplineEnd,
+  // A one-block exact stop (Sinumerik G9, group 11): the moves of this block end at rest; the
+  // path mode (group 10) stays.
+  StopOnce, Count
 };
 
 // Values are unique across groups so a value alone identifies its group.
@@ -62,6 +65,8 @@ enum class ModeValue : uint8_t {
   ExactPath, ExactStop, Continuous,
   // SplineStart / SplineEnd: zero curvature (the default), from the first/last three points, tangent
   StartNatural, StartAuto, StartTangent, EndNatural, EndAuto, EndTangent,
+  // StopOnce
+  ExactStopOnce,
   Count
 };
 

@@ -163,9 +163,9 @@ bool constantCallee(const Expr &callee, std::string &name) {
 // The keys of `mode` are the mode groups (MachineCmd::modes has one slot per group) and the
 // G64 tolerances, which are words (P, Q).
 static constexpr char kModeKeys[] =
-    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end";
+    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end stop_once";
 static constexpr char kModeOpKeys[] =
-    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end tolerance "
+    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end stop_once tolerance "
     "naive_tolerance";
 static constexpr size_t countWords(std::string_view s) {
   size_t n = 0;

@@ -214,6 +214,14 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
       emit(pathModeRecord());
       break;
     }
+    case ModeGroup::StopOnce:
+      // G9 with a chamfer, rounding or cutter compensation would have to stop at a point the
+      // executor builds later; refused rather than stopped at the wrong place.
+      if (comp.active() || corner.active || corner.requested)
+        return error("a one-block exact stop (G9) with cutter compensation or a chamfer/rounding is not supported",
+                     "unsupported-code");
+      stopOnce = true;
+      break;
     default: break;
     }
   }
@@ -614,6 +622,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.blockNumber = c.blockNumber;
     x.blockLoc = c.loc;
     x.feedInBlock = false;
+    x.stopOnce = false;
     return true;
   case CmdKind::Message:
     if (c.sub == (uint8_t)MessageKind::Abort)  // LinuxCNC (ABORT,…): the run stops here

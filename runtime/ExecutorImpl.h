@@ -437,6 +437,7 @@ struct Executor::Impl {
   bool threadChain = false;  // the last motion record was a thread (an 808D G32 may chain on)
   double threadSpeed = 0;    // the spindle of the last thread record (a chain must keep it)
   int threadSpindle = 0;
+  bool stopOnce = false;  // a G9 in the current block (reset by the next block)
   ModeValue threadReturn = ModeValue::Rapid;  // the motion mode an 808D G76 (G74, G75) block gives back
   struct ThreadData {  // 808D G76 P(m r a) Q R, modal
     bool set = false;

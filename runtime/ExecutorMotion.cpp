@@ -76,6 +76,11 @@ bool Executor::Impl::moveTo(RecordKind k, const AxisVec &to, bool exactStop, dou
 }
 
 bool Executor::Impl::emitMove(const MotionRecord &r) {
+  if (stopOnce && !r.exactStop) {  // G9: this block's moves end at rest
+    MotionRecord s = r;
+    s.exactStop = true;
+    return emitMove(s);
+  }
   if (!cssBeforeMove(r)) return false;
   notePath(r);
   if (corner.active) return cornerNext(r);

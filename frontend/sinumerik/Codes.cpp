@@ -61,6 +61,7 @@ static const GRow kExecuted[] = {
     {"G53", GAct::MachineCoord, ModeValue::Count, 0},
     {"G153", GAct::MachineCoord, ModeValue::Count, 0},
     {"SUPA", GAct::MachineCoord, ModeValue::Count, 0},
+    {"G9", GAct::Mode, ModeValue::ExactStopOnce, 0},
     {"G60", GAct::Mode, ModeValue::ExactStop, 0},
     {"G64", GAct::Mode, ModeValue::Continuous, 0},
     {"G70", GAct::Units, ModeValue::Inch, 2},

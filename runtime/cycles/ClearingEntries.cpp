@@ -429,9 +429,60 @@ bool hei233(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return faceMill(f, ctx, m, out, err);
 }
 
+// CYCLE61 (seed000c §19.1.11) on the face engine: the rectangle from corner (_PA, _PO) to
+// (_LENG, _WID) (_AMODE 4th/5th digit 0: incremental lengths, 1: the absolute corner), levels
+// from _RFP down to _DP (1st digit 0 abs, 1 below _RFP) in equal infeeds of at most _MID, the
+// last leaving _FALD; lines at most _MIDA apart (2nd digit 1: % of the tool diameter) along the
+// 1st (_VARI 2nd digit 1, 3) or 2nd axis (2, 4), one way (1, 2; back at rapid, lifted) or
+// meander (3, 4); _VARI 1st digit 1 roughs, 2 removes _FALD. [model] as 232: the lines R in
+// from the sides, the cuts from R + _SDIS outside to as far beyond; everything at _FFP1.
+// Limited sides (_LIM) and a plane of its own (_DMODE) are errors.
+bool sinCycle61(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  for (const char *k : {"_RTP", "_RFP", "_DP", "_PA", "_PO", "_LENG", "_WID", "_MID", "_MIDA", "_FFP1", "_VARI"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  if (a.get("_LIM") != 0) return fail(err, "_LIM (a limited side) is not supported: program 0");
+  if (digit(a.get("_DMODE"), 1) != 0) return fail(err, "_DMODE 1st digit (a plane of the cycle's own) is not supported");
+  const double am = a.get("_AMODE"), vari = a.get("_VARI");
+  const int op = digit(vari, 1), way = digit(vari, 2);
+  if (op != 1 && op != 2) return fail(err, "_VARI 1st digit must be 1 (roughing) or 2 (finishing)");
+  if (way < 1 || way > 4) return fail(err, "_VARI 2nd digit (milling direction) must be 1 … 4");
+  Face f;
+  MillJob m;
+  if (!toolRadius(ctx, m, err)) return false;
+  f.top = a.get("_RFP");
+  f.end = digit(am, 1) == 1 ? f.top - std::fabs(a.get("_DP")) : a.get("_DP");
+  f.clearance = f.side = std::fabs(a.get("_SDIS"));
+  f.z2 = a.get("_RTP");
+  if (f.end > f.top) return fail(err, "_DP (finished-part height) lies above the blank _RFP");
+  if (f.z2 < f.top + f.clearance) return fail(err, "the retraction plane _RTP lies below _RFP + _SDIS");
+  f.allowance = a.get("_FALD");
+  if (f.allowance < 0 || (f.allowance >= f.top - f.end && f.end < f.top))
+    return fail(err, "_FALD (finishing allowance) must be 0 or more and less than the depth");
+  f.maxInfeed = a.get("_MID");
+  if (!(f.maxInfeed > 0)) return fail(err, "_MID (maximum depth infeed) must be greater than 0");
+  const double mida = digit(am, 2) == 1 ? a.get("_MIDA") / 100 * 2 * m.r : a.get("_MIDA");
+  if (!(mida > 0)) return fail(err, "_MIDA (maximum plane infeed) must be greater than 0");
+  f.overlap = mida / m.r;
+  f.millFeed = f.finishFeed = f.posFeed = a.get("_FFP1");
+  if (!(f.millFeed > 0)) return fail(err, "_FFP1 (machining feed) must be greater than 0");
+  const PlanePoint c1{a.get("_PA"), a.get("_PO")};
+  const double l1 = digit(am, 4) == 1 ? a.get("_LENG") - c1[0] : a.get("_LENG");
+  const double l2 = digit(am, 5) == 1 ? a.get("_WID") - c1[1] : a.get("_WID");
+  if (l1 == 0 || l2 == 0) return fail(err, "the rectangle has no area (_LENG, _WID)");
+  f.acrossY = way == 2 || way == 4;
+  f.corner = f.acrossY ? PlanePoint{c1[1], c1[0]} : c1;
+  f.length = f.acrossY ? l2 : l1, f.width = f.acrossY ? l1 : l2;
+  f.meander = way >= 3, f.returnRapid = true;
+  f.rough = op == 1, f.finish = op == 2;
+  if (f.top == f.end) return true;
+  return faceMill(f, ctx, m, out, err);
+}
+
 const CycleDef kClearingEntries[] = {
     {"hei.258", "Q573 Q571 Q222 Q572 Q224 Q220 Q368 Q207 Q351 Q201 Q202 Q206 Q200 Q203 Q204 Q370 Q215 Q369 Q338 Q385",
      "Heidenhain polygon stud", hei258, nullptr},
+    {"sin.CYCLE61", "_RTP _RFP _SDIS _DP _PA _PO _LENG _WID _MID _MIDA _FALD _FFP1 _VARI _LIM _DMODE _AMODE",
+     "Sinumerik face milling", sinCycle61, nullptr, "_RTP:n _RFP:n _DP:n _PA:u _PO:v"},
     {"hei.232", "Q389 Q225 Q226 Q227 Q386 Q218 Q219 Q202 Q369 Q370 Q207 Q385 Q253 Q200 Q357 Q204",
      "Heidenhain face milling", hei232, nullptr},
     {"hei.233",

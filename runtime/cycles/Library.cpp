@@ -107,11 +107,59 @@ bool sinCycle81(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
   return true;
 }
 
+// A CYCLE82 feed S_FA/S_FD: _AMODE digit 0 = % of the drilling feed, 1 = mm/min, 2 = mm/rev.
+bool sinFeed82(const CycleArgs &a, const char *key, int amodeDigit, const CycleContext &ctx, double &out,
+               std::string &err) {
+  double v = a.get(key);
+  if (!(v > 0)) return fail(err, std::string(key) + " (feed) must be greater than 0");
+  int unit = digit(a.get("_AMODE"), amodeDigit);
+  if (unit == 1) return out = v, true;
+  if (unit == 2) {
+    if (ctx.speed <= 0) return fail(err, std::string(key) + " per revolution needs a spindle speed");
+    return out = v * ctx.speed, true;
+  }
+  if (ctx.feed <= 0) return fail(err, std::string(key) + " in % needs a feed programmed before the cycle");
+  return out = ctx.feed * v / 100, true;
+}
+
+// CYCLE82 (seed000c §19.1.22, [model] order): rapid to RFP + SDIS; spot drilling (_VARI 5th
+// digit) feeds at S_FA to S_ZA (inc below RFP or abs, _AMODE 3rd digit); the drilling feed to
+// DP, or with through-drilling (_VARI 4th digit) to S_ZD above DP (inc or abs, _AMODE 5th digit)
+// and at S_FD on to DP; dwell DTB; rapid to RTP.
 bool sinCycle82(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  if (digit(a.get("_VARI"), 4) || digit(a.get("_VARI"), 5))
-    return fail(err, "CYCLE82 through-drilling and spot drilling (_VARI 4th/5th digit) are not supported");
   if (digit(a.get("_GMODE"), 2) == 1) return fail(err, "depth to the shank (_GMODE 2nd digit 1) needs the tool angle: not supported");
-  return sinCycle81(a, ctx, out, err);
+  const bool through = digit(a.get("_VARI"), 4) == 1, spot = digit(a.get("_VARI"), 5) == 1;
+  if (!through && !spot) return sinCycle81(a, ctx, out, err);
+  SinHole s;
+  if (!sinLevels(a, ctx, s, err)) return false;
+  const double rfp = a.get("RFP");
+  double spotLevel = s.start, residual = s.bottom, spotFeed = 0, residualFeed = 0;
+  if (spot) {
+    spotLevel = digit(a.get("_AMODE"), 3) == 1 ? a.get("S_ZA") : rfp + s.dir * std::fabs(a.get("S_ZA"));
+    if ((spotLevel - s.start) * s.dir <= 0 || (spotLevel - s.bottom) * s.dir > 0)
+      return fail(err, "the spot-drilling depth S_ZA must lie between RFP + SDIS and the drilling depth");
+    if (!sinFeed82(a, "S_FA", 4, ctx, spotFeed, err)) return false;
+  }
+  if (through) {
+    residual = digit(a.get("_AMODE"), 5) == 1 ? a.get("S_ZD") : s.bottom - s.dir * std::fabs(a.get("S_ZD"));
+    if ((residual - spotLevel) * s.dir < 0 || (residual - s.bottom) * s.dir > 0)
+      return fail(err, "the residual depth S_ZD must lie between the spot-drilling level and the drilling depth");
+    if (!sinFeed82(a, "S_FD", 6, ctx, residualFeed, err)) return false;
+  }
+  double dwell;
+  if (!sinDwell(a, "DTB", 2, ctx, dwell, err)) return false;
+  if (ctx.position[planeAxes((Plane)s.plane).n] != s.start) atLevel(ctx, s.plane, s.start, out);
+  if (spot) atLevel(ctx, s.plane, spotLevel, out, CycleStepKind::Feed, spotFeed);
+  if (residual != spotLevel) atLevel(ctx, s.plane, residual, out, CycleStepKind::Feed);
+  if (through && residual != s.bottom) atLevel(ctx, s.plane, s.bottom, out, CycleStepKind::Feed, residualFeed);
+  if (dwell >= 0) {
+    CycleStep d;
+    d.kind = CycleStepKind::Dwell;
+    d.seconds = dwell;
+    out.push_back(d);
+  }
+  atLevel(ctx, s.plane, s.rtp, out);
+  return true;
 }
 
 bool sinCycle83(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
