@@ -39,7 +39,7 @@ static const GCodeInfo kGCodes[] = {
     UNSUP(121, Polar, "polar coordinate interpolation"),
     NOOP(131, Polar, "polar coordinate interpolation off"),
     NOOP(150, Polar, "polar coordinates off"),
-    UNSUP(160, Polar, "polar coordinates"),
+    NOOP(160, Polar, "polar coordinates (the front end reads the move words, ISO-MOT-11)"),
     MODE(170, Plane, XY, "XY plane"),
     MODE(180, Plane, ZX, "ZX plane"),
     MODE(190, Plane, YZ, "YZ plane"),
