@@ -50,7 +50,7 @@ static const GCodeInfo kGCodes[] = {
     SPECIAL(281, SetOffset, NonModal, 5, "store reference point 1"),
     SPECIAL(300, Home, NonModal, 2, "2nd/3rd/4th reference point return"),
     SPECIAL(301, SetOffset, NonModal, 6, "store reference point 2"),
-    UNSUP(310, NonModal, "skip function"),
+    NOOP(310, NonModal, "skip function (the motion mode skip for its block, ISO-MEAS-01)"),
     UNSUP(320, Motion, "thread cutting"),
     UNSUP(330, Motion, "thread cutting"),
     UNSUP(340, Motion, "variable-lead thread cutting"),

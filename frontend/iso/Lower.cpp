@@ -292,6 +292,10 @@ void BlockLowerer::Block::trackModes() {
     if (isPathMotion(L.motion_)) L.pathMotion_ = L.motion_;
     if (L.motion_ == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc) L.motion_ = L.pathMotion_;  // as the executor
   }
+  if (auto *gi = G(GGroup::NonModal); gi && gi->code10 == 310) {  // G31: a skip move in this block only
+    motionBefore = L.motion_;
+    L.motion_ = ModeValue::Skip;
+  }
 }
 
 void BlockLowerer::Block::checkFeed(const IsoWord &f) {
@@ -515,6 +519,7 @@ bool BlockLowerer::Block::motion() {
   const bool bezier = m == ModeValue::SplineCubic || m == ModeValue::SplineQuadratic;
   const bool turnOneShot = m == ModeValue::ThreadMulti || isPeckMotion(m);  // G76, G74/G75
   if (bezier || turnOneShot) L.motion_ = motionBefore;  // one-shot
+  if (m == ModeValue::Skip) return skipMove();
   if (m == ModeValue::NurbsEnd && G(GGroup::Motion) && bw.hasAny(kMoveWords)) {
     for (const char *c = kMoveWords; *c; ++c)
       if (bw.has(*c)) {
@@ -603,6 +608,36 @@ bool BlockLowerer::Block::motion() {
                    "unused-word");
     return false;
   }
+  return true;
+}
+
+// G31 skip (808D L4468-4523, L9398-9501; ISO-MEAS-01): one linear move at F toward X Y Z...
+// that stops where the measuring input switches (the probe-results file, docs/PROBING.md) and
+// latches that point (#5061-#5069); the group-01 mode of the program comes back after the block.
+// The executor's probe checks apply (G40, F, feed per minute). G31 with a group-01 code, or in a
+// mode other than G0-G3 (a canned cycle, a thread), is an error rather than a guess at its end.
+bool BlockLowerer::Block::skipMove() {
+  const SourceLoc loc = gloc(GGroup::NonModal);
+  L.motion_ = motionBefore;
+  auto refuse = [&](std::string msg, const char *rule) {
+    L.diags_.error(loc, msg, rule);
+    return false;
+  };
+  if (G(GGroup::Motion)) return refuse("G31 must not share its block with a group-01 code", "modal-group-conflict");
+  if (!isPathMotion(motionBefore))
+    return refuse(fmt::format("G31 in motion mode {} is not supported (G0-G3 only)", modeValueInfo(motionBefore).name),
+                  "unsupported-code");
+  if (!bw.hasAny(kMoveWords)) return refuse("G31 needs an axis word", "missing-word");
+  auto mode = [&](ModeValue v) { add(emit(OpKind::Mode, loc), "motion", Expr::symbol(modeValueInfo(v).name, loc)); };
+  mode(ModeValue::Skip);
+  Op &op = emit(OpKind::Move, loc);
+  if (L.polar_) {
+    if (!polarWords(op, ModeValue::Skip, loc)) return false;
+  } else {
+    axisWords(op, L.lathe_ ? "XYZABCV" : kAxes);
+    if (L.lathe_ && !latheAxisWords(op)) return false;
+  }
+  mode(motionBefore);
   return true;
 }
 
