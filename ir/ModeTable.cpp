@@ -45,6 +45,7 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::ProbeTowardNoError, ModeGroup::Motion, "probe_toward_no_error"},
     {ModeValue::ProbeAway, ModeGroup::Motion, "probe_away"},
     {ModeValue::ProbeAwayNoError, ModeGroup::Motion, "probe_away_no_error"},
+    {ModeValue::Skip, ModeGroup::Motion, "skip"},
     {ModeValue::SplineAkima, ModeGroup::Motion, "spline_akima"},
     {ModeValue::SplineB, ModeGroup::Motion, "spline_b"},
     {ModeValue::SplineC, ModeGroup::Motion, "spline_c"},

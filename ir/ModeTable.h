@@ -46,6 +46,7 @@ enum class ModeValue : uint8_t {
   // work, stop on contact; G38.3 the same without an error on a miss; G38.4 away from the work,
   // stop on loss of contact; G38.5 the same without an error.
   ProbeToward, ProbeTowardNoError, ProbeAway, ProbeAwayNoError,
+  Skip,  // ISO G31 (808D/Fanuc skip): a one-shot probe toward the work, a miss is no error
   // Sinumerik splines (runtime/ExecutorSinSpline.cpp): ASPLINE (Akima), BSPLINE, CSPLINE (cubic);
   // modal, each move block adds a point; the curve is emitted when the spline ends.
   SplineAkima, SplineB, SplineC,
@@ -87,6 +88,6 @@ inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ |
 inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadVariable; }
 inline bool isPeckMotion(ModeValue v) { return v == ModeValue::PeckAlongZ || v == ModeValue::PeckAlongX; }
 inline bool isSinSplineMotion(ModeValue v) { return v >= ModeValue::SplineAkima && v <= ModeValue::SplineC; }
-inline bool isProbeMotion(ModeValue v) { return v >= ModeValue::ProbeToward && v <= ModeValue::ProbeAwayNoError; }
+inline bool isProbeMotion(ModeValue v) { return v >= ModeValue::ProbeToward && v <= ModeValue::Skip; }
 
 }  // namespace ncc

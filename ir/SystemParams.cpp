@@ -71,6 +71,13 @@ const ParamRange kRanges[] = {
     {F, 5001, 5006, SysFamily::None, SysVar::Count, 0, 1, 6, "block end position"},
     {F, 5021, 5026, SysFamily::MachinePos, SysVar::Count, 0, 1, 6, "machine position"},
     {F, 5041, 5046, SysFamily::None, SysVar::Count, 0, 1, 6, "current position"},
+    // Fanuc: the G31 skip position in work coordinates, axes 1-6 (the probe result, ISO-MEAS-01).
+    {F, 5061, 5061, SysFamily::None, SysVar::ProbeX, 0, 1, 1, "skip position X"},
+    {F, 5062, 5062, SysFamily::None, SysVar::ProbeY, 0, 1, 1, "skip position Y"},
+    {F, 5063, 5063, SysFamily::None, SysVar::ProbeZ, 0, 1, 1, "skip position Z"},
+    {F, 5064, 5064, SysFamily::None, SysVar::ProbeA, 0, 1, 1, "skip position A"},
+    {F, 5065, 5065, SysFamily::None, SysVar::ProbeB, 0, 1, 1, "skip position B"},
+    {F, 5066, 5066, SysFamily::None, SysVar::ProbeC, 0, 1, 1, "skip position C"},
     {F, 5221, 5326, SysFamily::WorkOffset, SysVar::Count, 20, 6, 6, "work offset"},
     {F, 4107, 4107, SysFamily::None, SysVar::CutterD, 0, 1, 1, "modal D"},
     {F, 4109, 4109, SysFamily::None, SysVar::Feed, 0, 1, 1, "modal F"},

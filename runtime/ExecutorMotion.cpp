@@ -154,6 +154,7 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::ProbeTowardNoError:
   case ModeValue::ProbeAway:
   case ModeValue::ProbeAwayNoError:
+  case ModeValue::Skip:
     if (!(c.mask & kTargetMask)) return true;
     return probeMove(c);
   case ModeValue::NurbsEnd:  // rs274 has no motion mode after G5.3

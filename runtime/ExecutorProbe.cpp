@@ -21,6 +21,7 @@ constexpr ProbeMode kProbeModes[] = {
     {ModeValue::ProbeTowardNoError, "G38.3", ProbeSignal::Contact, false},
     {ModeValue::ProbeAway, "G38.4", ProbeSignal::Release, true},
     {ModeValue::ProbeAwayNoError, "G38.5", ProbeSignal::Release, false},
+    {ModeValue::Skip, "G31", ProbeSignal::Contact, false},
 };
 }  // namespace
 

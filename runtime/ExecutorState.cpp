@@ -276,7 +276,7 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
         {ModeValue::BoreFeed, 850},    {ModeValue::BoreStop, 860},   {ModeValue::BoreBack, 870},
         {ModeValue::BoreDwell, 890},   {ModeValue::XY, 170},         {ModeValue::ZX, 180},
         {ModeValue::YZ, 190},          {ModeValue::Nurbs, 520},      {ModeValue::ProbeToward, 382},
-        {ModeValue::ProbeTowardNoError, 383}, {ModeValue::ProbeAway, 384}, {ModeValue::ProbeAwayNoError, 385}};
+        {ModeValue::ProbeTowardNoError, 383}, {ModeValue::ProbeAway, 384}, {ModeValue::ProbeAwayNoError, 385}, {ModeValue::Skip, 310}};
     for (auto &c : kCodes)
       if (c.m == m) return c.code;
     return -1;

@@ -20,7 +20,7 @@ static const char kMoveWords[] = "XYZABCUVW@^";  // words that make a block a mo
 static const char *rs274Meaning(int32_t code10) {
   switch (code10) {
   case 870: return "RS274NGC back boring with I J K";
-  case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
+  case 160: case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
   default: return nullptr;
   }
 }
@@ -283,11 +283,18 @@ bool BlockLowerer::Block::orientWords(Op &op, SourceLoc loc) {
 void BlockLowerer::Block::trackModes() {
   if (auto *gi = G(GGroup::Units)) L.units_ = gi->mode;
   if (auto *gi = G(GGroup::FeedMode)) L.feedMode_ = gi->mode;
+  if (auto *gi = G(GGroup::Plane)) L.plane_ = gi->mode;
+  if (auto *gi = G(GGroup::Distance)) L.distance_ = gi->mode;
+  if (auto *gi = G(GGroup::Polar)) L.polar_ = gi->code10 == 160;
   if (auto *gi = G(GGroup::Motion)) {
     motionBefore = L.motion_;
     L.motion_ = gi->mode;
     if (isPathMotion(L.motion_)) L.pathMotion_ = L.motion_;
     if (L.motion_ == ModeValue::CycleOff && L.flavour_ == Flavour::Fanuc) L.motion_ = L.pathMotion_;  // as the executor
+  }
+  if (auto *gi = G(GGroup::NonModal); gi && gi->code10 == 310) {  // G31: a skip move in this block only
+    motionBefore = L.motion_;
+    L.motion_ = ModeValue::Skip;
   }
 }
 
@@ -300,6 +307,13 @@ bool BlockLowerer::Block::setup() {
   trackModes();
   nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
+  // In G16 X and Y are a radius and an angle; G28/G30/G92/G53/G10/G52/G04 X... would read them
+  // as coordinates: an error rather than a guess (ISO-MOT-11).
+  if (L.polar_ && nonModal && !macroCall && bw.hasAny("XY")) {
+    L.diags_.error(gloc(GGroup::NonModal), fmt::format("{} with X or Y in G16 polar coordinates is not supported",
+                                                      gName(nonModal->code10)), "unsupported-code");
+    return false;
+  }
 
   if (macroCall) {
     // G65/G66 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
@@ -505,6 +519,7 @@ bool BlockLowerer::Block::motion() {
   const bool bezier = m == ModeValue::SplineCubic || m == ModeValue::SplineQuadratic;
   const bool turnOneShot = m == ModeValue::ThreadMulti || isPeckMotion(m);  // G76, G74/G75
   if (bezier || turnOneShot) L.motion_ = motionBefore;  // one-shot
+  if (m == ModeValue::Skip) return skipMove();
   if (m == ModeValue::NurbsEnd && G(GGroup::Motion) && bw.hasAny(kMoveWords)) {
     for (const char *c = kMoveWords; *c; ++c)
       if (bw.has(*c)) {
@@ -535,7 +550,11 @@ bool BlockLowerer::Block::motion() {
       SourceLoc loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
       Op op(OpKind::Move, loc);
       op.args.reserve((size_t)__builtin_popcount(bw.present));
-      axisWords(op, L.lathe_ ? "XYZABCV" : kAxes);
+      if (L.polar_) {
+        if (!polarWords(op, m, loc)) return false;
+      } else {
+        axisWords(op, L.lathe_ ? "XYZABCV" : kAxes);
+      }
       if (L.lathe_ && !latheAxisWords(op)) return false;
       // RS274NGC polar coordinates: @ radius (a length), ^ angle in degrees, about the origin.
       if (bw.has('@')) add(op, "polar_r", take('@', Scale::Linear));
@@ -589,6 +608,56 @@ bool BlockLowerer::Block::motion() {
                    "unused-word");
     return false;
   }
+  return true;
+}
+
+// G31 skip (808D L4468-4523, L9398-9501; ISO-MEAS-01): one linear move at F toward X Y Z...
+// that stops where the measuring input switches (the probe-results file, docs/PROBING.md) and
+// latches that point (#5061-#5069); the group-01 mode of the program comes back after the block.
+// The executor's probe checks apply (G40, F, feed per minute). G31 with a group-01 code, or in a
+// mode other than G0-G3 (a canned cycle, a thread), is an error rather than a guess at its end.
+bool BlockLowerer::Block::skipMove() {
+  const SourceLoc loc = gloc(GGroup::NonModal);
+  L.motion_ = motionBefore;
+  auto refuse = [&](std::string msg, const char *rule) {
+    L.diags_.error(loc, msg, rule);
+    return false;
+  };
+  if (G(GGroup::Motion)) return refuse("G31 must not share its block with a group-01 code", "modal-group-conflict");
+  if (!isPathMotion(motionBefore))
+    return refuse(fmt::format("G31 in motion mode {} is not supported (G0-G3 only)", modeValueInfo(motionBefore).name),
+                  "unsupported-code");
+  if (!bw.hasAny(kMoveWords)) return refuse("G31 needs an axis word", "missing-word");
+  auto mode = [&](ModeValue v) { add(emit(OpKind::Mode, loc), "motion", Expr::symbol(modeValueInfo(v).name, loc)); };
+  mode(ModeValue::Skip);
+  Op &op = emit(OpKind::Move, loc);
+  if (L.polar_) {
+    if (!polarWords(op, ModeValue::Skip, loc)) return false;
+  } else {
+    axisWords(op, L.lathe_ ? "XYZABCV" : kAxes);
+    if (L.lathe_ && !latheAxisWords(op)) return false;
+  }
+  mode(motionBefore);
+  return true;
+}
+
+// G16 polar coordinates (808D L9346-9395, ISO-MOT-11): in G17 the first plane axis word X is the
+// radius, the second Y the angle in degrees, about the workpiece zero under G90 (a missing word
+// keeps the current point's radius or angle, as the manual's N20 example computes the radius).
+// They become the core's polar words (the executor's polarStep, shared with RS274NGC @ ^). What
+// ncc cannot honour exactly is an error: G91 (the pole moves to the current position), the ZX
+// and YZ planes, and arcs or cycles in G16 (docs/ISO-WORDS.md).
+bool BlockLowerer::Block::polarWords(Op &op, ModeValue m, SourceLoc loc) {
+  auto refuse = [&](const char *what) {
+    L.diags_.error(loc, fmt::format("{} in G16 polar coordinates is not supported", what), "unsupported-code");
+    return false;
+  };
+  if (L.plane_ != ModeValue::XY) return refuse(L.plane_ == ModeValue::ZX ? "the ZX plane (G18)" : "the YZ plane (G19)");
+  if (L.distance_ == ModeValue::Incremental) return refuse("G91 (pole at the current position)");
+  if (m != ModeValue::Rapid && m != ModeValue::Linear) return refuse(modeValueInfo(m).name);
+  axisWords(op, "ZABCUVW");
+  if (bw.has('X')) add(op, "polar_r", take('X', Scale::Linear));
+  if (bw.has('Y')) add(op, "polar_a", take('Y', Scale::Rotary));
   return true;
 }
 

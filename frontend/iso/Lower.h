@@ -54,6 +54,10 @@ private:
   ModeValue pathMotion_ = ModeValue::Rapid;  // the last G0-G3 (Fanuc's G80 returns to it)
   ModeValue feedMode_ = ModeValue::PerMinute;
   ModeValue units_ = ModeValue::MM;
+  // G16 polar coordinates (808D/Fanuc, ISO-MOT-11) and the modes that decide how its words read.
+  bool polar_ = false;
+  ModeValue plane_ = ModeValue::XY;
+  ModeValue distance_ = ModeValue::Absolute;
   // G0..G99 as classify found them (no error): its table look-ups depend only on the code, the
   // flavour and the lathe's system, all fixed here, so a flat program's G1s look up once.
   static constexpr int kGCacheSize = 100;

@@ -137,6 +137,8 @@ struct BlockLowerer::Block {
   static void add(Op &op, const char *key, ExprPtr v) { op.args.push_back({key, std::move(v)}); }
   bool toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc);
   bool orientWords(Op &op, SourceLoc loc);
+  bool polarWords(Op &op, ModeValue m, SourceLoc loc);
+  bool skipMove();  // G31 (ISO-MEAS-01)  // a move in G16 (ISO-MOT-11)
   bool offsetToolLength(bool add, SourceLoc loc);
   void axisWords(Op &op, const char *axes) {
     for (const char *a = axes; *a; ++a)

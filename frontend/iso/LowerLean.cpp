@@ -107,7 +107,7 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
 }
 
 BlockLowerer::Lean BlockLowerer::lowerLean(ParsedBlock &b, CmdSink &sink, bool pending) {
-  if (lathe_ || !plainWords(b)) return Lean::Fallback;
+  if (lathe_ || polar_ || !plainWords(b)) return Lean::Fallback;
   Block blk(*this, b, none_);
   if (!blk.classify()) return Lean::Error;
   if (!blk.leanFits()) return Lean::Fallback;

@@ -2,7 +2,7 @@ G18 G21 G54
 T0101
 G0 X40. U2.
 G41 D1 X20.
-G31 Z-10. F1.
+G31 F1.
 G43 H1
 G91 X1.
 T#1
@@ -16,11 +16,11 @@ M30
 %
 ; FEATURES: ISO-MOT-12
 ; Lathe mode errors: X with U, D with tool nose radius compensation, the turning codes ncc does not do
-; (the skip function G31, the C-axis drilling cycles G83/G87), G96 without S, a zero G50 S limit, milling codes that are not turning codes, a computed T.
+; (G31 without an axis word, the C-axis drilling cycles G83/G87), G96 without S, a zero G50 S limit, milling codes that are not turning codes, a computed T.
 ; RUN: not %ncc compile %s --machine=%srcroot/examples/machines/lathe.toml --emit=motion 2>&1 | FileCheck %s --implicit-check-not=error:
 ; CHECK: 3:9: error: X and U in one block (U is the incremental X) [duplicate-word]
 ; CHECK: 4:5: error: a lathe takes the tool nose radius from the offset of its T word (T0101), not from D [unknown-code]
-; CHECK: 5:1: error: G31 (skip function) is not supported [unsupported-code]
+; CHECK: 5:1: error: G31 needs an axis word [missing-word]
 ; CHECK: 6:1: error: G43 is not a turning G code (808D G-code system A) [unknown-code]
 ; CHECK: 7:1: error: G91 is not a turning G code (808D G-code system A) [unknown-code]
 ; CHECK: 8:1: error: a lathe T word is a constant tool and offset number T<tt><oo> (T0101) [bad-number]

@@ -33,4 +33,4 @@ M30
 ; RUN: not %ncc compile %S/Inputs/system-b-errors.nc --machine=%S/Inputs/lathe-b.toml --emit=ir 2>&1 | FileCheck %s --check-prefix=ERR
 ; ERR: system-b-errors.nc:2:4: error: U in G-code system B: the 808D manual does not say it is an increment (use G91) [unsupported-code]
 ; ERR: system-b-errors.nc:3:1: error: G50 is not a turning G code (808D G-code system B) [unknown-code]
-; ERR: system-b-errors.nc:4:1: error: G31 (skip function) is not supported [unsupported-code]
+; ERR: system-b-errors.nc:4:1: error: G12.1 (polar coordinate interpolation) is not supported [unsupported-code]

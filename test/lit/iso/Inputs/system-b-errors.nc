@@ -1,5 +1,5 @@
 (The engines test runs this on --machine=%S/lathe-b.toml)
 G1 U2. F1.
 G50 X10.
-G31 X10. F1.
+G12.1
 M30
