@@ -139,7 +139,10 @@ bool runCached(Session &s, const ir::Module &m, CmdSink &sink, bool &ok) {
     if (!jit || !jit->compilesQuickly(m, why)) return false;  // the caller reports / uses the eval engine
     fs::create_directories(dir, ec);
     ncrt::ProgramInfo info;
-    if (access(dir.c_str(), W_OK) != 0 || !programInfo(s, s.mainFile ? s.mainFile : 1, info)) return false;
+    // A cache folder that cannot be written (read-only, not a folder): run as without a cache.
+    if (!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0 ||
+        !programInfo(s, s.mainFile ? s.mainFile : 1, info))
+      return false;
     if (!jit->emitObject(m, path, s.diags, info)) return false;
     obj = LoadedObject::load(path, err);
     if (!entryOf(obj, err)) {  // an object the loader refuses: run in the JIT as without a cache
