@@ -7,7 +7,9 @@ usage: bench/startup.py [--runs K] [--ncc PATH] [--base PATH]
   --base: a second ncc (an older build) measured in the same run, case by case.
 Cases: the bracket example by source (eval, jit), as an object (ncc run prog.o), as an
 executable (--emit=exe), `ncc --version`, and the small-program row of issue 6: an oracle
-program (test/lit/oracle/param_computed.ngc) to a canonical trace file against rs274."""
+program (test/lit/oracle/param_computed.ngc) to a canonical trace file against rs274.
+The JIT cases run with a compiled-object cache of their own (NCC_CACHE_DIR in a temporary
+folder): "--no-cache" compiles every time (a first run), "cached" hits after the first run."""
 import argparse, os, shutil, statistics, subprocess, tempfile, time
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -33,6 +35,7 @@ def measure(cmd):
 
 
 work = tempfile.mkdtemp()
+os.environ["NCC_CACHE_DIR"] = os.path.join(work, "cache")
 src = os.path.join(work, "bracket.nc")
 shutil.copy(os.path.join(root, "examples", "bracket.nc"), src)
 obj, exe = os.path.join(work, "bracket.o"), os.path.join(work, "bracket")
@@ -44,9 +47,12 @@ small = ["run", ngc, "--machine=" + os.path.join(oracle, "Inputs", "oracle.toml"
 small_obj = os.path.join(work, "small.o")
 subprocess.run([args.ncc, "compile", "--machine=" + os.path.join(oracle, "Inputs", "oracle.toml"), ngc, "--emit=obj",
                 "-o", small_obj], check=True)
-cases = [("ncc run bracket.nc (eval)", ["run", src]), ("ncc run bracket.nc --engine=jit", ["run", src, "--engine=jit"]),
+cases = [("ncc run bracket.nc (eval)", ["run", src]),
+         ("ncc run bracket.nc jit --no-cache", ["run", src, "--engine=jit", "--no-cache"]),
+         ("ncc run bracket.nc jit cached", ["run", src, "--engine=jit"]),
          ("ncc run bracket.o", ["run", obj]), ("ncc --version", ["--version"]),
-         ("small .ngc -> canon (eval)", small), ("small .ngc -> canon (jit)", small + ["--engine=jit"]),
+         ("small .ngc -> canon (eval)", small), ("small .ngc -> canon (jit --no-cache)", small + ["--engine=jit", "--no-cache"]),
+         ("small .ngc -> canon (jit cached)", small + ["--engine=jit"]),
          ("small .o -> canon", ["run", small_obj, "--trace=canon", "-o", trace, "-q"])]
 fmt = lambda m: f"{m[0]:8.1f} {m[1]:7.1f} {m[2]:6.1f}"
 head = f"{'ms':>8} {'cpu ms':>7} {'MB':>6}"
@@ -59,6 +65,9 @@ for name, a in cases:
         except SystemExit:
             line += "        (fails)"
     print(line)
+# A first run: compile, store, load (a cache of its own whose limit of 0 removes the entry after each store).
+first = ["env", "NCC_CACHE_DIR=" + os.path.join(work, "first"), "NCC_CACHE_MAX_MB=0", args.ncc] + small + ["--engine=jit"]
+print(f"{'small .ngc -> canon (jit first run)':36} {fmt(measure(first))}")
 print(f"{'./bracket (--emit=exe)':36} {fmt(measure([exe]))}")
 if shutil.which("rs274"):
     print(f"{'rs274 -g small.ngc':36} {fmt(measure(['rs274', '-g', ngc, trace]))}")

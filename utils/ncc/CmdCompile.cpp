@@ -14,15 +14,6 @@
 
 namespace ncc::driver {
 
-namespace {
-std::vector<std::string> splitList(const std::string &s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 // What an object carries so that it runs without its source (runtime/ncrt.h ProgramInfo).
 bool programInfo(Session &s, uint32_t program, ncrt::ProgramInfo &info) {
   info.program = s.sm.name(program);
@@ -36,6 +27,15 @@ bool programInfo(Session &s, uint32_t program, ncrt::ProgramInfo &info) {
   return true;
 }
 
+namespace {
+std::vector<std::string> splitList(const std::string &s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
 // The object beside the executable, linked, then removed.
 bool emitExecutable(Session &s, const jit::JitApi &jit, const ir::Module &m, const ncrt::ProgramInfo &info,
                     const std::string &out) {

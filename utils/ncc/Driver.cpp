@@ -1,5 +1,6 @@
 #include "utils/ncc/Driver.h"
 
+#include "utils/ncc/JitCache.h"
 #include "utils/ncc/JitLoader.h"
 #include "passes/Eval.h"
 #include "passes/Pass.h"
@@ -22,7 +23,9 @@ void addCommonOptions(po::options_description &desc, CommonOptions &o) {
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
       ("include,I", po::value(&o.includeDirs), "folder with subprogram files (after the program's own folder; repeatable)")
-      ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)");
+      ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)")
+      ("no-cache", po::bool_switch(&o.noCache), "--engine=jit: neither use nor fill the compiled-object cache (docs/JIT.md)")
+      ("cache-stats", po::bool_switch(&o.cacheStats), "--engine=jit: report the compiled-object cache's hit or miss on stderr");
 }
 
 bool Session::setUp() {
@@ -113,6 +116,8 @@ bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blo
   Executor exec(machine, sink, diags);
   if (onExecutor) onExecutor(exec);
   bool ok;
+  ExecutorSink es(exec);
+  if (opts.engine == "jit" && runCached(*this, m, es, ok)) return finishRun(exec, ok, blocks);
   std::string why;
   const jit::JitApi *jit = opts.engine == "jit" ? jitBackend(diags) : nullptr;
   if (opts.engine == "jit" && !jit) return false;
@@ -121,13 +126,15 @@ bool Session::executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blo
   if (jit && why.empty()) {
     jit::JitOptions jo;
     jo.limits = opts.limits;
-    ExecutorSink es(exec);
     ok = jit->runModule(m, es, diags, jo);
   } else {
-    ExecutorSink es(exec);
     Evaluator ev(es, diags, opts.limits);
     ok = ev.run(m);
   }
+  return finishRun(exec, ok, blocks);
+}
+
+bool Session::finishRun(Executor &exec, bool ok, uint64_t *blocks) {
   ok &= exec.finish(ok);
   if (blocks) *blocks = exec.blockCount();
   return ok && !diags.hasErrors();
@@ -145,6 +152,7 @@ bool Session::execute(uint32_t file, MotionSink &sink, uint64_t *blocks) {
   }
   ir::Module m;
   if (!load(file, m)) return false;
+  mainFile = file;
   return executeModule(m, sink, blocks);
 }
 

@@ -8,6 +8,7 @@
 #include "ir/NCIR.h"
 #include "ir/ExecLimits.h"
 #include "runtime/Machine.h"
+#include "runtime/ncrt.h"
 #include "utils/ncc/RunOutput.h"
 
 #include <boost/program_options.hpp>
@@ -27,6 +28,8 @@ struct CommonOptions : RunTimeOptions {
   std::vector<unsigned> blockDelete;
   std::vector<std::string> includeDirs;  // subprogram files, searched after the program's folder
   std::vector<std::string> linkFiles;    // programs/libraries linked in, each read by its own front end
+  bool noCache = false;     // --engine=jit: compile every time (utils/ncc/JitCache.h)
+  bool cacheStats = false;  // --engine=jit: say on stderr whether the compiled-object cache hit
 };
 
 // Adds the options every program-reading subcommand takes.
@@ -61,9 +64,13 @@ public:
   bool executeStreamed(uint32_t file, MotionSink &sink, uint64_t *blocks, bool &streamed);
   // The same for an already-loaded module.
   bool executeModule(const ir::Module &m, MotionSink &sink, uint64_t *blocks = nullptr);
+  // The end of a run: the executor's last commands, the block count, the result.
+  bool finishRun(Executor &exec, bool ok, uint64_t *blocks);
   // `ncc lint` on one file: load (recovering after front-end errors), static rules, a run that
   // keeps going after executor errors. Diagnostics go to diags; false when it reported errors.
   bool lint(uint32_t file);
+  // The program being run (execute() sets it): the compiled-object cache names it in the object.
+  uint32_t mainFile = 0;
   // Called with each executor a run creates (the progress line counts its blocks).
   std::function<void(const Executor &)> onExecutor;
   // Blocks per streamed chunk (the fuzz targets use tiny chunks to reach the chunk boundaries).
@@ -71,6 +78,9 @@ public:
 
   int exitCode() const { return diags.hasErrors() ? kExitErrors : kExitOk; }
 };
+
+// What an object carries so that it runs without its source (runtime/ncrt.h ProgramInfo).
+bool programInfo(Session &s, uint32_t program, ncrt::ProgramInfo &info);
 
 // Output helper: writes `text` to `path` atomically, or to stdout for "" / "-".
 bool writeOutput(Session &s, const std::string &path, const std::string &text);

@@ -1,0 +1,159 @@
+#include "utils/ncc/JitCache.h"
+
+#include "utils/ncc/AotRun.h"
+#include "utils/ncc/ExeLink.h"
+#include "utils/ncc/JitLoader.h"
+#include "utils/ncc/ObjectLoader.h"
+
+#include <fmt/format.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace ncc::driver {
+
+namespace fs = std::filesystem;
+
+std::string cacheDirectory() {
+  if (const char *d = std::getenv("NCC_CACHE_DIR"); d && *d) return d;
+  if (const char *d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::string(d) + "/ncc";
+  if (const char *d = std::getenv("HOME"); d && *d) return std::string(d) + "/.cache/ncc";
+  return {};
+}
+
+uintmax_t cacheLimitBytes() {
+  const char *mb = std::getenv("NCC_CACHE_MAX_MB");
+  uintmax_t n = mb && *mb ? std::strtoull(mb, nullptr, 10) : 64;
+  return n << 20;
+}
+
+// This build of ncc: the binary and the JIT module by size and modification time, so that a
+// rebuilt code generator never meets an object of its predecessor.
+static std::string buildId() {
+  std::string id = fmt::format("{} abi {:x} jit {:x}", ncrt_version(), ncrt::abiFingerprint(), jit::jitApiStamp());
+  std::vector<std::string> files{"/proc/self/exe"};
+  for (const std::string &dir : nccLibraryDirs()) files.push_back(dir + "/ncc/libncc-jit.so");
+  for (const std::string &f : files) {
+    struct stat st;
+    if (stat(f.c_str(), &st) == 0)
+      id += fmt::format(" {}:{}:{}.{}", f, (long long)st.st_size, (long long)st.st_mtim.tv_sec, st.st_mtim.tv_nsec);
+  }
+  return id;
+}
+
+// Everything that changes the generated code: the build, the machine description (the front end
+// reads with its settings), the options that reach the front end, and every file the load read
+// (program, subprograms, linked files) by name and text.
+static bool cacheKey(Session &s, std::string &key) {
+  std::string text = buildId();
+  std::string machine;
+  if (!readMachineText(s.opts.machine, machine)) return false;
+  text += fmt::format("\nmachine {} {}\n{}", s.opts.machine, machine.size(), machine);
+  text += fmt::format("\ndialect {} decimal {} delete {} include {} link {}", s.opts.dialect, s.opts.decimalMode,
+                      fmt::join(s.opts.blockDelete, ","), fmt::join(s.opts.includeDirs, "\x1f"),
+                      fmt::join(s.opts.linkFiles, "\x1f"));
+  text += fmt::format("\nmain {}", s.mainFile);
+  for (uint32_t f = 1; f <= s.sm.fileCount(); ++f)
+    text += fmt::format("\nfile {} {}\n{}", s.sm.name(f), s.sm.text(f).size(), s.sm.text(f));
+  // Two FNV-1a hashes (the second over a salted text): 128 bits name the entry.
+  key = fmt::format("{:016x}{:016x}", ncrt::textHash(text), ncrt::textHash("ncc-cache\n" + text));
+  return true;
+}
+
+// Removes the least recently used entries (a hit refreshes an entry's time) beyond the limit.
+static void evict(const std::string &dir, uintmax_t limit) {
+  struct Entry {
+    fs::file_time_type time;
+    uintmax_t size;
+    fs::path path;
+  };
+  std::vector<Entry> entries;
+  uintmax_t total = 0;
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    if (it->path().extension() != ".o") continue;
+    std::error_code e1, e2;
+    Entry e{it->last_write_time(e1), it->file_size(e2), it->path()};
+    if (e1 || e2) continue;  // removed by another run meanwhile
+    total += e.size;
+    entries.push_back(std::move(e));
+  }
+  if (total <= limit) return;
+  std::sort(entries.begin(), entries.end(), [](const Entry &a, const Entry &b) { return a.time < b.time; });
+  for (const Entry &e : entries) {
+    if (total <= limit) break;
+    fs::remove(e.path, ec);
+    total -= e.size;
+  }
+}
+
+// Whether LLVM is in this process (a hit must not load it; the tests check it here).
+static bool llvmMapped() {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line))
+    if (line.find("libLLVM") != std::string::npos) return true;
+  return false;
+}
+
+static void report(const Session &s, const std::string &what, const std::string &path) {
+  if (s.opts.cacheStats)
+    std::fprintf(stderr, "ncc: jit cache: %s %s (LLVM %s)\n", what.c_str(), path.c_str(),
+                 llvmMapped() ? "loaded" : "not loaded");
+}
+
+// The loaded object's entry; null with the reason in err.
+static ncrt_entry entryOf(const std::unique_ptr<LoadedObject> &obj, std::string &err) {
+  if (!obj) return nullptr;
+  auto entry = reinterpret_cast<ncrt_entry>(const_cast<void *>(obj->symbol("ncc_program_main")));
+  if (!entry) err = "no ncc_program_main";
+  return entry;
+}
+
+bool runCached(Session &s, const ir::Module &m, CmdSink &sink, bool &ok) {
+  std::string dir = s.opts.noCache ? std::string() : cacheDirectory();
+  std::string key;
+  if (dir.empty() || !cacheKey(s, key)) return false;
+  std::string path = dir + "/" + key + ".o";
+  std::string err;
+  std::unique_ptr<LoadedObject> obj;
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    obj = LoadedObject::load(path, err);
+    if (entryOf(obj, err)) {
+      fs::last_write_time(path, fs::file_time_type::clock::now(), ec);  // recently used
+      report(s, "hit", path);
+    } else {
+      report(s, "damaged entry, compiling again (" + err + "):", path);
+      obj.reset();
+    }
+  }
+  if (!obj) {
+    const jit::JitApi *jit = jitBackend(s.diags);
+    std::string why;
+    if (!jit || !jit->compilesQuickly(m, why)) return false;  // the caller reports / uses the eval engine
+    fs::create_directories(dir, ec);
+    ncrt::ProgramInfo info;
+    // A cache folder that cannot be written (read-only, not a folder): run as without a cache.
+    if (!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0 ||
+        !programInfo(s, s.mainFile ? s.mainFile : 1, info))
+      return false;
+    if (!jit->emitObject(m, path, s.diags, info)) return false;
+    obj = LoadedObject::load(path, err);
+    if (!entryOf(obj, err)) {  // an object the loader refuses: run in the JIT as without a cache
+      report(s, "cannot load the stored object (" + err + "):", path);
+      return false;
+    }
+    report(s, "miss, stored", path);
+    evict(dir, cacheLimitBytes());
+  }
+  ok = ncrt::runEntry(entryOf(obj, err), sink, s.diags, s.opts.limits);
+  return true;
+}
+
+}  // namespace ncc::driver
