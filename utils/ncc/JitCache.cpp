@@ -143,7 +143,13 @@ bool runCached(Session &s, const ir::Module &m, CmdSink &sink, bool &ok) {
     if (!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0 ||
         !programInfo(s, s.mainFile ? s.mainFile : 1, info))
       return false;
-    if (!jit->emitObject(m, path, s.diags, info)) return false;
+    // A store that fails (a full disk, …) is not the program's error: run as without a cache.
+    Diagnostics storeDiags(s.diags.sources());
+    storeDiags.setCollect(true);
+    if (!jit->emitObject(m, path, storeDiags, info)) {
+      report(s, "cannot store the object, running without the cache:", path);
+      return false;
+    }
     obj = LoadedObject::load(path, err);
     if (!entryOf(obj, err)) {  // an object the loader refuses: run in the JIT as without a cache
       report(s, "cannot load the stored object (" + err + "):", path);
