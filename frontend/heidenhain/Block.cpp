@@ -6,12 +6,6 @@
 
 namespace ncc::hei {
 
-using ir::Expr;
-using ir::ExprPtr;
-using ir::Op;
-using ir::OpCode;
-using ir::OpKind;
-
 bool BlockParser::fail(const Token &t, std::string msg, const char *rule) {
   return f_.error(loc(t), std::move(msg), rule);
 }

@@ -10,11 +10,6 @@
 
 namespace ncc::hei {
 
-using ir::Expr;
-using ir::ExprPtr;
-using ir::Op;
-using ir::OpKind;
-
 namespace {
 // Act at their definition (digest §3.0): transformations 7 8 10 11 19 26 247, dwell 9, SL data
 // 14 20 270, tolerance 32, patterns 220 221, and the touch-probe cycles.

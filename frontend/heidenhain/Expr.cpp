@@ -8,10 +8,6 @@
 
 namespace ncc::hei {
 
-using ir::Expr;
-using ir::ExprPtr;
-using ir::OpCode;
-
 ExprPtr num(double v, SourceLoc l) {
   return Expr::number(v, v == std::floor(v) && std::fabs(v) < 1e15 ? ir::Type::Int : ir::Type::Real, l);
 }

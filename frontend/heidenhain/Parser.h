@@ -13,6 +13,13 @@
 
 namespace ncc::hei {
 
+// The NC IR names every file of the front end builds ops from.
+using ir::Expr;
+using ir::ExprPtr;
+using ir::Op;
+using ir::OpCode;
+using ir::OpKind;
+
 class ProgramParser;
 
 // CALL LBL n: resolved once every label of the file is known (a subprogram LBL n … LBL 0, or

@@ -12,12 +12,6 @@
 
 namespace ncc::hei {
 
-using ir::Expr;
-using ir::ExprPtr;
-using ir::Op;
-using ir::OpCode;
-using ir::OpKind;
-
 const char *const kCcX = "_HEI_CCX";
 const char *const kCcY = "_HEI_CCY";
 const char *const kPr = "_HEI_PR";

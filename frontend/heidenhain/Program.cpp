@@ -10,10 +10,6 @@
 
 namespace ncc::hei {
 
-using ir::Expr;
-using ir::Op;
-using ir::OpKind;
-
 FileParser::FileParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain)
     : pp(pp), file(file), isMain(isMain) {
   fn.name = std::move(name);

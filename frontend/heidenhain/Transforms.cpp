@@ -10,12 +10,6 @@
 
 namespace ncc::hei {
 
-using ir::Expr;
-using ir::ExprPtr;
-using ir::Op;
-using ir::OpCode;
-using ir::OpKind;
-
 const char *const kScl = "_HEI_SCL";  // cycle 11's factor (1: off)
 const char *const kAxisScl[3] = {"_HEI_SCLX", "_HEI_SCLY", "_HEI_SCLZ"};  // cycle 26's factors
 const char *const kAxisCc[3] = {"_HEI_CCSX", "_HEI_CCSY", "_HEI_CCSZ"};   // … and centres
