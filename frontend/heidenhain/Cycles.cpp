@@ -163,6 +163,7 @@ bool BlockParser::cycl() {
     std::string how = tok().isWord("POS") ? " POS" : tok().isWord("PAT") ? " PAT" : "";
     if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
     if (f_.cycleRuns && how == " POS") return cyclCallPos();
+    if (f_.cycleRuns && how == " PAT") return cyclCallPat();
     if (!f_.cycleRuns || !how.empty())
       return fail(t_[0], fmt::format("cycle {} is not simulated yet (CYCL CALL{})", f_.cycle, how), "unsupported-code");
     PathWords w;  // CYCL CALL M3: the M functions around the call

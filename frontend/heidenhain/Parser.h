@@ -57,6 +57,7 @@ public:
   bool m89 = false;                 // the modal cycle call M89 is on (static: no labels, calls, jumps)
   bool cycleSurface = false;        // … and gives Q203 (kept in %_HEI_Q203 for CYCL CALL POS)
   int oldCycle = -1;                // the last old-style CYCL DEF n.0
+  std::vector<ir::Op> pattern;      // the last PATTERN DEF / SEL PATTERN: CYCL CALL PAT's ops
   SourceLoc cycleLoc;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
 
@@ -76,10 +77,14 @@ public:
   bool fauto = false;    // some file uses FAUTO or TOOL CALL F
   bool frames = false;   // some file uses cycle 7 or 10: the main program declares the shift and angle
   bool surface = false;  // some file uses CYCL CALL POS: the main program declares the cycle's Q203
+  bool global125 = false;  // some file has GLOBAL DEF 125: … declares its Q345
+  bool callPat = false;    // some CYCL CALL PAT is split over several ops: … declares the call's level
   bool mainInch = false;
   bool ok = true;
   // The function of a called program (CALL PGM): parsed on first use; "" with an error at loc.
   std::string program(const std::string &written, uint32_t fromFile, SourceLoc loc);
+  // Where a file named in `fromFile` is looked for: its folder, then each --include folder.
+  std::vector<std::string> folders(uint32_t fromFile) const;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
     diags.error(loc, std::move(msg), rule);
     ok = false;
@@ -160,6 +165,10 @@ private:
   bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
   bool transformBlock(int number, const Token &n);  // Transforms.cpp: 8.k, 11.k, 26.k
   bool cyclCallPos();                              // Cycles.cpp
+  bool cyclCallPat();                              // Patterns.cpp
+  bool patternDef();                               // Patterns.cpp
+  bool select();                                   // Patterns.cpp: SEL PATTERN
+  bool globalDef();                                // Patterns.cpp: GLOBAL DEF 125
   bool stop();
   bool mOnly();
   // paths (Path.cpp)
@@ -195,6 +204,7 @@ extern const char *const kCcX, *const kCcY, *const kPr, *const kPa, *const kFaut
 // The datum shift (cycle 7) and rotation angle (cycle 10), program-wide.
 extern const char *const kShiftX, *const kShiftY, *const kShiftZ, *const kRot;
 extern const char *const kSurface;  // Q203 of the stored cycle
+extern const char *const kGlobal125, *const kCallLevel;  // GLOBAL DEF 125's Q345, CYCL CALL PAT's level
 // Scaling (cycle 11; cycle 26's factors and centres) and mirroring (cycle 8), program-wide.
 extern const char *const kScl, *const kAxisScl[3], *const kAxisCc[3], *const kMirror[2];
 // Around a change of the frame's state: the active rotation, scaling, mirror off, then back on.

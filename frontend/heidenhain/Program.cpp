@@ -80,17 +80,22 @@ bool FileParser::resolveLabels() {
   return ok;
 }
 
+std::vector<std::string> ProgramParser::folders(uint32_t fromFile) const {
+  std::vector<std::string> dirs;
+  std::filesystem::path here = std::filesystem::path(sm.name(fromFile)).parent_path();
+  dirs.push_back(here.empty() ? "." : here.string());
+  for (auto &d : opts.searchDirs)
+    if (std::find(dirs.begin(), dirs.end(), d) == dirs.end()) dirs.push_back(d);
+  return dirs;
+}
+
 std::string ProgramParser::program(const std::string &written, uint32_t fromFile, SourceLoc loc) {
   // `TNC:\DIR\NAME.H`: the file name; without an extension the control adds .H.
   std::string base = written.substr(written.find_last_of("\\/:") == std::string::npos ? 0 : written.find_last_of("\\/:") + 1);
   std::vector<std::string> candidates;
   if (base.find('.') != std::string::npos) candidates = {base};
   else candidates = {base + ".h", base + ".H"};
-  std::vector<std::string> dirs;
-  std::filesystem::path here = std::filesystem::path(sm.name(fromFile)).parent_path();
-  dirs.push_back(here.empty() ? "." : here.string());
-  for (auto &d : opts.searchDirs)
-    if (std::find(dirs.begin(), dirs.end(), d) == dirs.end()) dirs.push_back(d);
+  std::vector<std::string> dirs = folders(fromFile);
   uint32_t fid = findSubprogramFile(sm, dirs, candidates, true);
   if (!fid) {
     error(loc, fmt::format("program {} not found (searched {} for {})", written, folderList(dirs), candidates[0]), "missing-subprogram");
@@ -122,6 +127,8 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
     for (const char *g : {kCcX, kCcY, kPr, kPa}) globals.push_back({g, 0});
   if (pp.fauto) globals.push_back({kFauto, 0});
   if (pp.surface) globals.push_back({kSurface, 0});
+  if (pp.global125) globals.push_back({kGlobal125, 0});
+  if (pp.callPat) globals.push_back({kCallLevel, 0});
   if (pp.frames) {
     for (const char *g : {kShiftX, kShiftY, kShiftZ, kRot, kMirror[0], kMirror[1], kAxisCc[0], kAxisCc[1], kAxisCc[2]})
       globals.push_back({g, 0});

@@ -415,6 +415,20 @@ bool hei206(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
+// 240 CENTERING (L1771-L1856): in at Q206 to the depth Q201 (Q343 = 0), dwell Q211, rapid to
+// the 2nd set-up clearance. Q343 = 1 (to the diameter Q344) needs the tool's point angle, which
+// the tool data do not carry: an error.
+bool hei240(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  if (a.get("Q343") != 0)
+    return fail(err, "Q343 = 1 (centring to the diameter Q344) needs the tool's point angle T-ANGLE: not supported");
+  HeiLevels l;
+  HoleSpec h;
+  if (!heiHole(a, h, l, err)) return err.empty();
+  h.dwellBottom = heiDwell(a, "Q211");
+  hole(h, ctx.plane, ctx, out);
+  return true;
+}
+
 // 207 RIGID TAPPING: the feed is S x |Q239| (spindle-synchronised), the hand the sign of Q239
 // (+ right-hand, M3; - left-hand, M4); reverse at the bottom, out to the set-up clearance where
 // the spindle stops, rapid to the 2nd; a spindle that turned before the cycle turns again.
@@ -567,6 +581,7 @@ const CycleDef kHoleEntries[] = {
     {"hei.202", "Q200 Q201 Q206 Q211 Q208 Q203 Q204 Q214 Q336", "Heidenhain boring", hei202, nullptr},
     {"hei.206", "Q200 Q201 Q206 Q211 Q203 Q204", "Heidenhain tapping with a floating holder", hei206, nullptr},
     {"hei.207", "Q200 Q201 Q239 Q203 Q204", "Heidenhain rigid tapping", hei207, nullptr},
+    {"hei.240", "Q200 Q343 Q201 Q344 Q206 Q211 Q203 Q204", "Heidenhain centering", hei240, nullptr},
     {"hei.220", "Q216 Q217 Q244 Q245 Q246 Q247 Q241 Q200 Q203 Q204 Q301 Q365", "Heidenhain polar pattern", nullptr,
      hei220},
     {"hei.221", "Q225 Q226 Q237 Q238 Q242 Q243 Q224 Q200 Q203 Q204 Q301", "Heidenhain Cartesian pattern", nullptr,
@@ -585,6 +600,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addHoleEntries(v);
     addClearingEntries(v);
     addSinClearingEntries(v);
+    addHeiPatternEntries(v);
     return v;
   }();
   return all;
@@ -636,6 +652,10 @@ bool checkCycleArgs(const CycleDef &def, const CycleArgs &args, std::string &err
 
 bool expandPattern(const CycleDef &pattern, const CycleArgs &pa, const CycleDef *hole, CycleArgs ha,
                    const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  if (isCallPatPattern(pattern)) {
+    if (!hole) return fail(err, "CYCL CALL PAT needs a machining cycle defined (CYCL DEF) before it");
+    return walkCallPat(pattern, pa, *hole, ha, ctx, out, err);
+  }
   if (!pattern.positions || (hole && !hole->expand))
     return fail(err, std::string(pattern.name) + " with " + hole->name + ": a position pattern runs a machining cycle");
   bool hei = std::string_view(pattern.name).substr(0, 4) == "hei.";

@@ -61,6 +61,7 @@ struct CycleDef {
 void addHoleEntries(std::vector<CycleDef> &out);
 void addClearingEntries(std::vector<CycleDef> &out);
 void addSinClearingEntries(std::vector<CycleDef> &out);
+void addHeiPatternEntries(std::vector<CycleDef> &out);  // HeiPatternDef.cpp
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 
@@ -68,6 +69,12 @@ const CycleDef *findCycle(std::string_view name);
 // Heidenhain CYCL DEF 200 + CYCL DEF 220 …); without a hole (Sinumerik only) rapids to each.
 bool expandPattern(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef *hole, CycleArgs holeArgs,
                    const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
+
+// Heidenhain CYCL CALL PAT (HeiPatternDef.cpp): the PATTERN DEF / point-table patterns
+// ("hei.PATTERN.…") and their walk, which expandPattern hands them to.
+bool isCallPatPattern(const CycleDef &pattern);
+bool walkCallPat(const CycleDef &pattern, const CycleArgs &patternArgs, const CycleDef &hole, const CycleArgs &holeArgs,
+                 const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err);
 
 // The front ends' view of an entry (ir/CycleCatalog.h; the driver passes this to them).
 bool cycleSignature(std::string_view name, CycleSignature &out);

@@ -30,15 +30,21 @@ std::vector<PlanePoint> circlePattern(PlanePoint centre, double radius, double s
 
 std::vector<PlanePoint> gridPattern(PlanePoint o, double degrees, double d1, double d2, int n1, int n2, bool meander,
                                     bool frameOnly) {
-  double c, s;
-  sinCosDegrees(degrees, s, c);
+  return shearedGridPattern(o, degrees, degrees, d1, d2, n1, n2, meander, frameOnly);
+}
+
+std::vector<PlanePoint> shearedGridPattern(PlanePoint o, double degrees1, double degrees2, double d1, double d2, int n1,
+                                           int n2, bool meander, bool frameOnly) {
+  double c1, s1, c2, s2;
+  sinCosDegrees(degrees1, s1, c1);
+  sinCosDegrees(degrees2, s2, c2);
   std::vector<PlanePoint> out;
   for (int j = 0; j < n2; ++j)
     for (int k = 0; k < n1; ++k) {
       int i = meander && (j % 2) ? n1 - 1 - k : k;
       if (frameOnly && j != 0 && j != n2 - 1 && i != 0 && i != n1 - 1) continue;
       double u = i * d1, v = j * d2;
-      out.push_back({o[0] + u * c - v * s, o[1] + u * s + v * c});
+      out.push_back({o[0] + u * c1 - v * s2, o[1] + u * s1 + v * c2});
     }
   return out;
 }

@@ -23,6 +23,10 @@ std::vector<PlanePoint> circlePattern(PlanePoint centre, double radius, double s
 // `frameOnly` keeps the points on the border.
 std::vector<PlanePoint> gridPattern(PlanePoint origin, double degrees, double d1, double d2, int n1, int n2,
                                     bool meander, bool frameOnly);
+// The same grid with its two directions turned apart: the first axis at `degrees1`, the second
+// at 90 + `degrees2` (equal angles: the rotated grid above; different: a sheared one).
+std::vector<PlanePoint> shearedGridPattern(PlanePoint origin, double degrees1, double degrees2, double d1, double d2,
+                                           int n1, int n2, bool meander, bool frameOnly);
 
 // Sinumerik `_HIDE` lists ("1,3,5" or "2-4", 1-based positions) applied to a pattern; false with a
 // message on a malformed list.
