@@ -26,6 +26,8 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::CutterComp, "side", "right", 2},
     {OpKind::CutterComp, "d_default", "modal", 0},
     {OpKind::CutterComp, "d_default", "tool", 1},
+    {OpKind::CutterComp, "entry", "corner", 0},
+    {OpKind::CutterComp, "entry", "normal", 1},
     {OpKind::Message, "kind", "msg", (uint8_t)MessageKind::Msg},
     {OpKind::Message, "kind", "debug", (uint8_t)MessageKind::Debug},
     {OpKind::Message, "kind", "print", (uint8_t)MessageKind::Print},

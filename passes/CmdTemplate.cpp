@@ -155,9 +155,12 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   case OpKind::Spindle:
     if (!symbolArg("dir", c.sub) || !symbolArg("way", c.sub2)) return false;
     break;  // an orientation's angle and wait: words, below
-  case OpKind::CutterComp:
-    if (!symbolArg("side", c.sub) || !symbolArg("d_default", c.sub2)) return false;
+  case OpKind::CutterComp: {  // d_default in the low four bits of sub2, entry above
+    uint16_t entry = 0;
+    if (!symbolArg("side", c.sub) || !symbolArg("d_default", c.sub2) || !symbolArg("entry", entry)) return false;
+    c.sub2 |= (uint16_t)(entry << 4);
     break;
+  }
   case OpKind::Speed:
     if (!symbolArg("mode", c.sub) || !symbolArg("after_css", c.sub2)) return false;
     break;
@@ -299,7 +302,8 @@ Op cmdToOp(const MachineCmd &c) {
   case CmdKind::Stop: op.set("kind", Expr::symbol(opSymbolName(op.kind, "kind", c.sub))); return op;
   case CmdKind::CutterComp:
     op.set("side", Expr::symbol(opSymbolName(op.kind, "side", c.sub)));
-    if (c.sub2) op.set("d_default", Expr::symbol(opSymbolName(op.kind, "d_default", c.sub2)));
+    if (c.sub2 & 0x0f) op.set("d_default", Expr::symbol(opSymbolName(op.kind, "d_default", c.sub2 & 0x0f)));
+    if (c.sub2 >> 4) op.set("entry", Expr::symbol(opSymbolName(op.kind, "entry", c.sub2 >> 4)));
     break;
   case CmdKind::SetOffset: op.set("kind", Expr::symbol(opSymbolName(op.kind, "kind", c.sub))); break;
   case CmdKind::Frame:

@@ -351,6 +351,8 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     return true;
   }
   const bool lathe = isoLathe();
+  const bool toolDefault = (c.sub2 & 0x0f) == 1;  // d_default=tool
+  const bool normalEntry = lathe || (c.sub2 >> 4) == 1;  // entry=normal (Heidenhain, 808D lathes)
   bool sideSwitch = false;  // the 808D lathe's G41 <-> G42 without G40
   if (st.cutterComp != 0) {
     if (!lathe) return error("Cannot turn cutter radius comp on when on", "cutcomp-already-on");
@@ -365,18 +367,18 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     if (d < 0 || d != std::floor(d) || d > 1e9)
       return error(std::string(c.sub == 1 ? "G41" : "G42") + " requires D word to be a whole number", "unknown-tool");
     cutterD = (int)d;
-  } else if (c.sub2 == 1) {
+  } else if (toolDefault) {
     cutterD = st.toolInSpindle;  // rs274: without D, the radius of the tool in the spindle
   }
   if (!c.has(Word::D) && cutterD == 0)
     warning(lathe ? "tool nose radius compensation without a tool offset (T<tool><offset>): radius 0"
-            : c.sub2 == 1 ? "cutter compensation without a D word and no tool in the spindle: radius 0"
+            : toolDefault ? "cutter compensation without a D word and no tool in the spindle: radius 0"
                         : "cutter compensation without a D word: radius 0",
             "cutcomp-without-d");
   ToolData t;
   if (!offsetData(cutterD, "D", t)) return false;
   compEdge = 0;
-  if (activeEdge > 0 && c.sub2 == 1 && !c.has(Word::D)) {  // Sinumerik: the active edge's radius
+  if (activeEdge > 0 && toolDefault && !c.has(Word::D)) {  // Sinumerik: the active edge's radius
     compEdge = activeEdge;
     t = edgeData(st.toolInSpindle, compEdge);
   }
@@ -397,7 +399,7 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
   capture.compOn |= capture.active;
   st.cutterComp = c.sub;
   compExit = false;
-  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, from, lathe);
+  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, from, normalEntry);
   return true;
 }
 

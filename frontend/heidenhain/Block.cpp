@@ -21,7 +21,7 @@ bool BlockParser::expectWord(std::string_view w) {
 namespace {
 // Statements of the Klartext language ncc knows but does not run yet: refused, naming them.
 const char *const kNotYet[] = {
-    "APPR", "DEP", "FC", "FL", "FPOL", "FSELECT", "FCT", "FLT", "RPL", "DECLARE", "CONTOUR",
+    "FC", "FL", "FPOL", "FSELECT", "FCT", "FLT", "RPL", "DECLARE", "CONTOUR",
     "PLANE", "TCH", "FUNCTION", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
 };
 
@@ -84,6 +84,7 @@ bool BlockParser::parse() {
       {"QS", &BlockParser::assign},
       {"LBL", &BlockParser::label},      {"CALL", &BlockParser::call},       {"CYCL", &BlockParser::cycl},
       {"STOP", &BlockParser::stop},      {"M", &BlockParser::mOnly},
+      {"APPR", &BlockParser::approachDepart}, {"DEP", &BlockParser::approachDepart},
       {"PATTERN", &BlockParser::patternDef}, {"SEL", &BlockParser::select}, {"GLOBAL", &BlockParser::globalDef},
   };
   // M89's calls follow the blocks in file order: control flow or a rounding of the move before

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@ using ir::OpCode;
 using ir::OpKind;
 
 class ProgramParser;
+struct Approach;  // an APPR block waiting for its first contour element (Approach.cpp)
 
 // CALL LBL n: resolved once every label of the file is known (a subprogram LBL n … LBL 0, or
 // with REP a section repeat back to LBL n).
@@ -58,6 +60,10 @@ public:
   bool cycleSurface = false;        // … and gives Q203 (kept in %_HEI_Q203 for CYCL CALL POS)
   int oldCycle = -1;                // the last old-style CYCL DEF n.0
   std::vector<ir::Op> pattern;      // the last PATTERN DEF / SEL PATTERN: CYCL CALL PAT's ops
+  std::shared_ptr<Approach> approach;  // APPR: lowered with the next block (an L)
+  int compSide = 0;                 // the last RL (1) / RR (2) / R0 (0) in file order (DEP)
+  bool lastWasLine = false;         // the block before is an L (DEP's last element)
+  bool usesDep = false;             // the file has DEP: each L keeps where it starts
   SourceLoc cycleLoc;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
 
@@ -78,6 +84,7 @@ public:
   bool frames = false;   // some file uses cycle 7 or 10: the main program declares the shift and angle
   bool surface = false;  // some file uses CYCL CALL POS: the main program declares the cycle's Q203
   bool global125 = false;  // some file has GLOBAL DEF 125: … declares its Q345
+  bool approach = false;   // some file uses APPR/DEP: … declares their scratch values
   bool callPat = false;    // some CYCL CALL PAT is split over several ops: … declares the call's level
   bool mainInch = false;
   bool ok = true;
@@ -169,6 +176,13 @@ private:
   bool patternDef();                               // Patterns.cpp
   bool select();                                   // Patterns.cpp: SEL PATTERN
   bool globalDef();                                // Patterns.cpp: GLOBAL DEF 125
+  bool approachDepart();                           // Approach.cpp: APPR, DEP
+  bool approachBefore(PathWords &firstElement);    // … the APPR before its first element
+  bool depart(Approach &a);
+  bool takeWord(const char *w, ir::ExprPtr &out);
+  void unitAndNormal(int side, const std::string &zeroLength, SourceLoc l);
+  void tangentPoint(int turn, ir::ExprPtr scale, const std::string &inside, SourceLoc l, ir::ExprPtr &x, ir::ExprPtr &y);
+  void keepLineStart();
   bool stop();
   bool mOnly();
   // paths (Path.cpp)
@@ -204,6 +218,7 @@ extern const char *const kCcX, *const kCcY, *const kPr, *const kPa, *const kFaut
 // The datum shift (cycle 7) and rotation angle (cycle 10), program-wide.
 extern const char *const kShiftX, *const kShiftY, *const kShiftZ, *const kRot;
 extern const char *const kSurface;  // Q203 of the stored cycle
+extern const char *const kApproachVars[];  // APPR/DEP's scratch values, null-terminated
 extern const char *const kGlobal125, *const kCallLevel;  // GLOBAL DEF 125's Q345, CYCL CALL PAT's level
 // Scaling (cycle 11; cycle 26's factors and centres) and mirroring (cycle 8), program-wide.
 extern const char *const kScl, *const kAxisScl[3], *const kAxisCc[3], *const kMirror[2];

@@ -209,6 +209,7 @@ bool BlockParser::emitBefore(PathWords &w) {
     if (r.act == MAct::SpindleCoolant) out().push_back(coolantOp("flood", l));
     if (r.act == MAct::Aux) out().push_back(auxOp(m, l));
   }
+  if (w.comp >= 0) f_.compSide = w.comp;
   if (w.comp == 0) {
     Op o(OpKind::CutterComp, bl);
     o.set("side", Expr::symbol("off"));
@@ -219,6 +220,7 @@ bool BlockParser::emitBefore(PathWords &w) {
     Op on(OpKind::CutterComp, bl);
     on.set("side", Expr::symbol(w.comp == 1 ? "left" : "right"));
     on.set("d_default", Expr::symbol("tool"));
+    on.set("entry", Expr::symbol("normal"));  // the TNC starts normal to the first element
     Op cond(OpKind::If, bl);
     cond.set("cond", Expr::binary(OpCode::Ne, sysvar("_ccomp", bl), num(400 + 10 * w.comp), bl));
     cond.regions.emplace_back();
@@ -276,7 +278,10 @@ bool BlockParser::emitAfter(PathWords &w) {
 
 bool BlockParser::line() {
   PathWords w;
-  if (!words(w, kCoords | kComp | kFeed | kM, "L") || !emitBefore(w)) return false;
+  if (!words(w, kCoords | kComp | kFeed | kM, "L")) return false;
+  if (f_.approach && !approachBefore(w)) return false;
+  keepLineStart();
+  if (!emitBefore(w)) return false;
   return emitMove(Op(OpKind::Move), w, "linear") && emitAfter(w);
 }
 

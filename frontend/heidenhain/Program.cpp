@@ -29,10 +29,21 @@ bool FileParser::run() {
   for (auto &l : lr.decimalCommas)
     pp.diags.warning(l, "a decimal comma, read as a decimal point (the control writes '.')", "lenient-syntax");
   if (lr.blocks.empty()) return error({file, 1, 1}, "no Klartext block: a program starts with BEGIN PGM <name> MM|INCH", "program-frame");
+  for (auto &b : lr.blocks)
+    if (!b.toks.empty() && b.toks[0].isWord("DEP")) usesDep = true;
   for (auto &b : lr.blocks) {
+    const Token &first = b.toks[0];
+    bool comment = b.star || first.kind == Tok::End;
+    if (approach && !comment && !first.isWord("L")) {  // APPR needs the direction of the element after it
+      approach.reset();
+      ok = error({file, first.line, first.col},
+                 "after APPR the first contour element must be a straight line L (an arc: not simulated yet)", "unsupported-code");
+    }
     BlockParser bp(*this, b);
     if (!bp.parse()) ok = false;
+    if (!comment) lastWasLine = first.isWord("L");
   }
+  if (approach) ok = error({file, lr.blocks.back().line, 1}, "APPR without a contour element after it", "syntax");
   if (begun && !ended) ok = error(beginLoc, fmt::format("BEGIN PGM {} has no END PGM", pgmName), "program-frame");
   if (!resolveLabels()) ok = false;
   if (usesQL) {  // QL0…QL499: local to this program, 0 at its start
@@ -129,6 +140,8 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
   if (pp.surface) globals.push_back({kSurface, 0});
   if (pp.global125) globals.push_back({kGlobal125, 0});
   if (pp.callPat) globals.push_back({kCallLevel, 0});
+  if (pp.approach)
+    for (const char *const *v = kApproachVars; *v; ++v) globals.push_back({*v, 0});
   if (pp.frames) {
     for (const char *g : {kShiftX, kShiftY, kShiftZ, kRot, kMirror[0], kMirror[1], kAxisCc[0], kAxisCc[1], kAxisCc[2]})
       globals.push_back({g, 0});

@@ -17,8 +17,9 @@
 ; CHECK-NEXT: N3 {{ *}}SET_FEED_RATE(150.0000)
 ; CHECK-NEXT: N3 {{ *}}STRAIGHT_FEED(-20.0000, -20.0000, -160.0000,
 ; Compensated on the left (radius 3) around the square 0..40 with a rounding R5 and a chamfer 4
-; (the core's compensation: its entry move goes to the tangent point, convex corners get arcs):
-; CHECK-NEXT: N4 {{ *}}STRAIGHT_FEED(-3.0000, 1.2426, -160.0000,
+; (the TNC's start: the first RL block ends normal to the next element at its first point, here
+; (0, 0) + 3 to the left of +Y; convex corners get arcs):
+; CHECK-NEXT: N4 {{ *}}STRAIGHT_FEED(-3.0000, 0.0000, -160.0000,
 ; CHECK-NEXT: N5 {{ *}}STRAIGHT_FEED(-3.0000, 35.0000, -160.0000,
 ; CHECK-NEXT: N5 {{ *}}ARC_FEED(5.0000, 43.0000, 5.0000, 35.0000, -1, -160.0000,
 ; CHECK-NEXT: N7 {{ *}}STRAIGHT_FEED(37.1716, 43.0000, -160.0000,
