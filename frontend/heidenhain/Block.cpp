@@ -37,6 +37,8 @@ std::string blockText(const std::vector<Token> &t, size_t from) {
   return s;
 }
 
+}  // namespace
+
 // A program name written in a block: a string, or the words and numbers up to `stop`.
 std::string nameText(const std::vector<Token> &t, size_t &k, std::string_view stopWord) {
   if (t[k].kind == Tok::String) return t[k++].text;
@@ -45,7 +47,6 @@ std::string nameText(const std::vector<Token> &t, size_t &k, std::string_view st
     s += t[k++].text;
   return s;
 }
-}  // namespace
 
 Op BlockParser::blockOp() const {
   Op blk(OpKind::Block, {f_.file, b_.line, 1});

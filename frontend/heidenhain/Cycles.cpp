@@ -35,6 +35,16 @@ Op cycleCall(SourceLoc l) {
   return o;
 }
 
+// Cycle 12 PGM CALL (seed002b §3.2, L13391-L13446) runs its program as CALL PGM does (Q
+// parameters global, QL fresh); the others are the library's `cycle action=call`.
+Op FileParser::storedCall(SourceLoc l) const {
+  if (cycle != 12) return cycleCall(l);
+  Op o(OpKind::Call, l);
+  o.set("callee", Expr::string(cycleProgram));
+  o.set("frame", Expr::symbol("new"));
+  return o;
+}
+
 // The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 8 MIRROR IMAGE, 9 DWELL TIME,
 // 10 ROTATION, 11 SCALING, 26 AXIS-SPECIFIC SCALING.
 bool oldCycleRuns(int number) { return number == 7 || number == 8 || number == 9 || number == 10 || number == 11 || number == 26; }
@@ -95,6 +105,25 @@ bool BlockParser::oldCycleBlock(int number, const Token &n) {
   frameTakeOff(out(), bl);
   out().push_back(std::move(f));
   framePutOn(out(), bl);
+  return true;
+}
+
+// CYCL DEF 12.1 PGM name: the program (looked up as CALL PGM looks) becomes the stored cycle.
+bool BlockParser::programCycle(const Token &n) {
+  if (!expectWord("PGM")) return false;
+  const Token &at = tok();
+  std::string written = nameText(t_, i_, "");
+  if (written.empty()) return fail(at, "CYCL DEF 12.1 needs the program's name");
+  std::string ext = written.size() > 2 ? written.substr(written.size() - 2) : "";
+  if (ext == ".I" || ext == ".i")
+    return fail(at, "an ISO program as cycle 12 is not simulated yet", "unsupported-code");
+  std::string callee = f_.pp.program(written, f_.file, loc(at));
+  if (callee.empty()) return false;
+  f_.cycleProgram = callee;
+  f_.cycleRuns = true;
+  Op note(OpKind::Comment, loc(t_[0]));
+  note.set("text", Expr::string(fmt::format("CYCL DEF {} PGM {}", n.text, written)));
+  out().push_back(std::move(note));
   return true;
 }
 
@@ -162,13 +191,15 @@ bool BlockParser::cycl() {
     ++i_;
     std::string how = tok().isWord("POS") ? " POS" : tok().isWord("PAT") ? " PAT" : "";
     if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
+    if (f_.cycle == 12 && f_.cycleRuns && !how.empty())
+      return fail(t_[0], fmt::format("cycle 12 (PGM CALL) by CYCL CALL{} is not simulated yet", how), "unsupported-code");
     if (f_.cycleRuns && how == " POS") return cyclCallPos();
     if (f_.cycleRuns && how == " PAT") return cyclCallPat();
     if (!f_.cycleRuns || !how.empty())
       return fail(t_[0], fmt::format("cycle {} is not simulated yet (CYCL CALL{})", f_.cycle, how), "unsupported-code");
     PathWords w;  // CYCL CALL M3: the M functions around the call
     if (!words(w, kM, "CYCL CALL") || !emitBefore(w)) return false;
-    out().push_back(cycleCall(bl));
+    out().push_back(f_.storedCall(bl));
     return emitAfter(w);
   }
   if (!expectWord("DEF")) return false;
@@ -178,6 +209,7 @@ bool BlockParser::cycl() {
   int sub = n.isInt ? -1 : (int)std::lround((n.num - number) * 10);  // 7.0, 7.1 …: the old sub-blocks
   ++i_;
   if (sub > 0 && number == f_.oldCycle && oldCycleRuns(number)) return oldCycleBlock(number, n);
+  if (number == 12 && sub == 1 && f_.oldCycle == 12) return programCycle(n);
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
   // The parameter lines: Qn=value, each at most once, each one the cycle takes. A cycle of the
   // library (`ncc cycle --list`) becomes the `cycle` op: a CALL-active one is stored (define)
@@ -189,6 +221,7 @@ bool BlockParser::cycl() {
     f_.cycle = number;
     f_.cycleRuns = inLib;
     f_.cycleSurface = false;
+    f_.cycleProgram.clear();
     f_.m89 = false;  // a new definition ends M89 (L903)
   }
   Op c(OpKind::Cycle, bl);

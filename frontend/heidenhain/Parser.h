@@ -59,6 +59,8 @@ public:
   bool m89 = false;                 // the modal cycle call M89 is on (static: no labels, calls, jumps)
   bool cycleSurface = false;        // … and gives Q203 (kept in %_HEI_Q203 for CYCL CALL POS)
   int oldCycle = -1;                // the last old-style CYCL DEF n.0
+  std::string cycleProgram;         // cycle 12 PGM CALL: the program's function
+  ir::Op storedCall(SourceLoc l) const;  // CYCL CALL, M99, M89: the stored cycle or cycle 12's program
   std::vector<ir::Op> pattern;      // the last PATTERN DEF / SEL PATTERN: CYCL CALL PAT's ops
   std::shared_ptr<Approach> approach;  // APPR: lowered with the next block (an L)
   int compSide = 0;                 // the last RL (1) / RR (2) / R0 (0) in file order (DEP)
@@ -172,6 +174,7 @@ private:
   bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
   bool transformBlock(int number, const Token &n);  // Transforms.cpp: 8.k, 11.k, 26.k
   bool cyclCallPos();                              // Cycles.cpp
+  bool programCycle(const Token &n);               // Cycles.cpp: CYCL DEF 12.1 PGM
   bool cyclCallPat();                              // Patterns.cpp
   bool patternDef();                               // Patterns.cpp
   bool select();                                   // Patterns.cpp: SEL PATTERN
@@ -226,6 +229,8 @@ extern const char *const kScl, *const kAxisScl[3], *const kAxisCc[3], *const kMi
 void frameTakeOff(ir::Region &out, SourceLoc l);
 void framePutOn(ir::Region &out, SourceLoc l);
 bool oldCycleRuns(int number);
+// A program name written in a block: a string, or the words and numbers up to `stopWord`.
+std::string nameText(const std::vector<Token> &t, size_t &k, std::string_view stopWord);
 // Sections (call_section) need label names; LBL 0 gets one per occurrence.
 std::string labelOf(const Token &t);
 

@@ -255,11 +255,11 @@ bool BlockParser::emitAfter(PathWords &w) {
   bool called = false;
   for (auto &[m, l] : w.ms)
     if (mRow(m).act == MAct::CycleCall) {
-      if (!called) out().push_back(cycleCall(l));
+      if (!called) out().push_back(f_.storedCall(l));
       called = true;
       f_.m89 = m == 89 || (f_.m89 && m != 99);
     }
-  if (!called && moved_ && f_.m89) out().push_back(cycleCall(loc(t_[0])));
+  if (!called && moved_ && f_.m89) out().push_back(f_.storedCall(loc(t_[0])));
   for (auto &[m, l] : w.ms) {
     MRow r = mRow(m);
     if (r.when != When::End) continue;
