@@ -1,5 +1,6 @@
 #include "runtime/cycles/Library.h"
 #include "runtime/cycles/Entry.h"
+#include "runtime/cycles/Mill.h"
 #include "runtime/Geometry.h"
 
 #include <algorithm>
@@ -429,6 +430,44 @@ bool hei240(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
+// 208 BORE MILLING (L3197-L3329): rapid to the set-up clearance over the centre, out to the bore
+// radius Q335/2 - r, a helix of Q334 per turn at Q206 to the depth, once round there, back to the
+// centre, rapid to the 2nd set-up clearance; a bore as wide as the tool is drilled straight down.
+// The direction: Q351 +1 (or 0) climb, -1 up-cut, for M3 (M4 reverses): climb inside a bore runs
+// counter-clockwise. [model] the move out to the radius and back to the centre at Q206, the helix
+// starting on the +main axis side; the tool table has no ANGLE to limit Q334 (the manual: only
+// when ANGLE is set).
+bool hei208(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  HeiLevels l;
+  for (const char *k : {"Q334", "Q335"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  if (!heiLevels(a, l, err)) return false;
+  if (a.get("Q201") == 0) return true;
+  if (!(ctx.toolRadius > 0)) return fail(err, "208 needs the tool's radius (a tool with a radius in the spindle)");
+  const double feed = a.get("Q206"), rb = a.get("Q335") / 2 - ctx.toolRadius, pitch = std::fabs(a.get("Q334"));
+  if (rb < -1e-9) return fail(err, "Q335 (the bore's diameter) is smaller than the tool");
+  if (a.get("Q342") <= 0 && a.get("Q335") > 4 * ctx.toolRadius)
+    return fail(err, "Q335 is more than twice the tool's diameter: give the pre-drilled diameter Q342");
+  if (rb > 1e-9 && !(pitch > 0)) return fail(err, "Q334 (infeed per helix turn) must be greater than 0");
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  Mill mill(out, ctx.plane, {ctx.position[ax.u], ctx.position[ax.v]}, 0, l.dir, ctx.position);
+  mill.up(l.zsc);
+  if (rb <= 1e-9) {
+    mill.feed({0, 0}, l.bottom, feed);
+  } else {
+    const bool ccw = (a.get("Q351") >= 0) == (ctx.spindle != 2);
+    const double turns = std::fabs(l.zsc - l.bottom) / pitch, whole = std::floor(turns + 1e-9), part = turns - whole;
+    mill.feed({rb, 0}, l.zsc, feed);
+    const double angle = (ccw ? 1 : -1) * part * 2 * M_PI;
+    PlanePoint end = part < 1e-9 ? PlanePoint{rb, 0} : PlanePoint{rb * std::cos(angle), rb * std::sin(angle)};
+    mill.arc(end, {0, 0}, ccw, l.bottom, feed, part < 1e-9 ? (int)whole : (int)whole + 1);
+    mill.arc(mill.here(), {0, 0}, ccw, l.bottom, feed);
+    mill.feed({0, 0}, l.bottom, feed);
+  }
+  mill.up(l.z2);
+  return true;
+}
+
 // 207 RIGID TAPPING: the feed is S x |Q239| (spindle-synchronised), the hand the sign of Q239
 // (+ right-hand, M3; - left-hand, M4); reverse at the bottom, out to the set-up clearance where
 // the spindle stops, rapid to the 2nd; a spindle that turned before the cycle turns again.
@@ -582,6 +621,7 @@ const CycleDef kHoleEntries[] = {
     {"hei.206", "Q200 Q201 Q206 Q211 Q203 Q204", "Heidenhain tapping with a floating holder", hei206, nullptr},
     {"hei.207", "Q200 Q201 Q239 Q203 Q204", "Heidenhain rigid tapping", hei207, nullptr},
     {"hei.240", "Q200 Q343 Q201 Q344 Q206 Q211 Q203 Q204", "Heidenhain centering", hei240, nullptr},
+    {"hei.208", "Q200 Q201 Q206 Q334 Q203 Q204 Q335 Q342 Q351", "Heidenhain bore milling", hei208, nullptr},
     {"hei.220", "Q216 Q217 Q244 Q245 Q246 Q247 Q241 Q200 Q203 Q204 Q301 Q365", "Heidenhain polar pattern", nullptr,
      hei220},
     {"hei.221", "Q225 Q226 Q237 Q238 Q242 Q243 Q224 Q200 Q203 Q204 Q301", "Heidenhain Cartesian pattern", nullptr,
