@@ -128,12 +128,13 @@ bool BlockParser::programCycle(const Token &n) {
 }
 
 const char *const kSurface = "_HEI_Q203";
+const char *const kModalFeed = "_HEI_FEED";
 
 // CYCL CALL POS X Y Z [FMAX] [M] (L851-L888): the tool moves to X Y in the plane, then the stored
 // cycle runs there with Z as an extra datum shift in the tool axis (its Q203 counts from Z). The
 // manual's positioning logic moves in the plane first when the tool is above the surface Q203 (+Z)
 // and otherwise retracts "to the clearance height" first: that height it does not give, so a call
-// from below the surface stops the run. A feed of its own (for the approach only) is not yet.
+// from below the surface stops the run. A feed of its own is for the approach only (L883).
 bool BlockParser::cyclCallPos() {
   SourceLoc bl = loc(t_[0]);
   ++i_;  // POS
@@ -146,8 +147,11 @@ bool BlockParser::cyclCallPos() {
   }
   if (!w.find('X') || !w.find('Y') || !w.find('Z'))
     return fail(t_[0], "CYCL CALL POS needs all three coordinates X, Y and Z (L869)", "missing-word");
-  if (w.feed || w.fauto)
-    return f_.error(w.feedLoc, "a feed on CYCL CALL POS (for the approach only) is not simulated yet: FMAX or none", "unsupported-code");
+  // Its feed is the approach's only (L883): the modal feed comes back after the move.
+  ExprPtr feed = w.fauto ? hglobal(kFauto, w.feedLoc) : std::move(w.feed);
+  if (feed && !inchFeed(w.feedLoc)) return false;
+  if (w.fauto) f_.pp.fauto = true;
+  w.fauto = false;
   if (!f_.cycleSurface)
     return fail(t_[0], fmt::format("CYCL CALL POS needs the surface Q203 in the definition of cycle {}", f_.cycle), "cycle-invalid");
   if (!emitBefore(w)) return false;
@@ -166,7 +170,19 @@ bool BlockParser::cyclCallPos() {
   plane.fmax = w.fmax;
   for (auto &c : w.coords)
     if (c.axis != 'Z') plane.coords.push_back({c.axis, false, std::move(c.value), c.loc});
+  auto setFeed = [&](ExprPtr v) {
+    Op o(OpKind::Feed, bl);
+    o.set("value", std::move(v));
+    out().push_back(std::move(o));
+  };
+  const bool ownFeed = feed != nullptr;
+  if (ownFeed) {
+    f_.pp.callFeed = true;
+    out().push_back(assignOp(hglobal(kModalFeed, bl), Expr::var(ir::VarSpace::System, "_feed", nullptr, bl), bl));
+    setFeed(std::move(feed));
+  }
   if (!emitMove(Op(OpKind::Move), plane, "linear")) return false;
+  if (ownFeed) setFeed(hglobal(kModalFeed, bl));
   bool shift = !(z->kind == ir::ExprKind::Number && z->num == 0);
   auto shiftZ = [&](ExprPtr by) {  // the local shift in Z, with the frame's other parts kept
     f_.pp.frames = true;

@@ -86,6 +86,7 @@ public:
   bool frames = false;   // some file uses cycle 7 or 10: the main program declares the shift and angle
   bool surface = false;  // some file uses CYCL CALL POS: the main program declares the cycle's Q203
   bool global125 = false;  // some file has GLOBAL DEF 125: … declares its Q345
+  bool callFeed = false;   // some CYCL CALL POS has a feed: … declares the kept modal feed
   bool approach = false;   // some file uses APPR/DEP: … declares their scratch values
   bool callPat = false;    // some CYCL CALL PAT is split over several ops: … declares the call's level
   bool mainInch = false;
@@ -221,6 +222,7 @@ extern const char *const kCcX, *const kCcY, *const kPr, *const kPa, *const kFaut
 // The datum shift (cycle 7) and rotation angle (cycle 10), program-wide.
 extern const char *const kShiftX, *const kShiftY, *const kShiftZ, *const kRot;
 extern const char *const kSurface;  // Q203 of the stored cycle
+extern const char *const kModalFeed;  // the modal feed kept around CYCL CALL POS's own
 extern const char *const kApproachVars[];  // APPR/DEP's scratch values, null-terminated
 extern const char *const kGlobal125, *const kCallLevel;  // GLOBAL DEF 125's Q345, CYCL CALL PAT's level
 // Scaling (cycle 11; cycle 26's factors and centres) and mirroring (cycle 8), program-wide.

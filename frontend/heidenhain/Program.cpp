@@ -140,6 +140,7 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
   if (pp.surface) globals.push_back({kSurface, 0});
   if (pp.global125) globals.push_back({kGlobal125, 0});
   if (pp.callPat) globals.push_back({kCallLevel, 0});
+  if (pp.callFeed) globals.push_back({kModalFeed, 0});
   if (pp.approach)
     for (const char *const *v = kApproachVars; *v; ++v) globals.push_back({*v, 0});
   if (pp.frames) {
