@@ -273,7 +273,7 @@ bool BlockParser::assign() {
   if (!target) return false;
   if (!tok().is("=")) return fail(tok(), "'=' expected after the parameter");
   ++i_;
-  ExprPtr v = formula();
+  ExprPtr v = isString(*target) ? stringFormula() : formula();
   if (!v) return false;
   if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in the formula", tok().text));
   out().push_back(assignOp(std::move(target), std::move(v), l));

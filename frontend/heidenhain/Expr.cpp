@@ -18,7 +18,7 @@ struct QSpace {
   const char *prefix;
   int last;  // highest number (TNC 640)
 };
-const QSpace kQ[] = {{"Q", 1999}, {"QL", 499}, {"QR", 499}};
+const QSpace kQ[] = {{"Q", 1999}, {"QL", 499}, {"QR", 499}, {"QS", 1999}};
 
 // The formula functions: one argument in degrees for the angles (the TNC's unit).
 enum class Fn : uint8_t { Builtin, Log, Frac, Neg, Sgn, Sq };
@@ -91,9 +91,34 @@ ExprPtr BlockParser::qParam() {
     }
     return Expr::var(ir::VarSpace::QParam, q.prefix, std::move(index), l);
   }
-  if (w.isWord("QS")) fail(w, "string parameters (QS) are not simulated yet", "unsupported-code");
-  else fail(w, "a Q parameter (Q, QL, QR) was expected");
+  fail(w, "a Q parameter (Q, QL, QR) was expected");
   return nullptr;
+}
+
+bool BlockParser::isString(const Expr &e) { return e.kind == ir::ExprKind::Var && e.space == ir::VarSpace::QParam && e.str == "QS"; }
+
+// A string formula (the value of QS n = …): strings in quotes and QS parameters joined by `||`.
+// [K] The string functions (STRF, TOCHAR, SUBSTR, TONUMB, INSTR, STRLEN, STRCOMP) are not read yet.
+ExprPtr BlockParser::stringFormula() {
+  ExprPtr a;
+  while (true) {
+    const Token &t = tok();
+    ExprPtr b;
+    if (t.kind == Tok::String) {
+      b = Expr::string(t.text, loc(t));
+      ++i_;
+    } else if (t.isWord("QS")) {
+      if (!(b = qParam())) return nullptr;
+    } else {
+      fail(t, t.kind == Tok::Word ? fmt::format("the string function {} is not simulated yet", t.text)
+                                  : "a string in quotes or a QS parameter was expected",
+           t.kind == Tok::Word ? "unsupported-code" : "syntax");
+      return nullptr;
+    }
+    a = a ? Expr::binary(OpCode::Concat, std::move(a), std::move(b), loc(t)) : std::move(b);
+    if (!(tok().is("|") && peek().is("|"))) return a;
+    i_ += 2;
+  }
 }
 
 ExprPtr BlockParser::signedValue() {
@@ -109,7 +134,11 @@ ExprPtr BlockParser::signedValue() {
     ++i_;
     return v;
   }
-  if (tok().kind == Tok::Word && (tok().text == "Q" || tok().text == "QL" || tok().text == "QR" || tok().text == "QS")) {
+  if (tok().isWord("QS")) {
+    fail(tok(), "a string parameter (QS) cannot stand for a number");
+    return nullptr;
+  }
+  if (tok().kind == Tok::Word && (tok().text == "Q" || tok().text == "QL" || tok().text == "QR")) {
     v = qParam();
     if (v && neg) v = Expr::unary(OpCode::Neg, std::move(v), l);
     return v;
@@ -198,8 +227,9 @@ ExprPtr BlockParser::primary() {
     ++i_;
     return Expr::number(M_PI, ir::Type::Real, loc(t));
   }
-  if (t.kind == Tok::Word && (t.text == "Q" || t.text == "QL" || t.text == "QR" || t.text == "QS")) return qParam();
-  if (t.kind == Tok::End) fail(t, "the formula ends early");
+  if (t.kind == Tok::Word && (t.text == "Q" || t.text == "QL" || t.text == "QR")) return qParam();
+  if (t.isWord("QS") || t.kind == Tok::String) fail(t, "a string cannot stand in a numeric formula");
+  else if (t.kind == Tok::End) fail(t, "the formula ends early");
   else fail(t, fmt::format("'{}' cannot stand in a formula", t.text));
   return nullptr;
 }

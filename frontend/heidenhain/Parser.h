@@ -143,7 +143,9 @@ public:
   // Expressions (Expr.cpp)
   ir::ExprPtr formula();           // + - * / ^, functions, parentheses
   ir::ExprPtr signedValue();       // [+|-] number | Q param: a word's value
-  ir::ExprPtr qParam();            // Q5, QL5, QR5 at the current token
+  ir::ExprPtr qParam();            // Q5, QL5, QR5, QS5 at the current token
+  ir::ExprPtr stringFormula();     // "text" || QS5: the value of a QS assignment
+  static bool isString(const ir::Expr &e);  // a QS parameter
 
 private:
   FileParser &f_;

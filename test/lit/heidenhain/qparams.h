@@ -36,7 +36,7 @@
 ; RUN: not %ncc compile --emit=ir %t.err.h 2>&1 | FileCheck %s --check-prefix=ERR
 ; ERR: err.h:2:4: error: Q2000 is out of range (Q0 to Q1999) [syntax]
 ; ERR: err.h:3:5: error: QL500 is out of range (QL0 to QL499) [syntax]
-; ERR: err.h:4:3: error: string parameters (QS) are not simulated yet [unsupported-code]
+; ERR: err.h:4:9: error: a string in quotes or a QS parameter was expected [syntax]
 ; ERR: err.h:5:6: error: FN 16 is not simulated yet [unsupported-code]
 ; ERR: err.h:7:11: error: the formula ends early [syntax]
 ; ERR: err.h:8:14: error: ')' expected [syntax]
