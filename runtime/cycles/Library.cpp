@@ -430,6 +430,53 @@ bool hei240(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
+// 209 TAPPING WITH CHIP BREAKING (L4330-L4489): rapid to the set-up clearance, spindle oriented
+// to Q336, then in the tapping direction (the sign of Q239) at S x |Q239| in infeeds of Q257
+// counted from the surface; after each the spindle reverses, the tool backs out Q256 x |Q239|
+// (Q256 = 0: to the set-up clearance) and, forward again, goes on to the next infeed; at the
+// depth it reverses and comes out to the set-up clearance, where the spindle stops; rapid to the
+// 2nd set-up clearance; a spindle that turned before the cycle turns again (L4387-L4396).
+// Q403 (a faster retraction speed) other than 1 is an error: the steps carry no speed change.
+bool hei209(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  for (const char *k : {"Q200", "Q201", "Q239", "Q203"})
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  if (a.get("Q201") == 0) return true;
+  const double pitch = a.get("Q239");
+  if (pitch == 0) return fail(err, "Q239 (thread pitch) must not be 0");
+  if (!(ctx.speed > 0)) return fail(err, "209 needs a spindle speed: the feed is S x pitch");
+  if (a.has("Q403") && a.get("Q403") != 1)
+    return fail(err, "Q403 (retraction speed factor) other than 1 is not supported");
+  CycleArgs b = a;
+  const double feed = ctx.speed * std::fabs(pitch);
+  b.num["Q206"] = feed;
+  HeiLevels l;
+  if (!heiLevels(b, l, err)) return false;
+  const int plane = ctx.plane, tap = pitch > 0 ? 1 : 2, back = 3 - tap;
+  const double infeed = std::fabs(a.get("Q257")), backOff = std::fabs(a.get("Q256")) * std::fabs(pitch);
+  if (infeed > 0 && std::fabs(l.bottom - a.get("Q203")) / infeed > kMaxPecks)
+    return fail(err, "Q257 (infeed depth per chip break) too small");
+  atLevel(ctx, plane, l.zsc, out);
+  CycleStep orient;
+  orient.kind = CycleStepKind::SpindleOrient;
+  orient.angle = a.get("Q336");
+  out.push_back(orient);
+  spindleStep(tap, out);
+  for (double level = a.get("Q203");;) {
+    level = infeed > 0 ? level + l.dir * infeed : l.bottom;
+    if ((level - l.bottom) * l.dir >= 0) level = l.bottom;
+    atLevel(ctx, plane, level, out, CycleStepKind::Feed, feed);
+    spindleStep(back, out);
+    if (level == l.bottom) break;
+    atLevel(ctx, plane, backOff > 0 ? level - l.dir * backOff : l.zsc, out, CycleStepKind::Feed, feed);
+    spindleStep(tap, out);
+  }
+  atLevel(ctx, plane, l.zsc, out, CycleStepKind::Feed, feed);
+  spindleStep(0, out);
+  if (l.z2 != l.zsc) atLevel(ctx, plane, l.z2, out);
+  if (ctx.spindle != 0) spindleStep(ctx.spindle, out);
+  return true;
+}
+
 // 208 BORE MILLING (L3197-L3329): rapid to the set-up clearance over the centre, out to the bore
 // radius Q335/2 - r, a helix of Q334 per turn at Q206 to the depth, once round there, back to the
 // centre, rapid to the 2nd set-up clearance; a bore as wide as the tool is drilled straight down.
@@ -622,6 +669,7 @@ const CycleDef kHoleEntries[] = {
     {"hei.207", "Q200 Q201 Q239 Q203 Q204", "Heidenhain rigid tapping", hei207, nullptr},
     {"hei.240", "Q200 Q343 Q201 Q344 Q206 Q211 Q203 Q204", "Heidenhain centering", hei240, nullptr},
     {"hei.208", "Q200 Q201 Q206 Q334 Q203 Q204 Q335 Q342 Q351", "Heidenhain bore milling", hei208, nullptr},
+    {"hei.209", "Q200 Q201 Q239 Q203 Q204 Q257 Q256 Q336 Q403", "Heidenhain tapping with chip breaking", hei209, nullptr},
     {"hei.220", "Q216 Q217 Q244 Q245 Q246 Q247 Q241 Q200 Q203 Q204 Q301 Q365", "Heidenhain polar pattern", nullptr,
      hei220},
     {"hei.221", "Q225 Q226 Q237 Q238 Q242 Q243 Q224 Q200 Q203 Q204 Q301", "Heidenhain Cartesian pattern", nullptr,
