@@ -184,9 +184,10 @@ bool BlockParser::approachDepart() {
   return depart(*a);
 }
 
-// The first contour element after APPR: a straight line L. Its direction (at PA) places the
-// approach; the approach's moves come first, then the element.
-bool BlockParser::approachBefore(PathWords &el) {
+// The first contour element after APPR: a straight line L or a circle C about the pole CC (dr
+// its DR, 0 for L). Its direction at PA places the approach; the approach's moves come first,
+// then the element.
+bool BlockParser::approachBefore(PathWords &el, int dr) {
   std::shared_ptr<Approach> ap = std::move(f_.approach);
   Approach &a = *ap;
   SourceLoc l = a.loc;
@@ -206,14 +207,18 @@ bool BlockParser::approachBefore(PathWords &el) {
   // PA and the element's end P1 (a coordinate left out is PA's; IX from PA).
   set(kAx, a.w.find('X')->value->clone());
   set(kAy, a.w.find('Y')->value->clone());
-  ExprPtr p1[2];
-  for (int c = 0; c < 2; ++c) {
-    const Coord *k = el.find("XY"[c]);
-    const char *base = c ? kAy : kAx;
-    p1[c] = !k ? g(base, l) : k->inc ? bin(OpCode::Add, g(base, l), k->value->clone(), l) : k->value->clone();
+  if (dr) {
+    arcTangent(kAx, kAy, dr, l);
+  } else {
+    ExprPtr p1[2];
+    for (int c = 0; c < 2; ++c) {
+      const Coord *k = el.find("XY"[c]);
+      const char *base = c ? kAy : kAx;
+      p1[c] = !k ? g(base, l) : k->inc ? bin(OpCode::Add, g(base, l), k->value->clone(), l) : k->value->clone();
+    }
+    set(kDx, bin(OpCode::Sub, std::move(p1[0]), g(kAx, l), l));
+    set(kDy, bin(OpCode::Sub, std::move(p1[1]), g(kAy, l), l));
   }
-  set(kDx, bin(OpCode::Sub, std::move(p1[0]), g(kAx, l), l));
-  set(kDy, bin(OpCode::Sub, std::move(p1[1]), g(kAy, l), l));
   unitAndNormal(side, what + ": the first contour element has no length", l);
   if (a.kind == "LT") {  // PH = PA - LEN d, on the element's line; both compensated
     o.push_back(compOn(comp, l));
@@ -257,8 +262,9 @@ bool BlockParser::approachBefore(PathWords &el) {
 bool BlockParser::depart(Approach &a) {
   SourceLoc l = a.loc;
   std::string what = "DEP " + a.kind;
-  if (!f_.lastWasLine)
-    return f_.error(l, what + " after anything but a straight line L (the last contour element) is not simulated yet", "unsupported-code");
+  if (!f_.lastWasLine && !f_.lastArcDir)
+    return f_.error(l, what + " after anything but a straight line L or a circle C (the last contour element) is not simulated yet",
+                    "unsupported-code");
   if (f_.compSide <= 0) return f_.error(l, what + " without the radius compensation RL or RR on", "syntax");
   if (a.kind == "LCT" && (!a.w.find('X') || !a.w.find('Y'))) return f_.error(l, what + " needs the end point X and Y", "missing-word");
   int side = f_.compSide == 1 ? 1 : -1;
@@ -268,8 +274,12 @@ bool BlockParser::depart(Approach &a) {
   auto set = [&](const char *v, ExprPtr e) { o.push_back(assignOp(g(v, l), std::move(e), l)); };
   set(kAx, sys("_x", l));
   set(kAy, sys("_y", l));
-  set(kDx, bin(OpCode::Sub, g(kAx, l), g(kP0x, l), l));
-  set(kDy, bin(OpCode::Sub, g(kAy, l), g(kP0y, l), l));
+  if (f_.lastArcDir) {  // the circle's tangent at PE
+    arcTangent(kAx, kAy, f_.lastArcDir, l);
+  } else {
+    set(kDx, bin(OpCode::Sub, g(kAx, l), g(kP0x, l), l));
+    set(kDy, bin(OpCode::Sub, g(kAy, l), g(kP0y, l), l));
+  }
   unitAndNormal(side, what + ": the last contour element has no length", l);
   o.push_back(compOff(l));
   // PE_c = PE + r n: where the tool stands when the compensation ends.
@@ -305,6 +315,16 @@ bool BlockParser::depart(Approach &a) {
   f_.lastMove = out().size() - 1;
   moved_ = true;
   return emitAfter(a.w);
+}
+
+// (DX, DY) = the direction of a circle about the pole CC at the point (px, py): the radius turned
+// a quarter counter-clockwise (DR+) or clockwise (DR-).
+void BlockParser::arcTangent(const char *px, const char *py, int dr, SourceLoc l) {
+  ir::Region &o = out();
+  f_.pp.polar = true;
+  ExprPtr rx = bin(OpCode::Sub, g(px, l), hglobal(kCcX, l), l), ry = bin(OpCode::Sub, g(py, l), hglobal(kCcY, l), l);
+  o.push_back(assignOp(g(kDx, l), bin(OpCode::Mul, num(-dr, l), std::move(ry), l), l));
+  o.push_back(assignOp(g(kDy, l), bin(OpCode::Mul, num(dr, l), std::move(rx), l), l));
 }
 
 // (DX, DY) made a unit vector (an abort when it is 0), (NX, NY) its normal to the tool's side

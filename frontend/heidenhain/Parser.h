@@ -65,6 +65,7 @@ public:
   std::shared_ptr<Approach> approach;  // APPR: lowered with the next block (an L)
   int compSide = 0;                 // the last RL (1) / RR (2) / R0 (0) in file order (DEP)
   bool lastWasLine = false;         // the block before is an L (DEP's last element)
+  int lastArcDir = 0;               // … or a C: its DR (+1, -1), else 0
   bool usesDep = false;             // the file has DEP: each L keeps where it starts
   SourceLoc cycleLoc;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
@@ -139,6 +140,7 @@ class BlockParser {
 public:
   BlockParser(FileParser &f, Block &b) : f_(f), b_(b), t_(b.toks) {}
   bool parse();
+  int arcDir() const { return arcDir_; }  // a C block's DR (+1, -1), after parse()
 
   // Expressions (Expr.cpp)
   ir::ExprPtr formula();           // + - * / ^, functions, parentheses
@@ -153,6 +155,7 @@ private:
   std::vector<Token> &t_;
   size_t i_ = 0;
   bool moved_ = false;  // the block emitted a move (M89 calls the cycle after it)
+  int arcDir_ = 0;
 
   const Token &tok() const { return t_[i_]; }
   const Token &peek(size_t k = 1) const { return t_[std::min(i_ + k, t_.size() - 1)]; }
@@ -183,7 +186,8 @@ private:
   bool select();                                   // Patterns.cpp: SEL PATTERN
   bool globalDef();                                // Patterns.cpp: GLOBAL DEF 125
   bool approachDepart();                           // Approach.cpp: APPR, DEP
-  bool approachBefore(PathWords &firstElement);    // … the APPR before its first element
+  bool approachBefore(PathWords &firstElement, int dr);  // … the APPR before its first element (dr: C's DR, 0: L)
+  void arcTangent(const char *px, const char *py, int dr, SourceLoc l);
   bool depart(Approach &a);
   bool takeWord(const char *w, ir::ExprPtr &out);
   void unitAndNormal(int side, const std::string &zeroLength, SourceLoc l);

@@ -279,7 +279,7 @@ bool BlockParser::emitAfter(PathWords &w) {
 bool BlockParser::line() {
   PathWords w;
   if (!words(w, kCoords | kComp | kFeed | kM, "L")) return false;
-  if (f_.approach && !approachBefore(w)) return false;
+  if (f_.approach && !approachBefore(w, 0)) return false;
   keepLineStart();
   if (!emitBefore(w)) return false;
   return emitMove(Op(OpKind::Move), w, "linear") && emitAfter(w);
@@ -304,6 +304,8 @@ bool BlockParser::arc() {
   if (!w.dr) return fail(t_[0], "C needs the direction DR+ or DR-", "missing-word");
   if (w.fmax) return f_.error(w.feedLoc, "FMAX on an arc: the TNC moves arcs at a feed", "syntax");
   f_.pp.polar = true;
+  arcDir_ = w.dr;
+  if (f_.approach && !approachBefore(w, w.dr)) return false;
   if (!emitBefore(w)) return false;
   Op mv(OpKind::Move);
   mv.set("I", hglobal(kCcX));

@@ -34,14 +34,16 @@ bool FileParser::run() {
   for (auto &b : lr.blocks) {
     const Token &first = b.toks[0];
     bool comment = b.star || first.kind == Tok::End;
-    if (approach && !comment && !first.isWord("L")) {  // APPR needs the direction of the element after it
+    if (approach && !comment && !first.isWord("L") && !first.isWord("C")) {  // APPR needs the element's direction
       approach.reset();
       ok = error({file, first.line, first.col},
-                 "after APPR the first contour element must be a straight line L (an arc: not simulated yet)", "unsupported-code");
+                 "after APPR the first contour element must be a straight line L or a circle C (CR, CT, polar: not simulated yet)",
+                 "unsupported-code");
     }
     BlockParser bp(*this, b);
     if (!bp.parse()) ok = false;
     if (!comment) lastWasLine = first.isWord("L");
+    if (!comment) lastArcDir = first.isWord("C") ? bp.arcDir() : 0;
   }
   if (approach) ok = error({file, lr.blocks.back().line, 1}, "APPR without a contour element after it", "syntax");
   if (begun && !ended) ok = error(beginLoc, fmt::format("BEGIN PGM {} has no END PGM", pgmName), "program-frame");
