@@ -47,7 +47,9 @@ Op FileParser::storedCall(SourceLoc l) const {
 
 // The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 8 MIRROR IMAGE, 9 DWELL TIME,
 // 10 ROTATION, 11 SCALING, 26 AXIS-SPECIFIC SCALING.
-bool oldCycleRuns(int number) { return number == 7 || number == 8 || number == 9 || number == 10 || number == 11 || number == 26; }
+bool oldCycleRuns(int number) {
+  return number == 7 || number == 8 || number == 9 || number == 10 || number == 11 || number == 26 || number == 32;
+}
 
 // One sub-block of cycle 7, 9 or 10 (8, 11, 26: Transforms.cpp). The TNC keeps one datum shift
 // and one rotation angle (digest §4.1): each definition replaces it (IX, IROT add to it), kept in
@@ -55,6 +57,7 @@ bool oldCycleRuns(int number) { return number == 7 || number == 8 || number == 9
 // TNC does (rotation about the shifted datum).
 bool BlockParser::oldCycleBlock(int number, const Token &n) {
   SourceLoc bl = loc(t_[0]);
+  if (number == 32) return toleranceBlock(n);
   if (number != 7 && number != 9 && number != 10) return transformBlock(number, n);
   f_.pp.frames = true;
   if (number == 9) {  // CYCL DEF 9.1 DWELL 1.5: the time is the block's number
@@ -124,6 +127,48 @@ bool BlockParser::programCycle(const Token &n) {
   Op note(OpKind::Comment, loc(t_[0]));
   note.set("text", Expr::string(fmt::format("CYCL DEF {} PGM {}", n.text, written)));
   out().push_back(std::move(note));
+  return true;
+}
+
+// Cycle 32 TOLERANCE (seed002b §3.4, L13490-L13685): 32.1 T<tol> is the path tolerance of the
+// core's continuous path mode (the blending of the planner, docs/PLANNER.md); 32.1 without T, or
+// T0, is the machine's default again, which in ncc is the continuous mode without a tolerance,
+// as at the program's start. 32.2 HSC-MODE:0|1 TA<deg> is read: the filter shapes the motion
+// inside the tolerance band, which ncc does not model, and TA acts only with M128/TCPM, which ncc
+// refuses.
+bool BlockParser::toleranceBlock(const Token &n) {
+  SourceLoc bl = loc(t_[0]);
+  int sub = (int)std::lround((n.num - 32) * 10);
+  if (sub == 1) {
+    ExprPtr tol;
+    if (tok().isWord("T")) {
+      ++i_;
+      if (!(tol = signedValue())) return false;
+      if (tol->kind == ir::ExprKind::Number && (tol->num < 0 || tol->num > 10))
+        return fail(t_[0], "CYCL DEF 32.1: the tolerance T must be 0 to 10 (L13617)", "cycle-parameter");
+    }
+    if (!atEnd()) return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {}", tok().text, n.text));
+    Op m(OpKind::Mode, bl);
+    m.set("path_mode", Expr::symbol("continuous"));
+    if (tol && !(tol->kind == ir::ExprKind::Number && tol->num == 0)) m.set("tolerance", std::move(tol));
+    out().push_back(std::move(m));
+    return true;
+  }
+  if (sub != 2) return fail(n, fmt::format("CYCL DEF {}: cycle 32 has the sub-blocks 32.1 and 32.2", n.text), "cycle-invalid");
+  while (!atEnd()) {  // HSC-MODE:0|1 TA<deg>
+    if (tok().isWord("HSC") && peek().is("-") && peek(2).isWord("MODE")) {
+      i_ += 3;
+      if (tok().is(":")) ++i_;
+      if (tok().kind != Tok::Number || (tok().num != 0 && tok().num != 1))
+        return fail(tok(), "HSC-MODE takes 0 or 1", "cycle-parameter");
+      ++i_;
+    } else if (tok().isWord("TA")) {
+      ++i_;
+      if (!signedValue()) return false;
+    } else {
+      return fail(tok(), fmt::format("unexpected '{}' in CYCL DEF {} (HSC-MODE, TA)", tok().text, n.text));
+    }
+  }
   return true;
 }
 

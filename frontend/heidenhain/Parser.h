@@ -179,6 +179,7 @@ private:
   bool cycl();
   bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
   bool transformBlock(int number, const Token &n);  // Transforms.cpp: 8.k, 11.k, 26.k
+  bool toleranceBlock(const Token &n);             // Cycles.cpp: 32.1, 32.2
   bool cyclCallPos();                              // Cycles.cpp
   bool programCycle(const Token &n);               // Cycles.cpp: CYCL DEF 12.1 PGM
   bool cyclCallPat();                              // Patterns.cpp
