@@ -156,9 +156,11 @@ bool BlockParser::approachDepart() {
   a->loc = loc(kw);
   bool needLen = kind == "LT" || kind == "LN", needArc = kind == "CT" || kind == "LCT";
   if (!takeWord("LEN", a->len) || !takeWord("CCA", a->cca)) return false;
-  unsigned allowed = kFeed | kM | kRadius | (appr ? kCoords | kComp : (kind == "LCT" ? kCoords : 0));
-  if (!words(a->w, allowed, fmt::format("{} {}", kw.text, kind).c_str())) return false;
+  unsigned allowed = kFeed | kM | kRadius;
+  if (appr) allowed |= kCoords | kComp;
+  if (!appr && kind == "LCT") allowed |= kCoords;  // DEP LCT's end point
   std::string what = fmt::format("{} {}", kw.text, kind);
+  if (!words(a->w, allowed, what.c_str())) return false;
   if (needLen && !a->len) return fail(k, what + " needs LEN", "missing-word");
   if (!needLen && a->len) return fail(k, what + " takes no LEN");
   if (kind == "CT" && !a->cca) return fail(k, what + " needs CCA (the arc's angle)", "missing-word");
