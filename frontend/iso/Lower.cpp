@@ -752,10 +752,7 @@ bool BlockLowerer::Block::ioCode(const MUse &m) {
 bool BlockLowerer::Block::callsAndReturn() {
   if (auto *m = findM(MKind::Call)) {
     SourceLoc loc = m->word->loc;
-    if (!L.allowCalls) {
-      L.diags_.error(loc, "M98 needs the whole program (not streamable)", "not-streamable");
-      return false;
-    }
+    if (!callAllowed(loc, "M98")) return false;
     if (IsoWord *p = bw.get('P'); p && p->expr) {
       // M98 P#1 / P[expr]: a computed program number, found when the call runs (a number n
       // calls O<n>; the count comes from L only).
@@ -784,10 +781,7 @@ bool BlockLowerer::Block::callsAndReturn() {
     SourceLoc loc = gloc(GGroup::NonModal);
     IsoWord *p = bw.get('P');
     if (p && !(p->expr == nullptr && p->value <= 1)) {
-      if (!L.allowCalls) {
-        L.diags_.error(loc, "G05 needs the whole program (not streamable)", "not-streamable");
-        return false;
-      }
+      if (!callAllowed(loc, "G05")) return false;
       long long prog;
       if (!programNumber(loc, "G05", prog)) return false;
       callOp(loc, prog, bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc), "shared");
@@ -799,10 +793,7 @@ bool BlockLowerer::Block::callsAndReturn() {
   if (macroCall) {
     bool modal = !G(GGroup::NonModal);  // G66: a modal_call, after each following move (docs/IR.md §5.5)
     SourceLoc loc = gloc(modal ? GGroup::MacroModal : GGroup::NonModal);
-    if (!L.allowCalls) {
-      L.diags_.error(loc, fmt::format("{} needs the whole program (not streamable)", macroName()), "not-streamable");
-      return false;
-    }
+    if (!callAllowed(loc, macroName())) return false;
     long long prog;
     if (!programNumber(loc, macroName(), prog)) return false;
     ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);
