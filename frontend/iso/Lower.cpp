@@ -429,6 +429,12 @@ bool BlockLowerer::Block::setup() {
       if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
     }
   }
+  if (auto *gi = G(GGroup::WorkOffset); gi && gi->arg == 1 && L.flavour_ == Flavour::Fanuc && !nonModal && bw.has('P')) {
+    // 808D G54 P1…P93 (the extended offsets) and G54 P0 (the external one): ncc's table has G54-G59.
+    L.diags_.error(bw.get('P')->loc, "G54 P (the extended work offsets P1-P93, the external offset P0) is not supported",
+                   "unsupported-code");
+    return false;
+  }
   if (auto *gi = G(GGroup::WorkOffset))
     emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
         .set("index", Expr::number(gi->arg, ir::Type::Int, gloc(GGroup::WorkOffset)));
