@@ -46,7 +46,7 @@ SwitchWord findSwitch(std::string_view s, unsigned mask) {
       continue;
     }
     if (c == ' ' || c == '\t' || c == '\r') continue;
-    bool isSwitch = (c == 'G' || c == 'g') && (i == 0 || !wordChar(s[i - 1])) && s.substr(i + 1, 2) == "29" &&
+    bool isSwitch = (c == 'G' || c == 'g') && s.substr(i + 1, 2) == "29" &&
                     i + 3 < s.size() && (s[i + 3] == '0' || s[i + 3] == '1') &&
                     (i + 4 == s.size() || (!std::isdigit((unsigned char)s[i + 4]) && s[i + 4] != '.'));
     if (isSwitch && !w.found) {
@@ -57,7 +57,13 @@ SwitchWord findSwitch(std::string_view s, unsigned mask) {
       continue;
     }
     if (!w.otherCol) w.otherCol = (uint32_t)i + 1;
-    while (i + 1 < s.size() && wordChar(s[i + 1])) ++i;  // the rest of this word
+    // The rest of this word: a name (CDON, R1, MYVAR) or an address letter and its digits
+    // (X1G291 is two ISO words).
+    bool name = std::isalpha((unsigned char)c) && i + 1 < s.size() && (std::isalpha((unsigned char)s[i + 1]) || s[i + 1] == '_');
+    if (name || c == '$' || c == '_')
+      while (i + 1 < s.size() && wordChar(s[i + 1])) ++i;
+    else if (std::isalpha((unsigned char)c))
+      while (i + 1 < s.size() && (std::isdigit((unsigned char)s[i + 1]) || s[i + 1] == '.')) ++i;
   }
   return w;
 }
