@@ -25,7 +25,9 @@ namespace {
 class SiemensBlocks : public GuestBlocks {
 public:
   SiemensBlocks(SourceManager &sm, const SinOptions &opts, Diagnostics &diags)
-      : opts_(opts), pp_(sm, opts_, diags, scratch_) {}
+      : opts_(opts), pp_(sm, opts_, diags, scratch_) {
+    opts_.macroArguments = true;
+  }
 
   bool block(std::string_view line, uint32_t file, uint32_t lineNo, ir::Region &out) override {
     if (!fp_ || fp_->file != file) {  // a file's declarations (DEF) are its own
