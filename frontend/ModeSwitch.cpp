@@ -96,6 +96,8 @@ void MixedProgram::follow(const ir::Region &out, const std::function<void(ModeVa
 
 bool MixedProgram::take(std::string_view line, uint32_t file, uint32_t lineNo, ir::Region &out, bool &ok,
                         const std::function<void(ModeValue)> &hostFollow) {
+  // Most lines of the host's mode name no G290/G291: one search for "29" clears them.
+  if (mode_ == host_ && line.find("29") == std::string_view::npos) return false;
   SwitchWord w = findSwitch(line, mask_);
   if (w.found && w.otherCol) {
     diags_.error({file, lineNo, w.otherCol},

@@ -383,6 +383,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
   sectionContent_ = ended_ = false;
 
   ParsedBlock b;
+  const std::function<void(ModeValue)> followModes = [&](ModeValue m) { lower.followMode(m); };
   const char *p = text.data(), *end = p + text.size();
   uint32_t lineNo = 0;
   bool afterEnd = false;  // RS274NGC: the main program's M2/M30 has been read
@@ -397,8 +398,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
       size_t i = line.find_first_not_of(" \t\r");
       if (i == std::string_view::npos || (line[i] != 'o' && line[i] != 'O')) continue;
     }
-    if (flavour == Flavour::Fanuc && !ended_ &&
-        mixed_.take(line, fileId, lineNo, region(), ok_, [&](ModeValue m) { lower.followMode(m); })) {
+    if (flavour == Flavour::Fanuc && !ended_ && mixed_.take(line, fileId, lineNo, region(), ok_, followModes)) {
       sectionContent_ = true;
       continue;
     }

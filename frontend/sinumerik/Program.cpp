@@ -147,7 +147,7 @@ bool FunctionParser::run() {
   pp.modalCalls = pp.modalCalls || mentionsMcall(text);
   // G291 … G290: ISO blocks through the ISO front end (frontend/ModeSwitch.h).
   MixedProgram mixed(Language::Siemens, pp.opts.isoBlocks, pp.opts.blockDeleteMask, pp.diags);
-  auto follow = [this](ModeValue m) { followMode(m); };
+  const std::function<void(ModeValue)> follow = [this](ModeValue m) { followMode(m); };
   size_t pos = 0;
   uint32_t lineNo = 0;
   bool ok = true;
