@@ -40,11 +40,14 @@ public:
     pp_.modalCalls = pp_.modalCalls || mentionsMcall(line);
     // The ISO function's region is the base; structures the block opens stack on it.
     fp_->regions[0] = &out;
-    ir::Region &cur = fp_->cur();
-    size_t before = cur.size();
+    ir::Region *at = &fp_->cur();
+    size_t before = at->size(), depth = fp_->regions.size();
     if (!fp_->line(line, lineNo)) return false;
+    // A line that opened or closed a structure (its region may be gone) holds no REPEAT or GOTOC.
+    if (fp_->regions.size() != depth || &fp_->cur() != at) return true;
     // Section repetitions and GOTOC need the whole function's labels, which this front end
     // resolves at the end of its own files only.
+    ir::Region &cur = *at;
     for (size_t i = before; i < cur.size(); ++i) {
       const ir::Expr *text = cur[i].kind == ir::OpKind::Comment ? cur[i].get("text") : nullptr;
       if (cur[i].kind != ir::OpKind::CallSection && !(text && text->str == "GOTOC")) continue;
