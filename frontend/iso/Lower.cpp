@@ -20,7 +20,7 @@ static const char kMoveWords[] = "XYZABCUVW@^";  // words that make a block a mo
 static const char *rs274Meaning(int32_t code10) {
   switch (code10) {
   case 870: return "RS274NGC back boring with I J K";
-  case 160: case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
+  case 160: case 500: case 510: case 511: case 660: case 680: case 2910: return "not an RS274NGC code";
   default: return nullptr;
   }
 }
