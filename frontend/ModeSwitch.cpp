@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <string>
 
 namespace ncc {
 
@@ -16,6 +17,8 @@ struct SwitchWord {
   uint32_t otherCol = 0;  // another word in the block (0: none)
   uint32_t startCol = 0;  // the block's first character
   int64_t n = -1;         // its block number
+  std::string label;      // a Siemens label before the switch (`label_end: G290`), upper case
+  uint32_t labelCol = 0;
 };
 
 bool wordChar(char c) { return std::isalnum((unsigned char)c) || c == '_' || c == '$'; }
@@ -56,14 +59,23 @@ SwitchWord findSwitch(std::string_view s, unsigned mask) {
       i += 3;
       continue;
     }
-    if (!w.otherCol) w.otherCol = (uint32_t)i + 1;
     // The rest of this word: a name (CDON, R1, MYVAR) or an address letter and its digits
     // (X1G291 is two ISO words).
+    size_t start = i;
     bool name = std::isalpha((unsigned char)c) && i + 1 < s.size() && (std::isalpha((unsigned char)s[i + 1]) || s[i + 1] == '_');
     if (name || c == '$' || c == '_')
       while (i + 1 < s.size() && wordChar(s[i + 1])) ++i;
     else if (std::isalpha((unsigned char)c))
       while (i + 1 < s.size() && (std::isdigit((unsigned char)s[i + 1]) || s[i + 1] == '.')) ++i;
+    // A Siemens label first in the block (after the number) is no word: `N4000 label_end: G290`
+    // (seed001 L9984).
+    if (name && w.label.empty() && !w.found && !w.otherCol && i + 1 < s.size() && s[i + 1] == ':') {
+      for (size_t k = start; k <= i; ++k) w.label += (char)std::toupper((unsigned char)s[k]);
+      w.labelCol = (uint32_t)start + 1;
+      ++i;
+      continue;
+    }
+    if (!w.otherCol) w.otherCol = (uint32_t)start + 1;
   }
   return w;
 }
@@ -108,7 +120,13 @@ bool MixedProgram::take(std::string_view line, uint32_t file, uint32_t lineNo, i
     return true;
   }
   if (w.found) {
-    // The switch is a block of its own (its number can be jumped to).
+    // The switch is a block of its own (its number and label can be jumped to; the label
+    // before the block op, as the Sinumerik front end puts it).
+    if (!w.label.empty()) {
+      ir::Op label(ir::OpKind::Label, {file, lineNo, w.labelCol});
+      label.set("name", ir::Expr::string(w.label, label.loc));
+      out.push_back(std::move(label));
+    }
     ir::Op block(ir::OpKind::Block, {file, lineNo, w.startCol});
     if (w.n >= 0) block.set("n", ir::Expr::number((double)w.n, ir::Type::Int, block.loc));
     out.push_back(std::move(block));
