@@ -76,16 +76,32 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   return io;
 }
 
+static sin::SinOptions sinOptions(const FrontendOptions &o) {
+  sin::SinOptions so;
+  so.blockDeleteMask = o.blockDeleteMask;
+  so.searchDirs = o.searchDirs;
+  so.linkedFunctions = o.linkedFunctions;
+  so.cycles = o.cycles;
+  return so;
+}
+
 bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const FrontendOptions &opts,
                   Diagnostics &diags, ir::Module &out) {
+  // The 808D's two languages (G290 Siemens mode, G291 ISO mode): each front end reads the
+  // other's blocks through the other's block entry (frontend/ModeSwitch.h). A Siemens program
+  // file starts in the machine's start-up mode.
+  if (kind == SourceKind::Sinumerik && opts.startMode == "iso") kind = SourceKind::ISO;
   switch (kind) {
-  case SourceKind::ISO: return iso::parseIsoProgram(sm, file, isoOptions(opts), diags, out);
+  case SourceKind::ISO: {
+    iso::IsoOptions io = isoOptions(opts);
+    sin::SinOptions so = sinOptions(opts);
+    so.isoBlocks = [&diags, iso = io] { return iso::isoBlocks(iso, diags); };  // G291 in a Siemens-mode program it calls
+    io.siemensBlocks = [&sm, &diags, so] { return sin::siemensBlocks(sm, so, diags); };
+    return iso::parseIsoProgram(sm, file, io, diags, out);
+  }
   case SourceKind::Sinumerik: {
-    sin::SinOptions so;
-    so.blockDeleteMask = opts.blockDeleteMask;
-    so.searchDirs = opts.searchDirs;
-    so.linkedFunctions = opts.linkedFunctions;
-    so.cycles = opts.cycles;
+    sin::SinOptions so = sinOptions(opts);
+    so.isoBlocks = [&diags, io = isoOptions(opts)] { return iso::isoBlocks(io, diags); };
     return sin::parseSinumerikProgram(sm, file, so, diags, out);
   }
   case SourceKind::Heidenhain: {

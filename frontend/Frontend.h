@@ -24,6 +24,9 @@ struct FrontendOptions {
   char latheSystem = 'A';                  // its gcode_system
   std::vector<std::string> linkedFunctions;  // defined by linked files (driver --link): not searched
   CycleLookup cycles = nullptr;            // the cycle library's entries (the driver's; null: none)
+  // The mode a Sinumerik program file (.mpf/.spf) starts in: "siemens" (G290), or "iso" (G291:
+  // the 808D's ISO default mode, machine [controller] start_mode; the ISO front end reads it).
+  std::string startMode = "siemens";
 };
 
 // What a file holds: a dialect, or textual NC IR.

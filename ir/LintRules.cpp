@@ -30,6 +30,8 @@ static const LintRule kRules[] = {
      "M98/G65 to a program found neither in the file nor in the search path"},
     {"loop-mismatch", Severity::Error, "front end",
      "WHILE/DO/END or o-word blocks that do not nest"},
+    {"mode-switch", Severity::Error, "front end",
+     "G290/G291 (Siemens/ISO mode) sharing a block with other words, or what one mode cannot hold"},
     {"not-streamable", Severity::Error, "front end",
      "internal: control flow met while streaming a flat program"},
     {"motion-without-feed", Severity::Error, "executor",

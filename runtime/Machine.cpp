@@ -338,6 +338,7 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"model", &Controller::model},
     {"kind", &Controller::kind, 0, 0, false, "mill lathe"},
     {"gcode_system", &Controller::gcodeSystem, 0, 0, false, "A B C"},
+    {"start_mode", &Controller::startMode, 0, 0, false, "siemens iso"},
     {"plane", &Controller::plane, 0, 0, false, "G17 G18 G19"},
     {"diameter_programming", &Controller::diameterProgramming},
     {"reset", &Controller::reset, 0, 0, false, kResetGroups},

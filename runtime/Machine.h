@@ -61,6 +61,9 @@ struct Controller {
   std::string model;                 // free text, e.g. "840D sl"
   std::string kind = "mill";         // "mill" or "lathe" (turning G codes, T0101, G18 plane)
   std::string gcodeSystem = "A";     // Fanuc lathe G-code system A, B or C
+  // The mode a Sinumerik program file (.mpf/.spf) starts in (808D MD: ISO as the default mode):
+  // "siemens" (G290) or "iso" (G291). Both modes switch with G290/G291 inside programs.
+  std::string startMode = "siemens";
   bool lathe() const { return kind == "lathe"; }
   std::string plane = "G17";         // start-up plane G17, G18, G19
   bool diameterProgramming = false;  // lathe: X words are diameters

@@ -325,6 +325,10 @@ bool BlockParser::parseStatement(std::string_view kw, const char *at, ParsedBloc
     out.stmt = equalsUpper(kw, "DO") ? StmtKind::Do : StmtKind::End;
     return true;
   }
+  // Fanuc Macro B external output: no device and no file to write to in a run (yet).
+  for (const char *out : {"DPRNT", "BPRNT", "POPEN", "PCLOS"})
+    if (equalsUpper(kw, out))
+      return fail(at, toUpper(kw) + " (Fanuc Macro B data output) is not supported", "unsupported-code");
   return fail(at, "unknown word '" + std::string(kw) + "'", "unknown-code");
 }
 

@@ -8,6 +8,7 @@
 //    point is milliseconds; RS274NGC P is seconds);
 //  - the canned-cycle repeat count is always `L` (Fanuc writes K).
 #pragma once
+#include "frontend/ModeSwitch.h"
 #include "ir/CmdSink.h"
 #include "ir/Diagnostics.h"
 #include "ir/ModeTable.h"
@@ -38,7 +39,12 @@ struct IsoOptions {
   bool lathe = false;                   // machine [controller] kind = "lathe": turning codes, T0101, U/W
   char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental), 'B' or 'C'
   std::vector<std::string> linkedFunctions;  // defined by linked files: calls to them are not searched
+  GuestFactory siemensBlocks;           // G290 … G291: the Sinumerik front end's blocks (null: G290 is an error)
 };
+
+// The ISO-mode blocks of a Sinumerik program (G291 … G290, frontend/ModeSwitch.h), lowered by
+// this front end into the Sinumerik program's function. Calls (M98, G65, G66) are errors there.
+std::unique_ptr<GuestBlocks> isoBlocks(const IsoOptions &opts, Diagnostics &diags);
 
 // Parses the main program file (already in sm) plus the subprograms it calls (same file after
 // the main program, or separate files found in searchDirs) into `out`

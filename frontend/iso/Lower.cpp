@@ -20,7 +20,7 @@ static const char kMoveWords[] = "XYZABCUVW@^";  // words that make a block a mo
 static const char *rs274Meaning(int32_t code10) {
   switch (code10) {
   case 870: return "RS274NGC back boring with I J K";
-  case 160: case 500: case 510: case 511: case 660: case 680: return "not an RS274NGC code";
+  case 160: case 500: case 510: case 511: case 660: case 680: case 2910: return "not an RS274NGC code";
   default: return nullptr;
   }
 }
@@ -429,6 +429,12 @@ bool BlockLowerer::Block::setup() {
       if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
     }
   }
+  if (auto *gi = G(GGroup::WorkOffset); gi && gi->arg == 1 && L.flavour_ == Flavour::Fanuc && !nonModal && bw.has('P')) {
+    // 808D G54 P1…P93 (the extended offsets) and G54 P0 (the external one): ncc's table has G54-G59.
+    L.diags_.error(bw.get('P')->loc, "G54 P (the extended work offsets P1-P93, the external offset P0) is not supported",
+                   "unsupported-code");
+    return false;
+  }
   if (auto *gi = G(GGroup::WorkOffset))
     emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
         .set("index", Expr::number(gi->arg, ir::Type::Int, gloc(GGroup::WorkOffset)));
@@ -752,10 +758,7 @@ bool BlockLowerer::Block::ioCode(const MUse &m) {
 bool BlockLowerer::Block::callsAndReturn() {
   if (auto *m = findM(MKind::Call)) {
     SourceLoc loc = m->word->loc;
-    if (!L.allowCalls) {
-      L.diags_.error(loc, "M98 needs the whole program (not streamable)", "not-streamable");
-      return false;
-    }
+    if (!callAllowed(loc, "M98")) return false;
     if (IsoWord *p = bw.get('P'); p && p->expr) {
       // M98 P#1 / P[expr]: a computed program number, found when the call runs (a number n
       // calls O<n>; the count comes from L only).
@@ -784,10 +787,7 @@ bool BlockLowerer::Block::callsAndReturn() {
     SourceLoc loc = gloc(GGroup::NonModal);
     IsoWord *p = bw.get('P');
     if (p && !(p->expr == nullptr && p->value <= 1)) {
-      if (!L.allowCalls) {
-        L.diags_.error(loc, "G05 needs the whole program (not streamable)", "not-streamable");
-        return false;
-      }
+      if (!callAllowed(loc, "G05")) return false;
       long long prog;
       if (!programNumber(loc, "G05", prog)) return false;
       callOp(loc, prog, bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc), "shared");
@@ -799,10 +799,7 @@ bool BlockLowerer::Block::callsAndReturn() {
   if (macroCall) {
     bool modal = !G(GGroup::NonModal);  // G66: a modal_call, after each following move (docs/IR.md §5.5)
     SourceLoc loc = gloc(modal ? GGroup::MacroModal : GGroup::NonModal);
-    if (!L.allowCalls) {
-      L.diags_.error(loc, fmt::format("{} needs the whole program (not streamable)", macroName()), "not-streamable");
-      return false;
-    }
+    if (!callAllowed(loc, macroName())) return false;
     long long prog;
     if (!programNumber(loc, macroName(), prog)) return false;
     ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);

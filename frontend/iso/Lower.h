@@ -37,7 +37,12 @@ public:
   Lean lowerLean(ParsedBlock &b, CmdSink &sink, bool pending);
 
   std::vector<CallRef> calls;  // every callee referenced, for subprogram resolution
-  bool allowCalls = true;      // false when streaming: M98/G65 are then errors
+  // Set when calls cannot be resolved (a streamed program, the ISO blocks of a Sinumerik
+  // program): M98, G65/G66, G05 P and the contour cycles are then errors saying why.
+  const char *callsRefused = nullptr;
+  const char *callsRefusedRule = "not-streamable";
+  // A mode the other language's blocks set (G290 … G291, frontend/ModeSwitch.h).
+  void followMode(ModeValue m);
 
 private:
   struct Block;  // one block being lowered (Lower.cpp)

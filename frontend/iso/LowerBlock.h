@@ -202,6 +202,12 @@ struct BlockLowerer::Block {
   bool stops();
   bool ioCode(const MUse &m);       // LinuxCNC M62-M68
   bool callsAndReturn();
+  // False, reported, when the lowerer refuses calls (BlockLowerer::callsRefused).
+  bool callAllowed(SourceLoc loc, std::string_view what) {
+    if (!L.callsRefused) return true;
+    L.diags_.error(loc, fmt::format("{} {}", what, L.callsRefused), L.callsRefusedRule);
+    return false;
+  }
   bool finish();         // assignments, unused words
   // The lean path (LowerLean.cpp), after classify().
   bool leanFits() const;

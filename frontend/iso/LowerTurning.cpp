@@ -73,10 +73,7 @@ bool BlockLowerer::Block::turnCycle() {
     bw.used |= Words::bit(c);
     range[i] = (long long)w->value;
   }
-  if (!L.allowCalls) {
-    L.diags_.error(loc, fmt::format("G{} needs the whole program (not streamable)", code), "not-streamable");
-    return false;
-  }
+  if (!callAllowed(loc, fmt::format("G{}", code))) return false;
   emit(OpKind::Contour, loc).set("action", Expr::symbol("begin", loc));
   Op &sec = emit(OpKind::CallSection, loc);
   sec.set("from", Expr::string(fmt::format("N{}", range[0]), loc));

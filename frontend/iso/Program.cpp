@@ -41,18 +41,28 @@ struct Pending {
 class ProgramParser {
 public:
   ProgramParser(SourceManager &sm, const IsoOptions &opts, Diagnostics &diags, ir::Module &m)
-      : sm_(sm), opts_(opts), diags_(diags), module_(m) {}
+      : sm_(sm), opts_(opts), diags_(diags), module_(m), mixed_(Language::Iso, opts.siemensBlocks, opts.blockDeleteMask, diags) {}
 
   // Parses one file. The first section becomes function `firstName` (created when missing).
   bool parseFile(uint32_t fileId, const std::string &firstName);
   bool ok() const { return ok_; }
   std::vector<CallRef> calls;
+  // The functions the Siemens-mode blocks loaded, into the module.
+  bool finishMixed() { return mixed_.finish(module_); }
+  // A called program file in Siemens mode (its first block is PROC): the Sinumerik front end
+  // reads it as function `name`. False when the program has no Siemens mode.
+  bool siemensProgram(uint32_t fileId, const std::string &name, bool &ok) {
+    GuestBlocks *g = mixed_.guest();
+    if (g && !g->program(fileId, name)) ok = false;
+    return g != nullptr;
+  }
 
 private:
   SourceManager &sm_;
   const IsoOptions &opts_;
   Diagnostics &diags_;
   ir::Module &module_;
+  MixedProgram mixed_;  // G290 … G291: Siemens-mode blocks (Fanuc flavour only)
   bool ok_ = true;
 
   // Per-file state.
@@ -373,6 +383,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
   sectionContent_ = ended_ = false;
 
   ParsedBlock b;
+  const std::function<void(ModeValue)> followModes = [&](ModeValue m) { lower.followMode(m); };
   const char *p = text.data(), *end = p + text.size();
   uint32_t lineNo = 0;
   bool afterEnd = false;  // RS274NGC: the main program's M2/M30 has been read
@@ -386,6 +397,10 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
     if (afterEnd && subStack_.empty()) {
       size_t i = line.find_first_not_of(" \t\r");
       if (i == std::string_view::npos || (line[i] != 'o' && line[i] != 'O')) continue;
+    }
+    if (flavour == Flavour::Fanuc && !ended_ && mixed_.take(line, fileId, lineNo, region(), ok_, followModes)) {
+      sectionContent_ = true;
+      continue;
     }
     if (!parser.parse(line, fileId, lineNo, b)) {
       ok_ = false;
@@ -423,6 +438,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
       for (auto &w : b.words)
         if (w.letter == 'M' && !w.expr && (w.value == 2 || w.value == 30)) afterEnd = true;
   }
+  if (!mixed_.endFile({fileId, lineNo, 1})) ok_ = false;
   closeOpen(0);
   if (!subStack_.empty()) {
     error(module_.functions[fn_].loc, "o-word sub without endsub", "loop-mismatch");
@@ -460,6 +476,24 @@ static void collectBlocks(const Region &r, std::set<double> &blocks, std::vector
     }
     for (auto &sub : op.regions) collectBlocks(sub, blocks, gotos);
   }
+}
+
+// The first block of a program file is PROC (comments, `;` lines and `%` headers before it
+// do not count).
+static bool startsWithProc(std::string_view text) {
+  size_t pos = 0;
+  while (pos < text.size()) {
+    size_t nl = text.find('\n', pos);
+    std::string_view line = text.substr(pos, nl == std::string_view::npos ? std::string_view::npos : nl - pos);
+    pos = nl == std::string_view::npos ? text.size() : nl + 1;
+    size_t i = line.find_first_not_of(" \t\r");
+    if (i == std::string_view::npos || line[i] == ';' || line[i] == '%' || line[i] == '(') continue;
+    if (line[i] == 'N' || line[i] == 'n')  // a block number before PROC
+      for (++i; i < line.size() && (std::isdigit((unsigned char)line[i]) || line[i] == ' ');) ++i;
+    std::string_view rest = line.substr(i);
+    return rest.size() > 5 && (rest.substr(0, 5) == "PROC " || rest.substr(0, 5) == "PROC\t");
+  }
+  return false;
 }
 
 static bool checkGotoTargets(const ir::Module &m, Diagnostics &diags) {
@@ -514,8 +548,11 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
       ok = false;
       continue;
     }
+    // 808D: a first block PROC switches the called program to Siemens mode (seed001 L9787-9791).
+    if (startsWithProc(sm.text(fid)) && pp.siemensProgram(fid, c.callee, ok)) continue;
     if (!pp.parseFile(fid, c.callee)) ok = false;
   }
+  ok &= pp.finishMixed();
   for (auto &f : out.functions) ok &= placeContourLabels(f, diags);
   ok &= checkGotoTargets(out, diags);
   return ok && pp.ok();

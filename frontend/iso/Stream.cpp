@@ -71,8 +71,8 @@ static bool needsWholeProgram(const char *&q, const char *le) {
   const bool point = r < le && *r == '.';
   if (k0 == 'M') return v == 98 || v == 99;
   // G65/G66 macro calls, G5 (high-speed cycle call); the lathe contour cycles G70-G73 run a
-  // block range (also G73 of a mill: playing safe).
-  return !point && (v == 65 || v == 66 || v == 5 || (v >= 70 && v <= 73));
+  // block range (also G73 of a mill: playing safe); G290 Siemens-mode blocks.
+  return !point && (v == 65 || v == 66 || v == 5 || (v >= 70 && v <= 73) || v == 290);
 }
 
 // The first byte at or after q that is not ScanClass::Skip (end if none): sixteen bytes at a
@@ -171,7 +171,7 @@ struct IsoBlockStream::Impl {
       : diags(diags), sm(sm), text(sm.text(fileId)), fileId(fileId),
         parser(diags, flavourForFile(sm.name(fileId)), opts.blockDeleteMask, opts.offsetMemory, opts.lathe),
         lower(opts, flavourForFile(sm.name(fileId)), diags) {
-    lower.allowCalls = false;
+    lower.callsRefused = "needs the whole program (not streamable)";
     p = text.data();
     end = p + text.size();
     if (!lower.optionsValid()) {

@@ -301,7 +301,9 @@ bool BlockParser::proc() {
   if (f_.sawStatement)
     return fail(p, "PROC must be the first statement of the program");
   ++i_;
-  if (tok().kind != Tok::Name) return fail(tok(), "expected the subprogram name after PROC");
+  // A name, or (808D macro bodies, seed001 L9816: PROC 0010) the program's number.
+  if (tok().kind != Tok::Name && !(tok().kind == Tok::Number && tok().text.find('.') == std::string::npos))
+    return fail(tok(), "expected the subprogram name after PROC");
   ++i_;
   std::vector<ir::Param> params;
   if (tok().is("(")) {

@@ -180,8 +180,24 @@ static bool frameSys(std::string_view ir) {
   return ir == "_pframe" || ir == "_iframe" || ir == "_actframe" || ir == "_uifr";
 }
 
+// 808D macro arguments (seed001 §2.14.2, ISO-MAC-02): G65/G66 and the M-code macros of an ISO
+// program pass address X as $C_X; ncc's ISO front end passes them into the Fanuc locals of the
+// callee (argument specification I: A #1 … Z #26), so $C_<letter> reads that local and
+// $C_<letter>_PROG says whether the call gave it. The I/J/K arrays (specification II and the
+// _ORDER sets) and the other $C_ variables are not provided.
+static ExprPtr macroArgument(const std::string &name, SourceLoc l) {
+  static const int kNumber[26] = {1, 2, 3, 7, 8, 9, 0, 11, 4, 5, 6, 0, 13, 0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
+  bool prog = name.size() == 8 && name.compare(3, 5, "_PROG") == 0;
+  if (name.rfind("C_", 0) != 0 || (name.size() != 3 && !prog) || !std::isupper((unsigned char)name[2])) return nullptr;
+  char letter = name[2];
+  if (letter == 'I' || letter == 'J' || letter == 'K' || !kNumber[letter - 'A']) return nullptr;
+  ExprPtr v = Expr::var(ir::VarSpace::Numbered, "", Expr::number(kNumber[letter - 'A'], ir::Type::Int, l), l);
+  return prog ? Expr::binary(ir::OpCode::Ne, std::move(v), Expr::vacant(l), l) : std::move(v);
+}
+
 ExprPtr BlockParser::systemVar(const Token &t) {
   std::string name = t.text.substr(1);
+  if (ExprPtr arg = f_.pp.opts.macroArguments ? macroArgument(name, loc(t)) : nullptr) return arg;
   const SysMap *m = findSystemVar(name);
   SourceLoc l = loc(t);
   if (!m) {

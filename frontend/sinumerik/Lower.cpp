@@ -56,10 +56,7 @@ bool BlockParser::lowerWords() {
       ModeGroup grp = modeValueInfo(g.mode).group;
       mode.set(modeGroupName(grp), Expr::symbol(modeValueInfo(g.mode).name));
       mode.loc = l;
-      if (grp == ModeGroup::Plane && g.mode != f_.plane) f_.poleKnown = f_.apKnown = false;  // polar: PGsl
-      if (grp == ModeGroup::Plane) f_.plane = g.mode;
-      if (grp == ModeGroup::Motion) f_.motion = g.mode;
-      if (grp == ModeGroup::Distance) f_.distance = g.mode;
+      f_.followMode(g.mode);
       break;
     }
     case GAct::Pole: pole = &g; break;

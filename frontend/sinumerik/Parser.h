@@ -43,6 +43,10 @@ class FunctionParser {
 public:
   FunctionParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain);
   bool run();  // parses every line; the function goes to pp's module
+  // One source line (a block, a header line, a skipped block) into cur(). False when an error was reported.
+  bool line(std::string_view line, uint32_t lineNo);
+  // A mode the ISO blocks of the program set (G291 … G290): the static modes below follow it.
+  void followMode(ModeValue m);
   ir::Function fn;
 
   // -- shared with the block parser
@@ -64,6 +68,7 @@ public:
   // tokens (SIN-MAC-01). False with an error reported.
   bool macroLine(std::vector<Token> &toks, uint32_t line, bool &defined);
   ir::Region &cur() { return *regions.back(); }
+  std::vector<Token> lineTokens;  // the current line's, reused
 };
 
 class ProgramParser {
@@ -180,6 +185,8 @@ private:
   bool arrayInit(const ir::Expr &target, const VarDecl &d, std::vector<ir::Op> &into, bool atDef);
 };
 
+// True when the text has MCALL (a modal call: blocks may trigger it).
+bool mentionsMcall(std::string_view text);
 // The number of elements of a declared array (1 for a scalar).
 size_t elementCount(const VarDecl &d);
 // Declares the polar coordinates' program-wide state at the start of the main program.

@@ -75,7 +75,7 @@ static void sectionEndLabels(ir::Region &body) {
   place(place, body);
 }
 
-static bool mentionsMcall(std::string_view text) {
+bool mentionsMcall(std::string_view text) {
   std::string up(text);
   for (auto &c : up) c = (char)std::toupper((unsigned char)c);
   return up.find("MCALL") != std::string::npos;
@@ -113,53 +113,54 @@ bool FunctionParser::macroLine(std::vector<Token> &toks, uint32_t line, bool &de
   return true;
 }
 
+bool FunctionParser::line(std::string_view line, uint32_t lineNo) {
+  if (headerLine(line)) return true;
+  // Skip level: `/` or `/0`…`/9` before the block (the Fundamentals manual). Blanked out
+  // in a copy so that columns stay those of the source line.
+  std::string copy(line);
+  if (lineNo == 1 && copy.rfind("\xEF\xBB\xBF", 0) == 0) copy.replace(0, 3, "   ");  // a UTF-8 byte order mark
+  size_t first = copy.find_first_not_of(" \t");
+  if (first != std::string::npos && copy[first] == '/') {
+    int skip = 0;
+    copy[first] = ' ';
+    if (first + 1 < copy.size() && copy[first + 1] >= '0' && copy[first + 1] <= '9') {
+      skip = copy[first + 1] - '0';
+      copy[first + 1] = ' ';
+    }
+    if (pp.opts.blockDeleteMask & (1u << skip)) return true;
+  }
+  std::string err;
+  uint32_t errCol = 0;
+  std::vector<Token> &toks = lineTokens;
+  if (!lexLine(copy, toks, err, errCol)) return pp.error({file, lineNo, errCol}, err);
+  bool def = false;
+  if (toks.size() > 1 && !macroLine(toks, lineNo, def)) return false;
+  if (toks.size() > 1 && !def) {
+    BlockParser bp(*this, toks, lineNo);
+    return bp.parse();
+  }
+  return true;
+}
+
 bool FunctionParser::run() {
   std::string_view text = pp.sm.text(file);
   pp.modalCalls = pp.modalCalls || mentionsMcall(text);
+  // G291 … G290: ISO blocks through the ISO front end (frontend/ModeSwitch.h).
+  MixedProgram mixed(Language::Siemens, pp.opts.isoBlocks, pp.opts.blockDeleteMask, pp.diags);
+  const std::function<void(ModeValue)> follow = [this](ModeValue m) { followMode(m); };
   size_t pos = 0;
   uint32_t lineNo = 0;
   bool ok = true;
-  std::vector<Token> toks;
   while (pos <= text.size()) {
     size_t nl = text.find('\n', pos);
     if (nl == std::string::npos) nl = text.size();
-    std::string_view line(text.data() + pos, nl - pos);
+    std::string_view src(text.data() + pos, nl - pos);
     ++lineNo;
     pos = nl + 1;
-    if (headerLine(line)) {
-      if (nl >= text.size()) break;
-      continue;
-    }
-    // Skip level: `/` or `/0`…`/9` before the block (the Fundamentals manual). Blanked out
-    // in a copy so that columns stay those of the source line.
-    std::string copy(line);
-    if (lineNo == 1 && copy.rfind("\xEF\xBB\xBF", 0) == 0) copy.replace(0, 3, "   ");  // a UTF-8 byte order mark
-    size_t first = copy.find_first_not_of(" \t");
-    if (first != std::string::npos && copy[first] == '/') {
-      int skip = 0;
-      copy[first] = ' ';
-      if (first + 1 < copy.size() && copy[first + 1] >= '0' && copy[first + 1] <= '9') {
-        skip = copy[first + 1] - '0';
-        copy[first + 1] = ' ';
-      }
-      if (pp.opts.blockDeleteMask & (1u << skip)) {
-        if (nl >= text.size()) break;
-        continue;
-      }
-    }
-    std::string err;
-    uint32_t errCol = 0;
-    if (!lexLine(copy, toks, err, errCol)) {
-      pp.error({file, lineNo, errCol}, err);
-      ok = false;
-    } else if (bool def = false; toks.size() > 1 && !macroLine(toks, lineNo, def)) {
-      ok = false;
-    } else if (toks.size() > 1 && !def) {
-      BlockParser bp(*this, toks, lineNo);
-      if (!bp.parse()) ok = false;
-    }
+    if (!mixed.take(src, file, lineNo, cur(), ok, follow) && !line(src, lineNo)) ok = false;
     if (nl >= text.size()) break;
   }
+  if (!mixed.endFile({file, lineNo, 1})) ok = false;
   std::set<std::string> targets;
   std::set<double> blocks;
   collectTargets(fn.body, targets, blocks);

@@ -72,6 +72,7 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.startup = machine.controller.startup;
   fo.lathe = machine.controller.lathe();
   fo.latheSystem = machine.controller.gcodeSystem.empty() ? 'A' : machine.controller.gcodeSystem[0];
+  fo.startMode = machine.controller.startMode;
   for (unsigned l : opts.blockDelete)
     if (l <= 9) fo.blockDeleteMask |= 1u << l;
   fo.searchDirs.push_back(std::filesystem::path(sm.name(file)).parent_path().string());
