@@ -90,6 +90,8 @@ static const LintRule kRules[] = {
      "compensation with a tool radius in G19 on a linuxcnc-family machine (rs274 compensates in XY and XZ only)"},
     {"unknown-tool", Severity::Error, "executor",
      "T, H or D number neither in the machine's tool table nor within its `free_tools` (a machine without a tool table accepts every number), or an H/D number not in its `offset_numbers`; a D that is not a whole number"},
+    {"not-simulated", Severity::Error, "executor",
+     "a machine-specific construct the front end parsed and checked but ncc does not simulate (Sinumerik synchronized actions, channel coordination, interrupts, axis exchange, couplings, oscillation): `ncc run` stops at its block; `ncc lint` notes it and goes on"},
     {"abort", Severity::Error, "executor",
      "LinuxCNC `(ABORT,…)` ran: the run stops with the substituted text"},
     {"polar-with-xy", Severity::Error, "executor",

@@ -162,8 +162,8 @@ ExprPtr BlockParser::indexList(std::vector<ExprPtr> &out, bool axisOk) {
   if (!expect("[")) return nullptr;
   do {
     const Token &t = tok();
-    if (axisOk && t.kind == Tok::Name && findAddress(t.text) && findAddress(t.text)->kind == Addr::Axis &&
-        (peek().is(",") || peek().is("]"))) {
+    bool axisName = machineCtx_ || (findAddress(t.text) && findAddress(t.text)->kind == Addr::Axis);
+    if ((axisOk || machineCtx_) && t.kind == Tok::Name && axisName && (peek().is(",") || peek().is("]"))) {
       out.push_back(Expr::symbol(t.text, loc(t)));
       ++i_;
       continue;
@@ -184,6 +184,7 @@ ExprPtr BlockParser::systemVar(const Token &t) {
   std::string name = t.text.substr(1);
   const SysMap *m = findSystemVar(name);
   SourceLoc l = loc(t);
+  if (!m && machineCtx_) return machineValue();
   if (!m) {
     fail(t, fmt::format("system variable '${}' is not provided by ncc", name), "unsupported-code");
     return nullptr;
@@ -224,6 +225,7 @@ ExprPtr BlockParser::systemVar(const Token &t) {
 ExprPtr BlockParser::function(const Token &t) {
   SourceLoc l = loc(t);
   const FnMap *fm = findFunction(t.text);
+  if (!fm && machineCtx_) return machineValue();
   if (!fm) {
     fail(t, fmt::format("function '{}' is not supported", t.text), "unsupported-code");
     return nullptr;
@@ -266,6 +268,24 @@ ExprPtr BlockParser::function(const Token &t) {
   return Expr::call(fm->irName, std::move(args), l);
 }
 
+// In a machine-specific construct (MachineOnly.cpp) a system variable, function or name ncc does
+// not provide (`$AA_IM[X]`, `CTAB(…)`, an axis or program name) is read for its syntax only: its
+// indices or arguments, then a REAL placeholder (the construct is never run).
+ExprPtr BlockParser::machineValue() {
+  SourceLoc l = loc(t_[i_ - 1]);
+  std::vector<ExprPtr> args;
+  if (tok().is("[") && !indexList(args, true)) return nullptr;
+  if (tok().is("(")) {
+    ++i_;
+    if (!tok().is(")")) do {
+        if (tok().is(",")) continue;
+        if (!expr(0)) return nullptr;
+      } while (tok().is(",") && (++i_, true));
+    if (!expect(")")) return nullptr;
+  }
+  return Expr::number(0, ir::Type::Real, l);
+}
+
 ExprPtr BlockParser::variable(const Token &t) {
   SourceLoc l = loc(t);
   auto it = f_.vars.find(t.text);
@@ -300,6 +320,10 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   SourceLoc l = loc(t);
   if (t.text == "TRUE" || t.text == "FALSE") return Expr::boolean(t.text == "TRUE", l);
   if (t.text[0] == '$') return systemVar(t);
+  if (machineCtx_ && isSyncKeyword(t.text)) {  // WHEN R1 > DO: the operand is missing
+    fail(t, fmt::format("expected an expression, found '{}'", t.text));
+    return nullptr;
+  }
   if (tok().is("(") ) return function(t);
   if (f_.vars.count(t.text)) return variable(t);
   if (t.text == "R" && tok().is("[")) {
@@ -310,6 +334,7 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   }
   if (t.text[0] == 'R' && t.digitsAt == 1 && !t.fraction)
     return Expr::var(ir::VarSpace::RParam, "R", Expr::number(t.num, ir::Type::Int, l), l);
+  if (machineCtx_) return machineValue();
   // Frame component names read as themselves (F[X, TR]); they are checked by variable().
   static const char *kComponents[] = {"TR", "FI", "RT", "SC", "MI"};
   for (const char *c : kComponents)

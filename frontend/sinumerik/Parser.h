@@ -158,6 +158,13 @@ private:
   bool repeatStatement(bool single);
   bool frameStatement(const GInfo &g, const Token &at);
   bool closeCtl(Ctl want, const char *name, const Token &at);
+  // Machine-specific constructs (MachineOnly.cpp): parsed, checked and lowered to a
+  // not_simulated message. False when `kw` is none.
+  bool machineConstruct(const std::string &kw);
+  bool syncAction();
+  bool machineItems(bool inSync);
+  bool machineCtx_ = false;  // inside one: unknown names, $ variables and functions parse as placeholders
+  ir::ExprPtr machineValue();
   void openCtl(Ctl kind, ir::Op op, SourceLoc l);
   bool lowerWords();
   Word *findWord(std::string_view addr);
@@ -180,6 +187,8 @@ private:
   bool arrayInit(const ir::Expr &target, const VarDecl &d, std::vector<ir::Op> &into, bool atDef);
 };
 
+// WHEN WHENEVER FROM EVERY DO ELSE: the words that structure a synchronized action.
+bool isSyncKeyword(const std::string &name);
 // The number of elements of a declared array (1 for a scalar).
 size_t elementCount(const VarDecl &d);
 // Declares the polar coordinates' program-wide state at the start of the main program.

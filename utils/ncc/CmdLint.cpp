@@ -55,6 +55,7 @@ bool Session::lint(uint32_t file) {
   runLint(m, diags, ctx);
   NullSink sink;
   Executor exec(machine, sink, diags);
+  exec.setLintRun(true);
   KeepGoingSink es(exec);
   Evaluator ev(es, diags, opts.limits);
   exec.finish(ev.run(m));
