@@ -1,7 +1,8 @@
 #include "ir/Builtins.h"
 #include "ir/FrameBuiltins.h"
 #include "ir/Arith.h"
-#include "ir/Strings.h"
+#include "ir/StrArgs.h"
+#include "ir/FileCommands.h"
 #include "ir/SystemParams.h"
 #include "ir/Value.h"
 
@@ -76,40 +77,6 @@ double ncc_builtin_tolge(const double *a) { return num(a[0]) > num(a[1]) || tolE
 // ---------------------------------------------------------------- string builtins
 // Positions are 0-based and -1 means "not found" (Sinumerik INDEX/RINDEX/MINDEX/MATCH/SUBSTR).
 namespace {
-struct StrArgs {
-  ValuePool &pool;
-  const double *a;
-  unsigned n;
-  std::string &error;
-  const char *fn;
-  bool str(unsigned i, std::string_view &out) {
-    if (!isString(a[i])) {
-      error = fmt::format("'{}' argument {} must be a string", fn, i + 1);
-      return false;
-    }
-    out = pool.text(a[i]);
-    return true;
-  }
-  bool chr(unsigned i, char &out) {
-    std::string_view s;
-    if (!str(i, s)) return false;
-    if (s.size() != 1) {
-      error = fmt::format("'{}' argument {} must be a one-character string", fn, i + 1);
-      return false;
-    }
-    out = s[0];
-    return true;
-  }
-  bool number(unsigned i, double &out) {
-    if (isString(a[i])) {
-      error = fmt::format("'{}' argument {} must be a number", fn, i + 1);
-      return false;
-    }
-    out = num(a[i]);
-    return true;
-  }
-  bool ret(std::string_view s, double &out) { return pool.intern(s, out, error); }
-};
 double position(size_t p) { return p == std::string_view::npos ? -1.0 : (double)p; }
 }  // namespace
 
@@ -257,6 +224,15 @@ static const BuiltinInfo kBuiltins[] = {
     {"TOSTR", 1, nullptr, nullptr, strTostr, "a", 's'},
     {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
     {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
+    // File builtins (ir/FileCommands.h): the Sinumerik command name first.
+    {"FILE_WRITE", 3, nullptr, nullptr, fileWrite, "sss", 'n'},
+    {"FILE_DELETE", 2, nullptr, nullptr, fileDelete, "ss", 'n'},
+    {"FILE_EXISTS", 2, nullptr, nullptr, fileExists, "ss", 'n'},
+    {"FILE_STATUS", 2, nullptr, nullptr, fileStatus, "ss", 'n'},
+    {"FILE_INFO", 3, nullptr, nullptr, fileInfo, "sss", 's'},
+    {"FILE_SIZE", 2, nullptr, nullptr, fileSize, "ss", 'n'},
+    {"FILE_READ_STATUS", 5, nullptr, nullptr, fileReadStatus, "ssnnn", 'n'},
+    {"FILE_LINE", 6, nullptr, nullptr, fileLine, "ssnnnn", 's'},
     // Frame builtins (ir/FrameBuiltins.h): argument kinds 's' (an axis or component name), 'n',
     // 'f' (a frame); result 'f'.
     // The builders take 0 pairs too: CTRANS() is the identity (Sinumerik's empty TRANS).

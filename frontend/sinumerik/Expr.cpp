@@ -253,6 +253,8 @@ ExprPtr BlockParser::function(const Token &t) {
     }
     args.push_back(Expr::number(2, ir::Type::Int, l));
   }
+  if (std::string_view(fm->irName).substr(0, 5) == "FILE_")  // ISFILE: the file builtins name their command
+    args.insert(args.begin(), Expr::string(t.text, l));
   if (t.text == "CMIRROR")  // CMIRROR(X, Y): only axis names
     for (auto &a : args)
       if (a->kind != ir::ExprKind::String) {

@@ -163,7 +163,9 @@ private:
   bool machineConstruct(const std::string &kw);
   bool syncAction();
   bool machineItems(bool inSync);
-  bool machineCtx_ = false;  // inside one: unknown names, $ variables and functions parse as placeholders
+  bool machineCtx_ = false;
+  // WRITE DELETE READ FILEDATE … (Files.cpp): false when `kw` is none.
+  bool fileCommand(const std::string &kw);  // inside one: unknown names, $ variables and functions parse as placeholders
   ir::ExprPtr machineValue();
   void openCtl(Ctl kind, ir::Op op, SourceLoc l);
   bool lowerWords();
