@@ -3,6 +3,7 @@
 #include "ir/Arith.h"
 #include "ir/StrArgs.h"
 #include "ir/FileCommands.h"
+#include "ir/Sprint.h"
 #include "ir/SystemParams.h"
 #include "ir/Value.h"
 
@@ -224,6 +225,7 @@ static const BuiltinInfo kBuiltins[] = {
     {"TOSTR", 1, nullptr, nullptr, strTostr, "a", 's'},
     {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
     {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
+    {"SPRINT", 12, nullptr, nullptr, strSprint, "saaaaaaaaaaa", 's', 1},
     // File builtins (ir/FileCommands.h): the Sinumerik command name first.
     {"FILE_WRITE", 3, nullptr, nullptr, fileWrite, "sss", 'n'},
     {"FILE_DELETE", 2, nullptr, nullptr, fileDelete, "ss", 'n'},

@@ -158,6 +158,7 @@ static const FnMap kFns[] = {
     {"TOLOWER", "TOLOWER", false}, {"NUMBER", "NUMBER", false},   {"ISNUMBER", "ISNUMBER", false},
     {"CTRANS", "CTRANS", true},    {"CFINE", "CFINE", true},      {"CROT", "CROT", true},
     {"CSCALE", "CSCALE", true},    {"CMIRROR", "CMIRROR", true},  {"INVFRAME", "INVFRAME", false},
+    {"SPRINT", "SPRINT", false},
     {"ISFILE", "FILE_EXISTS", false},  // the command's name goes first (ir/FileCommands.h)
 };
 
