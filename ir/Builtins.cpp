@@ -123,6 +123,41 @@ NCC_STRFN(strSubstr) {
   size_t count = n > 2 && len < (double)s.size() ? (size_t)len : std::string_view::npos;
   return a.ret(s.substr(from, count), out);
 }
+// s[i] (Sinumerik character access, L3870-L3893): the index 0 … length-1 of the string as it is.
+static bool charIndex(StrArgs &a, std::string_view s, double &i) {
+  if (!a.number(1, i)) return false;
+  if (i < 0 || i != std::trunc(i) || i >= (double)s.size()) {
+    a.error = fmt::format("character index {} is outside the string of {} characters", numberText(i), s.size());
+    return false;
+  }
+  return true;
+}
+NCC_STRFN(strCharAt) {
+  StrArgs a{pool, args, n, error, "CHAR_AT"};
+  std::string_view s;
+  double i;
+  if (!a.str(0, s) || !charIndex(a, s, i)) return false;
+  return a.ret(s.substr((size_t)i, 1), out);
+}
+// s[i] = c: the string with character i replaced; the character 0 (the number 0 or "") ends the
+// string there (L3543-L3555).
+NCC_STRFN(strSetChar) {
+  StrArgs a{pool, args, n, error, "CHAR_SET"};
+  std::string_view s;
+  double i;
+  if (!a.str(0, s) || !charIndex(a, s, i)) return false;
+  std::string r(s);
+  std::string_view c = isString(args[2]) ? pool.text(args[2]) : std::string_view();
+  double code = isString(args[2]) ? (c.empty() ? 0 : -1) : num(args[2]);
+  if (code == 0) r.resize((size_t)i);
+  else if (c.size() == 1) r[(size_t)i] = c[0];
+  else if (code >= 1 && code <= 255 && code == std::trunc(code)) r[(size_t)i] = (char)(int)code;
+  else {
+    error = "a character of a string takes a CHAR (one character) or a code 0…255";
+    return false;
+  }
+  return a.ret(r, out);
+}
 static bool changeCase(StrArgs a, int (*f)(int), double &out) {
   std::string_view s;
   if (!a.str(0, s)) return false;
@@ -218,6 +253,8 @@ static const BuiltinInfo kBuiltins[] = {
     {"MINDEX", 2, nullptr, nullptr, strMindex, "ss", 'n'},
     {"MATCH", 2, nullptr, nullptr, strMatch, "ss", 'n'},
     {"SUBSTR", 3, nullptr, nullptr, strSubstr, "snn", 's', 2},
+    {"CHAR_AT", 2, nullptr, nullptr, strCharAt, "sn", 's'},
+    {"CHAR_SET", 3, nullptr, nullptr, strSetChar, "sna", 's'},
     {"TOUPPER", 1, nullptr, nullptr, strToupper, "s", 's'},
     {"TOLOWER", 1, nullptr, nullptr, strTolower, "s", 's'},
     {"NUMBER", 1, nullptr, nullptr, strNumber, "s", 'n'},

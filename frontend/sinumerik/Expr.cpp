@@ -294,14 +294,17 @@ ExprPtr BlockParser::variable(const Token &t) {
   if (it == f_.vars.end()) return nullptr;
   const VarDecl &d = it->second;
   auto v = Expr::var(d.global ? ir::VarSpace::Global : ir::VarSpace::Local, t.text, nullptr, l);
-  if (tok().is("[") && d.dims.empty() && d.type == ir::Type::String) {
-    fail(tok(), fmt::format("character access {}[i] is not supported", t.text), "unsupported-code");
-    return nullptr;
-  }
   if (tok().is("[")) {
     std::vector<ExprPtr> idx;
     bool frameComp = d.type == ir::Type::Frame && d.dims.empty();
     if (!indexList(idx, frameComp)) return nullptr;
+    if (d.type == ir::Type::String && !d.isChar && idx.size() == d.dims.size() + 1) {
+      // S[i], S[k, i]: one character of the string (CHAR_AT; written through CHAR_SET).
+      ExprPtr i = std::move(idx.back());
+      idx.pop_back();
+      v->args = std::move(idx);
+      return callOf("CHAR_AT", l, std::move(v), std::move(i));
+    }
     if (frameComp) {  // F[X, TR]: a component of a frame variable
       if (idx.size() != 2 || idx[0]->kind != ir::ExprKind::Symbol || idx[1]->kind != ir::ExprKind::Var) {
         fail(t, fmt::format("a frame component is written {}[axis, TR|FI|RT|SC|MI]", t.text));
