@@ -202,6 +202,20 @@ NCC_STRFN(strIsnumber) {
   return true;
 }
 // TOSTR(x): the text of any value (Sinumerik unary <<): numbers as numberText.
+// AXNAME(s): the axis of that name (an AXIS holds its name); an error for a name that is no
+// axis of ncc's channel (X Y Z A B C U V W), as the control's alarm for an unconfigured one.
+NCC_STRFN(strAxname) {
+  StrArgs a{pool, args, n, error, "AXNAME"};
+  std::string_view s;
+  if (!a.str(0, s)) return false;
+  std::string up(s);
+  for (char &c : up) c = (char)std::toupper((unsigned char)c);
+  static const char *kAxes[] = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"};
+  for (const char *ax : kAxes)
+    if (up == ax) return a.ret(up, out);
+  error = fmt::format("'AXNAME': \"{}\" is not an axis (X Y Z A B C U V W)", s);
+  return false;
+}
 NCC_STRFN(strTostr) { return StrArgs{pool, args, n, error, "TOSTR"}.ret(valueText(pool, args[0]), out); }
 // CHR(code): the one-character string of a code 1..255 ("" for 0); ORD(s): the code of the
 // first character of s, 0 for "".
@@ -260,6 +274,7 @@ static const BuiltinInfo kBuiltins[] = {
     {"NUMBER", 1, nullptr, nullptr, strNumber, "s", 'n'},
     {"ISNUMBER", 1, nullptr, nullptr, strIsnumber, "s", 'n'},
     {"TOSTR", 1, nullptr, nullptr, strTostr, "a", 's'},
+    {"AXNAME", 1, nullptr, nullptr, strAxname, "s", 's'},
     {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
     {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
     {"SPRINT", 12, nullptr, nullptr, strSprint, "saaaaaaaaaaa", 's', 1},

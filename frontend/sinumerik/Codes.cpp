@@ -159,6 +159,7 @@ static const FnMap kFns[] = {
     {"CTRANS", "CTRANS", true},    {"CFINE", "CFINE", true},      {"CROT", "CROT", true},
     {"CSCALE", "CSCALE", true},    {"CMIRROR", "CMIRROR", true},  {"INVFRAME", "INVFRAME", false},
     {"SPRINT", "SPRINT", false},
+    {"AXNAME", "AXNAME", false},   {"AXSTRING", "TOSTR", false},  // an AXIS holds its name
     {"ISFILE", "FILE_EXISTS", false},  // the command's name goes first (ir/FileCommands.h)
 };
 

@@ -340,6 +340,9 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   if (t.text[0] == 'R' && t.digitsAt == 1 && !t.fraction)
     return Expr::var(ir::VarSpace::RParam, "R", Expr::number(t.num, ir::Type::Int, l), l);
   if (machineCtx_) return machineValue();
+  // An axis name as a value (`AA = X`, `DEF AXIS AA = (X)`, L1356): its name, what an AXIS holds.
+  if (const AddrInfo *a = findAddress(t.text); a && a->kind == Addr::Axis && t.digitsAt == t.text.size())
+    return Expr::string(t.text, l);
   // Frame component names read as themselves (F[X, TR]); they are checked by variable().
   static const char *kComponents[] = {"TR", "FI", "RT", "SC", "MI"};
   for (const char *c : kComponents)
