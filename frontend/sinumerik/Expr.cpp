@@ -224,6 +224,7 @@ ExprPtr BlockParser::systemVar(const Token &t) {
 
 ExprPtr BlockParser::function(const Token &t) {
   SourceLoc l = loc(t);
+  if (t.text == "ISVAR" && !machineCtx_) return isvar(t);
   const FnMap *fm = findFunction(t.text);
   if (!fm && machineCtx_) return machineValue();
   if (!fm) {
