@@ -49,6 +49,17 @@ const MachineConstruct kConstructs[] = {
     {"MEAS", kMeasuring},    {"MEAW", kMeasuring},     {"MEASA", kMeasuring},    {"MEAWA", kMeasuring},
 };
 
+// G codes of the operator table that belong to machine functions (by G group): a block with one
+// is kept and stops a run like the constructs above. The repositioning modes (groups 26, 62) only
+// say how a REPOS re-approaches, so alone they change nothing that ncc runs.
+struct MachineGroup {
+  int group;
+  const char *what;  // null: accepted, no effect without the REPOS it parametrizes
+};
+const MachineGroup kMachineGroups[] = {
+    {35, "punching and nibbling"}, {36, "punching and nibbling"}, {26, nullptr}, {62, nullptr},
+};
+
 // The keywords that open a synchronized action's condition.
 const char *const kSyncConditions[] = {"WHEN", "WHENEVER", "FROM", "EVERY"};
 bool isSyncCondition(const std::string &s) {
@@ -82,6 +93,21 @@ bool BlockParser::machineConstruct(const std::string &kw) {
   if (!ok) return true;  // the error is reported (failed_)
   ir::Op m(ir::OpKind::Message, loc(at));
   m.set("text", ir::Expr::string(fmt::format("'{}' ({}) is not simulated", name, mc->what)));
+  m.set("kind", ir::Expr::symbol("not_simulated"));
+  pre_.push_back(std::move(m));
+  return true;
+}
+
+bool BlockParser::machineGCode(const GInfo &g, const Token &at) {
+  const char *what = nullptr;
+  bool known = false;
+  for (auto &m : kMachineGroups)
+    if (g.code->group == m.group) what = m.what, known = true;
+  if (std::string_view(g.code->name).substr(0, 5) == "REPOS") what = "repositioning after an interrupt", known = true;
+  if (!known) return false;
+  if (!what) return true;
+  ir::Op m(ir::OpKind::Message, loc(at));
+  m.set("text", ir::Expr::string(fmt::format("'{}' ({}: {}) is not simulated", g.code->name, what, g.code->meaning)));
   m.set("kind", ir::Expr::symbol("not_simulated"));
   pre_.push_back(std::move(m));
   return true;

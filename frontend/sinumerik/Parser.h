@@ -163,6 +163,8 @@ private:
   bool machineConstruct(const std::string &kw);
   bool syncAction();
   bool machineItems(bool inSync);
+  // A G code of a machine function (punching, repositioning): true when it is one (consumed).
+  bool machineGCode(const GInfo &g, const Token &at);
   bool machineCtx_ = false;
   // WRITE DELETE READ FILEDATE … (Files.cpp): false when `kw` is none.
   bool fileCommand(const std::string &kw);  // inside one: unknown names, $ variables and functions parse as placeholders

@@ -112,6 +112,7 @@ bool BlockParser::gcode(const std::string &name, const Token &at) {
     if (o.first.code->group == g.code->group && o.first.code->group != 2 && o.first.code->group != 3)
       return fail(at, fmt::format("{} and {} are both of G group {}", o.first.code->name, name, g.code->group),
                   "modal-group-conflict");
+  if (g.act == GAct::Unsupported && machineGCode(g, at)) return true;  // MachineOnly.cpp
   if (g.act == GAct::Unsupported)
     return fail(at, fmt::format("{} ({}) is not simulated", name, g.code->meaning), "unsupported-code");
   if (g.act == GAct::Units && g.arg == 2)
