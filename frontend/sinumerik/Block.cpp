@@ -195,11 +195,11 @@ bool BlockParser::keyword(const std::string &kw) {
     ++i_;
     return true;
   }
-  if (kw == "RET" && peek().is("("))  // RET(target, …) jumps in the caller (SIN-SUB-13)
+  if (kw == "RET" && peek().is("(") && !peek(2).is(")"))  // RET(target, …) jumps in the caller (SIN-SUB-13)
     return fail(t, "RET(…) with a jump target is not simulated", "unsupported-code");
-  if (kw == "RET") {
+  if (kw == "RET") {  // RET, RET(): back to the caller
     post_.push_back(Op(OpKind::Return, l));
-    ++i_;
+    i_ += peek().is("(") ? 3 : 1;
     return true;
   }
   if (kw == "SETAL" && peek().is("(")) {
