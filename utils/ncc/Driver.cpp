@@ -6,7 +6,6 @@
 #include "passes/Pass.h"
 #include "runtime/Executor.h"
 #include "runtime/ProbeResults.h"
-#include "ir/FileCommands.h"
 
 #include <fmt/format.h>
 
@@ -24,7 +23,6 @@ void addCommonOptions(po::options_description &desc, CommonOptions &o) {
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")
       ("include,I", po::value(&o.includeDirs), "folder with subprogram files (after the program's own folder; repeatable)")
-      ("sandbox", po::value(&o.sandbox), "the folder Sinumerik file commands (WRITE, READ, DELETE, ISFILE, FILEINFO …) may use; without it they are errors")
       ("link", po::value(&o.linkFiles), "a program or library (any dialect, read by its own front end) whose functions the program may call (repeatable)")
       ("no-cache", po::bool_switch(&o.noCache), "--engine=jit: neither use nor fill the compiled-object cache (docs/JIT.md)")
       ("cache-stats", po::bool_switch(&o.cacheStats), "--engine=jit: report the compiled-object cache's hit or miss on stderr");
@@ -38,15 +36,7 @@ bool Session::setUp() {
     diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));
     return false;
   }
-  if (!opts.sandbox.empty()) {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(opts.sandbox, ec)) {
-      diags.error({}, fmt::format("--sandbox '{}' is not a folder", opts.sandbox), "options");
-      return false;
-    }
-    setFileSandbox(opts.sandbox);
-  }
-  return true;
+  return applySandbox(opts, diags);
 }
 
 bool Session::loadMachine(const std::string &nameOrPath, Machine &out) {

@@ -27,7 +27,6 @@ struct CommonOptions : RunTimeOptions {
   std::string decimalMode;  // empty = the machine's
   std::vector<unsigned> blockDelete;
   std::vector<std::string> includeDirs;  // subprogram files, searched after the program's folder
-  std::string sandbox;                   // --sandbox: the folder of Sinumerik file commands (ir/FileCommands.h)
   std::vector<std::string> linkFiles;    // programs/libraries linked in, each read by its own front end
   bool noCache = false;     // --engine=jit: compile every time (utils/ncc/JitCache.h)
   bool cacheStats = false;  // --engine=jit: say on stderr whether the compiled-object cache hit
