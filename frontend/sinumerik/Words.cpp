@@ -83,8 +83,25 @@ bool BlockParser::addressWord() {
   } else if (t.isName("PO") && peek().is("(")) {  // PO(…): the denominator
     ++i_;
     return polyTerm("", t);
+  } else if (t.isName("AX") && peek().is("[")) {  // AX[X]=10, AX[AXNAME("X")]=10 (SIN-IND-02)
+    i_ += 2;
+    ExprPtr ax = expr(0);
+    if (!ax || !expect("]") || !expect("=")) return false;
+    if (ax->kind == ir::ExprKind::Call && ax->str == "AXNAME" && ax->args.size() == 1 &&
+        ax->args[0]->kind == ir::ExprKind::String)
+      ax = std::move(ax->args[0]);
+    std::string name = ax->kind == ir::ExprKind::String ? ax->str : "";
+    for (auto &c : name) c = (char)std::toupper((unsigned char)c);
+    const AddrInfo *axis = findAddress(name);
+    if (ax->kind != ir::ExprKind::String)
+      return fail(t, "AX[…] with an axis known only at run time (an AXIS variable) is not simulated", "unsupported-code");
+    if (!axis || axis->kind != Addr::Axis)
+      return fail(t, fmt::format("AX[\"{}\"]: not an axis (X Y Z A B C U V W)", ax->str));
+    w.addr = name;
+    w.value = expr(0);
+    if (!w.value) return false;
   } else if (peek().is("[")) {
-    // G[8]=2, AX[AXVAR]=10, S[SPINU]=300: indirect addresses (SIN-IND-01…03).
+    // G[8]=2, S[SPINU]=300: indirect addresses (SIN-IND-01, -03).
     return fail(t, fmt::format("the indexed address {}[…] is not simulated", t.text), "unsupported-code");
   } else {
     return callStatement(false);  // a subprogram called by its name
