@@ -93,7 +93,7 @@ static const LintRule kRules[] = {
     {"not-simulated", Severity::Error, "executor",
      "a machine-specific construct the front end parsed and checked but ncc does not simulate (Sinumerik synchronized actions, channel coordination, interrupts, axis exchange, couplings, oscillation): `ncc run` stops at its block; `ncc lint` notes it and goes on"},
     {"abort", Severity::Error, "executor",
-     "LinuxCNC `(ABORT,…)` ran: the run stops with the substituted text"},
+     "LinuxCNC `(ABORT,…)` or Sinumerik `SETAL(n)` ran: the run stops with the substituted text (`alarm n`)"},
     {"polar-with-xy", Severity::Error, "executor",
      "X or Y in a block with RS274NGC polar `@`/`^` (rs274's message)"},
     {"unknown-axis", Severity::Error, "executor",

@@ -204,11 +204,21 @@ bool BlockParser::keyword(const std::string &kw) {
   }
   if (kw == "SETAL" && peek().is("(")) {
     // SETAL(n): a cycle alarm stops the program (its text is the alarm number).
+    // SETAL(n, "text"): the text goes with the number.
     i_ += 2;
     ExprPtr n = expr(0);
-    if (!n || !expect(")")) return false;
+    if (!n) return false;
+    ExprPtr text = Expr::binary(ir::OpCode::Concat, Expr::string("alarm ", l), callOf("TOSTR", l, std::move(n)), l);
+    if (tok().is(",")) {
+      ++i_;
+      ExprPtr s = expr(0);
+      if (!s) return false;
+      text = Expr::binary(ir::OpCode::Concat, Expr::binary(ir::OpCode::Concat, std::move(text), Expr::string(": ", l), l),
+                          callOf("TOSTR", l, std::move(s)), l);
+    }
+    if (!expect(")")) return false;
     Op m(OpKind::Message, l);
-    m.set("text", Expr::binary(ir::OpCode::Concat, Expr::string("alarm ", l), callOf("TOSTR", l, std::move(n)), l));
+    m.set("text", std::move(text));
     m.set("kind", Expr::symbol("abort"));
     post_.push_back(std::move(m));
     return true;
