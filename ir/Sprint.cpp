@@ -63,6 +63,7 @@ bool strSprint(ValuePool &pool, const double *args, unsigned n, double &out, std
     if (next >= n) return fail(fmt::format("no value for the format descriptor %{}", d));
     double v = args[next++];
     bool str = isString(v);
+    if (!str && isHandle(v)) return fail("a FRAME cannot be formatted: format its components (L4316)");
     std::string_view s = str ? pool.text(v) : std::string_view();
     double x = num(v);
     switch (d) {
