@@ -85,7 +85,10 @@ public:
   // error at `loc` naming the paths tried) when it cannot be found.
   // A standard cycle without a subprogram of its name that the cycle library has: null without an
   // error, its entry in *libCycle.
-  const Signature *callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle = nullptr);
+  // `type` "MPF"/"SPF": the call named the file type (`name` is then _N_NAME_TYPE), only that
+  // one is looked for.
+  const Signature *callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle = nullptr,
+                          const std::string &type = {});
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
     diags.error(loc, std::move(msg), rule);
     ok = false;
@@ -194,6 +197,10 @@ private:
 
 // WHEN WHENEVER FROM EVERY DO ELSE: the words that structure a synchronized action.
 bool isSyncKeyword(const std::string &name);
+// The program a call names: `/_N_WKS_DIR/_N_P_WPD/_N_TEIL1_SPF`, `_N_TEIL1_SPF` and `TEIL1` are
+// TEIL1 (upper case; the folders are not kept: the search path decides, L6885-L6897), with its
+// type ("MPF", "SPF") in `type` when the name gives it.
+std::string calledProgram(const std::string &written, std::string &type);
 // The number of elements of a declared array (1 for a scalar).
 size_t elementCount(const VarDecl &d);
 // Declares the polar coordinates' program-wide state at the start of the main program.

@@ -198,22 +198,22 @@ bool BlockParser::callStatement(bool modal) {
     return true;
   }
   const Token &t = tok();
-  std::string name;
+  std::string name, type;
   if (viaCall) {
     ExprPtr e = expr(0);
     if (!e) return false;
     if (e->kind != ir::ExprKind::String) return fail(t, "CALL with a computed name is not supported", "unsupported-code");
-    name = e->str;
-    for (auto &ch : name) ch = (char)std::toupper((unsigned char)ch);
+    name = calledProgram(e->str, type);
   } else {
     if (t.kind != Tok::Name) return fail(t, "expected a subprogram name");
-    name = t.text;
+    name = t.text[0] == '_' ? calledProgram(t.text, type) : t.text;
     ++i_;
   }
+  if (!type.empty()) name = "_N_" + name + "_" + type;  // the key of a call that named its file type
   if (name.size() < 2 || name[0] == '$')
     return fail(t, fmt::format("unknown address or name '{}'", name), "unknown-code");
   CycleSignature lib;
-  const Signature *sig = f_.pp.callee(name, loc(t), &lib);
+  const Signature *sig = f_.pp.callee(name, loc(t), &lib, type);
   if (!sig && lib.name) return libraryCycle(modal, name, lib, t);
   if (!sig) {
     failed_ = true;
