@@ -34,7 +34,7 @@ const MachineConstruct kConstructs[] = {
     {"SETINT", kInterrupt},  {"CLRINT", kInterrupt},   {"ENABLE", kInterrupt},   {"DISABLE", kInterrupt},
     {"PRIO", kInterrupt},    {"BLSYNC", kInterrupt},   {"LIFTFAST", kInterrupt}, {"ALF", kInterrupt},
     {"RELEASE", kAxisExchange}, {"GET", kAxisExchange}, {"GETD", kAxisExchange}, {"AXTOCHAN", kAxisExchange},
-    {"NEWCONF", kAxisExchange}, {"WAITAXIS", kAxisExchange},
+    {"NEWCONF", kAxisExchange},
     {"TRAILON", kCoupling},  {"TRAILOF", kCoupling},   {"LEADON", kCoupling},    {"LEADOF", kCoupling},
     {"CTABDEF", kCoupling},  {"CTABEND", kCoupling},   {"CTABDEL", kCoupling},   {"EGDEF", kCoupling},
     {"EGON", kCoupling},     {"EGONSYN", kCoupling},   {"EGONSYNE", kCoupling},  {"EGOFS", kCoupling},
