@@ -13,6 +13,9 @@ class ValuePool;
 // The sandbox folder for the run (the process): empty = none.
 void setFileSandbox(std::string dir);
 const std::string &fileSandbox();
+// ncc lint's run: WRITE and DELETE touch nothing (and report 0); without a sandbox the other
+// commands find no folder (code 2, ISFILE false) instead of stopping the run.
+void setFileLintMode(bool on);
 
 // The builtins (first argument: the Sinumerik command, for error texts):
 //   FILE_WRITE(cmd, file, text)      -> error code; appends text and a line feed
