@@ -210,6 +210,8 @@ bool BlockParser::callStatement(bool modal) {
     ++i_;
   }
   if (!type.empty()) name = "_N_" + name + "_" + type;  // the key of a call that named its file type
+  if (viaCall && tok().isName("BLOCK"))  // CALL "P" BLOCK A TO B: a section of another program (SIN-CAL-06)
+    return fail(tok(), "CALL … BLOCK … TO … (a section of another program) is not simulated", "unsupported-code");
   if (name.size() < 2 || name[0] == '$')
     return fail(t, fmt::format("unknown address or name '{}'", name), "unknown-code");
   CycleSignature lib;
