@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -51,12 +52,19 @@ bool strSprint(ValuePool &pool, const double *args, unsigned n, double &out, std
     }
     size_t at = i++;
     int width = 0, precision = -1;
-    while (i < format.size() && std::isdigit((unsigned char)format[i])) width = width * 10 + (format[i++] - '0');
+    // A width or precision beyond the result's 400 bytes cannot fit: stop counting there.
+    auto digits = [&](int &v) {
+      while (i < format.size() && std::isdigit((unsigned char)format[i]))
+        v = std::min(v * 10 + (format[i++] - '0'), (int)kMaxSprintBytes + 1);
+    };
+    digits(width);
     if (i < format.size() && format[i] == '.') {
       precision = 0;
       ++i;
-      while (i < format.size() && std::isdigit((unsigned char)format[i])) precision = precision * 10 + (format[i++] - '0');
+      digits(precision);
     }
+    if (width > (int)kMaxSprintBytes || precision > (int)kMaxSprintBytes)
+      return fail(fmt::format("the width or precision of the descriptor at {} exceeds the result's {} bytes", at, kMaxSprintBytes));
     if (i >= format.size()) return fail(fmt::format("the format descriptor at {} has no letter", at));
     char d = (char)std::toupper((unsigned char)format[i]);
     if (d == 'P') return fail("%P (punched-tape and binary numbers, MD10750/MD10751) is not supported");
