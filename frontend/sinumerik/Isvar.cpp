@@ -28,7 +28,7 @@ bool splitName(const std::string &text, std::string &name, std::vector<long> &sl
     part.erase(part.find_last_not_of(' ') + 1);
     if (part.empty()) slots.push_back(-1);
     else if (part.find_first_not_of("0123456789") != std::string::npos) slots.push_back(-2);  // an axis name
-    else slots.push_back(std::stol(part));
+    else slots.push_back(part.size() > 9 ? 1000000000L : std::stol(part));  // past any dimension (<= 65535)
     if (c == std::string::npos) break;
     a = c + 1;
   }
