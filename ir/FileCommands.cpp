@@ -199,6 +199,7 @@ bool fileReadStatus(ValuePool &pool, const double *args, unsigned n, double &out
   FileArgs a(pool, args, n, error, "FILE_READ_STATUS");
   double start, count, elements;
   if (!a.open() || !a.number(2, start) || !a.number(3, count) || !a.number(4, elements)) return false;
+  start = std::round(start), count = std::round(count);  // INT parameters (L6560): REAL rounds
   if (int r = readable(a.path)) return out = r, true;
   double total = (double)lines(a.path).size();
   if (count > elements) out = kResultTooShort;
@@ -213,6 +214,7 @@ bool fileLine(ValuePool &pool, const double *args, unsigned n, double &out, std:
   FileArgs a(pool, args, n, error, "FILE_LINE");
   double start, count, k, length;
   if (!a.open() || !a.number(2, start) || !a.number(3, count) || !a.number(4, k) || !a.number(5, length)) return false;
+  start = std::round(start), count = std::round(count);
   std::vector<std::string> all = lines(a.path);
   double i = start == 0 ? (double)all.size() - count + k : start - 1 + k;
   if (i < 0 || i >= (double)all.size()) return a.ret("", out);
