@@ -1,7 +1,9 @@
 #include "ir/Builtins.h"
 #include "ir/FrameBuiltins.h"
 #include "ir/Arith.h"
-#include "ir/Strings.h"
+#include "ir/StrArgs.h"
+#include "ir/FileCommands.h"
+#include "ir/Sprint.h"
 #include "ir/SystemParams.h"
 #include "ir/Value.h"
 
@@ -76,40 +78,6 @@ double ncc_builtin_tolge(const double *a) { return num(a[0]) > num(a[1]) || tolE
 // ---------------------------------------------------------------- string builtins
 // Positions are 0-based and -1 means "not found" (Sinumerik INDEX/RINDEX/MINDEX/MATCH/SUBSTR).
 namespace {
-struct StrArgs {
-  ValuePool &pool;
-  const double *a;
-  unsigned n;
-  std::string &error;
-  const char *fn;
-  bool str(unsigned i, std::string_view &out) {
-    if (!isString(a[i])) {
-      error = fmt::format("'{}' argument {} must be a string", fn, i + 1);
-      return false;
-    }
-    out = pool.text(a[i]);
-    return true;
-  }
-  bool chr(unsigned i, char &out) {
-    std::string_view s;
-    if (!str(i, s)) return false;
-    if (s.size() != 1) {
-      error = fmt::format("'{}' argument {} must be a one-character string", fn, i + 1);
-      return false;
-    }
-    out = s[0];
-    return true;
-  }
-  bool number(unsigned i, double &out) {
-    if (isString(a[i])) {
-      error = fmt::format("'{}' argument {} must be a number", fn, i + 1);
-      return false;
-    }
-    out = num(a[i]);
-    return true;
-  }
-  bool ret(std::string_view s, double &out) { return pool.intern(s, out, error); }
-};
 double position(size_t p) { return p == std::string_view::npos ? -1.0 : (double)p; }
 }  // namespace
 
@@ -155,6 +123,41 @@ NCC_STRFN(strSubstr) {
   size_t count = n > 2 && len < (double)s.size() ? (size_t)len : std::string_view::npos;
   return a.ret(s.substr(from, count), out);
 }
+// s[i] (Sinumerik character access, L3870-L3893): the index 0 … length-1 of the string as it is.
+static bool charIndex(StrArgs &a, std::string_view s, double &i) {
+  if (!a.number(1, i)) return false;
+  if (i < 0 || i != std::trunc(i) || i >= (double)s.size()) {
+    a.error = fmt::format("character index {} is outside the string of {} characters", numberText(i), s.size());
+    return false;
+  }
+  return true;
+}
+NCC_STRFN(strCharAt) {
+  StrArgs a{pool, args, n, error, "CHAR_AT"};
+  std::string_view s;
+  double i;
+  if (!a.str(0, s) || !charIndex(a, s, i)) return false;
+  return a.ret(s.substr((size_t)i, 1), out);
+}
+// s[i] = c: the string with character i replaced; the character 0 (the number 0 or "") ends the
+// string there (L3543-L3555).
+NCC_STRFN(strSetChar) {
+  StrArgs a{pool, args, n, error, "CHAR_SET"};
+  std::string_view s;
+  double i;
+  if (!a.str(0, s) || !charIndex(a, s, i)) return false;
+  std::string r(s);
+  std::string_view c = isString(args[2]) ? pool.text(args[2]) : std::string_view();
+  double code = isString(args[2]) ? (c.empty() ? 0 : -1) : num(args[2]);
+  if (code == 0) r.resize((size_t)i);
+  else if (c.size() == 1) r[(size_t)i] = c[0];
+  else if (code >= 1 && code <= 255 && code == std::trunc(code)) r[(size_t)i] = (char)(int)code;
+  else {
+    error = "a character of a string takes a CHAR (one character) or a code 0…255";
+    return false;
+  }
+  return a.ret(r, out);
+}
 static bool changeCase(StrArgs a, int (*f)(int), double &out) {
   std::string_view s;
   if (!a.str(0, s)) return false;
@@ -199,6 +202,20 @@ NCC_STRFN(strIsnumber) {
   return true;
 }
 // TOSTR(x): the text of any value (Sinumerik unary <<): numbers as numberText.
+// AXNAME(s): the axis of that name (an AXIS holds its name); an error for a name that is no
+// axis of ncc's channel (X Y Z A B C U V W), as the control's alarm for an unconfigured one.
+NCC_STRFN(strAxname) {
+  StrArgs a{pool, args, n, error, "AXNAME"};
+  std::string_view s;
+  if (!a.str(0, s)) return false;
+  std::string up(s);
+  for (char &c : up) c = (char)std::toupper((unsigned char)c);
+  static const char *kAxes[] = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"};
+  for (const char *ax : kAxes)
+    if (up == ax) return a.ret(up, out);
+  error = fmt::format("'AXNAME': \"{}\" is not an axis (X Y Z A B C U V W)", s);
+  return false;
+}
 NCC_STRFN(strTostr) { return StrArgs{pool, args, n, error, "TOSTR"}.ret(valueText(pool, args[0]), out); }
 // CHR(code): the one-character string of a code 1..255 ("" for 0); ORD(s): the code of the
 // first character of s, 0 for "".
@@ -250,13 +267,26 @@ static const BuiltinInfo kBuiltins[] = {
     {"MINDEX", 2, nullptr, nullptr, strMindex, "ss", 'n'},
     {"MATCH", 2, nullptr, nullptr, strMatch, "ss", 'n'},
     {"SUBSTR", 3, nullptr, nullptr, strSubstr, "snn", 's', 2},
+    {"CHAR_AT", 2, nullptr, nullptr, strCharAt, "sn", 's'},
+    {"CHAR_SET", 3, nullptr, nullptr, strSetChar, "sna", 's'},
     {"TOUPPER", 1, nullptr, nullptr, strToupper, "s", 's'},
     {"TOLOWER", 1, nullptr, nullptr, strTolower, "s", 's'},
     {"NUMBER", 1, nullptr, nullptr, strNumber, "s", 'n'},
     {"ISNUMBER", 1, nullptr, nullptr, strIsnumber, "s", 'n'},
     {"TOSTR", 1, nullptr, nullptr, strTostr, "a", 's'},
+    {"AXNAME", 1, nullptr, nullptr, strAxname, "s", 's'},
     {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
     {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
+    {"SPRINT", 12, nullptr, nullptr, strSprint, "saaaaaaaaaaa", 's', 1},
+    // File builtins (ir/FileCommands.h): the Sinumerik command name first.
+    {"FILE_WRITE", 3, nullptr, nullptr, fileWrite, "sss", 'n'},
+    {"FILE_DELETE", 2, nullptr, nullptr, fileDelete, "ss", 'n'},
+    {"FILE_EXISTS", 2, nullptr, nullptr, fileExists, "ss", 'n'},
+    {"FILE_STATUS", 2, nullptr, nullptr, fileStatus, "ss", 'n'},
+    {"FILE_INFO", 3, nullptr, nullptr, fileInfo, "sss", 's'},
+    {"FILE_SIZE", 2, nullptr, nullptr, fileSize, "ss", 'n'},
+    {"FILE_READ_STATUS", 5, nullptr, nullptr, fileReadStatus, "ssnnn", 'n'},
+    {"FILE_LINE", 6, nullptr, nullptr, fileLine, "ssnnnn", 's'},
     // Frame builtins (ir/FrameBuiltins.h): argument kinds 's' (an axis or component name), 'n',
     // 'f' (a frame); result 'f'.
     // The builders take 0 pairs too: CTRANS() is the identity (Sinumerik's empty TRANS).

@@ -88,7 +88,10 @@ enum class CmdKind : uint8_t {
 enum class StopKind : uint8_t { Program, Optional, End, EndRewind };
 // Operator message (Sinumerik MSG, Fanuc #3006, LinuxCNC MSG) or LinuxCNC's DEBUG (to the trace),
 // PRINT (to stderr) and ABORT (stops the run). Numbers in DEBUG/PRINT/ABORT texts print "%f".
-enum class MessageKind : uint8_t { Msg, Debug, Print, Abort };
+// NotSimulated: a machine-specific construct the front end parsed and checked but ncc does not
+// simulate (a Sinumerik synchronized action, channel coordination …): a run stops there with
+// its text (rule not-simulated), lint notes it and goes on.
+enum class MessageKind : uint8_t { Msg, Debug, Print, Abort, NotSimulated };
 // G92.2 zeroes the G92 offsets but keeps them for G92.3 to restore; G28.1/G30.1 store the
 // current position as reference point 1/2.
 // G52 in RS274NGC sets the G92 offsets of the named axes (LinuxCNC keeps both in one register).

@@ -32,6 +32,7 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::Message, "kind", "debug", (uint8_t)MessageKind::Debug},
     {OpKind::Message, "kind", "print", (uint8_t)MessageKind::Print},
     {OpKind::Message, "kind", "abort", (uint8_t)MessageKind::Abort},
+    {OpKind::Message, "kind", "not_simulated", (uint8_t)MessageKind::NotSimulated},
     {OpKind::Stop, "kind", "program", (uint8_t)StopKind::Program},
     {OpKind::Stop, "kind", "optional", (uint8_t)StopKind::Optional},
     {OpKind::Stop, "kind", "end", (uint8_t)StopKind::End},

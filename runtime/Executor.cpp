@@ -579,6 +579,8 @@ Executor::Executor(const Machine &machine, MotionSink &sink, Diagnostics &diags)
 
 Executor::~Executor() { delete impl_; }
 
+void Executor::setLintRun(bool on) { impl_->lintRun = on; }
+
 uint64_t Executor::blockCount() const { return impl_->blocks; }
 
 const ModalState &Executor::state() const { return impl_->st; }
@@ -629,6 +631,11 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::Message:
     if (c.sub == (uint8_t)MessageKind::Abort)  // LinuxCNC (ABORT,…): the run stops here
       return x.error(c.text ? c.text : "", "abort");
+    if (c.sub == (uint8_t)MessageKind::NotSimulated) {  // a run stops; lint goes on past it
+      if (!x.lintRun) return x.error(c.text ? c.text : "", "not-simulated");
+      x.diags.note(x.loc, std::string(c.text ? c.text : "") + ": ncc run stops here", "not-simulated");
+      return true;
+    }
     if (c.sub == (uint8_t)MessageKind::Print) {  // LinuxCNC (PRINT,…): to stderr, not the trace
       std::fprintf(stderr, "%s\n", c.text ? c.text : "");
       return true;

@@ -52,6 +52,9 @@ public:
   // Flushes pending state at program end; returns false on error. ranToEnd: the program ran
   // to its end (not stopped by an error), so a missing M2/M30 is worth a warning.
   bool finish(bool ranToEnd = true);
+  // ncc lint's run: constructs that are not simulated (message kind=not_simulated) are noted and
+  // passed over instead of stopping the run.
+  void setLintRun(bool on);
   // Runs a cycle of the library (runtime/cycles/Library.h) at the current position: `cycle`
   // alone, or the position pattern `pattern` with `cycle` at each position. Errors go to diags
   // at `loc`.

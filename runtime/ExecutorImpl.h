@@ -66,6 +66,7 @@ public:
 uint32_t resetGroupMask(const std::vector<std::string> &groups);
 
 struct Executor::Impl {
+  bool lintRun = false;  // Executor::setLintRun
   Impl(const Machine &m, MotionSink &s, Diagnostics &d)
       : route(s), machine(m), sink(route), diags(d), compOut(route), comp(compOut) {
     g5x = m.workOffsets;

@@ -195,20 +195,30 @@ bool BlockParser::keyword(const std::string &kw) {
     ++i_;
     return true;
   }
-  if (kw == "RET" && peek().is("("))  // RET(target, …) jumps in the caller (SIN-SUB-13)
+  if (kw == "RET" && peek().is("(") && !peek(2).is(")"))  // RET(target, …) jumps in the caller (SIN-SUB-13)
     return fail(t, "RET(…) with a jump target is not simulated", "unsupported-code");
-  if (kw == "RET") {
+  if (kw == "RET") {  // RET, RET(): back to the caller
     post_.push_back(Op(OpKind::Return, l));
-    ++i_;
+    i_ += peek().is("(") ? 3 : 1;
     return true;
   }
   if (kw == "SETAL" && peek().is("(")) {
     // SETAL(n): a cycle alarm stops the program (its text is the alarm number).
+    // SETAL(n, "text"): the text goes with the number.
     i_ += 2;
     ExprPtr n = expr(0);
-    if (!n || !expect(")")) return false;
+    if (!n) return false;
+    ExprPtr text = Expr::binary(ir::OpCode::Concat, Expr::string("alarm ", l), callOf("TOSTR", l, std::move(n)), l);
+    if (tok().is(",")) {
+      ++i_;
+      ExprPtr s = expr(0);
+      if (!s) return false;
+      text = Expr::binary(ir::OpCode::Concat, Expr::binary(ir::OpCode::Concat, std::move(text), Expr::string(": ", l), l),
+                          callOf("TOSTR", l, std::move(s)), l);
+    }
+    if (!expect(")")) return false;
     Op m(OpKind::Message, l);
-    m.set("text", Expr::binary(ir::OpCode::Concat, Expr::string("alarm ", l), callOf("TOSTR", l, std::move(n)), l));
+    m.set("text", std::move(text));
     m.set("kind", Expr::symbol("abort"));
     post_.push_back(std::move(m));
     return true;
@@ -241,18 +251,15 @@ bool BlockParser::keyword(const std::string &kw) {
     while (!atEnd()) ++i_;
     return true;
   }
-  // Machine-only constructs: parsed by name, never silently skipped.
-  static const char *kNotSimulated[] = {
-      "WHEN",    "WHENEVER", "EVERY", "ID",      "IDS",      "DO",      "INIT",     "START",    "WAITM",
-      "WAITMC",  "WAITE",    "SETM",  "CLEARM",  "SETINT",   "CLRINT",  "DISABLE",  "ENABLE",   "PRIO",
-      "BLSYNC",  "LIFTFAST", "ALF",   "RELEASE", "GET",      "GETD",    "AXTOCHAN", "NEWCONF",  "WRITE",
-      "READ",    "DELETE",   "EXECSTRING", "EXECTAB", "REDEF", "PCALL",    "ISOCALL",  "CALLPATH",
-      "EXTCALL", "GOTOS", "RETB",    "SPOS",     "SPOSA",   "WAITS",    "TRAORI",   "TRANSMIT",
-      "TRACYL",  "MEAS",     "MEAW",  "G291"};
-  for (const char *c : kNotSimulated)
+  if (fileCommand(kw)) return true;       // Files.cpp
+  if (machineConstruct(kw)) return true;  // MachineOnly.cpp
+  // Language constructs ncc does not have yet: refused by name, never silently skipped.
+  static const char *kNotYet[] = {"EXECSTRING", "EXECTAB",  "REDEF",
+                                  "PCALL",   "ISOCALL", "CALLPATH", "EXTCALL",  "GOTOS",   "RETB",
+                                  "TRAORI",  "TRANSMIT", "TRACYL", "G291"};
+  for (const char *c : kNotYet)
     if (kw == c)
-      return fail(t, fmt::format("'{}' is not simulated (machine-only or not yet supported construct)", kw),
-                  "unsupported-code");
+      return fail(t, fmt::format("'{}' is not simulated (not yet supported construct)", kw), "unsupported-code");
   return false;
 }
 

@@ -158,6 +158,9 @@ static const FnMap kFns[] = {
     {"TOLOWER", "TOLOWER", false}, {"NUMBER", "NUMBER", false},   {"ISNUMBER", "ISNUMBER", false},
     {"CTRANS", "CTRANS", true},    {"CFINE", "CFINE", true},      {"CROT", "CROT", true},
     {"CSCALE", "CSCALE", true},    {"CMIRROR", "CMIRROR", true},  {"INVFRAME", "INVFRAME", false},
+    {"SPRINT", "SPRINT", false},
+    {"AXNAME", "AXNAME", false},   {"AXSTRING", "TOSTR", false},  // an AXIS holds its name
+    {"ISFILE", "FILE_EXISTS", false},  // the command's name goes first (ir/FileCommands.h)
 };
 
 const FnMap *findFunction(std::string_view name) {

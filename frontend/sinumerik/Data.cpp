@@ -250,7 +250,7 @@ bool BlockParser::assignment() {
   ExprPtr target = t.text[0] == '$' ? systemVar(t) : f_.vars.count(t.text) ? variable(t) : nameExpr(t);
   // F[X, TR] = v, $P_PFRAME[X, TR] = v: the frame with one component replaced (FRAME_SET).
   ExprPtr comp;
-  if (target && target->kind == ir::ExprKind::Call && target->str == "FRAME_GET") {
+  if (target && target->kind == ir::ExprKind::Call && (target->str == "FRAME_GET" || target->str == "CHAR_AT")) {
     comp = std::move(target);
     target = std::move(comp->args[0]);
   }
@@ -283,13 +283,12 @@ bool BlockParser::assignment() {
   }
   ExprPtr v = assignValue(*target);
   if (!v) return false;
-  if (comp) {
+  if (comp) {  // F[X, TR] = v: FRAME_SET(F, "X", "TR", v); S[i] = c: CHAR_SET(S, i, c)
     std::vector<ExprPtr> a;
     a.push_back(target->clone());
-    a.push_back(std::move(comp->args[1]));
-    a.push_back(std::move(comp->args[2]));
+    for (size_t k = 1; k < comp->args.size(); ++k) a.push_back(std::move(comp->args[k]));
     a.push_back(std::move(v));
-    v = Expr::call("FRAME_SET", std::move(a), l);
+    v = Expr::call(comp->str == "CHAR_AT" ? "CHAR_SET" : "FRAME_SET", std::move(a), l);
   }
   pre_.push_back(assignOp(std::move(target), std::move(v), l));
   return true;

@@ -162,8 +162,8 @@ ExprPtr BlockParser::indexList(std::vector<ExprPtr> &out, bool axisOk) {
   if (!expect("[")) return nullptr;
   do {
     const Token &t = tok();
-    if (axisOk && t.kind == Tok::Name && findAddress(t.text) && findAddress(t.text)->kind == Addr::Axis &&
-        (peek().is(",") || peek().is("]"))) {
+    bool axisName = machineCtx_ || (findAddress(t.text) && findAddress(t.text)->kind == Addr::Axis);
+    if ((axisOk || machineCtx_) && t.kind == Tok::Name && axisName && (peek().is(",") || peek().is("]"))) {
       out.push_back(Expr::symbol(t.text, loc(t)));
       ++i_;
       continue;
@@ -200,6 +200,7 @@ ExprPtr BlockParser::systemVar(const Token &t) {
   if (ExprPtr arg = f_.pp.opts.macroArguments ? macroArgument(name, loc(t)) : nullptr) return arg;
   const SysMap *m = findSystemVar(name);
   SourceLoc l = loc(t);
+  if (!m && machineCtx_) return machineValue();
   if (!m) {
     fail(t, fmt::format("system variable '${}' is not provided by ncc", name), "unsupported-code");
     return nullptr;
@@ -239,7 +240,9 @@ ExprPtr BlockParser::systemVar(const Token &t) {
 
 ExprPtr BlockParser::function(const Token &t) {
   SourceLoc l = loc(t);
+  if (t.text == "ISVAR" && !machineCtx_) return isvar(t);
   const FnMap *fm = findFunction(t.text);
+  if (!fm && machineCtx_) return machineValue();
   if (!fm) {
     fail(t, fmt::format("function '{}' is not supported", t.text), "unsupported-code");
     return nullptr;
@@ -267,6 +270,8 @@ ExprPtr BlockParser::function(const Token &t) {
     }
     args.push_back(Expr::number(2, ir::Type::Int, l));
   }
+  if (std::string_view(fm->irName).substr(0, 5) == "FILE_")  // ISFILE: the file builtins name their command
+    args.insert(args.begin(), Expr::string(t.text, l));
   if (t.text == "CMIRROR")  // CMIRROR(X, Y): only axis names
     for (auto &a : args)
       if (a->kind != ir::ExprKind::String) {
@@ -282,20 +287,41 @@ ExprPtr BlockParser::function(const Token &t) {
   return Expr::call(fm->irName, std::move(args), l);
 }
 
+// In a machine-specific construct (MachineOnly.cpp) a system variable, function or name ncc does
+// not provide (`$AA_IM[X]`, `CTAB(…)`, an axis or program name) is read for its syntax only: its
+// indices or arguments, then a REAL placeholder (the construct is never run).
+ExprPtr BlockParser::machineValue() {
+  SourceLoc l = loc(t_[i_ - 1]);
+  std::vector<ExprPtr> args;
+  if (tok().is("[") && !indexList(args, true)) return nullptr;
+  if (tok().is("(")) {
+    ++i_;
+    if (!tok().is(")")) do {
+        if (tok().is(",")) continue;
+        if (!expr(0)) return nullptr;
+      } while (tok().is(",") && (++i_, true));
+    if (!expect(")")) return nullptr;
+  }
+  return Expr::number(0, ir::Type::Real, l);
+}
+
 ExprPtr BlockParser::variable(const Token &t) {
   SourceLoc l = loc(t);
   auto it = f_.vars.find(t.text);
   if (it == f_.vars.end()) return nullptr;
   const VarDecl &d = it->second;
   auto v = Expr::var(d.global ? ir::VarSpace::Global : ir::VarSpace::Local, t.text, nullptr, l);
-  if (tok().is("[") && d.dims.empty() && d.type == ir::Type::String) {
-    fail(tok(), fmt::format("character access {}[i] is not supported", t.text), "unsupported-code");
-    return nullptr;
-  }
   if (tok().is("[")) {
     std::vector<ExprPtr> idx;
     bool frameComp = d.type == ir::Type::Frame && d.dims.empty();
     if (!indexList(idx, frameComp)) return nullptr;
+    if (d.type == ir::Type::String && !d.isChar && idx.size() == d.dims.size() + 1) {
+      // S[i], S[k, i]: one character of the string (CHAR_AT; written through CHAR_SET).
+      ExprPtr i = std::move(idx.back());
+      idx.pop_back();
+      v->args = std::move(idx);
+      return callOf("CHAR_AT", l, std::move(v), std::move(i));
+    }
     if (frameComp) {  // F[X, TR]: a component of a frame variable
       if (idx.size() != 2 || idx[0]->kind != ir::ExprKind::Symbol || idx[1]->kind != ir::ExprKind::Var) {
         fail(t, fmt::format("a frame component is written {}[axis, TR|FI|RT|SC|MI]", t.text));
@@ -316,6 +342,10 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   SourceLoc l = loc(t);
   if (t.text == "TRUE" || t.text == "FALSE") return Expr::boolean(t.text == "TRUE", l);
   if (t.text[0] == '$') return systemVar(t);
+  if (machineCtx_ && isSyncKeyword(t.text)) {  // WHEN R1 > DO: the operand is missing
+    fail(t, fmt::format("expected an expression, found '{}'", t.text));
+    return nullptr;
+  }
   if (tok().is("(") ) return function(t);
   if (f_.vars.count(t.text)) return variable(t);
   if (t.text == "R" && tok().is("[")) {
@@ -326,6 +356,10 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   }
   if (t.text[0] == 'R' && t.digitsAt == 1 && !t.fraction)
     return Expr::var(ir::VarSpace::RParam, "R", Expr::number(t.num, ir::Type::Int, l), l);
+  if (machineCtx_) return machineValue();
+  // An axis name as a value (`AA = X`, `DEF AXIS AA = (X)`, L1356): its name, what an AXIS holds.
+  if (const AddrInfo *a = findAddress(t.text); a && a->kind == Addr::Axis && t.digitsAt == t.text.size())
+    return Expr::string(t.text, l);
   // Frame component names read as themselves (F[X, TR]); they are checked by variable().
   static const char *kComponents[] = {"TR", "FI", "RT", "SC", "MI"};
   for (const char *c : kComponents)

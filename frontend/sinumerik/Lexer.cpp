@@ -88,6 +88,7 @@ bool lexLine(std::string_view s, std::vector<Token> &out, std::string &err, uint
     space = false;
     if (nameStart(c)) {
       size_t j = i + 1;
+      if (c == '$' && j < n && s[j] == '$') ++j;  // $$M…: main-run access to machine data (one name)
       while (j < n && nameChar(s[j])) ++j;
       std::string text(s.substr(i, j - i));
       for (auto &ch : text) ch = (char)std::toupper((unsigned char)ch);

@@ -90,7 +90,10 @@ public:
   // error at `loc` naming the paths tried) when it cannot be found.
   // A standard cycle without a subprogram of its name that the cycle library has: null without an
   // error, its entry in *libCycle.
-  const Signature *callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle = nullptr);
+  // `type` "MPF"/"SPF": the call named the file type (`name` is then _N_NAME_TYPE), only that
+  // one is looked for.
+  const Signature *callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle = nullptr,
+                          const std::string &type = {});
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
     diags.error(loc, std::move(msg), rule);
     ok = false;
@@ -163,6 +166,17 @@ private:
   bool repeatStatement(bool single);
   bool frameStatement(const GInfo &g, const Token &at);
   bool closeCtl(Ctl want, const char *name, const Token &at);
+  // Machine-specific constructs (MachineOnly.cpp): parsed, checked and lowered to a
+  // not_simulated message. False when `kw` is none.
+  bool machineConstruct(const std::string &kw);
+  bool syncAction();
+  bool machineItems(bool inSync);
+  // A G code of a machine function (punching, repositioning): true when it is one (consumed).
+  bool machineGCode(const GInfo &g, const Token &at);
+  bool machineCtx_ = false;
+  // WRITE DELETE READ FILEDATE … (Files.cpp): false when `kw` is none.
+  bool fileCommand(const std::string &kw);  // inside one: unknown names, $ variables and functions parse as placeholders
+  ir::ExprPtr machineValue();
   void openCtl(Ctl kind, ir::Op op, SourceLoc l);
   bool lowerWords();
   Word *findWord(std::string_view addr);
@@ -177,6 +191,7 @@ private:
   ir::ExprPtr variable(const Token &t);  // a declared variable, its element or frame component
   ir::ExprPtr systemVar(const Token &t);
   ir::ExprPtr function(const Token &t);
+  ir::ExprPtr isvar(const Token &t);  // Isvar.cpp
   ir::ExprPtr indexList(std::vector<ir::ExprPtr> &out, bool axisOk);
   ir::ExprPtr comparison(ir::OpCode op, ir::ExprPtr a, ir::ExprPtr b, SourceLoc l);
   bool stringy(const ir::Expr &e) const;
@@ -187,6 +202,12 @@ private:
 
 // True when the text has MCALL (a modal call: blocks may trigger it).
 bool mentionsMcall(std::string_view text);
+// WHEN WHENEVER FROM EVERY DO ELSE: the words that structure a synchronized action.
+bool isSyncKeyword(const std::string &name);
+// The program a call names: `/_N_WKS_DIR/_N_P_WPD/_N_TEIL1_SPF`, `_N_TEIL1_SPF` and `TEIL1` are
+// TEIL1 (upper case; the folders are not kept: the search path decides, L6885-L6897), with its
+// type ("MPF", "SPF") in `type` when the name gives it.
+std::string calledProgram(const std::string &written, std::string &type);
 // The number of elements of a declared array (1 for a scalar).
 size_t elementCount(const VarDecl &d);
 // Declares the polar coordinates' program-wide state at the start of the main program.

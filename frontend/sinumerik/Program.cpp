@@ -175,16 +175,35 @@ bool FunctionParser::run() {
   return ok;
 }
 
-// Files a called name may be in (L6859-L6898: the control adds _N_ and _SPF / _MPF).
-static std::vector<std::string> candidateFiles(const std::string &name) {
+// Files a called name may be in (L6859-L6898: the control adds _N_ and _SPF / _MPF); `type`
+// "MPF" or "SPF" when the call named it, which then is the only one looked for.
+static std::vector<std::string> candidateFiles(const std::string &name, const std::string &type) {
   std::string lower = name;
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return (char)std::tolower(c); });
   std::vector<std::string> out;
-  for (const std::string &n : {name, lower})
-    for (const char *ext : {".MPF", ".mpf", ".SPF", ".spf"}) out.push_back(n + ext);  // MPF first (L8307)
-  out.push_back("_N_" + name + "_MPF");
-  out.push_back("_N_" + name + "_SPF");
+  for (const char *t : {"MPF", "SPF"}) {  // MPF first (L8307)
+    if (!type.empty() && type != t) continue;
+    std::string upper = t, low = lower.empty() ? "" : t;
+    std::transform(low.begin(), low.end(), low.begin(), [](unsigned char c) { return (char)std::tolower(c); });
+    out.push_back(name + "." + upper);
+    out.push_back(lower + "." + low);
+    out.push_back("_N_" + name + "_" + upper);
+  }
   return out;
+}
+
+std::string calledProgram(const std::string &written, std::string &type) {
+  std::string name = written.substr(written.rfind('/') == std::string::npos ? 0 : written.rfind('/') + 1);
+  for (auto &c : name) c = (char)std::toupper((unsigned char)c);
+  type.clear();
+  if (name.size() > 7 && name.compare(0, 3, "_N_") == 0) {
+    std::string t = name.substr(name.size() - 4);
+    if (t == "_MPF" || t == "_SPF") {
+      type = t.substr(1);
+      name = name.substr(3, name.size() - 7);
+    }
+  }
+  return name;
 }
 
 // The names of the Siemens standard cycles (CYCLE81, POCKET3, HOLES1 …).
@@ -199,18 +218,21 @@ static bool siemensCycle(const std::string &name) {
   return false;
 }
 
-const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle) {
+const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle,
+                                       const std::string &type) {
   auto it = procs.find(name);
   if (it != procs.end()) return &it->second;
   if (std::find(opts.linkedFunctions.begin(), opts.linkedFunctions.end(), name) != opts.linkedFunctions.end()) {
     procs[name].ready = true;  // a linked file defines it; its parameters are passed by position there
     return &procs[name];
   }
-  uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(name), true);
-  if (!fid && siemensCycle(name)) {
+  // A call that named the type is kept apart (_N_TEIL1_SPF) from one that did not (TEIL1: MPF first).
+  std::string base = type.empty() ? name : name.substr(3, name.size() - 7);
+  uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(base, type), true);
+  if (!fid && siemensCycle(base)) {
     // A standard cycle without a user subprogram of that name (which would override it): the
     // cycle library's entry.
-    if (libCycle && opts.cycles && opts.cycles("sin." + name, *libCycle)) return nullptr;
+    if (libCycle && opts.cycles && opts.cycles("sin." + base, *libCycle)) return nullptr;
     if (!missing.count(name))
       error(loc, fmt::format("{} is a Siemens standard cycle the cycle library does not have yet (no {}.SPF in {}; "
                              "`ncc cycle --list` shows the library)",

@@ -83,8 +83,25 @@ bool BlockParser::addressWord() {
   } else if (t.isName("PO") && peek().is("(")) {  // PO(…): the denominator
     ++i_;
     return polyTerm("", t);
+  } else if (t.isName("AX") && peek().is("[")) {  // AX[X]=10, AX[AXNAME("X")]=10 (SIN-IND-02)
+    i_ += 2;
+    ExprPtr ax = expr(0);
+    if (!ax || !expect("]") || !expect("=")) return false;
+    if (ax->kind == ir::ExprKind::Call && ax->str == "AXNAME" && ax->args.size() == 1 &&
+        ax->args[0]->kind == ir::ExprKind::String)
+      ax = std::move(ax->args[0]);
+    std::string name = ax->kind == ir::ExprKind::String ? ax->str : "";
+    for (auto &c : name) c = (char)std::toupper((unsigned char)c);
+    const AddrInfo *axis = findAddress(name);
+    if (ax->kind != ir::ExprKind::String)
+      return fail(t, "AX[…] with an axis known only at run time (an AXIS variable) is not simulated", "unsupported-code");
+    if (!axis || axis->kind != Addr::Axis)
+      return fail(t, fmt::format("AX[\"{}\"]: not an axis (X Y Z A B C U V W)", ax->str));
+    w.addr = name;
+    w.value = expr(0);
+    if (!w.value) return false;
   } else if (peek().is("[")) {
-    // G[8]=2, AX[AXVAR]=10, S[SPINU]=300: indirect addresses (SIN-IND-01…03).
+    // G[8]=2, S[SPINU]=300: indirect addresses (SIN-IND-01, -03).
     return fail(t, fmt::format("the indexed address {}[…] is not simulated", t.text), "unsupported-code");
   } else {
     return callStatement(false);  // a subprogram called by its name
@@ -112,6 +129,7 @@ bool BlockParser::gcode(const std::string &name, const Token &at) {
     if (o.first.code->group == g.code->group && o.first.code->group != 2 && o.first.code->group != 3)
       return fail(at, fmt::format("{} and {} are both of G group {}", o.first.code->name, name, g.code->group),
                   "modal-group-conflict");
+  if (g.act == GAct::Unsupported && machineGCode(g, at)) return true;  // MachineOnly.cpp
   if (g.act == GAct::Unsupported)
     return fail(at, fmt::format("{} ({}) is not simulated", name, g.code->meaning), "unsupported-code");
   if (g.act == GAct::Units && g.arg == 2)
@@ -180,22 +198,24 @@ bool BlockParser::callStatement(bool modal) {
     return true;
   }
   const Token &t = tok();
-  std::string name;
+  std::string name, type;
   if (viaCall) {
     ExprPtr e = expr(0);
     if (!e) return false;
     if (e->kind != ir::ExprKind::String) return fail(t, "CALL with a computed name is not supported", "unsupported-code");
-    name = e->str;
-    for (auto &ch : name) ch = (char)std::toupper((unsigned char)ch);
+    name = calledProgram(e->str, type);
   } else {
     if (t.kind != Tok::Name) return fail(t, "expected a subprogram name");
-    name = t.text;
+    name = t.text[0] == '_' ? calledProgram(t.text, type) : t.text;
     ++i_;
   }
+  if (!type.empty()) name = "_N_" + name + "_" + type;  // the key of a call that named its file type
+  if (viaCall && tok().isName("BLOCK"))  // CALL "P" BLOCK A TO B: a section of another program (SIN-CAL-06)
+    return fail(tok(), "CALL … BLOCK … TO … (a section of another program) is not simulated", "unsupported-code");
   if (name.size() < 2 || name[0] == '$')
     return fail(t, fmt::format("unknown address or name '{}'", name), "unknown-code");
   CycleSignature lib;
-  const Signature *sig = f_.pp.callee(name, loc(t), &lib);
+  const Signature *sig = f_.pp.callee(name, loc(t), &lib, type);
   if (!sig && lib.name) return libraryCycle(modal, name, lib, t);
   if (!sig) {
     failed_ = true;

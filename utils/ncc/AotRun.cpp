@@ -75,7 +75,7 @@ int runCompiled(const CompiledProgram &p, const RunTimeOptions &rt, bool machine
   Machine machine;
   if (!programMachine(info, rt, machineGiven, p.name, machine, diags)) return kExitErrors;
   registerSources(info, p.name, sm, diags);
-  if (!loadProbeResults(rt, sm, diags, machine)) return kExitErrors;
+  if (!loadProbeResults(rt, sm, diags, machine) || !applySandbox(rt, diags)) return kExitErrors;
   std::string program = info.program.empty() ? p.name : info.program;
   RunOutputSet outputs(machine, out, program);
   if (!outputs.open(diags)) return kExitErrors;

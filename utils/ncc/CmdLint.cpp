@@ -1,6 +1,7 @@
 // ncc lint: front-end, verifier and sema diagnostics, static lint rules, then a run through the
 // executor (discarding motion) for the rules that need modal state. Each rule fires once per
 // source location.
+#include "ir/FileCommands.h"
 #include "ir/LintRules.h"
 #include "passes/Eval.h"
 #include "passes/Pass.h"
@@ -55,6 +56,8 @@ bool Session::lint(uint32_t file) {
   runLint(m, diags, ctx);
   NullSink sink;
   Executor exec(machine, sink, diags);
+  exec.setLintRun(true);
+  setFileLintMode(true);  // lint writes and deletes no files
   KeepGoingSink es(exec);
   Evaluator ev(es, diags, opts.limits);
   exec.finish(ev.run(m));

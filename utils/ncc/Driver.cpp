@@ -36,7 +36,7 @@ bool Session::setUp() {
     diags.error({}, fmt::format("unknown engine '{}' (expected eval or jit)", opts.engine));
     return false;
   }
-  return true;
+  return applySandbox(opts, diags);
 }
 
 bool Session::loadMachine(const std::string &nameOrPath, Machine &out) {

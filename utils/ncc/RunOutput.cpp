@@ -4,9 +4,11 @@
 #include "runtime/Executor.h"
 #include "runtime/ProbeResults.h"
 #include "runtime/Sinks.h"
+#include "ir/FileCommands.h"
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <iostream>
 #include <unistd.h>
 
@@ -43,8 +45,20 @@ void addRunTimeOptions(po::options_description &desc, RunTimeOptions &o) {
       ("max-call-depth", po::value(&o.limits.maxCallDepth)->default_value(o.limits.maxCallDepth), "subprogram nesting limit")
       ("max-seconds", po::value(&o.limits.maxSeconds)->default_value(o.limits.maxSeconds), "run-time limit in seconds")
       ("probe-results", po::value(&o.probeResults), "where each probe move (G38.2-G38.5) stops: a probe-results file (docs/PROBING.md)")
+      ("sandbox", po::value(&o.sandbox), "the folder Sinumerik file commands (WRITE, READ, DELETE, ISFILE, FILEINFO …) work in; without it they are errors")
       ("diagnostics-format", po::value(&o.diagnosticsFormat)->default_value("text"), "text|json")
       ("Werror", po::bool_switch(&o.werror), "treat warnings as errors");
+}
+
+bool applySandbox(const RunTimeOptions &o, Diagnostics &diags) {
+  if (o.sandbox.empty()) return true;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(o.sandbox, ec)) {
+    diags.error({}, fmt::format("--sandbox '{}' is not a folder", o.sandbox), "options");
+    return false;
+  }
+  setFileSandbox(o.sandbox);
+  return true;
 }
 
 void applyDiagnosticsOptions(const RunTimeOptions &o, Diagnostics &diags) {

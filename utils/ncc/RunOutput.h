@@ -37,10 +37,13 @@ struct RunTimeOptions {
   std::string diagnosticsFormat = "text";
   bool werror = false;
   std::string probeResults;  // what the simulated probe meets (docs/PROBING.md)
+  std::string sandbox;       // the folder of Sinumerik file commands (ir/FileCommands.h); empty: none
 };
 void addRunTimeOptions(po::options_description &desc, RunTimeOptions &o);
 // Applies the diagnostics options.
 void applyDiagnosticsOptions(const RunTimeOptions &o, Diagnostics &diags);
+// Makes --sandbox the folder of the file commands; false after reporting one that is no folder.
+bool applySandbox(const RunTimeOptions &o, Diagnostics &diags);
 // Reads --probe-results into the machine (its file joins sm); false after reporting.
 bool loadProbeResults(const RunTimeOptions &o, SourceManager &sm, Diagnostics &diags, Machine &machine);
 
