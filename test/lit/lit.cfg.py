@@ -12,7 +12,10 @@ config.test_source_root = os.path.dirname(__file__)
 obj_root = lit_config.params.get("ncc_obj_root") or os.environ.get("NCC_OBJ_ROOT") or \
     os.path.join(os.path.dirname(__file__), "..", "..", "build")
 obj_root = os.path.abspath(obj_root)
-config.test_exec_root = os.path.join(obj_root, "test", "lit")
+# ctest runs the areas in parallel: each gets its own exec root, because lit rewrites the
+# suite's .lit_test_times.txt at exit without locking, and a file torn by two writers stops
+# every later lit run while reading it.
+config.test_exec_root = os.path.join(obj_root, "test", "lit", lit_config.params.get("ncc_lit_run", ""))
 tools = os.path.join(obj_root, "utils")
 src_root = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
