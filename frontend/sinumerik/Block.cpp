@@ -12,8 +12,10 @@ using ir::ExprPtr;
 using ir::Op;
 using ir::OpKind;
 
-bool BlockParser::fail(const Token &t, std::string msg, const char *rule) {
-  if (!failed_) f_.pp.error(loc(t), std::move(msg), rule);
+bool BlockParser::fail(const Token &t, std::string msg, const char *rule) { return failAt(loc(t), std::move(msg), rule); }
+
+bool BlockParser::failAt(SourceLoc l, std::string msg, const char *rule) {
+  if (!failed_) f_.pp.error(l, std::move(msg), rule);
   failed_ = true;
   return false;
 }
@@ -247,7 +249,7 @@ bool BlockParser::keyword(const std::string &kw) {
       "WAITMC",  "WAITE",    "SETM",  "CLEARM",  "SETINT",   "CLRINT",  "DISABLE",  "ENABLE",   "PRIO",
       "BLSYNC",  "LIFTFAST", "ALF",   "RELEASE", "GET",      "GETD",    "AXTOCHAN", "NEWCONF",  "WRITE",
       "READ",    "DELETE",   "EXECSTRING", "EXECTAB", "REDEF", "PCALL",    "ISOCALL",  "CALLPATH",
-      "EXTCALL", "GOTOS", "RETB",    "SPOS",     "SPOSA",   "WAITS",    "TRAORI",   "TRANSMIT",
+      "EXTCALL", "GOTOS", "RETB",    "SPOSA",   "WAITS",    "TRAORI",   "TRANSMIT",
       "TRACYL",  "MEAS",     "MEAW",  "G291"};
   for (const char *c : kNotSimulated)
     if (kw == c)

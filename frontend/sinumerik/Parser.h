@@ -125,6 +125,10 @@ private:
   std::vector<PolyTerm> poly_;
   bool polyTerm(std::string axis, const Token &at);
   bool lowerPoly(ir::Region &out, ir::ExprPtr &denominator);
+  bool lowerSpindleMode(const GInfo *g, ir::ExprPtr s, ir::ExprPtr lims, ir::Op &mode, ir::Region &out);
+  bool lowerSmoothing(const GInfo *g, SourceLoc gl, ir::Op &mode);
+  bool lowerFloatTap(SourceLoc gl, bool path, ir::Op mv, ir::Region &out);
+  bool spindlePosition();
   std::vector<std::pair<GInfo, SourceLoc>> gcodes_;
   std::vector<std::pair<int, SourceLoc>> mcodes_;
   std::vector<ir::Op> pre_, post_;  // ops before the machine words (assignments) and after (calls)
@@ -135,6 +139,7 @@ private:
   SourceLoc loc(const Token &t) const { return {f_.file, line_, t.col}; }
   SourceLoc loc() const { return loc(tok()); }
   bool fail(const Token &t, std::string msg, const char *rule = "syntax");
+  bool failAt(SourceLoc l, std::string msg, const char *rule);
   bool expect(std::string_view punct);
   bool atEnd() const { return tok().kind == Tok::End; }
 
