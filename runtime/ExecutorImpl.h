@@ -433,6 +433,7 @@ struct Executor::Impl {
   bool rigidTap(const MachineCmd &c);     // G33.1
   bool leadThread(const MachineCmd &c);   // Sinumerik G33 I/J/K SF=
   bool positionTap(const MachineCmd &c, bool in);  // Sinumerik G331 / G332
+  bool cycleRigidTap(const AxisVec &bottom, const CycleStep &s);  // a library cycle's RigidTap step
   bool spindlePositioned = false;  // SPOS/M19 put the spindle in position control; M3/M4/M5 end it
   double threadStartAngle = 0;     // Sinumerik SF= (modal): the start angle of the next thread
   bool tapOpen = false;            // a G331 tap waits for its G332 back to tapStart
