@@ -105,21 +105,32 @@ bool BlockParser::addressWord() {
 }
 
 // SPOS=<degrees>: the spindle stops at the angle in position control (what G331/G332 need),
-// the shortest way (DC). The other forms (ACP, ACN, IC, SPOS[n]) are not simulated.
+// the shortest way (as DC); SPOS=DC(a) / ACP(a) / ACN(a) the shortest way, turning positive (M3's
+// way) or negative. SPOS=IC(…) and SPOS[n] (other spindles) are not simulated.
 bool BlockParser::spindlePosition() {
   const Token &t = tok();
   if (!peek().is("="))
     return fail(t, "SPOS takes =<angle> (SPOS[n] and the other spindles are not simulated)", "unsupported-code");
   i_ += 2;
-  if (tok().kind == Tok::Name && peek().is("("))
-    return fail(tok(), fmt::format("SPOS={}(…) is not simulated (SPOS=<angle> is, the shortest way)", tok().text),
-                "unsupported-code");
+  static const char *kWays[][2] = {{"DC", "shortest"}, {"ACP", "cw"}, {"ACN", "ccw"}};
+  const char *way = "shortest";
+  bool wrapped = false;
+  if (tok().kind == Tok::Name && peek().is("(")) {
+    const char *found = nullptr;
+    for (auto &w : kWays)
+      if (tok().isName(w[0])) found = w[1];
+    if (!found)
+      return fail(tok(), fmt::format("SPOS={}(…) is not simulated (SPOS=<angle>, DC, ACP and ACN are)", tok().text),
+                  "unsupported-code");
+    way = found, wrapped = true;
+    i_ += 2;
+  }
   ExprPtr a = expr(0);
-  if (!a) return false;
+  if (!a || (wrapped && !expect(")"))) return false;
   Op o(OpKind::Spindle, loc(t));
   o.set("dir", Expr::symbol("orient"));
   o.set("angle", std::move(a));
-  o.set("way", Expr::symbol("shortest"));
+  o.set("way", Expr::symbol(way));
   pre_.push_back(std::move(o));
   return true;
 }
