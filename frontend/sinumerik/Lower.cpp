@@ -88,15 +88,7 @@ bool BlockParser::lowerWords() {
       // S revolutions of the spindle at its programmed speed: 60·S / rpm seconds. A stopped
       // spindle never turns them: an alarm, not a guessed time.
       auto sys = [&](const char *n) { return Expr::var(ir::VarSpace::System, n, nullptr, bl); };
-      Op stopped(OpKind::If, bl);
-      stopped.set("cond", Expr::binary(ir::OpCode::Or, Expr::unary(ir::OpCode::Not, sys("_spindle_on"), bl),
-                                       Expr::binary(ir::OpCode::Le, sys("_rpm"), Expr::number(0, ir::Type::Int), bl), bl));
-      stopped.regions.emplace_back();
-      Op alarm(OpKind::Message, bl);
-      alarm.set("text", Expr::string("G4 S (a dwell in spindle revolutions) needs the spindle turning (S and M3/M4)", bl));
-      alarm.set("kind", Expr::symbol("abort"));
-      stopped.regions[0].push_back(std::move(alarm));
-      out.push_back(std::move(stopped));
+      out.push_back(spindleAlarm(true, "G4 S (a dwell in spindle revolutions) needs the spindle turning (S and M3/M4)"));
       d.set("seconds", Expr::binary(ir::OpCode::Div, Expr::binary(ir::OpCode::Mul, Expr::number(60, ir::Type::Int), std::move(s), bl),
                                     sys("_rpm"), bl));
     } else if (ExprPtr f = take("F")) {
@@ -338,6 +330,25 @@ bool BlockParser::lowerSmoothing(const GInfo *g, SourceLoc gl, Op &mode) {
 // G63 Z… F…: tapping with a compensating chuck, a straight feed at the programmed F (S x lead):
 // the chuck takes up the difference. Non-modal: the block moves as G1, then the motion mode the
 // program had comes back.
+// An alarm at run time when the spindle stands (or, with `speed`, has no speed): what G4 S and
+// G63 need, which the program text alone cannot tell.
+Op BlockParser::spindleAlarm(bool speed, const char *msg) {
+  SourceLoc bl = loc(t_[0]);
+  auto sys = [&](const char *n) { return Expr::var(ir::VarSpace::System, n, nullptr, bl); };
+  ExprPtr stopped = Expr::unary(ir::OpCode::Not, sys("_spindle_on"), bl);
+  if (speed)
+    stopped = Expr::binary(ir::OpCode::Or, std::move(stopped),
+                           Expr::binary(ir::OpCode::Le, sys("_rpm"), Expr::number(0, ir::Type::Int), bl), bl);
+  Op check(OpKind::If, bl);
+  check.set("cond", std::move(stopped));
+  check.regions.emplace_back();
+  Op alarm(OpKind::Message, bl);
+  alarm.set("text", Expr::string(msg, bl));
+  alarm.set("kind", Expr::symbol("abort"));
+  check.regions[0].push_back(std::move(alarm));
+  return check;
+}
+
 bool BlockParser::lowerFloatTap(SourceLoc gl, bool path, Op mv, ir::Region &out) {
   SourceLoc bl = loc(t_[0]);
   if (!path) return failAt(gl, "G63 needs the tapping move in its block", "missing-word");
@@ -348,6 +359,7 @@ bool BlockParser::lowerFloatTap(SourceLoc gl, bool path, Op mv, ir::Region &out)
     m.set("motion", Expr::symbol(modeValueInfo(v).name));
     return m;
   };
+  out.push_back(spindleAlarm(false, "G63 (tapping with a compensating chuck) needs the spindle turning (M3/M4)"));
   out.push_back(motion(ModeValue::Linear));
   out.push_back(std::move(mv));
   if (f_.motion != ModeValue::Linear) out.push_back(motion(f_.motion));

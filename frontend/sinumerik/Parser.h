@@ -129,6 +129,7 @@ private:
   bool lowerSmoothing(const GInfo *g, SourceLoc gl, ir::Op &mode);
   bool lowerFloatTap(SourceLoc gl, bool path, ir::Op mv, ir::Region &out);
   bool spindlePosition();
+  ir::Op spindleAlarm(bool speed, const char *msg);
   std::vector<std::pair<GInfo, SourceLoc>> gcodes_;
   std::vector<std::pair<int, SourceLoc>> mcodes_;
   std::vector<ir::Op> pre_, post_;  // ops before the machine words (assignments) and after (calls)
