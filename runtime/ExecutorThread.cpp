@@ -134,21 +134,28 @@ static bool leadWord(const MachineCmd &c, const AxisVec &from, const AxisVec &to
 
 // Sinumerik G33 X Y Z I/J/K SF=: a thread of constant lead along its main axis. Blocks that
 // follow one another chain into one thread; a new thread waits for the spindle's zero mark plus
-// the start angle SF (modal, the offset of a multi-start thread's passes).
+// the start angle SF (modal, the offset of a multi-start thread's passes). G34/G35 add `dlead`,
+// the lead's change per revolution along the same axis; such a thread starts a synchronisation
+// of its own.
 bool Executor::Impl::leadThread(const MachineCmd &c) {
   if (c.has(Word::Q)) threadStartAngle = c.get(Word::Q);
   if (!(c.mask & kAxisMask)) return true;
   if (!threadAllowed("G33")) return false;
   if (c.mask & kAxisMask & ~(wordBit(Word::X) | wordBit(Word::Y) | wordBit(Word::Z)))
-    return error("G33 moves X, Y and Z only", "unsupported-code");
+    return error("G33 (G34, G35) moves X, Y and Z only", "unsupported-code");
   const AxisVec to = target(c);
   double lead = 0;
   int axis = 0;
   std::string why;
-  if (!leadWord(c, st.position, to, lead, axis, why)) return error("G33: " + why, "thread-invalid");
+  const double dlead = c.has(Word::LeadChange) ? c.get(Word::LeadChange) * scale() : 0;
+  const char *code = dlead > 0 ? "G34" : dlead < 0 ? "G35" : "G33";
+  if (!leadWord(c, st.position, to, lead, axis, why)) return error(std::string(code) + ": " + why, "thread-invalid");
+  if (dlead != 0 && threadChain)
+    return error(fmt::format("{} right after a thread: a variable lead chained onto a thread is not supported", code),
+                 "unsupported-code");
   const bool chain = threadChain;
   return threadTo(to, lead * scale(), (ThreadAxis)axis, chain ? ThreadSync::Chain : ThreadSync::Index,
-                  chain ? 0 : threadStartAngle);
+                  chain ? 0 : threadStartAngle, dlead);
 }
 
 // Sinumerik G331 / G332: tapping without a compensating chuck. SPOS put the spindle in position

@@ -80,6 +80,8 @@ static const GRow kExecuted[] = {
     {"G971", GAct::SpindleMode, ModeValue::Count, 4},
     {"G972", GAct::SpindleMode, ModeValue::Count, 5},
     {"G33", GAct::Mode, ModeValue::ThreadLead, 0},
+    {"G34", GAct::Mode, ModeValue::ThreadLead, 1},   // the lead grows by F every revolution
+    {"G35", GAct::Mode, ModeValue::ThreadLead, -1},  // the lead shrinks by F
     {"G331", GAct::Mode, ModeValue::TapIn, 0},
     {"G332", GAct::Mode, ModeValue::TapOut, 0},
     {"G63", GAct::FloatTap, ModeValue::Count, 0},

@@ -60,7 +60,7 @@ bool BlockParser::lowerWords() {
       mode.loc = l;
       if (grp == ModeGroup::Plane && g.mode != f_.plane) f_.poleKnown = f_.apKnown = false;  // polar: PGsl
       if (grp == ModeGroup::Plane) f_.plane = g.mode;
-      if (grp == ModeGroup::Motion) f_.motion = g.mode;
+      if (grp == ModeGroup::Motion) f_.motion = g.mode, f_.leadChange = g.arg;
       if (grp == ModeGroup::Distance) f_.distance = g.mode;
       break;
     }
@@ -97,6 +97,15 @@ bool BlockParser::lowerWords() {
       return fail(t_[0], "G4 needs F<seconds> or S<revolutions>", "missing-word");
     }
     out.push_back(std::move(d));
+  }
+  // G34/G35: F is the lead's change per revolution, a word of the thread move, not a feed.
+  ExprPtr leadChange;
+  bool axisWord = false;
+  for (auto &w : words_) axisWord = axisWord || (!w.addr.empty() && findAddress(w.addr)->kind == Addr::Axis);
+  if (f_.motion == ModeValue::ThreadLead && f_.leadChange != 0 && (axisWord || word("F"))) {
+    leadChange = take("F");
+    if (!leadChange) return fail(t_[0], "G34/G35 needs F, the lead's change per revolution", "missing-word");
+    if (f_.leadChange < 0) leadChange = Expr::unary(ir::OpCode::Neg, std::move(leadChange), bl);
   }
   bool hadFeedOrSpeed = word("F") || word("S");
   if (ExprPtr f = take("F")) {
@@ -178,6 +187,7 @@ bool BlockParser::lowerWords() {
   Op mv(OpKind::Move, bl);
   std::string ac, ic;
   bool any = false, path = false;
+  if (leadChange) mv.set("dlead", std::move(leadChange));
   if (denominator) {
     mv.set("denominator", std::move(denominator));
     any = true;
@@ -227,6 +237,7 @@ bool BlockParser::lowerWords() {
     mv.loc = w.loc;
     any = true;
   }
+  if (mv.get("dlead") && !path) return fail(t_[0], "G34/G35 needs the thread's end point in its block", "missing-word");
   if (machine) {
     // G53 / G153 / SUPA: this block's positions in machine coordinates (non-modal).
     if (!path) return fail(t_[0], fmt::format("{} needs axis positions in its block", machine->code->name), "missing-word");

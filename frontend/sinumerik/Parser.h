@@ -55,6 +55,7 @@ public:
   std::vector<ir::Region *> regions;        // innermost last
   ModeValue plane = ModeValue::XY;  // static: the plane of ROT RPL= (docs/SINUMERIK.md)
   ModeValue motion = ModeValue::Count;  // static: G0/G1 for G53 blocks
+  int leadChange = 0;  // static, with motion G33/G34/G35: 0, +1 (G34: F the lead's growth), -1 (G35)
   ModeValue distance;                    // static: G90/G91 (the main program starts in G90)
   bool poleKnown = true;                 // static: no plane change since the last G110/G111 (docs/SINUMERIK.md)
   bool apKnown = false;                  // static: AP= programmed since the last pole definition
