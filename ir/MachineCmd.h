@@ -29,6 +29,7 @@ enum class Word : uint8_t {
   // Sinumerik POLY: a move with PolyIndex k carries the coefficients a_k (X Y Z) and b_k (weight)
   // of the block's polynomials; the block's move then has the end point and PL (PolyInterval).
   PolyIndex, PolyInterval, PolyDenominator,
+  LeadChange,  // Sinumerik G34/G35: the thread lead's change per revolution (signed), mm/rev^2
   Count
 };
 constexpr int kWords = (int)Word::Count;
@@ -37,7 +38,7 @@ constexpr const char *kWordKeys[kWords] = {
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R", "P", "Q", "L", "F", "S", "T", "H", "D", "E",
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
-    "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator"};
+    "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator", "dlead"};
 // A word's address letter (the key's one character), 0 for a named word.
 constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;

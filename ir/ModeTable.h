@@ -37,8 +37,10 @@ enum class ModeValue : uint8_t {
   // LinuxCNC's G76 (every parameter in one block), ThreadSingle the lathe's single thread
   // cycle (808D G92/G78, modal like G90), ThreadMulti the lathe's multiple threading cycle
   // (808D G76, one-shot: the motion mode before it stays); ThreadVariable the 808D's G34 (the lead
-  // F grows by K every revolution).
-  Thread, RigidTap, ThreadCycle, ThreadSingle, ThreadMulti, ThreadVariable,
+  // F grows by K every revolution). ThreadLead is Sinumerik G33: the lead I/J/K along X/Y/Z (the
+  // thread's main axis), the start angle Q (SF=) modal; TapIn/TapOut Sinumerik G331/G332, a rigid
+  // tap into the hole and back out with the spindle in position control (after SPOS).
+  Thread, RigidTap, ThreadCycle, ThreadSingle, ThreadMulti, ThreadVariable, ThreadLead, TapIn, TapOut,
   // The lathe's peck cycles (808D G74 along Z, G75 along X, runtime/ExecutorGrooving.cpp):
   // one-shot like ThreadMulti, a block without the end point keeps the retract e.
   PeckAlongZ, PeckAlongX,
@@ -85,7 +87,7 @@ inline bool isPathMotion(ModeValue v) { return v <= ModeValue::ArcTangent; }
 inline bool isCycleMotion(ModeValue v) { return v >= ModeValue::Drill && v <= ModeValue::BoreFine; }
 inline bool isSplineMotion(ModeValue v) { return v >= ModeValue::SplineCubic && v <= ModeValue::NurbsEnd; }
 inline bool isTurnCycleMotion(ModeValue v) { return v == ModeValue::TurnAlongZ || v == ModeValue::TurnAlongX; }
-inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::ThreadVariable; }
+inline bool isThreadMotion(ModeValue v) { return v >= ModeValue::Thread && v <= ModeValue::TapOut; }
 inline bool isPeckMotion(ModeValue v) { return v == ModeValue::PeckAlongZ || v == ModeValue::PeckAlongX; }
 inline bool isSinSplineMotion(ModeValue v) { return v >= ModeValue::SplineAkima && v <= ModeValue::SplineC; }
 inline bool isProbeMotion(ModeValue v) { return v >= ModeValue::ProbeToward && v <= ModeValue::Skip; }

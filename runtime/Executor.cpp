@@ -73,7 +73,7 @@ bool Executor::Impl::orientSpindle(double angle, int way, double wait, bool inCy
   if (!std::isfinite(angle) || !(wait >= 0)) return error("bad spindle orientation angle or wait", "bad-command");
   MotionRecord r = record(RecordKind::SpindleOrient);
   r.value = angle, r.ivalue = way, r.value2 = wait;
-  if (!inCycle) st.spindle = 0;  // oriented = stopped: M3/M4 start it again (a cycle does itself)
+  if (!inCycle) st.spindle = 0, spindlePositioned = true;  // oriented = stopped: M3/M4 start it again
   emit(r);
   return true;
 }
@@ -686,6 +686,7 @@ bool Executor::exec(const MachineCmd &c) {
                              c.has(Word::Q) ? c.get(Word::Q) : 0);
     if (c.sub > 2) return x.error("bad spindle command", "bad-command");
     x.st.spindle = c.sub;
+    x.spindlePositioned = false;  // back to speed control
     x.emit(x.record(kinds[c.sub]));
     return true;
   }
@@ -708,6 +709,9 @@ bool Executor::exec(const MachineCmd &c) {
   case CmdKind::Dwell: {
     double p = c.get(Word::P);
     if (p < 0) return x.error("Dwell time must not be negative", "bad-dwell");
+    if (x.tapOpen)  // the trace's RIGID_TAP is one record down and back: nothing fits between
+      return x.error("a dwell between G331 and G332 is not supported (the tap is one record down and back)",
+                     "unsupported-code");
     MotionRecord r = x.record(RecordKind::Dwell);
     r.value = p;
     x.emit(r);  // with compensation on it waits for the pending move

@@ -205,6 +205,9 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
     case CycleStepKind::SpindleCW: emit(record(RecordKind::SpindleCW)); break;
     case CycleStepKind::SpindleCCW: emit(record(RecordKind::SpindleCCW)); break;
     case CycleStepKind::SpindleOrient: orientSpindle(s.angle, 2, 0, true); break;
+    case CycleStepKind::RigidTap:
+      if (!cycleRigidTap(to, s)) return false;
+      break;
     }
   }
   if (rate != feedMM) {
@@ -214,6 +217,27 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
   }
   if (bracketOpen) emit(pathModeRecord());
   emit(record(RecordKind::CycleEnd));
+  return true;
+}
+
+// A rigid tap step: at the step's speed (the active S restored after it), down and back as one
+// tap (the thread records of Sinumerik G331/G332).
+bool Executor::Impl::cycleRigidTap(const AxisVec &bottom, const CycleStep &s) {
+  const double saved = st.speed;
+  auto speed = [&](double rpm) {
+    if (rpm == st.speed) return;
+    st.speed = rpm;
+    MotionRecord r = record(RecordKind::SpindleSpeed);
+    r.value = rpm;
+    emit(r);
+  };
+  if (s.speed > 0) speed(s.speed);
+  if (!(st.speed > 0)) return error("a rigid tap needs a spindle speed", "thread-spindle");
+  const AxisVec from = st.position;
+  const ThreadAxis along = (ThreadAxis)planeAxes(plane()).n;
+  if (!threadTo(bottom, s.lead, along, ThreadSync::TapIn, 0) || !threadTo(from, s.lead, along, ThreadSync::TapOut, 0))
+    return false;
+  speed(saved);
   return true;
 }
 

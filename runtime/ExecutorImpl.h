@@ -432,6 +432,14 @@ struct Executor::Impl {
   bool threadTo(const AxisVec &to, double lead, ThreadAxis along, ThreadSync sync, double angle, double dlead = 0);
   bool threadMove(const MachineCmd &c);   // G33 K (LinuxCNC), G32/G33 F Q (808D)
   bool rigidTap(const MachineCmd &c);     // G33.1
+  bool leadThread(const MachineCmd &c);   // Sinumerik G33 I/J/K SF=
+  bool positionTap(const MachineCmd &c, bool in);  // Sinumerik G331 / G332
+  bool cycleRigidTap(const AxisVec &bottom, const CycleStep &s);  // a library cycle's RigidTap step
+  bool spindlePositioned = false;  // SPOS/M19 put the spindle in position control; M3/M4/M5 end it
+  double threadStartAngle = 0;     // Sinumerik SF= (modal): the start angle of the next thread
+  bool tapOpen = false;            // a G331 tap waits for its G332 back to tapStart
+  AxisVec tapStart{};
+  double tapLead = 0;
   bool threadCycle(const MachineCmd &c);  // LinuxCNC G76
   bool threadMulti(const MachineCmd &c);  // 808D G76 (both blocks)
   bool threadSteps(const std::vector<ThreadStep> &steps, ThreadAxis along);

@@ -114,6 +114,8 @@ bool Executor::Impl::pathOut(const MotionRecord &r) {
 }
 
 bool Executor::Impl::execMove(const MachineCmd &c) {
+  if (tapOpen && st.motion != ModeValue::TapOut && (c.mask & kTargetMask))
+    return error("a G331 tap must be followed by its G332 back out of the hole", "thread-invalid");
   const bool turnCorner = st.motion == ModeValue::Linear && (c.has(Word::I) || c.has(Word::K) || c.has(Word::R));
   if ((c.has(Word::Chamfer) || c.has(Word::ChamferLeg) || c.has(Word::Round) || turnCorner) && !cornerRequest(c)) return false;
   if (c.has(Word::PolyIndex)) return polyCoefficients(c);
@@ -146,6 +148,9 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   case ModeValue::Thread:
   case ModeValue::ThreadVariable: return threadMove(c);
   case ModeValue::RigidTap: return rigidTap(c);
+  case ModeValue::ThreadLead: return leadThread(c);
+  case ModeValue::TapIn:
+  case ModeValue::TapOut: return positionTap(c, st.motion == ModeValue::TapIn);
   case ModeValue::ThreadCycle: return threadCycle(c);
   case ModeValue::ThreadMulti: return threadMulti(c);
   case ModeValue::PeckAlongZ:

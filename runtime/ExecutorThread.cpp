@@ -109,6 +109,97 @@ bool Executor::Impl::rigidTap(const MachineCmd &c) {
          threadTo(from, lead, ThreadAxis::Path, ThreadSync::TapOut, 0);
 }
 
+// Sinumerik's lead word: exactly one of I J K, the lead along X Y Z. It must name the thread's
+// main axis, the one that travels furthest (a taper up to 45 degrees to Z takes K, a steeper one
+// I; at exactly 45 degrees either).
+static bool leadWord(const MachineCmd &c, const AxisVec &from, const AxisVec &to, double &lead, int &axis,
+                     std::string &why) {
+  static const Word kLead[] = {Word::I, Word::J, Word::K};
+  axis = -1;
+  for (int i = 0; i < 3; ++i)
+    if (c.has(kLead[i])) {
+      if (axis >= 0) return why = "a thread takes one lead word: I, J or K", false;
+      axis = i;
+    }
+  if (axis < 0) return why = "the lead is missing: I (along X), J (along Y) or K (along Z)", false;
+  lead = c.get(kLead[axis]);
+  const double travel = std::fabs(to[axis] - from[axis]);
+  for (int i = 0; i < 3; ++i)
+    if (std::fabs(to[i] - from[i]) > travel + 1e-9)
+      return why = fmt::format("the lead {} is along {}, but the thread's main axis (the longest travel) is {}",
+                               "IJK"[axis], "XYZ"[axis], "XYZ"[i]),
+             false;
+  return true;
+}
+
+// Sinumerik G33 X Y Z I/J/K SF=: a thread of constant lead along its main axis. Blocks that
+// follow one another chain into one thread; a new thread waits for the spindle's zero mark plus
+// the start angle SF (modal, the offset of a multi-start thread's passes). G34/G35 add `dlead`,
+// the lead's change per revolution along the same axis; such a thread starts a synchronisation
+// of its own.
+bool Executor::Impl::leadThread(const MachineCmd &c) {
+  if (c.has(Word::Q)) threadStartAngle = c.get(Word::Q);
+  if (!(c.mask & kAxisMask)) return true;
+  if (!threadAllowed("G33")) return false;
+  if (c.mask & kAxisMask & ~(wordBit(Word::X) | wordBit(Word::Y) | wordBit(Word::Z)))
+    return error("G33 (G34, G35) moves X, Y and Z only", "unsupported-code");
+  const AxisVec to = target(c);
+  double lead = 0;
+  int axis = 0;
+  std::string why;
+  const double dlead = c.has(Word::LeadChange) ? c.get(Word::LeadChange) * scale() : 0;
+  const char *code = dlead > 0 ? "G34" : dlead < 0 ? "G35" : "G33";
+  if (!leadWord(c, st.position, to, lead, axis, why)) return error(std::string(code) + ": " + why, "thread-invalid");
+  if (dlead != 0 && threadChain)
+    return error(fmt::format("{} right after a thread: a variable lead chained onto a thread is not supported", code),
+                 "unsupported-code");
+  const bool chain = threadChain;
+  return threadTo(to, lead * scale(), (ThreadAxis)axis, chain ? ThreadSync::Chain : ThreadSync::Index,
+                  chain ? 0 : threadStartAngle, dlead);
+}
+
+// Sinumerik G331 / G332: tapping without a compensating chuck. SPOS put the spindle in position
+// control; G331 taps in at S with the lead I/J/K (> 0 a right-hand thread, < 0 left-hand), G332
+// comes back out with the spindle reversed. ncc's record of a tap is LinuxCNC's rigid tap, down
+// and back along one line: G332 must follow G331 at once and end where the tap began.
+bool Executor::Impl::positionTap(const MachineCmd &c, bool in) {
+  const char *code = in ? "G331" : "G332";
+  if (!(c.mask & kAxisMask)) return true;
+  if (!compForbids(fmt::format("Cannot use {} with cutter radius compensation on", code).c_str())) return false;
+  if (linearFrame())
+    return error(fmt::format("{} under a rotation, scaling or mirror is not supported", code), "unsupported-code");
+  if (!spindlePositioned)
+    return error(fmt::format("{} needs the spindle in position control: program SPOS first (M3/M4/M5 end it)", code),
+                 "thread-spindle");
+  if (!(st.speed > 0)) return error(fmt::format("{} needs a spindle speed (S is 0)", code), "thread-spindle");
+  if (c.mask & kAxisMask & ~(wordBit(Word::X) | wordBit(Word::Y) | wordBit(Word::Z)))
+    return error(fmt::format("{} moves X, Y and Z only", code), "unsupported-code");
+  const AxisVec to = target(c);
+  double lead = 0;
+  int axis = 0;
+  std::string why;
+  if (!leadWord(c, st.position, to, lead, axis, why)) return error(fmt::format("{}: {}", code, why), "thread-invalid");
+  lead = std::fabs(lead) * scale();
+  if (in) {
+    if (tapOpen) return error("G331 after G331: the first tap never came back out (G332)", "thread-invalid");
+    tapStart = st.position, tapLead = lead;
+    tapOpen = true;
+    threadSpeed = st.speed;
+    return threadTo(to, lead, (ThreadAxis)axis, ThreadSync::TapIn, 0);
+  }
+  if (!tapOpen || !threadChain) return error("G332 without the G331 tap before it", "thread-invalid");
+  for (int i = 0; i < 3; ++i)
+    if (std::fabs(to[i] - tapStart[i]) > 1e-9)
+      return error("G332 must come back to where its G331 began (ncc's tap is one record down and back)",
+                   "unsupported-code");
+  if (std::fabs(lead - tapLead) > 1e-12) return error("G332 must take the lead of its G331", "thread-invalid");
+  if (st.speed != threadSpeed)
+    return error("a different speed for G332 than for its G331 is not supported (the tap is one record)",
+                 "unsupported-code");
+  tapOpen = false;
+  return threadTo(to, lead, (ThreadAxis)axis, ThreadSync::TapOut, 0);
+}
+
 bool Executor::Impl::threadSteps(const std::vector<ThreadStep> &steps, ThreadAxis along) {
   for (const ThreadStep &s : steps) {
     AxisVec p = st.position;

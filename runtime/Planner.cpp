@@ -360,7 +360,9 @@ void Planner::thread(const MotionRecord &r) {
   // A new synchronisation starts from rest (the spindle's index is waited for); a chained
   // record joins the thread before it like any path move.
   if (r.sync != ThreadSync::Chain && r.sync != ThreadSync::TapOut) flush();
-  if (!spindleOn_ || !(spindleRpm_ > 0)) {
+  // A Sinumerik G331/G332 tap turns the spindle in position control (after SPOS): not "on".
+  const bool tap = r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut;
+  if (!(spindleOn_ || (tap && spindlePositioned_)) || !(spindleRpm_ > 0)) {
     threadError(r, fmt::format("a thread move needs a turning spindle (speed {} rpm, {})", spindleRpm_,
                                spindleOn_ ? "on" : "stopped"), "thread-spindle");
     push(r);
@@ -445,9 +447,11 @@ void Planner::record(const MotionRecord &r) {
   case RecordKind::SpindleCCW:
   case RecordKind::SpindleStop:
     spindleOn_ = r.kind != RecordKind::SpindleStop;
+    spindlePositioned_ = false;
     [[fallthrough]];
   case RecordKind::ToolChange:
   case RecordKind::SpindleOrient:
+    if (r.kind == RecordKind::SpindleOrient) spindlePositioned_ = true;
   case RecordKind::OptionalStop:
   case RecordKind::ProgramStop:
   case RecordKind::ProgramEnd:

@@ -157,6 +157,7 @@ private:
   PlannerStats stats_;
   double spindleRpm_ = 0;      // the last spindle_speed record
   bool spindleOn_ = false;     // spindle_cw / spindle_ccw seen since the last stop
+  bool spindlePositioned_ = false;  // spindle_orient since the last spindle_cw/ccw/stop (a G331 tap may run)
   bool inThread_ = false;      // the last move pushed was a thread record
   bool threadFailed_ = false;  // the first thread error, reported by finish()
   SourceLoc threadErrorLoc_;

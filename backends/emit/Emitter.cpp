@@ -429,9 +429,9 @@ void Emitter::record(const MotionRecord &r) {
     if (cssWritten_) surfaceWord_ = w, cssNeedsS_ = false;
     break;
   }
-  case RecordKind::SpindleCW: addPending(PendingGroup::Spindle, code(Code::SpindleCW), r); break;
-  case RecordKind::SpindleCCW: addPending(PendingGroup::Spindle, code(Code::SpindleCCW), r); break;
-  case RecordKind::SpindleStop: addPending(PendingGroup::Spindle, code(Code::SpindleStop), r); break;
+  case RecordKind::SpindleCW: addPending(PendingGroup::Spindle, code(Code::SpindleCW), r), spindlePositioned_ = false; break;
+  case RecordKind::SpindleCCW: addPending(PendingGroup::Spindle, code(Code::SpindleCCW), r), spindlePositioned_ = false; break;
+  case RecordKind::SpindleStop: addPending(PendingGroup::Spindle, code(Code::SpindleStop), r), spindlePositioned_ = false; break;
   case RecordKind::SpindleOrient: spindleOrient(r); break;
   case RecordKind::SpindleMode: spindleMode(r); break;
   case RecordKind::CoolantFlood: coolant(r, true); break;

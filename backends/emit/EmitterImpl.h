@@ -160,6 +160,7 @@ private:
   std::string surfaceWord_;                 // the last S written under G96
   bool afterThread_ = false;                // the last motion written was a thread block
   double startAngle_ = NAN;                 // the Sinumerik SF= in force (NAN: none written yet)
+  bool spindlePositioned_ = false;          // an oriented stop since the last M3/M4/M5 (Sinumerik G331 needs it)
   bool flood_ = false, mist_ = false;            // written coolant state
   bool floodWanted_ = false, mistWanted_ = false;  // state the records ask for
 };

@@ -7,7 +7,8 @@ namespace ncc::emit::detail {
 // LinuxCNC: G33 X Y Z K<lead per unit of path>, G33.1 for a rigid tap (its return record is
 // the tap's own retract); a chain is refused (rs274 traces every G33 block as a synchronisation
 // of its own). Sinumerik: G33 with the lead on the address of the axis that travels most (I X,
-// J Y, K Z), SF= the start angle; it runs consecutive G33 blocks as one thread.
+// J Y, K Z), SF= the start angle; it runs consecutive G33 blocks as one thread; a rigid tap is
+// G331 in and G332 out with the lead on the tool axis' address, after an SPOS.
 std::string Emitter::threadRefusal(const MotionRecord &r) const {
   if (latheIso()) {  // the 808D/Fanuc lathe's G32 (system B G33)
     if (r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut) return "rigid tapping is not written for lathes";
@@ -15,9 +16,10 @@ std::string Emitter::threadRefusal(const MotionRecord &r) const {
   }
   const bool lcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
   if (!lcnc && st_.target != Target::Sinumerik)
-    return "only LinuxCNC (G33, G33.1: an ISO target of [controller] family \"linuxcnc\") and Sinumerik (G33) are written";
+    return "only LinuxCNC (G33, G33.1: an ISO target of [controller] family \"linuxcnc\") and Sinumerik (G33, G331/G332) are written";
   if (r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut) {
-    if (!lcnc) return "rigid tapping is written for LinuxCNC (G33.1) only";
+    if (!lcnc && !spindlePositioned_)
+      return "a Sinumerik rigid tap (G331/G332) needs the spindle in position control (an oriented stop before it)";
     return {};
   }
   if (lcnc && r.value2 != 0) return "LinuxCNC's G33 has no start angle";
@@ -32,15 +34,17 @@ std::string Emitter::threadRefusal(const MotionRecord &r) const {
 void Emitter::thread(const MotionRecord &r) {
   flushPending();
   ensurePosition(r);
-  if (r.sync == ThreadSync::TapOut) {  // G33.1 has already come back: only the position follows
+  const bool sin = st_.target == Target::Sinumerik;
+  if (r.sync == ThreadSync::TapOut && !sin) {  // G33.1 has already come back: only the position follows
     notePosition(r.end, 3);
     return;
   }
   Words w;
   if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
-  const bool tap = r.sync == ThreadSync::TapIn;
+  const bool tap = r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut;
   const bool variable = threadLeadChange(r) != 0;  // Sinumerik G34/G35: F the lead change
-  const char *g = tap ? "G33.1" : variable ? (threadLeadChange(r) > 0 ? "G34" : "G35") : "G33";
+  const char *g = tap ? (!sin ? "G33.1" : r.sync == ThreadSync::TapIn ? "G331" : "G332")
+                      : variable ? (threadLeadChange(r) > 0 ? "G34" : "G35") : "G33";
   if (latheIso()) g = variable ? "G34" : st_.threadCode.c_str();  // the 808D's G34 F K
   if (motion_ != g) push(w, g);
   motion_ = g;
@@ -63,7 +67,7 @@ void Emitter::thread(const MotionRecord &r) {
     }
     // SF= stays in force (it sets the thread start angle setting data): written on the first
     // thread and when it changes.
-    if (r.sync == ThreadSync::Index && !(r.value2 == startAngle_) && number(r.value2, WordClass::Rotary, "SF=", r, word)) {
+    if (!tap && r.sync == ThreadSync::Index && !(r.value2 == startAngle_) && number(r.value2, WordClass::Rotary, "SF=", r, word)) {
       w.push_back(word);
       startAngle_ = r.value2;
     }
@@ -95,6 +99,7 @@ void Emitter::latheThreadWords(const MotionRecord &r, Words &w) {
 // Fanuc's M19 turns to the angle of a machine parameter, so no other ISO target can write one.
 void Emitter::spindleOrient(const MotionRecord &r) {
   flushPending();
+  spindlePositioned_ = true;
   double a = std::fmod(r.value, 360.0);
   if (a < 0) a += 360;  // the same orientation; M19 R takes 0..360
   std::string angle;

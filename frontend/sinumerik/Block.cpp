@@ -12,8 +12,10 @@ using ir::ExprPtr;
 using ir::Op;
 using ir::OpKind;
 
-bool BlockParser::fail(const Token &t, std::string msg, const char *rule) {
-  if (!failed_) f_.pp.error(loc(t), std::move(msg), rule);
+bool BlockParser::fail(const Token &t, std::string msg, const char *rule) { return failAt(loc(t), std::move(msg), rule); }
+
+bool BlockParser::failAt(SourceLoc l, std::string msg, const char *rule) {
+  if (!failed_) f_.pp.error(l, std::move(msg), rule);
   failed_ = true;
   return false;
 }

@@ -73,6 +73,22 @@ static const GRow kExecuted[] = {
     {"G93", GAct::Mode, ModeValue::InverseTime, 0},
     {"G94", GAct::Mode, ModeValue::PerMinute, 0},
     {"G95", GAct::Mode, ModeValue::PerRev, 0},
+    {"G96", GAct::SpindleMode, ModeValue::Count, 0},
+    {"G961", GAct::SpindleMode, ModeValue::Count, 1},
+    {"G962", GAct::SpindleMode, ModeValue::Count, 2},
+    {"G97", GAct::SpindleMode, ModeValue::Count, 3},
+    {"G971", GAct::SpindleMode, ModeValue::Count, 4},
+    {"G972", GAct::SpindleMode, ModeValue::Count, 5},
+    {"G33", GAct::Mode, ModeValue::ThreadLead, 0},
+    {"G34", GAct::Mode, ModeValue::ThreadLead, 1},   // the lead grows by F every revolution
+    {"G35", GAct::Mode, ModeValue::ThreadLead, -1},  // the lead shrinks by F
+    {"G331", GAct::Mode, ModeValue::TapIn, 0},
+    {"G332", GAct::Mode, ModeValue::TapOut, 0},
+    {"G63", GAct::FloatTap, ModeValue::Count, 0},
+    {"G641", GAct::Smoothing, ModeValue::Continuous, 1},
+    {"G642", GAct::Smoothing, ModeValue::Continuous, 0},
+    {"G643", GAct::Smoothing, ModeValue::Continuous, 0},
+    {"G645", GAct::Smoothing, ModeValue::Continuous, 0},
     {"TRANS", GAct::Frame, ModeValue::Count, (int)FrameKind::Trans},
     {"ATRANS", GAct::Frame, ModeValue::Count, (int)FrameKind::Trans},
     {"ROT", GAct::Frame, ModeValue::Count, (int)FrameKind::Rot},
@@ -82,6 +98,14 @@ static const GRow kExecuted[] = {
     {"MIRROR", GAct::Frame, ModeValue::Count, (int)FrameKind::Mirror},
     {"AMIRROR", GAct::Frame, ModeValue::Count, (int)FrameKind::Mirror},
 };
+
+const SpindleModeArg &spindleModeArg(int arg) {
+  static const SpindleModeArg kArgs[] = {
+      {true, ModeValue::PerRev},  {true, ModeValue::PerMinute},  {true, ModeValue::Count},   // G96 G961 G962
+      {false, ModeValue::PerRev}, {false, ModeValue::PerMinute}, {false, ModeValue::Count},  // G97 G971 G972
+  };
+  return kArgs[arg];
+}
 
 GInfo findGCode(std::string_view name) {
   GInfo g;
@@ -110,15 +134,15 @@ static const AddrInfo kAddrs[] = {
     {"I1", Addr::Via}, {"J1", Addr::Via}, {"K1", Addr::Via},
     {"CR", Addr::Radius}, {"CHF", Addr::Corner}, {"CHR", Addr::Corner}, {"RND", Addr::Corner},
     {"F", Addr::Feed}, {"S", Addr::Speed}, {"T", Addr::Tool}, {"D", Addr::Edge}, {"M", Addr::Misc}, {"G", Addr::G},
-    {"ADIS", Addr::Ignored}, {"ADISPOS", Addr::Ignored},
+    {"ADIS", Addr::Smoothing}, {"ADISPOS", Addr::Smoothing}, {"CTOL", Addr::Smoothing},
+    {"SF", Addr::StartAngle},          {"LIMS", Addr::SpeedLimit},
     {"AR", Addr::Opening},             {"TURN", Addr::Turns},
     {"AP", Addr::Polar},               {"RP", Addr::Polar},
     {"PW", Addr::SplinePoint},         {"SD", Addr::SplinePoint},
     {"PL", Addr::SplinePoint},
     {"RNDM", Addr::Refused, "modal rounding"},
     {"OFFN", Addr::Refused, "a contour offset"},
-    {"SF", Addr::Refused, "a thread's start angle"},
-    {"LIMS", Addr::Refused, "the spindle speed limit of constant cutting speed"},
+    {"OTOL", Addr::Refused, "an orientation tolerance"},
     {"H", Addr::Refused, "an auxiliary function H"},
     {"E", Addr::Refused, "an address without meaning on this machine"},
 };

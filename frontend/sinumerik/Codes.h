@@ -22,7 +22,17 @@ enum class GAct : uint8_t {
   Frame,         // TRANS ROT SCALE MIRROR and their additive forms (arg: FrameKind)
   Units,         // G70/G71/G700/G710 (arg: 0 mm, 1 inch, 2 G70 refused: its feed stays metric)
   Pole,          // G110/G111/G112 (arg: 0 last position, 1 workpiece origin, 2 last pole)
+  SpindleMode,   // G96 G961 G962 G97 G971 G972 (arg: SpindleModeArg): constant cutting speed on/off
+  Smoothing,     // G641 G642 G643 G645: continuous path rounded within a distance or tolerance (arg 1: ADIS)
+  FloatTap,      // G63: tapping with a compensating chuck, one G1 block at the programmed F
 };
+
+// G group 15's constant-cutting-speed codes: the spindle mode and the feed type they set.
+struct SpindleModeArg {
+  bool css;           // G96 G961 G962: S is the cutting speed (m/min)
+  ModeValue feed;     // the feed type they set (Count: unchanged, G962 G972)
+};
+const SpindleModeArg &spindleModeArg(int arg);
 
 enum class FrameKind : uint8_t { Trans, Rot, Scale, Mirror };
 
@@ -58,7 +68,9 @@ enum class Addr : uint8_t {
   Corner,   // CHF (chamfer length), CHR (chamfer legs), RND (rounding)
   SplinePoint,  // PW (a BSPLINE point's weight), SD (the BSPLINE's degree), PL (POLY's parameter interval)
   Feed, Speed, Tool, Edge, Misc, G,
-  Ignored,  // ADIS ADISPOS: rounding distances of G641/G642, which are refused themselves
+  StartAngle,  // SF: a thread's start angle (modal)
+  SpeedLimit,  // LIMS: the spindle speed limit of constant cutting speed
+  Smoothing,   // ADIS ADISPOS CTOL: the rounding distance / contour tolerance of G641-G645
   Refused,  // an address ncc knows but does not simulate (AR, AP, RP, CHR, RNDM, TURN, OFFN, SF, LIMS …)
   None
 };

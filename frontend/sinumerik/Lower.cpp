@@ -48,6 +48,8 @@ bool BlockParser::lowerWords() {
     return std::move(w->value);
   };
   const GInfo *dwell = nullptr, *offset = nullptr, *machine = nullptr, *comp = nullptr, *pole = nullptr;
+  const GInfo *spindleMode = nullptr, *smoothing = nullptr, *floatTap = nullptr;
+  SourceLoc gLoc[2];  // where G641… and G63 stand
   Op mode(OpKind::Mode, loc(t_[0]));
   for (auto &[g, l] : gcodes_) {
     switch (g.act) {
@@ -57,6 +59,7 @@ bool BlockParser::lowerWords() {
       mode.set(modeGroupName(grp), Expr::symbol(modeValueInfo(g.mode).name));
       mode.loc = l;
       f_.followMode(g.mode);
+      if (grp == ModeGroup::Motion) f_.leadChange = g.arg;  // G34/G35: the lead's change
       break;
     }
     case GAct::Pole: pole = &g; break;
@@ -64,6 +67,9 @@ bool BlockParser::lowerWords() {
     case GAct::WorkOffset: offset = &g; break;
     case GAct::MachineCoord: machine = &g; break;
     case GAct::CutterComp: comp = &g; break;
+    case GAct::SpindleMode: spindleMode = &g; break;
+    case GAct::Smoothing: smoothing = &g, gLoc[0] = l; break;
+    case GAct::FloatTap: floatTap = &g, gLoc[1] = l; break;
     default: break;
     }
   }
@@ -80,15 +86,7 @@ bool BlockParser::lowerWords() {
       // S revolutions of the spindle at its programmed speed: 60·S / rpm seconds. A stopped
       // spindle never turns them: an alarm, not a guessed time.
       auto sys = [&](const char *n) { return Expr::var(ir::VarSpace::System, n, nullptr, bl); };
-      Op stopped(OpKind::If, bl);
-      stopped.set("cond", Expr::binary(ir::OpCode::Or, Expr::unary(ir::OpCode::Not, sys("_spindle_on"), bl),
-                                       Expr::binary(ir::OpCode::Le, sys("_rpm"), Expr::number(0, ir::Type::Int), bl), bl));
-      stopped.regions.emplace_back();
-      Op alarm(OpKind::Message, bl);
-      alarm.set("text", Expr::string("G4 S (a dwell in spindle revolutions) needs the spindle turning (S and M3/M4)", bl));
-      alarm.set("kind", Expr::symbol("abort"));
-      stopped.regions[0].push_back(std::move(alarm));
-      out.push_back(std::move(stopped));
+      out.push_back(spindleAlarm(true, "G4 S (a dwell in spindle revolutions) needs the spindle turning (S and M3/M4)"));
       d.set("seconds", Expr::binary(ir::OpCode::Div, Expr::binary(ir::OpCode::Mul, Expr::number(60, ir::Type::Int), std::move(s), bl),
                                     sys("_rpm"), bl));
     } else if (ExprPtr f = take("F")) {
@@ -98,17 +96,23 @@ bool BlockParser::lowerWords() {
     }
     out.push_back(std::move(d));
   }
+  // G34/G35: F is the lead's change per revolution, a word of the thread move, not a feed.
+  ExprPtr leadChange;
+  bool axisWord = false;
+  for (auto &w : words_) axisWord = axisWord || (!w.addr.empty() && findAddress(w.addr)->kind == Addr::Axis);
+  if (f_.motion == ModeValue::ThreadLead && f_.leadChange != 0 && (axisWord || word("F"))) {
+    leadChange = take("F");
+    if (!leadChange) return fail(t_[0], "G34/G35 needs F, the lead's change per revolution", "missing-word");
+    if (f_.leadChange < 0) leadChange = Expr::unary(ir::OpCode::Neg, std::move(leadChange), bl);
+  }
   bool hadFeedOrSpeed = word("F") || word("S");
   if (ExprPtr f = take("F")) {
     Op o(OpKind::Feed, bl);
     o.set("value", std::move(f));
     out.push_back(std::move(o));
   }
-  if (ExprPtr s = take("S")) {
-    Op o(OpKind::Speed, bl);
-    o.set("value", std::move(s));
-    out.push_back(std::move(o));
-  }
+  if (!lowerSpindleMode(spindleMode, take("S"), take("LIMS"), mode, out)) return false;
+  if (!lowerSmoothing(smoothing, gLoc[0], mode)) return false;
   if (ExprPtr t = take("T")) {
     if (t->kind == ir::ExprKind::String) return fail(t_[0], "tool names (T=\"…\") need tool management, which is not simulated", "unsupported-code");
     Op o(OpKind::ToolSelect, bl);
@@ -181,6 +185,7 @@ bool BlockParser::lowerWords() {
   Op mv(OpKind::Move, bl);
   std::string ac, ic;
   bool any = false, path = false;
+  if (leadChange) mv.set("dlead", std::move(leadChange));
   if (denominator) {
     mv.set("denominator", std::move(denominator));
     any = true;
@@ -212,6 +217,11 @@ bool BlockParser::lowerWords() {
       w.value = Expr::binary(ir::OpCode::Add, std::move(w.value), Expr::number(1, ir::Type::Int), w.loc);
       break;
     case Addr::SplinePoint: key = w.addr == "PW" ? "weight" : w.addr == "SD" ? "degree" : "interval"; break;
+    case Addr::StartAngle:  // SF: the executor's thread start angle (modal, kept by G33 blocks)
+      if (f_.motion != ModeValue::ThreadLead)
+        return failAt(w.loc, "SF= (a thread's start angle) is simulated in a G33 block", "unsupported-code");
+      key = "Q";
+      break;
     case Addr::Corner:  // CHF the chamfer's length, CHR its legs along the two moves
       key = w.addr == "CHF" ? "chamfer" : w.addr == "CHR" ? "chamfer_leg" : "round";
       break;
@@ -225,6 +235,7 @@ bool BlockParser::lowerWords() {
     mv.loc = w.loc;
     any = true;
   }
+  if (mv.get("dlead") && !path) return fail(t_[0], "G34/G35 needs the thread's end point in its block", "missing-word");
   if (machine) {
     // G53 / G153 / SUPA: this block's positions in machine coordinates (non-modal).
     if (!path) return fail(t_[0], fmt::format("{} needs axis positions in its block", machine->code->name), "missing-word");
@@ -244,7 +255,10 @@ bool BlockParser::lowerWords() {
   } else if (any) {
     if (!ac.empty()) mv.set("ac", Expr::symbol(ac));
     if (!ic.empty()) mv.set("ic", Expr::symbol(ic));
+    if (floatTap) return lowerFloatTap(gLoc[1], path, std::move(mv), out);
     out.push_back(std::move(mv));
+  } else if (floatTap) {
+    return failAt(gLoc[1], "G63 needs the tapping move in its block", "missing-word");
   } else if (f_.pp.modalCalls && (f_.motion == ModeValue::Rapid || f_.motion == ModeValue::Linear)) {
     // MCALL also runs after a block with G0/G1 alone or with F or S under G0/G1 (L8470-L8479).
     bool g01 = false;
@@ -268,6 +282,96 @@ bool BlockParser::lowerWords() {
       }
     }
   }
+  return true;
+}
+
+// G96/G961/G962 S<m/min> and G97/G971/G972: the spindle mode, the feed type they set, and
+// LIMS=<rpm>, the limit of constant cutting speed (modal, also alone).
+bool BlockParser::lowerSpindleMode(const GInfo *g, ExprPtr s, ExprPtr lims, Op &mode, ir::Region &out) {
+  SourceLoc bl = loc(t_[0]);
+  if (!g && !s && !lims) return true;
+  Op o(OpKind::Speed, bl);
+  if (s) o.set("value", std::move(s));
+  if (lims) o.set("limit", std::move(lims));
+  if (g) {
+    const SpindleModeArg &a = spindleModeArg(g->arg);
+    o.set("mode", Expr::symbol(a.css ? "css" : "rpm"));
+    if (a.feed != ModeValue::Count) mode.set("feed_mode", Expr::symbol(modeValueInfo(a.feed).name));
+  }
+  out.push_back(std::move(o));
+  return true;
+}
+
+// G641 ADIS=d, G642/G643/G645 [CTOL=t]: continuous path whose corners are rounded within the
+// distance or tolerance, the planner's blending tolerance (G64 P; docs/SINUMERIK.md
+// "Continuous path"). ADIS and CTOL count in their block only; ADISPOS (rounding of G0) is 0.
+bool BlockParser::lowerSmoothing(const GInfo *g, SourceLoc gl, Op &mode) {
+  auto find = [&](std::string_view a) -> Word * {
+    for (auto &w : words_)
+      if (w.addr == a) return &w;
+    return nullptr;
+  };
+  Word *adis = find("ADIS"), *ctol = find("CTOL"), *adispos = find("ADISPOS");
+  if (adispos) {
+    if (adispos->value->kind != ir::ExprKind::Number || adispos->value->num != 0)
+      return failAt(adispos->loc, "ADISPOS (rounding of G0 moves) other than 0 is not simulated: ncc's rapid moves stop",
+                    "unsupported-code");
+    adispos->addr.clear();
+  }
+  Word *given = !g ? nullptr : g->arg == 1 ? adis : ctol;
+  const char *want = g && g->arg == 1 ? "ADIS" : "CTOL";
+  for (Word *w : {adis, ctol})
+    if (w && w != given)
+      return failAt(w->loc, g ? fmt::format("{} does not go with {} (it takes {})", w->addr, g->code->name, want)
+                              : fmt::format("{}= is simulated in the block of the G641/G642 it belongs to", w->addr),
+                    "unsupported-code");
+  if (!g) return true;
+  if (g->arg == 1 && !given)
+    return failAt(gl, "G641 needs its rounding distance ADIS= in the block", "missing-word");
+  mode.set("path_mode", Expr::symbol("continuous"));
+  if (given) {
+    mode.set("tolerance", std::move(given->value));
+    given->addr.clear();
+  }
+  return true;
+}
+
+// G63 Z… F…: tapping with a compensating chuck, a straight feed at the programmed F (S x lead):
+// the chuck takes up the difference. Non-modal: the block moves as G1, then the motion mode the
+// program had comes back.
+// An alarm at run time when the spindle stands (or, with `speed`, has no speed): what G4 S and
+// G63 need, which the program text alone cannot tell.
+Op BlockParser::spindleAlarm(bool speed, const char *msg) {
+  SourceLoc bl = loc(t_[0]);
+  auto sys = [&](const char *n) { return Expr::var(ir::VarSpace::System, n, nullptr, bl); };
+  ExprPtr stopped = Expr::unary(ir::OpCode::Not, sys("_spindle_on"), bl);
+  if (speed)
+    stopped = Expr::binary(ir::OpCode::Or, std::move(stopped),
+                           Expr::binary(ir::OpCode::Le, sys("_rpm"), Expr::number(0, ir::Type::Int), bl), bl);
+  Op check(OpKind::If, bl);
+  check.set("cond", std::move(stopped));
+  check.regions.emplace_back();
+  Op alarm(OpKind::Message, bl);
+  alarm.set("text", Expr::string(msg, bl));
+  alarm.set("kind", Expr::symbol("abort"));
+  check.regions[0].push_back(std::move(alarm));
+  return check;
+}
+
+bool BlockParser::lowerFloatTap(SourceLoc gl, bool path, Op mv, ir::Region &out) {
+  SourceLoc bl = loc(t_[0]);
+  if (!path) return failAt(gl, "G63 needs the tapping move in its block", "missing-word");
+  if (f_.motion == ModeValue::Count || !isPathMotion(f_.motion))
+    return failAt(gl, "G63 is simulated with G0-G3 active (programmed before in this subprogram)", "unsupported-code");
+  auto motion = [&](ModeValue v) {
+    Op m(OpKind::Mode, bl);
+    m.set("motion", Expr::symbol(modeValueInfo(v).name));
+    return m;
+  };
+  out.push_back(spindleAlarm(false, "G63 (tapping with a compensating chuck) needs the spindle turning (M3/M4)"));
+  out.push_back(motion(ModeValue::Linear));
+  out.push_back(std::move(mv));
+  if (f_.motion != ModeValue::Linear) out.push_back(motion(f_.motion));
   return true;
 }
 

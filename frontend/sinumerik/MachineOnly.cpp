@@ -44,7 +44,7 @@ const MachineConstruct kConstructs[] = {
     {"OSCILL", kOscillation}, {"OS", kOscillation},    {"OSP1", kOscillation},   {"OSP2", kOscillation},
     {"OST1", kOscillation},  {"OST2", kOscillation},   {"OSE", kOscillation},    {"OSNSC", kOscillation},
     {"OSCTRL", kOscillation}, {"OSB", kOscillation},
-    {"POS", kPositioning},   {"POSA", kPositioning},   {"SPOS", kPositioning},   {"SPOSA", kPositioning},
+    {"POS", kPositioning},   {"POSA", kPositioning},   {"SPOSA", kPositioning},
     {"WAITP", kPositioning}, {"WAITS", kPositioning},
     {"MEAS", kMeasuring},    {"MEAW", kMeasuring},     {"MEASA", kMeasuring},    {"MEAWA", kMeasuring},
 };

@@ -59,6 +59,7 @@ public:
   std::vector<ir::Region *> regions;        // innermost last
   ModeValue plane = ModeValue::XY;  // static: the plane of ROT RPL= (docs/SINUMERIK.md)
   ModeValue motion = ModeValue::Count;  // static: G0/G1 for G53 blocks
+  int leadChange = 0;  // static, with motion G33/G34/G35: 0, +1 (G34: F the lead's growth), -1 (G35)
   ModeValue distance;                    // static: G90/G91 (the main program starts in G90)
   bool poleKnown = true;                 // static: no plane change since the last G110/G111 (docs/SINUMERIK.md)
   bool apKnown = false;                  // static: AP= programmed since the last pole definition
@@ -133,6 +134,11 @@ private:
   std::vector<PolyTerm> poly_;
   bool polyTerm(std::string axis, const Token &at);
   bool lowerPoly(ir::Region &out, ir::ExprPtr &denominator);
+  bool lowerSpindleMode(const GInfo *g, ir::ExprPtr s, ir::ExprPtr lims, ir::Op &mode, ir::Region &out);
+  bool lowerSmoothing(const GInfo *g, SourceLoc gl, ir::Op &mode);
+  bool lowerFloatTap(SourceLoc gl, bool path, ir::Op mv, ir::Region &out);
+  bool spindlePosition();
+  ir::Op spindleAlarm(bool speed, const char *msg);
   std::vector<std::pair<GInfo, SourceLoc>> gcodes_;
   std::vector<std::pair<int, SourceLoc>> mcodes_;
   std::vector<ir::Op> pre_, post_;  // ops before the machine words (assignments) and after (calls)
@@ -143,6 +149,7 @@ private:
   SourceLoc loc(const Token &t) const { return {f_.file, line_, t.col}; }
   SourceLoc loc() const { return loc(tok()); }
   bool fail(const Token &t, std::string msg, const char *rule = "syntax");
+  bool failAt(SourceLoc l, std::string msg, const char *rule);
   bool expect(std::string_view punct);
   bool atEnd() const { return tok().kind == Tok::End; }
 

@@ -20,6 +20,7 @@ bool BlockParser::addressWord() {
   const AddrInfo *full = findAddress(t.text);
   std::string letters = t.text.substr(0, t.digitsAt);
   const AddrInfo *pre = t.digitsAt < t.text.size() ? findAddress(letters) : nullptr;
+  if (t.isName("SPOS")) return spindlePosition();
   GInfo g = findGCode(t.text);
   if (g.code && !(full && peek().is("="))) {
     ++i_;
@@ -108,7 +109,6 @@ bool BlockParser::addressWord() {
   }
   const AddrInfo *a = findAddress(w.addr);
   if (a->kind == Addr::Refused) return fail(t, fmt::format("{} ({}) is not simulated", w.addr, a->why), "unsupported-code");
-  if (a->kind == Addr::Ignored) return true;
   if (a->kind == Addr::Misc) {
     if (w.value->kind != ir::ExprKind::Number || w.value->num != std::floor(w.value->num) || w.value->num < 0)
       return fail(t, "an M function is a constant non-negative integer (M=expressions are not simulated)", "unsupported-code");
@@ -118,6 +118,37 @@ bool BlockParser::addressWord() {
   for (auto &o : words_)
     if (o.addr == w.addr) return fail(t, fmt::format("address {} is programmed twice in the block", w.addr), "duplicate-word");
   words_.push_back(std::move(w));
+  return true;
+}
+
+// SPOS=<degrees>: the spindle stops at the angle in position control (what G331/G332 need),
+// the shortest way (as DC); SPOS=DC(a) / ACP(a) / ACN(a) the shortest way, turning positive (M3's
+// way) or negative. SPOS=IC(…) and SPOS[n] (other spindles) are not simulated.
+bool BlockParser::spindlePosition() {
+  const Token &t = tok();
+  if (!peek().is("="))
+    return fail(t, "SPOS takes =<angle> (SPOS[n] and the other spindles are not simulated)", "unsupported-code");
+  i_ += 2;
+  static const char *kWays[][2] = {{"DC", "shortest"}, {"ACP", "cw"}, {"ACN", "ccw"}};
+  const char *way = "shortest";
+  bool wrapped = false;
+  if (tok().kind == Tok::Name && peek().is("(")) {
+    const char *found = nullptr;
+    for (auto &w : kWays)
+      if (tok().isName(w[0])) found = w[1];
+    if (!found)
+      return fail(tok(), fmt::format("SPOS={}(…) is not simulated (SPOS=<angle>, DC, ACP and ACN are)", tok().text),
+                  "unsupported-code");
+    way = found, wrapped = true;
+    i_ += 2;
+  }
+  ExprPtr a = expr(0);
+  if (!a || (wrapped && !expect(")"))) return false;
+  Op o(OpKind::Spindle, loc(t));
+  o.set("dir", Expr::symbol("orient"));
+  o.set("angle", std::move(a));
+  o.set("way", Expr::symbol(way));
+  pre_.push_back(std::move(o));
   return true;
 }
 

@@ -307,6 +307,47 @@ bool sinCycle840(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
   return true;
 }
 
+// CYCLE84 (seed000c, [model]), rigid tapping: rapid to RFP + SDIS, oriented stop at POSS, G331 to
+// the depth at SST with the pitch (MPIT's ISO coarse pitch or PIT), G332 back to RFP + SDIS, the
+// spindle as SDAC says (3 M3, 4 M4, 5 stop), rapid to RTP. The tap is one rigid-tap record pair,
+// so a dwell at the depth (DTB), another retraction speed (SST1), deep tapping (_VARI) and the
+// technology settings (_TECHNO) are refused. The hand (the sign of MPIT/PIT or _AMODE's 4th
+// digit) only turns the spindle the other way: the path is the same.
+bool sinCycle84(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  SinHole s;
+  if (!sinLevels(a, ctx, s, err)) return false;
+  const int sdac = a.has("SDAC") ? (int)a.get("SDAC") : 5;
+  if (sdac != 3 && sdac != 4 && sdac != 5) return fail(err, "SDAC (direction after the cycle) must be 3, 4 or 5");
+  if (a.get("_PITA") != 0 && a.get("_PITA") != 1) return fail(err, "_PITA other than mm (0, 1) is not supported");
+  if (a.get("_TECHNO") != 0) return fail(err, "_TECHNO (exact stop, feedforward, acceleration settings) is not supported");
+  if (digit(a.get("_VARI"), 1) != 0) return fail(err, "deep-hole tapping (_VARI 1 or 2: pecks with G332) is not supported");
+  if (a.get("DTB") != 0)
+    return fail(err, "a dwell at the thread depth (DTB) is not supported: the tap is one rigid-tap record down and back");
+  double pitch = std::fabs(a.get("PIT"));
+  if (a.has("MPIT") && a.get("MPIT") != 0 && a.get("_PITA") == 0) {
+    pitch = metricCoarsePitch(std::fabs(a.get("MPIT")));
+    if (pitch == 0) return fail(err, "MPIT must be an ISO metric size 3..48 (M3..M48)");
+  }
+  if (!(pitch > 0)) return fail(err, "MPIT or PIT (the thread pitch) is required");
+  const double sst = a.get("SST"), sst1 = a.get("SST1");
+  if (sst < 0 || sst1 < 0) return fail(err, "SST and SST1 (spindle speeds) must not be negative");
+  if (!(sst > 0) && !(ctx.speed > 0)) return fail(err, "CYCLE84 needs a spindle speed: SST or S before the cycle");
+  if (sst1 > 0 && sst1 != (sst > 0 ? sst : ctx.speed))
+    return fail(err, "a retraction speed SST1 other than the tapping speed is not supported (the tap is one record)");
+  if (ctx.position[planeAxes((Plane)s.plane).n] != s.start) atLevel(ctx, s.plane, s.start, out);
+  CycleStep orient;
+  orient.kind = CycleStepKind::SpindleOrient;
+  orient.angle = a.get("POSS");
+  out.push_back(orient);
+  atLevel(ctx, s.plane, s.bottom, out);
+  out.back().kind = CycleStepKind::RigidTap;
+  out.back().lead = pitch;
+  out.back().speed = sst;
+  spindleStep(sdac - 2, out);  // 3 M3, 4 M4, 5 stop
+  atLevel(ctx, s.plane, s.rtp, out);
+  return true;
+}
+
 // ---- Heidenhain drilling cycles (seed002a 200, 201, 203): levels as heiLevels (Entry.h); depth
 // 0: the cycle does nothing.
 double heiDwell(const CycleArgs &a, const char *k) { return a.get(k) > 0 ? a.get(k) : -1; }
@@ -648,6 +689,8 @@ const CycleDef kHoleEntries[] = {
     {"sin.CYCLE85", "RTP RFP SDIS DP DPR DTB FFR RFF _GMODE _DMODE _AMODE", "Sinumerik reaming", sinCycle85, nullptr, kDrillCoords},
     {"sin.CYCLE86", "RTP RFP SDIS DP DPR DTB SDIR RPA RPO RPAP POSS _GMODE _DMODE _AMODE",
      "Sinumerik boring with oriented stop and lift-off", sinCycle86, nullptr, kDrillCoords},
+    {"sin.CYCLE84", "RTP RFP SDIS DP DPR DTB SDAC MPIT PIT POSS SST SST1 _AXN _PITA _TECHNO _VARI _DAM _VRT _PITM _PTAB _PTABA _GMODE _DMODE _AMODE",
+     "Sinumerik rigid tapping", sinCycle84, nullptr, kDrillCoords},
     {"sin.CYCLE840", "RTP RFP SDIS DP DPR DTB SDR SDAC ENC MPIT PIT _AXN _PITA _TECHNO _PITM _PTAB _PTABA _GMODE _DMODE _AMODE",
      "Sinumerik tapping with a compensating chuck", sinCycle840, nullptr, kDrillCoords},
     {"sin.HOLES1", "SPCA SPCO STA1 FDIS DBH NUM _VARI _UMODE _HIDE _NSP _DMODE", "Sinumerik row of holes", nullptr,

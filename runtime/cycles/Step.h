@@ -6,7 +6,10 @@
 
 namespace ncc {
 
-enum class CycleStepKind : uint8_t { Rapid, Feed, Arc, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient };
+// RigidTap: a tap without a compensating chuck (Sinumerik CYCLE84's G331/G332), spindle-
+// synchronised down to `pos` along the drilling axis and back to where it began (two Motion IR
+// thread records, sync tap_in / tap_out); the spindle is in position control (an orient before).
+enum class CycleStepKind : uint8_t { Rapid, Feed, Arc, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient, RigidTap };
 
 struct CycleStep {
   CycleStepKind kind = CycleStepKind::Rapid;
@@ -14,6 +17,8 @@ struct CycleStep {
   double seconds = 0;           // Dwell
   double feed = 0;              // Feed, Arc: mm/min, 0 = the programmed feed
   double angle = 0;             // SpindleOrient: degrees (the shortest way)
+  double lead = 0;              // RigidTap: mm per spindle revolution along the drilling axis
+  double speed = 0;             // RigidTap: the tapping speed, rpm (0: the active S)
   // Arc: an exact circular move in the active plane about `centre` (its drilling-axis coordinate
   // is ignored), counter-clockwise about the plane's normal when `ccw`; the drilling-axis
   // coordinate may change on the way (a helix). An end equal to the start is a full circle;

@@ -316,6 +316,7 @@ std::string steps(const std::vector<CycleStep> &s) {
     case CycleStepKind::SpindleCW: std::snprintf(b, sizeof b, "CW "); break;
     case CycleStepKind::SpindleCCW: std::snprintf(b, sizeof b, "CCW "); break;
     case CycleStepKind::SpindleOrient: std::snprintf(b, sizeof b, "O%g ", st.angle); break;
+    case CycleStepKind::RigidTap: std::snprintf(b, sizeof b, "T%g/%g ", st.pos[2], st.lead); break;
     }
     out += b;
   }

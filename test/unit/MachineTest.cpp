@@ -426,7 +426,8 @@ TEST(Machine, LoadFileAndMissingFile) {
 TEST(Machine, ShippedMachinesLoad) {
   std::string root = NCC_SOURCE_DIR;
   int n = 0;
-  for (const char *dir : {"/runtime/machines", "/examples/machines", "/test/lit/emit/Inputs", "/test/lit/oracle/Inputs"})
+  for (const char *dir : {"/runtime/machines", "/examples/machines", "/test/lit/emit/Inputs", "/test/lit/oracle/Inputs",
+                          "/test/programs/sinumerik"})
     for (auto &e : std::filesystem::directory_iterator(root + dir)) {
       if (e.path().extension() != ".toml") continue;
       Machine m;
@@ -434,7 +435,7 @@ TEST(Machine, ShippedMachinesLoad) {
       EXPECT_TRUE(Machine::load(e.path().string(), m, err)) << err;
       ++n;
     }
-  EXPECT_EQ(n, 14);  // default, 8 examples, 4 emitter test machines, the oracle machine
+  EXPECT_EQ(n, 16);  // default, 9 examples, 4 emitter test machines, the oracle machine, the shop programs' mill
   // The embedded text is the file.
   std::ifstream f(root + "/runtime/machines/default-mill.toml");
   std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());

@@ -98,7 +98,8 @@ TEST(SinCodes, GroupsAndInitialSettings) {
   EXPECT_EQ(findGCode("G1").act, GAct::Mode);
   EXPECT_EQ(findGCode("G17").act, GAct::Mode);
   EXPECT_EQ(findGCode("G450").act, GAct::Default);
-  EXPECT_EQ(findGCode("G33").act, GAct::Unsupported);
+  EXPECT_EQ(findGCode("G33").act, GAct::Mode);
+  EXPECT_EQ(findGCode("G335").act, GAct::Unsupported);
   EXPECT_EQ(findGCode("NOSUCH").code, nullptr);
 }
 
