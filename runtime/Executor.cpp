@@ -593,6 +593,14 @@ bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
+  // The flat path's commands first (issue 6): a block start or a mode without words needs none
+  // of the word checks below, a plain G0/G1 skips the general motion machinery.
+  if (!c.mask && c.kind == CmdKind::Block) return x.beginBlock(c);
+  if (!c.mask && c.kind == CmdKind::Mode) return x.execMode(c);
+  if (x.plainMoveFits(c)) {
+    x.plainMove(c);
+    return true;
+  }
   if (c.kind == CmdKind::Cycle) return x.execCycle(c);  // its words are parameters, not axes
   // Never let NaN or infinity reach positions: a diagnostic instead.
   for (WordMask m = c.mask; m; m &= m - 1) {  // only the words present (all 64 bits)
@@ -615,15 +623,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.warning("motion after the end of the program (M2/M30)", "code-after-end");
   }
   switch (c.kind) {
-  case CmdKind::Block:
-    x.prevBlockFrame = x.curBlockFrame;
-    x.curBlockFrame = false;
-    ++x.blocks;
-    x.blockNumber = c.blockNumber;
-    x.blockLoc = c.loc;
-    x.feedInBlock = false;
-    x.stopOnce = false;
-    return true;
+  case CmdKind::Block: return x.beginBlock(c);
   case CmdKind::Message:
     if (c.sub == (uint8_t)MessageKind::Abort)  // LinuxCNC (ABORT,…): the run stops here
       return x.error(c.text ? c.text : "", "abort");

@@ -318,7 +318,24 @@ struct Executor::Impl {
   bool compForbids(const char *msg) { return comp.active() ? error(msg, "cutcomp-conflict") : true; }
 
   // --- motion (ExecutorMotion.cpp) ---
+  bool beginBlock(const MachineCmd &c) {
+    prevBlockFrame = curBlockFrame;
+    curBlockFrame = false;
+    ++blocks;
+    blockNumber = c.blockNumber;
+    blockLoc = c.loc;
+    feedInBlock = false;
+    stopOnce = false;
+    return true;
+  }
   bool execMove(const MachineCmd &c);
+  // The plain move (issue 6, the flat path): a G0/G1 with axis words only while nothing that
+  // reshapes or holds moves is active (frames, compensation, corners, splines, CSS, inverse time,
+  // a modal cycle, G9, ...). plainMove does what execMove, moveTo, emitMove, pathOut and emit do
+  // for it, into one reused record; plainMoveFits says when (Executor::exec).
+  bool plainMoveFits(const MachineCmd &c) const;
+  void plainMove(const MachineCmd &c);
+  MotionRecord plainRecord;  // plainMove's record: only the fields record() and moveTo set change
   bool execHome(const MachineCmd &c);
   bool execMachineMove(const MachineCmd &c);
   // feed: mm/min of this move (a cycle step's own feed), 0 = the modal feed.
