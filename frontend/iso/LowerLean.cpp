@@ -17,6 +17,11 @@ namespace {
 constexpr GGroup kModesBeforeMotion[] = {GGroup::Plane, GGroup::Units, GGroup::PathMode, GGroup::Distance,
                                          GGroup::ArcDistance, GGroup::Retract};
 constexpr uint32_t groupBit(GGroup g) { return 1u << (unsigned)g; }
+constexpr uint32_t kModesBeforeMotionBits = [] {
+  uint32_t bits = 0;
+  for (GGroup g : kModesBeforeMotion) bits |= groupBit(g);
+  return bits;
+}();
 constexpr uint32_t kLeanGroups = groupBit(GGroup::FeedMode) | groupBit(GGroup::Plane) | groupBit(GGroup::Units) |
                                  groupBit(GGroup::PathMode) | groupBit(GGroup::Distance) |
                                  groupBit(GGroup::ArcDistance) | groupBit(GGroup::Retract) | groupBit(GGroup::Motion);
@@ -79,7 +84,7 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
     c.set(Word::F, constValue(*f, factor(Scale::Feed)));
     if (!issue()) return false;
   }
-  if (groups & ~groupBit(GGroup::FeedMode))
+  if (groups & kModesBeforeMotionBits)
     for (GGroup g : kModesBeforeMotion)
       if (!mode(g)) return false;
   if (!mode(GGroup::Motion)) return false;
