@@ -590,6 +590,21 @@ bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
   return count == 0 || exec(last);
 }
 
+// Here, not in ExecutorMotion.cpp with plainMove: exec inlines it.
+bool Executor::Impl::plainMoveFits(const MachineCmd &c) const {
+  const WordMask axes = c.mask & kAxisMask;
+  if (c.kind != CmdKind::Move || !axes || axes != c.mask || c.sub || c.sub2 || (c.mask & missingAxes)) return false;
+  if (st.motion != ModeValue::Linear && st.motion != ModeValue::Rapid) return false;
+  if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
+  if (st.feedMode == ModeValue::InverseTime || st.css || st.ended || stopOnce || pf.linear || rotated() ||
+      poly.outside || corner.active || corner.requested || comp.active() || compExit || sinSpline.open ||
+      storedCycle.modal)
+    return false;
+  for (WordMask m = axes; m; m &= m - 1)  // exec's check: a bad number gets its diagnostic there
+    if (!std::isfinite(c.w[__builtin_ctzll(m)])) return false;
+  return true;
+}
+
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
@@ -601,6 +616,12 @@ bool Executor::exec(const MachineCmd &c) {
     x.plainMove(c);
     return true;
   }
+  return x.execCommand(c);
+}
+
+// Every other command (out of line: the fast paths above stay a small function).
+bool Executor::Impl::execCommand(const MachineCmd &c) {
+  Impl &x = *this;
   if (c.kind == CmdKind::Cycle) return x.execCycle(c);  // its words are parameters, not axes
   // Never let NaN or infinity reach positions: a diagnostic instead.
   for (WordMask m = c.mask; m; m &= m - 1) {  // only the words present (all 64 bits)

@@ -328,6 +328,7 @@ struct Executor::Impl {
     stopOnce = false;
     return true;
   }
+  bool execCommand(const MachineCmd &c);  // Executor::exec past its fast paths
   bool execMove(const MachineCmd &c);
   // The plain move (issue 6, the flat path): a G0/G1 with axis words only while nothing that
   // reshapes or holds moves is active (frames, compensation, corners, splines, CSS, inverse time,

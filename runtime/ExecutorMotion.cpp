@@ -167,20 +167,6 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   }
 }
 
-bool Executor::Impl::plainMoveFits(const MachineCmd &c) const {
-  const WordMask axes = c.mask & kAxisMask;
-  if (c.kind != CmdKind::Move || !axes || axes != c.mask || c.sub || c.sub2 || (c.mask & missingAxes)) return false;
-  if (st.motion != ModeValue::Linear && st.motion != ModeValue::Rapid) return false;
-  if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
-  if (st.feedMode == ModeValue::InverseTime || st.css || st.ended || stopOnce || pf.linear || rotated() ||
-      poly.outside || corner.active || corner.requested || comp.active() || compExit || sinSpline.open ||
-      storedCycle.modal)
-    return false;
-  for (WordMask m = axes; m; m &= m - 1)  // exec's check: a bad number gets its diagnostic there
-    if (!std::isfinite(c.w[__builtin_ctzll(m)])) return false;
-  return true;
-}
-
 void Executor::Impl::plainMove(const MachineCmd &c) {
   // target() without a frame: each axis word plus offset(i), the same sums in the same order.
   const bool inc = st.distance == ModeValue::Incremental;
