@@ -152,12 +152,15 @@ MotionRecord Executor::Impl::pathModeRecord() const {
   return r;
 }
 
+// G0/G1 repeated (a loop's every iteration, every line of a flat program): with that mode in
+// force and nothing execMode's Motion case resets still set, the command changes nothing.
+bool Executor::Impl::modeRepeats(const MachineCmd &c) const {
+  return c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
+         st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff;
+}
+
 bool Executor::Impl::execMode(const MachineCmd &c) {
-  // G0/G1 repeated in a loop's every iteration: with that mode in force and nothing the Motion
-  // case below resets still set, the command changes nothing.
-  if (c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
-      st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff)
-    return true;
+  if (modeRepeats(c)) return true;
   for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
@@ -611,7 +614,7 @@ bool Executor::exec(const MachineCmd &c) {
   // The flat path's commands first (issue 6): a block start or a mode without words needs none
   // of the word checks below, a plain G0/G1 skips the general motion machinery.
   if (!c.mask && c.kind == CmdKind::Block) return x.beginBlock(c);
-  if (!c.mask && c.kind == CmdKind::Mode) return x.execMode(c);
+  if (!c.mask && c.kind == CmdKind::Mode) return x.modeRepeats(c) || x.execMode(c);
   if (x.plainMoveFits(c)) {
     x.plainMove(c);
     return true;

@@ -260,6 +260,7 @@ struct Executor::Impl {
   AxisVec target(const MachineCmd &c) const;
 
   bool execMode(const MachineCmd &c);
+  bool modeRepeats(const MachineCmd &c) const;  // a G0/G1 already in force: execMode has nothing to do
   bool execToolLength(const MachineCmd &c);
   bool offsetToolLength(const MachineCmd &c, ToolLengthForm form);  // LinuxCNC G43.1 / G43.2
   bool setToolNumber(double q);                                     // LinuxCNC M61 Q
