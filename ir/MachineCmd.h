@@ -179,15 +179,18 @@ struct MachineCmd {
   // Back to MachineCmd{}: the fields before the words, and only the words the mask says were set
   // (set() is the only writer), not all of them. For commands reused per block.
   void clear() {
-    for (WordMask m = mask; m; m &= m - 1) w[__builtin_ctzll(m)] = 0;
+    clearWords();
     kind = CmdKind::Block;
     sub = sub2 = 0;
     for (uint8_t i = 0; i < nmodes; ++i) modes[i] = {};
     nmodes = 0;
-    mask = 0;
     blockNumber = -1;
     loc = {};
     text = nullptr;
+  }
+  void clearWords() {  // the words only, back to none set
+    for (WordMask m = mask; m; m &= m - 1) w[__builtin_ctzll(m)] = 0;
+    mask = 0;
   }
 };
 

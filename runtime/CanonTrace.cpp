@@ -14,7 +14,7 @@ namespace {
 constexpr size_t kFlushAt = 1 << 16;
 // The longest prefix ("%5d N%-6lld ") and the longest move line after it: a name, nine numbers
 // with their separators, the arc's turns and the parentheses.
-constexpr size_t kPrefixMax = 48;
+constexpr size_t kPrefixMax = 56;
 constexpr size_t kMoveMax = 64 + 9 * (kFixed4Max + 2);
 // Arc argument order per plane: first and second plane axis, normal axis (rs274's ARC_FEED).
 constexpr int kArcAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
@@ -37,7 +37,7 @@ char *nums(char *p, const double *v, int n) {
 
 CanonTraceWriter::CanonTraceWriter(std::FILE *out) : out_(out), buf_(kFlushAt + 2 * kMoveMax) {
   std::memset(seq_, ' ', sizeof seq_);
-  seq_[sizeof seq_ - 1] = '0';
+  seq_[kSeqEnd - 1] = '0';
 }
 
 // After finish() the stream may already be closed by its owner (AtomicFile::commit): no access.
@@ -86,7 +86,7 @@ char *CanonTraceWriter::axes(char *p, const double *v, int n) {
 char *CanonTraceWriter::begin(int64_t n, size_t after) {
   // "%5d " then the N column: "N....." + blank, or N and the number left-aligned in 6 columns.
   // The counter counts up in its text; the N column is formatted when the block changes.
-  int i = sizeof seq_ - 1;
+  int i = kSeqEnd - 1;
   for (; seq_[i] == '9'; --i) seq_[i] = '0';
   seq_[i] = seq_[i] == ' ' ? '1' : char(seq_[i] + 1);
   if (i < seqFirst_) seqFirst_ = i;
@@ -104,9 +104,13 @@ char *CanonTraceWriter::begin(int64_t n, size_t after) {
     blockColLen_ = (size_t)(q - blockCol_);
   }
   char *p = len_ + kPrefixMax + after + 1 <= buf_.size() ? buf_.data() + len_ : room(kPrefixMax + after + 1);
-  p = put(p, std::string_view(seq_ + seqFirst_, sizeof seq_ - seqFirst_));
+  // Fixed-size copies (the room reserved covers them; the bytes past the text are overwritten).
+  const size_t seqLen = (size_t)(kSeqEnd - seqFirst_);
+  if (seqLen <= 16) std::memcpy(p, seq_ + seqFirst_, 16), p += seqLen;
+  else p = put(p, std::string_view(seq_ + seqFirst_, seqLen));
   *p++ = ' ';
-  return put(p, std::string_view(blockCol_, blockColLen_));
+  std::memcpy(p, blockCol_, 24);
+  return p + blockColLen_;
 }
 
 void CanonTraceWriter::end(char *p) {

@@ -48,8 +48,10 @@ private:
   std::FILE *out_;
   std::vector<char> buf_;  // its size is the capacity; len_ characters are in use
   size_t len_ = 0;
-  // The line counter as "%5d" text, counted up in place: the digits end at seq_ + 24.
-  char seq_[24];
+  // The line counter as "%5d" text, counted up in place: the digits end at seq_ + kSeqEnd. The
+  // bytes after them are there so that begin() copies sixteen at a time.
+  static constexpr int kSeqEnd = 24;
+  char seq_[kSeqEnd + 16];
   int seqFirst_ = 19;
   struct Column {
     uint64_t bits = 0;  // of the double last formatted; +0.0 to start with
@@ -57,7 +59,7 @@ private:
     char text[16] = "0.0000";  // copied whole (fixed size): the bytes past len do not matter
   };
   Column columns_[kAxes];
-  int64_t lastBlock_ = -1;  // the N column of the last prefix, kept as text
+  int64_t lastBlock_ = -1;  // the N column of the last prefix, kept as text (copied 24 bytes at a time)
   char blockCol_[32];
   size_t blockColLen_ = 0;
   bool started_ = false, finished_ = false, ioError_ = false;

@@ -152,12 +152,15 @@ MotionRecord Executor::Impl::pathModeRecord() const {
   return r;
 }
 
+// G0/G1 repeated (a loop's every iteration, every line of a flat program): with that mode in
+// force and nothing execMode's Motion case resets still set, the command changes nothing.
+bool Executor::Impl::modeRepeats(const MachineCmd &c) const {
+  return c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
+         st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff;
+}
+
 bool Executor::Impl::execMode(const MachineCmd &c) {
-  // G0/G1 repeated in a loop's every iteration: with that mode in force and nothing the Motion
-  // case below resets still set, the command changes nothing.
-  if (c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
-      st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff)
-    return true;
+  if (modeRepeats(c)) return true;
   for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
@@ -594,9 +597,38 @@ bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
   return count == 0 || exec(last);
 }
 
+// Here, not in ExecutorMotion.cpp with plainMove: exec inlines it.
+bool Executor::Impl::plainMoveFits(const MachineCmd &c) const {
+  const WordMask axes = c.mask & kAxisMask;
+  if (c.kind != CmdKind::Move || !axes || axes != c.mask || c.sub || c.sub2 || (c.mask & missingAxes)) return false;
+  if (st.motion != ModeValue::Linear && st.motion != ModeValue::Rapid) return false;
+  if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
+  if (st.feedMode == ModeValue::InverseTime || st.css || st.ended || stopOnce || pf.linear || rotated() ||
+      poly.outside || corner.active || corner.requested || comp.active() || compExit || sinSpline.open ||
+      storedCycle.modal)
+    return false;
+  for (WordMask m = axes; m; m &= m - 1)  // exec's check: a bad number gets its diagnostic there
+    if (!std::isfinite(c.w[__builtin_ctzll(m)])) return false;
+  return true;
+}
+
 bool Executor::exec(const MachineCmd &c) {
   Impl &x = *impl_;
   x.loc = c.loc.valid() ? c.loc : x.blockLoc;
+  // The flat path's commands first (issue 6): a block start or a mode without words needs none
+  // of the word checks below, a plain G0/G1 skips the general motion machinery.
+  if (!c.mask && c.kind == CmdKind::Block) return x.beginBlock(c);
+  if (!c.mask && c.kind == CmdKind::Mode) return x.modeRepeats(c) || x.execMode(c);
+  if (x.plainMoveFits(c)) {
+    x.plainMove(c);
+    return true;
+  }
+  return x.execCommand(c);
+}
+
+// Every other command (out of line: the fast paths above stay a small function).
+bool Executor::Impl::execCommand(const MachineCmd &c) {
+  Impl &x = *this;
   if (c.kind == CmdKind::Cycle) return x.execCycle(c);  // its words are parameters, not axes
   // Never let NaN or infinity reach positions: a diagnostic instead.
   for (WordMask m = c.mask; m; m &= m - 1) {  // only the words present (all 64 bits)
@@ -619,15 +651,7 @@ bool Executor::exec(const MachineCmd &c) {
     x.warning("motion after the end of the program (M2/M30)", "code-after-end");
   }
   switch (c.kind) {
-  case CmdKind::Block:
-    x.prevBlockFrame = x.curBlockFrame;
-    x.curBlockFrame = false;
-    ++x.blocks;
-    x.blockNumber = c.blockNumber;
-    x.blockLoc = c.loc;
-    x.feedInBlock = false;
-    x.stopOnce = false;
-    return true;
+  case CmdKind::Block: return x.beginBlock(c);
   case CmdKind::Message:
     if (c.sub == (uint8_t)MessageKind::Abort)  // LinuxCNC (ABORT,…): the run stops here
       return x.error(c.text ? c.text : "", "abort");

@@ -261,6 +261,7 @@ struct Executor::Impl {
   AxisVec target(const MachineCmd &c) const;
 
   bool execMode(const MachineCmd &c);
+  bool modeRepeats(const MachineCmd &c) const;  // a G0/G1 already in force: execMode has nothing to do
   bool execToolLength(const MachineCmd &c);
   bool offsetToolLength(const MachineCmd &c, ToolLengthForm form);  // LinuxCNC G43.1 / G43.2
   bool setToolNumber(double q);                                     // LinuxCNC M61 Q
@@ -319,7 +320,25 @@ struct Executor::Impl {
   bool compForbids(const char *msg) { return comp.active() ? error(msg, "cutcomp-conflict") : true; }
 
   // --- motion (ExecutorMotion.cpp) ---
+  bool beginBlock(const MachineCmd &c) {
+    prevBlockFrame = curBlockFrame;
+    curBlockFrame = false;
+    ++blocks;
+    blockNumber = c.blockNumber;
+    blockLoc = c.loc;
+    feedInBlock = false;
+    stopOnce = false;
+    return true;
+  }
+  bool execCommand(const MachineCmd &c);  // Executor::exec past its fast paths
   bool execMove(const MachineCmd &c);
+  // The plain move (issue 6, the flat path): a G0/G1 with axis words only while nothing that
+  // reshapes or holds moves is active (frames, compensation, corners, splines, CSS, inverse time,
+  // a modal cycle, G9, ...). plainMove does what execMove, moveTo, emitMove, pathOut and emit do
+  // for it, into one reused record; plainMoveFits says when (Executor::exec).
+  bool plainMoveFits(const MachineCmd &c) const;
+  void plainMove(const MachineCmd &c);
+  MotionRecord plainRecord;  // plainMove's record: only the fields record() and moveTo set change
   bool execHome(const MachineCmd &c);
   bool execMachineMove(const MachineCmd &c);
   // feed: mm/min of this move (a cycle step's own feed), 0 = the modal feed.

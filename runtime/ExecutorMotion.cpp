@@ -172,6 +172,35 @@ bool Executor::Impl::execMove(const MachineCmd &c) {
   }
 }
 
+void Executor::Impl::plainMove(const MachineCmd &c) {
+  // target() without a frame: each axis word plus offset(i), the same sums in the same order.
+  const bool inc = st.distance == ModeValue::Incremental;
+  const double unit = scale(), xUnit = axisScale(0);
+  AxisVec to = st.position;
+  for (WordMask m = c.mask; m; m &= m - 1) {
+    const int i = __builtin_ctzll(m);
+    const double v = c.w[i] * (i == 0 ? xUnit : isLengthAxis(i) ? unit : 1.0);
+    const double off = offset(i);
+    to[i] = (inc ? to[i] - off + v : v) + off;
+  }
+  // moveTo's record (record() + end, exactStop, feed), notePath, then emit straight to the sink.
+  const RecordKind k = st.motion == ModeValue::Linear ? RecordKind::Linear : RecordKind::Rapid;
+  MotionRecord &r = plainRecord;
+  r.kind = k;
+  r.plane = plane();
+  r.blockNumber = blockNumber;
+  r.loc = loc;
+  r.start = st.position;
+  r.end = to;
+  r.exactStop = st.pathMode == ModeValue::ExactStop;
+  r.feed = k == RecordKind::Linear ? moveFeed(0) : 0;  // not inverse time: the length does not matter
+  if (to[0] != r.start[0] || to[1] != r.start[1] || to[2] != r.start[2])
+    lastPath.kind = k, lastPath.start = r.start, lastPath.end = to;
+  st.position = to;
+  threadChain = false;
+  sink.record(r);
+}
+
 bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   const ArcAxes &ax = kArcAxes[(int)plane()];
   const char *code = cw ? "G2" : "G3";

@@ -55,7 +55,9 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
 // True when the text can be parsed block by block: no Macro B control flow (IF/WHILE/GOTO/DO/
 // END), no M98/M99/G65/G66, no RS274 O-words and no O-number program after the main program.
 // With `sm`, the text is `file`'s, whose scanned pages may leave memory (SourceManager::released).
-bool isoIsStreamable(std::string_view text, const SourceManager *sm = nullptr, uint32_t file = 0);
+// `byLines`: the pre-scan's line by line walk over the whole text (the unit test's reference for
+// the bulk scan that follows the first block otherwise).
+bool isoIsStreamable(std::string_view text, const SourceManager *sm = nullptr, uint32_t file = 0, bool byLines = false);
 
 class IsoBlockStream {
 public:

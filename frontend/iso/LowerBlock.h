@@ -210,6 +210,10 @@ struct BlockLowerer::Block {
   }
   bool finish();         // assignments, unused words
   // The lean path (LowerLean.cpp), after classify().
+  // classify() of the usual plain block (G codes already in the lowerer's cache, one per group,
+  // no G65/G66, no M code, each other letter once), else false (the masks untouched) and
+  // classify() decides.
+  bool leanClassify();
   bool leanFits() const;
   bool leanEmit(CmdSink &sink);
 };

@@ -17,6 +17,11 @@ namespace {
 constexpr GGroup kModesBeforeMotion[] = {GGroup::Plane, GGroup::Units, GGroup::PathMode, GGroup::Distance,
                                          GGroup::ArcDistance, GGroup::Retract};
 constexpr uint32_t groupBit(GGroup g) { return 1u << (unsigned)g; }
+constexpr uint32_t kModesBeforeMotionBits = [] {
+  uint32_t bits = 0;
+  for (GGroup g : kModesBeforeMotion) bits |= groupBit(g);
+  return bits;
+}();
 constexpr uint32_t kLeanGroups = groupBit(GGroup::FeedMode) | groupBit(GGroup::Plane) | groupBit(GGroup::Units) |
                                  groupBit(GGroup::PathMode) | groupBit(GGroup::Distance) |
                                  groupBit(GGroup::ArcDistance) | groupBit(GGroup::Retract) | groupBit(GGroup::Motion);
@@ -39,6 +44,30 @@ static bool plainWords(const ParsedBlock &b) {
   return true;
 }
 
+bool BlockLowerer::Block::leanClassify() {
+  uint32_t g = 0, present = 0;  // groups and bw.present, kept in registers
+  for (IsoWord &w : b.words) {
+    if (w.letter == 'G') {
+      const int code = L.gCacheSlot(w.value);
+      if (code < 0 || code == 65 || code == 66) return false;  // a macro call makes every word an argument
+      const GCodeInfo *gi = L.gCache_[code];
+      if (!gi) return false;
+      const uint32_t bit = groupBit(gi->group);
+      if (g & bit) return false;  // two codes of a group: classify's rules and messages
+      gs[(size_t)gi->group] = {gi, &w};
+      g |= bit;
+    } else {
+      if (w.letter < 'A' || w.letter > 'Z' || w.letter == 'M') return false;
+      const uint32_t bit = Words::bit(w.letter);
+      if (present & bit) return false;  // a duplicate word: classify's message
+      bw.w[Words::slot(w.letter)] = &w;
+      present |= bit;
+    }
+  }
+  groups = g, bw.present = present;
+  return true;
+}
+
 // After classify(): only mode codes of the lean groups, no M code, a plain motion mode, and words
 // the block's mode and move use (an unused word takes lowerActions, which reports it).
 bool BlockLowerer::Block::leanFits() const {
@@ -52,10 +81,13 @@ bool BlockLowerer::Block::leanFits() const {
 }
 
 bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
+  // The command is back to MachineCmd{} after each use: each kind resets the fields it set
+  // (kind, loc, and its own: the block number, the mode, the words), not all of them.
   MachineCmd &c = L.cmd_;
   auto issue = [&] {
     bool ok = sink.exec(c);
-    c.clear();
+    c.kind = CmdKind::Block;
+    c.loc = {};
     return ok;
   };
   auto mode = [&](GGroup g) {
@@ -64,12 +96,17 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
     c.loc = gloc(g);
     c.nmodes = 1;
     c.modes[0] = modeValue(g);
-    return issue();
+    bool ok = issue();
+    c.nmodes = 0;
+    c.modes[0] = {};
+    return ok;
   };
   c.kind = CmdKind::Block;
   c.loc = b.loc;
   c.blockNumber = b.n;
-  if (!issue()) return false;
+  bool ok = issue();
+  c.blockNumber = -1;
+  if (!ok) return false;
   trackModes();
   if (!mode(GGroup::FeedMode)) return false;
   if (IsoWord *f = bw.get('F')) {
@@ -77,9 +114,11 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
     c.kind = CmdKind::Feed;
     c.loc = f->loc;
     c.set(Word::F, constValue(*f, factor(Scale::Feed)));
-    if (!issue()) return false;
+    ok = issue();
+    c.clearWords();
+    if (!ok) return false;
   }
-  if (groups & ~groupBit(GGroup::FeedMode))
+  if (groups & kModesBeforeMotionBits)
     for (GGroup g : kModesBeforeMotion)
       if (!mode(g)) return false;
   if (!mode(GGroup::Motion)) return false;
@@ -103,13 +142,15 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
     const int slot = __builtin_ctz(m);
     c.set(kMoveWords[slot].word, constValue(*bw.w[slot], factor(kMoveWords[slot].scale)));
   }
-  return issue();
+  ok = issue();
+  c.clearWords();
+  return ok;
 }
 
 BlockLowerer::Lean BlockLowerer::lowerLean(ParsedBlock &b, CmdSink &sink, bool pending) {
   if (lathe_ || polar_ || !plainWords(b)) return Lean::Fallback;
   Block blk(*this, b, none_);
-  if (!blk.classify()) return Lean::Error;
+  if (!blk.leanClassify() && !blk.classify()) return Lean::Error;
   if (!blk.leanFits()) return Lean::Fallback;
   if (pending) return Lean::Held;
   return blk.leanEmit(sink) ? Lean::Done : Lean::Stopped;

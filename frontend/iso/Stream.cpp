@@ -99,6 +99,17 @@ static const char *lineEnd(const char *q, const char *end) {
   return nl ? nl : end;
 }
 
+// A comment from its '(' at q to after its closing parenthesis (they nest), or to the line's end.
+static const char *skipComment(const char *q, const char *end) {
+  for (int depth = 1; ++q < end && *q != '\n';)
+    if (*q == '(') {
+      ++depth;
+    } else if (*q == ')' && --depth == 0) {
+      return q + 1;
+    }
+  return q;
+}
+
 // The rest of a block from q (after its block number): null when it needs the whole program,
 // else where it ends (its newline, or the end of the text).
 static const char *scanBlock(const char *q, const char *end) {
@@ -108,15 +119,7 @@ static const char *scanBlock(const char *q, const char *end) {
     case ScanClass::Skip: ++q; break;  // not reached: skipPlain stops at the other classes only
     case ScanClass::EndOfLine: return q;
     case ScanClass::EndOfBlock: return lineEnd(q, end);
-    case ScanClass::Comment:  // to its closing parenthesis (they nest), or the end of the line
-      for (int depth = 1; ++q < end && *q != '\n';)
-        if (*q == '(') {
-          ++depth;
-        } else if (*q == ')' && --depth == 0) {
-          ++q;
-          break;
-        }
-      break;
+    case ScanClass::Comment: q = skipComment(q, end); break;
     case ScanClass::Word:
       if (q > body && letter(q[-1])) {  // inside a word that starts with a skipped letter: no keyword
         while (q + 1 < end && letter(q[1])) ++q;
@@ -129,13 +132,101 @@ static const char *scanBlock(const char *q, const char *end) {
   }
 }
 
+// After the first block the pre-scan no longer walks line by line (most lines of a flat program
+// need no look at all): it stops only at a byte that may begin something needing the whole
+// program, where the line by line walk would look closer. Those are the Word letters but G,
+// comments, ';', and O and ':' (a program number at a line's start); a G only when the byte after
+// it is not 1-4, 8 or 9 (no code that begins with these digits needs the whole program: G1,
+// G17, G40, G80, ... go; G0 stops, as G05 is G5).
+static bool stopsBulk(unsigned char c, unsigned char next) {
+  const ScanClass k = kScan.c[c];
+  if (k == ScanClass::Word) {
+    if ((c | 0x20) != 'g') return true;
+    return !((next >= '1' && next <= '4') || next == '8' || next == '9');
+  }
+  return k == ScanClass::Comment || k == ScanClass::EndOfBlock || (c | 0x20) == 'o' || c == ':';
+}
+
+// The first byte at or after q (before limit) where stopsBulk holds, or limit: sixteen bytes at a
+// time with SSE2 (the byte after each G from a second load), then byte by byte.
+static const char *skipBulk(const char *q, const char *limit, const char *end) {
+#if defined(__SSE2__)
+  auto eq = [](__m128i v, char c) { return _mm_cmpeq_epi8(v, _mm_set1_epi8(c)); };
+  for (; limit - q >= 16 && end - q >= 17; q += 16) {
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i *>(q));
+    const __m128i n = _mm_loadu_si128(reinterpret_cast<const __m128i *>(q + 1));
+    const __m128i l = _mm_or_si128(x, _mm_set1_epi8(0x20));
+    const __m128i marks = _mm_or_si128(_mm_or_si128(eq(x, '('), eq(x, ';')), _mm_or_si128(eq(x, ':'), eq(l, 'o')));
+    const __m128i words = _mm_or_si128(_mm_or_si128(_mm_or_si128(eq(l, 'd'), eq(l, 'e')), _mm_or_si128(eq(l, 'i'), eq(l, 'm'))),
+                                       eq(l, 'w'));
+    // The digit after a G that lets it pass: '1'..'4' (unsigned: n - '1' <= 3), '8', '9'.
+    const __m128i d = _mm_sub_epi8(n, _mm_set1_epi8('1'));
+    const __m128i low = _mm_cmpeq_epi8(_mm_min_epu8(d, _mm_set1_epi8(3)), d);
+    const __m128i safe = _mm_or_si128(low, _mm_or_si128(eq(n, '8'), eq(n, '9')));
+    const __m128i g = _mm_andnot_si128(safe, eq(l, 'g'));
+    if (const int hit = _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(marks, words), g)))
+      return q + __builtin_ctz((unsigned)hit);
+  }
+#endif
+  for (; q < limit; ++q)
+    if (stopsBulk((unsigned char)*q, q + 1 < end ? (unsigned char)q[1] : 0)) return q;
+  return limit;
+}
+
+// Whether only blanks, tabs, carriage returns and block skips stand between p and its line's start.
+static bool atLineStart(const char *text, const char *p) {
+  while (p > text && (p[-1] == ' ' || p[-1] == '\t' || p[-1] == '\r' || p[-1] == '/')) --p;
+  return p == text || p[-1] == '\n';
+}
+
+// Where the line by line walk starts a block's body: at a line's start, or after its N number
+// ("N", digits and blanks). Says whether q (not a digit or blank) is there.
+static bool atBodyStart(const char *text, const char *q) {
+  const char *s = q;
+  while (s > text && ((s[-1] >= '0' && s[-1] <= '9') || s[-1] == ' ')) --s;
+  if (s > text && up(s[-1]) == 'N' && atLineStart(text, s - 1)) return true;
+  return atLineStart(text, q);
+}
+
+// The text from q on, once a block has been seen: what the line by line walk finds, stopping only
+// where stopsBulk holds. False when something needs the whole program.
+static bool scanBulk(const char *text, const char *q, const char *end, const SourceManager *sm, uint32_t file) {
+  constexpr size_t kReleaseEvery = 1 << 20;  // as in isoIsStreamable
+  const char *released = q;
+  while (q < end) {
+    const char *limit = (size_t)(end - q) > kReleaseEvery ? q + kReleaseEvery : end;
+    if ((q = skipBulk(q, limit, end)) < limit) {
+      const char c = *q;
+      if (c == '(' || c == ';') {
+        // A comment to its closing parenthesis or the line's end; after ';' the line is done.
+        q = c == ';' ? lineEnd(q, end) : skipComment(q, end);
+      } else if (up(c) == 'O' || c == ':') {
+        if (atBodyStart(text, q)) return false;  // a program number after a block: a subprogram, an o-word
+        ++q;
+      } else {
+        // A Word letter: inside a longer word (one that starts before it) no keyword, as in scanBlock.
+        const bool inside = q > text && letter(q[-1]) && !atBodyStart(text, q);
+        if (inside) {
+          while (q + 1 < end && letter(q[1])) ++q;
+        } else if (needsWholeProgram(q, end)) {
+          return false;
+        }
+        ++q;
+      }
+    }
+    if (sm && (size_t)(q - released) >= kReleaseEvery) sm->released(file, (size_t)((released = q) - text));
+  }
+  return true;
+}
+
 // One pass over the text before streaming: a construct that needs the whole program (control
 // flow, calls, subprograms) anywhere means the program is parsed as a whole. Being wrong towards
 // "not streamable" only costs speed and memory; the stream itself rejects what slips through.
 // (Folding this pass into the stream would need the sinks, the trace file and the diagnostics
 // printed so far to be taken back when a late construct, such as a subprogram after M30, turns
-// up.) The newline is one of the byte classes: lines are not searched for first.
-bool isoIsStreamable(std::string_view text, const SourceManager *sm, uint32_t file) {
+// up.) Line by line up to the first block (an O line before it names the program), then in bulk
+// (scanBulk); `byLines` keeps to the line by line walk (the unit test compares the two).
+bool isoIsStreamable(std::string_view text, const SourceManager *sm, uint32_t file, bool byLines) {
   const char *q = text.data(), *end = q + text.size();
   // A mapped file's scanned pages go as the scan moves on, or the whole text would be resident.
   constexpr size_t kReleaseEvery = 1 << 20;
@@ -143,6 +234,7 @@ bool isoIsStreamable(std::string_view text, const SourceManager *sm, uint32_t fi
   if (text.size() >= 3 && std::memcmp(q, "\xEF\xBB\xBF", 3) == 0) q += 3;  // UTF-8 BOM
   bool seenContent = false;  // a block before: a later O line is a subprogram
   while (q < end) {
+    if (seenContent && !byLines) return scanBulk(text.data(), q, end, sm, file);
     // A line's start: blanks, block skip, the block number (none of these bytes is a newline).
     while (q < end && (*q == ' ' || *q == '\t' || *q == '\r' || *q == '/')) ++q;
     if (q < end && up(*q) == 'N') {

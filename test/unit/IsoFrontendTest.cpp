@@ -518,6 +518,35 @@ TEST(IsoStream, StreamabilityEdges) {
   EXPECT_FALSE(isoIsStreamable("G1 X1\nEN1\n"));
 }
 
+// After the first block the pre-scan stops only at the bytes that may matter (the bulk scan);
+// it must decide as the line by line walk does, on random programs made of the pieces both
+// look at: every statement word, G/M codes that do and do not need the whole program (G0 5,
+// G05, G 65, G1 G17 G80), O and ':' at a line's start, after N, inside words and comments,
+// block skips, ';', nested and unclosed comments, CR LF, lower case, and the text's end
+// anywhere, and with the pieces near the sixteen-byte steps (runs of plain words between).
+TEST(IsoStream, BulkPreScanDecidesAsLineByLine) {
+  static const char *kPieces[] = {
+      "G1 X1.5 Y-2", "G01", "G0", "G00 Z1", "G05", "G5.1", "G 65", "G65", "G66", "G70", "G73", "G74", "G17", "G80",
+      "G4 P1", "G9", "G8", "G28", "g1", "g05", "g 66", "M98", "M99", "M3", "M 98", "m98", "M#1", "G[1]", "G #1",
+      "IF", "GOTO 5", "GO", "DO1", "END1", "EN", "WHILE", "WH", "XIF", "AGOTO", "COS[1]", "ROUND", "O100", "o100",
+      ":100", "N10", "N", "N 20", "NG65", "N10G65", "N10 O2", "/", "/N5 O1", "(IF)", "(a (GOTO) b)", "(unclosed",
+      ";M98", "; (", "#1=2", "D1", "E1", "I1", "W1", "MOVE", "\r", " ", "\t", "%", "X", "0", "5", "6", "7"};
+  std::mt19937 rng(6);
+  for (int round = 0; round < 60000; ++round) {
+    std::string src;
+    const int lines = 1 + int(rng() % 6);
+    for (int l = 0; l < lines; ++l) {
+      if (rng() % 3 == 0) src += std::string(rng() % 20, 'X');  // shifts the pieces against the steps
+      for (int k = int(rng() % 4); k >= 0; --k) {
+        src += kPieces[rng() % std::size(kPieces)];
+        if (rng() % 2) src += ' ';
+      }
+      if (l + 1 < lines || rng() % 2) src += rng() % 4 ? "\n" : "\r\n";
+    }
+    ASSERT_EQ(isoIsStreamable(src), isoIsStreamable(src, nullptr, 0, true)) << src;
+  }
+}
+
 TEST(IsoStream, SameOpsAsWholeProgramParse) {
   std::string src = "(head)\nG21 G90 G17 G94\nG0 X0 Y0 Z1\nF1500\n";
   for (int i = 0; i < 50; ++i) src += "G1 X" + std::to_string(i) + ".5 Y-" + std::to_string(i) + "\n";

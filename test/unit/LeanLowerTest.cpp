@@ -146,6 +146,21 @@ TEST(LeanLower, GCodeCacheKeepsErrorsAndSpellings) {
   }
 }
 
+// The lean classification (codes already looked up) leaves every conflict and duplicate to
+// classify(): two codes of a group, a duplicate word, M codes, after the codes are in the cache.
+TEST(LeanLower, LeanClassifyLeavesConflictsToClassify) {
+  const char *src = "G0 X0\nG1 X1 F10\nG17 X2\nG18 G17 X1\nG1 G0 X2\nG1 X2 X3\nG1 X1 M3\nG0 X5 Y1\nG1 X4 Y1\n";
+  for (const char *name : {"t.nc", "t.ngc"}) {
+    SCOPED_TRACE(name);
+    Streamed lean = stream(src, name, true);
+    ASSERT_EQ(lean.diags.size(), 3u);
+    EXPECT_NE(lean.diags[0].find("4:5 two G codes from the same modal group"), std::string::npos) << lean.diags[0];
+    EXPECT_NE(lean.diags[1].find("5:4 two G codes from the same modal group"), std::string::npos) << lean.diags[1];
+    EXPECT_NE(lean.diags[2].find("6:7 two X words in one block"), std::string::npos) << lean.diags[2];
+    expectSame(src, name);
+  }
+}
+
 TEST(LeanLower, MillFanucSameCommands) { EXPECT_GT(expectSame(kMill, "t.nc"), 30u); }
 
 TEST(LeanLower, MillRs274SameCommands) { EXPECT_GT(expectSame(kMill, "t.ngc"), 30u); }
