@@ -152,12 +152,13 @@ MotionRecord Executor::Impl::pathModeRecord() const {
   return r;
 }
 
+bool Executor::Impl::motionInForce(const MachineCmd &c) const {
+  return c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
+         st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff;
+}
+
 bool Executor::Impl::execMode(const MachineCmd &c) {
-  // G0/G1 repeated in a loop's every iteration: with that mode in force and nothing the Motion
-  // case below resets still set, the command changes nothing.
-  if (c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
-      st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff)
-    return true;
+  if (motionInForce(c)) return true;
   for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
@@ -580,6 +581,15 @@ Executor::~Executor() { delete impl_; }
 uint64_t Executor::blockCount() const { return impl_->blocks; }
 
 const ModalState &Executor::state() const { return impl_->st; }
+
+// A mode without words that is in force does nothing in exec but set the location.
+bool Executor::execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode) {
+  if (blocks && !execBlocks(*last, blocks)) return false;
+  Impl &x = *impl_;
+  if (mode.mask != 0 || !x.motionInForce(mode)) return exec(mode);
+  x.loc = mode.loc.valid() ? mode.loc : x.blockLoc;
+  return true;
+}
 
 // The blocks before `last` only count: a block that follows a block sees no frame change.
 bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {

@@ -153,6 +153,10 @@ int ncrt_exec_blocks(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t count) {
   return !count || ctx->sink.execBlocks(*last, count) ? NCRT_OK : NCRT_ERROR;
 }
 
+int ncrt_exec_mode(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const ncrt_cmd *mode) {
+  return ctx->sink.execMode(last, blocks, *mode) ? NCRT_OK : NCRT_ERROR;  // a mode neither ends nor moves
+}
+
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes) {
   const uint8_t *p = data, *end = data + nbytes;
   MachineCmd c;
@@ -332,6 +336,7 @@ const std::vector<RuntimeSymbol> &runtimeSymbols() {
     add("ncrt_exec_table", &ncrt_exec_table);
     add("ncrt_exec_packed", &ncrt_exec_packed);
     add("ncrt_exec_blocks", &ncrt_exec_blocks);
+    add("ncrt_exec_mode", &ncrt_exec_mode);
     add("ncrt_error", &ncrt_error);
     add("ncrt_fault", &ncrt_fault);
     add("ncrt_poll", &ncrt_poll);

@@ -72,7 +72,7 @@ typedef struct ncrt_storage {
 /* Loop iterations between two run-time limit checks. */
 #define NCRT_POLL_INTERVAL 65536
 /* Raised when the C ABI changes in a way abiFingerprint cannot see (a function's meaning). */
-#define NCRT_ABI_VERSION 1
+#define NCRT_ABI_VERSION 2
 
 /* Allocates the storage for a program with the given number of named globals and Q prefix
  * arrays (1 + the highest qPrefixIndex it uses; 0 for none). */
@@ -86,6 +86,9 @@ int ncrt_exec_table(ncrt_ctx *ctx, const ncrt_cmd *cmds, uint64_t n);
 /* Executes `count` Block commands in a row that end with `last` (CmdSink::execBlocks: code
  * compiled to merge blocks calls this; count 0 does nothing). */
 int ncrt_exec_blocks(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t count);
+/* The `blocks` waiting Block commands ending with *last (none when 0), then the Mode command
+ * *mode, in one call (CmdSink::execMode: a mode in force costs a compare). */
+int ncrt_exec_mode(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const ncrt_cmd *mode);
 /* Executes a packed command stream (ncc::ncrt::packCmd encoding) of nbytes bytes. */
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes);
 /* Reports a run-time error at a source location. */

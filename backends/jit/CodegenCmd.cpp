@@ -63,7 +63,18 @@ void Codegen::flushRun() {
   if (run_.empty() && packed_.empty()) return;
   ensureOpen();
   Value *st;
-  if (packed_.empty()) {
+  if (packed_.empty() && run_.size() == 1 && run_[0].kind == CmdKind::Mode) {
+    // The `G1` of a loop's `G1 X[…]` line: with the waiting blocks in one call, and a compare in
+    // the target when that mode is in force.
+    auto *gv = new GlobalVariable(*M, cmdTy, true, GlobalValue::PrivateLinkage, cmdConstant(run_[0]), "nc.mode");
+    Value *n = B.getInt64(0), *last = ConstantPointerNull::get(ptrTy);
+    if (blkOn_) {
+      n = B.CreateLoad(i64Ty, blkCount);
+      last = B.CreateLoad(ptrTy, blkLast);
+      B.CreateStore(B.getInt64(0), blkCount);
+    }
+    st = B.CreateCall(fExecMode, {ctxArg, last, n, gv});
+  } else if (packed_.empty()) {
     std::vector<Constant *> cmds;
     for (auto &c : run_) cmds.push_back(cmdConstant(c));
     auto *arrTy = ArrayType::get(cmdTy, cmds.size());
