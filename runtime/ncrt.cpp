@@ -188,6 +188,7 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   ctx->storage.poll = NCRT_POLL_INTERVAL;
+  ++ctx->polls;
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx->start).count();
   if (ctx->limits.maxSeconds <= 0 || secs <= ctx->limits.maxSeconds) return NCRT_OK;
   ctx->diags.error({file, line, col},
@@ -376,9 +377,10 @@ const std::vector<RuntimeSymbol> &runtimeSymbols() {
   return table;
 }
 
-bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits) {
+bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits, bool *hot) {
   ncrt_ctx rt(sink, diags, limits);
   int status = entry(&rt);
+  if (hot) *hot = rt.polls > 0;
   // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
   // error was reported.
   if (status == NCRT_END) return !diags.hasErrors();

@@ -200,8 +200,9 @@ struct RuntimeSymbol {
 const std::vector<RuntimeSymbol> &runtimeSymbols();
 
 // Runs a compiled entry against the sink: true unless an error was reported (a program stopped
-// by M2/M30 succeeded). Does not finish the sink's executor.
-bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits);
+// by M2/M30 succeeded). Does not finish the sink's executor. hot: set to whether the run made
+// NCRT_POLL_INTERVAL loop iterations or backward jumps (the JIT cache then optimises the code).
+bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits, bool *hot = nullptr);
 
 // What an object carries beside its code (the ncc_program_info bytes): the layout compiled code
 // was built against (abiFingerprint, a stale object is refused), the machine description it was
@@ -239,6 +240,7 @@ struct ncrt_ctx {
   ncrt_storage storage{};
   std::vector<double> numbered, rparam, qparam, named;
   bool ended = false;  // a stop kind=end|end_rewind was executed
+  uint64_t polls = 0;  // ncrt_poll calls: NCRT_POLL_INTERVAL loop iterations or backward jumps each
   // A program with modal_call: its nc.modal.run, called after every move command executed.
   int (*modal_hook)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t) = nullptr;
   std::string text;    // the run-time string being built (ncrt_str_*)

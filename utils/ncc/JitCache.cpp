@@ -115,21 +115,54 @@ static ncrt_entry entryOf(const std::unique_ptr<LoadedObject> &obj, std::string 
   return entry;
 }
 
+// Compiles `m` into the cache entry `path` at optLevel and loads it; null when that fails (the
+// reason reported with --cache-stats): the caller runs without the cache.
+static std::unique_ptr<LoadedObject> store(Session &s, const ir::Module &m, const jit::JitApi &jit,
+                                           const std::string &dir, const std::string &path, int optLevel) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  ncrt::ProgramInfo info;
+  // A cache folder that cannot be written (read-only, not a folder): run as without a cache.
+  if (!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0 || !programInfo(s, s.mainFile ? s.mainFile : 1, info))
+    return nullptr;
+  // A store that fails (a full disk, …) is not the program's error: run as without a cache.
+  Diagnostics storeDiags(s.diags.sources());
+  storeDiags.setCollect(true);
+  if (!jit.emitObject(m, path, storeDiags, info, optLevel)) {
+    report(s, "cannot store the object, running without the cache:", path);
+    return nullptr;
+  }
+  std::string err;
+  std::unique_ptr<LoadedObject> obj = LoadedObject::load(path, err);
+  if (!entryOf(obj, err)) {  // an object the loader refuses: run in the JIT as without a cache
+    report(s, "cannot load the stored object (" + err + "):", path);
+    return nullptr;
+  }
+  evict(dir, cacheLimitBytes());
+  return obj;
+}
+
+// Two tiers: a program is first compiled without optimisation (`<key>.quick.o`, a quarter of the
+// O2 compile time, which is most of a short program's run); a run of that code that turns out hot
+// (NCRT_POLL_INTERVAL loop iterations or backward jumps) compiles it again at O2 (`<key>.o`), which
+// later runs use.
 bool runCached(Session &s, const ir::Module &m, CmdSink &sink, bool &ok) {
   std::string dir = s.opts.noCache ? std::string() : cacheDirectory();
   std::string key;
   if (dir.empty() || !cacheKey(s, key)) return false;
-  std::string path = dir + "/" + key + ".o";
-  std::string err;
+  const std::string optimised = dir + "/" + key + ".o", quick = dir + "/" + key + ".quick.o";
+  std::string err, path;
   std::unique_ptr<LoadedObject> obj;
   std::error_code ec;
-  if (fs::exists(path, ec)) {
-    obj = LoadedObject::load(path, err);
+  for (const std::string &p : {optimised, quick}) {
+    if (obj || !fs::exists(p, ec)) continue;
+    obj = LoadedObject::load(p, err);
     if (entryOf(obj, err)) {
-      fs::last_write_time(path, fs::file_time_type::clock::now(), ec);  // recently used
-      report(s, "hit", path);
+      fs::last_write_time(p, fs::file_time_type::clock::now(), ec);  // recently used
+      report(s, "hit", p);
+      path = p;
     } else {
-      report(s, "damaged entry, compiling again (" + err + "):", path);
+      report(s, "damaged entry, compiling again (" + err + "):", p);
       obj.reset();
     }
   }
@@ -137,28 +170,21 @@ bool runCached(Session &s, const ir::Module &m, CmdSink &sink, bool &ok) {
     const jit::JitApi *jit = jitBackend(s.diags);
     std::string why;
     if (!jit || !jit->compilesQuickly(m, why)) return false;  // the caller reports / uses the eval engine
-    fs::create_directories(dir, ec);
-    ncrt::ProgramInfo info;
-    // A cache folder that cannot be written (read-only, not a folder): run as without a cache.
-    if (!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0 ||
-        !programInfo(s, s.mainFile ? s.mainFile : 1, info))
-      return false;
-    // A store that fails (a full disk, …) is not the program's error: run as without a cache.
-    Diagnostics storeDiags(s.diags.sources());
-    storeDiags.setCollect(true);
-    if (!jit->emitObject(m, path, storeDiags, info)) {
-      report(s, "cannot store the object, running without the cache:", path);
-      return false;
-    }
-    obj = LoadedObject::load(path, err);
-    if (!entryOf(obj, err)) {  // an object the loader refuses: run in the JIT as without a cache
-      report(s, "cannot load the stored object (" + err + "):", path);
-      return false;
-    }
-    report(s, "miss, stored", path);
-    evict(dir, cacheLimitBytes());
+    obj = store(s, m, *jit, dir, quick, 0);
+    if (!obj) return false;
+    report(s, "miss, stored", quick);
+    path = quick;
   }
-  ok = ncrt::runEntry(entryOf(obj, err), sink, s.diags, s.opts.limits);
+  bool hot = false;
+  ok = ncrt::runEntry(entryOf(obj, err), sink, s.diags, s.opts.limits, &hot);
+  if (ok && hot && path == quick) {
+    obj.reset();
+    const jit::JitApi *jit = jitBackend(s.diags);
+    if (jit && store(s, m, *jit, dir, optimised, 2)) {
+      fs::remove(quick, ec);
+      report(s, "hot, optimised", optimised);
+    }
+  }
   return true;
 }
 
