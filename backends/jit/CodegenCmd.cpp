@@ -108,10 +108,20 @@ void Codegen::emitBlockCmd(const MachineCmd &c) {
 // shared slot, filled whole.
 static constexpr unsigned kLoopCmdSlots = 16;
 
+// A copy of a constant command, not a store of the aggregate: the unoptimised code generator
+// (the JIT cache's quick tier) selects a memcpy quickly and falls back to SelectionDAG for the
+// aggregate; at O2 both become the same field stores.
+void Codegen::storeCmd(const MachineCmd &c, Value *slot) {
+  auto *gv = new GlobalVariable(*M, cmdTy, true, GlobalValue::PrivateLinkage, cmdConstant(c), "nc.cmd");
+  const DataLayout &dl = M->getDataLayout();
+  Align a = dl.getABITypeAlign(cmdTy);
+  B.CreateMemCpy(slot, a, gv, a, dl.getTypeAllocSize(cmdTy));
+}
+
 Value *Codegen::cmdSiteSlot(const MachineCmd &base) {
   if (loops_.empty() || siteSlots_ >= kLoopCmdSlots) {
     if (!cmdSlot) cmdSlot = allocaEntry(cmdTy, "cmd");
-    B.CreateStore(cmdConstant(base), cmdSlot);
+    storeCmd(base, cmdSlot);
     return cmdSlot;
   }
   ++siteSlots_;
@@ -120,7 +130,7 @@ Value *Codegen::cmdSiteSlot(const MachineCmd &base) {
   BasicBlock *fill = newBlock("cmd.fill"), *ready = newBlock("cmd.ready");
   B.CreateCondBr(B.CreateLoad(i1Ty, filled), ready, fill);
   B.SetInsertPoint(fill);
-  B.CreateStore(cmdConstant(base), slot);
+  storeCmd(base, slot);
   B.CreateStore(B.getTrue(), filled);
   B.CreateBr(ready);
   B.SetInsertPoint(ready);

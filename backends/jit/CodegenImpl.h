@@ -183,6 +183,7 @@ private:
   void flushRun();
   void emitDynamicCmd(const CmdTemplate &t);
   llvm::Value *cmdSiteSlot(const MachineCmd &base);
+  void storeCmd(const MachineCmd &c, llvm::Value *slot);
   llvm::Constant *cmdConstant(const MachineCmd &c);
 
   const ir::Module &src_;
