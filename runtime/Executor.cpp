@@ -152,13 +152,15 @@ MotionRecord Executor::Impl::pathModeRecord() const {
   return r;
 }
 
-bool Executor::Impl::motionInForce(const MachineCmd &c) const {
+// G0/G1 repeated (a loop's every iteration, every line of a flat program): with that mode in
+// force and nothing execMode's Motion case resets still set, the command changes nothing.
+bool Executor::Impl::modeRepeats(const MachineCmd &c) const {
   return c.nmodes == 1 && c.modes[0] == st.motion && (st.motion == ModeValue::Linear || st.motion == ModeValue::Rapid) &&
          st.pathMotion == st.motion && !nurbs.open && !initialLevelValid && lastCycle == ModeValue::CycleOff;
 }
 
 bool Executor::Impl::execMode(const MachineCmd &c) {
-  if (motionInForce(c)) return true;
+  if (modeRepeats(c)) return true;
   for (unsigned i = 0; i < c.nmodes && i < kMaxModes; ++i) {
     ModeValue v = c.modes[i];
     switch (modeValueInfo(v).group) {
@@ -586,7 +588,7 @@ const ModalState &Executor::state() const { return impl_->st; }
 bool Executor::execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode) {
   if (blocks && !execBlocks(*last, blocks)) return false;
   Impl &x = *impl_;
-  if (mode.mask != 0 || !x.motionInForce(mode)) return exec(mode);
+  if (mode.mask != 0 || !x.modeRepeats(mode)) return exec(mode);
   x.loc = mode.loc.valid() ? mode.loc : x.blockLoc;
   return true;
 }

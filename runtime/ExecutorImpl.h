@@ -260,9 +260,7 @@ struct Executor::Impl {
   AxisVec target(const MachineCmd &c) const;
 
   bool execMode(const MachineCmd &c);
-  // G0/G1 repeated in a loop's every iteration: with that mode in force and nothing execMode's
-  // Motion case resets still set, the command changes nothing.
-  bool motionInForce(const MachineCmd &c) const;
+  bool modeRepeats(const MachineCmd &c) const;  // a G0/G1 already in force: execMode has nothing to do
   bool execToolLength(const MachineCmd &c);
   bool offsetToolLength(const MachineCmd &c, ToolLengthForm form);  // LinuxCNC G43.1 / G43.2
   bool setToolNumber(double q);                                     // LinuxCNC M61 Q
