@@ -24,6 +24,12 @@ public:
       if (!exec(last)) return false;
     return true;
   }
+  // `blocks` Block commands ending with *last (execBlocks; none when 0), then the Mode command
+  // `mode` (ncrt_exec_mode: a loop's `G1 X[…]` line). A sink may skip a mode that is in force
+  // and changes nothing.
+  virtual bool execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode) {
+    return (!blocks || execBlocks(*last, blocks)) && exec(mode);
+  }
   // A system variable's current value (ir/SystemVars.h); false when this sink has none (err
   // empty: the engine reports RunError::SysVar) or it does not exist (a tool or edge the
   // machine lacks: the reason in err, which the engine reports).

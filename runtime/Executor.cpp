@@ -588,6 +588,15 @@ uint64_t Executor::blockCount() const { return impl_->blocks; }
 
 const ModalState &Executor::state() const { return impl_->st; }
 
+// A mode without words that is in force does nothing in exec but set the location.
+bool Executor::execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode) {
+  if (blocks && !execBlocks(*last, blocks)) return false;
+  Impl &x = *impl_;
+  if (mode.mask != 0 || !x.modeRepeats(mode)) return exec(mode);
+  x.loc = mode.loc.valid() ? mode.loc : x.blockLoc;
+  return true;
+}
+
 // The blocks before `last` only count: a block that follows a block sees no frame change.
 bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
   if (count > 1) {

@@ -49,6 +49,8 @@ public:
   bool exec(const MachineCmd &cmd);
   // `count` Block commands in a row ending with `last`: the state they leave (CmdSink::execBlocks).
   bool execBlocks(const MachineCmd &last, uint64_t count);
+  // CmdSink::execMode: the blocks, then the mode unless it is in force already.
+  bool execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode);
   // Flushes pending state at program end; returns false on error. ranToEnd: the program ran
   // to its end (not stopped by an error), so a missing M2/M30 is worth a warning.
   bool finish(bool ranToEnd = true);
@@ -89,6 +91,9 @@ public:
   bool exec(const MachineCmd &cmd) override { return exec_.exec(cmd); }
   bool mergesBlocks() const override { return true; }
   bool execBlocks(const MachineCmd &last, uint64_t count) override { return exec_.execBlocks(last, count); }
+  bool execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode) override {
+    return exec_.execMode(last, blocks, mode);
+  }
   bool readSystem(const SysRef &v, double &out, std::string &err) override { return exec_.readSystem(v, out, err); }
   bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) override {
     return exec_.writeSystem(v, value, loc, err);

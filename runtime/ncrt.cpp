@@ -153,6 +153,10 @@ int ncrt_exec_blocks(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t count) {
   return !count || ctx->sink.execBlocks(*last, count) ? NCRT_OK : NCRT_ERROR;
 }
 
+int ncrt_exec_mode(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const ncrt_cmd *mode) {
+  return ctx->sink.execMode(last, blocks, *mode) ? NCRT_OK : NCRT_ERROR;  // a mode neither ends nor moves
+}
+
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes) {
   const uint8_t *p = data, *end = data + nbytes;
   MachineCmd c;
@@ -184,6 +188,7 @@ void ncrt_fault(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col, uint3
 
 int ncrt_poll(ncrt_ctx *ctx, uint32_t file, uint32_t line, uint32_t col) {
   ctx->storage.poll = NCRT_POLL_INTERVAL;
+  ++ctx->polls;
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - ctx->start).count();
   if (ctx->limits.maxSeconds <= 0 || secs <= ctx->limits.maxSeconds) return NCRT_OK;
   ctx->diags.error({file, line, col},
@@ -332,6 +337,7 @@ const std::vector<RuntimeSymbol> &runtimeSymbols() {
     add("ncrt_exec_table", &ncrt_exec_table);
     add("ncrt_exec_packed", &ncrt_exec_packed);
     add("ncrt_exec_blocks", &ncrt_exec_blocks);
+    add("ncrt_exec_mode", &ncrt_exec_mode);
     add("ncrt_error", &ncrt_error);
     add("ncrt_fault", &ncrt_fault);
     add("ncrt_poll", &ncrt_poll);
@@ -371,9 +377,10 @@ const std::vector<RuntimeSymbol> &runtimeSymbols() {
   return table;
 }
 
-bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits) {
+bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits, bool *hot) {
   ncrt_ctx rt(sink, diags, limits);
   int status = entry(&rt);
+  if (hot) *hot = rt.polls > 0;
   // As the eval engine: a program stopped by M2/M30 (or a failing sink) succeeded unless an
   // error was reported.
   if (status == NCRT_END) return !diags.hasErrors();

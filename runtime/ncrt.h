@@ -72,7 +72,7 @@ typedef struct ncrt_storage {
 /* Loop iterations between two run-time limit checks. */
 #define NCRT_POLL_INTERVAL 65536
 /* Raised when the C ABI changes in a way abiFingerprint cannot see (a function's meaning). */
-#define NCRT_ABI_VERSION 1
+#define NCRT_ABI_VERSION 2
 
 /* Allocates the storage for a program with the given number of named globals and Q prefix
  * arrays (1 + the highest qPrefixIndex it uses; 0 for none). */
@@ -86,6 +86,9 @@ int ncrt_exec_table(ncrt_ctx *ctx, const ncrt_cmd *cmds, uint64_t n);
 /* Executes `count` Block commands in a row that end with `last` (CmdSink::execBlocks: code
  * compiled to merge blocks calls this; count 0 does nothing). */
 int ncrt_exec_blocks(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t count);
+/* The `blocks` waiting Block commands ending with *last (none when 0), then the Mode command
+ * *mode, in one call (CmdSink::execMode: a mode in force costs a compare). */
+int ncrt_exec_mode(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const ncrt_cmd *mode);
 /* Executes a packed command stream (ncc::ncrt::packCmd encoding) of nbytes bytes. */
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes);
 /* Reports a run-time error at a source location. */
@@ -197,8 +200,9 @@ struct RuntimeSymbol {
 const std::vector<RuntimeSymbol> &runtimeSymbols();
 
 // Runs a compiled entry against the sink: true unless an error was reported (a program stopped
-// by M2/M30 succeeded). Does not finish the sink's executor.
-bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits);
+// by M2/M30 succeeded). Does not finish the sink's executor. hot: set to whether the run made
+// NCRT_POLL_INTERVAL loop iterations or backward jumps (the JIT cache then optimises the code).
+bool runEntry(ncrt_entry entry, CmdSink &sink, Diagnostics &diags, const ExecLimits &limits, bool *hot = nullptr);
 
 // What an object carries beside its code (the ncc_program_info bytes): the layout compiled code
 // was built against (abiFingerprint, a stale object is refused), the machine description it was
@@ -236,6 +240,7 @@ struct ncrt_ctx {
   ncrt_storage storage{};
   std::vector<double> numbered, rparam, qparam, named;
   bool ended = false;  // a stop kind=end|end_rewind was executed
+  uint64_t polls = 0;  // ncrt_poll calls: NCRT_POLL_INTERVAL loop iterations or backward jumps each
   // A program with modal_call: its nc.modal.run, called after every move command executed.
   int (*modal_hook)(ncrt_ctx *, ncrt_storage *, uint32_t, uint32_t, uint32_t) = nullptr;
   std::string text;    // the run-time string being built (ncrt_str_*)

@@ -63,6 +63,7 @@ void Codegen::declareRuntime() {
   fExecTable = decl("ncrt_exec_table", i32Ty, {ptrTy, ptrTy, i64Ty});
   fExecBlocks = decl("ncrt_exec_blocks", i32Ty, {ptrTy, ptrTy, i64Ty});
   fExecPacked = decl("ncrt_exec_packed", i32Ty, {ptrTy, ptrTy, i64Ty});
+  fExecMode = decl("ncrt_exec_mode", i32Ty, {ptrTy, ptrTy, i64Ty, ptrTy});
   fError = decl("ncrt_error", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy});
   fFault = decl("ncrt_fault", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, i32Ty, ptrTy, dblTy});
   fPoll = decl("ncrt_poll", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
@@ -121,14 +122,17 @@ void Codegen::declareRuntime() {
 // The command calls run the modal call's NC code after a move, so they qualify only without one.
 void Codegen::markRuntimeOnly() {
   std::vector<FunctionCallee *> calls = {&fPoll};
-  if (!modalFn_) calls.insert(calls.end(), {&fExec, &fExecTable, &fExecPacked, &fExecBlocks});
+  if (!modalFn_) calls.insert(calls.end(), {&fExec, &fExecTable, &fExecPacked, &fExecBlocks, &fExecMode});
   for (FunctionCallee *fc : calls)
     cast<Function>(fc->getCallee())
         ->setMemoryEffects(MemoryEffects::argMemOnly() | MemoryEffects::inaccessibleMemOnly());
-  for (FunctionCallee *fc : {&fExec, &fExecTable, &fExecPacked, &fExecBlocks}) {  // commands are read, not kept
+  for (FunctionCallee *fc : {&fExec, &fExecTable, &fExecPacked, &fExecBlocks, &fExecMode}) {  // commands are read, not kept
     cast<Function>(fc->getCallee())->addParamAttr(1, Attribute::NoCapture);
     cast<Function>(fc->getCallee())->addParamAttr(1, Attribute::ReadOnly);
   }
+  auto *execMode = cast<Function>(fExecMode.getCallee());
+  execMode->addParamAttr(3, Attribute::NoCapture);
+  execMode->addParamAttr(3, Attribute::ReadOnly);
 }
 
 // ---------------------------------------------------------------- name scan

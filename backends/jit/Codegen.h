@@ -19,8 +19,9 @@ std::unique_ptr<llvm::Module> buildModule(const ir::Module &m, llvm::LLVMContext
                                           bool mergeBlocks = true);
 // Runs the standard O1..O3 pipeline (level 0 does nothing).
 void optimizeModule(llvm::Module &mod, llvm::TargetMachine *tm, int level);
-// Host target machine (PIC, default CPU features); null after reporting an error.
-std::unique_ptr<llvm::TargetMachine> hostTargetMachine(Diagnostics &diags);
+// Host target machine (PIC, default CPU features; the code generator's default optimisation, or
+// none: fast instruction selection and register allocation); null after reporting an error.
+std::unique_ptr<llvm::TargetMachine> hostTargetMachine(Diagnostics &diags, bool optimise = true);
 // buildModule with the host's data layout and triple (for --emit=llvm and --emit=obj).
 std::unique_ptr<llvm::Module> buildHostModule(const ir::Module &m, llvm::LLVMContext &ctx,
                                               llvm::TargetMachine &tm, Diagnostics &diags);

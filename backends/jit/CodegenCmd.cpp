@@ -63,7 +63,18 @@ void Codegen::flushRun() {
   if (run_.empty() && packed_.empty()) return;
   ensureOpen();
   Value *st;
-  if (packed_.empty()) {
+  if (packed_.empty() && run_.size() == 1 && run_[0].kind == CmdKind::Mode) {
+    // The `G1` of a loop's `G1 X[…]` line: with the waiting blocks in one call, and a compare in
+    // the target when that mode is in force.
+    auto *gv = new GlobalVariable(*M, cmdTy, true, GlobalValue::PrivateLinkage, cmdConstant(run_[0]), "nc.mode");
+    Value *n = B.getInt64(0), *last = ConstantPointerNull::get(ptrTy);
+    if (blkOn_) {
+      n = B.CreateLoad(i64Ty, blkCount);
+      last = B.CreateLoad(ptrTy, blkLast);
+      B.CreateStore(B.getInt64(0), blkCount);
+    }
+    st = B.CreateCall(fExecMode, {ctxArg, last, n, gv});
+  } else if (packed_.empty()) {
     std::vector<Constant *> cmds;
     for (auto &c : run_) cmds.push_back(cmdConstant(c));
     auto *arrTy = ArrayType::get(cmdTy, cmds.size());
@@ -97,10 +108,20 @@ void Codegen::emitBlockCmd(const MachineCmd &c) {
 // shared slot, filled whole.
 static constexpr unsigned kLoopCmdSlots = 16;
 
+// A copy of a constant command, not a store of the aggregate: the unoptimised code generator
+// (the JIT cache's quick tier) selects a memcpy quickly and falls back to SelectionDAG for the
+// aggregate; at O2 both become the same field stores.
+void Codegen::storeCmd(const MachineCmd &c, Value *slot) {
+  auto *gv = new GlobalVariable(*M, cmdTy, true, GlobalValue::PrivateLinkage, cmdConstant(c), "nc.cmd");
+  const DataLayout &dl = M->getDataLayout();
+  Align a = dl.getABITypeAlign(cmdTy);
+  B.CreateMemCpy(slot, a, gv, a, dl.getTypeAllocSize(cmdTy));
+}
+
 Value *Codegen::cmdSiteSlot(const MachineCmd &base) {
   if (loops_.empty() || siteSlots_ >= kLoopCmdSlots) {
     if (!cmdSlot) cmdSlot = allocaEntry(cmdTy, "cmd");
-    B.CreateStore(cmdConstant(base), cmdSlot);
+    storeCmd(base, cmdSlot);
     return cmdSlot;
   }
   ++siteSlots_;
@@ -109,7 +130,7 @@ Value *Codegen::cmdSiteSlot(const MachineCmd &base) {
   BasicBlock *fill = newBlock("cmd.fill"), *ready = newBlock("cmd.ready");
   B.CreateCondBr(B.CreateLoad(i1Ty, filled), ready, fill);
   B.SetInsertPoint(fill);
-  B.CreateStore(cmdConstant(base), slot);
+  storeCmd(base, slot);
   B.CreateStore(B.getTrue(), filled);
   B.CreateBr(ready);
   B.SetInsertPoint(ready);

@@ -183,6 +183,7 @@ private:
   void flushRun();
   void emitDynamicCmd(const CmdTemplate &t);
   llvm::Value *cmdSiteSlot(const MachineCmd &base);
+  void storeCmd(const MachineCmd &c, llvm::Value *slot);
   llvm::Constant *cmdConstant(const MachineCmd &c);
 
   const ir::Module &src_;
@@ -198,7 +199,7 @@ private:
   llvm::PointerType *ptrTy;
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
-  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecBlocks, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
+  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecBlocks, fExecMode, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar, fSysVarAt, fSysVarSet;
   llvm::FunctionCallee fParam;  // ncrt_param: computed parameter numbers that are controller state
   llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook,

@@ -41,10 +41,12 @@ bool runObjectFile(const std::string &path, CmdSink &sink, Diagnostics &diags, c
 
 // Textual LLVM IR of the program, before optimisation (`ncc compile --emit=llvm`).
 bool emitLLVM(const ir::Module &m, std::string &out, Diagnostics &diags);
-// Host object file (O2), written atomically (`ncc compile --emit=obj`). Beside the entry it
-// defines `ncc_program_info`, the encoded `info` (its abi is set here), so that the object runs
-// without its source (docs/AOT.md).
-bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info = {});
+// Host object file, written atomically (`ncc compile --emit=obj`). Beside the entry it defines
+// `ncc_program_info`, the encoded `info` (its abi is set here), so that the object runs without
+// its source (docs/AOT.md). optLevel 2: the O2 pipeline and code generator; 0: neither (about a
+// quarter of the compile time, for code that does not run long: the JIT cache's first run).
+bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info = {},
+                int optLevel = 2);
 
 // The JIT as a separately loaded part (libncc-jit.so, dlopen'ed by the driver on first use), so
 // that a process that compiles nothing never maps LLVM. The module resolves everything outside
@@ -55,7 +57,7 @@ struct JitApi {
   bool (*runModule)(const ir::Module &, CmdSink &, Diagnostics &, const JitOptions &);
   bool (*compilesQuickly)(const ir::Module &, std::string &);
   bool (*emitLLVM)(const ir::Module &, std::string &, Diagnostics &);
-  bool (*emitObject)(const ir::Module &, const std::string &, Diagnostics &, const ncrt::ProgramInfo &);
+  bool (*emitObject)(const ir::Module &, const std::string &, Diagnostics &, const ncrt::ProgramInfo &, int optLevel);
 };
 // What both sides compute from the headers they were built with.
 constexpr uint64_t jitApiStamp() {

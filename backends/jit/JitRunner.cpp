@@ -43,7 +43,7 @@ static std::string errorText(Error e) {
   return s;
 }
 
-std::unique_ptr<TargetMachine> hostTargetMachine(Diagnostics &diags) {
+std::unique_ptr<TargetMachine> hostTargetMachine(Diagnostics &diags, bool optimise) {
   initLLVM();
   auto jtmb = orc::JITTargetMachineBuilder::detectHost();
   if (!jtmb) {
@@ -52,7 +52,7 @@ std::unique_ptr<TargetMachine> hostTargetMachine(Diagnostics &diags) {
   }
   jtmb->setRelocationModel(Reloc::PIC_);
   jtmb->setCodeModel(CodeModel::Small);  // as a compiler's objects (the JIT's default is large)
-  jtmb->setCodeGenOptLevel(CodeGenOptLevel::Default);
+  jtmb->setCodeGenOptLevel(optimise ? CodeGenOptLevel::Default : CodeGenOptLevel::None);
   auto tm = jtmb->createTargetMachine();
   if (!tm) {
     diags.error({}, "cannot target the host: " + errorText(tm.takeError()));

@@ -1,4 +1,4 @@
-// AOT: the JIT's LLVM IR, optimised at O2 and compiled for the host into an object file whose
+// AOT: the JIT's LLVM IR, optimised at O2 (or not at all: the JIT cache's quick tier) and compiled for the host into an object file whose
 // entry is `int ncc_program_main(ncrt_ctx *)` and which describes the program in
 // `ncc_program_info`; link it with the ncc runtime (ncrt_*, builtins) or run it with `ncc run`.
 #include "backends/jit/Codegen.h"
@@ -27,18 +27,19 @@ static void addProgramInfo(Module &mod, ncrt::ProgramInfo info) {
   gv->setAlignment(Align(8));
 }
 
-bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info) {
+bool emitObject(const ir::Module &m, const std::string &path, Diagnostics &diags, const ncrt::ProgramInfo &info,
+                int optLevel) {
   if (std::string why; !compilesQuickly(m, why)) {  // no engine to fall back to here
     diags.error({}, fmt::format("cannot compile ahead of time: {}, which takes LLVM minutes", why), "unsupported-code");
     return false;
   }
-  auto tm = hostTargetMachine(diags);
+  auto tm = hostTargetMachine(diags, optLevel > 0);
   if (!tm) return false;
   LLVMContext ctx;
   std::unique_ptr<Module> mod = buildHostModule(m, ctx, *tm, diags);
   if (!mod) return false;
   addProgramInfo(*mod, info);
-  optimizeModule(*mod, tm.get(), 2);
+  optimizeModule(*mod, tm.get(), optLevel);
 
   SmallVector<char, 0> buf;
   raw_svector_ostream os(buf);

@@ -40,7 +40,7 @@ std::vector<std::string> splitList(const std::string &s) {
 bool emitExecutable(Session &s, const jit::JitApi &jit, const ir::Module &m, const ncrt::ProgramInfo &info,
                     const std::string &out) {
   std::string obj = out + ".ncc-" + std::to_string(getpid()) + ".o";
-  bool ok = jit.emitObject(m, obj, s.diags, info) && linkExecutable(obj, out, s.diags);
+  bool ok = jit.emitObject(m, obj, s.diags, info, 2) && linkExecutable(obj, out, s.diags);
   std::remove(obj.c_str());
   return ok;
 }
@@ -94,7 +94,7 @@ int cmdCompile(int argc, char **argv) {
   } else {
     ncrt::ProgramInfo info;
     if (!programInfo(s, f, info)) return kExitErrors;
-    if (emit == "obj" ? !jit->emitObject(m, out, s.diags, info) : !emitExecutable(s, *jit, m, info, out))
+    if (emit == "obj" ? !jit->emitObject(m, out, s.diags, info, 2) : !emitExecutable(s, *jit, m, info, out))
       return kExitErrors;
   }
   return s.exitCode();

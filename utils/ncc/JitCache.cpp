@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 namespace ncc::driver {
 
@@ -115,21 +116,98 @@ static ncrt_entry entryOf(const std::unique_ptr<LoadedObject> &obj, std::string 
   return entry;
 }
 
+// Compiles `m` into the cache entry `path` at optLevel and loads it; null when that fails (the
+// reason reported with --cache-stats): the caller runs without the cache.
+static std::unique_ptr<LoadedObject> store(Session &s, const ir::Module &m, const jit::JitApi &jit,
+                                           const std::string &dir, const std::string &path, int optLevel) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  ncrt::ProgramInfo info;
+  // A cache folder that cannot be written (read-only, not a folder): run as without a cache.
+  if (!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0 || !programInfo(s, s.mainFile ? s.mainFile : 1, info))
+    return nullptr;
+  // A store that fails (a full disk, …) is not the program's error: run as without a cache.
+  Diagnostics storeDiags(s.diags.sources());
+  storeDiags.setCollect(true);
+  if (!jit.emitObject(m, path, storeDiags, info, optLevel)) {
+    report(s, "cannot store the object, running without the cache:", path);
+    return nullptr;
+  }
+  std::string err;
+  std::unique_ptr<LoadedObject> obj = LoadedObject::load(path, err);
+  if (!entryOf(obj, err)) {  // an object the loader refuses: run in the JIT as without a cache
+    report(s, "cannot load the stored object (" + err + "):", path);
+    return nullptr;
+  }
+  evict(dir, cacheLimitBytes());
+  return obj;
+}
+
+// Whether a loop of `m` visibly runs hot: a while condition or loop count that holds a literal of
+// at least NCRT_POLL_INTERVAL, or a plain variable the program assigns such a literal (Macro B's
+// `#1=1000000 … WHILE [#2 LT #1]`). Such a program is compiled at O2 at once, not twice.
+namespace {
+struct HotScan {
+  std::set<std::string> bigVars;  // plain variables assigned a literal >= NCRT_POLL_INTERVAL
+  bool hot = false;
+  // A variable with a constant name and index (`#1` is space Numbered with index 1): its key, else "".
+  static std::string key(const ir::Expr &v) {
+    if (v.kind != ir::ExprKind::Var || v.args.size() > 1) return {};
+    if (v.args.size() == 1 && (!v.args[0] || v.args[0]->kind != ir::ExprKind::Number)) return {};
+    return fmt::format("{}:{}:{}", (int)v.space, v.str, v.args.empty() ? 0.0 : v.args[0]->num);
+  }
+  static bool big(const ir::Expr &e) { return e.kind == ir::ExprKind::Number && e.num >= NCRT_POLL_INTERVAL; }
+  void assigns(const ir::Region &r) {
+    for (const ir::Op &op : r) {
+      const ir::Expr *t = op.get("target"), *v = op.get("value");
+      if (op.kind == ir::OpKind::Assign && t && v && big(*v) && !key(*t).empty()) bigVars.insert(key(*t));
+      for (const ir::Region &sub : op.regions) assigns(sub);
+    }
+  }
+  bool bound(const ir::Expr &e) const {
+    if (big(e) || (!key(e).empty() && bigVars.count(key(e)))) return true;
+    for (const ir::ExprPtr &a : e.args)
+      if (a && bound(*a)) return true;
+    return false;
+  }
+  void loops(const ir::Region &r) {
+    for (const ir::Op &op : r) {
+      const ir::Expr *b = op.kind == ir::OpKind::While ? op.get("cond") : op.kind == ir::OpKind::Loop ? op.get("count") : nullptr;
+      if (b && bound(*b)) hot = true;
+      for (const ir::Region &sub : op.regions) loops(sub);
+    }
+  }
+};
+}  // namespace
+
+static bool looksHot(const ir::Module &m) {
+  HotScan scan;
+  for (const ir::Function &f : m.functions) scan.assigns(f.body);
+  for (const ir::Function &f : m.functions) scan.loops(f.body);
+  return scan.hot;
+}
+
+// Two tiers: a program is first compiled without optimisation (`<key>.quick.o`, a quarter of the
+// O2 compile time, which is most of a short program's run) unless it looks hot; a run of that code
+// that turns out hot (NCRT_POLL_INTERVAL loop iterations or backward jumps) compiles it again at O2
+// (`<key>.o`), which later runs use.
 bool runCached(Session &s, const ir::Module &m, CmdSink &sink, bool &ok) {
   std::string dir = s.opts.noCache ? std::string() : cacheDirectory();
   std::string key;
   if (dir.empty() || !cacheKey(s, key)) return false;
-  std::string path = dir + "/" + key + ".o";
-  std::string err;
+  const std::string optimised = dir + "/" + key + ".o", quick = dir + "/" + key + ".quick.o";
+  std::string err, path;
   std::unique_ptr<LoadedObject> obj;
   std::error_code ec;
-  if (fs::exists(path, ec)) {
-    obj = LoadedObject::load(path, err);
+  for (const std::string &p : {optimised, quick}) {
+    if (obj || !fs::exists(p, ec)) continue;
+    obj = LoadedObject::load(p, err);
     if (entryOf(obj, err)) {
-      fs::last_write_time(path, fs::file_time_type::clock::now(), ec);  // recently used
-      report(s, "hit", path);
+      fs::last_write_time(p, fs::file_time_type::clock::now(), ec);  // recently used
+      report(s, "hit", p);
+      path = p;
     } else {
-      report(s, "damaged entry, compiling again (" + err + "):", path);
+      report(s, "damaged entry, compiling again (" + err + "):", p);
       obj.reset();
     }
   }
@@ -137,28 +215,21 @@ bool runCached(Session &s, const ir::Module &m, CmdSink &sink, bool &ok) {
     const jit::JitApi *jit = jitBackend(s.diags);
     std::string why;
     if (!jit || !jit->compilesQuickly(m, why)) return false;  // the caller reports / uses the eval engine
-    fs::create_directories(dir, ec);
-    ncrt::ProgramInfo info;
-    // A cache folder that cannot be written (read-only, not a folder): run as without a cache.
-    if (!fs::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0 ||
-        !programInfo(s, s.mainFile ? s.mainFile : 1, info))
-      return false;
-    // A store that fails (a full disk, …) is not the program's error: run as without a cache.
-    Diagnostics storeDiags(s.diags.sources());
-    storeDiags.setCollect(true);
-    if (!jit->emitObject(m, path, storeDiags, info)) {
-      report(s, "cannot store the object, running without the cache:", path);
-      return false;
-    }
-    obj = LoadedObject::load(path, err);
-    if (!entryOf(obj, err)) {  // an object the loader refuses: run in the JIT as without a cache
-      report(s, "cannot load the stored object (" + err + "):", path);
-      return false;
-    }
+    path = looksHot(m) ? optimised : quick;
+    obj = store(s, m, *jit, dir, path, path == optimised ? 2 : 0);
+    if (!obj) return false;
     report(s, "miss, stored", path);
-    evict(dir, cacheLimitBytes());
   }
-  ok = ncrt::runEntry(entryOf(obj, err), sink, s.diags, s.opts.limits);
+  bool hot = false;
+  ok = ncrt::runEntry(entryOf(obj, err), sink, s.diags, s.opts.limits, &hot);
+  if (ok && hot && path == quick) {
+    obj.reset();
+    const jit::JitApi *jit = jitBackend(s.diags);
+    if (jit && store(s, m, *jit, dir, optimised, 2)) {
+      fs::remove(quick, ec);
+      report(s, "hot, optimised", optimised);
+    }
+  }
   return true;
 }
 
