@@ -614,7 +614,7 @@ bool Executor::Impl::plainMoveFits(const MachineCmd &c) const {
   if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
   if (st.feedMode == ModeValue::InverseTime || st.css || st.ended || stopOnce || pf.linear || rotated() ||
       poly.outside || corner.active || corner.requested || comp.active() || compExit || sinSpline.open ||
-      storedCycle.modal)
+      storedCycle.modal || tapOpen)
     return false;
   for (WordMask m = axes; m; m &= m - 1)  // exec's check: a bad number gets its diagnostic there
     if (!std::isfinite(c.w[__builtin_ctzll(m)])) return false;

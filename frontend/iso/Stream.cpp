@@ -137,24 +137,26 @@ static const char *scanBlock(const char *q, const char *end) {
 // program, where the line by line walk would look closer. Those are the Word letters but G,
 // comments, ';', and O and ':' (a program number at a line's start); a G only when the byte after
 // it is not 1-4, 8 or 9 (no code that begins with these digits needs the whole program: G1,
-// G17, G40, G80, ... go; G0 stops, as G05 is G5).
-static bool stopsBulk(unsigned char c, unsigned char next) {
+// G17, G40, G80, ... go; G0 stops, as G05 is G5), and not "29" (G290/G291 switch the mode).
+static bool stopsBulk(unsigned char c, unsigned char next, unsigned char next2) {
   const ScanClass k = kScan.c[c];
   if (k == ScanClass::Word) {
     if ((c | 0x20) != 'g') return true;
+    if (next == '2' && next2 == '9') return true;
     return !((next >= '1' && next <= '4') || next == '8' || next == '9');
   }
   return k == ScanClass::Comment || k == ScanClass::EndOfBlock || (c | 0x20) == 'o' || c == ':';
 }
 
 // The first byte at or after q (before limit) where stopsBulk holds, or limit: sixteen bytes at a
-// time with SSE2 (the byte after each G from a second load), then byte by byte.
+// time with SSE2 (the two bytes after each G from a second and third load), then byte by byte.
 static const char *skipBulk(const char *q, const char *limit, const char *end) {
 #if defined(__SSE2__)
   auto eq = [](__m128i v, char c) { return _mm_cmpeq_epi8(v, _mm_set1_epi8(c)); };
-  for (; limit - q >= 16 && end - q >= 17; q += 16) {
+  for (; limit - q >= 16 && end - q >= 18; q += 16) {
     const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i *>(q));
     const __m128i n = _mm_loadu_si128(reinterpret_cast<const __m128i *>(q + 1));
+    const __m128i n2 = _mm_loadu_si128(reinterpret_cast<const __m128i *>(q + 2));
     const __m128i l = _mm_or_si128(x, _mm_set1_epi8(0x20));
     const __m128i marks = _mm_or_si128(_mm_or_si128(eq(x, '('), eq(x, ';')), _mm_or_si128(eq(x, ':'), eq(l, 'o')));
     const __m128i words = _mm_or_si128(_mm_or_si128(_mm_or_si128(eq(l, 'd'), eq(l, 'e')), _mm_or_si128(eq(l, 'i'), eq(l, 'm'))),
@@ -162,14 +164,16 @@ static const char *skipBulk(const char *q, const char *limit, const char *end) {
     // The digit after a G that lets it pass: '1'..'4' (unsigned: n - '1' <= 3), '8', '9'.
     const __m128i d = _mm_sub_epi8(n, _mm_set1_epi8('1'));
     const __m128i low = _mm_cmpeq_epi8(_mm_min_epu8(d, _mm_set1_epi8(3)), d);
-    const __m128i safe = _mm_or_si128(low, _mm_or_si128(eq(n, '8'), eq(n, '9')));
+    const __m128i safe = _mm_andnot_si128(_mm_and_si128(eq(n, '2'), eq(n2, '9')),
+                                          _mm_or_si128(low, _mm_or_si128(eq(n, '8'), eq(n, '9'))));
     const __m128i g = _mm_andnot_si128(safe, eq(l, 'g'));
     if (const int hit = _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(marks, words), g)))
       return q + __builtin_ctz((unsigned)hit);
   }
 #endif
   for (; q < limit; ++q)
-    if (stopsBulk((unsigned char)*q, q + 1 < end ? (unsigned char)q[1] : 0)) return q;
+    if (stopsBulk((unsigned char)*q, q + 1 < end ? (unsigned char)q[1] : 0, q + 2 < end ? (unsigned char)q[2] : 0))
+      return q;
   return limit;
 }
 

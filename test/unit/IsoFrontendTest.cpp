@@ -527,7 +527,7 @@ TEST(IsoStream, StreamabilityEdges) {
 TEST(IsoStream, BulkPreScanDecidesAsLineByLine) {
   static const char *kPieces[] = {
       "G1 X1.5 Y-2", "G01", "G0", "G00 Z1", "G05", "G5.1", "G 65", "G65", "G66", "G70", "G73", "G74", "G17", "G80",
-      "G4 P1", "G9", "G8", "G28", "g1", "g05", "g 66", "M98", "M99", "M3", "M 98", "m98", "M#1", "G[1]", "G #1",
+      "G4 P1", "G9", "G8", "G28", "G290", "G291", "g290", "G29", "G2", "g1", "g05", "g 66", "M98", "M99", "M3", "M 98", "m98", "M#1", "G[1]", "G #1",
       "IF", "GOTO 5", "GO", "DO1", "END1", "EN", "WHILE", "WH", "XIF", "AGOTO", "COS[1]", "ROUND", "O100", "o100",
       ":100", "N10", "N", "N 20", "NG65", "N10G65", "N10 O2", "/", "/N5 O1", "(IF)", "(a (GOTO) b)", "(unclosed",
       ";M98", "; (", "#1=2", "D1", "E1", "I1", "W1", "MOVE", "\r", " ", "\t", "%", "X", "0", "5", "6", "7"};
