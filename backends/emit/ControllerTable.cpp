@@ -248,7 +248,9 @@ ControllerStyle defaultStyle(Target t) {
   ControllerStyle s;
   s.target = t;
   bool iso = t == Target::ISO;
-  s.section = iso ? "emit.iso" : "emit.sinumerik";
+  static const char *const kSections[] = {"emit.iso", "emit.sinumerik", "emit.heidenhain"};
+  s.section = kSections[(size_t)t];
+  // Klartext uses the M codes only, which are Sinumerik's (and ISO's).
   for (const CodeDef &d : kCodes) s.codes[(size_t)d.code] = iso ? d.iso : d.sinumerik;
 
   NumberFormat length;  // 3 decimals: the 0.001 mm input increment (IS-B)
@@ -278,6 +280,14 @@ ControllerStyle defaultStyle(Target t) {
     s.programNumber = true;
     // 808D: G20/G21 must stand alone in their block (seed 001 §2.2).
     s.setup = {"G21", "G90 G17 G94 G54"};
+  } else if (t == Target::Heidenhain) {
+    // Klartext: signed coordinates (X+10 ), blocks numbered from 0 (BEGIN PGM) by 1, `;`
+    // comments; F, S and the dwell unsigned. Klartext.cpp writes the frame and the blocks.
+    for (WordClass c : {WordClass::Axis, WordClass::Rotary, WordClass::Center}) s.formats[(size_t)c].plusSign = true;
+    s.commentStyle = CommentStyle::Semicolon;
+    s.numbering = Numbering::Renumber;
+    s.blockStart = 0;
+    s.blockStep = 1;
   } else {
     s.arcStyle = ArcStyle::IJK;
     s.helixTurns = HelixTurns::Word;

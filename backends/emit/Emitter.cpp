@@ -354,19 +354,7 @@ void Emitter::coolant(const MotionRecord &r, bool flood) {
   pendingGroups_ |= 1u << (unsigned)PendingGroup::Coolant;
 }
 
-std::vector<std::string> Emitter::coolantCodes() {
-  std::vector<std::string> codes;
-  bool off = (flood_ && !floodWanted_) || (mist_ && !mistWanted_);
-  if (off) {
-    codes.push_back(code(Code::CoolantOff));  // one code turns both off
-    flood_ = mist_ = false;
-  }
-  if (mistWanted_ && !mist_) codes.push_back(code(Code::MistOn));
-  if (floodWanted_ && !flood_) codes.push_back(code(Code::FloodOn));
-  flood_ = floodWanted_;
-  mist_ = mistWanted_;
-  return codes;
-}
+std::vector<std::string> Emitter::coolantCodes() { return detail::coolantCodes(st_, flood_, mist_, floodWanted_, mistWanted_); }
 
 void Emitter::record(const MotionRecord &r) {
   if (finished_) return;
@@ -545,6 +533,7 @@ using detail::LineSink;
 
 std::unique_ptr<ProgramEmitter> makeEmitter(const Machine &m, const EmitOptions &opts, LineSink out,
                                             Diagnostics &diags) {
+  if (opts.target == Target::Heidenhain) return detail::makeKlartext(m, opts, out, diags);
   ControllerStyle style = defaultStyle(opts.target);
   if (!applyLathe(m, style, diags) || !applyMachineSection(m, style, diags)) return nullptr;
   auto e = std::make_unique<Emitter>(m, std::move(style), opts, out, diags);
@@ -559,10 +548,13 @@ bool targetFromName(std::string_view name, Target &out) {
   for (char c : name) l += (char)std::tolower((unsigned char)c);
   if (l == "iso" || l == "fanuc") return out = Target::ISO, true;
   if (l == "sinumerik" || l == "siemens") return out = Target::Sinumerik, true;
+  if (l == "heidenhain" || l == "klartext" || l == "tnc") return out = Target::Heidenhain, true;
   return false;
 }
 
-const char *targetName(Target t) { return t == Target::ISO ? "iso" : "sinumerik"; }
+const char *targetName(Target t) {
+  return t == Target::ISO ? "iso" : t == Target::Sinumerik ? "sinumerik" : "heidenhain";
+}
 
 std::unique_ptr<ProgramEmitter> ProgramEmitter::create(const Machine &m, const EmitOptions &opts,
                                                        std::string &out, Diagnostics &diags) {

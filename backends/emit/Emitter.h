@@ -1,8 +1,9 @@
 // Program emitters: print a Motion IR stream (machine coordinates, mm) as an NC program for
-// another controller. The controller's word formats, codes, numbering and arc style come from a
-// table per target (ControllerTable.cpp) that the machine description's [emit.iso] /
-// [emit.sinumerik] sections override key by key (docs/EMIT.md), in the spirit of a
-// postprocessor passport: one engine, no per-controller code forks.
+// another controller. Two writer families: word-address programs (ISO, Sinumerik: Emitter.cpp)
+// and Heidenhain Klartext (Klartext.cpp). The controller's word formats, codes, numbering and arc
+// style come from a table per target (ControllerTable.cpp) that the machine description's
+// [emit.iso] / [emit.sinumerik] / [emit.heidenhain] sections override key by key (docs/EMIT.md),
+// in the spirit of a postprocessor passport: data, not per-controller code forks.
 #pragma once
 #include "ir/MotionIR.h"
 #include "runtime/Machine.h"
@@ -14,9 +15,10 @@
 
 namespace ncc::emit {
 
-enum class Target { ISO, Sinumerik };
+enum class Target { ISO, Sinumerik, Heidenhain };
 
-// Accepts "iso" / "fanuc" and "sinumerik" / "siemens" (any case). Returns false otherwise.
+// Accepts "iso" / "fanuc", "sinumerik" / "siemens" and "heidenhain" / "klartext" / "tnc" (any
+// case). Returns false otherwise.
 bool targetFromName(std::string_view name, Target &out);
 const char *targetName(Target t);
 

@@ -41,6 +41,27 @@ private:
   std::FILE *file_ = nullptr;
 };
 
+// The coolant codes that take the written state (flood, mist) to the wanted one, and the written
+// state after them. The codes share one modal group and one code turns both off, so the two "off"
+// records a single M9 produces become one M9 again.
+inline std::vector<std::string> coolantCodes(const ControllerStyle &st, bool &flood, bool &mist, bool floodWanted,
+                                             bool mistWanted) {
+  std::vector<std::string> codes;
+  if ((flood && !floodWanted) || (mist && !mistWanted)) {
+    codes.push_back(st.codes[(size_t)Code::CoolantOff]);
+    flood = mist = false;
+  }
+  if (mistWanted && !mist) codes.push_back(st.codes[(size_t)Code::MistOn]);
+  if (floodWanted && !flood) codes.push_back(st.codes[(size_t)Code::FloodOn]);
+  flood = floodWanted;
+  mist = mistWanted;
+  return codes;
+}
+
+// The Klartext writer family (Klartext.cpp): nullptr after reporting when its section is invalid.
+std::unique_ptr<ProgramEmitter> makeKlartext(const Machine &m, const EmitOptions &opts, LineSink out,
+                                             Diagnostics &diags);
+
 // State words waiting for the next block. A second word of a group already waiting flushes the
 // buffer first (the passport's "alternative window" rule, seed 004 §3.5).
 enum class PendingGroup : uint8_t { Speed, Spindle, Coolant, Tool, ToolChange, Plane, FeedMode, PathMode, SpindleMode };

@@ -16,7 +16,7 @@ int cmdTranslate(int argc, char **argv) {
   po::options_description desc("ncc translate options");
   desc.add_options()
       ("file", po::value(&file)->required(), "program to translate")
-      ("to", po::value(&to)->required(), "target controller: iso|sinumerik")
+      ("to", po::value(&to)->required(), "target controller: iso|sinumerik|heidenhain")
       ("output,o", po::value(&out), "output file (default: standard output)")
       ("verify", po::bool_switch(&verify), "run source and output through the motion pipeline; fail if the paths differ")
       ("tolerance", po::value(&tol)->default_value(1e-3), "--verify position tolerance in mm")
@@ -25,11 +25,11 @@ int cmdTranslate(int argc, char **argv) {
   po::positional_options_description pos;
   pos.add("file", 1);
   po::variables_map vm;
-  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik [-o OUT] [--verify]");
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik|heidenhain [-o OUT] [--verify]");
   if (rc >= 0) return rc;
   emit::EmitOptions eo;
   if (!emit::targetFromName(to, eo.target)) {
-    std::fprintf(stderr, "ncc: error: unknown target '%s' (expected iso or sinumerik)\n", to.c_str());
+    std::fprintf(stderr, "ncc: error: unknown target '%s' (expected iso, sinumerik or heidenhain)\n", to.c_str());
     return kExitUsage;
   }
   eo.comments = !noComments;
@@ -47,11 +47,11 @@ int cmdTranslate(int argc, char **argv) {
 
   if (verify) {
     // The output is read back by the target's own front end.
-    bool sin = eo.target == emit::Target::Sinumerik;
-    std::string name = (out.empty() || out == "-") ? (sin ? "<translated>.mpf" : "<translated>.nc") : out;
+    static const char *const kExt[] = {".nc", ".mpf", ".h"};
+    std::string name = (out.empty() || out == "-") ? std::string("<translated>") + kExt[(size_t)eo.target] : out;
     uint32_t tf = s.sm.addBuffer(name, text);
     std::string savedDialect = s.opts.dialect;
-    s.opts.dialect = sin ? "sinumerik" : "iso";
+    s.opts.dialect = emit::targetName(eo.target);
     MotionBuffer back;
     bool ok = s.execute(tf, back);
     s.opts.dialect = savedDialect;
