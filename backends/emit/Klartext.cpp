@@ -515,7 +515,7 @@ std::unique_ptr<ProgramEmitter> makeKlartext(const Machine &m, const EmitOptions
                                              Diagnostics &diags) {
   ControllerStyle style = defaultStyle(Target::Heidenhain);
   if (m.controller.lathe()) {
-    diags.error(SourceLoc{}, "machine '" + m.name + "': the [emit.heidenhain] emitter writes milling programs only");
+    diags.error(SourceLoc{}, "machine '" + m.name + "': the [emit.heidenhain] emitter writes milling programs only", "unsupported-code");
     return nullptr;
   }
   if (!applyMachineSection(m, style, diags)) return nullptr;

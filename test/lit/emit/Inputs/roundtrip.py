@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""Translates every test program that runs into another controller's language and reads it back
+(`ncc translate --to=TARGET --verify`). Each program must either verify or be refused with a
+located error naming the record the target cannot hold ([unsupported-code], [tilted-arc]):
+anything else (a path that differs, an output that does not run, a crash) is a MISMATCH.
+
+usage: roundtrip.py NCC SRC_ROOT TARGET MACHINE GLOB...
+  MACHINE: a machine file for programs whose RUN lines name none ("-": ncc's default machine);
+           "=FILE" runs every program on FILE
+"""
+import glob
+import os
+import re
+import subprocess
+import sys
+
+ncc, root, target, machine = sys.argv[1:5]
+programs = sorted({p for pat in sys.argv[5:] for p in glob.glob(os.path.join(root, pat), recursive=True)})
+# Options the program's own RUN lines give it: its machine, the folders of called programs.
+option = re.compile(r"--(machine|include)=(%srcroot|%S|%shared)/(\S+)")
+bases = {"%srcroot": root, "%shared": os.path.normpath(os.path.join(root, "..", "shared"))}
+
+verified = refused = mismatches = 0
+for prog in programs:
+    with open(prog, errors="replace") as f:
+        text = f.read()
+    args = {}
+    for kind, base, rest in option.findall(text):
+        args.setdefault(kind, os.path.join(bases.get(base, os.path.dirname(prog)), rest))
+    if machine.startswith("="):
+        args["machine"] = machine[1:]
+    elif "machine" not in args and machine != "-":
+        args["machine"] = machine
+    opts = ["--%s=%s" % kv for kv in sorted(args.items())] + ["--max-seconds=20", "--max-loop-iterations=200000"]
+    src = subprocess.run([ncc, "run", prog, "-o", os.devnull] + opts, capture_output=True)
+    if src.returncode != 0:
+        continue  # an error test: the source itself does not run
+    out = subprocess.run([ncc, "translate", prog, "--to=" + target, "--verify", "-o", os.devnull] + opts,
+                         capture_output=True, text=True)
+    name = os.path.relpath(prog, root)
+    first = next((l for l in out.stderr.splitlines() if "error:" in l), "")
+    if out.returncode == 0 and "verified:" in out.stderr:
+        verified += 1
+    elif re.search(r"error: .*\[(unsupported-code|tilted-arc)\]$", first):
+        refused += 1  # a record at its source line, or the machine (a lathe to Klartext)
+        why = re.search(r"record \((.*)\): |error: (.*) \[", first)
+        print("REFUSED %s: %s" % (name, why.group(1) or why.group(2)))
+    else:
+        mismatches += 1
+        print("MISMATCH %s: %s" % (name, first or out.stderr.strip()[-300:]))
+print("%s: %d verified, %d refused, %d mismatches" % (target, verified, refused, mismatches))
