@@ -43,8 +43,8 @@ for prog in programs:
         verified += 1
     elif re.search(r"error: .*\[(unsupported-code|tilted-arc)\]$", first):
         refused += 1  # a record at its source line, or the machine (a lathe to Klartext)
-        why = re.search(r"record \((.*)\): |error: (.*) \[", first)
-        print("REFUSED %s: %s" % (name, why.group(1) or why.group(2)))
+        why = re.search(r"record \((.*)\): ", first) or re.search(r"error: (.*) \[", first)
+        print("REFUSED %s: %s" % (name, why.group(1)))
     else:
         mismatches += 1
         print("MISMATCH %s: %s" % (name, first or out.stderr.strip()[-300:]))
