@@ -365,7 +365,7 @@ void Emitter::record(const MotionRecord &r) {
       if (isMoveRecord(r.kind)) flag = r.kind == RecordKind::Thread;
     }
   } afterThread{afterThread_, r};
-  if (inNativeCycle_) return skipCycleRecord(r);
+  if (skipped_.active) return skipCycleRecord(r);
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear: move(r); break;

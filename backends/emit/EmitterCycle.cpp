@@ -105,17 +105,13 @@ bool Emitter::nativeCycle(const MotionRecord &r) {
   } else {
     writeBlock({cycle ? call : positions}, r.blockNumber);
   }
-  inNativeCycle_ = true;
+  skipped_.active = true;
   return true;
 }
 
 // Inside a cycle written as its call: the records are the call's, only its end position counts.
 void Emitter::skipCycleRecord(const MotionRecord &r) {
-  if (isMoveRecord(r.kind)) cycleEnd_ = r.end, cycleMoved_ = true;
-  if (r.kind != RecordKind::CycleEnd) return;
-  inNativeCycle_ = false;
-  if (cycleMoved_) notePosition(cycleEnd_, kAxes);
-  cycleMoved_ = false;
+  if (AxisVec end; skipped_.closes(r, end)) notePosition(end, kAxes);
 }
 
 }  // namespace ncc::emit::detail

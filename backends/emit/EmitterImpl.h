@@ -58,6 +58,26 @@ inline std::vector<std::string> coolantCodes(const ControllerStyle &st, bool &fl
   return codes;
 }
 
+// A cycle written as its call: the records of its expansion are skipped (the re-read call makes
+// them again); only the position where they end counts.
+class SkippedCycle {
+public:
+  bool active = false;
+  // Takes one record of the bracket; true when it closed a bracket that moved, to `end`.
+  bool closes(const MotionRecord &r, AxisVec &end) {
+    if (isMoveRecord(r.kind)) end_ = r.end, moved_ = true;
+    if (r.kind != RecordKind::CycleEnd) return false;
+    bool moved = moved_;
+    active = moved_ = false;
+    end = end_;
+    return moved;
+  }
+
+private:
+  bool moved_ = false;
+  AxisVec end_{};
+};
+
 // The Klartext writer family (Klartext.cpp): nullptr after reporting when its section is invalid.
 std::unique_ptr<ProgramEmitter> makeKlartext(const Machine &m, const EmitOptions &opts, LineSink out,
                                              Diagnostics &diags);
@@ -147,8 +167,7 @@ private:
   bool nativeCycle(const MotionRecord &r);
   bool cycleArguments(const MotionRecord &r, const CycleDef &d, const char *prefix, std::string &out);
   void skipCycleRecord(const MotionRecord &r);
-  bool inNativeCycle_ = false, cycleMoved_ = false;
-  AxisVec cycleEnd_{};
+  SkippedCycle skipped_;
   std::vector<std::string> coolantCodes();
 
   const Machine &machine_;

@@ -107,7 +107,6 @@ private:
   void mBlock(const std::string &m) { if (!m.empty()) block(m); }
   void aux(const MotionRecord &r);
   bool nativeCycle(const MotionRecord &r);
-  void skipCycleRecord(const MotionRecord &r);
 
   const Machine &machine_;
   ControllerStyle st_;
@@ -134,8 +133,7 @@ private:
   double programmedFeed_ = 0;
   bool spindleOn_ = false;
   bool flood_ = false, mist_ = false, floodWanted_ = false, mistWanted_ = false;
-  bool inNativeCycle_ = false, cycleMoved_ = false;
-  AxisVec cycleEnd_{};
+  SkippedCycle skipped_;
   std::string cycleDef_;  // the stored cycle definition of the written program
 };
 
@@ -412,21 +410,16 @@ bool Klartext::nativeCycle(const MotionRecord &r) {
     cycleDef_ = def;
   }
   block("CYCL CALL");
-  inNativeCycle_ = true;
+  skipped_.active = true;
   return true;
-}
-
-void Klartext::skipCycleRecord(const MotionRecord &r) {
-  if (isMoveRecord(r.kind)) cycleEnd_ = r.end, cycleMoved_ = true;
-  if (r.kind != RecordKind::CycleEnd) return;
-  inNativeCycle_ = false;
-  if (cycleMoved_) notePosition(cycleEnd_);
-  cycleMoved_ = false;
 }
 
 void Klartext::record(const MotionRecord &r) {
   if (finished_) return;
-  if (inNativeCycle_) return skipCycleRecord(r);
+  if (AxisVec end; skipped_.active) {
+    if (skipped_.closes(r, end)) notePosition(end);
+    return;
+  }
   switch (r.kind) {
   case RecordKind::Rapid:
   case RecordKind::Linear: move(r); break;

@@ -44,12 +44,6 @@
 ; RUN: not %ncc compile --emit=ir %t.lbl0.h 2>&1 | FileCheck %s --check-prefix=LBL0
 ; LBL0: lbl0.h:4:9: error: unexpected 'X' after LBL [syntax]
 ; LBL0: lbl0.h:2:12: error: the subprogram has no LBL 0 after its label (a section repeat needs REP) [syntax]
-; Translated to Klartext, ISO and Sinumerik, each reads back to the same path (docs/EMIT.md; ISO
-; and Sinumerik select G54 / G500, so they run on a machine whose G54 is zero).
-; RUN: %ncc translate %s --to=heidenhain --machine=%srcroot/examples/machines/heidenhain-tnc640-mill.toml --include=%S/Inputs --verify -o %t.to.h 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=iso --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --include=%S/Inputs --verify -o %t.to.nc 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=sinumerik --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --include=%S/Inputs --verify -o %t.to.mpf 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; TRANSLATED: verified:
 0 BEGIN PGM LABELS MM
 1 L X+0 Y+0 Z+0 R0 FMAX
 2 CALL LBL 1

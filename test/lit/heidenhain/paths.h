@@ -48,12 +48,6 @@
 ; CHECK-NEXT: N22 {{ *}}MIST_OFF()
 ; CHECK-NEXT: N22 {{ *}}FLOOD_OFF()
 ; CHECK: N23 {{ *}}PROGRAM_END()
-; Translated to Klartext, ISO and Sinumerik, each reads back to the same path (docs/EMIT.md; ISO
-; and Sinumerik select G54 / G500, so they run on a machine whose G54 is zero).
-; RUN: %ncc translate %s --to=heidenhain --machine=%srcroot/examples/machines/heidenhain-tnc640-mill.toml --verify -o %t.to.h 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=iso --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.nc 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=sinumerik --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.mpf 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; TRANSLATED: verified:
 0 BEGIN PGM PATHS MM
 1 TOOL CALL 3 Z S2000
 2 L X-20 Y-20 Z+0 R0 FMAX M3 M8

@@ -54,12 +54,6 @@
 ; CHECK-NEXT: 35.3528, 71.6370, 95.0000
 ; CHECK-NEXT: 14.6472, 71.6370, 95.0000
 ; CHECK-NOT: {{.}}
-; Translated to Klartext, ISO and Sinumerik, each reads back to the same path (docs/EMIT.md; ISO
-; and Sinumerik select G54 / G500, so they run on a machine whose G54 is zero).
-; RUN: %ncc translate %s --to=heidenhain --machine=%srcroot/examples/machines/heidenhain-tnc640-mill.toml --verify -o %t.to.h 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=iso --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.nc 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=sinumerik --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.mpf 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; TRANSLATED: verified:
 0 BEGIN PGM FORMS MM
 1 TOOL CALL 1 Z S1000 F300
 2 L Z+50 R0 FMAX M3

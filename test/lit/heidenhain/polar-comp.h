@@ -11,12 +11,6 @@
 ; CHECK-NEXT: N6 {{ *}}STRAIGHT_FEED(-16.9576, -1.2002, -155.0000,
 ; CHECK-NEXT: N7 {{ *}}ARC_FEED({{-?}}0.0000, -17.0000, 0.0000, 0.0000, 1, -155.0000,
 ; CHECK-NEXT: N8 {{ *}}STRAIGHT_FEED(30.0000, -30.0000, -155.0000,
-; Translated to Klartext, ISO and Sinumerik, each reads back to the same path (docs/EMIT.md; ISO
-; and Sinumerik select G54 / G500, so they run on a machine whose G54 is zero).
-; RUN: %ncc translate %s --to=heidenhain --machine=%srcroot/examples/machines/heidenhain-tnc640-mill.toml --verify -o %t.to.h 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=iso --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.nc 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=sinumerik --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.mpf 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; TRANSLATED: verified:
 0 BEGIN PGM COMP MM
 1 TOOL CALL 3 Z S1000
 2 L X-20 Y-20 Z+0 R0 FMAX M3

@@ -45,12 +45,6 @@
 ; RUN: printf '0 BEGIN PGM E MM\n1 L X+1 R0 FMAX\n2 FN 14: ERROR = 1000\n3 L X+2 R0 FMAX\n4 END PGM E MM\n' > %t.fn14.h
 ; RUN: not %ncc run %t.fn14.h 2>&1 | FileCheck %s --check-prefix=FN14
 ; FN14: fn14.h:3:3: error: FN 14: error 1000 [abort]
-; Translated to Klartext, ISO and Sinumerik, each reads back to the same path (docs/EMIT.md; ISO
-; and Sinumerik select G54 / G500, so they run on a machine whose G54 is zero).
-; RUN: %ncc translate %s --to=heidenhain --machine=%srcroot/examples/machines/heidenhain-tnc640-mill.toml --verify -o %t.to.h 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=iso --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.nc 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; RUN: %ncc translate %s --to=sinumerik --machine=%srcroot/test/lit/emit/Inputs/emit-mill.toml --verify -o %t.to.mpf 2>&1 | FileCheck %s --check-prefix=TRANSLATED
-; TRANSLATED: verified:
 0 BEGIN PGM QPARAMS MM
 1 L X+Q1 Y+QL1 Z+QR1 R0 FMAX
 2 L X+0 Y+0 Z+0 R0 FMAX
