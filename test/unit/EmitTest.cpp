@@ -120,7 +120,12 @@ TEST(EmitTarget, Names) {
   ASSERT_TRUE(targetFromName("sinumerik", t));
   EXPECT_EQ(t, Target::Sinumerik);
   ASSERT_TRUE(targetFromName("Siemens", t));
-  EXPECT_FALSE(targetFromName("heidenhain", t));
+  for (const char *n : {"heidenhain", "Klartext", "TNC"}) {
+    ASSERT_TRUE(targetFromName(n, t)) << n;
+    EXPECT_EQ(t, Target::Heidenhain);
+  }
+  EXPECT_STREQ(targetName(Target::Heidenhain), "heidenhain");
+  EXPECT_FALSE(targetFromName("fanuc-klartext", t));
 }
 
 TEST(EmitISO, HeaderModalSuppressionAndEnd) {
