@@ -41,10 +41,14 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
     for (int k = 0; k < kAxes && why.empty(); ++k)
       if (std::fabs(x.end[k] - y.end[k]) > opts.tolerance) why = fmt::format("end points differ in {}", kAxisLetters[k]);
     if (why.empty() && x.kind == RecordKind::Arc) {
-      for (int k = 0; k < 3 && why.empty(); ++k)
-        if (std::fabs(x.center[k] - y.center[k]) > opts.tolerance) why = "arc centres differ";
-      if (why.empty() && (x.turns != y.turns || x.plane != y.plane)) why = "arc direction, turns or plane differ";
+      // Only the centre's position in the arc plane shapes the path: its component along the
+      // axis is a front end's convention (a helix's start or end height), so it is not compared.
       auto nx = x.arcNormal(), ny = y.arcNormal();
+      double d[3], along = 0;
+      for (int k = 0; k < 3; ++k) along += (d[k] = x.center[k] - y.center[k]) * nx[k];
+      for (int k = 0; k < 3 && why.empty(); ++k)
+        if (std::fabs(d[k] - along * nx[k]) > opts.tolerance) why = "arc centres differ";
+      if (why.empty() && (x.turns != y.turns || x.plane != y.plane)) why = "arc direction, turns or plane differ";
       for (int k = 0; k < 3 && why.empty(); ++k)
         if (std::fabs(nx[k] - ny[k]) > 1e-9) why = "arc plane normals differ";
     }
