@@ -371,9 +371,9 @@ TEST(Machine, ErrorsAreLocated) {
       {b + "[controller]\nmacro_calls = { M30 = \"O9000\" }\n",
        "m.toml:6:17: error: macro_calls: M30 is a code of the controller itself and cannot call a program"},
       {b + "[controller]\nmacro_calls = { M6 = { program = \"O9001\", kind = \"call\" } }\n",
-       "m.toml:6:46: error: kind: 'call' is not one of macro, subprogram"},
+       "m.toml:6:50: error: kind: 'call' is not one of macro, subprogram"},
       {b + "[controller]\nmacro_calls = { M6 = \"O9001\", M06 = \"O9002\" }\n",
-       "m.toml:6:32: error: macro_calls: M6 is given twice"},
+       "m.toml:6:17: error: macro_calls: M6 is given twice"},
       {b + "[[tools]]\nnumber = 1\nedges = [{ d = 1, radius = -1 }]\n",
        "m.toml:7:28: error: radius: must be >= 0, got -1"},
       // Required keys, at their table.
