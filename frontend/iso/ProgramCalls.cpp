@@ -11,11 +11,7 @@
 
 namespace ncc::iso {
 
-using ir::Expr;
-using ir::ExprPtr;
-using ir::Op;
-using ir::OpKind;
-using ir::Region;
+using ir::Expr, ir::ExprPtr, ir::Op, ir::OpKind, ir::Region;
 
 namespace {
 
