@@ -73,6 +73,14 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.offsetMemory = o.offsetMemory == "C" ? iso::OffsetMemory::C : iso::OffsetMemory::None;
   io.lathe = o.lathe;
   io.latheSystem = o.latheSystem;
+  for (auto &c : o.macroCalls) {
+    // "O0012" names program O12, as M98 P12 does; other names stay ("M6_MAKRO").
+    std::string callee = c.program;
+    size_t digits = callee.find_first_not_of('0', 1);
+    if (callee.size() > 1 && callee[0] == 'O' && callee.find_first_not_of("0123456789", 1) == std::string::npos)
+      callee = "O" + (digits == std::string::npos ? std::string("0") : callee.substr(digits));
+    io.codeCalls.push_back({c.code[0], std::llround(std::stod(c.code.substr(1)) * 10), callee, c.subprogram});
+  }
   return io;
 }
 
@@ -137,7 +145,8 @@ private:
 
 std::unique_ptr<BlockStream> openBlockStream(SourceKind kind, SourceManager &sm, uint32_t file,
                                              const FrontendOptions &opts, Diagnostics &diags) {
-  if (kind == SourceKind::ISO && iso::isoIsStreamable(sm.text(file), &sm, file))
+  // A code that calls a program needs the whole program (the callee, its nesting rule).
+  if (kind == SourceKind::ISO && opts.macroCalls.empty() && iso::isoIsStreamable(sm.text(file), &sm, file))
     return std::make_unique<IsoStream>(sm, file, isoOptions(opts), diags);
   return nullptr;
 }

@@ -27,6 +27,13 @@ struct FrontendOptions {
   // The mode a Sinumerik program file (.mpf/.spf) starts in: "siemens" (G290), or "iso" (G291:
   // the 808D's ISO default mode, machine [controller] start_mode; the ISO front end reads it).
   std::string startMode = "siemens";
+  // Machine [controller] macro_calls: a G or M code ("M6", "G65.1") that calls `program`, with the
+  // block's addresses as arguments (G65) or, `subprogram`, as M98 after the block.
+  struct CodeCall {
+    std::string code, program;
+    bool subprogram = false;
+  };
+  std::vector<CodeCall> macroCalls;
 };
 
 // What a file holds: a dialect, or textual NC IR.

@@ -28,6 +28,8 @@ static const LintRule kRules[] = {
      "GOTO / IF … GOTO / M99 P to a sequence number the program does not have"},
     {"missing-subprogram", Severity::Error, "front end",
      "M98/G65 to a program found neither in the file nor in the search path"},
+    {"several-calls", Severity::Error, "front end",
+     "two program calls in one block: codes the machine's macro_calls configures, M98, G65/G66, G05 (808D alarm 12722)"},
     {"loop-mismatch", Severity::Error, "front end",
      "WHILE/DO/END or o-word blocks that do not nest"},
     {"mode-switch", Severity::Error, "front end",

@@ -248,6 +248,17 @@ template <class F> void forEachEntry(Ctx &c, const toml::node &n, const std::str
   for (auto &&[k, v] : *t) f(std::string(k.str()), k, v);
 }
 
+const KeyDef<Controller::MacroCall> kMacroCallKeys[] = {
+    {"program", &Controller::MacroCall::program, 0, 0, true},
+    {"kind", &Controller::MacroCall::kind, 0, 0, false, "macro subprogram"},
+};
+
+// Codes a controller keeps for itself (808D: "conflicts with predefined M numbers (M0, M5, M30,
+// M98, M99 ...) are rejected with an alarm"; Fanuc likewise refuses M2, M30, M98, M99): program
+// flow, the spindle, and the macro calls themselves.
+constexpr const char *kReservedCallCodes[] = {"M0", "M1", "M2", "M3", "M4", "M5", "M17", "M19", "M30", "M98",
+                                              "M99", "G65", "G66", "G67"};
+
 void readMacroCalls(Ctx &c, const toml::node &n, void *obj) {
   auto &calls = static_cast<Controller *>(obj)->macroCalls;
   auto entry = [&](const std::string &code, const toml::key &k, const toml::node &v) {
@@ -257,12 +268,24 @@ void readMacroCalls(Ctx &c, const toml::node &n, void *obj) {
     for (size_t i = 1; ok && i < code.size(); ++i)
       ok = std::isdigit((unsigned char)code[i]) || (i == dot && code[0] == 'G' && i > 1 && i + 1 < code.size());
     if (!ok) return c.error(k.source(), "macro_calls: '" + code + "' is not an M or G code (M6, G81, \"G65.1\")");
-    if (auto s = readString(c, v, "macro_calls." + code, nullptr)) {
-      if (s->empty()) c.error(v.source(), "macro_calls." + code + ": the program name is empty");
-      else calls[code] = *s;
+    size_t lead = code.find_first_not_of('0', 1);  // M06 -> M6, G00 -> G0
+    std::string plain = code.substr(0, 1) + (lead == std::string::npos || lead == dot ? "0" : "") +
+                        (lead == std::string::npos ? "" : code.substr(lead));
+    if (std::count(std::begin(kReservedCallCodes), std::end(kReservedCallCodes), plain))
+      return c.error(k.source(), "macro_calls: " + plain + " is a code of the controller itself and cannot call a program");
+    Controller::MacroCall call;
+    if (v.is_table()) {
+      if (!readTable(c, v, "macro_calls." + code, kMacroCallKeys, call)) return;
+    } else if (auto s = readString(c, v, "macro_calls." + code, nullptr)) {
+      call.program = *s;
+    } else {
+      return;
     }
+    if (call.program.empty()) return c.error(v.source(), "macro_calls." + code + ": the program name is empty");
+    if (calls.count(plain)) return c.error(k.source(), "macro_calls: " + plain + " is given twice");
+    calls[plain] = call;
   };
-  forEachEntry(c, n, "macro_calls: expected a table of code = \"program\"", entry);
+  forEachEntry(c, n, "macro_calls: expected a table of code = \"program\" or { program = \"...\", kind = \"subprogram\" }", entry);
 }
 
 // Fanuc tool compensation memory A and B keep one value (A) or one geometry and one wear (B) per

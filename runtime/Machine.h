@@ -77,7 +77,16 @@ struct Controller {
   // P for all axes, true = per-axis factors I J K (a negative one mirrors); factor x weighting.
   bool axesScaleEnable = false;
   double scaleWeighting = 0.001;
-  std::map<std::string, std::string> macroCalls;  // "M6" -> program called instead
+  // A G or M code that calls a program instead ("M6" -> O9001): Fanuc parameters 6050-6089,
+  // 808D MD10814-MD10817 (frontend/iso/README.md "Macro calls by code").
+  struct MacroCall {
+    std::string program;
+    // "macro": the block's addresses are arguments (as G65: #1-#33, 808D $C_ variables);
+    // "subprogram": the program runs on the caller's variables after the block (as M98).
+    std::string kind = "macro";
+    bool operator==(const MacroCall &) const = default;
+  };
+  std::map<std::string, MacroCall> macroCalls;  // by code: "M6", "G100", "G65.1"
   // The modal state at program start, besides `plane` (key `startup`, G codes): one code per
   // group, e.g. LinuxCNC's stand-alone G80 and G99. Groups not named start as ncc's default
   // (G0 G90 G91.1 G94 G98 G21 G64).

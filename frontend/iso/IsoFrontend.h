@@ -26,6 +26,15 @@ namespace ncc::iso {
 // #10001-#13999 H/D wear/geometry; ir/SystemParams.h).
 enum class OffsetMemory : uint8_t { None, C };
 
+// A G or M code that calls a program (machine [controller] macro_calls; Fanuc parameters
+// 6050-6089, 808D MD10814-MD10817): README.md "Macro calls by code".
+struct CodeCall {
+  char letter = 'M';       // 'G' or 'M'
+  int64_t code10 = 0;      // the code in tenths: G65.1 = 651, M6 = 60
+  std::string callee;      // the function: "O9001", "M6_MAKRO"
+  bool subprogram = false;  // M98-like (no arguments, after the block), else G65-like
+};
+
 struct IsoOptions {
   // How words written without a decimal point are read: "calculator" (X1000 = 1000 mm),
   // "is-b" (x0.001) or "is-c" (x0.0001); see the spec 2.3 for the per-address factors.
@@ -39,6 +48,7 @@ struct IsoOptions {
   bool lathe = false;                   // machine [controller] kind = "lathe": turning codes, T0101, U/W
   char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental), 'B' or 'C'
   std::vector<std::string> linkedFunctions;  // defined by linked files: calls to them are not searched
+  std::vector<CodeCall> codeCalls;      // machine macro_calls
   GuestFactory siemensBlocks;           // G290 … G291: the Sinumerik front end's blocks (null: G290 is an error)
 };
 

@@ -7,12 +7,6 @@
 
 namespace ncc::iso {
 
-// Fanuc argument specification I: G65 address -> local variable number (0 = not an argument).
-static const int kMacroArg[26] = {
-    /*A*/ 1, /*B*/ 2, /*C*/ 3, /*D*/ 7, /*E*/ 8, /*F*/ 9, /*G*/ 0, /*H*/ 11, /*I*/ 4, /*J*/ 5,
-    /*K*/ 6, /*L*/ 0, /*M*/ 13, /*N*/ 0, /*O*/ 0, /*P*/ 0, /*Q*/ 17, /*R*/ 18, /*S*/ 19, /*T*/ 20,
-    /*U*/ 21, /*V*/ 22, /*W*/ 23, /*X*/ 24, /*Y*/ 25, /*Z*/ 26};
-
 static const char kAxes[] = "XYZABCUVW";
 static const char kMoveWords[] = "XYZABCUVW@^";  // words that make a block a move
 
@@ -30,7 +24,7 @@ std::string gName(int32_t code10) {
 }
 
 BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags)
-    : diags_(diags), flavour_(flavour), axesScaleEnable_(opts.axesScaleEnable),
+    : codeCalls_(opts.codeCalls), diags_(&diags), flavour_(flavour), axesScaleEnable_(opts.axesScaleEnable),
       lathe_(opts.lathe && flavour == Flavour::Fanuc), system_(opts.latheSystem), scaleWeighting_(opts.scaleWeighting) {
   if (opts.decimalMode == "calculator") decimal_ = 0;
   else if (opts.decimalMode == "is-b") decimal_ = 1;
@@ -97,7 +91,7 @@ void BlockLowerer::lowerComments(const ParsedBlock &b, Region &out) {
   for (auto &c : b.comments) {
     Op op(c.message ? OpKind::Message : OpKind::Comment, c.loc);
     bool substitutes = c.message && std::string_view(c.kind) != "msg";
-    op.set("text", substitutes ? substituted(c.text, c.loc, flavour_, diags_) : Expr::string(c.text, c.loc));
+    op.set("text", substitutes ? substituted(c.text, c.loc, flavour_, *diags_) : Expr::string(c.text, c.loc));
     if (substitutes) op.set("kind", Expr::symbol(c.kind, c.loc));
     out.push_back(std::move(op));
   }
@@ -112,7 +106,7 @@ const GCodeInfo *BlockLowerer::Block::lookupG(const IsoWord &w) {
     long long c10 = std::llround(t);
     if (std::fabs(t - (double)c10) < 1e-6) gi = L.lathe_ ? findTurningGCode((int32_t)c10, L.system_) : findGCode((int32_t)c10);
     if (!gi && L.lathe_ && std::fabs(t - (double)c10) < 1e-6 && findGCode((int32_t)c10)) {
-      L.diags_.error(w.loc, fmt::format("{} is not a turning G code (808D G-code system {})", gName((int32_t)c10), L.system_),
+      L.diags_->error(w.loc, fmt::format("{} is not a turning G code (808D G-code system {})", gName((int32_t)c10), L.system_),
                      "unknown-code");
       return nullptr;
     }
@@ -124,17 +118,17 @@ const GCodeInfo *BlockLowerer::Block::lookupG(const IsoWord &w) {
         r && std::fabs(w.value * 10 - r->code10) < 1e-6)
       gi = r;
   if (!gi) {
-    L.diags_.error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
+    L.diags_->error(w.loc, fmt::format("unknown G code G{}", w.value), "unknown-code");
     return nullptr;
   }
   // Codes whose LinuxCNC meaning differs from Fanuc's and that are not lowered: G76 threading.
   if (const char *what = L.flavour_ == Flavour::RS274 ? rs274Meaning(gi->code10) : nullptr) {
-    L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), what),
+    L.diags_->error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), what),
                    "unsupported-code");
     return nullptr;
   }
   if (gi->kind == GKind::Unsupported) {
-    L.diags_.error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
+    L.diags_->error(w.loc, fmt::format("{} ({}) is not supported", gName(gi->code10), gi->what),
                  "unsupported-code");
     return nullptr;
   }
@@ -150,7 +144,7 @@ bool BlockLowerer::Block::classify() {
   for (auto &w : b.words) {
     if (w.letter == 'G') {
       if (w.expr) {
-        L.diags_.error(w.loc, "a G code must be a number", "unknown-code");
+        L.diags_->error(w.loc, "a G code must be a number", "unknown-code");
         ok = false;
         continue;
       }
@@ -174,7 +168,7 @@ bool BlockLowerer::Block::classify() {
         }
         if (gi->code10 == 800 && plainMotion(slot.info)) continue;
         if (plainMotion(gi) != plainMotion(slot.info)) {
-          L.diags_.error(w.loc,
+          L.diags_->error(w.loc,
                          fmt::format("{} cannot be programmed in a canned cycle block with {}", gName(gi->code10),
                                      gName(slot.info->code10)),
                          "modal-group-conflict");
@@ -183,7 +177,7 @@ bool BlockLowerer::Block::classify() {
         }
       }
       if (slot.info) {
-        L.diags_.error(w.loc,
+        L.diags_->error(w.loc,
                      fmt::format("two G codes from the same modal group: {} and {}", gName(slot.info->code10),
                                  gName(gi->code10)),
                      "modal-group-conflict");
@@ -196,18 +190,18 @@ bool BlockLowerer::Block::classify() {
     }
     if (w.letter == 'M' && !macroCall) {
       if (w.expr || w.value < 0 || w.value != std::floor(w.value) || w.value > 99999999) {
-        L.diags_.error(w.loc, "an M code must be an integer 0..99999999", "unknown-code");
+        L.diags_->error(w.loc, "an M code must be an integer 0..99999999", "unknown-code");
         ok = false;
         continue;
       }
       MCodeInfo mi = findMCode((int32_t)w.value, L.flavour_ == Flavour::RS274);
       if (mi.kind == MKind::Unsupported) {
-        L.diags_.error(w.loc, fmt::format("M{} ({}) is not supported", mi.code, mi.what), "unsupported-code");
+        L.diags_->error(w.loc, fmt::format("M{} ({}) is not supported", mi.code, mi.what), "unsupported-code");
         ok = false;
         continue;
       }
       if (nm == 5) {
-        L.diags_.error(w.loc, "more than 5 M codes in one block", "too-many-m-codes");
+        L.diags_->error(w.loc, "more than 5 M codes in one block", "too-many-m-codes");
         ok = false;
         continue;
       }
@@ -215,7 +209,7 @@ bool BlockLowerer::Block::classify() {
         bool coolantPair = mi.group == MGroup::Coolant && ms[i].info.group == MGroup::Coolant &&
                            mi.arg != 9 && ms[i].info.arg != 9 && mi.arg != ms[i].info.arg;  // M7 M8
         if (mi.group != MGroup::None && ms[i].info.group == mi.group && !coolantPair) {
-          L.diags_.error(w.loc,
+          L.diags_->error(w.loc,
                        fmt::format("two M codes from the same modal group: M{} and M{}", ms[i].info.code, mi.code),
                        "modal-group-conflict");
           ok = false;
@@ -227,7 +221,7 @@ bool BlockLowerer::Block::classify() {
     if ((w.letter < 'A' || w.letter > 'Z') && w.letter != '@' && w.letter != '^') continue;
     bool argSetII = macroCall && (w.letter == 'I' || w.letter == 'J' || w.letter == 'K');
     if (bw.get(w.letter) && !argSetII) {
-      L.diags_.error(w.loc, fmt::format("two {} words in one block", w.letter), "duplicate-word");
+      L.diags_->error(w.loc, fmt::format("two {} words in one block", w.letter), "duplicate-word");
       ok = false;
       continue;
     }
@@ -243,7 +237,7 @@ bool BlockLowerer::Block::classify() {
 // when R or P is given (a bare M19 or M19 Q issues no orientation): an error here, not a no-op.
 bool BlockLowerer::Block::orientWords(Op &op, SourceLoc loc) {
   if (!bw.has('R') && !bw.has('P')) {
-    L.diags_.error(loc, "M19 needs R (the angle) or P (the direction): LinuxCNC does not orient the spindle without them",
+    L.diags_->error(loc, "M19 needs R (the angle) or P (the direction): LinuxCNC does not orient the spindle without them",
                    "missing-word");
     return false;
   }
@@ -262,12 +256,12 @@ bool BlockLowerer::Block::orientWords(Op &op, SourceLoc loc) {
     IsoWord *w = bw.get(c.letter);
     double v = w->value;
     if (!w->expr && (v < c.lo || v > c.hi || (c.open && v == c.lo) || (c.integer && v != std::floor(v)))) {
-      L.diags_.error(w->loc, c.msg, "bad-command");
+      L.diags_->error(w->loc, c.msg, "bad-command");
       return false;
     }
     if (c.letter == 'P') {
       if (w->expr) {
-        L.diags_.error(w->loc, "M19 P (the direction) must be a constant 0, 1 or 2", "bad-command");
+        L.diags_->error(w->loc, "M19 P (the direction) must be a constant 0, 1 or 2", "bad-command");
         return false;
       }
       static const char *ways[] = {"cw", "ccw", "shortest"};
@@ -300,7 +294,7 @@ void BlockLowerer::Block::trackModes() {
 
 void BlockLowerer::Block::checkFeed(const IsoWord &f) {
   if (!f.expr && f.value <= 0 && L.flavour_ == Flavour::Fanuc)  // 808D alarm 14800
-    L.diags_.warning(f.loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
+    L.diags_->warning(f.loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
 }
 
 bool BlockLowerer::Block::setup() {
@@ -310,7 +304,7 @@ bool BlockLowerer::Block::setup() {
   // In G16 X and Y are a radius and an angle; G28/G30/G92/G53/G10/G52/G04 X... would read them
   // as coordinates: an error rather than a guess (ISO-MOT-11).
   if (L.polar_ && nonModal && !macroCall && bw.hasAny("XY")) {
-    L.diags_.error(gloc(GGroup::NonModal), fmt::format("{} with X or Y in G16 polar coordinates is not supported",
+    L.diags_->error(gloc(GGroup::NonModal), fmt::format("{} with X or Y in G16 polar coordinates is not supported",
                                                       gName(nonModal->code10)), "unsupported-code");
     return false;
   }
@@ -319,7 +313,7 @@ bool BlockLowerer::Block::setup() {
     // G65/G66 P<program> L<count> <arguments>: other G/M codes of the block are not allowed.
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
       if (G((GGroup)g) && gs[g].info->kind != GKind::MacroCall && gs[g].info->kind != GKind::ModalMacro) {
-        L.diags_.error(gs[g].word->loc, fmt::format("{} must not share its block with other G codes", macroName()),
+        L.diags_->error(gs[g].word->loc, fmt::format("{} must not share its block with other G codes", macroName()),
                        "syntax");
         return false;
       }
@@ -345,7 +339,7 @@ bool BlockLowerer::Block::setup() {
   }
   if (auto *m = findM(MKind::ToolNumber)) {  // LinuxCNC M61 Q<tool>: declares the tool in the spindle
     if (!bw.has('Q')) {
-      L.diags_.error(m->word->loc, "Need non-negative Q-word to specify tool number with M61", "missing-word");
+      L.diags_->error(m->word->loc, "Need non-negative Q-word to specify tool number with M61", "missing-word");
       return false;
     }
     emit(OpKind::ToolChange, m->word->loc).set("number", take('Q', Scale::None));
@@ -384,13 +378,13 @@ bool BlockLowerer::Block::setup() {
       secs = take(bw.has('X') ? 'X' : 'U', Scale::DwellX);
       dwellTookAxis = true;
     } else {
-      L.diags_.error(loc, "G4 needs a dwell time: P (milliseconds) or X (seconds)", "missing-word");
+      L.diags_->error(loc, "G4 needs a dwell time: P (milliseconds) or X (seconds)", "missing-word");
       return false;
     }
     // 808D ISO (spec ISO-LEX-11, manual L2111): a dwell is programmed in a block of its own.
     // rs274 runs a dwell and the block's motion, the dwell first.
     if (L.flavour_ == Flavour::Fanuc && (G(GGroup::Motion) || (bw.present & ~bw.used & Words::bits(kAxes)))) {
-      L.diags_.error(loc, "G4 must be programmed in a block of its own (no motion in a dwell block)",
+      L.diags_->error(loc, "G4 must be programmed in a block of its own (no motion in a dwell block)",
                      "dwell-with-motion");
       return false;
     }
@@ -403,7 +397,7 @@ bool BlockLowerer::Block::setup() {
     Op &op = emit(OpKind::CutterComp, gloc(GGroup::CutterComp));
     op.set("side", Expr::symbol(sides[gi->arg], gloc(GGroup::CutterComp)));
     if (gi->arg != 0 && bw.has('D') && L.lathe_) {  // the radius and tip are the T word's offset
-      L.diags_.error(bw.get('D')->loc, "a lathe takes the tool nose radius from the offset of its T word (T0101), not from D",
+      L.diags_->error(bw.get('D')->loc, "a lathe takes the tool nose radius from the offset of its T word (T0101), not from D",
                      "unknown-code");
       return false;
     }
@@ -421,7 +415,7 @@ bool BlockLowerer::Block::setup() {
       bw.used |= Words::bit('H');  // rs274 G43 H0: the tool in the spindle, as G43 alone
     else if (bw.has('H')) h = take('H', Scale::None);
     if (!h && L.flavour_ != Flavour::RS274) {
-      L.diags_.error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
+      L.diags_->error(loc, "G43 needs an H word (tool length offset number)", "missing-word");
       return false;
     }
     if (gi->arg < 2) {
@@ -431,7 +425,7 @@ bool BlockLowerer::Block::setup() {
   }
   if (auto *gi = G(GGroup::WorkOffset); gi && gi->arg == 1 && L.flavour_ == Flavour::Fanuc && !nonModal && bw.has('P')) {
     // 808D G54 P1…P93 (the extended offsets) and G54 P0 (the external one): ncc's table has G54-G59.
-    L.diags_.error(bw.get('P')->loc, "G54 P (the extended work offsets P1-P93, the external offset P0) is not supported",
+    L.diags_->error(bw.get('P')->loc, "G54 P (the extended work offsets P1-P93, the external offset P0) is not supported",
                    "unsupported-code");
     return false;
   }
@@ -458,7 +452,7 @@ bool BlockLowerer::Block::setup() {
 bool BlockLowerer::Block::offsetToolLength(bool add, SourceLoc loc) {
   const bool axes = bw.hasAny("XYZABCUVW");
   if (add && axes == bw.has('H')) {
-    L.diags_.error(loc, axes ? "G43.2: Can not have both H and axis words" : "G43.2: No axes specified and H word missing",
+    L.diags_->error(loc, axes ? "G43.2: Can not have both H and axis words" : "G43.2: No axes specified and H word missing",
                    axes ? "bad-command" : "missing-word");
     return false;
   }
@@ -480,7 +474,7 @@ bool BlockLowerer::Block::offsetToolLength(bool add, SourceLoc loc) {
 bool BlockLowerer::Block::latheTool() {
   IsoWord *t = bw.get('T');
   if (t->expr || t->value < 0 || t->value != std::floor(t->value) || t->value > 9999) {
-    L.diags_.error(t->loc, "a lathe T word is a constant tool and offset number T<tt><oo> (T0101)", "bad-number");
+    L.diags_->error(t->loc, "a lathe T word is a constant tool and offset number T<tt><oo> (T0101)", "bad-number");
     return false;
   }
   bw.used |= Words::bit('T');
@@ -497,7 +491,7 @@ bool BlockLowerer::Block::latheAxisWords(Op &op) {
   if (L.system_ != 'A') {  // systems B and C program increments with G91
     for (char c : std::string_view("UW"))
       if (bw.has(c)) {
-        L.diags_.error(bw.get(c)->loc,
+        L.diags_->error(bw.get(c)->loc,
                        fmt::format("{} in G-code system {}: the 808D manual does not say it is an increment (use G91)", c, L.system_),
                        "unsupported-code");
         return false;
@@ -507,7 +501,7 @@ bool BlockLowerer::Block::latheAxisWords(Op &op) {
   std::string ic;
   for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}}) {
     if (bw.has(abs) && bw.has(inc)) {
-      L.diags_.error(bw.get(inc)->loc, fmt::format("{} and {} in one block ({} is the incremental {})", abs, inc, inc, abs),
+      L.diags_->error(bw.get(inc)->loc, fmt::format("{} and {} in one block ({} is the incremental {})", abs, inc, inc, abs),
                      "duplicate-word");
       return false;
     }
@@ -529,13 +523,13 @@ bool BlockLowerer::Block::motion() {
   if (m == ModeValue::NurbsEnd && G(GGroup::Motion) && bw.hasAny(kMoveWords)) {
     for (const char *c = kMoveWords; *c; ++c)
       if (bw.has(*c)) {
-        L.diags_.error(bw.get(*c)->loc, "G5.3 takes no axis words (rs274 ignores them)", "unused-word");
+        L.diags_->error(bw.get(*c)->loc, "G5.3 takes no axis words (rs274 ignores them)", "unused-word");
         return false;
       }
   }
   // rs274 refuses a probe block without a target (a bare G1 is accepted).
   if (isProbeMotion(m) && G(GGroup::Motion) && !bw.hasAny(kMoveWords)) {
-    L.diags_.error(gloc(GGroup::Motion), "All axes missing with motion code", "missing-word");
+    L.diags_->error(gloc(GGroup::Motion), "All axes missing with motion code", "missing-word");
     return false;
   }
   if (!axesTaken) {
@@ -550,7 +544,7 @@ bool BlockLowerer::Block::motion() {
       const bool rs274 = L.flavour_ == Flavour::RS274;
       std::string_view params = cycle ? cycleParamWords(m, rs274) : "";
       if (cycle && bw.has('K') && bw.has('L')) {
-        L.diags_.error(bw.get('K')->loc, "K and L both give the cycle repeat count", "duplicate-word");
+        L.diags_->error(bw.get('K')->loc, "K and L both give the cycle repeat count", "duplicate-word");
         return false;
       }
       SourceLoc loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
@@ -610,7 +604,7 @@ bool BlockLowerer::Block::motion() {
     }
   }
   if (!b.corner.empty() && !cornerTaken) {
-    L.diags_.error(b.corner.front().loc, "a chamfer ,C or rounding ,R needs a G1, G2 or G3 move in its block",
+    L.diags_->error(b.corner.front().loc, "a chamfer ,C or rounding ,R needs a G1, G2 or G3 move in its block",
                    "unused-word");
     return false;
   }
@@ -626,7 +620,7 @@ bool BlockLowerer::Block::skipMove() {
   const SourceLoc loc = gloc(GGroup::NonModal);
   L.motion_ = motionBefore;
   auto refuse = [&](std::string msg, const char *rule) {
-    L.diags_.error(loc, msg, rule);
+    L.diags_->error(loc, msg, rule);
     return false;
   };
   if (G(GGroup::Motion)) return refuse("G31 must not share its block with a group-01 code", "modal-group-conflict");
@@ -655,7 +649,7 @@ bool BlockLowerer::Block::skipMove() {
 // and YZ planes, and arcs or cycles in G16 (docs/ISO-WORDS.md).
 bool BlockLowerer::Block::polarWords(Op &op, ModeValue m, SourceLoc loc) {
   auto refuse = [&](const char *what) {
-    L.diags_.error(loc, fmt::format("{} in G16 polar coordinates is not supported", what), "unsupported-code");
+    L.diags_->error(loc, fmt::format("{} in G16 polar coordinates is not supported", what), "unsupported-code");
     return false;
   };
   if (L.plane_ != ModeValue::XY) return refuse(L.plane_ == ModeValue::ZX ? "the ZX plane (G18)" : "the YZ plane (G19)");
@@ -684,7 +678,7 @@ bool BlockLowerer::Block::threadWords(Op &op, ModeValue m) {
   case ModeValue::RigidTap:
     if (!rs274) return words({{'Q', Scale::Rotary}}), true;
     if (!bw.has('K')) {
-      L.diags_.error(b.loc, fmt::format("{} needs K (the lead per revolution)", m == ModeValue::Thread ? "G33" : "G33.1"),
+      L.diags_->error(b.loc, fmt::format("{} needs K (the lead per revolution)", m == ModeValue::Thread ? "G33" : "G33.1"),
                      "missing-word");
       return false;
     }
@@ -725,7 +719,7 @@ bool BlockLowerer::Block::ioCode(const MUse &m) {
   const int code = m.info.code;
   const SourceLoc loc = m.word->loc;
   auto fail = [&](const std::string &msg, const char *rule) {
-    L.diags_.error(loc, msg, rule);
+    L.diags_->error(loc, msg, rule);
     return false;
   };
   Op &op = emit(OpKind::Aux, loc);
@@ -804,41 +798,10 @@ bool BlockLowerer::Block::callsAndReturn() {
     if (!programNumber(loc, macroName(), prog)) return false;
     ExprPtr count = bw.has('L') ? take('L', Scale::None) : Expr::number(1, ir::Type::Int, loc);
     Op &op = modal ? modalCallOp(loc, prog, std::move(count)) : callOp(loc, prog, std::move(count), "new");
-    // Argument specification II when I, J or K repeats: up to 10 sets I J K -> #4+3s, #5+3s,
-    // #6+3s; a set ends when an address repeats or comes out of I-J-K order.
-    int ijkCount[3] = {0, 0, 0};
-    for (auto &w : b.words)
-      if (w.letter >= 'I' && w.letter <= 'K') ++ijkCount[w.letter - 'I'];
-    bool specII = ijkCount[0] > 1 || ijkCount[1] > 1 || ijkCount[2] > 1;
-    int set = 0, lastPos = -1;
-    for (auto &w : b.words) {
-      if (w.letter == 'G' || w.letter == 'P' || w.letter == 'L') continue;
-      int local = w.letter >= 'A' && w.letter <= 'Z' ? kMacroArg[w.letter - 'A'] : 0;
-      if (specII && w.letter >= 'I' && w.letter <= 'K') {
-        int pos = w.letter - 'I';
-        if (pos <= lastPos) ++set;
-        lastPos = pos;
-        if (set > 9) {
-          L.diags_.error(w.loc, "more than 10 I/J/K argument sets", "syntax");
-          return false;
-        }
-        local = 4 + 3 * set + pos;
-      }
-      if (!local) {
-        L.diags_.error(w.loc, fmt::format("{} is not a macro argument", w.letter), "syntax");
-        return false;
-      }
-      bw.used |= 1u << (w.letter - 'A');
-      op.set(fmt::format("a.{}", local), literal(w, 1.0));  // later words win (D=#7 vs I2)
-    }
+    if (!macroArguments(b.words, "GPL", op, *L.diags_)) return false;
+    bw.used |= bw.present;
   }
-  if (auto *m = findM(MKind::Return)) {
-    if (bw.has('P')) {
-      L.diags_.error(bw.get('P')->loc, "M99 P<n> (return to a block number) is not supported", "unsupported-code");
-      return false;
-    }
-    emit(OpKind::Return, m->word->loc);
-  }
+  if (auto *m = findM(MKind::Return)) return returnOp(m->word->loc);
   return true;
 }
 
@@ -868,7 +831,7 @@ bool BlockLowerer::Block::finish() {
   bool ok = true;
   for (uint32_t unused = bw.present & ~bw.used; unused; unused &= unused - 1)
     if (int c = __builtin_ctz(unused); bw.w[c]) {
-      L.diags_.error(bw.w[c]->loc, fmt::format("{} word is not used by any code of this block", Words::letter(c)),
+      L.diags_->error(bw.w[c]->loc, fmt::format("{} word is not used by any code of this block", Words::letter(c)),
                      "unused-word");
       ok = false;
     }
@@ -876,6 +839,16 @@ bool BlockLowerer::Block::finish() {
 }
 
 bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
+  if (!codeCalls_.empty()) {
+    const CodeCall *call;
+    const IsoWord *word;
+    if (!codeCallOf(b, call, word)) return false;
+    if (call) return lowerCodeCall(b, *call, *word, out);
+  }
+  return lowerPlain(b, out);
+}
+
+bool BlockLowerer::lowerPlain(ParsedBlock &b, Region &out) {
   Block blk(*this, b, out);
   return blk.classify() && blk.setup() && blk.coordinateOps() && blk.turnCycle() && blk.motion() && blk.stops() &&
          blk.callsAndReturn() && blk.finish();

@@ -18,6 +18,11 @@ struct CallRef {
 // contour blocks; false when an error was reported.
 bool placeContourLabels(ir::Function &f, Diagnostics &diags);
 
+// After every program of `m` is read: the 808D call context only where the callee reads it,
+// the caller's side of M99 P<n>, the start values of the lowered calls' globals
+// (ProgramCalls.cpp). False when an error was reported.
+bool finishCalls(ir::Module &m, Diagnostics &diags);
+
 class BlockLowerer {
 public:
   BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags);
@@ -43,10 +48,35 @@ public:
   const char *callsRefusedRule = "not-streamable";
   // A mode the other language's blocks set (G290 … G291, frontend/ModeSwitch.h).
   void followMode(ModeValue m);
+  // The block belongs to the main program (Fanuc M99 there restarts it, ISO-M-04).
+  bool inMain = false;
+
+  // Global variables of the lowered calls (LowerCalls.cpp): set while a program called by a
+  // code runs (its codes act as themselves), and M99 P's block number for the caller.
+  static constexpr const char *kByCodeFlag = "_macro_by_code";
+  static constexpr const char *kM99Block = "_m99_block";
+  static constexpr const char *kM99Target = "_m99_target";
+  static constexpr const char *kMainStart = "_main_start";  // the label M99 in main goes to
 
 private:
   struct Block;  // one block being lowered (Lower.cpp)
-  Diagnostics &diags_;
+  bool lowerPlain(ParsedBlock &b, ir::Region &out);  // the block's own codes, no code calls
+  // Macro calls by code (machine macro_calls, LowerCalls.cpp). codeCallOf: the block's calling
+  // code (null: none); false when an error was reported.
+  bool codeCallOf(const ParsedBlock &b, const CodeCall *&call, const IsoWord *&word);
+  bool lowerCodeCall(ParsedBlock &b, const CodeCall &call, const IsoWord &word, ir::Region &out);
+  bool plainCode(const ParsedBlock &b, const std::string &code, ir::Region &out);
+  struct Modes {
+    ModeValue motion, pathMotion, feedMode, units, plane, distance;
+    bool polar;
+  };
+  Modes modes() const { return {motion_, pathMotion_, feedMode_, units_, plane_, distance_, polar_}; }
+  void setModes(const Modes &m) {
+    motion_ = m.motion, pathMotion_ = m.pathMotion, feedMode_ = m.feedMode, units_ = m.units;
+    plane_ = m.plane, distance_ = m.distance, polar_ = m.polar;
+  }
+  std::vector<CodeCall> codeCalls_;  // a copy: a stream's options are a temporary
+  Diagnostics *diags_;  // a pointer: lowerCodeCall swaps in a scratch one
   ir::Region none_;  // the lean path's Block writes no ops
   MachineCmd cmd_;   // the lean path's command, cleared after each use
   Flavour flavour_;

@@ -152,11 +152,11 @@ struct BlockLowerer::Block {
   bool programNumber(SourceLoc at, const char *what, long long &prog) {
     IsoWord *p = bw.get('P');
     if (!p) {
-      L.diags_.error(at, fmt::format("{} needs a P word (program number)", what), "missing-word");
+      L.diags_->error(at, fmt::format("{} needs a P word (program number)", what), "missing-word");
       return false;
     }
     if (p->expr || p->value < 0 || p->value != std::floor(p->value) || p->value > 99999999) {
-      L.diags_.error(p->loc, fmt::format("{} P must be a constant program number", what), "syntax");
+      L.diags_->error(p->loc, fmt::format("{} P must be a constant program number", what), "syntax");
       return false;
     }
     bw.used |= 1u << ('P' - 'A');
@@ -202,10 +202,11 @@ struct BlockLowerer::Block {
   bool stops();
   bool ioCode(const MUse &m);       // LinuxCNC M62-M68
   bool callsAndReturn();
+  bool returnOp(SourceLoc loc);  // M99 [P] (LowerCalls.cpp)
   // False, reported, when the lowerer refuses calls (BlockLowerer::callsRefused).
   bool callAllowed(SourceLoc loc, std::string_view what) {
     if (!L.callsRefused) return true;
-    L.diags_.error(loc, fmt::format("{} {}", what, L.callsRefused), L.callsRefusedRule);
+    L.diags_->error(loc, fmt::format("{} {}", what, L.callsRefused), L.callsRefusedRule);
     return false;
   }
   bool finish();         // assignments, unused words
@@ -218,5 +219,9 @@ struct BlockLowerer::Block {
   bool leanEmit(CmdSink &sink);
 };
 
-// G and M codes through the tables; group conflicts, duplicate words.
+// The arguments of a macro call (G65, G66, a macro called by code) from the block's words whose
+// letters are not in `skip` (LowerCalls.cpp): Fanuc argument specification I or II as #1-#33
+// (`a.<n>`), and the 808D call context `a._C_ALL_PROG`, `a._C_TYP_PROG` (ISO-MAC-03).
+bool macroArguments(const std::vector<IsoWord> &words, const char *skip, Op &op, Diagnostics &diags);
+
 }  // namespace ncc::iso

@@ -28,26 +28,26 @@ bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc
     if (f.flavour == L.flavour_ && f.l == lv) kind = f.kind, axes = f.axes;
   if (!kind) {
     const char *known = L.flavour_ == Flavour::RS274 ? "L1, L2, L10, L11 and L20" : "L1, L2, L10-L13 and L20";
-    L.diags_.error(l ? l->loc : loc,
+    L.diags_->error(l ? l->loc : loc,
                    l ? fmt::format("G10 L{} is not supported (only {})", l->value, known)
                      : fmt::format("G10 needs an L word ({})", known),
                    l ? "unsupported-code" : "missing-word");
     return false;
   }
   if (!bw.has('P')) {
-    L.diags_.error(loc, "G10 needs a P word (the tool or offset number)", "missing-word");
+    L.diags_->error(loc, "G10 needs a P word (the tool or offset number)", "missing-word");
     return false;
   }
   // ncc's tools have a length along Z and a radius: LinuxCNC's other table columns (X for
   // lathes, I J Q) would be silently dropped.
   for (char c : std::string_view(axes ? "XYABCIJQ" : "XYZABCIJQ"))
     if (bw.has(c)) {
-      L.diags_.error(bw.get(c)->loc, fmt::format("G10 L{}: {} is not a tool offset ncc keeps (length Z, radius R)", lv, c),
+      L.diags_->error(bw.get(c)->loc, fmt::format("G10 L{}: {} is not a tool offset ncc keeps (length Z, radius R)", lv, c),
                      "unsupported-code");
       return false;
     }
   if (!axes && !bw.has('R')) {
-    L.diags_.error(loc, fmt::format("G10 L{} needs an R word (the offset value)", lv), "missing-word");
+    L.diags_->error(loc, fmt::format("G10 L{} needs an R word (the offset value)", lv), "missing-word");
     return false;
   }
   bw.used |= 1u << ('L' - 'A');
@@ -65,12 +65,12 @@ bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc
 // manual's table reads "cutting-edge length" where Fanuc has the imaginary tool tip.
 bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
   if (!bw.has('P')) {
-    L.diags_.error(loc, "G10 needs a P word (the offset number) or L2 (a work offset)", "missing-word");
+    L.diags_->error(loc, "G10 needs a P word (the offset number) or L2 (a work offset)", "missing-word");
     return false;
   }
   for (char c : std::string_view("QYV"))
     if (bw.has(c)) {
-      L.diags_.error(bw.get(c)->loc,
+      L.diags_->error(bw.get(c)->loc,
                      c == 'Q' ? std::string("G10 Q is not supported: the 808D manual's table 1-22 calls it the cutting-edge length, "
                                                      "Fanuc the imaginary tool tip; set the edge's tip in the machine file")
                               : fmt::format("G10 {}: the lathe has no Y offset", c),
@@ -79,7 +79,7 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
     }
   for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}, std::pair{'R', 'C'}})
     if (bw.has(abs) && bw.has(inc)) {
-      L.diags_.error(bw.get(inc)->loc, fmt::format("G10: {} and {} in one block ({} adds to the offset {} sets)", abs, inc, inc, abs),
+      L.diags_->error(bw.get(inc)->loc, fmt::format("G10: {} and {} in one block ({} adds to the offset {} sets)", abs, inc, inc, abs),
                      "duplicate-word");
       return false;
     }
@@ -106,7 +106,7 @@ bool BlockLowerer::Block::coordinateOps() {
       int lv = l && !l->expr && l->value >= 0 && l->value < 100 ? (int)l->value : -1;
       if (lv != 2 && lv != 20) return toolOffsetOp(op, lv, l, loc);
       if (!bw.has('P')) {
-        L.diags_.error(loc, "G10 needs a P word (work offset number)", "missing-word");
+        L.diags_->error(loc, "G10 needs a P word (work offset number)", "missing-word");
         return false;
       }
       bw.used |= 1u << ('L' - 'A');
@@ -115,7 +115,7 @@ bool BlockLowerer::Block::coordinateOps() {
       // RS274NGC G10 L2 R<degrees>: the system's rotation about the Z axis (Fanuc has none).
       if (L.flavour_ == Flavour::RS274 && bw.has('R')) {
         if (lv == 20) {
-          L.diags_.error(bw.get('R')->loc, "R not allowed in G10 L20", "syntax");
+          L.diags_->error(bw.get('R')->loc, "R not allowed in G10 L20", "syntax");
           return false;
         }
         op.set("R", take('R', Scale::None));
@@ -164,7 +164,7 @@ bool BlockLowerer::Block::frameOps() {
   for (GGroup g : kGroups) {
     if (!G(g) || G(g)->kind != GKind::Frame) continue;
     if (gi) {
-      L.diags_.error(gloc(g), fmt::format("{} and {} in one block: each takes the axis words", gName(gi->code10),
+      L.diags_->error(gloc(g), fmt::format("{} and {} in one block: each takes the axis words", gName(gi->code10),
                                           gName(G(g)->code10)),
                      "modal-group-conflict");
       return false;
@@ -188,7 +188,7 @@ bool BlockLowerer::Block::frameOps() {
   if (group == GGroup::Rotation)  // 808D: G68 and G69 blocks hold no other G code
     for (size_t g = 0; g < (size_t)GGroup::Count; ++g)
       if (G((GGroup)g) && (GGroup)g != GGroup::Rotation) {
-        L.diags_.error(gs[g].word->loc,
+        L.diags_->error(gs[g].word->loc,
                        fmt::format("{} must not share its block with other G codes", gName(gi->code10)), "syntax");
         return false;
       }
@@ -212,7 +212,7 @@ bool BlockLowerer::Block::frameOps() {
       char c = 0;
       for (const char *o = other; *o && !c; ++o)
         if (bw.has(*o)) c = *o;
-      L.diags_.error(bw.get(c)->loc,
+      L.diags_->error(bw.get(c)->loc,
                      L.axesScaleEnable_
                          ? "G51 P on a machine with per-axis scaling (axes_scale_enable = true): program I J K"
                          : fmt::format("G51 {} needs per-axis scaling (machine [controller] axes_scale_enable = true)", c),
@@ -220,7 +220,7 @@ bool BlockLowerer::Block::frameOps() {
       return false;
     }
     if (!bw.hasAny(words)) {
-      L.diags_.error(loc, fmt::format("G51 needs {} (the setting-data default factor is not modelled)",
+      L.diags_->error(loc, fmt::format("G51 needs {} (the setting-data default factor is not modelled)",
                                       L.axesScaleEnable_ ? "I, J or K" : "P"),
                      "missing-word");
       return false;
@@ -230,7 +230,7 @@ bool BlockLowerer::Block::frameOps() {
       if (!bw.has(*w)) continue;
       IsoWord *f = bw.get(*w);
       if (!f->expr && (f->hasPoint || (*w == 'P' && f->value <= 0))) {
-        L.diags_.error(f->loc,
+        L.diags_->error(f->loc,
                        f->hasPoint ? fmt::format("G51 {} is an integer in units of the scale weighting", *w)
                                    : std::string("G51 P must be greater than zero"),
                        "bad-number");

@@ -35,13 +35,13 @@ bool BlockLowerer::Block::turnCycle() {
   const char *use = kUses[code - 70];
   axesTaken = true;  // U W are the cycle's; stray X Z are unused words
   if (G(GGroup::Motion)) {
-    L.diags_.error(gloc(GGroup::Motion), fmt::format("G{} must not share its block with {}", code, gName(G(GGroup::Motion)->code10)),
+    L.diags_->error(gloc(GGroup::Motion), fmt::format("G{} must not share its block with {}", code, gName(G(GGroup::Motion)->code10)),
                    "modal-group-conflict");
     return false;
   }
   if (!bw.has('P') && !bw.has('Q')) {
     if (code == 70) {
-      L.diags_.error(loc, "G70 needs P and Q (the first and last contour block)", "missing-word");
+      L.diags_->error(loc, "G70 needs P and Q (the first and last contour block)", "missing-word");
       return false;
     }
     Op &op = emit(OpKind::Contour, loc);
@@ -49,7 +49,7 @@ bool BlockLowerer::Block::turnCycle() {
     op.set("use", Expr::symbol(use, loc));
     for (const char *w = kDataWords[code - 70]; *w; ++w) {
       if (!bw.has(*w)) {
-        L.diags_.error(loc, fmt::format("G{} {} needs {} (the cycle data block)", code, kDataWords[code - 70], *w),
+        L.diags_->error(loc, fmt::format("G{} {} needs {} (the cycle data block)", code, kDataWords[code - 70], *w),
                        "missing-word");
         return false;
       }
@@ -63,11 +63,11 @@ bool BlockLowerer::Block::turnCycle() {
     char c = "PQ"[i];
     IsoWord *w = bw.get(c);
     if (!w) {
-      L.diags_.error(loc, fmt::format("G{} needs P and Q (the first and last contour block)", code), "missing-word");
+      L.diags_->error(loc, fmt::format("G{} needs P and Q (the first and last contour block)", code), "missing-word");
       return false;
     }
     if (w->expr || w->value < 0 || w->value != std::floor(w->value) || w->value > 99999999) {
-      L.diags_.error(w->loc, fmt::format("G{} {} must be a constant block number", code, c), "syntax");
+      L.diags_->error(w->loc, fmt::format("G{} {} must be a constant block number", code, c), "syntax");
       return false;
     }
     bw.used |= Words::bit(c);
@@ -220,13 +220,13 @@ bool BlockLowerer::Block::speedOp() {
   const bool limitBlock = !rs274 && nonModal && nonModal->kind == GKind::SetOffset && nonModal->arg == 1 && bw.has('S');
   auto positive = [&](IsoWord *w, const char *what) {
     if (w->expr || w->value > 0) return true;
-    L.diags_.error(w->loc, fmt::format("{} must be greater than 0", what), "bad-speed");
+    L.diags_->error(w->loc, fmt::format("{} must be greater than 0", what), "bad-speed");
     return false;
   };
   if (limitBlock) {
     IsoWord *s = bw.get('S');
     if (!L.lathe_) {
-      L.diags_.error(s->loc, fmt::format("{} S (spindle speed limit) needs a lathe (machine kind = \"lathe\")", gName(nonModal->code10)),
+      L.diags_->error(s->loc, fmt::format("{} S (spindle speed limit) needs a lathe (machine kind = \"lathe\")", gName(nonModal->code10)),
                      "unsupported-code");
       return false;
     }
@@ -240,12 +240,12 @@ bool BlockLowerer::Block::speedOp() {
   const SourceLoc loc = gloc(GGroup::Spindle);
   const bool css = mode->arg == 2;
   if (css && !rs274 && !L.lathe_) {
-    L.diags_.error(loc, "G96 (constant surface speed) needs a lathe (machine kind = \"lathe\"): a milling spindle has no "
+    L.diags_->error(loc, "G96 (constant surface speed) needs a lathe (machine kind = \"lathe\"): a milling spindle has no "
                         "radius to keep the speed at", "unsupported-code");
     return false;
   }
   if (css && (!bw.has('S') || limitBlock)) {
-    L.diags_.error(loc, "G96 needs S (the surface speed, m/min or ft/min)", "missing-word");
+    L.diags_->error(loc, "G96 needs S (the surface speed, m/min or ft/min)", "missing-word");
     return false;
   }
   Op &op = emit(OpKind::Speed, loc);

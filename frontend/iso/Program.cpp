@@ -433,6 +433,7 @@ bool ProgramParser::parseFile(uint32_t fileId, const std::string &firstName) {
     }
     if (ended_) continue;  // text after the closing '%' is not part of the program
     if (!b.words.empty() || !b.assigns.empty() || b.stmt != StmtKind::None) sectionContent_ = true;
+    lower.inMain = fn_ == 0 && subStack_.empty() && module_.functions[0].name == "main";
     statement(b, lower);
     if (flavour == Flavour::RS274 && fn_ == 0 && subStack_.empty() && stack_.empty())
       for (auto &w : b.words)
@@ -459,9 +460,8 @@ static std::vector<std::string> candidateFiles(const std::string &name) {
       for (const char *fmtStr : {"O{}.nc", "{}.nc", "O{}.ngc", "{}.ngc", "{}.mpf", "{}.spf", "O{}", "{}.NC",
                                  "O{}.NC", "{}.MPF", "{}.SPF"})
         out.push_back(fmt::format(fmt::runtime(fmtStr), n));
-  } else {
-    out.push_back(name + ".ngc");
-    out.push_back(name + ".nc");
+  } else {  // o<name> call; an 808D macro called by code (M6_MAKRO.spf)
+    for (const char *ext : {".ngc", ".nc", ".spf", ".mpf", ".SPF", ".MPF"}) out.push_back(name + ext);
   }
   return out;
 }
@@ -527,12 +527,12 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
     std::filesystem::path mp(sm.name(fileId));
     dirs.push_back(mp.has_parent_path() ? mp.parent_path().string() : std::string("."));
   }
-  std::set<std::string> missing;
+  std::set<std::string> missing, siemens;  // siemens: read by the Sinumerik front end (not in `out` yet)
   bool ok = pp.ok();
   // Resolve calls; parsing a subprogram file can add more calls.
   for (size_t i = 0; i < pp.calls.size(); ++i) {
     CallRef c = pp.calls[i];
-    if (out.find(c.callee)) continue;
+    if (out.find(c.callee) || siemens.count(c.callee)) continue;
     if (std::find(opts.linkedFunctions.begin(), opts.linkedFunctions.end(), c.callee) != opts.linkedFunctions.end())
       continue;  // a linked file defines it (the driver links it after parsing)
     if (missing.count(c.callee)) {
@@ -549,11 +549,15 @@ bool parseIsoProgram(SourceManager &sm, uint32_t fileId, const IsoOptions &opts,
       continue;
     }
     // 808D: a first block PROC switches the called program to Siemens mode (seed001 L9787-9791).
-    if (startsWithProc(sm.text(fid)) && pp.siemensProgram(fid, c.callee, ok)) continue;
+    if (startsWithProc(sm.text(fid)) && pp.siemensProgram(fid, c.callee, ok)) {
+      siemens.insert(c.callee);
+      continue;
+    }
     if (!pp.parseFile(fid, c.callee)) ok = false;
   }
   ok &= pp.finishMixed();
   for (auto &f : out.functions) ok &= placeContourLabels(f, diags);
+  ok &= finishCalls(out, diags);
   ok &= checkGotoTargets(out, diags);
   return ok && pp.ok();
 }

@@ -183,9 +183,12 @@ static bool frameSys(std::string_view ir) {
 // 808D macro arguments (seed001 §2.14.2, ISO-MAC-02): G65/G66 and the M-code macros of an ISO
 // program pass address X as $C_X; ncc's ISO front end passes them into the Fanuc locals of the
 // callee (argument specification I: A #1 … Z #26), so $C_<letter> reads that local and
-// $C_<letter>_PROG says whether the call gave it. The I/J/K arrays (specification II and the
-// _ORDER sets) and the other $C_ variables are not provided.
+// $C_<letter>_PROG says whether the call gave it. $C_ALL_PROG, $C_TYP_PROG (ISO-MAC-03) and $C_G
+// (the calling G code of a G-code macro, ISO-MAC-06) are named locals the ISO front end passes
+// to a callee that reads them (frontend/iso/LowerCalls.cpp). The I/J/K arrays (specification II
+// and the _ORDER sets), $C_INC_PROG and the other $C_ variables are not provided.
 static ExprPtr macroArgument(const std::string &name, SourceLoc l) {
+  if (name == "C_ALL_PROG" || name == "C_TYP_PROG" || name == "C_G") return Expr::var(ir::VarSpace::Local, "_" + name, nullptr, l);
   static const int kNumber[26] = {1, 2, 3, 7, 8, 9, 0, 11, 4, 5, 6, 0, 13, 0, 0, 0, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
   bool prog = name.size() == 8 && name.compare(3, 5, "_PROG") == 0;
   if (name.rfind("C_", 0) != 0 || (name.size() != 3 && !prog) || !std::isupper((unsigned char)name[2])) return nullptr;

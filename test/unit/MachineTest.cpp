@@ -108,7 +108,7 @@ reset = ["plane", "units"]
 r_params = 300
 q_params = 10
 real_tolerance = 1e-9
-macro_calls = { M6 = "L6", "G65.1" = "O9010", G81 = "CYCLE81" }
+macro_calls = { M6 = "L6", "G65.1" = "O9010", G81 = "CYCLE81", M07 = { program = "O9002", kind = "subprogram" } }
 [axes.X]
 kind = "linear"
 max_velocity = 20000
@@ -167,7 +167,11 @@ program_header = "; x # kept"
   EXPECT_EQ(c.rParams, 300);
   EXPECT_EQ(c.qParams, 10);
   EXPECT_DOUBLE_EQ(c.realTolerance, 1e-9);
-  EXPECT_EQ(c.macroCalls, (std::map<std::string, std::string>{{"G65.1", "O9010"}, {"G81", "CYCLE81"}, {"M6", "L6"}}));
+  using Call = Controller::MacroCall;
+  EXPECT_EQ(c.macroCalls, (std::map<std::string, Call>{{"G65.1", {"O9010", "macro"}},
+                                                       {"G81", {"CYCLE81", "macro"}},
+                                                       {"M6", {"L6", "macro"}},
+                                                       {"M7", {"O9002", "subprogram"}}}));
   EXPECT_TRUE(m.axes[0].present);
   EXPECT_FALSE(m.axes[1].present);  // not listed
   EXPECT_DOUBLE_EQ(m.axes[0].maxVelocity, 20000);
@@ -364,6 +368,12 @@ TEST(Machine, ErrorsAreLocated) {
        "m.toml:6:17: error: macro_calls: 'T' is not an M or G code (M6, G81, \"G65.1\")"},
       {b + "[controller]\nmacro_calls = { M6 = \"\" }\n",
        "m.toml:6:22: error: macro_calls.M6: the program name is empty"},
+      {b + "[controller]\nmacro_calls = { M30 = \"O9000\" }\n",
+       "m.toml:6:17: error: macro_calls: M30 is a code of the controller itself and cannot call a program"},
+      {b + "[controller]\nmacro_calls = { M6 = { program = \"O9001\", kind = \"call\" } }\n",
+       "m.toml:6:50: error: kind: 'call' is not one of macro, subprogram"},
+      {b + "[controller]\nmacro_calls = { M6 = \"O9001\", M06 = \"O9002\" }\n",
+       "m.toml:6:17: error: macro_calls: M6 is given twice"},
       {b + "[[tools]]\nnumber = 1\nedges = [{ d = 1, radius = -1 }]\n",
        "m.toml:7:28: error: radius: must be >= 0, got -1"},
       // Required keys, at their table.

@@ -73,6 +73,8 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.lathe = machine.controller.lathe();
   fo.latheSystem = machine.controller.gcodeSystem.empty() ? 'A' : machine.controller.gcodeSystem[0];
   fo.startMode = machine.controller.startMode;
+  for (auto &[code, call] : machine.controller.macroCalls)
+    fo.macroCalls.push_back({code, call.program, call.kind == "subprogram"});
   for (unsigned l : opts.blockDelete)
     if (l <= 9) fo.blockDeleteMask |= 1u << l;
   fo.searchDirs.push_back(std::filesystem::path(sm.name(file)).parent_path().string());
