@@ -254,6 +254,7 @@ bool BlockParser::cycl() {
     if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
     if (f_.cycle == 12 && f_.cycleRuns && !how.empty())
       return fail(t_[0], fmt::format("cycle 12 (PGM CALL) by CYCL CALL{} is not simulated yet", how), "unsupported-code");
+    if (slCycle(f_.cycle)) return slCall(how);
     if (f_.cycleRuns && how == " POS") return cyclCallPos();
     if (f_.cycleRuns && how == " PAT") return cyclCallPat();
     if (!f_.cycleRuns || !how.empty())
@@ -270,6 +271,8 @@ bool BlockParser::cycl() {
   int sub = n.isInt ? -1 : (int)std::lround((n.num - number) * 10);  // 7.0, 7.1 …: the old sub-blocks
   ++i_;
   if (sub > 0 && number == f_.oldCycle && oldCycleRuns(number)) return oldCycleBlock(number, n);
+  if (number == 14 && sub == 1 && f_.oldCycle == 14) return contourLabels(n);
+  if (sub < 0 && slCycle(number)) return slDefinition(number, n);
   if (number == 12 && sub == 1 && f_.oldCycle == 12) return programCycle(n);
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
   // The parameter lines: Qn=value, each at most once, each one the cycle takes. A cycle of the
@@ -332,7 +335,7 @@ bool BlockParser::cycl() {
     return true;
   }
   if (sub == 0) f_.oldCycle = number;
-  if (sub == 0 && oldCycleRuns(number)) return true;  // its sub-blocks act
+  if (sub == 0 && (oldCycleRuns(number) || number == 14)) return true;  // its sub-blocks act
   f_.cycleLoc = bl;
   if (inLib && lib.pattern) {
     if (f_.cycle < 0) return fail(n, fmt::format("cycle {} runs the machining cycle defined before it: there is none", number), "cycle-invalid");
