@@ -68,12 +68,19 @@ bool Executor::Impl::regionRun(const MachineCmd &c) {
   if (st.toolInSpindle <= 0 || !(toolNumberData(st.toolInSpindle).radius > 0))
     return error("a region pocket needs a tool with a radius in the spindle", "missing-word");
   RegionPocketJob j;
+  const ContourUse use = (ContourUse)c.sub2;
   const double k = scale();
   j.plane = (int)plane();
   const AxisVec here = programPosition();
   const int n = planeAxes(plane()).n;
   for (int i = 0; i < 3; ++i) j.at[i] = here[i] + frameOffset(i);
   j.toolRadius = toolNumberData(st.toolInSpindle).radius;
+  if (use == ContourUse::Pilot && c.has(Word::T) && c.get(Word::T) != 0) {  // the rough-out tool's radius
+    const double t = c.get(Word::T);
+    if (!checkTool(t, "the rough-out tool")) return false;
+    j.toolRadius = toolNumberData((int)t).radius;
+    if (!(j.toolRadius > 0)) return error(fmt::format("rough-out tool {} has no radius", t), "cycle-invalid");
+  }
   j.depth = get(PocketParam::Depth, 0) * k, j.infeed = get(PocketParam::Infeed, 0) * k;
   j.surface = get(PocketParam::Surface, 0) * k + frameOffset(n);
   j.clearance = get(PocketParam::Clearance, 0) * k;
@@ -88,15 +95,8 @@ bool Executor::Impl::regionRun(const MachineCmd &c) {
   j.cornerRadius = get(PocketParam::CornerRadius, 0) * k;
   if (j.plungeFeed < 0 || j.feed < 0 || (has(PocketParam::RetractFeed) && j.retractFeed < 0))
     return error("the pocket's feeds must not be negative", "bad-number");
-  const ContourUse use = (ContourUse)c.sub2;
   if (use == ContourUse::Floor) {  // one level at the full depth over the floor the roughing left
     j.done = j.depth - j.floorAllowance, j.floorAllowance = 0, j.infeed = 0, j.cornerRadius = 0;
-  }
-  if (use == ContourUse::Pilot && c.has(Word::T) && c.get(Word::T) != 0) {  // the rough-out tool's radius
-    const double t = c.get(Word::T);
-    if (!checkTool(t, "the rough-out tool")) return false;
-    j.toolRadius = toolNumberData((int)t).radius;
-    if (!(j.toolRadius > 0)) return error(fmt::format("rough-out tool {} has no radius", t), "cycle-invalid");
   }
   // Climb milling with M3 runs the outer walls counter-clockwise; M4 or up-cut reverses.
   j.ccw = (direction > 0) != (st.spindle == 2);

@@ -272,6 +272,16 @@ bool BlockParser::cycl() {
   ++i_;
   if (sub > 0 && number == f_.oldCycle && oldCycleRuns(number)) return oldCycleBlock(number, n);
   if (number == 14 && sub == 1 && f_.oldCycle == 14) return contourLabels(n);
+  if (number == 14 && sub == 0) {  // CYCL DEF 14.0 <title>: its labels follow in 14.1
+    while (!atEnd() && tok().line == n.line) ++i_;
+    if (!atEnd()) return fail(tok(), "CYCL DEF 14.0 takes no parameter lines: the labels follow in CYCL DEF 14.1", "cycle-parameter");
+    f_.oldCycle = 14;
+    f_.slLabels.clear();
+    Op note(OpKind::Comment, loc(t_[0]));
+    note.set("text", Expr::string(fmt::format("CYCL DEF {} CONTOUR", n.text)));
+    out().push_back(std::move(note));
+    return true;
+  }
   if (sub < 0 && slCycle(number)) return slDefinition(number, n);
   if (number == 12 && sub == 1 && f_.oldCycle == 12) return programCycle(n);
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
@@ -335,7 +345,7 @@ bool BlockParser::cycl() {
     return true;
   }
   if (sub == 0) f_.oldCycle = number;
-  if (sub == 0 && (oldCycleRuns(number) || number == 14)) return true;  // its sub-blocks act
+  if (sub == 0 && oldCycleRuns(number)) return true;  // its sub-blocks act
   f_.cycleLoc = bl;
   if (inLib && lib.pattern) {
     if (f_.cycle < 0) return fail(n, fmt::format("cycle {} runs the machining cycle defined before it: there is none", number), "cycle-invalid");

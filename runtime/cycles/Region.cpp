@@ -296,7 +296,6 @@ bool regionPocket(const PocketRegion &region, const RegionPocketJob &j, std::vec
   mill.up(safe);
   double floor = j.done;  // the depth cut so far
   for (double t : entry::infeeds(j.infeed, j.depth - j.floorAllowance)) {
-    if (t <= j.done) continue;
     for (const RoughPass &p : passes) {
       const PlanePoint entry = p.path[0];
       // Across at the set-up clearance over the last level when the move is clear of the walls,
