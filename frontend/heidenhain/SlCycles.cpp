@@ -211,7 +211,7 @@ bool BlockParser::slCall(const std::string &how) {
   key("clearance", value(20, "Q6"));
   key("height", value(20, "Q7"));
   key("direction", value(20, "Q9"));
-  if (number == 22) key("corner_radius", value(20, "Q8"));
+  if (number != 23) key("corner_radius", value(20, "Q8"));  // 21 drills where 22 plunges
   if (number != 23) key("infeed", abs(value(number, "Q10")));
   key("plunge_feed", value(number, "Q11"));
   if (number != 21) key("feed", value(number, "Q12"));

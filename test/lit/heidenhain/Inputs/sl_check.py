@@ -5,7 +5,7 @@ outline polygons (when given), and cuts no deeper than a floor. Prints a summary
 first violation.
 
   sl_check.py --below Z --keep D [--floor Z] [--outline "x,y x,y ..."]... [--island "x,y ..."]... < run.jsonl
-  sl_check.py --circle-outline "cx,cy,r" also takes a circle (pockets of the manual's examples).
+  --circle-outline "cx,cy,r" (repeatable: their union) and --circle-island "cx,cy,r" take circles.
 """
 import argparse
 import json
@@ -98,10 +98,12 @@ def main():
     ap.add_argument("--outline", action="append", default=[])
     ap.add_argument("--circle-outline", action="append", default=[])
     ap.add_argument("--island", action="append", default=[])
+    ap.add_argument("--circle-island", action="append", default=[])
     a = ap.parse_args()
     outlines = [poly_arg(o) for o in a.outline]
     circles = [tuple(float(v) for v in c.split(",")) for c in a.circle_outline]
     islands = [poly_arg(i) for i in a.island]
+    circle_islands = [tuple(float(v) for v in c.split(",")) for c in a.circle_island]
     tol = 1e-4
     moves = 0
     min_island = min_wall = math.inf
@@ -125,6 +127,12 @@ def main():
                 continue
             for isl in islands:
                 d = -boundary_dist(p, isl) if inside(p, isl) else boundary_dist(p, isl)
+                min_island = min(min_island, d)
+                if d < a.keep - tol:
+                    print(f"VIOLATION island: line {r['line']} point {p[0]:.4f},{p[1]:.4f} is {d:.4f} off")
+                    return 1
+            for cx, cy, rr in circle_islands:
+                d = math.hypot(p[0] - cx, p[1] - cy) - rr
                 min_island = min(min_island, d)
                 if d < a.keep - tol:
                     print(f"VIOLATION island: line {r['line']} point {p[0]:.4f},{p[1]:.4f} is {d:.4f} off")
