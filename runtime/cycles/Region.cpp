@@ -235,7 +235,7 @@ bool regionRoute(const PocketRegion &region, const RegionPocketJob &j, std::vect
   s.chordTolerance = j.chordTolerance, s.margin = kChordSagFactor * j.chordTolerance;
   s.cornerRadius = j.cornerRadius;
   // An SL route starts nearest the first sub-contour's first point, not the tool: cycle 21's holes
-  // are then cycle 22's plunge points wherever the tool stands (L9285).
+  // are then cycle 22's plunge points wherever the tool stands (L9280-L9282).
   const PlaneAxes ax = planeAxes((Plane)j.plane);
   const PlanePoint from = region.subs.empty() ? PlanePoint{j.at[ax.u], j.at[ax.v]} : region.subs[0].start;
   return roughingRoute(s, j.ccw, from, passes, walls, err);
