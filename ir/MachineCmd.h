@@ -30,6 +30,7 @@ enum class Word : uint8_t {
   // of the block's polynomials; the block's move then has the end point and PL (PolyInterval).
   PolyIndex, PolyInterval, PolyDenominator,
   LeadChange,  // Sinumerik G34/G35: the thread lead's change per revolution (signed), mm/rev^2
+  RetractFeed, CornerRadius,  // region cycles: the feed out at the end, the rounding of inner corners
   Count
 };
 constexpr int kWords = (int)Word::Count;
@@ -38,7 +39,8 @@ constexpr const char *kWordKeys[kWords] = {
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "R", "P", "Q", "L", "F", "S", "T", "H", "D", "E",
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
-    "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator", "dlead"};
+    "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator", "dlead",
+    "retract_feed", "corner_radius"};
 // A word's address letter (the key's one character), 0 for a named word.
 constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;
@@ -124,7 +126,10 @@ constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
 // `Run` runs a consumer on what earlier captures collected (the region pocket: `Outline` and
 // `Island` captures collect the region, `Pocket` roughs it out; runtime/ExecutorRegion.cpp).
 enum class ContourAction : uint8_t { Data, Begin, End, Run };
-enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket };
+// `Sub` (Heidenhain SL): a sub-contour whose RL/RR and direction make it a pocket or an island
+// (the capture notes RL/RR instead of compensating: begin says use=subcontour); `Pilot` and
+// `Floor` run on the region as `Pocket` does (cycles 21 and 23).
+enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket, Sub, Pilot, Floor };
 // What a `cycle` op does (docs/IR.md §5.8): Run the entry here (at each position of its
 // pattern), Define store it for Call (Heidenhain CYCL DEF), Modal store it and run it after each
 // following move (Sinumerik MCALL), Call run the stored one here, Cancel end Modal; Trigger (no
@@ -140,7 +145,7 @@ inline CycleAction cycleAction(uint16_t sub2) { return (CycleAction)(sub2 >> kCy
 // cycle_begin record (at most 7 characters).
 enum class PocketParam : uint8_t {
   Depth, Infeed, Surface, Clearance, Height, Stepover, Overlap, SideAllowance, FloorAllowance, Direction,
-  PlungeFeed, Feed, Count
+  PlungeFeed, Feed, RetractFeed, CornerRadius, Count
 };
 struct PocketParamSlot {
   Word word;
@@ -152,6 +157,7 @@ inline constexpr PocketParamSlot kPocketParams[(int)PocketParam::Count] = {
     {Word::Clearance, "clear"},  {Word::Height, "height"},       {Word::Stepover, "step"},
     {Word::Overlap, "overlap"},  {Word::SideAllowance, "side"},  {Word::FloorAllowance, "floor"},
     {Word::Direction, "dir"},    {Word::PlungeFeed, "fplunge"},  {Word::RoughFeed, "feed"},
+    {Word::RetractFeed, "fout"},  {Word::CornerRadius, "round"},
 };
 
 // One slot per mode group: a `mode` op sets at most one value per group (the verifier rejects a

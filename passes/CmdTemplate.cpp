@@ -314,7 +314,7 @@ Op cmdToOp(const MachineCmd &c) {
     break;
   case CmdKind::Contour:
     op.set("action", Expr::symbol(opSymbolName(op.kind, "action", c.sub)));
-    if (c.sub != (uint16_t)ContourAction::Begin) op.set("use", Expr::symbol(opSymbolName(op.kind, "use", c.sub2)));
+    if (c.sub != (uint16_t)ContourAction::Begin || c.sub2 != 0) op.set("use", Expr::symbol(opSymbolName(op.kind, "use", c.sub2)));
     break;
   case CmdKind::WorkOffset: op.set("index", Expr::number(c.sub, Type::Int)); return op;
   case CmdKind::MachineMove: op.set("rapid", Expr::boolean(c.sub == 0)); break;

@@ -343,6 +343,12 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
 }
 
 bool Executor::Impl::execCutterComp(const MachineCmd &c) {
+  if (capture.active && capture.sl) {  // an SL sub-contour: RL/RR say pocket or island (ExecutorRegion.cpp)
+    if (c.sub != 0 && capture.side != 0 && c.sub != capture.side)
+      return error("an SL sub-contour must keep one side (RL or RR)", "contour-invalid");
+    if (c.sub != 0) capture.side = c.sub;
+    return true;
+  }
   if (corner.active && (comp.active() || c.sub != 0))  // its first move was programmed on the old path
     return error("a chamfer or rounding just before G40, G41 or G42 is not supported", "unsupported-code");
   if (c.sub == 0) {  // G40: the pending move ends normal to its end point; the next one exits

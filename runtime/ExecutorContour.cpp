@@ -58,6 +58,9 @@ bool Executor::Impl::contourData(const MachineCmd &c) {
       return error("the number of divisions R must be an integer of at least 1", "bad-number");
     patternSet = true;
     return true;
+  case ContourUse::Sub:  // a new SL contour: the sub-contours collected so far are dropped
+    region = PocketRegion{};
+    return true;
   default: return error("the finishing consumer takes no data", "syntax");
   }
 }
@@ -74,6 +77,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     capture.loc = loc;
     capture.records.clear();
     capture.compOn = false;
+    capture.sl = (ContourUse)c.sub2 == ContourUse::Sub, capture.side = 0;
     capture.st = st;
     capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX;
     capture.lastPath = lastPath;
@@ -82,7 +86,9 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     return true;
   case ContourAction::Run:
     if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
-    if ((ContourUse)c.sub2 != ContourUse::Pocket) return error("only the pocket consumer runs without a capture", "contour-invalid");
+    if ((ContourUse)c.sub2 != ContourUse::Pocket && (ContourUse)c.sub2 != ContourUse::Pilot &&
+        (ContourUse)c.sub2 != ContourUse::Floor)
+      return error("only the pocket, pilot and floor consumers run without a capture", "contour-invalid");
     return regionRun(c);
   case ContourAction::End:
     if (!capture.active) return error("a contour ends that did not begin", "contour-invalid");
@@ -155,6 +161,13 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
   Contour ct;
   if (!capturedContour(ct)) return false;
   if (use == ContourUse::Outline || use == ContourUse::Island) return regionCapture(c, ct);
+  if (use == ContourUse::Sub) {
+    if (!capture.sl) return error("an SL sub-contour's capture must begin with use=subcontour", "contour-invalid");
+    return regionSub(ct);
+  }
+  if (capture.sl) return error("a capture begun with use=subcontour must end with it", "contour-invalid");
+  if (use == ContourUse::Pilot || use == ContourUse::Floor)
+    return error("the pilot and floor consumers run with action=run, not after a capture", "contour-invalid");
   const PlaneAxes ax = planeAxes(plane());
   std::vector<ContourElem> moves;
   std::string err;

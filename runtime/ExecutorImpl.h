@@ -493,6 +493,9 @@ struct Executor::Impl {
     int64_t blockNumber = -1;
     SourceLoc blockLoc;
     bool compOn = false;  // G41/G42 ran in the contour (a lathe's G70 only)
+    // An SL sub-contour (begin use=subcontour): RL/RR are noted, not run (its side: 1 left, 2 right).
+    bool sl = false;
+    int side = 0;
   } capture;
   // Modal consumer data (ISO G71/G72 U R: layer depth and retract; G73 U W R: relief, count), mm.
   double roughDepth = 0, roughRetract = 0;
@@ -507,6 +510,7 @@ struct Executor::Impl {
   PocketRegion region;
   bool regionCapture(const MachineCmd &c, const struct Contour &ct);
   bool regionRun(const MachineCmd &c);
+  bool regionSub(const struct Contour &ct);
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
   bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.

@@ -25,11 +25,29 @@ bool Executor::Impl::regionCapture(const MachineCmd &c, const Contour &ct) {
   std::string err;
   if (!regionPolygon(loop, island, kRegionChordTolerance, p, err)) return error(err, "contour-invalid");
   if (!island) {
-    region = PocketRegion{(int)plane(), std::move(p), {}};
+    region = PocketRegion{(int)plane(), std::move(p), {}, {}};
     return true;
   }
   if (!islandInside(region, p, kRegionChordTolerance)) return error("the island reaches outside the outline", "contour-invalid");
   region.islands.push_back(std::move(p));
+  return true;
+}
+
+// An SL sub-contour: a pocket or an island by its direction and RL/RR (the manual, L8853-L8860);
+// cycle 14's labels collect in order, `contour action=data use=subcontour` starts anew.
+bool Executor::Impl::regionSub(const Contour &ct) {
+  if (!region.subs.empty() && region.plane != (int)plane())
+    return error("the sub-contours of an SL contour must lie in one plane", "contour-invalid");
+  if (region.subs.size() >= 12) return error("an SL contour has at most 12 sub-contours (cycle 14, L9013)", "contour-invalid");
+  RegionLoop loop;
+  loop.start = {ct.start.a, ct.start.b};
+  for (const ContourElem &e : ct.elems)
+    loop.segs.push_back({{e.end.a, e.end.b}, e.kind == ContourKind::Arc, {e.centre.a, e.centre.b}, e.ccw});
+  SubContour sub;
+  std::string err;
+  if (!subContour(loop, capture.side, kRegionChordTolerance, sub, err)) return error(err, "contour-invalid");
+  if (region.subs.empty()) region = PocketRegion{(int)plane(), {}, {}, {}};
+  region.subs.push_back(std::move(sub));
   return true;
 }
 
@@ -50,12 +68,19 @@ bool Executor::Impl::regionRun(const MachineCmd &c) {
   if (st.toolInSpindle <= 0 || !(toolNumberData(st.toolInSpindle).radius > 0))
     return error("a region pocket needs a tool with a radius in the spindle", "missing-word");
   RegionPocketJob j;
+  const ContourUse use = (ContourUse)c.sub2;
   const double k = scale();
   j.plane = (int)plane();
   const AxisVec here = programPosition();
   const int n = planeAxes(plane()).n;
   for (int i = 0; i < 3; ++i) j.at[i] = here[i] + frameOffset(i);
   j.toolRadius = toolNumberData(st.toolInSpindle).radius;
+  if (use == ContourUse::Pilot && c.has(Word::T) && c.get(Word::T) != 0) {  // the rough-out tool's radius
+    const double t = c.get(Word::T);
+    if (!checkTool(t, "the rough-out tool")) return false;
+    j.toolRadius = toolNumberData((int)t).radius;
+    if (!(j.toolRadius > 0)) return error(fmt::format("rough-out tool {} has no radius", t), "cycle-invalid");
+  }
   j.depth = get(PocketParam::Depth, 0) * k, j.infeed = get(PocketParam::Infeed, 0) * k;
   j.surface = get(PocketParam::Surface, 0) * k + frameOffset(n);
   j.clearance = get(PocketParam::Clearance, 0) * k;
@@ -66,16 +91,26 @@ bool Executor::Impl::regionRun(const MachineCmd &c) {
   j.stepover = has(PocketParam::Overlap) ? overlap * j.toolRadius : get(PocketParam::Stepover, 0) * k;
   j.sideAllowance = get(PocketParam::SideAllowance, 0) * k, j.floorAllowance = get(PocketParam::FloorAllowance, 0) * k;
   j.plungeFeed = get(PocketParam::PlungeFeed, 0) * k, j.feed = get(PocketParam::Feed, 0) * k;
-  if (j.plungeFeed < 0 || j.feed < 0) return error("the pocket's feeds must not be negative", "bad-number");
+  j.retractFeed = get(PocketParam::RetractFeed, -1) * (has(PocketParam::RetractFeed) ? k : 1);
+  j.cornerRadius = get(PocketParam::CornerRadius, 0) * k;
+  if (j.plungeFeed < 0 || j.feed < 0 || (has(PocketParam::RetractFeed) && j.retractFeed < 0))
+    return error("the pocket's feeds must not be negative", "bad-number");
+  if (use == ContourUse::Floor) {  // one level at the full depth over the floor the roughing left
+    j.done = j.depth - j.floorAllowance, j.floorAllowance = 0, j.infeed = 0, j.cornerRadius = 0;
+  }
   // Climb milling with M3 runs the outer walls counter-clockwise; M4 or up-cut reverses.
   j.ccw = (direction > 0) != (st.spindle == 2);
   std::vector<CycleStep> steps;
   std::string err;
-  if (!regionPocket(region, j, steps, err)) return error("region pocket: " + err, "cycle-invalid");
+  static const char *const kWhat[] = {"region pocket", "pilot drilling", "floor finishing"};
+  const int what = use == ContourUse::Pilot ? 1 : use == ContourUse::Floor ? 2 : 0;
+  if (!(use == ContourUse::Pilot ? regionPilot(region, j, steps, err) : regionPocket(region, j, steps, err)))
+    return error(fmt::format("{}: {}", kWhat[what], err), "cycle-invalid");
   for (const CycleStep &s : steps)
     if (s.kind == CycleStepKind::Feed && s.feed <= 0 && !checkFeed("the region pocket")) return false;
   MotionRecord begin = record(RecordKind::CycleBegin);
-  begin.text = "contour.pocket";
+  static const char *const kBracket[] = {"contour.pocket", "contour.pilot", "contour.floor"};
+  begin.text = kBracket[what];
   for (auto &p : kPocketParams)
     if (c.has(p.word)) begin.setParam(p.bracket, c.get(p.word));
   emit(begin);

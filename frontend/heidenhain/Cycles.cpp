@@ -254,6 +254,7 @@ bool BlockParser::cycl() {
     if (f_.cycle < 0) return fail(t_[0], fmt::format("CYCL CALL{} without a cycle definition (CYCL DEF) before it", how), "cycle-invalid");
     if (f_.cycle == 12 && f_.cycleRuns && !how.empty())
       return fail(t_[0], fmt::format("cycle 12 (PGM CALL) by CYCL CALL{} is not simulated yet", how), "unsupported-code");
+    if (slCycle(f_.cycle)) return slCall(how);
     if (f_.cycleRuns && how == " POS") return cyclCallPos();
     if (f_.cycleRuns && how == " PAT") return cyclCallPat();
     if (!f_.cycleRuns || !how.empty())
@@ -270,6 +271,18 @@ bool BlockParser::cycl() {
   int sub = n.isInt ? -1 : (int)std::lround((n.num - number) * 10);  // 7.0, 7.1 …: the old sub-blocks
   ++i_;
   if (sub > 0 && number == f_.oldCycle && oldCycleRuns(number)) return oldCycleBlock(number, n);
+  if (number == 14 && sub == 1 && f_.oldCycle == 14) return contourLabels(n);
+  if (number == 14 && sub == 0) {  // CYCL DEF 14.0 <title>: its labels follow in 14.1
+    while (!atEnd() && tok().line == n.line) ++i_;
+    if (!atEnd()) return fail(tok(), "CYCL DEF 14.0 takes no parameter lines: the labels follow in CYCL DEF 14.1", "cycle-parameter");
+    f_.oldCycle = 14;
+    f_.slLabels.clear();
+    Op note(OpKind::Comment, loc(t_[0]));
+    note.set("text", Expr::string(fmt::format("CYCL DEF {} CONTOUR", n.text)));
+    out().push_back(std::move(note));
+    return true;
+  }
+  if (sub < 0 && slCycle(number)) return slDefinition(number, n);
   if (number == 12 && sub == 1 && f_.oldCycle == 12) return programCycle(n);
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
   // The parameter lines: Qn=value, each at most once, each one the cycle takes. A cycle of the

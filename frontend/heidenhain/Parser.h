@@ -68,6 +68,11 @@ public:
   int lastArcDir = 0;               // … or a C: its DR (+1, -1), else 0
   bool usesDep = false;             // the file has DEP: each L keeps where it starts
   SourceLoc cycleLoc;
+  // SL cycles (SlCycles.cpp): cycle 14's labels (each with where it is written), the parameters
+  // each SL cycle's last definition gave, and whether its Q208 was FMAX.
+  std::vector<std::pair<std::string, SourceLoc>> slLabels;
+  std::map<int, std::set<std::string>> slGiven;
+  std::map<int, bool> slFmaxOut;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
 
 private:
@@ -91,6 +96,7 @@ public:
   bool approach = false;   // some file uses APPR/DEP: … declares their scratch values
   bool callPat = false;    // some CYCL CALL PAT is split over several ops: … declares the call's level
   bool mainInch = false;
+  std::set<std::string> slVars;  // the SL cycles' frozen parameters: declared by the main program
   bool ok = true;
   // The function of a called program (CALL PGM): parsed on first use; "" with an error at loc.
   std::string program(const std::string &written, uint32_t fromFile, SourceLoc loc);
@@ -182,6 +188,9 @@ private:
   bool toleranceBlock(const Token &n);             // Cycles.cpp: 32.1, 32.2
   bool cyclCallPos();                              // Cycles.cpp
   bool programCycle(const Token &n);               // Cycles.cpp: CYCL DEF 12.1 PGM
+  bool contourLabels(const Token &n);              // SlCycles.cpp: CYCL DEF 14.1 1/2/3
+  bool slDefinition(int number, const Token &n);   // SlCycles.cpp: CYCL DEF 20-25
+  bool slCall(const std::string &how);             // SlCycles.cpp: CYCL CALL of 21-25
   bool cyclCallPat();                              // Patterns.cpp
   bool patternDef();                               // Patterns.cpp
   bool select();                                   // Patterns.cpp: SEL PATTERN
@@ -238,6 +247,9 @@ extern const char *const kScl, *const kAxisScl[3], *const kAxisCc[3], *const kMi
 void frameTakeOff(ir::Region &out, SourceLoc l);
 void framePutOn(ir::Region &out, SourceLoc l);
 bool oldCycleRuns(int number);
+// The SL cycles 20-25 (SlCycles.cpp), and the variable that keeps parameter q of cycle n.
+bool slCycle(int number);
+std::string slVar(int cycle, const std::string &q);
 // A program name written in a block: a string, or the words and numbers up to `stopWord`.
 std::string nameText(const std::vector<Token> &t, size_t &k, std::string_view stopWord);
 // Sections (call_section) need label names; LBL 0 gets one per occurrence.

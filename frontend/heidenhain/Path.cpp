@@ -176,6 +176,8 @@ bool BlockParser::words(PathWords &w, unsigned allowed, const char *stmt) {
                       "program-frame");
     if (r.act == MAct::CycleCall) {
       if (f_.cycle < 0) return f_.error(ml, fmt::format("{} without a cycle definition (CYCL DEF) before it", r.arg), "cycle-invalid");
+      if (slCycle(f_.cycle))
+        return f_.error(ml, fmt::format("SL cycle {} by {} is not simulated: call it by CYCL CALL", f_.cycle, r.arg), "unsupported-code");
       if (!f_.cycleRuns) return f_.error(ml, fmt::format("cycle {} is not simulated yet ({})", f_.cycle, r.arg), "unsupported-code");
     }
   }

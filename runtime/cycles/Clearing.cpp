@@ -32,25 +32,38 @@ bool leavesMaterial(const std::vector<ClipperLib::Paths> &levels, const Clearing
 }
 
 
+// The ring `d` in from the region's walls; the first (`first`) with its convex corners rounded
+// to the corner radius (an opening: in by d + radius, out by the radius).
+ClipperLib::Paths ringAt(const ClipperLib::Paths &region, double d, bool first, const ClearingSpec &s) {
+  if (!first || !(s.cornerRadius > 0)) return offset(region, -d, s.chordTolerance);
+  ClipperLib::Paths in = offset(region, -(d + s.cornerRadius), s.chordTolerance);
+  return in.empty() ? in : offset(in, s.cornerRadius, s.chordTolerance);
+}
+
 // The region (the contour less the islands, whatever their orientation: the islands all turn
 // one way so that overlapping ones merge) and the offsets of its rings, from the wall inward.
 bool ringLevels(const ClearingSpec &s, ClipperLib::Paths &region, std::vector<double> &ds,
                 std::vector<ClipperLib::Paths> &levels, std::string &err) {
-  if (s.contour.size() < 3) return err = "a clearing region needs at least three corners", false;
+  if (s.area.empty() && s.contour.size() < 3) return err = "a clearing region needs at least three corners", false;
   if (!(s.toolRadius > 0) || !(s.stepover > 0) || s.stepover > 2 * s.toolRadius + 1e-12)
     return err = "the stepover must be greater than 0 and at most the tool diameter", false;
   if (!(s.chordTolerance > 0)) return err = "the chord tolerance must be greater than 0", false;
   ClipperLib::Clipper c;
-  ClipperLib::Path outer = toPath(s.contour);
-  if (!ClipperLib::Orientation(outer)) ClipperLib::ReversePath(outer);
-  c.AddPath(outer, ClipperLib::ptSubject, true);
-  for (auto &i : s.islands) {
-    ClipperLib::Path p = toPath(i);
-    if (!ClipperLib::Orientation(p)) ClipperLib::ReversePath(p);
-    c.AddPath(p, ClipperLib::ptClip, true);
-  }
   region.clear();
-  c.Execute(ClipperLib::ctDifference, region, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  if (!s.area.empty()) {
+    for (auto &p : s.area) c.AddPath(toPath(p), ClipperLib::ptSubject, true);
+    c.Execute(ClipperLib::ctUnion, region, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  } else {
+    ClipperLib::Path outer = toPath(s.contour);
+    if (!ClipperLib::Orientation(outer)) ClipperLib::ReversePath(outer);
+    c.AddPath(outer, ClipperLib::ptSubject, true);
+    for (auto &i : s.islands) {
+      ClipperLib::Path p = toPath(i);
+      if (!ClipperLib::Orientation(p)) ClipperLib::ReversePath(p);
+      c.AddPath(p, ClipperLib::ptClip, true);
+    }
+    c.Execute(ClipperLib::ctDifference, region, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  }
   if (region.empty()) return err = "the islands cover the whole region", false;
   // No ring lies deeper than half the narrower side of the bounding box: refuse a stepover that
   // would need more rings than any machine runs before offsetting that often.
@@ -66,7 +79,7 @@ bool ringLevels(const ClearingSpec &s, ClipperLib::Paths &region, std::vector<do
     levels.clear(), ds.clear();
     double d = s.toolRadius + s.allowance + s.margin;
     for (;; d += step) {
-      ClipperLib::Paths ring = offset(region, -d, s.chordTolerance);
+      ClipperLib::Paths ring = ringAt(region, d, levels.empty(), s);
       if (ring.empty()) break;
       levels.push_back(std::move(ring)), ds.push_back(d);
       if (levels.size() > 100000) return err = "too many clearing rings (stepover far too small)", false;
@@ -134,10 +147,17 @@ bool clearingPieces(const ClearingSpec &s, std::vector<RingPiece> &pieces, std::
   std::vector<std::vector<ClipperLib::Path>> holes;
   size_t levelStart = 0;
   for (double d : ds) {
-    ClipperLib::ClipperOffset co(2.0, s.chordTolerance * kScale);
-    co.AddPaths(region, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-    ClipperLib::PolyTree tree;
-    co.Execute(tree, -d * kScale);
+    ClipperLib::PolyTree tree;  // the level's rings as outer rings and their holes
+    if (d == ds[0] && s.cornerRadius > 0) {
+      ClipperLib::ClipperOffset co(2.0, s.chordTolerance * kScale);
+      co.AddPaths(offset(region, -(d + s.cornerRadius), s.chordTolerance), ClipperLib::jtRound,
+                  ClipperLib::etClosedPolygon);
+      co.Execute(tree, s.cornerRadius * kScale);
+    } else {
+      ClipperLib::ClipperOffset co(2.0, s.chordTolerance * kScale);
+      co.AddPaths(region, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+      co.Execute(tree, -d * kScale);
+    }
     const size_t first = pieces.size();
     for (ClipperLib::PolyNode *n = tree.GetFirst(); n; n = n->GetNext()) {
       if (n->IsHole()) continue;

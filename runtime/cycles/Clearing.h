@@ -25,6 +25,13 @@ struct ClearingSpec {
   // kChordSagFactor x chordTolerance keeps every point of every ring at least radius + allowance
   // off the walls (region pockets; the fixed-shape pockets keep 0).
   double margin = 0;
+  // When not empty: the region itself, already combined (Heidenhain SL sub-contours united and
+  // less their islands): outer rings counter-clockwise, holes clockwise, as Clipper's booleans
+  // leave them; `contour` and `islands` are then not used.
+  std::vector<Polygon> area;
+  // Heidenhain Q8: the first ring (the tool touching the walls) has its convex corners, where the
+  // region's inner corners are, rounded to this radius on the tool-centre path (0: sharp).
+  double cornerRadius = 0;
 };
 constexpr double kChordSagFactor = 2.5;
 

@@ -2,6 +2,7 @@
 
 #include "runtime/Geometry.h"
 #include "runtime/cycles/ClipperPaths.h"
+#include "runtime/cycles/Hole.h"
 #include "runtime/cycles/Mill.h"
 #include "runtime/cycles/Pocket.h"
 
@@ -100,10 +101,10 @@ struct Router {
 };
 }  // namespace
 
-bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::string &err) {
-  out.clear();
+namespace {
+// Closed from the start, or the first move only led to the contour's first point (then dropped).
+bool closeLoop(RegionLoop &loop, std::string &err) {
   if (loop.segs.empty()) return err = "a region contour needs at least one move", false;
-  // Closed from the start, or the first move only led to the contour's first point.
   if (!same(loop.segs.back().end, loop.start)) {
     if (loop.segs.size() < 2 || !same(loop.segs.back().end, loop.segs.front().end))
       return err = "a region contour must be closed: it must end where it begins", false;
@@ -111,6 +112,72 @@ bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::
     loop.segs.erase(loop.segs.begin());
   }
   loop.segs.back().end = loop.start;
+  return true;
+}
+
+bool loopPolygon(const RegionLoop &loop, bool island, double tol, Polygon &out, std::string &err);
+
+ClipperLib::Paths paths(const std::vector<const Polygon *> &ps) {
+  ClipperLib::Paths out;
+  for (auto *p : ps) out.push_back(toPath(*p));
+  return out;
+}
+ClipperLib::Paths boolean(ClipperLib::ClipType op, const ClipperLib::Paths &a, const ClipperLib::Paths &b) {
+  ClipperLib::Clipper c;
+  c.AddPaths(a, ClipperLib::ptSubject, true);
+  c.AddPaths(b, ClipperLib::ptClip, true);
+  ClipperLib::Paths out;
+  c.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+}  // namespace
+
+bool subContour(RegionLoop loop, int side, double tol, SubContour &out, std::string &err) {
+  if (side != 1 && side != 2)
+    return err = "an SL sub-contour needs RL or RR: with the direction they make it a pocket or an island", false;
+  // The manual's example 09 (L10709-L10851) starts its islands in the middle of an edge and ends
+  // them at that edge's far corner: the TNC closes them along the first element's line. Only that
+  // is closed here; any other end off the first point is an open contour.
+  if (loop.segs.size() >= 3 && !same(loop.segs.back().end, loop.start) && !same(loop.segs.back().end, loop.segs[0].end) &&
+      !loop.segs[1].arc) {
+    const PlanePoint p0 = loop.segs[0].end, p1 = loop.segs[1].end, q = loop.segs.back().end;
+    const double ux = p1[0] - p0[0], uy = p1[1] - p0[1], vx = p0[0] - q[0], vy = p0[1] - q[1];
+    const double len = std::hypot(ux, uy) * std::hypot(vx, vy);
+    if (len > 0 && std::fabs(ux * vy - uy * vx) <= 1e-9 * len && ux * vx + uy * vy > 0) loop.segs.push_back({p0});
+  }
+  if (!closeLoop(loop, err)) return false;
+  const bool ccw = ClipperLib::Area(toPath(contourPolygon({loop.start, loop.segs}, tol))) > 0;
+  out.pocket = (side == 1) == ccw;  // the tool inside: left of a counter-clockwise path
+  out.start = loop.start;
+  return loopPolygon(loop, !out.pocket, tol, out.poly, err);
+}
+
+bool slArea(const std::vector<SubContour> &subs, std::vector<Polygon> &area, std::string &err) {
+  std::vector<const Polygon *> pockets, islands;
+  for (auto &s : subs) (s.pocket ? pockets : islands).push_back(&s.poly);
+  if (pockets.empty()) return err = "the SL contour has no pocket (RL/RR and the direction make every sub-contour an island)", false;
+  // The first pocket starting inside another: their intersection (L9140-L9173), else the union.
+  ClipperLib::Paths first = paths({pockets[0]}), rest = paths({pockets.begin() + 1, pockets.end()}), a;
+  const SubContour &a0 = *std::find_if(subs.begin(), subs.end(), [](const SubContour &s) { return s.pocket; });
+  bool inside = false;
+  for (auto &p : rest) inside = inside || ClipperLib::PointInPolygon(toClipper(a0.start), p) == 1;
+  if (inside && pockets.size() != 2)
+    return err = "the first pocket starts inside another: an intersection, which needs exactly two pockets", false;
+  a = inside ? boolean(ClipperLib::ctIntersection, first, rest) : boolean(ClipperLib::ctUnion, first, rest);
+  a = boolean(ClipperLib::ctDifference, a, paths(islands));
+  area.clear();
+  for (auto &p : a) area.push_back(fromPath(p));
+  if (area.empty()) return err = "the SL contour encloses no area", false;
+  return true;
+}
+
+bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::string &err) {
+  out.clear();
+  return closeLoop(loop, err) && loopPolygon(loop, island, tol, out, err);
+}
+
+namespace {
+bool loopPolygon(const RegionLoop &loop, bool island, double tol, Polygon &out, std::string &err) {
   // Sampled with the region on the left (Mill.h contourPolygon): an outline counter-clockwise,
   // an island clockwise.
   Contour c{loop.start, loop.segs};
@@ -126,6 +193,7 @@ bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::
   out = std::move(p);
   return true;
 }
+}  // namespace
 
 bool islandInside(const PocketRegion &r, const Polygon &island, double tol) {
   ClipperLib::Clipper c;
@@ -155,30 +223,78 @@ bool roughingRoute(const ClearingSpec &spec, bool ccw, PlanePoint from, std::vec
   return true;
 }
 
-bool regionPocket(const PocketRegion &region, const RegionPocketJob &j, std::vector<CycleStep> &out,
-                  std::string &err) {
+namespace {
+// The roughing route of the job's tool through the region (an outline less islands, or the SL
+// contour's area).
+bool regionRoute(const PocketRegion &region, const RegionPocketJob &j, std::vector<RoughPass> &passes,
+                 std::vector<Polygon> &walls, std::string &err) {
+  ClearingSpec s;
+  if (!region.subs.empty() && !slArea(region.subs, s.area, err)) return false;
+  s.contour = region.outline, s.islands = region.islands;
+  s.toolRadius = j.toolRadius, s.stepover = j.stepover, s.allowance = j.sideAllowance;
+  s.chordTolerance = j.chordTolerance, s.margin = kChordSagFactor * j.chordTolerance;
+  s.cornerRadius = j.cornerRadius;
+  // An SL route starts nearest the first sub-contour's first point, not the tool: cycle 21's holes
+  // are then cycle 22's plunge points wherever the tool stands (L9280-L9282).
+  const PlaneAxes ax = planeAxes((Plane)j.plane);
+  const PlanePoint from = region.subs.empty() ? PlanePoint{j.at[ax.u], j.at[ax.v]} : region.subs[0].start;
+  return roughingRoute(s, j.ccw, from, passes, walls, err);
+}
+
+bool checkJob(const RegionPocketJob &j, std::string &err) {
   if (!(j.depth > 0)) return err = "the depth must be greater than 0", false;
   if (j.infeed < 0) return err = "the infeed must not be negative", false;
   if (j.clearance < 0) return err = "the set-up clearance must not be negative", false;
   if (j.floorAllowance < 0 || j.floorAllowance >= j.depth)
     return err = "the floor allowance must be at least 0 and less than the depth", false;
   if (j.sideAllowance < 0) return err = "the side allowance must not be negative", false;
+  if (j.cornerRadius < 0) return err = "the corner radius must not be negative", false;
   if (j.height < j.surface + j.clearance) return err = "the clearance height lies below the set-up clearance", false;
-  ClearingSpec s;
-  s.contour = region.outline, s.islands = region.islands;
-  s.toolRadius = j.toolRadius, s.stepover = j.stepover, s.allowance = j.sideAllowance;
-  s.chordTolerance = j.chordTolerance, s.margin = kChordSagFactor * j.chordTolerance;
-  const PlaneAxes ax = planeAxes((Plane)j.plane);
+  return true;
+}
+}  // namespace
+
+double pilotReentry(double depth) { return depth <= 30 ? 0.6 : std::min(depth / 50, 7.0); }
+
+bool regionPilot(const PocketRegion &region, const RegionPocketJob &j, std::vector<CycleStep> &out,
+                 std::string &err) {
+  if (!checkJob(j, err)) return false;
   std::vector<RoughPass> passes;
   std::vector<Polygon> walls;
-  if (!roughingRoute(s, j.ccw, {j.at[ax.u], j.at[ax.v]}, passes, walls, err)) return false;
+  if (!regionRoute(region, j, passes, walls, err)) return false;
+  const PlaneAxes ax = planeAxes((Plane)j.plane);
+  const int d = 3 - ax.u - ax.v;
+  const double total = j.depth - j.floorAllowance;
+  HoleSpec h;
+  h.start = j.surface + j.clearance, h.bottom = j.surface - total, h.retract = j.height;
+  h.peck = j.infeed > 0 ? j.infeed : total;
+  h.peckFromSet = true, h.peckFrom = j.surface;
+  h.breaksPerRetract = 0, h.reentry = pilotReentry(total);
+  h.feed = h.firstFeed = j.plungeFeed;
+  std::array<double, 3> at = j.at;
+  for (const RoughPass &p : passes) {
+    Mill mill(out, j.plane, {0, 0}, 0, -1, at);
+    mill.go(p.path[0], j.height);
+    mill.rapid(p.path[0], h.start);
+    holeSteps(h, ax.u, ax.v, d, p.path[0][0], p.path[0][1], out);
+    at = out.back().pos;
+  }
+  return true;
+}
+
+bool regionPocket(const PocketRegion &region, const RegionPocketJob &j, std::vector<CycleStep> &out,
+                  std::string &err) {
+  if (!checkJob(j, err)) return false;
+  std::vector<RoughPass> passes;
+  std::vector<Polygon> walls;
+  if (!regionRoute(region, j, passes, walls, err)) return false;
   const double keep = j.toolRadius + j.sideAllowance - 1e-9;
   auto level = [&](double t) { return j.surface - t; };
   const double safe = level(-j.clearance);
   Mill mill(out, j.plane, {0, 0}, 0, -1, j.at);
   mill.go(passes[0].path[0], j.height);
   mill.up(safe);
-  double floor = 0;  // the depth cut so far
+  double floor = j.done;  // the depth cut so far
   for (double t : entry::infeeds(j.infeed, j.depth - j.floorAllowance)) {
     for (const RoughPass &p : passes) {
       const PlanePoint entry = p.path[0];
@@ -198,7 +314,8 @@ bool regionPocket(const PocketRegion &region, const RegionPocketJob &j, std::vec
     }
     floor = t;
   }
-  mill.up(j.height);
+  if (j.retractFeed >= 0) mill.feed(mill.here(), j.height, j.retractFeed > 0 ? j.retractFeed : j.feed);
+  else mill.up(j.height);
   return true;
 }
 

@@ -28,13 +28,29 @@ struct RegionLoop {
 // of it (an island). False with a message otherwise.
 bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::string &err);
 
+// A Heidenhain SL sub-contour (a label of cycle 14): its polygon (counter-clockwise, sampled on
+// the safe side for what it is), whether it is a pocket, and its first point.
+struct SubContour {
+  Polygon poly;
+  bool pocket = true;
+  PlanePoint start{};
+};
+// The sub-contour of a captured loop run with RL (`side` 1) or RR (2): a pocket when the tool is
+// inside (RL and counter-clockwise, RR and clockwise: the manual's "traversed inside"), else an
+// island.
+bool subContour(RegionLoop loop, int side, double tol, SubContour &out, std::string &err);
+
 // The region collected for the next pocket: the outline and its islands (overlapping islands
-// merge), in the plane they were captured in.
+// merge), or the SL sub-contours, in the plane they were captured in.
 struct PocketRegion {
   int plane = -1;  // -1: no outline yet
   Polygon outline;
   std::vector<Polygon> islands;
+  std::vector<SubContour> subs;  // not empty: an SL contour (outline and islands unused)
 };
+// The SL contour's area (ClearingSpec::area): the pockets united (the intersection of two when the
+// first starts inside the second, L9140-L9173), less the islands.
+bool slArea(const std::vector<SubContour> &subs, std::vector<Polygon> &area, std::string &err);
 // Whether `island` lies inside the outline (within `tol`): an island reaching out of it is an error.
 bool islandInside(const PocketRegion &r, const Polygon &island, double tol);
 
@@ -61,6 +77,9 @@ struct RegionPocketJob {
   double clearance = 0, height = 0;  // set-up clearance above the surface; clearance height (absolute)
   double stepover = 0, sideAllowance = 0, floorAllowance = 0;
   double plungeFeed = 0, feed = 0;  // 0: the programmed feed
+  double retractFeed = -1;  // the last move up to the clearance height: < 0 rapid, 0 `feed`
+  double cornerRadius = 0;  // Q8: the outermost ring's corners rounded (ClearingSpec)
+  double done = 0;          // the depth already cut (floor finishing: the roughed floor)
   double toolRadius = 0;
   bool ccw = true;  // outer walls counter-clockwise (climb with M3)
   double chordTolerance = kRegionChordTolerance;
@@ -73,5 +92,14 @@ struct RegionPocketJob {
 // it plunges vertically at the plunge feed. The end: up to the clearance height.
 bool regionPocket(const PocketRegion &region, const RegionPocketJob &job, std::vector<CycleStep> &out,
                   std::string &err);
+
+// Heidenhain cycle 21 (L9268-L9348): a hole at each plunge point of the roughing route that
+// `job` describes (its tool radius the rough-out tool's): from the clearance height down to the
+// set-up clearance at rapid, pecks of `infeed` at the plunge feed to depth - floor allowance,
+// after each out to the set-up clearance and back at rapid to `pilotReentry` above the last
+// depth; up to the clearance height between the holes and at the end.
+double pilotReentry(double depth);
+bool regionPilot(const PocketRegion &region, const RegionPocketJob &job, std::vector<CycleStep> &out,
+                 std::string &err);
 
 }  // namespace ncc

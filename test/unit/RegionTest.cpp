@@ -2,7 +2,8 @@
 // every move below the surface is measured against the edges, and no point of it brings the tool into an island or
 // through the outline (by more than 1e-6 mm); at the last level the cutting moves sweep all of
 // the region less the islands that the tool can reach (a Clipper area test). Also the closing
-// and sampling of captured loops, and the errors.
+// and sampling of captured loops, the errors, and the Heidenhain SL sub-contours (pocket or island,
+// union, difference, intersection).
 #include "runtime/cycles/ClipperPaths.h"
 #include "runtime/cycles/Region.h"
 
@@ -213,4 +214,63 @@ TEST(Region, Errors) {
   j.floorAllowance = 2;
   EXPECT_FALSE(regionPocket(r, j, steps, err));
   EXPECT_EQ(err, "the floor allowance must be at least 0 and less than the depth");
+}
+
+namespace {
+// A square loop from the tool at the origin: to (x0, y0), then round the square of side s
+// (clockwise when `cw`), ending `short_` edges early.
+RegionLoop squareLoop(double x0, double y0, double s, bool cw, bool short_ = false) {
+  RegionLoop l;
+  l.start = {-50, -50};
+  std::vector<PlanePoint> pts = cw ? std::vector<PlanePoint>{{x0, y0 + s}, {x0 + s, y0 + s}, {x0 + s, y0}, {x0, y0}}
+                                   : std::vector<PlanePoint>{{x0 + s, y0}, {x0 + s, y0 + s}, {x0, y0 + s}, {x0, y0}};
+  l.segs.push_back({{x0, y0}, false, {}, true});
+  for (size_t i = 0; i + (short_ ? 1 : 0) < pts.size(); ++i) l.segs.push_back({pts[i], false, {}, true});
+  return l;
+}
+double areaOf(const std::vector<Polygon> &ps) {
+  double a = 0;
+  for (auto &p : ps) a += ClipperLib::Area(toPath(p)) / (kScale * kScale);
+  return a;
+}
+}  // namespace
+
+// FEATURES: HEI-SL-02
+// SL sub-contours (the manual's L8853-L8860 and L9022-L9173): RR clockwise and RL
+// counter-clockwise are pockets, the other two islands; pockets unite, islands subtract, the first
+// pocket starting inside the second intersects with it.
+TEST(Region, SlSubContours) {
+  SubContour s;
+  std::string err;
+  ASSERT_TRUE(subContour(squareLoop(0, 0, 10, true), 2, 0.001, s, err)) << err;
+  EXPECT_TRUE(s.pocket);
+  EXPECT_TRUE(subContour(squareLoop(0, 0, 10, true), 1, 0.001, s, err) && !s.pocket);
+  EXPECT_TRUE(subContour(squareLoop(0, 0, 10, false), 1, 0.001, s, err) && s.pocket);
+  EXPECT_TRUE(subContour(squareLoop(0, 0, 10, false), 2, 0.001, s, err) && !s.pocket);
+  EXPECT_FALSE(subContour(squareLoop(0, 0, 10, true), 0, 0.001, s, err));
+  // A square ending at its last corner is open; ending on the first element's line it closes
+  // (a mid-edge start, as the manual's example 09).
+  EXPECT_FALSE(subContour(squareLoop(0, 0, 10, true, true), 2, 0.001, s, err));
+  RegionLoop mid;
+  mid.start = {-50, -50};
+  for (PlanePoint p : std::vector<PlanePoint>{{0, 5}, {0, 10}, {10, 10}, {10, 0}, {0, 0}}) mid.segs.push_back({p, false, {}, true});
+  ASSERT_TRUE(subContour(mid, 2, 0.001, s, err)) << err;
+  EXPECT_NEAR(ClipperLib::Area(toPath(s.poly)) / (kScale * kScale), 100, 1e-6);
+  EXPECT_EQ(s.start, (PlanePoint{0, 5}));
+
+  SubContour a, b, island;
+  ASSERT_TRUE(subContour(squareLoop(0, 0, 10, true), 2, 0.001, a, err));
+  ASSERT_TRUE(subContour(squareLoop(5, 0, 10, true), 2, 0.001, b, err));   // starts on A's bottom edge: not inside
+  ASSERT_TRUE(subContour(squareLoop(2, 2, 2, true), 1, 0.001, island, err));
+  std::vector<Polygon> area;
+  ASSERT_TRUE(slArea({a, b}, area, err)) << err;
+  EXPECT_NEAR(areaOf(area), 150, 1e-6);  // union
+  ASSERT_TRUE(slArea({a, b, island}, area, err)) << err;
+  EXPECT_NEAR(areaOf(area), 146, 1e-6);  // less the island
+  SubContour inner;
+  ASSERT_TRUE(subContour(squareLoop(6, 2, 10, true), 2, 0.001, inner, err));  // starts inside A
+  ASSERT_TRUE(slArea({inner, a}, area, err)) << err;
+  EXPECT_NEAR(areaOf(area), 32, 1e-6);  // intersection 4 x 8
+  EXPECT_FALSE(slArea({inner, a, b}, area, err));
+  EXPECT_FALSE(slArea({island}, area, err));
 }

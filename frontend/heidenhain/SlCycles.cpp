@@ -1,0 +1,224 @@
+// The SL cycles (docs/HEIDENHAIN.md "SL cycles", manual L8830-L9670): 14 CONTOUR names the
+// contour subprograms, 20 CONTOUR DATA the depths, allowances and heights, and CYCL CALL of 21
+// PILOT DRILLING, 22 ROUGH-OUT or 23 FLOOR FINISHING captures each subprogram as a sub-contour
+// (NC IR `contour action=begin|end use=subcontour` around its `call_section`: the core decides
+// pocket or island from its direction and RL/RR) and runs the core's region consumer with the
+// values the definitions froze (program-wide `%%_HEI_SL<cycle>_Q<n>`).
+#include "frontend/heidenhain/Parser.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace ncc::hei {
+
+namespace {
+struct SlCycle {
+  int number;
+  const char *name;
+  const char *params;  // the parameters it takes, each once
+};
+constexpr SlCycle kSl[] = {
+    {20, "CONTOUR DATA", "Q1 Q2 Q3 Q4 Q5 Q6 Q7 Q8 Q9"},
+    {21, "PILOT DRILLING", "Q10 Q11 Q13"},
+    {22, "ROUGH-OUT", "Q10 Q11 Q12 Q18 Q19 Q208 Q401 Q404"},
+    {23, "FLOOR FINISHING", "Q11 Q12 Q208"},
+    {24, "SIDE FINISHING", "Q9 Q10 Q11 Q12 Q14 Q438"},
+    {25, "CONTOUR TRAIN", "Q1 Q3 Q5 Q7 Q10 Q11 Q12 Q15 Q18 Q446 Q447 Q448"},
+};
+
+const SlCycle *slRow(int number) {
+  for (auto &c : kSl)
+    if (c.number == number) return &c;
+  return nullptr;
+}
+
+bool takesParam(const char *params, const std::string &q) {
+  std::string_view p(params);
+  for (size_t at = 0; (at = p.find(q, at)) != std::string_view::npos; at += q.size()) {
+    size_t end = at + q.size();
+    if ((at == 0 || p[at - 1] == ' ') && (end == p.size() || p[end] == ' ')) return true;
+  }
+  return false;
+}
+
+// Which consumer a machining cycle's call runs.
+const char *slUse(int number) { return number == 21 ? "pilot" : number == 23 ? "floor" : "pocket"; }
+}  // namespace
+
+bool slCycle(int number) { return slRow(number) != nullptr; }
+
+std::string slVar(int cycle, const std::string &q) { return fmt::format("_HEI_SL{}_{}", cycle, q); }
+
+// CYCL DEF 14.1 <title> 1/2/3: up to 12 label numbers (L9001-L9021); each becomes a section
+// call of the captures, resolved with the file's CALL LBLs (an undefined label is an error there).
+bool BlockParser::contourLabels(const Token &n) {
+  while (!atEnd() && tok().kind == Tok::Word) ++i_;  // the title
+  std::vector<std::pair<std::string, SourceLoc>> labels;
+  while (!atEnd()) {
+    const Token &t = tok();
+    if (t.kind != Tok::Number || !t.isInt || t.num < 1 || t.num > 65535)
+      return fail(t, fmt::format("CYCL DEF {} lists label numbers 1 … 65535 (L9019)", n.text), "cycle-parameter");
+    labels.push_back({labelOf(t), loc(t)});
+    ++i_;
+    if (!atEnd() && !tok().is("/")) return fail(tok(), fmt::format("'/' expected between the labels of CYCL DEF {}", n.text));
+    if (!atEnd()) ++i_;
+  }
+  if (labels.empty()) return fail(n, fmt::format("CYCL DEF {} needs the contour's label numbers", n.text), "missing-word");
+  if (labels.size() > 12) return fail(n, "cycle 14 lists at most 12 labels (L9013)", "cycle-parameter");
+  f_.slLabels = std::move(labels);
+  return true;
+}
+
+// CYCL DEF 20-25 with their parameter lines: the values go to program-wide variables now (a
+// definition freezes them, as the library cycles' do); 20 is valid for 21-24 (L9181).
+bool BlockParser::slDefinition(int number, const Token &n) {
+  SourceLoc bl = loc(t_[0]);
+  const SlCycle &row = *slRow(number);
+  while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
+  std::set<std::string> given;
+  bool fmaxOut = false;
+  while (!atEnd()) {
+    const Token &q = tok();
+    if (!(q.isWord("Q") || q.isWord("QS")) || peek().kind != Tok::Number || !peek().isInt)
+      return fail(q, fmt::format("a cycle parameter line Qn=value was expected, not '{}'", q.text));
+    std::string name = q.text + peek().text;
+    i_ += 2;
+    if (!tok().is("=")) return fail(tok(), fmt::format("'=' expected after {}", name));
+    ++i_;
+    if (given.count(name)) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
+    if (!takesParam(row.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
+    given.insert(name);
+    ExprPtr v;
+    if (tok().isWord("FAUTO")) {  // the feed of the last TOOL CALL, taken now (L570)
+      f_.pp.fauto = true;
+      v = hglobal(kFauto, loc());
+      ++i_;
+    } else if (name == "Q208" && tok().isWord("FMAX")) {  // the retract at rapid
+      fmaxOut = true;
+      ++i_;
+      continue;
+    } else if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FU") ||
+               tok().isWord("FZ")) {
+      return fail(tok(), fmt::format("{}={} is not simulated yet", name, tok().kind == Tok::String ? "\"…\"" : tok().text),
+                  "unsupported-code");
+    } else if (!(v = signedValue())) {
+      return false;
+    }
+    std::string var = slVar(number, name);
+    f_.pp.slVars.insert(var);
+    out().push_back(assignOp(Expr::var(ir::VarSpace::Global, var, nullptr, bl), std::move(v), bl));
+  }
+  Op note(OpKind::Comment, bl);
+  note.set("text", Expr::string(fmt::format("CYCL DEF {} {}", number, row.name)));
+  out().push_back(std::move(note));
+  f_.cycleLoc = bl;
+  f_.slGiven[number] = std::move(given);
+  f_.slFmaxOut[number] = fmaxOut;
+  if (number != 20) {  // a machining cycle: CYCL CALL runs it
+    f_.cycle = number;
+    f_.cycleRuns = false;
+    f_.cycleSurface = false;
+    f_.cycleProgram.clear();
+    f_.m89 = false;
+  }
+  return true;
+}
+
+// CYCL CALL of an SL machining cycle: the sub-contours, then the consumer with the values of 20
+// and of the cycle.
+bool BlockParser::slCall(const std::string &how) {
+  SourceLoc bl = loc(t_[0]);
+  const int number = f_.cycle;
+  if (!how.empty())
+    return fail(t_[0], fmt::format("cycle {} by CYCL CALL{} is not simulated yet", number, how), "unsupported-code");
+  if (number == 24 || number == 25)
+    return fail(t_[0], fmt::format("cycle {} ({}) is not simulated yet (CYCL CALL)", number, slRow(number)->name), "unsupported-code");
+  if (f_.slLabels.empty())
+    return fail(t_[0], fmt::format("cycle {} needs cycle 14 (CONTOUR) with the contour's labels before it", number), "cycle-invalid");
+  if (!f_.slGiven.count(20))
+    return fail(t_[0], fmt::format("cycle {} needs cycle 20 (CONTOUR DATA) before it (L9181)", number), "cycle-invalid");
+  const std::set<std::string> &data = f_.slGiven[20], &own = f_.slGiven[number];
+  auto value = [&](int cyc, const char *q) -> ExprPtr {
+    const std::set<std::string> &g = cyc == 20 ? data : own;
+    return g.count(q) ? Expr::var(ir::VarSpace::Global, slVar(cyc, q), nullptr, bl) : nullptr;
+  };
+  // What the cycle asks for beyond the core's consumers: refused where the values say so (when
+  // the program runs if they are not literal numbers).
+  struct Refusal {
+    int cycle;
+    const char *q;
+    double allowed;
+    const char *why;
+  };
+  static const Refusal kRefused[] = {
+      {22, "Q18", 0, "fine roughing with a coarse roughing tool (Q18) is not simulated yet"},
+      {22, "Q19", 0, "plunging along the tool table's ANGLE (Q19 not 0) is not simulated: the tool data has no ANGLE"},
+      {22, "Q401", 100, "a feed factor Q401 below 100 % for full-width cuts is not simulated"},
+  };
+  for (const Refusal &r : kRefused) {
+    if (r.cycle != number) continue;
+    ExprPtr v = value(number, r.q);
+    if (!v) continue;
+    Op check(OpKind::If, bl);
+    check.set("cond", Expr::binary(ir::OpCode::Ne, std::move(v), Expr::number(r.allowed, ir::Type::Real), bl));
+    check.regions.emplace_back();
+    Op stop(OpKind::Message, bl);
+    stop.set("text", Expr::string(fmt::format("cycle {}: {}", number, r.why), bl));
+    stop.set("kind", Expr::symbol("abort"));
+    check.regions[0].push_back(std::move(stop));
+    out().push_back(std::move(check));
+  }
+  PathWords w;  // CYCL CALL M3: the M functions around the call
+  if (!words(w, kM, "CYCL CALL") || !emitBefore(w)) return false;
+  Op reset(OpKind::Contour, bl);
+  reset.set("action", Expr::symbol("data", bl));
+  reset.set("use", Expr::symbol("subcontour", bl));
+  out().push_back(std::move(reset));
+  for (auto &[label, at] : f_.slLabels) {
+    // Located at the label in 14.1: an error of the sub-contour (open, crossing, no RL/RR) names it.
+    Op begin(OpKind::Contour, at);
+    begin.set("action", Expr::symbol("begin", bl));
+    begin.set("use", Expr::symbol("subcontour", bl));
+    out().push_back(std::move(begin));
+    Op call(OpKind::CallSection, at);
+    call.set("from", Expr::string(label));
+    f_.calls.push_back({out().size(), label, false, at});
+    out().push_back(std::move(call));
+    Op end(OpKind::Contour, at);
+    end.set("action", Expr::symbol("end", bl));
+    end.set("use", Expr::symbol("subcontour", bl));
+    out().push_back(std::move(end));
+  }
+  Op run(OpKind::Contour, bl);
+  run.set("action", Expr::symbol("run", bl));
+  run.set("use", Expr::symbol(slUse(number), bl));
+  auto key = [&](const char *k, ExprPtr v) {
+    if (v) run.set(k, std::move(v));
+  };
+  auto abs = [&](ExprPtr v) -> ExprPtr {
+    if (!v) return nullptr;
+    std::vector<ExprPtr> args;
+    args.push_back(std::move(v));
+    return Expr::call("ABS", std::move(args), bl);
+  };
+  // Q1 is signed (its sign the direction, L9183): the core's depth runs down into the material.
+  if (ExprPtr q1 = value(20, "Q1")) key("depth", Expr::unary(ir::OpCode::Neg, std::move(q1), bl));
+  key("overlap", value(20, "Q2"));
+  key("side_allowance", value(20, "Q3"));
+  key("floor_allowance", value(20, "Q4"));
+  key("surface", value(20, "Q5"));
+  key("clearance", value(20, "Q6"));
+  key("height", value(20, "Q7"));
+  key("direction", value(20, "Q9"));
+  if (number != 23) key("corner_radius", value(20, "Q8"));  // 21 drills where 22 plunges
+  if (number != 23) key("infeed", abs(value(number, "Q10")));
+  key("plunge_feed", value(number, "Q11"));
+  if (number != 21) key("feed", value(number, "Q12"));
+  if (number != 21 && !f_.slFmaxOut[number]) key("retract_feed", value(number, "Q208"));
+  if (number == 21) key("T", value(21, "Q13"));
+  out().push_back(std::move(run));
+  return emitAfter(w);
+}
+
+}  // namespace ncc::hei

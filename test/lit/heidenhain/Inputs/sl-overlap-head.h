@@ -1,0 +1,26 @@
+; The main program for the manual's overlapping-contour subprograms (seed002a fragments f37a-c,
+; L9022-L9173): sl-overlap.test appends one fragment's LBL 1 and LBL 2 and END PGM.
+0 BEGIN PGM OVERLAP MM
+1 TOOL CALL 1 Z S2500
+2 L Z+250 R0 FMAX
+3 CYCL DEF 14.0 KONTUR
+4 CYCL DEF 14.1 METKA KONTURA 1/2
+5 CYCL DEF 20 DANNYJE KONTURA
+  Q1=-5 ;DEPTH
+  Q2=1 ;OVERLAP
+  Q3=+0 ;SIDE
+  Q4=+0 ;FLOOR
+  Q5=+0 ;SURFACE
+  Q6=2 ;SETUP
+  Q7=+50 ;HEIGHT
+  Q8=0 ;ROUND
+  Q9=+1 ;DIR
+6 CYCL DEF 22 ROUGH
+  Q10=5 ;INFEED
+  Q11=100 ;PLUNGE
+  Q12=350 ;FEED
+  Q18=0 ;COARSE
+  Q19=0 ;RECIP
+  Q208=0 ;OUT
+7 CYCL CALL M3
+8 L Z+250 R0 FMAX M2
