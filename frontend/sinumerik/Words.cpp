@@ -231,6 +231,8 @@ bool BlockParser::callStatement(bool modal) {
   const Token &t = tok();
   std::string name, type;
   if (viaCall && t.isName("BLOCK")) return sectionCall(nullptr, l);  // CALL BLOCK A TO B: this program's section
+  if (viaCall && t.kind == Tok::Name && f_.vars.count(t.text) && peek().is("("))  // CALL PROGNAME(1)
+    return fail(peek(), "an indirect CALL takes no arguments and stands alone in its block (L8554)");
   if (viaCall) {
     ExprPtr e = expr(0);
     if (!e) return false;
