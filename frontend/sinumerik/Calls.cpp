@@ -37,10 +37,12 @@ bool BlockParser::computedCall(ExprPtr e, const Token &at, SourceLoc l) {
 }
 
 // CALL [P] BLOCK A TO B (SIN-CAL-06, L8600-L8665): the section from label A through B's block, of
-// this program (a section call here) or of program P (a call of P's section function).
+// this program (a section call here) or of program P (a call of P's section function). Labels in
+// STRING variables (example 87) go to P's section function for labels named at run time.
 bool BlockParser::sectionCall(ExprPtr program, SourceLoc l) {
   ++i_;  // BLOCK
   std::string labels[2];
+  ExprPtr named[2];  // a label held in a STRING variable
   for (int k = 0; k < 2; ++k) {
     if (k == 1) {
       if (!tok().isName("TO")) return fail(tok(), "expected TO and the end label (CALL … BLOCK start TO end)");
@@ -48,13 +50,30 @@ bool BlockParser::sectionCall(ExprPtr program, SourceLoc l) {
     }
     const Token &t = tok();
     if (t.kind != Tok::Name) return fail(t, k ? "expected the end label after TO" : "expected the start label after BLOCK");
-    if (f_.vars.count(t.text))
-      return fail(t, "a section label held in a STRING variable is not simulated (write the label's name)",
-                  "unsupported-code");
-    labels[k] = t.text;
     ++i_;
+    if (f_.vars.count(t.text)) {
+      named[k] = variable(t);
+      if (!named[k]) return false;
+      if (!stringy(*named[k])) return fail(t, fmt::format("'{}' is no STRING: a section label is a name or a STRING", t.text));
+    }
+    labels[k] = t.text;
   }
   if (!atEnd()) return fail(tok(), "unexpected text after CALL … BLOCK … TO …");
+  if (program && program->kind != ir::ExprKind::String)
+    return failAt(l, "CALL … BLOCK of a program named at run time is not simulated", "unsupported-code");
+  std::string type, name = program ? calledProgram(program->str, type) : "";
+  if (named[0] || named[1]) {
+    if (!program)
+      return failAt(l, "CALL BLOCK with a label in a STRING variable is simulated for a named program only "
+                       "(CALL \"P\" BLOCK …)", "unsupported-code");
+    const char *keys[] = {kSectionFrom, kSectionTo};
+    for (int k = 0; k < 2; ++k) {
+      ExprPtr v = named[k] ? callOf("TOUPPER", l, callOf("TOSTR", l, std::move(named[k]))) : Expr::string(labels[k], l);
+      post_.push_back(assignOp(Expr::var(ir::VarSpace::Global, keys[k], nullptr, l), std::move(v), l));
+    }
+    f_.pp.namedSections = true;
+    return plainCall(f_.pp.sectionFunction(name, type, "", "", l), l, false);
+  }
   if (!program) {
     Op s(OpKind::CallSection, l);
     s.set("from", Expr::string(labels[0]));
@@ -62,10 +81,82 @@ bool BlockParser::sectionCall(ExprPtr program, SourceLoc l) {
     post_.push_back(std::move(s));
     return true;
   }
-  if (program->kind != ir::ExprKind::String)
-    return failAt(l, "CALL … BLOCK of a program named at run time is not simulated", "unsupported-code");
-  std::string type, name = calledProgram(program->str, type);
   return plainCall(f_.pp.sectionFunction(name, type, labels[0], labels[1], l), l, false);
+}
+
+// The section function of labels named at run time: it keeps the end label the caller left in
+// %%_SIN_SEC_TO, stops when it is none of its labels, jumps to %%_SIN_SEC_FROM, and returns after
+// the block of each label when that label is the end (a block ends before the next block or label
+// op of its region, as a section call's, docs/IR.md §5.3).
+void namedSectionFunction(ir::Function &fn, SourceLoc l) {
+  std::vector<std::string> labels;
+  auto place = [&](auto &self, ir::Region &r) -> void {
+    std::string open;  // the label whose block is being read
+    bool skipBlock = false;
+    auto endCheck = [&](size_t at) {
+      Op iff(OpKind::If, l);
+      iff.set("cond", Expr::binary(ir::OpCode::Eq, Expr::var(ir::VarSpace::Local, kSectionEnd, nullptr, l),
+                                   Expr::string(open, l), l));
+      iff.regions.emplace_back();
+      iff.regions[0].push_back(Op(OpKind::Return, l));
+      r.insert(r.begin() + (long)at, std::move(iff));
+      open.clear();
+    };
+    for (size_t i = 0; i < r.size(); ++i) {
+      for (auto &sub : r[i].regions) self(self, sub);
+      bool label = r[i].kind == OpKind::Label && r[i].get("name")->str.find('@') == std::string::npos;
+      if (r[i].kind == OpKind::Block && skipBlock) {
+        skipBlock = false;
+        continue;
+      }
+      if (!open.empty() && (label || r[i].kind == OpKind::Block)) endCheck(i++);
+      if (label) {
+        open = r[i].get("name")->str;
+        labels.push_back(open);
+        skipBlock = true;
+      }
+    }
+    if (!open.empty()) endCheck(r.size());
+  };
+  place(place, fn.body);
+  std::vector<Op> pro;
+  Op d(OpKind::Declare, l);
+  d.set("var", Expr::var(ir::VarSpace::Local, kSectionEnd, nullptr, l));
+  d.set("type", Expr::symbol("string"));
+  d.set("len", Expr::number(200, ir::Type::Int));
+  pro.push_back(std::move(d));
+  pro.push_back(assignOp(Expr::var(ir::VarSpace::Local, kSectionEnd, nullptr, l),
+                         Expr::var(ir::VarSpace::Global, kSectionTo, nullptr, l), l));
+  ExprPtr missing = Expr::boolean(true, l);
+  for (auto &name : labels)
+    missing = Expr::binary(ir::OpCode::And, std::move(missing),
+                           Expr::binary(ir::OpCode::Ne, Expr::var(ir::VarSpace::Local, kSectionEnd, nullptr, l),
+                                        Expr::string(name, l), l), l);
+  Op stop(OpKind::If, l);
+  stop.set("cond", std::move(missing));
+  stop.regions.emplace_back();
+  Op m(OpKind::Message, l);
+  m.set("kind", Expr::symbol("abort"));
+  m.set("text", Expr::binary(ir::OpCode::Concat, Expr::string("CALL BLOCK: end label '", l),
+                             Expr::binary(ir::OpCode::Concat, Expr::var(ir::VarSpace::Local, kSectionEnd, nullptr, l),
+                                          Expr::string("' is not in the program", l), l), l));
+  stop.regions[0].push_back(std::move(m));
+  pro.push_back(std::move(stop));
+  Op go(OpKind::Goto, l);
+  go.set("label", Expr::var(ir::VarSpace::Global, kSectionFrom, nullptr, l));
+  go.set("dir", Expr::symbol("any"));
+  pro.push_back(std::move(go));
+  fn.body.insert(fn.body.begin(), std::make_move_iterator(pro.begin()), std::make_move_iterator(pro.end()));
+}
+
+void declareNamedSections(ir::Region &mainBody) {
+  for (const char *n : {kSectionFrom, kSectionTo}) {
+    Op d(ir::OpKind::Declare, {});
+    d.set("var", Expr::var(ir::VarSpace::Global, n, nullptr, {}));
+    d.set("type", Expr::symbol("string"));
+    d.set("len", Expr::number(200, ir::Type::Int));
+    mainBody.insert(mainBody.begin(), std::move(d));
+  }
 }
 
 // A call of function `fn` without arguments (null: not found, reported), with the jump to a

@@ -89,6 +89,7 @@ public:
     if (pp_.polar && !m.functions.empty()) declarePolarState(m.functions[0].body);
     if (pp_.globalR && !m.functions.empty()) declareGlobalR(m.functions[0].body);
     if (pp_.retTargets && !m.functions.empty()) declareReturnTargets(m.functions[0].body);
+    if (pp_.namedSections && !m.functions.empty()) declareNamedSections(m.functions[0].body);
     for (auto &f : pp_.done) {
       f.dialect = ir::Dialect::Sinumerik;
       m.functions.push_back(std::move(f));

@@ -92,6 +92,7 @@ public:
   bool polar = false;       // some file uses polar coordinates: the main program declares their state
   bool globalR = false;      // some file uses RG[n]: the main program declares them
   bool retTargets = false;   // some file has RET(target): the main program declares its globals
+  bool namedSections = false;  // some file has CALL "P" BLOCK with labels in STRING variables
   bool modalCalls = false;
   // GUD definition files (Gud.cpp): their variables, seen by every file, and the declarations
   // the main program starts with.
@@ -275,6 +276,11 @@ void declareGlobalR(ir::Region &mainBody);
 // RETB), and the caller's copy it jumps to (kRetJump).
 constexpr const char *kRetTarget = "_SIN_RET", *kRetJump = "_SIN_RET_JUMP", *kRetBackward = "_SIN_RETB";
 void declareReturnTargets(ir::Region &mainBody);
+// CALL "P" BLOCK with labels in STRING variables: the caller's start and end labels (globals) and
+// the section function's copy of the end (a local).
+constexpr const char *kSectionFrom = "_SIN_SEC_FROM", *kSectionTo = "_SIN_SEC_TO", *kSectionEnd = "_SIN_SEC_END";
+void namedSectionFunction(ir::Function &fn, SourceLoc l);  // adds the checks to P's function
+void declareNamedSections(ir::Region &mainBody);
 // `assign target= value=` at l.
 ir::Op assignOp(ir::ExprPtr target, ir::ExprPtr value, SourceLoc l);
 // A builtin call with the given arguments.

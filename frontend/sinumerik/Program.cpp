@@ -301,6 +301,7 @@ void ProgramParser::missingProgram(const std::string &name, SourceLoc loc) {
 const std::string *ProgramParser::sectionFunction(const std::string &name, const std::string &type,
                                                   const std::string &from, const std::string &to, SourceLoc loc) {
   std::string key = fmt::format("{} BLOCK {} TO {}", type.empty() ? name : "_N_" + name + "_" + type, from, to);
+  if (from.empty()) key = fmt::format("{} BLOCK", type.empty() ? name : "_N_" + name + "_" + type);  // labels named at run time
   if (auto it = sections.find(key); it != sections.end()) return &*it;
   uint32_t fid = programFile(name, type);
   if (!fid) {
@@ -308,12 +309,15 @@ const std::string *ProgramParser::sectionFunction(const std::string &name, const
     return nullptr;
   }
   FunctionParser fp(*this, fid, key, false);
-  ir::Op s(ir::OpKind::CallSection, loc);
-  s.set("from", ir::Expr::string(from));
-  s.set("to", ir::Expr::string(to));
-  fp.fn.body.push_back(std::move(s));
-  fp.fn.body.push_back(ir::Op(ir::OpKind::Return, loc));
+  if (!from.empty()) {
+    ir::Op s(ir::OpKind::CallSection, loc);
+    s.set("from", ir::Expr::string(from));
+    s.set("to", ir::Expr::string(to));
+    fp.fn.body.push_back(std::move(s));
+    fp.fn.body.push_back(ir::Op(ir::OpKind::Return, loc));
+  }
   bool good = fp.run();
+  if (from.empty()) namedSectionFunction(fp.fn, loc);
   fp.fn.dialect = ir::Dialect::Unknown;
   done.push_back(std::move(fp.fn));
   if (!good) return nullptr;
@@ -402,6 +406,7 @@ bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions 
   if (pp.polar) declarePolarState(main.fn.body);
   if (pp.globalR) declareGlobalR(main.fn.body);
   if (pp.retTargets) declareReturnTargets(main.fn.body);
+  if (pp.namedSections) declareNamedSections(main.fn.body);
   out.functions.clear();
   out.functions.push_back(std::move(main.fn));
   for (auto &f : pp.done) out.functions.push_back(std::move(f));
