@@ -72,7 +72,7 @@ bool BlockParser::sectionCall(ExprPtr program, SourceLoc l) {
       post_.push_back(assignOp(Expr::var(ir::VarSpace::Global, keys[k], nullptr, l), std::move(v), l));
     }
     f_.pp.namedSections = true;
-    return plainCall(f_.pp.sectionFunction(name, type, "", "", l), l, false);
+    return sectionFunctionCall(name, type, "", "", l);
   }
   if (!program) {
     Op s(OpKind::CallSection, l);
@@ -81,7 +81,13 @@ bool BlockParser::sectionCall(ExprPtr program, SourceLoc l) {
     post_.push_back(std::move(s));
     return true;
   }
-  return plainCall(f_.pp.sectionFunction(name, type, labels[0], labels[1], l), l, false);
+  return sectionFunctionCall(name, type, labels[0], labels[1], l);
+}
+
+bool BlockParser::sectionFunctionCall(const std::string &name, const std::string &type, const std::string &from,
+                                      const std::string &to, SourceLoc l) {
+  const std::string *fn = f_.pp.sectionFunction(name, type, from, to, l);
+  return plainCall(fn, l, fn && f_.pp.sections[*fn]);
 }
 
 // The section function of labels named at run time: it keeps the end label the caller left in
@@ -147,6 +153,7 @@ void namedSectionFunction(ir::Function &fn, SourceLoc l) {
   go.set("dir", Expr::symbol("any"));
   pro.push_back(std::move(go));
   fn.body.insert(fn.body.begin(), std::make_move_iterator(pro.begin()), std::make_move_iterator(pro.end()));
+  // (the "@text" label after the prologue: sectionFunction)
 }
 
 void declareNamedSections(ir::Region &mainBody) {

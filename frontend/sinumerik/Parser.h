@@ -120,7 +120,7 @@ public:
   // (CALL "P" BLOCK A TO B): its name, null with an error reported.
   const std::string *sectionFunction(const std::string &name, const std::string &type, const std::string &from,
                                      const std::string &to, SourceLoc loc);
-  std::set<std::string> sections;
+  std::map<std::string, bool> sections;  // section functions, true: with a RET(target)
   std::string callPath;  // the folder of the last CALLPATH (empty: none), searched after searchDirs
   // The folder a Sinumerik path names (`/_N_WKS_DIR/_N_X_WPD`, `//NC:/WKS.DIR/X.WPD`) under the
   // first search folder that has it; "" when none does.
@@ -208,6 +208,8 @@ private:
   bool isocall();
   bool namedCall(const std::string &written, SourceLoc l);
   bool plainCall(const std::string *fn, SourceLoc l, bool resume);
+  bool sectionFunctionCall(const std::string &name, const std::string &type, const std::string &from,
+                           const std::string &to, SourceLoc l);  // a call of P's section function
   ir::ExprPtr stringArgument(const char *kw, bool empty);
   bool retStatement(bool backward);  // RET, RET(…), RETB(…)
   void resumeAfterCall(SourceLoc l);

@@ -302,7 +302,7 @@ const std::string *ProgramParser::sectionFunction(const std::string &name, const
                                                   const std::string &from, const std::string &to, SourceLoc loc) {
   std::string key = fmt::format("{} BLOCK {} TO {}", type.empty() ? name : "_N_" + name + "_" + type, from, to);
   if (from.empty()) key = fmt::format("{} BLOCK", type.empty() ? name : "_N_" + name + "_" + type);  // labels named at run time
-  if (auto it = sections.find(key); it != sections.end()) return &*it;
+  if (auto it = sections.find(key); it != sections.end()) return &it->first;
   uint32_t fid = programFile(name, type);
   if (!fid) {
     missingProgram(name, loc);
@@ -316,12 +316,15 @@ const std::string *ProgramParser::sectionFunction(const std::string &name, const
     fp.fn.body.push_back(std::move(s));
     fp.fn.body.push_back(ir::Op(ir::OpKind::Return, loc));
   }
+  ir::Op text(ir::OpKind::Label, loc);  // P's text is reached through the section's labels (not dead code)
+  text.set("name", ir::Expr::string("@text"));
+  fp.fn.body.push_back(std::move(text));
   bool good = fp.run();
   if (from.empty()) namedSectionFunction(fp.fn, loc);
   fp.fn.dialect = ir::Dialect::Unknown;
   done.push_back(std::move(fp.fn));
   if (!good) return nullptr;
-  return &*sections.insert(key).first;
+  return &sections.emplace(key, fp.retTarget).first->first;
 }
 
 const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle,
