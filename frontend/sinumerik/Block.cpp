@@ -250,7 +250,7 @@ bool BlockParser::keyword(const std::string &kw) {
   if (machineConstruct(kw)) return true;  // MachineOnly.cpp
   if (programCall(kw)) return true;       // Calls.cpp
   // Language constructs ncc does not have yet: refused by name, never silently skipped.
-  static const char *kNotYet[] = {"EXECSTRING", "EXECTAB", "REDEF", "GOTOS", "TRAORI", "TRANSMIT", "TRACYL", "G291"};
+  static const char *kNotYet[] = {"EXECTAB", "REDEF", "GOTOS", "TRAORI", "TRANSMIT", "TRACYL", "G291"};
   for (const char *c : kNotYet)
     if (kw == c)
       return fail(t, fmt::format("'{}' is not simulated (not yet supported construct)", kw), "unsupported-code");
@@ -420,6 +420,7 @@ bool BlockParser::repeatStatement(bool single) {
     // `REPEAT A ENDLABEL` names the ENDLABEL mark itself: A's area up to its ENDLABEL (L4697-L4711).
     bool known = false;
     for (auto &lb : f_.labels) known = known || lb.first == to;
+    if (!known && to != "ENDLABEL") f_.laterLabels.push_back({to, loc(t_[toAt])});  // it must exist after it
     if (!known) to.clear();
   }
   if (to.empty()) {

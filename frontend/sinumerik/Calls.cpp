@@ -1,7 +1,8 @@
 // The calls of a program named in other ways than by its name in a block of its own: CALL with a
 // STRING expression (SIN-CAL-05), a section CALL … BLOCK … TO … (SIN-CAL-06), ISOCALL (SIN-CAL-07),
-// PCALL (SIN-CAL-08), CALLPATH (SIN-CAL-09) and EXTCALL (SIN-CAL-10). docs/SINUMERIK.md "Program
-// memory" says how they map onto the search path.
+// PCALL (SIN-CAL-08), CALLPATH (SIN-CAL-09) and EXTCALL (SIN-CAL-10), the returns RET/RETB with a
+// target (SIN-SUB-13, -14) and EXECSTRING of a constant (SIN-IND-05). docs/SINUMERIK.md "Program
+// memory" says how calls map onto the search path.
 #include "frontend/SubprogramFiles.h"
 #include "frontend/sinumerik/Parser.h"
 #include "ir/FileCommands.h"
@@ -363,12 +364,50 @@ void declareReturnTargets(ir::Region &mainBody) {
   mainBody.insert(mainBody.begin(), std::make_move_iterator(decls.begin()), std::make_move_iterator(decls.end()));
 }
 
+// EXECSTRING("M7 M4711") (SIN-IND-05, L3018-L3069): the string is a block of its own, read by the
+// block parser where the EXECSTRING stands; its tokens keep their columns inside the string, so an
+// error in it points into the string's text. Only a constant string: a string computed when the
+// program runs would need the engines to parse it then (docs/SINUMERIK.md).
+bool BlockParser::execString() {
+  const Token &kw = tok();
+  SourceLoc l = loc();
+  if (!words_.empty() || !gcodes_.empty() || !mcodes_.empty() || !pre_.empty() || !post_.empty())
+    return fail(kw, "EXECSTRING stands alone in its block (L3024)");
+  ++i_;
+  if (!expect("(")) return false;
+  uint32_t quote = tok().col;
+  bool literal = tok().kind == Tok::String && peek().is(")");
+  ExprPtr e = expr(0);
+  if (!e || !expect(")")) return false;
+  if (!atEnd()) return fail(tok(), "EXECSTRING stands alone in its block (L3024)");
+  if (!literal)
+    return failAt(l, "EXECSTRING of a string computed when the program runs is not simulated (ncc compiles the "
+                     "program before it runs; write the string as a constant or the block itself)", "unsupported-code");
+  std::vector<Token> toks;
+  std::string err;
+  uint32_t errCol = 0;
+  if (!lexLine(e->str, toks, err, errCol))
+    return failAt({f_.file, line_, quote + errCol}, fmt::format("EXECSTRING \"{}\": {}", e->str, err), "syntax");
+  for (auto &t : toks) t.col += quote;
+  // Not allowed in the string (L3038-L3043): control structures, PROC, DEF (and EXECSTRING itself).
+  static const char *kRefused[] = {"IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "LOOP", "ENDLOOP",
+                                   "REPEAT", "REPEATB", "UNTIL", "CASE", "PROC", "DEF", "EXECSTRING", "DEFINE"};
+  for (auto &t : toks)
+    for (const char *r : kRefused)
+      if (t.isName(r)) return failAt(loc(t), fmt::format("EXECSTRING \"{}\": {} cannot be executed from a string (L3040)", e->str, r), "syntax");
+  if (toks.size() < 2) return true;  // an empty string: nothing to run
+  BlockParser inner(f_, toks, line_);
+  if (!inner.parse()) failed_ = true;
+  return !failed_;
+}
+
 bool BlockParser::programCall(const std::string &kw) {
   if (kw == "PCALL") pcall();
   else if (kw == "EXTCALL") extcall();
   else if (kw == "CALLPATH") callpath();
   else if (kw == "ISOCALL") isocall();
   else if (kw == "RET" || kw == "RETB") retStatement(kw == "RETB");
+  else if (kw == "EXECSTRING") execString();
   else return false;
   return true;
 }

@@ -69,6 +69,7 @@ public:
   bool apKnown = false;                  // static: AP= programmed since the last pole definition
   bool definitions = false;  // a GUD definition file (DEF NCK|CHAN only)
   bool retTarget = false;    // a RET(target) / RETB(target) was read
+  std::vector<std::pair<std::string, SourceLoc>> laterLabels;  // REPEAT A B with B after the REPEAT
   bool sawStatement = false;                // a statement before: PROC must be first
   std::map<std::string, std::vector<Token>> macros;  // DEFINE NAME AS … of this program
   // DEFINE NAME AS tokens: stores the macro (true); other lines: replaces macro names by their
@@ -212,6 +213,7 @@ private:
                            const std::string &to, SourceLoc l);  // a call of P's section function
   ir::ExprPtr stringArgument(const char *kw, bool empty);
   bool retStatement(bool backward);  // RET, RET(…), RETB(…)
+  bool execString();                 // EXECSTRING("block")
   void resumeAfterCall(SourceLoc l);
   bool argumentList(const std::string &name, const std::vector<std::string> &params, const char *prefix, ir::Op &c);
   // A standard cycle from the library (Cycles.cpp): `NAME(args)` runs it here (a position

@@ -187,6 +187,8 @@ bool FunctionParser::run() {
   collectTargets(fn.body, targets, blocks);
   dropMissingGotoc(fn.body, targets, blocks);
   if (!sectionLabelsExist(fn.body, targets)) ok = false;
+  for (auto &[name, at] : laterLabels)
+    if (!targets.count(name)) ok = pp.error(at, fmt::format("label '{}' is not in this program", name), "missing-block");
   sectionEndLabels(fn.body);
   for (auto &c : ctl) {
     static const char *kOpen[] = {"IF", "IF … ELSE", "WHILE", "FOR", "LOOP", "REPEAT"};
