@@ -237,6 +237,27 @@ NCC_STRFN(strOrd) {
   out = s.empty() ? 0.0 : (double)(unsigned char)s[0];
   return true;
 }
+std::string sinumerikProgramName(std::string_view written, std::string &type) {
+  size_t cut = written.find_last_of("/:");
+  std::string name(written.substr(cut == std::string_view::npos ? 0 : cut + 1));
+  for (auto &c : name) c = (char)std::toupper((unsigned char)c);
+  type.clear();
+  std::string t = name.size() > 4 ? name.substr(name.size() - 4) : "";
+  if (name.size() > 7 && name.compare(0, 3, "_N_") == 0 && (t == "_MPF" || t == "_SPF")) {
+    type = t.substr(1);
+    name = name.substr(3, name.size() - 7);
+  } else if (name.size() > 4 && (t == ".MPF" || t == ".SPF")) {  // a file name (EXTCALL, L8868)
+    type = t.substr(1);
+    name.resize(name.size() - 4);
+  }
+  return name;
+}
+NCC_STRFN(strSinProgname) {
+  StrArgs a{pool, args, n, error, "SIN_PROGNAME"};
+  std::string_view s;
+  std::string type;
+  return a.str(0, s) && a.ret(sinumerikProgramName(s, type), out);
+}
 #undef NCC_STRFN
 
 static const BuiltinInfo kBuiltins[] = {
@@ -277,6 +298,7 @@ static const BuiltinInfo kBuiltins[] = {
     {"AXNAME", 1, nullptr, nullptr, strAxname, "s", 's'},
     {"CHR", 1, nullptr, nullptr, strChr, "n", 's'},
     {"ORD", 1, nullptr, nullptr, strOrd, "s", 'n'},
+    {"SIN_PROGNAME", 1, nullptr, nullptr, strSinProgname, "s", 's'},
     {"SPRINT", 12, nullptr, nullptr, strSprint, "saaaaaaaaaaa", 's', 1},
     // File builtins (ir/FileCommands.h): the Sinumerik command name first.
     {"FILE_WRITE", 3, nullptr, nullptr, fileWrite, "sss", 'n'},

@@ -44,6 +44,11 @@ std::string builtinDomainError(const BuiltinInfo &b);
 std::string builtinArity(const BuiltinInfo &b);
 // EXISTS[var]: 1 when the variable has a value (a named variable that was assigned; numbered,
 // R, Q and known system variables always), else 0. The engines evaluate it themselves.
+// The program a Sinumerik call names (L6885-L6904, docs/SINUMERIK.md "Program memory"):
+// `/_N_WKS_DIR/_N_P_WPD/_N_TEIL1_SPF`, `USB:WKS.DIR/TEIL1.SPF`, `_N_TEIL1_SPF` and `teil1` are
+// TEIL1 (upper case; folders and device are left to the search path), with its type "MPF" or
+// "SPF" in `type` when the name gives it, else "". The builtin SIN_PROGNAME(s) is this name.
+std::string sinumerikProgramName(std::string_view written, std::string &type);
 inline bool isExistsCall(std::string_view name, size_t args) { return args == 1 && name == "EXISTS"; }
 
 }  // namespace ncc

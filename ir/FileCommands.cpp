@@ -15,6 +15,15 @@ namespace ncc {
 
 namespace fs = std::filesystem;
 
+std::string sinumerikPathComponent(std::string_view c, bool last) {
+  if (c.size() > 3 && c.substr(0, 3) == "_N_") {
+    size_t u = c.rfind('_');
+    if (u > 2) return fmt::format("{}.{}", c.substr(3, u - 3), c.substr(u + 1));
+  }
+  if (last && c.find('.') == std::string_view::npos) return fmt::format("{}.MPF", c);
+  return std::string(c);
+}
+
 namespace {
 std::string &sandbox() {
   static std::string dir;
@@ -29,15 +38,7 @@ bool &lintMode() {
 enum FileError { kOk = 0, kPathNotFound = 2, kFileNotFound = 3, kWrongType = 4, kLineMissing = 21,
                  kResultTooShort = 22, kRangeTooLarge = 23 };
 
-// `_N_NAME_EXT` -> NAME.EXT; a last component without a type is an MPF (L6393: "PROT" is _N_PROT_MPF).
-std::string component(std::string_view c, bool last) {
-  if (c.size() > 3 && c.substr(0, 3) == "_N_") {
-    size_t u = c.rfind('_');
-    if (u > 2) return fmt::format("{}.{}", c.substr(3, u - 3), c.substr(u + 1));
-  }
-  if (last && c.find('.') == std::string_view::npos) return fmt::format("{}.MPF", c);
-  return std::string(c);
-}
+std::string component(std::string_view c, bool last) { return sinumerikPathComponent(c, last); }
 
 // The sandbox path of a file name; false with `error` without a sandbox or for a name that
 // leaves it (a `..` component, a device `NC:`, a link pointing out).

@@ -5,10 +5,15 @@
 // says (`PROT` → PROT.MPF, `/_N_WKS_DIR/_N_P_WPD/_N_PROT_MPF` → WKS.DIR/P.WPD/PROT.MPF).
 #pragma once
 #include <string>
+#include <string_view>
 
 namespace ncc {
 
 class ValuePool;
+
+// One component of a Sinumerik path as a file or folder name: `_N_NAME_EXT` -> NAME.EXT (`_N_WKS_DIR`
+// is WKS.DIR); `last`: a file name without a type is an MPF (L6393: "PROT" is _N_PROT_MPF).
+std::string sinumerikPathComponent(std::string_view c, bool last);
 
 // The sandbox folder for the run (the process): empty = none.
 void setFileSandbox(std::string dir);

@@ -54,7 +54,30 @@ public:
   }
 
   bool leave(SourceLoc) override { return true; }  // ISO blocks open no structure here
-  bool program(uint32_t, const std::string &) override { return false; }  // never asked: calls are refused
+  // A whole ISO-dialect program (Sinumerik ISOCALL, SIN-CAL-07) as function `name`: its blocks
+  // as the ISO-mode blocks are (no calls, no control flow), M99 (or M17) returns.
+  bool program(uint32_t file, const std::string &name) override {
+    ir::Function fn;
+    fn.name = name;
+    fn.loc = {file, 1, 1};
+    fn.dialect = ir::Dialect::ISO;
+    std::string_view text = diags_.sources().text(file);
+    bool good = true;
+    uint32_t lineNo = 0;
+    for (size_t pos = 0; pos <= text.size();) {
+      size_t nl = text.find('\n', pos);
+      if (nl == std::string_view::npos) nl = text.size();
+      if (!block(text.substr(pos, nl - pos), file, ++lineNo, fn.body)) good = false;
+      pos = nl + 1;
+    }
+    functions_.push_back(std::move(fn));
+    return good;
+  }
+  bool finish(ir::Module &m) override {
+    for (auto &f : functions_) m.functions.push_back(std::move(f));
+    functions_.clear();
+    return true;
+  }
   void follow(ModeValue m) override { lower_.followMode(m); }
 
 private:
@@ -63,6 +86,7 @@ private:
   BlockParser parser_;
   BlockLowerer lower_;
   ParsedBlock b_;
+  std::vector<ir::Function> functions_;
 };
 
 }  // namespace

@@ -82,7 +82,7 @@ bool BlockParser::statement() {
   if (keyword(t.text)) return !failed_;
   if (failed_) return false;
   // name = value: variables, R parameters, system variables, addresses with an expression.
-  if (t.text[0] == '$' || f_.vars.count(t.text) || (t.text == "R" && peek().is("[")) ||
+  if (t.text[0] == '$' || f_.vars.count(t.text) || ((t.text == "R" || t.text == "RG") && peek().is("[")) ||
       (t.text[0] == 'R' && t.digitsAt == 1 && !t.fraction && peek().is("=")))
     return assignment();
   return addressWord();
@@ -197,13 +197,6 @@ bool BlockParser::keyword(const std::string &kw) {
     ++i_;
     return true;
   }
-  if (kw == "RET" && peek().is("(") && !peek(2).is(")"))  // RET(target, …) jumps in the caller (SIN-SUB-13)
-    return fail(t, "RET(…) with a jump target is not simulated", "unsupported-code");
-  if (kw == "RET") {  // RET, RET(): back to the caller
-    post_.push_back(Op(OpKind::Return, l));
-    i_ += peek().is("(") ? 3 : 1;
-    return true;
-  }
   if (kw == "SETAL" && peek().is("(")) {
     // SETAL(n): a cycle alarm stops the program (its text is the alarm number).
     // SETAL(n, "text"): the text goes with the number.
@@ -255,10 +248,9 @@ bool BlockParser::keyword(const std::string &kw) {
   }
   if (fileCommand(kw)) return true;       // Files.cpp
   if (machineConstruct(kw)) return true;  // MachineOnly.cpp
+  if (programCall(kw)) return true;       // Calls.cpp
   // Language constructs ncc does not have yet: refused by name, never silently skipped.
-  static const char *kNotYet[] = {"EXECSTRING", "EXECTAB",  "REDEF",
-                                  "PCALL",   "ISOCALL", "CALLPATH", "EXTCALL",  "GOTOS",   "RETB",
-                                  "TRAORI",  "TRANSMIT", "TRACYL", "G291"};
+  static const char *kNotYet[] = {"EXECTAB", "REDEF", "GOTOS", "TRAORI", "TRANSMIT", "TRACYL", "G291"};
   for (const char *c : kNotYet)
     if (kw == c)
       return fail(t, fmt::format("'{}' is not simulated (not yet supported construct)", kw), "unsupported-code");
@@ -405,6 +397,7 @@ bool BlockParser::repeatStatement(bool single) {
   if (tok().kind != Tok::Name) return fail(tok(), "expected a label after REPEAT");
   std::string from = tok().text, to;
   ++i_;
+  size_t toAt = i_;
   if (tok().kind == Tok::Name && !(tok().text == "P" && peek().is("="))) {
     to = tok().text;
     ++i_;
@@ -420,6 +413,16 @@ bool BlockParser::repeatStatement(bool single) {
   }
   if (!atEnd()) return fail(tok(), "unexpected text after REPEAT");
   if (single) to = from;
+  bool fromBefore = false;  // A stands before the REPEAT (labels are known up to here)
+  for (auto &lb : f_.labels) fromBefore = fromBefore || lb.first == from;
+  if (!single && fromBefore && !to.empty()) {
+    // REPEAT A B with B not reached before the REPEAT: the area ends at the REPEAT (L4692-L4695).
+    // `REPEAT A ENDLABEL` names the ENDLABEL mark itself: A's area up to its ENDLABEL (L4697-L4711).
+    bool known = false;
+    for (auto &lb : f_.labels) known = known || lb.first == to;
+    if (!known && to != "ENDLABEL") f_.laterLabels.push_back({to, loc(t_[toAt])});  // it must exist after it
+    if (!known) to.clear();
+  }
   if (to.empty()) {
     // REPEAT A: from A up to the REPEAT, or to the first ENDLABEL after A (L4806-L4826).
     bool after = false;
@@ -430,6 +433,8 @@ bool BlockParser::repeatStatement(bool single) {
         break;
       }
     }
+  } else if (to == "ENDLABEL") {
+    return fail(t_[toAt], fmt::format("REPEAT {} ENDLABEL: label '{}' must stand before the REPEAT, with an ENDLABEL after it", from, from));
   }
   Op s(OpKind::CallSection, l);
   s.set("from", Expr::string(from));

@@ -132,6 +132,7 @@ bool BlockParser::def() {
     } else if (t.text == "DCM" || t.text == "DCI" || t.text == "DCU") continue;
     else if (!(type = findType(t.text))) return fail(t, fmt::format("unknown type '{}' in DEF", t.text));
   }
+  if (f_.definitions && !global) return fail(t_[i_ - 1], "a GUD definition file defines global data: DEF NCK|CHAN");
   if (std::string_view(type->name) == "STRING") {
     if (!expect("[")) return false;
     if (tok().kind != Tok::Number || !tok().isInt || tok().num < 1 || tok().num > 200)

@@ -359,6 +359,13 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   }
   if (t.text[0] == 'R' && t.digitsAt == 1 && !t.fraction)
     return Expr::var(ir::VarSpace::RParam, "R", Expr::number(t.num, ir::Type::Int, l), l);
+  if (t.text == "RG" && tok().is("[")) {  // RG[n]: a global R parameter (SIN-VAR-05), one array for the program
+    ++i_;
+    ExprPtr e = expr(0);
+    if (!e || !expect("]")) return nullptr;
+    f_.pp.globalR = true;
+    return Expr::var(ir::VarSpace::Global, kGlobalR, std::move(e), l);
+  }
   if (machineCtx_) return machineValue();
   // An axis name as a value (`AA = X`, `DEF AXIS AA = (X)`, L1356): its name, what an AXIS holds.
   if (const AddrInfo *a = findAddress(t.text); a && a->kind == Addr::Axis && t.digitsAt == t.text.size())

@@ -87,11 +87,15 @@ public:
 
   bool finish(ir::Module &m) override {
     if (pp_.polar && !m.functions.empty()) declarePolarState(m.functions[0].body);
+    if (pp_.globalR && !m.functions.empty()) declareGlobalR(m.functions[0].body);
+    if (pp_.retTargets && !m.functions.empty()) declareReturnTargets(m.functions[0].body);
+    if (pp_.namedSections && !m.functions.empty()) declareNamedSections(m.functions[0].body);
     for (auto &f : pp_.done) {
       f.dialect = ir::Dialect::Sinumerik;
       m.functions.push_back(std::move(f));
     }
     pp_.done.clear();
+    if (pp_.isoGuest && !pp_.isoGuest->finish(m)) return false;
     return pp_.ok;
   }
 

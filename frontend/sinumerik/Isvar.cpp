@@ -1,7 +1,8 @@
 // ISVAR("name"), ISVAR("name[i, j]") (L2286-L2370): whether the name is a variable the control
 // knows, with its dimensions and indices checked. ncc knows the program's variables and the
 // system variables of Codes.cpp when it reads the program, so a constant name is answered
-// there; GUD definition files are not read, so an unknown user name is FALSE.
+// there; the program's variables include the GUD of the definition files (Gud.cpp), so an
+// unknown user name is FALSE.
 #include "frontend/sinumerik/Parser.h"
 
 #include <fmt/format.h>

@@ -7,6 +7,7 @@
 #include "frontend/sinumerik/SinFrontend.h"
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@ struct VarDecl {
 struct Signature {
   std::vector<ir::Param> params;
   bool ready = false;  // its PROC line was read
+  bool retTarget = false;  // it has RET(target) / RETB(target): its calls are followed by the jump
 };
 
 class ProgramParser;
@@ -47,6 +49,8 @@ public:
   bool line(std::string_view line, uint32_t lineNo);
   // A mode the ISO blocks of the program set (G291 … G290): the static modes below follow it.
   void followMode(ModeValue m);
+  // False (with errors) when a section call names a label the function lacks.
+  bool sectionLabelsExist(const ir::Region &r, const std::set<std::string> &labels);
   ir::Function fn;
 
   // -- shared with the block parser
@@ -63,6 +67,9 @@ public:
   ModeValue distance;                    // static: G90/G91 (the main program starts in G90)
   bool poleKnown = true;                 // static: no plane change since the last G110/G111 (docs/SINUMERIK.md)
   bool apKnown = false;                  // static: AP= programmed since the last pole definition
+  bool definitions = false;  // a GUD definition file (DEF NCK|CHAN only)
+  bool retTarget = false;    // a RET(target) / RETB(target) was read
+  std::vector<std::pair<std::string, SourceLoc>> laterLabels;  // REPEAT A B with B after the REPEAT
   bool sawStatement = false;                // a statement before: PROC must be first
   std::map<std::string, std::vector<Token>> macros;  // DEFINE NAME AS … of this program
   // DEFINE NAME AS tokens: stores the macro (true); other lines: replaces macro names by their
@@ -84,7 +91,15 @@ public:
   std::set<std::string> missing;
   std::vector<ir::Function> done;
   bool polar = false;       // some file uses polar coordinates: the main program declares their state
-  bool modalCalls = false;  // some file read so far has MCALL: blocks may trigger it (docs/IR.md §5.5)
+  bool globalR = false;      // some file uses RG[n]: the main program declares them
+  bool retTargets = false;   // some file has RET(target): the main program declares its globals
+  bool namedSections = false;  // some file has CALL "P" BLOCK with labels in STRING variables
+  bool modalCalls = false;
+  // GUD definition files (Gud.cpp): their variables, seen by every file, and the declarations
+  // the main program starts with.
+  std::map<std::string, VarDecl> guds;
+  std::vector<ir::Op> gudOps;
+  bool loadDefinitionFiles();  // false with errors reported  // some file read so far has MCALL: blocks may trigger it (docs/IR.md §5.5)
   bool ok = true;
 
   // The signature of a subprogram: loads and parses its file on first use. Null (with an
@@ -95,6 +110,28 @@ public:
   // one is looked for.
   const Signature *callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle = nullptr,
                           const std::string &type = {});
+  // Every subprogram (.SPF) of the search path, for a call whose name is known only when it runs.
+  // False with errors reported (in the files read).
+  bool loadSearchPath(SourceLoc loc);
+  // The file of program `base` (`type` "MPF"/"SPF" or empty: MPF first), 0 when not found.
+  uint32_t programFile(const std::string &base, const std::string &type);
+  std::vector<std::string> searchPath() const;  // searchDirs, then the CALLPATH folder
+  void missingProgram(const std::string &name, SourceLoc loc);  // the error naming the folders
+  // The function running program `name`'s section from label `from` through `to`'s block
+  // (CALL "P" BLOCK A TO B): its name, null with an error reported.
+  const std::string *sectionFunction(const std::string &name, const std::string &type, const std::string &from,
+                                     const std::string &to, SourceLoc loc);
+  std::map<std::string, bool> sections;  // section functions, true: with a RET(target)
+  std::string callPath;  // the folder of the last CALLPATH (empty: none), searched after searchDirs
+  // The folder a Sinumerik path names (`/_N_WKS_DIR/_N_X_WPD`, `//NC:/WKS.DIR/X.WPD`) under the
+  // first search folder that has it; "" when none does.
+  std::string programFolder(const std::string &path) const;
+  // The function of ISO-dialect program `written` (ISOCALL): read by the ISO front end on first
+  // use; null with an error reported.
+  const std::string *isoProgram(const std::string &written, SourceLoc loc);
+  std::unique_ptr<GuestBlocks> isoGuest;
+  std::set<std::string> isoPrograms;
+  bool searchPathLoaded = false;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax") {
     diags.error(loc, std::move(msg), rule);
     ok = false;
@@ -162,6 +199,22 @@ private:
   bool def();
   bool proc();
   bool callStatement(bool modal);
+  bool computedCall(ir::ExprPtr name, const Token &at, SourceLoc l);        // CALL PROGNAME (SIN-CAL-05)
+  bool sectionCall(ir::ExprPtr program, SourceLoc l);                      // CALL [p] BLOCK a TO b (SIN-CAL-06)
+  // PCALL, EXTCALL, CALLPATH, ISOCALL (Calls.cpp): false when `kw` is none of them.
+  bool programCall(const std::string &kw);
+  bool pcall();
+  bool extcall();
+  bool callpath();
+  bool isocall();
+  bool namedCall(const std::string &written, SourceLoc l);
+  bool plainCall(const std::string *fn, SourceLoc l, bool resume);
+  bool sectionFunctionCall(const std::string &name, const std::string &type, const std::string &from,
+                           const std::string &to, SourceLoc l);  // a call of P's section function
+  ir::ExprPtr stringArgument(const char *kw, bool empty);
+  bool retStatement(bool backward);  // RET, RET(…), RETB(…)
+  bool execString();                 // EXECSTRING("block")
+  void resumeAfterCall(SourceLoc l);
   bool argumentList(const std::string &name, const std::vector<std::string> &params, const char *prefix, ir::Op &c);
   // A standard cycle from the library (Cycles.cpp): `NAME(args)` runs it here (a position
   // pattern: the modal cycle at each position), `MCALL NAME(args)` makes it modal.
@@ -219,6 +272,19 @@ std::string calledProgram(const std::string &written, std::string &type);
 size_t elementCount(const VarDecl &d);
 // Declares the polar coordinates' program-wide state at the start of the main program.
 void declarePolarState(ir::Region &mainBody);
+// The global R parameters RG[0 … kGlobalRCount-1] (SIN-VAR-05): one REAL array of the program.
+constexpr const char *kGlobalR = "_SIN_RG";
+constexpr uint32_t kGlobalRCount = 1000;
+void declareGlobalR(ir::Region &mainBody);
+// RET(target): the target a callee leaves for its caller (kRetTarget, "" none; kRetBackward for
+// RETB), and the caller's copy it jumps to (kRetJump).
+constexpr const char *kRetTarget = "_SIN_RET", *kRetJump = "_SIN_RET_JUMP", *kRetBackward = "_SIN_RETB";
+void declareReturnTargets(ir::Region &mainBody);
+// CALL "P" BLOCK with labels in STRING variables: the caller's start and end labels (globals) and
+// the section function's copy of the end (a local).
+constexpr const char *kSectionFrom = "_SIN_SEC_FROM", *kSectionTo = "_SIN_SEC_TO", *kSectionEnd = "_SIN_SEC_END";
+void namedSectionFunction(ir::Function &fn, SourceLoc l);  // adds the checks to P's function
+void declareNamedSections(ir::Region &mainBody);
 // `assign target= value=` at l.
 ir::Op assignOp(ir::ExprPtr target, ir::ExprPtr value, SourceLoc l);
 // A builtin call with the given arguments.

@@ -2,24 +2,28 @@
 // lines of each file and their control structures.
 #include "frontend/SubprogramFiles.h"
 #include "frontend/sinumerik/Parser.h"
+#include "ir/Builtins.h"
+#include "ir/FileCommands.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace ncc::sin {
 
 FunctionParser::FunctionParser(ProgramParser &pp, uint32_t file, std::string name, bool isMain)
-    : pp(pp), file(file), isMain(isMain), distance(isMain ? ModeValue::Absolute : ModeValue::Count) {
+    : pp(pp), file(file), isMain(isMain), vars(pp.guds), distance(isMain ? ModeValue::Absolute : ModeValue::Count) {
   fn.name = std::move(name);
   fn.loc = {file, 1, 1};
   regions.push_back(&fn.body);
 }
 
-// A header line `%_N_NAME_MPF` (punched-tape form) or `%` alone: no block.
+// A header line `%_N_NAME_MPF` (punched-tape form) or `%` alone, or the folder line `$PATH=…`
+// (L866, L9246): no block.
 static bool headerLine(std::string_view s) {
   size_t i = s.find_first_not_of(" \t");
-  return i != std::string_view::npos && s[i] == '%';
+  return i != std::string_view::npos && (s[i] == '%' || s.substr(i, 6) == "$PATH=");
 }
 
 // Jump targets of a function: label names and block numbers.
@@ -73,6 +77,23 @@ static void sectionEndLabels(ir::Region &body) {
     }
   };
   place(place, body);
+}
+
+// The labels a section repetition (REPEAT, CALL BLOCK) names must be in the program: an error
+// at the statement, not the verifier's.
+bool FunctionParser::sectionLabelsExist(const ir::Region &r, const std::set<std::string> &labels) {
+  bool good = true;
+  for (auto &op : r) {
+    for (auto &sub : op.regions) good = sectionLabelsExist(sub, labels) && good;
+    if (op.kind != ir::OpKind::CallSection) continue;
+    for (const char *key : {"from", "to"})
+      if (const ir::Expr *e = op.get(key); e && !labels.count(e->str))
+        good = pp.error(op.loc,
+                        op.loc.file == file ? fmt::format("label '{}' is not in this program", e->str)
+                                            : fmt::format("label '{}' is not in program {}", e->str, pp.sm.name(file)),
+                        "missing-block");
+  }
+  return good;
 }
 
 bool mentionsMcall(std::string_view text) {
@@ -165,6 +186,9 @@ bool FunctionParser::run() {
   std::set<double> blocks;
   collectTargets(fn.body, targets, blocks);
   dropMissingGotoc(fn.body, targets, blocks);
+  if (!sectionLabelsExist(fn.body, targets)) ok = false;
+  for (auto &[name, at] : laterLabels)
+    if (!targets.count(name)) ok = pp.error(at, fmt::format("label '{}' is not in this program", name), "missing-block");
   sectionEndLabels(fn.body);
   for (auto &c : ctl) {
     static const char *kOpen[] = {"IF", "IF … ELSE", "WHILE", "FOR", "LOOP", "REPEAT"};
@@ -193,17 +217,7 @@ static std::vector<std::string> candidateFiles(const std::string &name, const st
 }
 
 std::string calledProgram(const std::string &written, std::string &type) {
-  std::string name = written.substr(written.rfind('/') == std::string::npos ? 0 : written.rfind('/') + 1);
-  for (auto &c : name) c = (char)std::toupper((unsigned char)c);
-  type.clear();
-  if (name.size() > 7 && name.compare(0, 3, "_N_") == 0) {
-    std::string t = name.substr(name.size() - 4);
-    if (t == "_MPF" || t == "_SPF") {
-      type = t.substr(1);
-      name = name.substr(3, name.size() - 7);
-    }
-  }
-  return name;
+  return sinumerikProgramName(written, type);
 }
 
 // The names of the Siemens standard cycles (CYCLE81, POCKET3, HOLES1 …).
@@ -218,6 +232,103 @@ static bool siemensCycle(const std::string &name) {
   return false;
 }
 
+std::vector<std::string> ProgramParser::searchPath() const {
+  std::vector<std::string> dirs = opts.searchDirs;
+  if (!callPath.empty()) dirs.push_back(callPath);
+  return dirs;
+}
+
+uint32_t ProgramParser::programFile(const std::string &base, const std::string &type) {
+  return findSubprogramFile(sm, searchPath(), candidateFiles(base, type), true);
+}
+
+std::string ProgramParser::programFolder(const std::string &path) const {
+  std::string_view p(path);
+  if (p.substr(0, 5) == "//NC:") p.remove_prefix(5);  // the NC's own memory (L8790)
+  std::filesystem::path native, written;
+  for (size_t at = 0; at <= p.size();) {
+    size_t slash = p.find('/', at);
+    if (slash == std::string_view::npos) slash = p.size();
+    std::string_view c = p.substr(at, slash - at);
+    if (c == "..") return "";
+    if (!c.empty() && c != ".") {
+      native /= sinumerikPathComponent(c, false);
+      written /= std::string(c);
+    }
+    at = slash + 1;
+  }
+  for (auto &d : opts.searchDirs)
+    for (auto *rel : {&native, &written}) {
+      std::error_code ec;
+      std::filesystem::path dir = std::filesystem::path(d) / *rel;
+      if (!rel->empty() && std::filesystem::is_directory(dir, ec)) return dir.string();
+    }
+  return "";
+}
+
+// ISOCALL: the program's file on the search path (as a call finds it), read by the ISO front end.
+const std::string *ProgramParser::isoProgram(const std::string &written, SourceLoc loc) {
+  std::string type, name = calledProgram(written, type);
+  std::string key = name + " (ISO)";
+  if (auto it = isoPrograms.find(key); it != isoPrograms.end()) return &*it;
+  if (!opts.isoBlocks) {
+    error(loc, "ISOCALL: no ISO front end for this program", "unsupported-code");
+    return nullptr;
+  }
+  uint32_t fid = programFile(name, type);
+  if (!fid) {
+    missingProgram(name, loc);
+    return nullptr;
+  }
+  if (!isoGuest) isoGuest = opts.isoBlocks();
+  if (!isoGuest->program(fid, key)) {
+    ok = false;
+    return nullptr;
+  }
+  return &*isoPrograms.insert(key).first;
+}
+
+void ProgramParser::missingProgram(const std::string &name, SourceLoc loc) {
+  if (!missing.count(name))
+    error(loc, fmt::format("subprogram {} not found (searched {} for {}.MPF, {}.SPF)", name,
+                           folderList(searchPath()), name, name),
+          "missing-subprogram");
+  else
+    error(loc, fmt::format("subprogram {} not found", name), "missing-subprogram");
+  missing.insert(name);
+}
+
+// CALL "P" BLOCK A TO B (SIN-CAL-06): a function of its own made of P's text, starting with the
+// section call from A through B's block and a return, so the section runs in P's context.
+const std::string *ProgramParser::sectionFunction(const std::string &name, const std::string &type,
+                                                  const std::string &from, const std::string &to, SourceLoc loc) {
+  std::string key = fmt::format("{} BLOCK {} TO {}", type.empty() ? name : "_N_" + name + "_" + type, from, to);
+  if (from.empty()) key = fmt::format("{} BLOCK", type.empty() ? name : "_N_" + name + "_" + type);  // labels named at run time
+  if (auto it = sections.find(key); it != sections.end()) return &it->first;
+  uint32_t fid = programFile(name, type);
+  if (!fid) {
+    missingProgram(name, loc);
+    return nullptr;
+  }
+  FunctionParser fp(*this, fid, key, false);
+  if (!from.empty()) {
+    ir::Op s(ir::OpKind::CallSection, loc);
+    s.set("from", ir::Expr::string(from));
+    s.set("to", ir::Expr::string(to));
+    fp.fn.body.push_back(std::move(s));
+    fp.fn.body.push_back(ir::Op(ir::OpKind::Return, loc));
+  }
+  ir::Op text(ir::OpKind::Label, loc);  // P's text is reached through the section's labels (not dead code)
+  text.set("name", ir::Expr::string("@text"));
+  fp.fn.body.push_back(std::move(text));
+  bool good = fp.run();
+  if (from.empty()) namedSectionFunction(fp.fn, loc);
+  fp.fn.dialect = ir::Dialect::Unknown;
+  done.push_back(std::move(fp.fn));
+  if (!good) return nullptr;
+  return &sections.emplace(key, fp.retTarget).first->first;
+}
+
 const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, CycleSignature *libCycle,
                                        const std::string &type) {
   auto it = procs.find(name);
@@ -228,7 +339,7 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, C
   }
   // A call that named the type is kept apart (_N_TEIL1_SPF) from one that did not (TEIL1: MPF first).
   std::string base = type.empty() ? name : name.substr(3, name.size() - 7);
-  uint32_t fid = findSubprogramFile(sm, opts.searchDirs, candidateFiles(base, type), true);
+  uint32_t fid = programFile(base, type);
   if (!fid && siemensCycle(base)) {
     // A standard cycle without a user subprogram of that name (which would override it): the
     // cycle library's entry.
@@ -242,13 +353,7 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, C
     return nullptr;
   }
   if (!fid) {
-    if (!missing.count(name))
-      error(loc, fmt::format("subprogram {} not found (searched {} for {}.MPF, {}.SPF)", name,
-                             folderList(opts.searchDirs), name, name),
-            "missing-subprogram");
-    else
-      error(loc, fmt::format("subprogram {} not found", name), "missing-subprogram");
-    missing.insert(name);
+    missingProgram(name, loc);
     return nullptr;
   }
   // Parse the file now: its PROC line gives the signature the call's arguments need.
@@ -265,10 +370,32 @@ const Signature *ProgramParser::callee(const std::string &name, SourceLoc loc, C
     s.params.push_back(std::move(c));
   }
   s.ready = true;
+  s.retTarget = fp.retTarget;
   fp.fn.dialect = ir::Dialect::Unknown;
   done.push_back(std::move(fp.fn));
   if (!good) ok = false;
   return &procs[name];
+}
+
+bool ProgramParser::loadSearchPath(SourceLoc loc) {
+  if (searchPathLoaded) return true;
+  searchPathLoaded = true;
+  std::set<std::string> names;
+  for (auto &d : searchPath()) {
+    std::error_code ec;
+    for (auto &e : std::filesystem::directory_iterator(d, ec)) {
+      if (!e.is_regular_file(ec)) continue;
+      std::string type, name = calledProgram(e.path().filename().string(), type);
+      if (type == "SPF" && name.size() >= 2) names.insert(name);
+    }
+  }
+  bool before = ok, good = true;
+  ok = true;
+  for (auto &n : names)
+    if (!procs.count(n) && !callee(n, loc)) good = false;
+  good = good && ok;
+  ok = before && ok;
+  return good;
 }
 
 bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions &opts, Diagnostics &diags,
@@ -276,12 +403,19 @@ bool parseSinumerikProgram(SourceManager &sm, uint32_t fileId, const SinOptions 
   out.dialect = ir::Dialect::Sinumerik;
   out.name = sm.name(fileId);
   ProgramParser pp(sm, opts, diags, out);
+  bool ok = pp.loadDefinitionFiles();
   FunctionParser main(pp, fileId, "main", true);
-  bool ok = main.run();
+  ok = main.run() && ok;
+  main.fn.body.insert(main.fn.body.begin(), std::make_move_iterator(pp.gudOps.begin()),
+                      std::make_move_iterator(pp.gudOps.end()));
   if (pp.polar) declarePolarState(main.fn.body);
+  if (pp.globalR) declareGlobalR(main.fn.body);
+  if (pp.retTargets) declareReturnTargets(main.fn.body);
+  if (pp.namedSections) declareNamedSections(main.fn.body);
   out.functions.clear();
   out.functions.push_back(std::move(main.fn));
   for (auto &f : pp.done) out.functions.push_back(std::move(f));
+  if (pp.isoGuest && !pp.isoGuest->finish(out)) ok = false;
   return ok && pp.ok;
 }
 

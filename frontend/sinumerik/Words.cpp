@@ -230,10 +230,14 @@ bool BlockParser::callStatement(bool modal) {
   }
   const Token &t = tok();
   std::string name, type;
+  if (viaCall && t.isName("BLOCK")) return sectionCall(nullptr, l);  // CALL BLOCK A TO B: this program's section
+  if (viaCall && t.kind == Tok::Name && f_.vars.count(t.text) && peek().is("("))  // CALL PROGNAME(1)
+    return fail(peek(), "an indirect CALL takes no arguments and stands alone in its block (L8554)");
   if (viaCall) {
     ExprPtr e = expr(0);
     if (!e) return false;
-    if (e->kind != ir::ExprKind::String) return fail(t, "CALL with a computed name is not supported", "unsupported-code");
+    if (tok().isName("BLOCK")) return sectionCall(std::move(e), l);
+    if (e->kind != ir::ExprKind::String) return computedCall(std::move(e), t, l);
     name = calledProgram(e->str, type);
   } else {
     if (t.kind != Tok::Name) return fail(t, "expected a subprogram name");
@@ -241,8 +245,6 @@ bool BlockParser::callStatement(bool modal) {
     ++i_;
   }
   if (!type.empty()) name = "_N_" + name + "_" + type;  // the key of a call that named its file type
-  if (viaCall && tok().isName("BLOCK"))  // CALL "P" BLOCK A TO B: a section of another program (SIN-CAL-06)
-    return fail(tok(), "CALL … BLOCK … TO … (a section of another program) is not simulated", "unsupported-code");
   if (name.size() < 2 || name[0] == '$')
     return fail(t, fmt::format("unknown address or name '{}'", name), "unknown-code");
   CycleSignature lib;
@@ -268,8 +270,11 @@ bool BlockParser::callStatement(bool modal) {
       c.set("count", std::move(n));
     }
   }
+  if (modal && sig->retTarget)
+    return fail(t, fmt::format("MCALL of {}, which returns with RET(target), is not simulated", name), "unsupported-code");
   if (modal) post_.push_back(cycleCancel(l));  // the last modal call replaces a modal cycle
   post_.push_back(std::move(c));
+  if (sig->retTarget) resumeAfterCall(l);
   return true;
 }
 
