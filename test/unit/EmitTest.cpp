@@ -148,7 +148,7 @@ TEST(EmitSinumerik, HeaderNumberingModalSuppression) {
   Emit e;
   EXPECT_EQ(e.run(Target::Sinumerik, basicStream(), "PART1"),
             "; PART1\n"
-            "N10 G71 G90 G17 G94 G500\n"
+            "N10 G71 G90 G17 G94 G54\n"
             "N20 G0 X10 Y20 Z5\n"
             "N30 G1 Z-1 F200\n"
             "N40 X30\n"
@@ -176,9 +176,9 @@ TEST(EmitSinumerik, SourceBlockNumbersAndNoNumbers) {
   Stream s;
   s.move(RecordKind::Rapid, 1, 0, 0).blockNumber = 7;
   s.move(RecordKind::Rapid, 2, 0, 0);
-  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G500\nN7 G0 X1\nX2\nM30\n");
+  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G54\nN7 G0 X1\nX2\nM30\n");
   e.set("emit.sinumerik", "block_numbers", "off");
-  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G500\nG0 X1\nX2\nM30\n");
+  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G54\nG0 X1\nX2\nM30\n");
 }
 
 TEST(EmitISO, ArcIJKAndRadiusForms) {
@@ -218,7 +218,7 @@ TEST(EmitSinumerik, ArcRadiusAndHelixTurns) {
   e.set("emit.sinumerik", "arc_style", "r");
   e.set("emit.sinumerik", "block_numbers", "off");
   EXPECT_EQ(e.run(Target::Sinumerik, s),
-            "G71 G90 G17 G94 G500\n"
+            "G71 G90 G17 G94 G54\n"
             "G0 X10\n"
             "G3 X-10 Z-2 CR=10 F100\n"
             "G2 Z-8 I10 J0 TURN=2\n"
@@ -547,7 +547,7 @@ TEST(EmitBoth, StreamsToFile) {
   size_t n = std::fread(buf, 1, sizeof buf - 1, f);
   std::fclose(f);
   EXPECT_EQ(std::string(buf, n),
-            "N10 G71 G90 G17 G94 G500\nN20 G0 X10 Y20 Z5\nN30 G1 Z-1 F200\nN40 X30\nN50 X30.25\nN60 M30\n");
+            "N10 G71 G90 G17 G94 G54\nN20 G0 X10 Y20 Z5\nN30 G1 Z-1 F200\nN40 X30\nN50 X30.25\nN60 M30\n");
 }
 
 TEST(EmitBoth, DefaultMillFileKeys) {
@@ -564,13 +564,13 @@ TEST(EmitBoth, DefaultMillFileKeys) {
                       {"format.X", "2"}, {"format.F", "1"}, {"format.CR", "3"}, {"line_ending", "crlf"}})
     e.set("emit.sinumerik", k, v);
   EXPECT_EQ(e.run(Target::Sinumerik, s, "parts/1234.mpf"),
-            "; ncc output\r\n; 1234.mpf\r\nN10 G71 G90 G17 G94 G500\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
+            "; ncc output\r\n; 1234.mpf\r\nN10 G71 G90 G17 G94 G54\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
   EXPECT_TRUE(e.ok);
   EXPECT_EQ(e.diags.warningCount(), 0u);
   // Without an end record the footer's M30 ends the program.
   s.recs.pop_back();
   EXPECT_EQ(e.run(Target::Sinumerik, s, ""),
-            "; ncc output\r\nN10 G71 G90 G17 G94 G500\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
+            "; ncc output\r\nN10 G71 G90 G17 G94 G54\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
   Emit iso;
   iso.set("emit.iso", "block_numbers", "false");
   EXPECT_EQ(iso.run(Target::ISO, s, "/x/1234.nc"), "%\nO1234\nG21\nG90 G17 G94 G54\nG0 X1.235\nG1 X2. F99.96\nM30\n%\n");
