@@ -34,12 +34,11 @@ const FrameCodes kIsoCodes{{nullptr, "G54", "G55", "G56", "G57", "G58", "G59", "
 const FrameCodes kSinumerikCodes{{"G500", "G54", "G55", "G56", "G57", "G505", "G506", "G507", "G508", "G509"},
                                  "TRANS", false, "", "D", "D0"};
 
+// A target without these codes: everything stays in the positions (machine coordinates).
 const FrameCodes *frameCodes(Target t) {
-  switch (t) {
-  case Target::ISO: return &kIsoCodes;
-  case Target::Sinumerik: return &kSinumerikCodes;
-  }
-  return nullptr;  // a target without these codes: everything stays in the positions
+  if (t == Target::ISO) return &kIsoCodes;
+  if (t == Target::Sinumerik) return &kSinumerikCodes;
+  return nullptr;
 }
 
 const char *sourceSelectionName(int selection) {
@@ -158,8 +157,9 @@ void Emitter::syncFrame(const MotionRecord &r) {
   frameDirty_ = false;
   const FrameCodes *codes = frameCodes(st_.target);
   if (!codes) return;
-  if (!frameInit_) {  // the set-up blocks' selection is in force at the start
+  if (!frameInit_) {  // the set-up blocks' selection is in force at the start, else the reset one (G54)
     frameInit_ = true;
+    written_.selection = 1;
     for (const std::string &blk : st_.setup)
       for (int i = 0; i <= 9; ++i)
         if (codes->select[i] && (" " + blk + " ").find(std::string(" ") + codes->select[i] + " ") != std::string::npos)
@@ -169,8 +169,11 @@ void Emitter::syncFrame(const MotionRecord &r) {
   // Before the first FrameChange the machine's G54 is in force (the executor writes one at the
   // start only when it is not zero).
   FrameMatrix m = src_.matrix;
-  if (!src_.started)
+  AxisShift otherAxes = src_.axisShift;
+  if (!src_.started) {
     for (int i = 0; i < 3; ++i) m[i * 4 + 3] = machine_.workOffsets[0][i];
+    for (int i = 3; i < kAxes; ++i) otherAxes[i - 3] = machine_.workOffsets[0][i];
+  }
   // The work offset: the source's when the target has a code for it, else the one in force
   // with the whole translation in the positions.
   int sel = written_.selection;
@@ -197,7 +200,7 @@ void Emitter::syncFrame(const MotionRecord &r) {
     }
   }
   for (int i = 3; i < kAxes; ++i)
-    if (selectable && !near(src_.axisShift[i - 3], offset[i])) {
+    if (selectable && !near(otherAxes[i - 3], offset[i])) {
       baked.push_back("the shift of the rotary and U V W axes");
       break;
     }
@@ -225,7 +228,7 @@ void Emitter::syncFrame(const MotionRecord &r) {
     flushPending();
     writeBlock(w, r.blockNumber);
   };
-  if (sel != written_.selection && sel >= 0) {
+  if (sel != written_.selection) {
     block({codes->select[sel]});
     written_.selection = sel;
   }
@@ -258,7 +261,6 @@ void Emitter::syncFrame(const MotionRecord &r) {
   AxisVec total = offset;
   for (int i = 0; i < 3; ++i) total[i] += shift[i];
   total[2] += toolZ;
-  if (sel < 0) total = {};  // no selection known: machine coordinates
   setWrittenOffset(total);
 }
 

@@ -24,7 +24,7 @@ struct SourceFrame {
 
 // What the written program has in force, and the translation it adds to its positions.
 struct WrittenFrame {
-  int selection = -1;          // the work offset the set-up or a block selected; -1 unknown
+  int selection = 1;           // the work offset the set-up (else the reset state, G54) or a block selected
   std::array<double, 3> shift{};  // G52 / TRANS X Y Z as the target reads them back
   double toolZ = 0;            // the tool length the written G43 H / D adds on Z
   int toolWord = 0;            // the H (ISO) or D (Sinumerik) number written, 0 none

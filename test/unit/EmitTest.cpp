@@ -371,7 +371,7 @@ TEST(EmitBoth, ToolSpindleCoolant) {
   Stream s;
   s.state(RecordKind::ToolSelect, 3);
   s.state(RecordKind::ToolChange, 3);
-  s.state(RecordKind::ToolLength, 0, 42.5);
+  s.state(RecordKind::ToolLength, 0, 42.5);  // no H number: the length stays in the positions
   s.state(RecordKind::SpindleSpeed, 0, 1200);
   s.state(RecordKind::SpindleCW);
   s.state(RecordKind::CoolantFlood, 1);
@@ -391,6 +391,7 @@ TEST(EmitBoth, ToolSpindleCoolant) {
             "%\nO0001\n"
             "T3 M6\n"
             "S1200 M3 M8\n"
+            "(ncc: from here the positions include the tool length: no code for it on this target)\n"
             "G0 Z5.\n"
             "T4 M5 M9\n"
             "M7\n"
@@ -403,6 +404,7 @@ TEST(EmitBoth, ToolSpindleCoolant) {
   EXPECT_EQ(sin.run(Target::Sinumerik, s),
             "T3 D0 M6\n"
             "S1200 M3 M8\n"
+            "; ncc: from here the positions include the tool length: no code for it on this target\n"
             "G0 Z5\n"
             "T4 M5 M9\n"
             "M7\n"
@@ -526,9 +528,8 @@ TEST(EmitBoth, FormatAndCodeOverrides) {
   s.state(RecordKind::ToolSelect, 5);
   s.move(RecordKind::Rapid, 1.5, 0, 0);
   s.move(RecordKind::Linear, 2, 0, 0, 99.6);
-  // Without set-up blocks no work offset is known to be selected: the source's (G54) is written
-  // before the first move.
-  EXPECT_EQ(e.run(Target::ISO, s), "%\nO0001\nT05\nG54\nG00 X1.500\nG01 X2.000 F100\nM30\n%\n");
+  // Without set-up blocks the controller's reset selection (G54) is taken to be in force.
+  EXPECT_EQ(e.run(Target::ISO, s), "%\nO0001\nT05\nG00 X1.500\nG01 X2.000 F100\nM30\n%\n");
 }
 
 TEST(EmitBoth, StreamsToFile) {
