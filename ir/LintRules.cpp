@@ -146,6 +146,8 @@ static const LintRule kRules[] = {
      "a negative spindle speed"},
     {"emit", Severity::Error, "emitter",
      "the emitted program cannot say what the source does (a number outside the word format, an auxiliary B on a machine with a B axis) or cannot be written"},
+    {"out-of-travel", Severity::Error, "emitter",
+     "a translated program's move leaves an axis's travel (the machine's min/max, machine coordinates; an arc with its extent)"},
     {"bad-offset-index", Severity::Error, "executor",
      "G10 without P0..P9, a work offset outside G54..G59.3"},
     {"tilted-arc", Severity::Error, "sinks",

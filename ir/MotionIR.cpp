@@ -371,6 +371,15 @@ AxisShift axisShift(const MotionRecord &r) {
   return s;
 }
 
+void setWorkOffsetSelection(MotionRecord &r, int selection) {
+  if (selection != 1) r.setParam("wcs", selection);
+}
+
+int workOffsetSelection(const MotionRecord &r) {
+  const double *v = r.param("wcs");
+  return v ? (int)*v : 1;
+}
+
 void WorkFrame::note(const MotionRecord &r) {
   if (r.kind == RecordKind::ToolLength) {
     toolZ_ = r.value, toolX_ = r.value2;

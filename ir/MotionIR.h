@@ -266,6 +266,12 @@ FrameMatrix frameMatrix(const MotionRecord &r);
 using AxisShift = std::array<double, kAxes - 3>;
 void setAxisShift(MotionRecord &r, const AxisShift &s);
 AxisShift axisShift(const MotionRecord &r);
+// The work offset selected when the frame changed: 1..9 the machine's [offsets] g54…"g59.3" (ISO
+// G54…G59.3, Sinumerik G54…G57, G505…G509), 0 none (Sinumerik G500 or an assigned $P_IFRAME).
+// The named number `wcs`, written when not 1 (G54, the selection at the start). Emitters select
+// the same offset on their target (docs/EMIT.md "Work offsets").
+void setWorkOffsetSelection(MotionRecord &r, int selection);
+int workOffsetSelection(const MotionRecord &r);
 
 // Work coordinates beside machine coordinates: follows a stream's FrameChange and ToolLength
 // records and gives the work (program) position of a machine position, in mm (a diameter-

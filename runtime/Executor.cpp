@@ -59,12 +59,14 @@ void Executor::Impl::noteFrame(const char *what) {
   }
   AxisShift shift;
   for (size_t i = 0; i < shift.size(); ++i) shift[i] = o[3 + i];  // machine A B C U V W of work 0
-  if (f == lastFrame && shift == lastShift) return;
-  lastFrame = f, lastShift = shift;
+  const int selection = offsetSelection();
+  if (f == lastFrame && shift == lastShift && selection == lastSelection) return;
+  lastFrame = f, lastShift = shift, lastSelection = selection;
   MotionRecord r = record(RecordKind::FrameChange);
   r.text = what;
   setFrameMatrix(r, f);
   setAxisShift(r, shift);
+  setWorkOffsetSelection(r, selection);
   emit(r);
 }
 

@@ -134,6 +134,7 @@ bool Executor::writeFrame(const SysRef &ref, const FrameValue &f, SourceLoc loc,
   if (!asWorkOffset(f, u, offset, rotation, err, what.c_str())) return false;
   if (ref.var == SysVar::IFrame) {  // the active settable frame: now, the table unchanged
     x.g5xActive = offset, x.g5xRotActive = rotation;
+    x.settableFrameWritten = true;
     x.noteFrame("$P_IFRAME");
     return true;
   }

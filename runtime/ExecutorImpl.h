@@ -113,7 +113,14 @@ struct Executor::Impl {
   OffsetWrite offsetWrite = OffsetWrite::Immediate;
   double paramUnit = 1;  // mm per unit of offsets as programs read and write them
   double *storedOffset(const SysVarInfo &info, double &unit) const;
-  void applyWorkOffset() { g5xActive = g5x[st.workOffset - 1], g5xRotActive = g5xRotation[st.workOffset - 1]; }
+  void applyWorkOffset() {
+    g5xActive = g5x[st.workOffset - 1], g5xRotActive = g5xRotation[st.workOffset - 1];
+    settableFrameWritten = false;
+  }
+  // The active settable frame was assigned ($P_IFRAME, Sinumerik G500) rather than read from the
+  // table: no work offset is selected (the FrameChange record's `wcs` 0, docs/IR.md).
+  bool settableFrameWritten = false;
+  int offsetSelection() const { return settableFrameWritten ? 0 : st.workOffset; }
   AxisVec g92{};
   AxisVec g92Saved{};  // what G92.3 restores (G92.2 zeroes g92 only)
   bool g92On = false;  // G92 offsets applied (rs274 #5210)
@@ -278,10 +285,12 @@ struct Executor::Impl {
   bool noseCompAfterT();
   bool execFrame(const MachineCmd &c);
   // Emits a FrameChange record when the program -> machine transform (without the tool length,
-  // which has its own record) differs from the last one emitted; `what` names the cause.
+  // which has its own record) or the work offset selection differs from the last one emitted;
+  // `what` names the cause.
   void noteFrame(const char *what);
   FrameMatrix lastFrame{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
   AxisShift lastShift{};
+  int lastSelection = 1;  // the work offset selection of the last FrameChange (G54 at the start)
   // Errors for what ncc does not do under a programmable mirror, scaling or rotation.
   bool frameForbids(const char *what);
   // The offset frame's plane `pl` maps onto the same machine plane with equal scale on both axes

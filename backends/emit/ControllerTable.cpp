@@ -300,7 +300,7 @@ ControllerStyle defaultStyle(Target t) {
     s.messageStyle = MessageStyle::MsgCall;
     s.numbering = Numbering::Renumber;
     s.programNumber = false;
-    s.setup = {"G71 G90 G17 G94 G500"};
+    s.setup = {"G71 G90 G17 G94 G54"};
   }
   return s;
 }
@@ -316,7 +316,7 @@ bool applyLathe(const Machine &m, ControllerStyle &s, Diagnostics &diags) {
   s.setupPlane = Plane::ZX;
   s.xScale = m.controller.diameterProgramming ? 2 : 1;
   if (s.target == Target::Sinumerik) {
-    s.setup = {std::string("G71 G90 G18 G94 G500 ") + (m.controller.diameterProgramming ? "DIAMON" : "DIAMOF")};
+    s.setup = {std::string("G71 G90 G18 G94 G54 ") + (m.controller.diameterProgramming ? "DIAMON" : "DIAMOF")};
     return true;
   }
   auto refuse = [&](const std::string &why) {

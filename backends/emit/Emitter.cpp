@@ -356,8 +356,16 @@ void Emitter::coolant(const MotionRecord &r, bool flood) {
 
 std::vector<std::string> Emitter::coolantCodes() { return detail::coolantCodes(st_, flood_, mist_, floodWanted_, mistWanted_); }
 
-void Emitter::record(const MotionRecord &r) {
+void Emitter::record(const MotionRecord &source) {
   if (finished_) return;
+  if (!inNativeCycle_ && frameRecord(source)) return;
+  MotionRecord shifted;
+  const MotionRecord &r = toWritten(source, shifted);
+  source_ = &source;
+  struct ForgetSource {  // the pointer is valid during this call only
+    const MotionRecord *&p;
+    ~ForgetSource() { p = nullptr; }
+  } forgetSource{source_};
   struct AfterThread {  // the record is a thread or another motion: noted once it is written
     bool &flag;
     const MotionRecord &r;
@@ -371,7 +379,7 @@ void Emitter::record(const MotionRecord &r) {
   case RecordKind::Linear: move(r); break;
   case RecordKind::Arc:
     if (r.tiltedArc()) {
-      diags_.error(r.loc, TiltedArcCheck::message(("the [" + st_.section + "] emitter").c_str(), r),
+      diags_.error(r.loc, TiltedArcCheck::message(("the [" + st_.section + "] emitter").c_str(), source),
                    "tilted-arc");
       errors_ = true;
       break;
@@ -407,9 +415,9 @@ void Emitter::record(const MotionRecord &r) {
     push(pending_, code(Code::ToolChange));
     flushPending();
     break;
-  case RecordKind::ToolLength:
-  case RecordKind::ToolNumber:  // LinuxCNC M61: no motion; its tool's length is in the positions
-    break;  // positions already include the offset: the program runs with length comp off
+  case RecordKind::ToolLength:  // frameRecord
+  case RecordKind::ToolNumber:
+    break;
   case RecordKind::SpindleSpeed: {
     std::string w;
     if (!number(r.value, WordClass::Speed, "S", r, w)) break;
@@ -500,7 +508,7 @@ void Emitter::record(const MotionRecord &r) {
   }
   case RecordKind::CycleBegin: nativeCycle(r); break;  // else the expanded moves are written
   case RecordKind::CycleEnd:
-  case RecordKind::FrameChange:  // positions are machine coordinates: frames are not written
+  case RecordKind::FrameChange:  // frameRecord
   case RecordKind::Count: break;
   }
 }
@@ -509,6 +517,7 @@ bool Emitter::finish(Diagnostics &diags) {
   if (finished_) return !errors_;
   finished_ = true;
   flushPending();
+  finishFrame();
   // A footer line repeating the end code ("M30") is not written twice; a program without an
   // end (the executor warned about it) gets one.
   auto isEnd = [&](const std::string &l) { return l == code(Code::EndM30) || l == code(Code::EndM2); };

@@ -1,7 +1,8 @@
 // Sinumerik: a library cycle's bracket (cycle_begin "sin.CYCLE81" …, runtime/ExecutorCycle.cpp)
 // written back as the native call instead of its expanded moves (docs/EMIT.md "Cycles"). The
-// output is in machine coordinates, so the entry's absolute positions (CycleDef::coords) move by
-// the bracket's machine-minus-program shift (mx my mz); a bracket under a rotation, scaling or
+// entry's absolute positions (CycleDef::coords) move by the bracket's machine-minus-program shift
+// (mx my mz) less what the written program's offsets add (EmitterFrame.cpp adjusts mx my mz
+// before this sees the bracket); a bracket under a rotation, scaling or
 // mirror (frame=1), with a mode parameter set, or of an entry without coords keeps its moves.
 #include "backends/emit/EmitterImpl.h"
 #include "runtime/Geometry.h"

@@ -5,6 +5,7 @@
 #include "backends/emit/ArcGeometry.h"
 #include "backends/emit/ControllerTable.h"
 #include "backends/emit/Emitter.h"
+#include "backends/emit/EmitterFrame.h"
 
 #include <algorithm>
 #include <cctype>
@@ -144,7 +145,7 @@ private:
   // Reports `why` (when not empty) as the reason the record cannot be written; true then.
   bool refused(const MotionRecord &r, const char *what, const std::string &why) {
     if (why.empty()) return false;
-    diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write this " + what + " (" + why + "): " + printMotionRecord(r),
+    diags_.error(r.loc, "the [" + st_.section + "] emitter cannot write this " + what + " (" + why + "): " + printMotionRecord(sourceOf(r)),
                  "unsupported-code");
     errors_ = true;
     return true;
@@ -169,6 +170,26 @@ private:
   void skipCycleRecord(const MotionRecord &r);
   SkippedCycle skipped_;
   std::vector<std::string> coolantCodes();
+  // Work offsets, shifts, tool length and travel (EmitterFrame.cpp). frameRecord notes the
+  // records that change them (true: nothing else to write); toWritten gives a record's positions
+  // in the written program's coordinates (r itself, or a shifted copy in `scratch`).
+  bool frameRecord(const MotionRecord &r);
+  const MotionRecord &toWritten(const MotionRecord &r, MotionRecord &scratch);
+  void syncFrame(const MotionRecord &r);
+  void setWrittenOffset(const AxisVec &offset);
+  bool offsetNumberLength(int n, double &length) const;
+  bool spindleEdgeLength(int d, double &length) const;
+  int spindleEdgeWithLength(double length) const;
+  void checkTravel(const MotionRecord &r);
+  void finishFrame();
+  // The record as the stream gave it (machine coordinates), for messages: `r` may be the copy
+  // in written coordinates.
+  const MotionRecord &sourceOf(const MotionRecord &r) const { return source_ ? *source_ : r; }
+  const MotionRecord *source_ = nullptr;
+  SourceFrame src_;
+  WrittenFrame written_;
+  bool frameDirty_ = true, frameInit_ = false;
+  uint64_t travelErrors_ = 0;
 
   const Machine &machine_;
   ControllerStyle st_;

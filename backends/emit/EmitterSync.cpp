@@ -131,8 +131,9 @@ void Emitter::spindleOrient(const MotionRecord &r) {
 // G96 only), Sinumerik `G96 LIMS=<limit> SCC[X]` (X the transverse axis the speed follows); the
 // S word (m/min) follows from the spindle_speed record into the same block; `G97` for constant
 // rpm. ISO lathes: the limit as G50 S (system A) / G92 S (B) in a block of its own, then G96 S.
-// Other ISO targets are refused: a Fanuc/808D G96 needs a lathe. The written program is in machine coordinates, so its X0 must be the spindle
-// axis the surface speed is measured from.
+// Other ISO targets are refused: a Fanuc/808D G96 needs a lathe. The written program's X0 must be
+// the spindle axis the surface speed is measured from (r.value2 is in written coordinates here:
+// not 0 when a tool X offset or a frame stays in the positions, EmitterFrame.cpp).
 void Emitter::spindleMode(const MotionRecord &r) {
   auto refuse = [&](const std::string &why) {
     diags_.error(r.loc, "the [" + st_.section + "] emitter " + why + ": " + printMotionRecord(r), "unsupported-code");
@@ -144,8 +145,8 @@ void Emitter::spindleMode(const MotionRecord &r) {
   if (css && !linuxcnc && !latheIso && st_.target != Target::Sinumerik)
     return refuse("writes constant surface speed (G96) only for LinuxCNC, Sinumerik and lathes");
   if (css && std::fabs(r.value2) > 1e-9)
-    return refuse("writes machine coordinates, whose X0 is not the spindle axis constant surface speed measures from "
-                  "(it is at machine X" + std::to_string(r.value2) + ")");
+    return refuse("writes positions whose X0 is not the spindle axis constant surface speed measures from "
+                  "(it is at written X" + std::to_string(r.value2) + ": a tool X offset or frame kept in the positions)");
   if (r.ivalue == 2) return;
   std::string limit;
   if (r.value > 0 && !number(r.value, WordClass::Speed, "", r, limit)) return;

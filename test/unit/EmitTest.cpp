@@ -153,7 +153,7 @@ TEST(EmitSinumerik, HeaderNumberingModalSuppression) {
   Emit e;
   EXPECT_EQ(e.run(Target::Sinumerik, basicStream(), "PART1"),
             "; PART1\n"
-            "N10 G71 G90 G17 G94 G500\n"
+            "N10 G71 G90 G17 G94 G54\n"
             "N20 G0 X10 Y20 Z5\n"
             "N30 G1 Z-1 F200\n"
             "N40 X30\n"
@@ -181,9 +181,9 @@ TEST(EmitSinumerik, SourceBlockNumbersAndNoNumbers) {
   Stream s;
   s.move(RecordKind::Rapid, 1, 0, 0).blockNumber = 7;
   s.move(RecordKind::Rapid, 2, 0, 0);
-  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G500\nN7 G0 X1\nX2\nM30\n");
+  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G54\nN7 G0 X1\nX2\nM30\n");
   e.set("emit.sinumerik", "block_numbers", "off");
-  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G500\nG0 X1\nX2\nM30\n");
+  EXPECT_EQ(e.run(Target::Sinumerik, s), "G71 G90 G17 G94 G54\nG0 X1\nX2\nM30\n");
 }
 
 TEST(EmitISO, ArcIJKAndRadiusForms) {
@@ -223,7 +223,7 @@ TEST(EmitSinumerik, ArcRadiusAndHelixTurns) {
   e.set("emit.sinumerik", "arc_style", "r");
   e.set("emit.sinumerik", "block_numbers", "off");
   EXPECT_EQ(e.run(Target::Sinumerik, s),
-            "G71 G90 G17 G94 G500\n"
+            "G71 G90 G17 G94 G54\n"
             "G0 X10\n"
             "G3 X-10 Z-2 CR=10 F100\n"
             "G2 Z-8 I10 J0 TURN=2\n"
@@ -376,7 +376,7 @@ TEST(EmitBoth, ToolSpindleCoolant) {
   Stream s;
   s.state(RecordKind::ToolSelect, 3);
   s.state(RecordKind::ToolChange, 3);
-  s.state(RecordKind::ToolLength, 0, 42.5);
+  s.state(RecordKind::ToolLength, 0, 42.5);  // no H number: the length stays in the positions
   s.state(RecordKind::SpindleSpeed, 0, 1200);
   s.state(RecordKind::SpindleCW);
   s.state(RecordKind::CoolantFlood, 1);
@@ -396,6 +396,7 @@ TEST(EmitBoth, ToolSpindleCoolant) {
             "%\nO0001\n"
             "T3 M6\n"
             "S1200 M3 M8\n"
+            "(ncc: from here the positions include the tool length: no code for it on this target)\n"
             "G0 Z5.\n"
             "T4 M5 M9\n"
             "M7\n"
@@ -408,6 +409,7 @@ TEST(EmitBoth, ToolSpindleCoolant) {
   EXPECT_EQ(sin.run(Target::Sinumerik, s),
             "T3 D0 M6\n"
             "S1200 M3 M8\n"
+            "; ncc: from here the positions include the tool length: no code for it on this target\n"
             "G0 Z5\n"
             "T4 M5 M9\n"
             "M7\n"
@@ -531,6 +533,7 @@ TEST(EmitBoth, FormatAndCodeOverrides) {
   s.state(RecordKind::ToolSelect, 5);
   s.move(RecordKind::Rapid, 1.5, 0, 0);
   s.move(RecordKind::Linear, 2, 0, 0, 99.6);
+  // Without set-up blocks the controller's reset selection (G54) is taken to be in force.
   EXPECT_EQ(e.run(Target::ISO, s), "%\nO0001\nT05\nG00 X1.500\nG01 X2.000 F100\nM30\n%\n");
 }
 
@@ -552,7 +555,7 @@ TEST(EmitBoth, StreamsToFile) {
   size_t n = std::fread(buf, 1, sizeof buf - 1, f);
   std::fclose(f);
   EXPECT_EQ(std::string(buf, n),
-            "N10 G71 G90 G17 G94 G500\nN20 G0 X10 Y20 Z5\nN30 G1 Z-1 F200\nN40 X30\nN50 X30.25\nN60 M30\n");
+            "N10 G71 G90 G17 G94 G54\nN20 G0 X10 Y20 Z5\nN30 G1 Z-1 F200\nN40 X30\nN50 X30.25\nN60 M30\n");
 }
 
 TEST(EmitBoth, DefaultMillFileKeys) {
@@ -569,13 +572,13 @@ TEST(EmitBoth, DefaultMillFileKeys) {
                       {"format.X", "2"}, {"format.F", "1"}, {"format.CR", "3"}, {"line_ending", "crlf"}})
     e.set("emit.sinumerik", k, v);
   EXPECT_EQ(e.run(Target::Sinumerik, s, "parts/1234.mpf"),
-            "; ncc output\r\n; 1234.mpf\r\nN10 G71 G90 G17 G94 G500\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
+            "; ncc output\r\n; 1234.mpf\r\nN10 G71 G90 G17 G94 G54\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
   EXPECT_TRUE(e.ok);
   EXPECT_EQ(e.diags.warningCount(), 0u);
   // Without an end record the footer's M30 ends the program.
   s.recs.pop_back();
   EXPECT_EQ(e.run(Target::Sinumerik, s, ""),
-            "; ncc output\r\nN10 G71 G90 G17 G94 G500\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
+            "; ncc output\r\nN10 G71 G90 G17 G94 G54\r\nG0 X1.23\r\nN20 G1 X2 F100\r\nM30\r\n");
   Emit iso;
   iso.set("emit.iso", "block_numbers", "false");
   EXPECT_EQ(iso.run(Target::ISO, s, "/x/1234.nc"), "%\nO1234\nG21\nG90 G17 G94 G54\nG0 X1.235\nG1 X2. F99.96\nM30\n%\n");

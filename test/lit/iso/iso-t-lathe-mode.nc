@@ -50,12 +50,12 @@ M30
 ; RUN: %ncc compile %s --machine=%srcroot/examples/machines/lathe.toml --emit=motion -o %t.motion
 ; RUN: %ncc compile %t.motion --emit=motion | FileCheck %s --check-prefix=BACK
 ; BACK: tool_length 61.98 H2 X12.01 @2:1
-; Translated for the lathe (docs/EMIT.md "Lathes"): machine coordinates with the work offset and
-; the tool's offsets in them (X 20 + 12.01 as a diameter), T0200 (offset 00).
+; Translated for the lathe (docs/EMIT.md "Lathes"): G54 coordinates (the offset is written) with
+; the tool's offsets in them (X 20 + 12.01 as a diameter, Z 2 + 61.98), T0200 (offset 00).
 ; RUN: %ncc translate %s --machine=%srcroot/examples/machines/lathe.toml --to=iso | FileCheck %s --check-prefix=TRANSLATE
 ; TRANSLATE: N20 G18 G98 G54
 ; TRANSLATE: T0200
-; TRANSLATE: N50 G0 X64.02 Z-386.02
+; TRANSLATE: N50 G0 X64.02 Z63.98
 ; The JSONL trace carries the X offset too.
 ; RUN: %ncc run %s --machine=%srcroot/examples/machines/lathe.toml --trace=jsonl | FileCheck %s --check-prefix=JSONL
 ; JSONL: {"kind":"tool_length","file":1,"line":2,"col":1,"value":61.98,"ivalue":2,"value2":12.01}

@@ -1,0 +1,35 @@
+// Private to backends/emit: work offsets, local shifts and tool length compensation in the
+// emitted program (EmitterFrame.cpp, docs/EMIT.md "Work offsets", "Tool length"). The stream is
+// in machine coordinates; the written program selects the source's work offset, writes its
+// shift (G52 / TRANS) and its tool length (G43 H / D), and its positions are the machine ones
+// minus what those codes add on the target. What a target cannot express stays in the positions
+// ("baked"), which a comment in the program says.
+#pragma once
+#include "ir/MotionIR.h"
+
+#include <string>
+
+namespace ncc::emit::detail {
+
+// What the source program has in force (from FrameChange, ToolLength and ToolChange records).
+struct SourceFrame {
+  int selection = 1;        // the FrameChange `wcs`: 1..9 G54…, 0 none
+  FrameMatrix matrix{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  AxisShift axisShift{};    // A B C U V W
+  bool started = false;     // a FrameChange was seen (before it: the machine's G54)
+  double toolZ = 0, toolX = 0;
+  int toolH = 0;            // the ToolLength record's H (Sinumerik D: the spindle tool)
+  int spindleTool = 0;
+};
+
+// What the written program has in force, and the translation it adds to its positions.
+struct WrittenFrame {
+  int selection = 1;           // the work offset the set-up (else the reset state, G54) or a block selected
+  std::array<double, 3> shift{};  // G52 / TRANS X Y Z as the target reads them back
+  double toolZ = 0;            // the tool length the written G43 H / D adds on Z
+  int toolWord = 0;            // the H (ISO) or D (Sinumerik) number written, 0 none
+  AxisVec offset{};            // machine = written position + offset, per axis
+  std::string baked;           // what the positions hold that no code says (the last note written)
+};
+
+}  // namespace ncc::emit::detail

@@ -1,0 +1,20 @@
+(tool length compensation: G43 H, another tool's H, G49, a changed table entry)
+G21 G90 G17 G94 G54
+T1 M6
+G43 H1
+G0 X0 Y0 Z50
+G1 Z-5 F300
+T2 M6
+G43 H2
+G0 Z50
+G1 X10 Z-3 F250
+G43 H3
+G0 Z40
+G49
+G0 Z100
+G10 L10 P2 R90
+G43 H2
+G0 Z30
+G49
+G0 Z200
+M30
