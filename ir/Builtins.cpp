@@ -16,7 +16,7 @@
 
 namespace ncc {
 
-static constexpr double kDeg = M_PI / 180.0;
+static constexpr double kDeg = kRadiansPerDegree;
 
 extern "C" {
 double ncc_builtin_sin(const double *a) { return std::sin(num(a[0]) * kDeg); }

@@ -9,6 +9,9 @@ namespace ncc {
 
 class ValuePool;
 
+// Degrees to radians for the trigonometric builtins (the JIT inlines SIN and COS with it).
+inline constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
 // Numeric builtins: num() arguments (vacant = 0), a double result; NaN = domain error.
 using BuiltinFn = double (*)(const double *args);
 // String builtins (ir/Strings.h): the raw argument values (string handles or numbers), n of

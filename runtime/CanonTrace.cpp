@@ -62,7 +62,7 @@ char *CanonTraceWriter::room(size_t n) {
   return buf_.data();
 }
 
-char *CanonTraceWriter::axes(char *p, const double *v, int n) {
+inline char *CanonTraceWriter::axes(char *p, const double *v, int n) {
   for (int i = 0; i < n; ++i) {
     if (i) *p++ = ',', *p++ = ' ';
     uint64_t bits;
@@ -83,7 +83,7 @@ char *CanonTraceWriter::axes(char *p, const double *v, int n) {
   return p;
 }
 
-char *CanonTraceWriter::begin(int64_t n, size_t after) {
+inline char *CanonTraceWriter::begin(int64_t n, size_t after) {
   // "%5d " then the N column: "N....." + blank, or N and the number left-aligned in 6 columns.
   // The counter counts up in its text; the N column is formatted when the block changes.
   int i = kSeqEnd - 1;
@@ -113,7 +113,7 @@ char *CanonTraceWriter::begin(int64_t n, size_t after) {
   return p + blockColLen_;
 }
 
-void CanonTraceWriter::end(char *p) {
+inline void CanonTraceWriter::end(char *p) {
   *p++ = '\n';
   len_ = (size_t)(p - buf_.data());
   if (len_ >= kFlushAt && out_) writeOut();
@@ -189,7 +189,17 @@ void CanonTraceWriter::thread(const MotionRecord &r) {
   end(p);
 }
 
+// The trace's usual line (every line of a flat program, a loop's every move) without the
+// general dispatch below: nothing to stop, start or re-enable before or after it.
 void CanonTraceWriter::record(const MotionRecord &r) {
+  if (r.kind > RecordKind::Linear || !started_ || finished_ || halted_ || sync_ || enableAfterMove_) return other(r);
+  char *p = put(begin(r.blockNumber, kMoveMax), r.kind == RecordKind::Rapid ? "STRAIGHT_TRAVERSE(" : "STRAIGHT_FEED(");
+  p = axes(p, r.end.data(), writtenAxes({&r.end}));
+  *p++ = ')';
+  end(p);
+}
+
+void CanonTraceWriter::other(const MotionRecord &r) {
   if (finished_ || halted_) return;
   if (!started_) preamble();
   const int64_t n = r.blockNumber;

@@ -26,6 +26,8 @@ public:
   bool flush();
 
 private:
+  // Every record but the common one, a straight move outside a thread (record() does that one).
+  void other(const MotionRecord &r);
   // Lines are formatted straight into buf_: begin() writes the "%5d N..... " prefix where the
   // line goes and end() the newline. room() makes space for n characters when the buffer is full
   // (writes it out, grows it for a huge line) and returns where they go.

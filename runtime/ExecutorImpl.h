@@ -51,7 +51,7 @@ private:
 
 // Where the executor's records go: the sinks, or a contour capture (ExecutorContour.cpp) while
 // one is active, so every path (moves, corners, compensation) is captured alike.
-class RouteSink : public MotionSink {
+class RouteSink final : public MotionSink {
 public:
   explicit RouteSink(MotionSink &out) : out(out) {}
   MotionSink &out;

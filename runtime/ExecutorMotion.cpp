@@ -199,7 +199,7 @@ void Executor::Impl::plainMove(const MachineCmd &c) {
     lastPath.kind = k, lastPath.start = r.start, lastPath.end = to;
   st.position = to;
   threadChain = false;
-  sink.record(r);
+  route.record(r);  // `sink` is route: called on the final class, not through the base
 }
 
 bool Executor::Impl::arc(const MachineCmd &c, bool cw) {

@@ -532,6 +532,11 @@ static const std::pair<std::string_view, Intrinsic::ID> kInlineBuiltins[] = {
     {"ncc_builtin_fix", Intrinsic::floor},  {"ncc_builtin_fup", Intrinsic::ceil},
     {"ncc_builtin_trunc", Intrinsic::trunc}};
 
+// SIN and COS: the same product in degrees and libm's function (ir/Builtins.cpp), as intrinsics
+// so that a SIN and a COS of one angle become one sincos call (optimizeModule's pairSinCos).
+static const std::pair<std::string_view, Intrinsic::ID> kDegreeBuiltins[] = {{"ncc_builtin_sin", Intrinsic::sin},
+                                                                            {"ncc_builtin_cos", Intrinsic::cos}};
+
 // Builtins get num() arguments; a NaN result is the eval engine's domain error.
 Val Codegen::callBuiltin(const Expr &e) {
   if (isExistsCall(e.str, e.args.size()) && e.args[0]) {
@@ -573,6 +578,9 @@ Val Codegen::callBuiltin(const Expr &e) {
   Value *r = nullptr;
   for (auto &[symbol, id] : kInlineBuiltins)
     if (vals.size() == 1 && symbol == bi->symbol) r = B.CreateUnaryIntrinsic(id, vals[0]);
+  for (auto &[symbol, id] : kDegreeBuiltins)
+    if (vals.size() == 1 && symbol == bi->symbol)
+      r = B.CreateUnaryIntrinsic(id, B.CreateFMul(vals[0], ConstantFP::get(dblTy, kRadiansPerDegree)));
   if (!r) {
     for (unsigned i = 0; i < vals.size() && i < kMaxBuiltinArgs; ++i) B.CreateStore(vals[i], B.CreateConstGEP1_32(dblTy, argSlot, i));
     r = B.CreateCall(builtins_.at(bi->name), {argSlot});

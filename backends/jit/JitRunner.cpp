@@ -11,6 +11,9 @@
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
+#include <llvm/IR/Dominators.h>
+#include <llvm/IR/InstIterator.h>
+#include <llvm/IR/IntrinsicInst.h>
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 #include <llvm/MC/TargetRegistry.h>
@@ -70,6 +73,32 @@ std::unique_ptr<Module> buildHostModule(const ir::Module &m, LLVMContext &ctx, T
   return mod;
 }
 
+// SIN[a] and COS[a] of the same angle (a rotation: X[r * COS[a]] Y[r * SIN[a]]): the code
+// generator makes one sincos call of a sin and a cos with one operand in one basic block, but
+// each builtin's domain check ends a block. Both intrinsics are pure, so the later one moves up
+// to right after the one that dominates it (glibc's sincos gives sin's and cos's bits).
+static void pairSinCos(Module &mod) {
+  for (Function &f : mod) {
+    if (f.isDeclaration()) continue;
+    std::vector<IntrinsicInst *> calls;
+    for (Instruction &i : instructions(f))
+      if (auto *c = dyn_cast<IntrinsicInst>(&i); c && (c->getIntrinsicID() == Intrinsic::sin || c->getIntrinsicID() == Intrinsic::cos))
+        calls.push_back(c);
+    if (calls.size() < 2) continue;
+    DominatorTree dt(f);
+    std::vector<bool> paired(calls.size());
+    for (size_t i = 0; i < calls.size(); ++i)
+      for (size_t j = i + 1; j < calls.size() && !paired[i]; ++j) {
+        IntrinsicInst *a = calls[i], *b = calls[j];
+        if (paired[j] || a->getIntrinsicID() == b->getIntrinsicID() || a->getArgOperand(0) != b->getArgOperand(0)) continue;
+        if (dt.dominates(b, a)) std::swap(a, b);
+        if (!dt.dominates(a, b)) continue;
+        if (a->getParent() != b->getParent()) b->moveAfter(a);
+        paired[i] = paired[j] = true;
+      }
+  }
+}
+
 void optimizeModule(Module &mod, TargetMachine *tm, int level) {
   if (level <= 0) return;
   LoopAnalysisManager LAM;
@@ -84,6 +113,7 @@ void optimizeModule(Module &mod, TargetMachine *tm, int level) {
   PB.crossRegisterProxies(LAM, FAM, CGAM, MAM);
   OptimizationLevel lvl = level == 1 ? OptimizationLevel::O1 : level == 2 ? OptimizationLevel::O2 : OptimizationLevel::O3;
   PB.buildPerModuleDefaultPipeline(lvl).run(mod, MAM);
+  pairSinCos(mod);
 }
 
 // Every external symbol generated code may reference (runtime/ncrt.h), with its address here.
