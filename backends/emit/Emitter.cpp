@@ -358,7 +358,7 @@ std::vector<std::string> Emitter::coolantCodes() { return detail::coolantCodes(s
 
 void Emitter::record(const MotionRecord &source) {
   if (finished_) return;
-  if (!inNativeCycle_ && frameRecord(source)) return;
+  if (!skipped_.active && frameRecord(source)) return;
   MotionRecord shifted;
   const MotionRecord &r = toWritten(source, shifted);
   source_ = &source;
