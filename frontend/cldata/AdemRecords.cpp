@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -161,6 +162,7 @@ private:
   }
   // After an error: past the next ';', or to the next line that starts a record with [code].
   void resync() {
+    if (atRecordStart()) return;
     while (i_ < t_.size()) {
       if (t_[i_] == ';') return advance();
       if (t_[i_] == '\n') {
@@ -174,6 +176,13 @@ private:
     }
   }
   bool digit(char c) const { return c >= '0' && c <= '9'; }
+  // At a '[' with only an ordinal or blanks before it on its line: a record starts here.
+  bool atRecordStart() const {
+    if (peek() != '[') return false;
+    for (size_t k = lineStart_; k < i_; ++k)
+      if (!digit(t_[k]) && t_[k] != ' ' && t_[k] != '\t') return false;
+    return true;
+  }
   std::string text(std::string_view raw) const { return utf8_ ? std::string(raw) : ademToUtf8(raw); }
   bool integer(int &v) {
     size_t b = i_;
@@ -254,6 +263,7 @@ private:
     for (;;) {
       skipBlanks(true);
       if (i_ >= t_.size() || peek() == ';') return true;
+      if (atRecordStart()) return fail(loc(), fmt::format("record [{}] does not end with ';' before the next record", r.code));
       SourceLoc vl = loc();
       int explicitIndex = -1;
       if ((peek() == 'F' || peek() == 'f') && (peek(1) == 'R' || peek(1) == 'r') && peek(2) == '[') {
@@ -318,7 +328,7 @@ private:
   // the number after it.
   bool word(AdemRecord &r, const std::string &w, SourceLoc wl) {
     const AdemWord *aw = ademWord(r.code, ademNormalise(w));
-    if (!aw) return fail(wl, fmt::format("'{}' is not a value of record [{}]", w, r.code));
+    if (!aw) return fail(wl, fmt::format("'{}' is neither a number nor a value of record [{}]", w, r.code));
     if (aw->fr) r.fr[aw->fr] = AdemField{false, aw->value, {}, wl};
     if (aw->numberTo) {
       skipBlanks(true);
@@ -376,7 +386,6 @@ bool whole(double d) { return std::isfinite(d) && d == std::floor(d); }
 bool looksLikeAdemBinary(std::string_view bytes) {
   // A listing is text: no NUL. A binary record's first cell (its length, a small whole number
   // as a double) has NUL bytes in its low half.
-  if (bytes.size() < 3 * kCell) return false;
   return bytes.substr(0, 64).find('\0') != std::string_view::npos;
 }
 
@@ -480,6 +489,8 @@ std::string writeAdemListing(const std::vector<AdemRecord> &records) {
       return s + "'";
     };
     for (auto &[i, f] : r.fr) {
+      if (lay && !f.isText && f.num == 0 && !ademFieldIsText(lay, i) && std::find(order.begin(), order.end(), i) == order.end())
+        continue;  // a binary record's padding before fields such as FR[10]: the binary has it anyway
       // In the layout's order while the fields follow it, by index after that.
       bool inOrder = lay ? (k < order.size() && order[k] == i) : i == (int)k + 3;
       if (inOrder && !freeWords(lay)) ++k, o += " " + value(f);
