@@ -163,8 +163,17 @@ private:
   // After an error: past the next ';', or to the next line that starts a record with [code].
   void resync() {
     if (atRecordStart()) return;
+    if (nextLine_) {
+      nextLine_ = false;
+      while (i_ < t_.size() && t_[i_] != '\n') advance();
+      return;
+    }
     while (i_ < t_.size()) {
       if (t_[i_] == ';') return advance();
+      if (t_[i_] == '$' && peek(1) == '$') {  // a comment: its ';' ends nothing
+        while (i_ < t_.size() && t_[i_] != '\n') advance();
+        continue;
+      }
       if (t_[i_] == '\n') {
         advance();
         size_t k = i_;
@@ -231,7 +240,10 @@ private:
       if (!values(r, lay)) return false;
     }
     skipBlanks(false);
-    if (peek() != ';') return fail(loc(), fmt::format("record [{}] does not end with ';'", r.code));
+    if (peek() != ';') {
+      nextLine_ = true;  // the record ended with its line: the next line is the next record
+      return fail(r.loc, fmt::format("record [{}] does not end with ';'", r.code));
+    }
     advance();
     return true;
   }
@@ -350,6 +362,7 @@ private:
   std::vector<AdemError> &errs_;
   bool utf8_;
   size_t i_ = 0, lineStart_ = 0;
+  bool nextLine_ = false;
   uint32_t line_ = 1;
 };
 }  // namespace
