@@ -396,21 +396,12 @@ const AdemWord *ademWord(int code, const std::string &normalised) {
 }
 
 bool parseAdemProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
-  out.dialect = ir::Dialect::CLData;
-  out.name = sm.name(fileId);
-  out.functions.clear();
-  ir::Function fn;
-  fn.name = "main";
-  fn.loc = {fileId, 1, 1};
+  ir::Function fn = beginClModule(sm, fileId, out);
   std::string_view text = sm.text(fileId);
   std::vector<AdemError> errs;
   bool binary = looksLikeAdemBinary(text);
   auto recs = binary ? readAdemBinary(text, fileId, errs) : readAdemListing(text, fileId, errs);
-  bool ok = true;
-  for (auto &e : errs) {
-    if (e.warning) diags.warning(e.loc, e.message, "lenient-syntax");
-    else diags.error(e.loc, e.message, "syntax"), ok = false;
-  }
+  bool ok = reportAdemErrors(diags, errs);
   std::vector<size_t> bytes;  // by ordinal (the records with errors are not in recs)
   for (auto &r : recs)
     if (binary) {

@@ -367,6 +367,15 @@ private:
 };
 }  // namespace
 
+bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors) {
+  bool ok = true;
+  for (auto &e : errors) {
+    if (e.warning) d.warning(e.loc, e.message, "lenient-syntax");
+    else d.error(e.loc, e.message, "syntax"), ok = false;
+  }
+  return ok;
+}
+
 std::vector<AdemRecord> readAdemListing(std::string_view text, uint32_t file, std::vector<AdemError> &errors) {
   return ListingReader(text, file, errors).run();
 }
@@ -498,7 +507,8 @@ std::string writeAdemListing(const std::vector<AdemRecord> &records) {
     auto value = [](const AdemField &f) {
       if (!f.isText) return fmt::format("{}", f.num);  // the shortest text that reads back to the same double
       std::string s = "'";
-      for (char c : f.text) s += c == '\'' ? std::string("''") : std::string(1, c);
+      for (char c : f.text)  // a line break would end the text: written as a blank
+        s += c == '\'' ? std::string("''") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
       return s + "'";
     };
     for (auto &[i, f] : r.fr) {

@@ -66,6 +66,8 @@ struct AdemError {
   std::string message;
   bool warning = false;
 };
+// Reports them; false when one was an error.
+bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors);
 
 // The text listing. Diagnostics point at the record, or at the value that is wrong.
 std::vector<AdemRecord> readAdemListing(std::string_view text, uint32_t file, std::vector<AdemError> &errors);

@@ -14,6 +14,16 @@ namespace {
 constexpr double kTol = 0.001;  // mm: positions and radii that must agree (scaled in inch)
 }
 
+ir::Function beginClModule(SourceManager &sm, uint32_t file, ir::Module &out) {
+  out.dialect = ir::Dialect::CLData;
+  out.name = sm.name(file);
+  out.functions.clear();
+  ir::Function fn;
+  fn.name = "main";
+  fn.loc = {file, 1, 1};
+  return fn;
+}
+
 void ClPath::begin(SourceLoc l) {
   emit(OpKind::Mode, l).set("units", Expr::symbol("mm")).set("distance", Expr::symbol("absolute")).set("plane", Expr::symbol("xy"));
 }

@@ -23,6 +23,10 @@ struct ClArc {
   SourceLoc loc;  // where the circle was given (its start point is checked there)
 };
 
+// The module a CL file lowers to: dialect, name, and its one function "main" (returned, to be
+// filled and then pushed into out.functions).
+ir::Function beginClModule(SourceManager &sm, uint32_t file, ir::Module &out);
+
 // How a front end names its records in the shared diagnostics.
 struct ClWords {
   const char *feed;    // "FEDRAT", "[23]"

@@ -373,12 +373,7 @@ bool Lowerer::run() {
 }  // namespace
 
 bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
-  out.dialect = ir::Dialect::CLData;
-  out.name = sm.name(fileId);
-  out.functions.clear();
-  ir::Function fn;
-  fn.name = "main";
-  fn.loc = {fileId, 1, 1};
+  ir::Function fn = beginClModule(sm, fileId, out);
   Lowerer lw(sm, fileId, diags, fn);
   bool ok = lw.run();
   out.functions.push_back(std::move(fn));

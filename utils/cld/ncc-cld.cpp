@@ -35,12 +35,7 @@ int main(int argc, char **argv) {
   std::vector<cld::AdemError> errs;
   std::string_view text = sm.text(f);
   auto recs = cld::looksLikeAdemBinary(text) ? cld::readAdemBinary(text, f, errs) : cld::readAdemListing(text, f, errs);
-  bool bad = false;
-  for (auto &e : errs) {
-    if (e.warning) diags.warning(e.loc, e.message, "lenient-syntax");
-    else diags.error(e.loc, e.message, "syntax"), bad = true;
-  }
-  if (bad) return 1;
+  if (!cld::reportAdemErrors(diags, errs)) return 1;
   std::string data = mode == "--binary" ? cld::writeAdemBinary(recs) : cld::writeAdemListing(recs);
   if (out.empty()) return std::fwrite(data.data(), 1, data.size(), stdout) == data.size() ? 0 : 1;
   std::string err;
