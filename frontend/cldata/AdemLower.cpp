@@ -374,19 +374,38 @@ const AdemLayout *ademLayout(int code) {
   return c ? &c->layout : nullptr;
 }
 
+namespace {
+// Every name of every code, normalised once: (name, code) in the table's order.
+const std::vector<std::pair<std::string, int>> &allNames() {
+  static const std::vector<std::pair<std::string, int>> names = [] {
+    std::vector<std::pair<std::string, int>> v;
+    for (auto &c : AdemLowerer::kCodes) {
+      std::string_view all = c.layout.names;
+      for (size_t b = 0; b < all.size();) {
+        size_t e = all.find('|', b);
+        if (e == std::string_view::npos) e = all.size();
+        v.emplace_back(ademNormalise(all.substr(b, e - b)), c.layout.code);
+        b = e + 1;
+      }
+    }
+    return v;
+  }();
+  return names;
+}
+}  // namespace
+
 int ademCodeByName(std::string_view utf8) {
   std::string n = ademNormalise(utf8);
-  if (n.empty()) return 0;
-  for (auto &c : AdemLowerer::kCodes) {
-    std::string_view all = c.layout.names;
-    for (size_t b = 0; b < all.size();) {
-      size_t e = all.find('|', b);
-      if (e == std::string_view::npos) e = all.size();
-      if (ademNormalise(all.substr(b, e - b)) == n) return c.layout.code;
-      b = e + 1;
-    }
-  }
+  for (auto &[name, code] : allNames())
+    if (!n.empty() && name == n) return code;
   return 0;
+}
+
+bool ademNameOf(int code, std::string_view utf8) {
+  std::string n = ademNormalise(utf8);
+  for (auto &[name, c] : allNames())
+    if (c == code && name == n) return true;
+  return false;
 }
 
 const AdemWord *ademWord(int code, const std::string &normalised) {

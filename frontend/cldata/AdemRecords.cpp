@@ -203,7 +203,7 @@ private:
 
   bool record(AdemRecord &r) {
     r.loc = loc();
-    if (digit(peek())) integer(r.obj);  // the route object's ordinal (FR[2])
+    if (digit(peek()) && !integer(r.obj)) return fail(r.loc, "the route object's ordinal has more than 9 digits");  // FR[2]
     skipBlanks(false);
     bool coded = false;
     if (peek() == '[') {
@@ -228,7 +228,7 @@ private:
       if (!coded) {
         if (!byName) return fail(nl, fmt::format("'{}' is not the name of a record ncc knows; write its code as [code]", name));
         r.code = byName;
-      } else if (byName && byName != r.code && !nameOf(r.code, name)) {
+      } else if (byName && byName != r.code && !ademNameOf(r.code, name)) {
         errs_.push_back({nl, fmt::format("'{}' names record [{}], not [{}]: the code counts", name, byName, r.code), true});
       }
     } else if (!coded) {
@@ -246,20 +246,6 @@ private:
     }
     advance();
     return true;
-  }
-
-  static bool nameOf(int code, const std::string &name) {
-    const AdemLayout *l = ademLayout(code);
-    if (!l) return false;
-    std::string n = ademNormalise(name);
-    std::string_view all = l->names;
-    for (size_t b = 0; b <= all.size();) {
-      size_t e = all.find('|', b);
-      if (e == std::string_view::npos) e = all.size();
-      if (ademNormalise(all.substr(b, e - b)) == n) return true;
-      b = e + 1;
-    }
-    return false;
   }
 
   bool values(AdemRecord &r, const AdemLayout *lay) {

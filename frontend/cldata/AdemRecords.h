@@ -43,6 +43,7 @@ const AdemLayout *ademLayout(int code);
 // The code a record name stands for (names compared case-insensitively, Cyrillic look-alike
 // letters read as Latin ones); 0 when no record has that name.
 int ademCodeByName(std::string_view utf8);
+bool ademNameOf(int code, std::string_view utf8);  // one of the code's names
 // A value word of the viewer's form (`4 [35] Инструмент/Фреза R 5.000000 Позиция 2;`): it sets
 // FR[fr] to `value` (fr 0: nothing), and the number after it goes to FR[numberTo] (0: none).
 struct AdemWord {
