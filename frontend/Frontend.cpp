@@ -1,5 +1,6 @@
 #include "frontend/Frontend.h"
 
+#include "frontend/cldata/AdemRecords.h"
 #include "frontend/cldata/CldFrontend.h"
 #include "frontend/heidenhain/HeiFrontend.h"
 #include "frontend/iso/IsoFrontend.h"
@@ -22,6 +23,7 @@ static const SourceKindInfo kKinds[] = {
     {SourceKind::Sinumerik, "sinumerik", ".mpf .spf"},
     {SourceKind::Heidenhain, "heidenhain", ".h"},
     {SourceKind::CLData, "apt", ".cl .cls .apt .aptsource"},  // APT CL text (docs/APT.md); .cl before .cls: the first match counts
+    {SourceKind::Adem, "adem", ".cld"},  // ADEM CLData, listing or binary (docs/CLDATA.md)
     {SourceKind::NCIR, "ncir", ".ncir"},
     {SourceKind::Motion, "motion", ".motion"},
 };
@@ -42,6 +44,24 @@ bool sourceKindFromName(std::string_view s, SourceKind &out) {
   return false;
 }
 
+// An ADEM listing: its first record (after `$$` comment lines) starts `[code]` or `<n>[code]`.
+static bool looksLikeAdemListing(std::string_view head) {
+  size_t i = 0;
+  for (;;) {
+    while (i < head.size() && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n')) ++i;
+    if (head.substr(i, 2) != "$$") break;
+    size_t nl = head.find('\n', i);
+    if (nl == std::string_view::npos) return false;
+    i = nl + 1;
+  }
+  while (i < head.size() && std::isdigit((unsigned char)head[i])) ++i;
+  while (i < head.size() && head[i] == ' ') ++i;
+  if (i >= head.size() || head[i] != '[') return false;
+  size_t d = ++i;
+  while (i < head.size() && std::isdigit((unsigned char)head[i])) ++i;
+  return i > d && i < head.size() && head[i] == ']';
+}
+
 SourceKind detectSourceKind(const std::string &path, std::string_view text) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return (char)std::tolower(c); });
@@ -53,6 +73,7 @@ SourceKind detectSourceKind(const std::string &path, std::string_view text) {
         return i.kind;
     }
   std::string_view head = text.substr(0, 4096);
+  if (cld::looksLikeAdemBinary(head) || looksLikeAdemListing(head)) return SourceKind::Adem;
   if (head.find("BEGIN PGM") != std::string_view::npos) return SourceKind::Heidenhain;
   if (head.rfind("module \"", 0) == 0) return SourceKind::NCIR;
   if (head.find("GOTO/") != std::string_view::npos || head.rfind("PARTNO", 0) == 0) return SourceKind::CLData;
@@ -120,6 +141,7 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
     return hei::parseHeidenhainProgram(sm, file, ho, diags, out);
   }
   case SourceKind::CLData: return cld::parseAptProgram(sm, file, diags, out);
+  case SourceKind::Adem: return cld::parseAdemProgram(sm, file, diags, out);
   case SourceKind::NCIR: return ir::parseModule(sm.text(file), file, sm, diags, out);
   case SourceKind::Motion:
     diags.error({}, fmt::format("{}: Motion IR text is an executed program without NC IR: only ncc run, ncc "

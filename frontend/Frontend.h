@@ -39,7 +39,7 @@ struct FrontendOptions {
 // What a file holds: a dialect, or textual NC IR.
 // Motion: Motion IR text (.motion), the executed form: the driver feeds it to the sinks directly
 // (ncc run, translate, compile --emit=motion); it has no NC IR, so parseProgram rejects it.
-enum class SourceKind : uint8_t { ISO, Sinumerik, Heidenhain, CLData, NCIR, Motion, Unknown };
+enum class SourceKind : uint8_t { ISO, Sinumerik, Heidenhain, CLData, Adem, NCIR, Motion, Unknown };
 const char *sourceKindName(SourceKind k);
 bool sourceKindFromName(std::string_view s, SourceKind &out);
 // From the extension first, then from the content.

@@ -1,5 +1,6 @@
-// APT CL text front end (ISO 4343-style cutter-location files, the postprocessor input of NX,
-// CATIA and Mastercam: .apt .cls .cl): records lowered to NC IR (docs/APT.md, docs/IR.md §8.4).
+// CL data front ends: APT CL text (ISO 4343-style cutter-location files, the postprocessor input
+// of NX, CATIA and Mastercam: .apt .cls .cl, docs/APT.md) and ADEM CLData (.cld, docs/CLDATA.md):
+// records lowered to NC IR (docs/IR.md §8.4).
 #pragma once
 #include "ir/Diagnostics.h"
 #include "ir/NCIR.h"
@@ -8,5 +9,7 @@ namespace ncc::cld {
 
 // Parses the file into `out` (functions[0] is "main"). False when an error was reported.
 bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out);
+// ADEM CLData (.cld): the text listing or the binary record file (docs/CLDATA.md).
+bool parseAdemProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out);
 
 }  // namespace ncc::cld

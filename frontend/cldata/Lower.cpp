@@ -1,7 +1,9 @@
-// The records lowered to NC IR, one handler per major word (kRecords). CL coordinates are
+// The APT records lowered to NC IR, one handler per major word (kTable). CL coordinates are
 // absolute tool-tip positions, so the front end knows where the tool is after each move and
-// checks arcs against it (docs/APT.md).
+// checks arcs against it (docs/APT.md); what each kind of record becomes is ClPath's, shared
+// with the ADEM CLData front end.
 #include "frontend/cldata/CldFrontend.h"
+#include "frontend/cldata/ClPath.h"
 #include "frontend/cldata/Records.h"
 
 #include <fmt/format.h>
@@ -17,10 +19,6 @@ using ir::OpKind;
 
 namespace {
 
-struct Vec3 {
-  double x = 0, y = 0, z = 0;
-};
-
 // CYCLE/ kinds and the library entry that does exactly the same (docs/APT.md "Cycles").
 struct CycleKind {
   const char *word;
@@ -35,9 +33,10 @@ const CycleKind kCycles[] = {
 const char *const kIgnored[] = {"PAINT", "DISPLY", "PLOT", "SEQNO", "INTOL", "OUTTOL", "TOLER", "CLEARP",
                                 "TOOLNO", "PITCH", "LINTOL", "PPLOT", "TRACUT_OFF", "OPNAME", "TPRINT"};
 
-class Lowerer {
+class Lowerer : ClPath {
 public:
-  Lowerer(SourceManager &sm, uint32_t file, Diagnostics &d, ir::Function &fn) : sm_(sm), file_(file), d_(d), body_(fn.body) {}
+  Lowerer(SourceManager &sm, uint32_t file, Diagnostics &d, ir::Function &fn)
+      : ClPath(d, fn.body, {"FEDRAT", "CIRCLE"}), sm_(sm), file_(file) {}
   bool run();
 
 private:
@@ -48,32 +47,11 @@ private:
   };
   static const Entry kTable[];
 
-  bool error(SourceLoc l, std::string msg, const char *rule = "unsupported-code") {
-    d_.error(l, std::move(msg), rule);
-    return false;
-  }
-  Op &emit(OpKind k, SourceLoc l) { return body_.emplace_back(k, l); }
-  void comment(std::string text, SourceLoc l) { emit(OpKind::Comment, l).set("text", Expr::string(std::move(text))); }
-  static ir::ExprPtr num(double v) { return Expr::number(v, ir::Type::Real); }
-  void setPlane(const char *p, SourceLoc l) {
-    if (plane_ == p) return;
-    plane_ = p;
-    emit(OpKind::Mode, l).set("plane", Expr::symbol(p));
-  }
-  void motion(const char *m, SourceLoc l) {
-    if (mode_ == m) return;
-    mode_ = m;
-    emit(OpKind::Mode, l).set("motion", Expr::symbol(m));
-  }
+  using ClPath::comment;
   // The numbers of a record; at least `min`, at most `max`.
   bool numbers(const Record &r, size_t min, size_t max, std::vector<double> &v, size_t from = 0);
   bool word(const Record &r, size_t i, std::string &out);
-  void emitFeed(SourceLoc l) {
-    emit(OpKind::Mode, l).set("feed_mode", Expr::symbol(perRev_ ? "per_rev" : "per_minute"));
-    emit(OpKind::Feed, l).set("value", num(feed_));
-  }
   bool moveTo(const Record &r, Vec3 p, bool rapid);
-  bool endArc(const Record &r, Vec3 p);
   bool cycleAt(const Record &r, Vec3 p);
 
   bool comment(const Record &r) { return comment(r.rest, r.loc), true; }
@@ -100,28 +78,13 @@ private:
   bool tlaxis(const Record &r);
   bool stop(const Record &r);
   bool delay(const Record &r);
-  bool end(const Record &r);
+  bool end(const Record &r) { return ClPath::end(r.loc), true; }
   bool msys(const Record &r);
 
   SourceManager &sm_;
   uint32_t file_;
-  Diagnostics &d_;
-  ir::Region &body_;
-  std::string mode_;
-  std::string plane_ = "xy";
   bool rapidNext_ = false;
-  bool inch_ = false;
-  bool ended_ = false;
-  bool feedSet_ = false;
-  bool perRev_ = false;  // the last FEDRAT's mode and value: a cycle's own feed ends with CYCLE/OFF
-  double feed_ = 0;
-  std::optional<Vec3> pos_;
-  struct Arc {
-    Vec3 c, axis;
-    double r;
-    SourceLoc loc;
-  };
-  std::optional<Arc> arc_;
+  std::optional<ClArc> arc_;  // a CIRCLE waiting for the GOTO that ends its arc
   struct Cycle {
     const CycleKind *kind;
     double depth, feed, clear;
@@ -141,8 +104,6 @@ const Lowerer::Entry Lowerer::kTable[] = {
     {"OPSTOP", &Lowerer::stop},   {"DELAY", &Lowerer::delay},   {"END", &Lowerer::end},
     {"FINI", &Lowerer::end},      {"MSYS", &Lowerer::msys},
 };
-
-constexpr double kTol = 0.001;  // mm: positions and radii that must agree (scaled in inch)
 
 bool Lowerer::numbers(const Record &r, size_t min, size_t max, std::vector<double> &v, size_t from) {
   if (r.params.size() < from + min || r.params.size() > from + max)
@@ -165,8 +126,7 @@ bool Lowerer::units(const Record &r) {
   std::string w;
   if (!word(r, 0, w)) return false;
   if (w != "MM" && w != "INCHES") return error(r.params[0].loc, fmt::format("UNITS/{}: MM or INCHES expected", w));
-  inch_ = w == "INCHES";
-  emit(OpKind::Mode, r.loc).set("units", Expr::symbol(inch_ ? "inch" : "mm"));
+  ClPath::units(w == "INCHES", r.loc);
   return true;
 }
 
@@ -179,11 +139,7 @@ bool Lowerer::loadtl(const Record &r) {
   std::vector<double> v;
   if (!numbers(r, 1, 1, v)) return false;
   if (v[0] < 1 || v[0] != std::floor(v[0])) return error(r.params[0].loc, "LOADTL needs a tool number (a whole number from 1)", "syntax");
-  auto t = Expr::number(v[0], ir::Type::Int);
-  emit(OpKind::ToolSelect, r.loc).set("value", std::move(t));
-  emit(OpKind::ToolChange, r.loc);
-  // CL points are tool-tip points: the tool's length is compensated.
-  emit(OpKind::ToolLength, r.loc).set("h", Expr::number(v[0], ir::Type::Int));
+  toolLoad((int)v[0], (int)v[0], r.loc);
   return true;
 }
 
@@ -195,14 +151,13 @@ bool Lowerer::cutter(const Record &r) {
 }
 
 bool Lowerer::moveTo(const Record &r, Vec3 p, bool rapid) {
-  if (arc_) return endArc(r, p);
+  if (arc_) {
+    ClArc a = *arc_;
+    arc_.reset();
+    return arc(r.loc, a, p);
+  }
   if (cycle_ && !rapid) return cycleAt(r, p);
-  if (!rapid && !feedSet_) return error(r.loc, "a feed move before any FEDRAT", "motion-without-feed");
-  motion(rapid ? "rapid" : "linear", r.loc);
-  Op &m = emit(OpKind::Move, r.loc);
-  m.set("X", num(p.x)).set("Y", num(p.y)).set("Z", num(p.z));
-  pos_ = p;
-  return true;
+  return line(r.loc, p, rapid);
 }
 
 bool Lowerer::from(const Record &r) {
@@ -256,18 +211,12 @@ bool Lowerer::fedrat(const Record &r) {
   if (!unit.empty() && !u) return error(r.loc, fmt::format("FEDRAT unit {}: MMPM, IPM, MMPR or IPR expected", unit));
   if (u && u->inch != inch_)
     return error(r.loc, fmt::format("FEDRAT/{} in a program in {}: the feed's unit must be the program's", unit, inch_ ? "inches" : "mm"));
-  if (*f <= 0) return error(r.loc, "FEDRAT must be positive", "bad-feed");
-  perRev_ = u && u->perRev;
-  feed_ = *f;
-  feedSet_ = true;
-  emitFeed(r.loc);
-  if (mode_ == "rapid") motion("linear", r.loc);
-  return true;
+  return feed(r.loc, *f, u && u->perRev);
 }
 
 bool Lowerer::spindl(const Record &r) {
   if (r.params.size() == 1 && r.params[0].text == "OFF") {
-    emit(OpKind::Spindle, r.loc).set("dir", Expr::symbol("stop"));
+    spindle(r.loc, "stop");
     return true;
   }
   std::optional<double> rpm;
@@ -280,20 +229,17 @@ bool Lowerer::spindl(const Record &r) {
   }
   if (!rpm || *rpm <= 0) return error(r.loc, "SPINDL needs a positive speed in rpm", "bad-speed");
   if (!dir) dir = "cw";  // ISO 4343: CLW is the default
-  emit(OpKind::Speed, r.loc).set("value", num(*rpm));
-  emit(OpKind::Spindle, r.loc).set("dir", Expr::symbol(dir));
+  spindleOn(r.loc, *rpm, dir);
   return true;
 }
 
 bool Lowerer::coolnt(const Record &r) {
   std::string w;
   if (!word(r, 0, w)) return false;
-  Op c(OpKind::Coolant, r.loc);
-  if (w == "ON" || w == "FLOOD") c.set("flood", Expr::symbol("on"));
-  else if (w == "MIST") c.set("mist", Expr::symbol("on"));
-  else if (w == "OFF") c.set("flood", Expr::symbol("off")).set("mist", Expr::symbol("off"));
+  if (w == "ON" || w == "FLOOD") coolant(r.loc, "flood", true);
+  else if (w == "MIST") coolant(r.loc, "mist", true);
+  else if (w == "OFF") coolant(r.loc, nullptr, false);
   else return error(r.params[0].loc, fmt::format("COOLNT/{} is not read (ON, FLOOD, MIST or OFF)", w));
-  body_.push_back(std::move(c));
   return true;
 }
 
@@ -308,50 +254,7 @@ bool Lowerer::circle(const Record &r) {
   if (arc_) return error(r.loc, "CIRCLE after a CIRCLE without the GOTO that ends it", "syntax");
   if (cycle_) return error(r.loc, "CIRCLE inside a CYCLE: CYCLE/OFF first", "syntax");
   if (!pos_) return error(r.loc, "CIRCLE before the tool position is known (no FROM or GOTO before it)");
-  arc_ = Arc{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], r.loc};
-  return true;
-}
-
-bool Lowerer::endArc(const Record &r, Vec3 p) {
-  Arc a = *arc_;
-  arc_.reset();
-  // The plane from the axis: it must be one of the coordinate axes.
-  struct PlaneRow {
-    const char *plane;
-    int axis;  // 0 x, 1 y, 2 z: the plane's normal
-  };
-  static const PlaneRow kPlanes[] = {{"yz", 0}, {"zx", 1}, {"xy", 2}};
-  double ax[3] = {a.axis.x, a.axis.y, a.axis.z};
-  const PlaneRow *pl = nullptr;
-  for (auto &row : kPlanes)
-    if (std::fabs(std::fabs(ax[row.axis]) - 1) < 1e-6 && std::fabs(ax[(row.axis + 1) % 3]) < 1e-6 && std::fabs(ax[(row.axis + 2) % 3]) < 1e-6)
-      pl = &row;
-  if (!pl) return error(a.loc, "CIRCLE with a tool axis that is not X, Y or Z: only arcs in the XY, ZX and YZ planes are read");
-  if (!feedSet_) return error(r.loc, "an arc before any FEDRAT", "motion-without-feed");
-  // Start and end must lie at the radius from the centre, in the plane.
-  double tol = inch_ ? kTol / 25.4 : kTol;
-  auto inPlane = [&](Vec3 q) {
-    double d[3] = {q.x - a.c.x, q.y - a.c.y, q.z - a.c.z};
-    d[pl->axis] = 0;
-    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  };
-  for (auto [q, what] : {std::pair{*pos_, "start"}, std::pair{p, "end"}}) {
-    double rr = inPlane(q);
-    if (std::fabs(rr - a.r) > tol)
-      return error(what == std::string("end") ? r.loc : a.loc,
-                   fmt::format("the arc's {} point is {:.4f} from the CIRCLE centre, its radius is {}", what, rr, a.r),
-                   "arc-radius-mismatch");
-  }
-  setPlane(pl->plane, a.loc);
-  motion(ax[pl->axis] > 0 ? "arc_ccw" : "arc_cw", a.loc);
-  Op &m = emit(OpKind::Move, r.loc);
-  m.set("X", num(p.x)).set("Y", num(p.y)).set("Z", num(p.z));
-  // The centre as offsets from the start (I J K incremental, the IR's default).
-  const char *keys[3] = {"I", "J", "K"};
-  double off[3] = {a.c.x - pos_->x, a.c.y - pos_->y, a.c.z - pos_->z};
-  for (int k = 0; k < 3; ++k)
-    if (k != pl->axis) m.set(keys[k], num(off[k]));
-  pos_ = p;
+  arc_ = ClArc{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6], r.loc};
   return true;
 }
 
@@ -400,7 +303,7 @@ bool Lowerer::cycleAt(const Record &r, Vec3 p) {
 
 bool Lowerer::cutcom(const Record &r) {
   if (r.params.size() == 1 && r.params[0].text == "OFF") {
-    emit(OpKind::CutterComp, r.loc).set("side", Expr::symbol("off"));
+    cutterCompOff(r.loc);
     return true;
   }
   return error(r.loc, "CUTCOM: only CUTCOM/OFF is read (the CL path is already the tool's)");
@@ -413,7 +316,7 @@ bool Lowerer::tlaxis(const Record &r) {
 }
 
 bool Lowerer::stop(const Record &r) {
-  emit(OpKind::Stop, r.loc).set("kind", Expr::symbol(r.word == "STOP" ? "program" : "optional"));
+  ClPath::stop(r.loc, r.word == "STOP" ? "program" : "optional");
   return true;
 }
 
@@ -421,14 +324,7 @@ bool Lowerer::delay(const Record &r) {
   std::vector<double> v;
   if (!numbers(r, 1, 1, v)) return false;
   if (v[0] < 0) return error(r.params[0].loc, "DELAY must not be negative", "bad-dwell");
-  emit(OpKind::Dwell, r.loc).set("seconds", num(v[0]));
-  return true;
-}
-
-bool Lowerer::end(const Record &r) {
-  if (!ended_) emit(OpKind::Stop, r.loc).set("kind", Expr::symbol("end"));
-  ended_ = true;
-  return true;
+  return dwell(r.loc, v[0]);
 }
 
 bool Lowerer::msys(const Record &r) {
@@ -446,7 +342,7 @@ bool Lowerer::run() {
   auto recs = readRecords(sm_.text(file_), file_, errs);
   bool ok = true;
   for (auto &e : errs) ok = error(e.loc, e.message, "syntax");
-  emit(OpKind::Mode, {file_, 1, 1}).set("units", Expr::symbol("mm")).set("distance", Expr::symbol("absolute")).set("plane", Expr::symbol("xy"));
+  begin({file_, 1, 1});
   for (auto &r : recs) {
     if (r.word.empty()) {
       if (r.loc.valid() && !r.rest.empty()) comment(r.rest, r.loc);
@@ -477,12 +373,7 @@ bool Lowerer::run() {
 }  // namespace
 
 bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
-  out.dialect = ir::Dialect::CLData;
-  out.name = sm.name(fileId);
-  out.functions.clear();
-  ir::Function fn;
-  fn.name = "main";
-  fn.loc = {fileId, 1, 1};
+  ir::Function fn = beginClModule(sm, fileId, out);
   Lowerer lw(sm, fileId, diags, fn);
   bool ok = lw.run();
   out.functions.push_back(std::move(fn));

@@ -18,7 +18,7 @@ namespace ncc::driver {
 void addCommonOptions(po::options_description &desc, CommonOptions &o) {
   addRunTimeOptions(desc, o);
   desc.add_options()
-      ("dialect", po::value(&o.dialect), "source dialect: iso|sinumerik|heidenhain|apt|ncir|motion (default: from the file)")
+      ("dialect", po::value(&o.dialect), "source dialect: iso|sinumerik|heidenhain|apt|adem|ncir|motion (default: from the file)")
       ("engine", po::value(&o.engine)->default_value("eval"), "execution engine: eval|jit")
       ("decimal-mode", po::value(&o.decimalMode), "numbers without a decimal point: calculator|is-b|is-c (default: the machine's)")
       ("block-delete", po::value(&o.blockDelete)->multitoken(), "activate block-delete levels (0-9)")

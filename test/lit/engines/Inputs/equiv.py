@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 ncc, root = sys.argv[1], sys.argv[2]
-patterns = ["test/lit/**/*.nc", "test/lit/**/*.ngc", "test/lit/**/*.ncir", "test/lit/**/*.h", "test/lit/**/*.apt", "examples/*.nc"]
+patterns = ["test/lit/**/*.nc", "test/lit/**/*.ngc", "test/lit/**/*.ncir", "test/lit/**/*.h", "test/lit/**/*.apt", "test/lit/**/*.cld", "examples/*.nc"]
 programs = sorted({p for pat in patterns for p in glob.glob(os.path.join(root, pat), recursive=True)})
 
 

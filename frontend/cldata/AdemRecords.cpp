@@ -1,0 +1,513 @@
+#include "frontend/cldata/AdemRecords.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+namespace ncc::cld {
+
+// ---- text: encodings and names ----
+
+namespace {
+bool validUtf8(std::string_view s) {
+  for (size_t i = 0; i < s.size();) {
+    unsigned char c = (unsigned char)s[i];
+    size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+    if (n == 0 || i + n > s.size()) return false;
+    for (size_t k = 1; k < n; ++k)
+      if (((unsigned char)s[i + k] >> 6) != 2) return false;
+    i += n;
+  }
+  return true;
+}
+
+void putUtf8(std::string &o, char32_t c) {
+  if (c < 0x80) o += (char)c;
+  else if (c < 0x800) o += (char)(0xC0 | (c >> 6)), o += (char)(0x80 | (c & 0x3F));
+  else if (c < 0x10000) o += (char)(0xE0 | (c >> 12)), o += (char)(0x80 | ((c >> 6) & 0x3F)), o += (char)(0x80 | (c & 0x3F));
+  else
+    o += (char)(0xF0 | (c >> 18)), o += (char)(0x80 | ((c >> 12) & 0x3F)), o += (char)(0x80 | ((c >> 6) & 0x3F)),
+        o += (char)(0x80 | (c & 0x3F));
+}
+
+// CP866 (DOS Cyrillic), the upper half: the letters and Ё ё; box drawing and the rest as '?'.
+char32_t cp866(unsigned char c) {
+  if (c < 0x80) return c;
+  if (c <= 0xAF) return 0x0410 + (c - 0x80);  // А…Я а…п
+  if (c >= 0xE0 && c <= 0xEF) return 0x0440 + (c - 0xE0);  // р…я
+  if (c == 0xF0) return 0x0401;
+  if (c == 0xF1) return 0x0451;
+  if (c == 0xFF) return ' ';  // no-break space
+  return '?';
+}
+
+std::u32string decode(std::string_view utf8) {
+  std::u32string o;
+  for (size_t i = 0; i < utf8.size();) {
+    unsigned char c = (unsigned char)utf8[i];
+    size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : 4;
+    char32_t v = n == 1 ? c : n == 2 ? c & 0x1F : n == 3 ? c & 0x0F : c & 0x07;
+    for (size_t k = 1; k < n && i + k < utf8.size(); ++k) v = (v << 6) | ((unsigned char)utf8[i + k] & 0x3F);
+    o += v;
+    i += n;
+  }
+  return o;
+}
+
+// Cyrillic capitals that look like Latin ones (seed 004 §2.9 item 10).
+struct Homoglyph {
+  char32_t cyr;
+  char lat;
+};
+const Homoglyph kHomoglyphs[] = {{0x0410, 'A'}, {0x0412, 'B'}, {0x0415, 'E'}, {0x041A, 'K'}, {0x041C, 'M'}, {0x041D, 'H'},
+                                 {0x041E, 'O'}, {0x0420, 'P'}, {0x0421, 'C'}, {0x0422, 'T'}, {0x0425, 'X'}};
+}  // namespace
+
+std::string ademToUtf8(std::string_view bytes) {
+  if (validUtf8(bytes)) return std::string(bytes);
+  std::string o;
+  for (unsigned char c : bytes) putUtf8(o, cp866(c));
+  return o;
+}
+
+std::string ademNormalise(std::string_view utf8) {
+  std::string o;
+  bool blank = false;
+  for (char32_t c : decode(utf8)) {
+    if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+      blank = !o.empty();
+      continue;
+    }
+    if (blank) o += ' ', blank = false;
+    if (c >= 'a' && c <= 'z') c -= 32;
+    else if (c >= 0x0430 && c <= 0x044F) c -= 0x20;  // а…я
+    if (c == 0x0451 || c == 0x0401) c = 0x0415;       // ё Ё: Е
+    for (auto &h : kHomoglyphs)
+      if (c == h.cyr) c = (char32_t)h.lat;
+    putUtf8(o, c);
+  }
+  return o;
+}
+
+bool ademFieldIsText(const AdemLayout *l, int index) {
+  if (!l) return false;
+  for (const char *p = l->fields; *p;) {
+    char *end = nullptr;
+    long i = std::strtol(p, &end, 10);
+    if (end == p) break;
+    if (i == index) return *end == 't';
+    p = end;
+    while (*p == 't' || *p == ' ') ++p;
+  }
+  return false;
+}
+
+namespace {
+// The FR indices a layout's listing values fill, in order.
+std::vector<int> positional(const AdemLayout *l) {
+  std::vector<int> v;
+  if (!l) return v;
+  for (const char *p = l->fields; *p;) {
+    char *end = nullptr;
+    long i = std::strtol(p, &end, 10);
+    if (end == p) break;
+    v.push_back((int)i);
+    p = end;
+    while (*p == 't' || *p == ' ') ++p;
+  }
+  return v;
+}
+bool freeWords(const AdemLayout *l) { return l && std::strcmp(l->fields, "*") == 0; }
+
+// ---- the listing ----
+
+class ListingReader {
+public:
+  ListingReader(std::string_view t, uint32_t file, std::vector<AdemError> &e) : t_(t), file_(file), errs_(e), utf8_(validUtf8(t)) {}
+  std::vector<AdemRecord> run() {
+    std::vector<AdemRecord> out;
+    for (;;) {
+      skipBlanks(true);
+      if (i_ >= t_.size()) break;
+      AdemRecord r;
+      if (record(r)) out.push_back(std::move(r));
+      else resync();
+    }
+    return out;
+  }
+
+private:
+  SourceLoc loc() const { return {file_, line_, (uint32_t)(i_ - lineStart_ + 1)}; }
+  bool fail(SourceLoc l, std::string m) {
+    errs_.push_back({l, std::move(m)});
+    return false;
+  }
+  char peek(size_t k = 0) const { return i_ + k < t_.size() ? t_[i_ + k] : '\0'; }
+  void advance() {
+    if (t_[i_] == '\n') ++line_, lineStart_ = i_ + 1;
+    ++i_;
+  }
+  // Blanks and `$$` comments; newlines too when `lines`.
+  void skipBlanks(bool lines) {
+    while (i_ < t_.size()) {
+      char c = t_[i_];
+      if (c == ' ' || c == '\t' || c == '\r' || (lines && c == '\n')) advance();
+      else if (c == '$' && peek(1) == '$')
+        while (i_ < t_.size() && t_[i_] != '\n') advance();
+      else break;
+    }
+  }
+  // After an error: past the next ';', or to the next line that starts a record with [code].
+  void resync() {
+    if (atRecordStart()) return;
+    if (nextLine_) {
+      nextLine_ = false;
+      while (i_ < t_.size() && t_[i_] != '\n') advance();
+      return;
+    }
+    while (i_ < t_.size()) {
+      if (t_[i_] == ';') return advance();
+      if (t_[i_] == '$' && peek(1) == '$') {  // a comment: its ';' ends nothing
+        while (i_ < t_.size() && t_[i_] != '\n') advance();
+        continue;
+      }
+      if (t_[i_] == '\n') {
+        advance();
+        size_t k = i_;
+        while (k < t_.size() && (digit(t_[k]) || t_[k] == ' ' || t_[k] == '\t')) ++k;
+        if (k < t_.size() && t_[k] == '[') return;
+        continue;
+      }
+      advance();
+    }
+  }
+  bool digit(char c) const { return c >= '0' && c <= '9'; }
+  // At a '[' with only an ordinal or blanks before it on its line: a record starts here.
+  bool atRecordStart() const {
+    if (peek() != '[') return false;
+    for (size_t k = lineStart_; k < i_; ++k)
+      if (!digit(t_[k]) && t_[k] != ' ' && t_[k] != '\t') return false;
+    return true;
+  }
+  std::string text(std::string_view raw) const { return utf8_ ? std::string(raw) : ademToUtf8(raw); }
+  bool integer(int &v) {
+    size_t b = i_;
+    while (digit(peek())) advance();
+    if (b == i_ || i_ - b > 9) return false;
+    v = std::atoi(std::string(t_.substr(b, i_ - b)).c_str());
+    return true;
+  }
+
+  bool record(AdemRecord &r) {
+    r.loc = loc();
+    if (digit(peek()) && !integer(r.obj)) return fail(r.loc, "the route object's ordinal has more than 9 digits");  // FR[2]
+    skipBlanks(false);
+    bool coded = false;
+    if (peek() == '[') {
+      advance();
+      skipBlanks(false);
+      SourceLoc cl = loc();
+      if (!integer(r.code) || r.code <= 0) return fail(cl, "a record code (a whole number from 1) expected after '['");
+      skipBlanks(false);
+      if (peek() != ']') return fail(loc(), "']' expected after the record code");
+      advance();
+      coded = true;
+    }
+    // The name: up to '/' or ';' on the same line.
+    skipBlanks(false);
+    SourceLoc nl = loc();
+    size_t nb = i_;
+    while (i_ < t_.size() && peek() != '/' && peek() != ';' && peek() != '\n' && !(peek() == '$' && peek(1) == '$')) advance();
+    std::string name = text(t_.substr(nb, i_ - nb));
+    while (!name.empty() && (name.back() == ' ' || name.back() == '\t' || name.back() == '\r')) name.pop_back();
+    if (!name.empty()) {
+      int byName = ademCodeByName(name);
+      if (!coded) {
+        if (!byName) return fail(nl, fmt::format("'{}' is not the name of a record ncc knows; write its code as [code]", name));
+        r.code = byName;
+      } else if (byName && byName != r.code && !ademNameOf(r.code, name)) {
+        errs_.push_back({nl, fmt::format("'{}' names record [{}], not [{}]: the code counts", name, byName, r.code), true});
+      }
+    } else if (!coded) {
+      return fail(r.loc, "a record starts with [code] or a record name");
+    }
+    const AdemLayout *lay = ademLayout(r.code);
+    if (peek() == '/') {
+      advance();
+      if (!values(r, lay)) return false;
+    }
+    skipBlanks(false);
+    if (peek() != ';') {
+      nextLine_ = true;  // the record ended with its line: the next line is the next record
+      return fail(r.loc, fmt::format("record [{}] does not end with ';'", r.code));
+    }
+    advance();
+    return true;
+  }
+
+  bool values(AdemRecord &r, const AdemLayout *lay) {
+    std::vector<int> order = positional(lay);  // an unknown code: FR[3], FR[4]… in order
+    size_t next = 0;       // the next positional field
+    int nextTail = 0;
+    auto nextIndex = [&]() -> int {
+      if (next < order.size()) return order[next++];
+      if (!lay) return 3 + (int)next++;
+      if (lay->tailFrom > 0) return lay->tailFrom + nextTail++;
+      return -1;
+    };
+    for (;;) {
+      skipBlanks(true);
+      if (i_ >= t_.size() || peek() == ';') return true;
+      if (atRecordStart()) return fail(loc(), fmt::format("record [{}] does not end with ';' before the next record", r.code));
+      SourceLoc vl = loc();
+      int explicitIndex = -1;
+      if ((peek() == 'F' || peek() == 'f') && (peek(1) == 'R' || peek(1) == 'r') && peek(2) == '[') {
+        // FR[i]=value: a field by its index (ours; what `ncc-cld --listing` writes for fields
+        // the order does not reach).
+        i_ += 3;
+        if (!integer(explicitIndex) || explicitIndex < 3 || peek() != ']' || peek(1) != '=')
+          return fail(vl, "FR[i]=value expected, i from 3");
+        i_ += 2;
+      }
+      AdemField f;
+      f.loc = loc();
+      std::string tok;  // a value as written
+      if (peek() == '\'') {
+        advance();
+        std::string s;
+        for (;;) {
+          if (i_ >= t_.size() || peek() == '\n') return fail(f.loc, "the text does not end with ' on its line");
+          if (peek() == '\'') {
+            advance();
+            if (peek() != '\'') break;  // '' is one quote
+          }
+          s += t_[i_];
+          advance();
+        }
+        f.isText = true;
+        f.text = text(s);
+      } else {
+        size_t b = i_;
+        while (i_ < t_.size() && peek() != ' ' && peek() != '\t' && peek() != '\r' && peek() != '\n' && peek() != ';' &&
+               !(peek() == '$' && peek(1) == '$'))
+          advance();
+        tok = std::string(t_.substr(b, i_ - b));
+        char *end = nullptr;
+        double v = std::strtod(tok.c_str(), &end);
+        bool isNum = !tok.empty() && end == tok.c_str() + tok.size() && (digit(tok[0]) || tok[0] == '-' || tok[0] == '+' || tok[0] == '.');
+        if (isNum) {
+          if (!std::isfinite(v)) return fail(f.loc, fmt::format("'{}' is too large", tok));
+          f.num = v;
+        } else if (explicitIndex < 0) {
+          if (freeWords(lay)) continue;  // a step's words: the code says which step it is
+          if (!word(r, text(tok), f.loc)) return false;
+          continue;
+        } else {
+          return fail(f.loc, fmt::format("a number or a 'text' expected, not '{}'", text(tok)));
+        }
+      }
+      int idx = explicitIndex >= 0 ? explicitIndex : nextIndex();
+      if (idx < 0) return fail(f.loc, fmt::format("record [{}] takes {} value{}", r.code, order.size(), order.size() == 1 ? "" : "s"));
+      if (idx > 300000) return fail(vl, "FR index too large");
+      bool wantText = ademFieldIsText(lay, idx);
+      if (f.isText && !wantText) return fail(f.loc, fmt::format("FR[{}] of record [{}] is a number, not a text", idx, r.code));
+      if (!f.isText && wantText) {  // a name written as a number: its text as written
+        f.isText = true;
+        f.text = text(tok);
+      }
+      r.fr[idx] = std::move(f);
+    }
+  }
+
+  // A value word of the viewer's form (`Фреза R 5.000000 Позиция 2`): sets its field, or takes
+  // the number after it.
+  bool word(AdemRecord &r, const std::string &w, SourceLoc wl) {
+    const AdemWord *aw = ademWord(r.code, ademNormalise(w));
+    if (!aw) return fail(wl, fmt::format("'{}' is neither a number nor a value of record [{}]", w, r.code));
+    if (aw->fr) r.fr[aw->fr] = AdemField{false, aw->value, {}, wl};
+    if (aw->numberTo) {
+      skipBlanks(true);
+      SourceLoc nl = loc();
+      size_t b = i_;
+      while (i_ < t_.size() && peek() != ' ' && peek() != '\t' && peek() != '\r' && peek() != '\n' && peek() != ';') advance();
+      std::string tok(t_.substr(b, i_ - b));
+      char *end = nullptr;
+      double v = std::strtod(tok.c_str(), &end);
+      if (tok.empty() || end != tok.c_str() + tok.size() || !std::isfinite(v))
+        return fail(nl, fmt::format("a number expected after '{}'", w));
+      r.fr[aw->numberTo] = AdemField{false, v, {}, nl};
+    }
+    return true;
+  }
+
+  std::string_view t_;
+  uint32_t file_;
+  std::vector<AdemError> &errs_;
+  bool utf8_;
+  size_t i_ = 0, lineStart_ = 0;
+  bool nextLine_ = false;
+  uint32_t line_ = 1;
+};
+}  // namespace
+
+bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors) {
+  bool ok = true;
+  for (auto &e : errors) {
+    if (e.warning) d.warning(e.loc, e.message, "lenient-syntax");
+    else d.error(e.loc, e.message, "syntax"), ok = false;
+  }
+  return ok;
+}
+
+std::vector<AdemRecord> readAdemListing(std::string_view text, uint32_t file, std::vector<AdemError> &errors) {
+  return ListingReader(text, file, errors).run();
+}
+
+// ---- the binary form ----
+
+namespace {
+constexpr size_t kCell = 8;
+constexpr double kMaxCells = 1 << 22;  // 32 MB in one record: beyond that the length is garbage
+
+double cellAt(std::string_view b, size_t off) {
+  unsigned char c[8];
+  std::memcpy(c, b.data() + off, 8);
+  uint64_t u = 0;
+  for (int k = 7; k >= 0; --k) u = (u << 8) | c[k];  // little-endian
+  double d;
+  std::memcpy(&d, &u, 8);
+  return d;
+}
+
+void putCell(std::string &o, double d) {
+  uint64_t u;
+  std::memcpy(&u, &d, 8);
+  for (int k = 0; k < 8; ++k) o += (char)((u >> (8 * k)) & 0xFF);
+}
+
+bool whole(double d) { return std::isfinite(d) && d == std::floor(d); }
+}  // namespace
+
+bool looksLikeAdemBinary(std::string_view bytes) {
+  // A listing is text: no NUL. A binary record's first cell (its length, a small whole number
+  // as a double) has NUL bytes in its low half.
+  return bytes.substr(0, 64).find('\0') != std::string_view::npos;
+}
+
+std::vector<AdemRecord> readAdemBinary(std::string_view b, uint32_t file, std::vector<AdemError> &errors) {
+  std::vector<AdemRecord> out;
+  size_t pos = 0;
+  for (uint32_t n = 1; pos < b.size(); ++n) {
+    auto fail = [&](std::string m) { errors.push_back({{file, 0, 0}, fmt::format("record {} at byte {}: {}", n, pos, m)}); };
+    if (b.size() - pos < 3 * kCell) {
+      fail(fmt::format("the file ends {} bytes into the record, before its first three cells (FR[0] FR[1] FR[2])", b.size() - pos));
+      break;
+    }
+    double len = cellAt(b, pos), code = cellAt(b, pos + 8), obj = cellAt(b, pos + 16);
+    if (!whole(len) || len < 3 || len > kMaxCells) {
+      fail(fmt::format("FR[0], the record's length in cells, is {} (a whole number from 3 expected)", len));
+      break;
+    }
+    size_t cells = (size_t)len;
+    if (cells * kCell > b.size() - pos) {
+      fail(fmt::format("FR[0] says {} cells ({} bytes), the file has {} bytes left", cells, cells * kCell, b.size() - pos));
+      break;
+    }
+    AdemRecord r;
+    r.loc = {file, 0, n};
+    r.byte = pos;
+    bool ok = true;
+    if (!whole(code) || code < 1 || code > 1e9) ok = false, fail(fmt::format("FR[1], the record code, is {}", code));
+    if (!whole(obj) || std::fabs(obj) > 1e9) ok = false, fail(fmt::format("FR[2], the route object's ordinal, is {}", obj));
+    r.code = ok ? (int)code : 0;
+    r.obj = ok ? (int)obj : 0;
+    const AdemLayout *lay = ok ? ademLayout(r.code) : nullptr;
+    for (size_t k = 3, fi = 3; ok && k < cells; ++fi) {
+      double v = cellAt(b, pos + k * kCell);
+      AdemField f;
+      f.loc = r.loc;
+      if (ademFieldIsText(lay, (int)fi)) {
+        // A text field: its byte count, then the bytes in as many cells as they fill.
+        size_t room = (cells - k - 1) * kCell;
+        if (!whole(v) || v < 0 || v > (double)room) {
+          fail(fmt::format("FR[{}] of record [{}] is a text of {} bytes, the record has {} bytes left", fi, r.code, v, room));
+          ok = false;
+          break;
+        }
+        size_t len8 = (size_t)v;
+        f.isText = true;
+        f.text = ademToUtf8(b.substr(pos + (k + 1) * kCell, len8));
+        k += 1 + (len8 + kCell - 1) / kCell;
+      } else {
+        if (!std::isfinite(v)) {
+          fail(fmt::format("FR[{}] of record [{}] is not a finite number", fi, r.code));
+          ok = false;
+          break;
+        }
+        f.num = v;
+        ++k;
+      }
+      r.fr[(int)fi] = std::move(f);  // zeros too: the record has the field
+    }
+    if (ok) out.push_back(std::move(r));
+    pos += cells * kCell;
+  }
+  return out;
+}
+
+std::string writeAdemBinary(const std::vector<AdemRecord> &records) {
+  std::string o;
+  for (auto &r : records) {
+    std::string body;
+    int last = r.fr.empty() ? 2 : r.fr.rbegin()->first;
+    for (int i = 3; i <= last; ++i) {
+      const AdemField *f = r.field(i);
+      if (f && f->isText) {
+        putCell(body, (double)f->text.size());
+        body += f->text;
+        body.append((kCell - f->text.size() % kCell) % kCell, '\0');
+      } else {
+        putCell(body, f ? f->num : 0.0);
+      }
+    }
+    putCell(o, (double)(3 + body.size() / kCell));
+    putCell(o, r.code);
+    putCell(o, r.obj);
+    o += body;
+  }
+  return o;
+}
+
+std::string writeAdemListing(const std::vector<AdemRecord> &records) {
+  std::string o;
+  for (auto &r : records) {
+    const AdemLayout *lay = ademLayout(r.code);
+    std::string name;
+    if (lay) name = std::string(std::string_view(lay->names).substr(0, std::string_view(lay->names).find('|')));
+    o += fmt::format("{}[{}] {}/", r.obj, r.code, name);
+    std::vector<int> order = positional(lay);
+    size_t k = 0;
+    auto value = [](const AdemField &f) {
+      if (!f.isText) return fmt::format("{}", f.num);  // the shortest text that reads back to the same double
+      std::string s = "'";
+      for (char c : f.text)  // a line break would end the text: written as a blank
+        s += c == '\'' ? std::string("''") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
+      return s + "'";
+    };
+    for (auto &[i, f] : r.fr) {
+      if (lay && !f.isText && f.num == 0 && !ademFieldIsText(lay, i) && std::find(order.begin(), order.end(), i) == order.end())
+        continue;  // a binary record's padding before fields such as FR[10]: the binary has it anyway
+      // In the layout's order while the fields follow it, by index after that.
+      bool inOrder = lay ? (k < order.size() && order[k] == i) : i == (int)k + 3;
+      if (inOrder && !freeWords(lay)) ++k, o += " " + value(f);
+      else k = order.size() + 1, o += fmt::format(" FR[{}]={}", i, value(f));
+    }
+    o += ";\n";
+  }
+  return o;
+}
+
+}  // namespace ncc::cld
