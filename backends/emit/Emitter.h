@@ -26,7 +26,7 @@ struct EmitOptions {
   Target target = Target::ISO;
   std::string programName;  // ISO: digits become the O number; otherwise a header comment
   bool comments = true;     // copy Comment records
-  bool checkTravel = true;  // a move outside the machine's axis limits is an error (docs/EMIT.md "Travel")
+  bool checkTravel = false;  // --check-travel: a move outside the machine's axis limits is an error (docs/EMIT.md "Travel")
 };
 
 // A MotionSink that writes the program as records arrive: one block at a time, so memory stays

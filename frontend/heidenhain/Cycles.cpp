@@ -306,14 +306,8 @@ bool BlockParser::cycl() {
   std::set<std::string> seen;
   while (!atEnd()) {
     const Token &q = tok();
-    if (!(q.isWord("Q") || q.isWord("QS")) || peek().kind != Tok::Number || !peek().isInt)
-      return fail(q, fmt::format("a cycle parameter line Qn=value was expected, not '{}'", q.text));
-    std::string name = q.text + peek().text;
-    i_ += 2;
-    if (!tok().is("=")) return fail(tok(), fmt::format("'=' expected after {}", name));
-    ++i_;
-    if (seen.count(name)) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
-    seen.insert(name);
+    std::string name;
+    if (!cycleParamName(number, seen, name)) return false;
     if (inLib && !takes(lib.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
     ExprPtr v;
     if (tok().isWord("FAUTO")) {  // the feed of the last TOOL CALL, taken now (L570)
@@ -355,6 +349,18 @@ bool BlockParser::cycl() {
     return fail(n, fmt::format("cycle {} (active at its definition) is not simulated yet", number), "unsupported-code");
   }
   if (inLib) out().push_back(std::move(c));
+  return true;
+}
+
+bool BlockParser::cycleParamName(int number, std::set<std::string> &seen, std::string &name) {
+  const Token &q = tok();
+  if (!(q.isWord("Q") || q.isWord("QS")) || peek().kind != Tok::Number || !peek().isInt)
+    return fail(q, fmt::format("a cycle parameter line Qn=value was expected, not '{}'", q.text));
+  name = q.text + peek().text;
+  i_ += 2;
+  if (!tok().is("=")) return fail(tok(), fmt::format("'=' expected after {}", name));
+  ++i_;
+  if (!seen.insert(name).second) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
   return true;
 }
 

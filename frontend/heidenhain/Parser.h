@@ -190,6 +190,8 @@ private:
   bool programCycle(const Token &n);               // Cycles.cpp: CYCL DEF 12.1 PGM
   bool contourLabels(const Token &n);              // SlCycles.cpp: CYCL DEF 14.1 1/2/3
   bool slDefinition(int number, const Token &n);   // SlCycles.cpp: CYCL DEF 20-25
+  // Reads `Qn=` / `QSn=` of a cycle parameter line into `name` ("Q200"); a repeat is an error.
+  bool cycleParamName(int number, std::set<std::string> &seen, std::string &name);
   bool slCall(const std::string &how);             // SlCycles.cpp: CYCL CALL of 21-25
   bool cyclCallPat();                              // Patterns.cpp
   bool patternDef();                               // Patterns.cpp

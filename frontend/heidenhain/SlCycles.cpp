@@ -80,15 +80,9 @@ bool BlockParser::slDefinition(int number, const Token &n) {
   bool fmaxOut = false;
   while (!atEnd()) {
     const Token &q = tok();
-    if (!(q.isWord("Q") || q.isWord("QS")) || peek().kind != Tok::Number || !peek().isInt)
-      return fail(q, fmt::format("a cycle parameter line Qn=value was expected, not '{}'", q.text));
-    std::string name = q.text + peek().text;
-    i_ += 2;
-    if (!tok().is("=")) return fail(tok(), fmt::format("'=' expected after {}", name));
-    ++i_;
-    if (given.count(name)) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
+    std::string name;
+    if (!cycleParamName(number, given, name)) return false;
     if (!takesParam(row.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
-    given.insert(name);
     ExprPtr v;
     if (tok().isWord("FAUTO")) {  // the feed of the last TOOL CALL, taken now (L570)
       f_.pp.fauto = true;

@@ -11,7 +11,7 @@ namespace ncc::driver {
 int cmdTranslate(int argc, char **argv) {
   Session s;
   std::string file, to, out;
-  bool verify = false, noComments = false, noTravel = false;
+  bool verify = false, noComments = false, checkTravel = false;
   double tol = 1e-3;
   po::options_description desc("ncc translate options");
   desc.add_options()
@@ -21,8 +21,8 @@ int cmdTranslate(int argc, char **argv) {
       ("verify", po::bool_switch(&verify), "run source and output through the motion pipeline; fail if the paths differ")
       ("tolerance", po::value(&tol)->default_value(1e-3), "--verify position tolerance in mm")
       ("no-comments", po::bool_switch(&noComments), "drop comments")
-      ("no-travel-check", po::bool_switch(&noTravel),
-       "do not check the moves against the machine's axis limits (a program set up for other offsets)");
+      ("check-travel", po::bool_switch(&checkTravel),
+       "a move outside the machine's axis limits (machine coordinates) is an error");
   addCommonOptions(desc, s.opts);
   po::positional_options_description pos;
   pos.add("file", 1);
@@ -35,7 +35,7 @@ int cmdTranslate(int argc, char **argv) {
     return kExitUsage;
   }
   eo.comments = !noComments;
-  eo.checkTravel = !noTravel;
+  eo.checkTravel = checkTravel;
   eo.programName = file;
   uint32_t f = s.start(file);
   if (!f) return kExitErrors;
