@@ -8,11 +8,13 @@ namespace ncc {
 
 static bool isPath(const MotionRecord &r) { return isMoveRecord(r.kind) || r.kind == RecordKind::Dwell; }
 
-// Zero-length moves carry no path: translators may drop them.
-static bool isNullMove(const MotionRecord &r) {
+// A straight move within `limit` on every axis. Zero-length ones carry no path: translators may
+// drop them. Short ones (a few output units) are what a translator's rounding makes of a
+// sub-resolution move: it may drop it, keep it, or keep it one unit long.
+static bool isShortMove(const MotionRecord &r, double limit) {
   if (r.kind != RecordKind::Rapid && r.kind != RecordKind::Linear) return false;
   for (int i = 0; i < kAxes; ++i)
-    if (std::fabs(r.end[i] - r.start[i]) > 1e-9) return false;
+    if (std::fabs(r.end[i] - r.start[i]) > limit) return false;
   return true;
 }
 
@@ -25,7 +27,7 @@ static double linearDistance(const MotionRecord &r) {
 static std::vector<const MotionRecord *> pathOf(const std::vector<MotionRecord> &v) {
   std::vector<const MotionRecord *> out;
   for (auto &r : v)
-    if (isPath(r) && !isNullMove(r)) out.push_back(&r);
+    if (isPath(r) && !isShortMove(r, 1e-9)) out.push_back(&r);
   return out;
 }
 
@@ -33,9 +35,12 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
                   const PathCompareOptions &opts, std::string &report) {
   auto pa = pathOf(a), pb = pathOf(b);
   auto where = [](const MotionRecord &r) { return fmt::format("line {}: {}", r.loc.line, printMotionRecord(r)); };
-  size_t n = std::min(pa.size(), pb.size());
-  for (size_t i = 0; i < n; ++i) {
-    const MotionRecord &x = *pa[i], &y = *pb[i];
+  // Where one side has a short move the other lacks, it is skipped: the next end point is
+  // compared absolutely, so what skipped moves add up to still counts.
+  const double shortMove = 2 * opts.tolerance;
+  size_t i = 0, j = 0;
+  while (i < pa.size() && j < pb.size()) {
+    const MotionRecord &x = *pa[i], &y = *pb[j];
     std::string why;
     if (x.kind != y.kind) why = "kinds differ";
     for (int k = 0; k < kAxes && why.empty(); ++k)
@@ -89,12 +94,15 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
       why = "feeds differ";
-    if (!why.empty()) {
-      report = fmt::format("paths differ at motion {}: {}\n  first:  {}\n  second: {}", i + 1, why, where(x), where(y));
-      return false;
-    }
+    if (why.empty()) { ++i, ++j; continue; }
+    if (isShortMove(x, shortMove)) { ++i; continue; }
+    if (isShortMove(y, shortMove)) { ++j; continue; }
+    report = fmt::format("paths differ at motion {}: {}\n  first:  {}\n  second: {}", i + 1, why, where(x), where(y));
+    return false;
   }
-  if (pa.size() != pb.size()) {
+  while (i < pa.size() && isShortMove(*pa[i], shortMove)) ++i;
+  while (j < pb.size() && isShortMove(*pb[j], shortMove)) ++j;
+  if (i != pa.size() || j != pb.size()) {
     report = fmt::format("paths differ in length: {} vs {} motions", pa.size(), pb.size());
     return false;
   }

@@ -1,0 +1,63 @@
+// comparePaths (ncc translate --verify): equal paths pass, a real difference is reported at the
+// right motion, and the short moves an output resolution makes or drops are skipped.
+#include "ir/MotionCompare.h"
+
+#include <gtest/gtest.h>
+
+using namespace ncc;
+
+namespace {
+
+// A path of straight feed moves through the given XY points, starting at the origin.
+std::vector<MotionRecord> path(std::initializer_list<std::pair<double, double>> points) {
+  std::vector<MotionRecord> out;
+  AxisVec at{};
+  for (auto [x, y] : points) {
+    MotionRecord r;
+    r.kind = RecordKind::Linear;
+    r.feed = 100;
+    r.start = at;
+    at[0] = x, at[1] = y;
+    r.end = at;
+    out.push_back(r);
+  }
+  return out;
+}
+
+bool same(const std::vector<MotionRecord> &a, const std::vector<MotionRecord> &b, std::string *why = nullptr) {
+  std::string report;
+  bool ok = comparePaths(a, b, PathCompareOptions{}, report);
+  if (why) *why = report;
+  return ok;
+}
+
+TEST(MotionCompare, EqualWithinTolerance) {
+  EXPECT_TRUE(same(path({{10, 0}, {10, 5}}), path({{10.0004, 0}, {10, 4.9996}})));
+}
+
+TEST(MotionCompare, ReportsTheFirstDifference) {
+  std::string why;
+  EXPECT_FALSE(same(path({{10, 0}, {10, 5}, {0, 5}}), path({{10, 0}, {10, 5.01}, {0, 5}}), &why));
+  EXPECT_NE(why.find("paths differ at motion 2: end points differ in Y"), std::string::npos) << why;
+}
+
+TEST(MotionCompare, MissingMoveIsADifference) {
+  std::string why;
+  EXPECT_FALSE(same(path({{10, 0}, {10, 5}}), path({{10, 0}}), &why));
+  EXPECT_NE(why.find("differ in length: 2 vs 1"), std::string::npos) << why;
+  // A move of a few tolerances is a move: not skipped.
+  EXPECT_FALSE(same(path({{10, 0}, {10.003, 0}, {10.003, 5}}), path({{10, 0}, {10.003, 5}})));
+}
+
+// Example 09's case (stop 19): a 0.4 µm source move that the 3-decimal output writes as a
+// one-unit move, and one the output rounds to nothing.
+TEST(MotionCompare, ShortMovesOfRoundingAreSkipped) {
+  auto src = path({{55.644209, 62.356365}, {55.644575, 62.355867}, {55.93584, 62.569876}});
+  EXPECT_TRUE(same(src, path({{55.644, 62.356}, {55.645, 62.356}, {55.936, 62.57}})));
+  EXPECT_TRUE(same(src, path({{55.644, 62.356}, {55.936, 62.57}})));
+  // Trailing ones too, on either side.
+  EXPECT_TRUE(same(path({{10, 0}}), path({{10, 0}, {10.001, 0}})));
+  EXPECT_TRUE(same(path({{10, 0}, {10.001, 0}}), path({{10, 0}})));
+}
+
+}  // namespace
