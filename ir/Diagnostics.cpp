@@ -122,12 +122,33 @@ static std::string jsonEscape(std::string_view s) {
   return o;
 }
 
-// Non-printable bytes in a quoted source line would garble the terminal: show them as '?'.
-static std::string printable(std::string_view s) {
-  std::string o(s);
-  for (char &c : o)
-    if ((unsigned char)c < 0x20 && c != '\t') c = '?';
-    else if ((unsigned char)c >= 0x7f) c = '?';
+// The length of the well-formed UTF-8 sequence at s[i] (2-4), or 0.
+static size_t utf8Length(std::string_view s, size_t i) {
+  unsigned char c = (unsigned char)s[i];
+  size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+  if (!n || i + n > s.size()) return 0;
+  for (size_t k = 1; k < n; ++k)
+    if (((unsigned char)s[i + k] & 0xC0) != 0x80) return 0;
+  return n;
+}
+
+// A quoted source line as the terminal should show it: UTF-8 text (Cyrillic or German comments)
+// as it is, control characters and bytes that are not UTF-8 (a Latin-1 file) as '?', so they
+// cannot garble the terminal. `caret` receives the padding up to byte column `col`: one space
+// (or the tab) per character shown, so the caret stands under the character the column names.
+static std::string printable(std::string_view s, uint32_t col, std::string &caret) {
+  std::string o;
+  for (size_t i = 0; i < s.size();) {
+    size_t n = (unsigned char)s[i] >= 0x80 ? utf8Length(s, i) : 1;
+    if (i + 1 < col) caret += s[i] == '\t' ? '\t' : ' ';
+    if (n > 1) {
+      o.append(s.substr(i, n));
+      i += n;
+      continue;
+    }
+    unsigned char c = (unsigned char)s[i++];
+    o += (c < 0x20 && c != '\t') || c >= 0x7f ? '?' : (char)c;
+  }
   return o;
 }
 
@@ -150,11 +171,9 @@ std::string Diagnostics::render(const Diagnostic &d) const {
   if (d.loc.valid() && !sm_.text(d.loc.file).empty()) {
     std::string_view line = sm_.lineText(d.loc.file, d.loc.line);
     if (line.size() > 300) line = line.substr(0, 300);
-    out += printable(line);
-    out += '\n';
-    uint32_t col = d.loc.col ? d.loc.col : 1;
     std::string pad;
-    for (uint32_t i = 1; i < col && i <= line.size(); ++i) pad += line[i - 1] == '\t' ? '\t' : ' ';
+    out += printable(line, d.loc.col ? d.loc.col : 1, pad);
+    out += '\n';
     out += pad + "^\n";
   }
   return out;
