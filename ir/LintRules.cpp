@@ -132,6 +132,8 @@ static const LintRule kRules[] = {
      "Heidenhain: a CYCL DEF parameter the cycle does not take, or one given twice"},
     {"syntax", Severity::Error, "front end",
      "malformed text: a bad number, an unterminated comment, an unexpected character, a statement in the wrong place"},
+    {"type-mismatch", Severity::Error, "semantic check",
+     "a value of the wrong type: a string operand of arithmetic, a function argument, a condition or an assignment the declared type refuses (the message names both types)"},
     {"duplicate-program", Severity::Error, "front end",
      "two programs (O numbers or o-word subs) of one name"},
     {"options", Severity::Error, "driver",

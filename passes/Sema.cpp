@@ -52,11 +52,13 @@ struct Sema {
       // System variables may be indexed by axis name ($AA_IM[X]); others by number.
       for (auto &i : e.args)
         if (i && !numeric(i->type) && !(e.space == VarSpace::System && i->kind == ExprKind::Symbol))
-          diags.error(e.loc, "variable index must be a number");
+          diags.error(e.loc, fmt::format("variable index must be a number, found {}", typeName(i->type)), "type-mismatch");
       e.type = e.space != VarSpace::System ? varType(e) : sysVarNameIsFrame(e.str) ? Type::Frame : Type::Real;
       break;
     case ExprKind::Unary:
-      if (!numeric(e.args[0]->type)) diags.error(e.loc, fmt::format("operand of '{}' must be a number", opCodeName(e.op)));
+      if (!numeric(e.args[0]->type))
+        diags.error(e.loc, fmt::format("operand of '{}' must be a number, found {}", opCodeName(e.op), typeName(e.args[0]->type)),
+                    "type-mismatch");
       e.type = e.op == OpCode::Not ? Type::Bool : e.args[0]->type == Type::Int ? Type::Int : Type::Real;
       break;
     case ExprKind::Binary: {
@@ -69,9 +71,10 @@ struct Sema {
       auto str = [](Type t) { return t == Type::String || t == Type::Unknown || t == Type::Symbol || t == Type::Axis; };
       auto known = [](Type t) { return t != Type::Unknown; };
       if (cmp && ((str(a) && known(a) && numeric(b) && known(b)) || (numeric(a) && known(a) && str(b) && known(b))))
-        diags.error(e.loc, "cannot compare a string with a number");
+        diags.error(e.loc, "cannot compare a string with a number", "type-mismatch");
       else if (!(numeric(a) && numeric(b)) && !(cmp && str(a) && str(b)))
-        diags.error(e.loc, fmt::format("operands of '{}' must be numbers", opCodeName(e.op)));
+        diags.error(e.loc, fmt::format("operands of '{}' must be numbers, found {} and {}", opCodeName(e.op), typeName(a), typeName(b)),
+                    "type-mismatch");
       if (cmp || e.op == OpCode::And || e.op == OpCode::Or || e.op == OpCode::Xor) e.type = Type::Bool;
       else if (a == Type::Int && b == Type::Int && e.op != OpCode::Div && e.op != OpCode::Pow) e.type = Type::Int;
       else e.type = Type::Real;
@@ -85,11 +88,13 @@ struct Sema {
       for (size_t i = 0; i < e.args.size(); ++i) {
         char want = b ? b->argKind(i) : 'n';
         Type t = e.args[i]->type;
-        if (want == 'n' && !numeric(t)) diags.error(e.args[i]->loc, "function argument must be a number");
-        if (want == 's' && ((numeric(t) && t != Type::Unknown) || t == Type::Frame))
-          diags.error(e.args[i]->loc, "function argument must be a string");
-        if (want == 'f' && t != Type::Frame && t != Type::Unknown)
-          diags.error(e.args[i]->loc, "function argument must be a frame");
+        const char *need = want == 'n' && !numeric(t)                                             ? "number"
+                           : want == 's' && ((numeric(t) && t != Type::Unknown) || t == Type::Frame) ? "string"
+                           : want == 'f' && t != Type::Frame && t != Type::Unknown                ? "frame"
+                                                                                                  : nullptr;
+        if (need)
+          diags.error(e.args[i]->loc, fmt::format("argument {} of {} must be a {}, found {}", i + 1, e.str, need, typeName(t)),
+                      "type-mismatch");
       }
       e.type = !b ? Type::Real : b->result == 's' ? Type::String : b->result == 'f' ? Type::Frame : Type::Real;
       break;
@@ -107,17 +112,17 @@ struct Sema {
         std::string name = "?";
         bool computed = c && !c->isConstant();  // looked up at run time
         if (!computed && (!c || !constantCallee(*c, name) || !m.find(name)))
-          diags.error(op.loc, fmt::format("call to unknown program '{}'", name));
+          diags.error(op.loc, fmt::format("call to unknown program '{}'", name), "missing-subprogram");
       }
       if (op.kind == OpKind::Cycle) {  // the library's entries and parameters (passes/CycleOp.h)
         CycleOpShape shape;
         std::string err;
-        if (!resolveCycleOp(op, shape, err)) diags.error(op.loc, err);
+        if (!resolveCycleOp(op, shape, err)) diags.error(op.loc, err, "cycle-invalid");
         for (auto &a : op.args)
           if (a.value && (a.key.rfind("a.", 0) == 0 || a.key.rfind("p.", 0) == 0) && !numeric(a.value->type) &&
               a.value->kind != ExprKind::String)
             diags.error(a.value->loc.line ? a.value->loc : op.loc,
-                        fmt::format("cycle argument '{}' must be a number or a constant string", a.key.substr(2)));
+                        fmt::format("cycle argument '{}' must be a number or a constant string", a.key.substr(2)), "type-mismatch");
       }
       if (op.kind == OpKind::Assign || op.kind == OpKind::Declare) {  // stores the declared type refuses
         bool assign = op.kind == OpKind::Assign;
@@ -127,23 +132,24 @@ struct Sema {
         bool numValue = v && v->type != Type::Unknown && numeric(v->type);
         bool frameValue = v && v->type == Type::Frame;
         if (d && frameValue && d->type != ValueType::Frame && d->type != ValueType::Any)
-          diags.error(op.loc, fmt::format("cannot assign a frame to {} variable '{}'", valueTypeName(d->type), t->str));
+          diags.error(op.loc, fmt::format("cannot assign a frame to {} variable '{}'", valueTypeName(d->type), t->str), "type-mismatch");
         if (assign && t && v && t->space == VarSpace::System) {  // controller state: frames or numbers
           bool frameVar = sysVarNameIsFrame(t->str);
           if (frameVar ? (strValue || numValue) : frameValue)
             diags.error(op.loc, fmt::format("cannot assign a {} to system variable '${}'",
-                                            frameValue ? "frame" : strValue ? "string" : "number", t->str));
+                                            frameValue ? "frame" : strValue ? "string" : "number", t->str), "type-mismatch");
         }
         if (d && d->type == ValueType::Frame && (strValue || numValue))
-          diags.error(op.loc, fmt::format("cannot assign a {} to frame variable '{}'", strValue ? "string" : "number", t->str));
+          diags.error(op.loc, fmt::format("cannot assign a {} to frame variable '{}'", strValue ? "string" : "number", t->str), "type-mismatch");
         if (d && strValue && (d->type == ValueType::Int || d->type == ValueType::Real))
-          diags.error(op.loc, fmt::format("cannot assign a string to {} variable '{}'", valueTypeName(d->type), t->str));
+          diags.error(op.loc, fmt::format("cannot assign a string to {} variable '{}'", valueTypeName(d->type), t->str), "type-mismatch");
         if (d && numValue && (d->type == ValueType::String || d->type == ValueType::Axis))
-          diags.error(op.loc, fmt::format("cannot assign a number to {} variable '{}'", valueTypeName(d->type), t->str));
+          diags.error(op.loc, fmt::format("cannot assign a number to {} variable '{}'", valueTypeName(d->type), t->str), "type-mismatch");
       }
       if ((op.kind == OpKind::If || op.kind == OpKind::While)) {
         const Expr *c = op.get("cond");
-        if (c && !numeric(c->type)) diags.error(c->loc, "condition must be a number or boolean");
+        if (c && !numeric(c->type))
+          diags.error(c->loc, fmt::format("condition must be a number or boolean, found {}", typeName(c->type)), "type-mismatch");
       }
       for (auto &sub : op.regions) region(sub);
     }

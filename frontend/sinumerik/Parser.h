@@ -30,6 +30,12 @@ struct Signature {
 
 class ProgramParser;
 
+// A predefined name of the control (Predefined.cpp, from the operator table).
+struct PredefinedName {
+  std::string_view name, kind, meaning;
+};
+const PredefinedName *findPredefined(std::string_view upperName);
+
 // Control structures open in a function (IF, WHILE, FOR, LOOP, REPEAT … UNTIL).
 enum class Ctl : uint8_t { If, Else, While, For, Loop, Repeat };
 struct CtlFrame {

@@ -289,7 +289,10 @@ const std::string *ProgramParser::isoProgram(const std::string &written, SourceL
 }
 
 void ProgramParser::missingProgram(const std::string &name, SourceLoc loc) {
-  if (!missing.count(name))
+  if (const PredefinedName *p = findPredefined(name))
+    error(loc, fmt::format("{} ({}) is a predefined {} of the control: ncc does not simulate it in this form", name, p->meaning, p->kind),
+          "unsupported-code");
+  else if (!missing.count(name))
     error(loc, fmt::format("subprogram {} not found (searched {} for {}.MPF, {}.SPF)", name,
                            folderList(searchPath()), name, name),
           "missing-subprogram");
