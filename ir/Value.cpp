@@ -9,7 +9,13 @@ namespace ncc {
 std::string numberText(double v) {
   if (isVacant(v)) return "";
   if (v == std::trunc(v) && std::fabs(v) < 1e15) return fmt::format("{}", (long long)v);
-  return fmt::format("{}", v);
+  if (!std::isfinite(v)) return fmt::format("{}", v);
+  // Sinumerik converts a REAL to text with up to 10 decimal places (manual L3564-L3565): SIN(30)
+  // is "0.5", not its double's 17 digits; trailing zeros are dropped.
+  std::string s = fmt::format("{:.10f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
 }
 
 std::string fixedNumberText(double v) {

@@ -93,8 +93,8 @@ inline double valueEq(double a, double b) {
 
 // The text of a number where a string is built (concat, messages, TOSTR; strings themselves are
 // handles, see ir/Strings.h valueText): vacant is empty, integral values print without a
-// decimal point (5, -12), others with the shortest digits that read back as the same double
-// (0.1, 2.5, 1e-07).
+// decimal point (5, -12), others with up to 10 decimal places, trailing zeros dropped (0.1, 2.5,
+// 0.0000001; SIN(30) gives 0.5), as Sinumerik's REAL to STRING conversion.
 std::string numberText(double v);
 // LinuxCNC's (DEBUG,…)/(PRINT,…)/(ABORT,…) substitution: "%f" (6 decimals); vacant reads 0,
 // an unset named parameter "######" (as rs274 prints it).
