@@ -216,6 +216,13 @@ void ClWriter::arcRecord(const MotionRecord &r) {
   }
   if (std::abs(r.turns) > 1) return (void)refuse(r, "a CL arc turns once at most; a multi-turn helix has no record");
   if (!threeAxis(r)) return;
+  const PlaneAxes pa = planeAxes(r.plane);
+  // A CL circle has one radius: a source arc whose ends lie further apart in radius than the
+  // readers' check allows (rs274 takes up to 0.5 mm) would need its centre moved.
+  double rs = std::hypot(r.start[pa.a] - r.center[pa.a], r.start[pa.b] - r.center[pa.b]);
+  double re = std::hypot(r.end[pa.a] - r.center[pa.a], r.end[pa.b] - r.center[pa.b]);
+  if (std::fabs(rs - re) > kArcCheck)
+    return (void)refuse(r, fmt::format("a CL circle has one radius; this arc starts {:.4f} and ends {:.4f} from its centre", rs, re));
   flushState();
   if (!posKnown_) {  // the readers check the arc's start: the start first (a move of length 0)
     MotionRecord to = r;
@@ -223,7 +230,6 @@ void ClWriter::arcRecord(const MotionRecord &r) {
     to.end = r.start;
     move(to);
   }
-  const PlaneAxes pa = planeAxes(r.plane);
   const bool ccw = r.turns >= 0;
   Vec3 e = written(r.end);
   Vec3 c = {r.center[0] - origin_[0], r.center[1] - origin_[1], r.center[2] - origin_[2] - toolLength_};
