@@ -1,5 +1,6 @@
-// ADEM CLData records lowered to NC IR: one table row per record code (kCodes) with its names,
-// its fields (seed 004 Appendix 2) and its handler. What a move, a feed or a tool load becomes
+// ADEM CLData records lowered to NC IR: one table row per record code (kCodes) with its handler;
+// its names and fields (seed 004 Appendix 2) are the code table of ir/AdemRecords.cpp, which the
+// CLData writer (backends/emit/ClRecords.cpp) shares. What a move, a feed or a tool load becomes
 // is ClPath's, shared with the APT front end (docs/CLDATA.md).
 #include "ir/AdemRecords.h"
 #include "frontend/cldata/CldFrontend.h"
