@@ -84,6 +84,10 @@ protected:
   virtual void stop(bool optional) = 0;
   virtual void end() = 0;
   virtual void fini() {}
+  // Switches the loaded tool's length offset off / on again (ADEM [709] / [705]); false when the
+  // format has no record for it (APT: LOADTL switches it on, nothing switches it off).
+  virtual bool lengthOff() { return false; }
+  virtual bool lengthOn() { return false; }
   // A canned cycle's bracket written as the format's cycle (true: its records are skipped).
   virtual bool nativeCycle(const MotionRecord &) { return false; }
   virtual void closeCycle() {}
@@ -118,7 +122,9 @@ protected:
   uint64_t lines_ = 0;
   bool errors_ = false, ended_ = false, finished_ = false;
   Vec3 origin_{};          // the machine's G54: both readers run in it
-  double toolLength_ = 0;  // what the reader's tool load adds on Z
+  double toolLength_ = 0;  // what the reader's tool length offset adds on Z
+  double loadedLength_ = 0;  // the length the last tool load switched on
+  double sourceLength_ = 0;  // the source's tool length in force (ToolLength records)
   bool posKnown_ = false;  // the reader knows the position (a move was written since the last tool load)
   Vec3 pos_{};             // the written position as the reader reads it back
   Plane plane_ = Plane::XY;
@@ -137,6 +143,7 @@ private:
   void move(const MotionRecord &r);
   void arcRecord(const MotionRecord &r);
   void toolChange(const MotionRecord &r);
+  void followLength();
 
   // Spindle and coolant wait for the next event that needs them (the readers switch at once).
   double speed_ = 0;
@@ -158,7 +165,20 @@ void ClWriter::start() {
                      machine_.name));
 }
 
+// The reader's tool length follows the source's where the format can switch it (ADEM [709],
+// [705]: then the positions are the source's work coordinates); otherwise it stays in the
+// positions. The reader's last point is then in the other length's terms: an arc writes its start.
+void ClWriter::followLength() {
+  auto same = [](double a, double b) { return std::fabs(a - b) < 1e-9; };
+  if (same(sourceLength_, toolLength_)) return;
+  if (same(sourceLength_, 0) ? lengthOff() : same(sourceLength_, loadedLength_) && lengthOn()) {
+    toolLength_ = sourceLength_;
+    posKnown_ = false;
+  }
+}
+
 void ClWriter::flushState() {
+  followLength();
   if (spindlePending_ || speedPending_) {
     if (dirWanted_ == 0) {
       if (dirWritten_ != 0) spindleOff();
@@ -267,7 +287,7 @@ void ClWriter::toolChange(const MotionRecord &r) {
                                        machine_.name));
   const ToolData *t = machine_.findTool((int)r.ivalue);
   toolLoad((int)r.ivalue, t ? t->radius : 0);
-  toolLength_ = length;
+  toolLength_ = loadedLength_ = length;
   posKnown_ = false;  // the reader's position is the last written point, in the old tool's terms
 }
 
@@ -312,6 +332,7 @@ void ClWriter::record(const MotionRecord &r) {
   case RecordKind::CoolantMist: mistWanted_ = r.ivalue != 0, coolantPending_ = true; break;
   case RecordKind::FeedRate: programmedFeed_ = r.value, haveProgrammedFeed_ = true; break;
   case RecordKind::FeedMode: feedMode_ = r.ivalue; break;
+  case RecordKind::ToolLength: sourceLength_ = r.value; break;
   case RecordKind::Plane: plane_ = (Plane)r.ivalue; break;
   case RecordKind::Comment:
     if (opts_.comments) flushState(), comment(r.text);
@@ -338,7 +359,6 @@ void ClWriter::record(const MotionRecord &r) {
   // Nothing to write: a preselection, timing (path modes), or already in the positions (tool
   // lengths, frames; the plane goes with each arc).
   case RecordKind::ToolSelect:
-  case RecordKind::ToolLength:
   case RecordKind::ToolNumber:
   case RecordKind::PathMode:
   case RecordKind::CycleEnd:
@@ -534,6 +554,8 @@ private:
   void dwell(double s) override { put(27, {{3, 0}, {4, s}}); }
   void stop(bool optional) override { put(optional ? 33 : 22, {}); }
   void end() override { put(4, {}); }
+  bool lengthOff() override { return put(709, {}), true; }
+  bool lengthOn() override { return put(705, {}), true; }
 
   int obj_ = 0;
 };
