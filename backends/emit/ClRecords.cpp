@@ -198,7 +198,7 @@ void ClWriter::flushState() {
 bool ClWriter::threeAxis(const MotionRecord &r) {
   for (int i = 3; i < kAxes; ++i)
     if (r.end[i] != r.start[i])
-      return refuse(r, fmt::format("the CL data written is 3-axis: {} does not move", kAxisLetters[i]));
+      return refuse(r, fmt::format("the CL data written is 3-axis, and {} moves", kAxisLetters[i]));
   return true;
 }
 
