@@ -1,6 +1,6 @@
 #include "frontend/Frontend.h"
 
-#include "frontend/cldata/AdemRecords.h"
+#include "ir/AdemRecords.h"
 #include "frontend/cldata/CldFrontend.h"
 #include "frontend/heidenhain/HeiFrontend.h"
 #include "frontend/iso/IsoFrontend.h"

@@ -543,6 +543,7 @@ using detail::LineSink;
 std::unique_ptr<ProgramEmitter> makeEmitter(const Machine &m, const EmitOptions &opts, LineSink out,
                                             Diagnostics &diags) {
   if (opts.target == Target::Heidenhain) return detail::makeKlartext(m, opts, out, diags);
+  if (opts.target == Target::Apt || opts.target == Target::Adem) return detail::makeClWriter(m, opts, out, diags);
   ControllerStyle style = defaultStyle(opts.target);
   if (!applyLathe(m, style, diags) || !applyMachineSection(m, style, diags)) return nullptr;
   auto e = std::make_unique<Emitter>(m, std::move(style), opts, out, diags);
@@ -558,11 +559,14 @@ bool targetFromName(std::string_view name, Target &out) {
   if (l == "iso" || l == "fanuc") return out = Target::ISO, true;
   if (l == "sinumerik" || l == "siemens") return out = Target::Sinumerik, true;
   if (l == "heidenhain" || l == "klartext" || l == "tnc") return out = Target::Heidenhain, true;
+  if (l == "apt") return out = Target::Apt, true;
+  if (l == "cldata" || l == "adem") return out = Target::Adem, true;
   return false;
 }
 
 const char *targetName(Target t) {
-  return t == Target::ISO ? "iso" : t == Target::Sinumerik ? "sinumerik" : "heidenhain";
+  static const char *const kNames[] = {"iso", "sinumerik", "heidenhain", "apt", "adem"};
+  return kNames[(size_t)t];
 }
 
 std::unique_ptr<ProgramEmitter> ProgramEmitter::create(const Machine &m, const EmitOptions &opts,

@@ -1,6 +1,6 @@
 // Program emitters: print a Motion IR stream (machine coordinates, mm) as an NC program for
-// another controller. Two writer families: word-address programs (ISO, Sinumerik: Emitter.cpp)
-// and Heidenhain Klartext (Klartext.cpp). The controller's word formats, codes, numbering and arc
+// another controller. Three writer families: word-address programs (ISO, Sinumerik: Emitter.cpp),
+// Heidenhain Klartext (Klartext.cpp) and CL records (APT CL, ADEM CLData: ClRecords.cpp). The controller's word formats, codes, numbering and arc
 // style come from a table per target (ControllerTable.cpp) that the machine description's
 // [emit.iso] / [emit.sinumerik] / [emit.heidenhain] sections override key by key (docs/EMIT.md),
 // in the spirit of a postprocessor passport: data, not per-controller code forks.
@@ -15,10 +15,12 @@
 
 namespace ncc::emit {
 
-enum class Target { ISO, Sinumerik, Heidenhain };
+// Word-address (ISO, Sinumerik), Klartext (Heidenhain) and CL records (APT CL text, ADEM CLData).
+enum class Target { ISO, Sinumerik, Heidenhain, Apt, Adem };
 
-// Accepts "iso" / "fanuc", "sinumerik" / "siemens" and "heidenhain" / "klartext" / "tnc" (any
-// case). Returns false otherwise.
+// Accepts "iso" / "fanuc", "sinumerik" / "siemens", "heidenhain" / "klartext" / "tnc", "apt" and
+// "cldata" / "adem" (any case). Returns false otherwise. targetName gives the dialect name the
+// target's front end reads (--verify).
 bool targetFromName(std::string_view name, Target &out);
 const char *targetName(Target t);
 
@@ -26,7 +28,8 @@ struct EmitOptions {
   Target target = Target::ISO;
   std::string programName;  // ISO: digits become the O number; otherwise a header comment
   bool comments = true;     // copy Comment records
-  bool checkTravel = false;  // --check-travel: a move outside the machine's axis limits is an error (docs/EMIT.md "Travel")
+  bool checkTravel = false;
+  bool binary = false;       // ADEM CLData: the binary record file instead of the listing  // --check-travel: a move outside the machine's axis limits is an error (docs/EMIT.md "Travel")
 };
 
 // A MotionSink that writes the program as records arrive: one block at a time, so memory stays

@@ -63,7 +63,7 @@ double edgeLength(const ToolEdge &e) { return e.length + e.lengthWear; }
 
 // ISO G43 H<n>: offset number n, through the machine's offset_numbers when it has them (808D
 // $TC_DPH), else tool n's edge 1 (docs/MACHINE.md "How numbers find edges").
-bool Emitter::offsetNumberLength(int n, double &length) const {
+bool offsetNumberLength(const Machine &machine_, int n, double &length) {
   const auto &map = machine_.controller.offsetNumbers;
   if (!map.empty()) {
     auto it = map.find(n);
@@ -210,7 +210,7 @@ void Emitter::syncFrame(const MotionRecord &r) {
     if (src_.toolZ != 0 || src_.toolX != 0) baked.push_back(st_.lathe ? "the tool offsets" : "the tool length");
   } else if (st_.target == Target::ISO) {
     double length;
-    if (src_.toolH > 0 && offsetNumberLength(src_.toolH, length) && near(length, src_.toolZ)) toolWord = src_.toolH;
+    if (src_.toolH > 0 && offsetNumberLength(machine_, src_.toolH, length) && near(length, src_.toolZ)) toolWord = src_.toolH;
     else if (src_.toolZ != 0) baked.push_back("the tool length");
   } else {
     double length;

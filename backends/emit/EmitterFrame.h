@@ -6,6 +6,7 @@
 // ("baked"), which a comment in the program says.
 #pragma once
 #include "ir/MotionIR.h"
+#include "runtime/Machine.h"
 
 #include <string>
 
@@ -31,5 +32,10 @@ struct WrittenFrame {
   AxisVec offset{};            // machine = written position + offset, per axis
   std::string baked;           // what the positions hold that no code says (the last note written)
 };
+
+// The tool length offset number n gives (ISO G43 H<n>, APT LOADTL/n, ADEM [35]): through the
+// machine's offset_numbers when it has them (808D $TC_DPH), else tool n's edge 1. False when the
+// machine has none.
+bool offsetNumberLength(const Machine &machine, int n, double &length);
 
 }  // namespace ncc::emit::detail

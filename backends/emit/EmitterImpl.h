@@ -35,6 +35,11 @@ public:
       std::fputs(eol.c_str(), file_);
     }
   }
+  // Bytes as they are (ADEM's binary records).
+  void raw(const std::string &bytes) {
+    if (str_) *str_ += bytes;
+    else if (file_) std::fwrite(bytes.data(), 1, bytes.size(), file_);
+  }
   bool failed() const { return file_ && std::ferror(file_); }
 
 private:
@@ -82,6 +87,9 @@ private:
 // The Klartext writer family (Klartext.cpp): nullptr after reporting when its section is invalid.
 std::unique_ptr<ProgramEmitter> makeKlartext(const Machine &m, const EmitOptions &opts, LineSink out,
                                              Diagnostics &diags);
+
+// The CL record writer family (ClRecords.cpp: APT CL text, ADEM CLData listing or binary).
+std::unique_ptr<ProgramEmitter> makeClWriter(const Machine &m, const EmitOptions &opts, LineSink out, Diagnostics &diags);
 
 // State words waiting for the next block. A second word of a group already waiting flushes the
 // buffer first (the passport's "alternative window" rule, seed 004 §3.5).
@@ -177,7 +185,6 @@ private:
   const MotionRecord &toWritten(const MotionRecord &r, MotionRecord &scratch);
   void syncFrame(const MotionRecord &r);
   void setWrittenOffset(const AxisVec &offset);
-  bool offsetNumberLength(int n, double &length) const;
   bool spindleEdgeLength(int d, double &length) const;
   int spindleEdgeWithLength(double length) const;
   void checkTravel(const MotionRecord &r);

@@ -1,7 +1,8 @@
-// ADEM CLData records lowered to NC IR: one table row per record code (kCodes) with its names,
-// its fields (seed 004 Appendix 2) and its handler. What a move, a feed or a tool load becomes
+// ADEM CLData records lowered to NC IR: one table row per record code (kCodes) with its handler;
+// its names and fields (seed 004 Appendix 2) are the code table of ir/AdemRecords.cpp, which the
+// CLData writer (backends/emit/ClRecords.cpp) shares. What a move, a feed or a tool load becomes
 // is ClPath's, shared with the APT front end (docs/CLDATA.md).
-#include "frontend/cldata/AdemRecords.h"
+#include "ir/AdemRecords.h"
 #include "frontend/cldata/CldFrontend.h"
 #include "frontend/cldata/ClPath.h"
 
@@ -20,8 +21,10 @@ public:
   bool run(const std::vector<AdemRecord> &recs, SourceLoc start);
 
   using Handler = bool (AdemLowerer::*)(const AdemRecord &);
+  // The reader's half of a code's row; its names and fields (what both directions share) are
+  // the row of the same code in ir/AdemRecords.cpp's layout table.
   struct Code {
-    AdemLayout layout;
+    int code;
     Handler fn;
     const char *what;  // refuse/skip: why; step: the step's name
   };
@@ -111,119 +114,95 @@ private:
 
 using L = AdemLowerer;
 
-// The codes of seed 004 Appendix 1 with their Appendix 2 fields. Names: the manual's (the
-// catalogue's, the phrase's and the viewer's), then ours in Latin letters.
+// The codes of seed 004 Appendix 1 the reader lowers (names and fields: ademLayout).
 const AdemLowerer::Code AdemLowerer::kCodes[] = {
-    {{1, "Программа|ПРОГРАМ|Учетные данные программы|PROGRAM", "3t 4t 5t 6t 7t 8", 0}, &L::program, nullptr},
-    {{2, "Деталь|Учетные данные детали|PART", "3 4t 5t 6t", 0}, &L::part, nullptr},
-    {{3, "Станок|Учетные данные станка|MACHINE", "3 4 5t", 100}, &L::machine, nullptr},
-    {{4, "Конец программы|Конец УП|END", "", 0}, &L::end, nullptr},
-    {{6, "Начало|НАЧАЛО|START", "", 0}, &L::refuse, "the start point [6]: the manual gives no fields for it, so ncc cannot move there"},
-    {{22, "Стоп программы|Стоп|STOP", "", 0}, &L::stop, nullptr},
-    {{23, "Включить рабочую подачу|Включение рабочей подачи|FEED", "3 4", 0}, &L::feed, nullptr},
-    {{24, "Включить шпиндель|Включение шпинделя|SPINDLE", "3 4 5 6 7 8 9 10 11", 0}, &L::spindle, nullptr},
-    {{25, "Включить ускоренную подачу|Включение холостого хода|RAPID", "", 0}, &L::rapid, nullptr},
-    {{26, "Включить СОЖ|Включение СОЖ|COOLANT", "3 4", 0}, &L::coolant, nullptr},
-    {{27, "Выстой|DWELL", "3 4", 0}, &L::dwell, nullptr},
-    {{28, "Отвести инструмент|ОТВОД|RETRACT", "", 0}, &L::refuse,
-     "the retract [28] goes where the machine passport puts the tool change, which ncc does not know"},
-    {{29, "Перезахват|Перехват|RECLAMP", "3 4 5", 0}, &L::refuse, "the re-clamp [29] (sheet punching) is not read"},
-    {{33, "Условный останов|Условный останов программы|OPSTOP", "", 0}, &L::stop, nullptr},
-    {{34, "Смена стола|СТОЛ|TABLE", "3", 0}, &L::refuse, "the table change [34] is not read"},
-    {{35, "Загрузка инструмента|Загрузить инструмент|Инструмент|TOOL",
-      "3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29t 30 31", 0},
-     &L::tool, nullptr},
-    {{36, "Цикл|ЦИКЛ|CYCLE", "3 4 5t 6", 10}, &L::refuse, "the cycle [36] is not read yet"},
-    {{39, "Коррекция инструмента", "", 0}, &L::refuse, "the tool correction [39] is reserved to the adapter: the manual does not say what it does"},
-    {{40, "Поворот|ПОВОРОТ|ROTATE", "3 4 5 6 7 8 9", 0}, &L::refuse, "the rotary positioning [40] is not read yet (it needs the machine's kinematics)"},
-    {{41, "Совмещенные мультиперемещения|Мультиперемещения|МУЛЬТИ|MULTI", "3 4 5 6 7 8 9 10 11 12", 0}, &L::refuse,
-     "the multi-axis move [41] is not read yet (it needs the machine's kinematics)"},
-    {{45, "Контрольная точка|CONTROL POINT", "3", 0}, &L::refuse, "the control point [45] is not read"},
-    {{94, "Резьба токарная|THREAD", "3 4 5 6 7 8 9 10 11 12 13", 0}, &L::refuse, "the lathe thread [94] is not read"},
-    {{181, "Линейная интерполяция|Линейные перемещения|Идти в точку|ИДИ|LINE", "3 4 5", 0}, &L::line, nullptr},
-    {{182, "Линейное векторное перемещение|Линейные векторные перемещения|VECTOR LINE", "", 0}, &L::refuse,
-     "the vector move [182]: the manual gives no fields for it, so ncc cannot move there"},
-    {{183, "Круговая интерполяция|Круговые перемещения|ИДИ ОКР|ARC", "3 4 5 6 7 8 9", 0}, &L::arc, nullptr},
-    {{184, "Векторное круговое перемещение|Векторные круговые перемещения", "3 4 5 6 7 8 9 10 11 12 13", 0}, &L::refuse,
-     "the vector arc [184] is not read yet (5-axis)"},
-    {{185, "Совмещённое линейное перемещение|Дополнительное линейное перемещение", "3 4 5", 0}, &L::refuse,
-     "the second head's move [185] is not read"},
-    {{187, "Совмещённое перемещение по дуге|Дополнительное круговое перемещение", "3 4 5 6 7 8 9", 0}, &L::refuse,
-     "the second head's arc [187] is not read"},
-    {{189, "Векторное линейное перемещение с коррекцией|Векторные линейные перемещения с коррекцией", "3 4 5 6 7 8 9 10 11", 0},
-     &L::refuse, "the vector move [189] is not read yet (5-axis)"},
-    {{190, "Криволинейное перемещение|ИДИ КРИВАЯ|CURVE", "3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18", 0}, &L::refuse,
-     "the curve move [190] is not read yet"},
-    {{191, "Дополнительное криволинейное перемещение", "3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18", 0}, &L::refuse,
-     "the second head's curve [191] is not read"},
-    {{223, "Вызов подпрограммы|CALL", "3 4", 0}, &L::refuse, "the subprogram call [223] is not read yet"},
-    {{227, "Строка|СТРОКА", "", 0}, &L::refuse, "the manual does not say what the record [227] does"},
-    {{252, "Начало подпрограммы|Начало/конец подпрограммы", "", 0}, &L::refuse, "subprograms [252] are not read yet"},
-    {{301, "Технологический переход «Фрезеровать»|Переход|STEP", "*", 0}, &L::step, "mill"},
-    {{302, "Технологический переход «Точить»|Переход|STEP", "*", 0}, &L::step, "turn"},
-    {{303, "Технологический переход «Расточить (токарный)»|Переход|STEP", "*", 0}, &L::step, "bore (lathe)"},
-    {{304, "Технологический переход «Нарезать резьбу метчиком»|Переход|STEP", "*", 0}, &L::step, "tap"},
-    {{305, "Технологический переход «Отрезать»|Переход|STEP", "*", 0}, &L::step, "part off"},
-    {{306, "Технологический переход «Пробить»|Переход|STEP", "*", 0}, &L::step, "punch"},
-    {{307, "Технологический переход «Центровать»|Переход|STEP", "*", 0}, &L::step, "centre-drill"},
-    {{308, "Технологический переход «Сверлить»|Переход|STEP", "*", 0}, &L::step, "drill"},
-    {{309, "Технологический переход «Развернуть»|Переход|STEP", "*", 0}, &L::step, "ream"},
-    {{310, "Технологический переход «Подрезать»|Переход|STEP", "*", 0}, &L::step, "face"},
-    {{311, "Технологический переход «Зенкеровать»|Переход|STEP", "*", 0}, &L::step, "counterbore"},
-    {{312, "Технологический переход «Гравировать»|Переход|STEP", "*", 0}, &L::step, "engrave"},
-    {{314, "Технологический переход «Расточить (сверлильный)»|Переход|STEP", "*", 0}, &L::step, "bore (drilling)"},
-    {{315, "Технологический переход «Резать»|Переход|STEP", "*", 0}, &L::step, "cut"},
-    {{316, "Технологический переход «Нарезать резьбу резцом (токарный)»|Переход|STEP", "*", 0}, &L::step, "thread (lathe)"},
-    {{401, "Начало цикла|CYCLE START", "10 11 12 20 21 22 30", 0}, &L::skip,
-     "the cycle-start point [401] is where the adapter's retracts go; it moves nothing by itself"},
-    {{402, "Трансформ зоны|ТРАНСФОРМ ЗОНЫ", "", 0}, &L::refuse, "the zone transform [402]: the manual gives no fields for it, so ncc cannot apply it"},
-    {{404, "Ноль УП для текущей зоны обработки", "", 0}, &L::refuse, "the zone's NC zero [404]: the manual gives no fields for it"},
-    {{405, "Трансформ осей поворота|ТРАНСФОРМ ОСЕЙ ПОВОРОТА", "", 0}, &L::refuse,
-     "the rotary-axes transform [405]: the manual gives no fields for it, so ncc cannot apply it"},
-    {{406, "Начальная точка обработки|НТО", "", 0}, &L::refuse, "the initial machining point [406]: the manual gives no fields for it"},
-    {{451, "Безопасная позиция|БЕЗПОЗ|SAFE POSITION", "10 11 12 13 14 15", 0}, &L::skip,
-     "the safe position [451] is where the adapter's retracts go; it moves nothing by itself"},
-    {{452, "Плоскость холостого хода|Плоскость холостых ходов|ПХХ|CLEARANCE", "10 11", 0}, &L::clearance, nullptr},
-    {{458, "Вставка УП|INSERT", "10t", 0}, &L::insert, nullptr},
-    {{459, "Команда пользователя|USER", "3", 10}, &L::refuse, "the user command [459] does what the postprocessor makes of it"},
-    {{460, "Параметры пользователя", "3", 100}, &L::skip, "the user parameters [460] are data for the postprocessor"},
-    {{491, "Величина аппроксимации|TOLERANCE", "10", 0}, &L::skip, "the approximation tolerance [491] made the path; it does not change it"},
-    {{493, "Турета|TURRET", "10", 0}, &L::refuse, "the turret [493] is not read"},
-    {{582, "Комментарий программы|Комментарий|COMMENT", "10t", 0}, &L::note, nullptr},
-    {{700, "Выключить СОЖ|COOLANT OFF", "", 0}, &L::coolantOff, nullptr},
-    {{701, "Выключить шпиндель|SPINDLE OFF", "", 0}, &L::spindleOff, nullptr},
-    {{703, "Включить корректор по оси X", "", 0}, &L::refuse, "the X length offset [703] is not read"},
-    {{704, "Включить корректор по оси Y", "", 0}, &L::refuse, "the Y length offset [704] is not read"},
-    {{705, "Включить корректор по оси Z", "", 0}, &L::lengthOn, nullptr},
-    {{706, "Включить радиусный корректор", "", 0}, &L::refuse,
-     "the cutter radius compensation [706] is not read (its side is not in the record, and the CL path is already the tool's)"},
-    {{707, "Выключить корректор по оси X", "", 0}, &L::refuse, "the X length offset [707] is not read"},
-    {{708, "Выключить корректор по оси Y", "", 0}, &L::refuse, "the Y length offset [708] is not read"},
-    {{709, "Выключить корректор по оси Z", "", 0}, &L::lengthOff, nullptr},
-    {{710, "Выключить радиусный корректор", "", 0}, &L::compOff, nullptr},
-    {{711, "Ориентированный останов шпинделя", "", 0}, &L::orient, nullptr},
-    {{713, "Конец подпрограммы", "", 0}, &L::refuse, "subprograms [713] are not read yet"},
-    {{799, "", "", 0}, &L::skip, "the record [799] is reserved (never translated)"},
-    {{900, "Глубина резания", "10", 0}, &L::skip, "the depth of cut [900] is data for the postprocessor"},
-    {{901, "Плоскость интерполяции|ПЛОСК|PLANE", "10 11", 0}, &L::plane, nullptr},
-    {{902, "ЗОНА|ZONE", "", 0}, &L::refuse, "the zone change [902]: the manual gives no fields for it"},
-    {{10123, "Трансформ|TRANSFORM", "3 4 5 6 7 8 9 10 11 12 13 14", 0}, &L::transform, nullptr},
+    {1, &L::program, nullptr},
+    {2, &L::part, nullptr},
+    {3, &L::machine, nullptr},
+    {4, &L::end, nullptr},
+    {6, &L::refuse, "the start point [6]: the manual gives no fields for it, so ncc cannot move there"},
+    {22, &L::stop, nullptr},
+    {23, &L::feed, nullptr},
+    {24, &L::spindle, nullptr},
+    {25, &L::rapid, nullptr},
+    {26, &L::coolant, nullptr},
+    {27, &L::dwell, nullptr},
+    {28, &L::refuse, "the retract [28] goes where the machine passport puts the tool change, which ncc does not know"},
+    {29, &L::refuse, "the re-clamp [29] (sheet punching) is not read"},
+    {33, &L::stop, nullptr},
+    {34, &L::refuse, "the table change [34] is not read"},
+    {35, &L::tool, nullptr},
+    {36, &L::refuse, "the cycle [36] is not read yet"},
+    {39, &L::refuse, "the tool correction [39] is reserved to the adapter: the manual does not say what it does"},
+    {40, &L::refuse, "the rotary positioning [40] is not read yet (it needs the machine's kinematics)"},
+    {41, &L::refuse, "the multi-axis move [41] is not read yet (it needs the machine's kinematics)"},
+    {45, &L::refuse, "the control point [45] is not read"},
+    {94, &L::refuse, "the lathe thread [94] is not read"},
+    {181, &L::line, nullptr},
+    {182, &L::refuse, "the vector move [182]: the manual gives no fields for it, so ncc cannot move there"},
+    {183, &L::arc, nullptr},
+    {184, &L::refuse, "the vector arc [184] is not read yet (5-axis)"},
+    {185, &L::refuse, "the second head's move [185] is not read"},
+    {187, &L::refuse, "the second head's arc [187] is not read"},
+    {189, &L::refuse, "the vector move [189] is not read yet (5-axis)"},
+    {190, &L::refuse, "the curve move [190] is not read yet"},
+    {191, &L::refuse, "the second head's curve [191] is not read"},
+    {223, &L::refuse, "the subprogram call [223] is not read yet"},
+    {227, &L::refuse, "the manual does not say what the record [227] does"},
+    {252, &L::refuse, "subprograms [252] are not read yet"},
+    {301, &L::step, "mill"},
+    {302, &L::step, "turn"},
+    {303, &L::step, "bore (lathe)"},
+    {304, &L::step, "tap"},
+    {305, &L::step, "part off"},
+    {306, &L::step, "punch"},
+    {307, &L::step, "centre-drill"},
+    {308, &L::step, "drill"},
+    {309, &L::step, "ream"},
+    {310, &L::step, "face"},
+    {311, &L::step, "counterbore"},
+    {312, &L::step, "engrave"},
+    {314, &L::step, "bore (drilling)"},
+    {315, &L::step, "cut"},
+    {316, &L::step, "thread (lathe)"},
+    {401, &L::skip, "the cycle-start point [401] is where the adapter's retracts go; it moves nothing by itself"},
+    {402, &L::refuse, "the zone transform [402]: the manual gives no fields for it, so ncc cannot apply it"},
+    {404, &L::refuse, "the zone's NC zero [404]: the manual gives no fields for it"},
+    {405, &L::refuse, "the rotary-axes transform [405]: the manual gives no fields for it, so ncc cannot apply it"},
+    {406, &L::refuse, "the initial machining point [406]: the manual gives no fields for it"},
+    {451, &L::skip, "the safe position [451] is where the adapter's retracts go; it moves nothing by itself"},
+    {452, &L::clearance, nullptr},
+    {458, &L::insert, nullptr},
+    {459, &L::refuse, "the user command [459] does what the postprocessor makes of it"},
+    {460, &L::skip, "the user parameters [460] are data for the postprocessor"},
+    {491, &L::skip, "the approximation tolerance [491] made the path; it does not change it"},
+    {493, &L::refuse, "the turret [493] is not read"},
+    {582, &L::note, nullptr},
+    {700, &L::coolantOff, nullptr},
+    {701, &L::spindleOff, nullptr},
+    {703, &L::refuse, "the X length offset [703] is not read"},
+    {704, &L::refuse, "the Y length offset [704] is not read"},
+    {705, &L::lengthOn, nullptr},
+    {706, &L::refuse, "the cutter radius compensation [706] is not read (its side is not in the record, and the CL path is already the tool's)"},
+    {707, &L::refuse, "the X length offset [707] is not read"},
+    {708, &L::refuse, "the Y length offset [708] is not read"},
+    {709, &L::lengthOff, nullptr},
+    {710, &L::compOff, nullptr},
+    {711, &L::orient, nullptr},
+    {713, &L::refuse, "subprograms [713] are not read yet"},
+    {799, &L::skip, "the record [799] is reserved (never translated)"},
+    {900, &L::skip, "the depth of cut [900] is data for the postprocessor"},
+    {901, &L::plane, nullptr},
+    {902, &L::refuse, "the zone change [902]: the manual gives no fields for it"},
+    {10123, &L::transform, nullptr},
 };
 
-// The viewer's value words (`Фреза R 5.000000 Позиция 2`, seed 004 L515).
-// Позиция: the pocket, in FR[4] (the manual lists no field for it: docs/CLDATA.md).
-const AdemWord kWords[] = {
-    {35, "Фреза", 3, 1, 0},     {35, "Сверло", 3, 2, 0}, {35, "Центровка", 3, 3, 0}, {35, "Зенкер", 3, 4, 0},
-    {35, "Развертка", 3, 5, 0}, {35, "Метчик", 3, 6, 0}, {35, "Резец", 3, 7, 0},     {35, "Пуансон", 3, 8, 0},
-    {35, "Проволока", 3, 9, 0}, {35, "Лазер", 3, 10, 0}, {35, "Резак", 3, 11, 0},    {35, "R", 19, 1, 20},
-    {35, "D", 19, 2, 20},       {35, "Позиция", 0, 0, 4},
-};
 const char *const kToolKinds[] = {"", "mill", "drill", "centre drill", "counterbore", "reamer", "tap", "turning tool",
                                   "punch", "wire", "laser", "torch"};
 
 const AdemLowerer::Code *findCode(int code) {
   for (auto &c : AdemLowerer::kCodes)
-    if (c.layout.code == code) return &c;
+    if (c.code == code) return &c;
   return nullptr;
 }
 
@@ -368,51 +347,6 @@ bool AdemLowerer::run(const std::vector<AdemRecord> &recs, SourceLoc start) {
 }
 
 }  // namespace
-
-const AdemLayout *ademLayout(int code) {
-  const AdemLowerer::Code *c = findCode(code);
-  return c ? &c->layout : nullptr;
-}
-
-namespace {
-// Every name of every code, normalised once: (name, code) in the table's order.
-const std::vector<std::pair<std::string, int>> &allNames() {
-  static const std::vector<std::pair<std::string, int>> names = [] {
-    std::vector<std::pair<std::string, int>> v;
-    for (auto &c : AdemLowerer::kCodes) {
-      std::string_view all = c.layout.names;
-      for (size_t b = 0; b < all.size();) {
-        size_t e = all.find('|', b);
-        if (e == std::string_view::npos) e = all.size();
-        v.emplace_back(ademNormalise(all.substr(b, e - b)), c.layout.code);
-        b = e + 1;
-      }
-    }
-    return v;
-  }();
-  return names;
-}
-}  // namespace
-
-int ademCodeByName(std::string_view utf8) {
-  std::string n = ademNormalise(utf8);
-  for (auto &[name, code] : allNames())
-    if (!n.empty() && name == n) return code;
-  return 0;
-}
-
-bool ademNameOf(int code, std::string_view utf8) {
-  std::string n = ademNormalise(utf8);
-  for (auto &[name, c] : allNames())
-    if (c == code && name == n) return true;
-  return false;
-}
-
-const AdemWord *ademWord(int code, const std::string &normalised) {
-  for (auto &w : kWords)
-    if (w.code == code && ademNormalise(w.word) == normalised) return &w;
-  return nullptr;
-}
 
 bool parseAdemProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
   ir::Function fn = beginClModule(sm, fileId, out);

@@ -5,6 +5,7 @@
 #include "frontend/cldata/CldFrontend.h"
 #include "frontend/cldata/ClPath.h"
 #include "frontend/cldata/Records.h"
+#include "ir/AptWords.h"
 
 #include <fmt/format.h>
 
@@ -18,16 +19,6 @@ using ir::Op;
 using ir::OpKind;
 
 namespace {
-
-// CYCLE/ kinds and the library entry that does exactly the same (docs/APT.md "Cycles").
-struct CycleKind {
-  const char *word;
-  const char *entry;  // null: no library entry is exactly equal
-};
-const CycleKind kCycles[] = {
-    {"DRILL", "sin.CYCLE81"}, {"BORE", "sin.CYCLE85"}, {"DEEP", nullptr}, {"TAP", nullptr},
-    {"BRKCHP", nullptr},      {"REAM", nullptr},       {"FACE", nullptr},
-};
 
 // Records that describe the job but cannot change the tool path: read with a warning.
 const char *const kIgnored[] = {"PAINT", "DISPLY", "PLOT", "SEQNO", "INTOL", "OUTTOL", "TOLER", "CLEARP",
@@ -86,7 +77,7 @@ private:
   bool rapidNext_ = false;
   std::optional<ClArc> arc_;  // a CIRCLE waiting for the GOTO that ends its arc
   struct Cycle {
-    const CycleKind *kind;
+    const AptCycleWord *kind;
     double depth, feed, clear;
     SourceLoc loc;
   };
@@ -200,14 +191,7 @@ bool Lowerer::fedrat(const Record &r) {
     else unit = p.text;
   }
   if (n != 1 || r.params.size() > 2) return error(r.loc, "FEDRAT takes a feed and its unit", "syntax");
-  struct U {
-    const char *word;
-    bool inch, perRev;
-  };
-  static const U kUnits[] = {{"MMPM", false, false}, {"IPM", true, false}, {"MMPR", false, true}, {"IPR", true, true}};
-  const U *u = nullptr;
-  for (auto &k : kUnits)
-    if (unit == k.word) u = &k;
+  const AptFeedUnit *u = aptFind(kAptFeedUnits, [&](auto &k) { return unit == k.word; });
   if (!unit.empty() && !u) return error(r.loc, fmt::format("FEDRAT unit {}: MMPM, IPM, MMPR or IPR expected", unit));
   if (u && u->inch != inch_)
     return error(r.loc, fmt::format("FEDRAT/{} in a program in {}: the feed's unit must be the program's", unit, inch_ ? "inches" : "mm"));
@@ -223,8 +207,7 @@ bool Lowerer::spindl(const Record &r) {
   const char *dir = nullptr;
   for (auto &p : r.params) {
     if (p.isNumber && !rpm) rpm = p.value;
-    else if (p.text == "CLW") dir = "cw";
-    else if (p.text == "CCLW") dir = "ccw";
+    else if (auto *d = aptFind(kAptSpindleDirs, [&](auto &k) { return p.text == k.word; })) dir = d->dir;
     else if (p.text != "RPM") return error(p.loc, fmt::format("SPINDL/{} is not read (rpm with CLW or CCLW, or OFF)", p.text));
   }
   if (!rpm || *rpm <= 0) return error(r.loc, "SPINDL needs a positive speed in rpm", "bad-speed");
@@ -236,9 +219,7 @@ bool Lowerer::spindl(const Record &r) {
 bool Lowerer::coolnt(const Record &r) {
   std::string w;
   if (!word(r, 0, w)) return false;
-  if (w == "ON" || w == "FLOOD") coolant(r.loc, "flood", true);
-  else if (w == "MIST") coolant(r.loc, "mist", true);
-  else if (w == "OFF") coolant(r.loc, nullptr, false);
+  if (auto *c = aptFind(kAptCoolants, [&](auto &k) { return w == k.word; })) coolant(r.loc, c->coolant, c->coolant != nullptr);
   else return error(r.params[0].loc, fmt::format("COOLNT/{} is not read (ON, FLOOD, MIST or OFF)", w));
   return true;
 }
@@ -266,9 +247,7 @@ bool Lowerer::cycle(const Record &r) {
     cycle_.reset();
     return true;
   }
-  const CycleKind *k = nullptr;
-  for (auto &c : kCycles)
-    if (w == c.word) k = &c;
+  const AptCycleWord *k = aptFind(kAptCycles, [&](auto &c) { return w == c.word; });
   if (!k) return error(r.params[0].loc, fmt::format("CYCLE/{} is not a cycle ncc reads", w));
   if (!k->entry)
     return error(r.params[0].loc, fmt::format("CYCLE/{}: the cycle library has no entry that does exactly the same", w));

@@ -48,7 +48,8 @@ uint32_t Session::add(std::string_view name, std::string_view text) {
 }
 
 namespace {
-// The sinks of `ncc run` (planner, summary, traces) and `ncc translate` (both emitters).
+// The sinks of `ncc run` (planner, summary, traces) and `ncc translate` (the word-address
+// emitters and the CL record writers: APT CL, ADEM CLData binary).
 struct Sinks {
   explicit Sinks(Session &s) : outputs(s.machine, RunOutputOptions{}), canon(devNull()), jsonl(devNull()) {
     tee.add(&outputs);
@@ -59,8 +60,13 @@ struct Sinks {
     iso = emit::ProgramEmitter::create(s.machine, eo, isoText, s.diags);
     eo.target = emit::Target::Sinumerik;
     sinumerik = emit::ProgramEmitter::create(s.machine, eo, sinumerikText, s.diags);
-    if (iso) tee.add(iso.get());
-    if (sinumerik) tee.add(sinumerik.get());
+    eo.target = emit::Target::Apt;
+    apt = emit::ProgramEmitter::create(s.machine, eo, aptText, s.diags);
+    eo.target = emit::Target::Adem;
+    eo.binary = true;
+    adem = emit::ProgramEmitter::create(s.machine, eo, ademBytes, s.diags);
+    for (auto *e : {iso.get(), sinumerik.get(), apt.get(), adem.get()})
+      if (e) tee.add(e);
   }
   bool finish(Session &s) {
     bool ok = tee.finish(s.diags);
@@ -70,8 +76,8 @@ struct Sinks {
   RunOutputs outputs;
   CanonTraceWriter canon;
   JsonlTraceWriter jsonl;
-  std::string isoText, sinumerikText;
-  std::unique_ptr<emit::ProgramEmitter> iso, sinumerik;
+  std::string isoText, sinumerikText, aptText, ademBytes;
+  std::unique_ptr<emit::ProgramEmitter> iso, sinumerik, apt, adem;
   MotionTee tee;
 };
 }  // namespace

@@ -125,6 +125,15 @@ TEST(EmitTarget, Names) {
     EXPECT_EQ(t, Target::Heidenhain);
   }
   EXPECT_STREQ(targetName(Target::Heidenhain), "heidenhain");
+  ASSERT_TRUE(targetFromName("APT", t));
+  EXPECT_EQ(t, Target::Apt);
+  for (const char *n : {"cldata", "ADEM"}) {
+    ASSERT_TRUE(targetFromName(n, t)) << n;
+    EXPECT_EQ(t, Target::Adem);
+  }
+  // The names --verify gives the driver as the dialect of the re-read output.
+  EXPECT_STREQ(targetName(Target::Apt), "apt");
+  EXPECT_STREQ(targetName(Target::Adem), "adem");
   EXPECT_FALSE(targetFromName("fanuc-klartext", t));
 }
 

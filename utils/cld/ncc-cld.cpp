@@ -3,7 +3,7 @@
 // listings anyone can read.
 //   ncc-cld --binary LISTING -o FILE.cld     the listing as binary records
 //   ncc-cld --listing FILE.cld [-o OUT]      any .cld (binary or listing) as a listing
-#include "frontend/cldata/AdemRecords.h"
+#include "ir/AdemRecords.h"
 #include "ir/Diagnostics.h"
 
 #include <cstdio>

@@ -11,12 +11,13 @@ namespace ncc::driver {
 int cmdTranslate(int argc, char **argv) {
   Session s;
   std::string file, to, out;
-  bool verify = false, noComments = false, checkTravel = false;
+  bool verify = false, noComments = false, checkTravel = false, binary = false;
   double tol = 1e-3;
   po::options_description desc("ncc translate options");
   desc.add_options()
       ("file", po::value(&file)->required(), "program to translate")
-      ("to", po::value(&to)->required(), "target controller: iso|sinumerik|heidenhain")
+      ("to", po::value(&to)->required(), "target: iso|sinumerik|heidenhain, or CL records apt|cldata (ADEM)")
+      ("binary", po::bool_switch(&binary), "with --to=cldata: the binary record file (8-byte cells) instead of the listing")
       ("output,o", po::value(&out), "output file (default: standard output)")
       ("verify", po::bool_switch(&verify), "run source and output through the motion pipeline; fail if the paths differ")
       ("tolerance", po::value(&tol)->default_value(1e-3), "--verify position tolerance in mm")
@@ -27,13 +28,18 @@ int cmdTranslate(int argc, char **argv) {
   po::positional_options_description pos;
   pos.add("file", 1);
   po::variables_map vm;
-  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik|heidenhain [-o OUT] [--verify]");
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik|heidenhain|apt|cldata [--binary] [-o OUT] [--verify]");
   if (rc >= 0) return rc;
   emit::EmitOptions eo;
   if (!emit::targetFromName(to, eo.target)) {
-    std::fprintf(stderr, "ncc: error: unknown target '%s' (expected iso, sinumerik or heidenhain)\n", to.c_str());
+    std::fprintf(stderr, "ncc: error: unknown target '%s' (expected iso, sinumerik, heidenhain, apt or cldata)\n", to.c_str());
     return kExitUsage;
   }
+  if (binary && eo.target != emit::Target::Adem) {
+    std::fprintf(stderr, "ncc: error: --binary needs --to=cldata (only ADEM CLData has a binary form)\n");
+    return kExitUsage;
+  }
+  eo.binary = binary;
   eo.comments = !noComments;
   eo.checkTravel = checkTravel;
   eo.programName = file;
@@ -50,7 +56,7 @@ int cmdTranslate(int argc, char **argv) {
 
   if (verify) {
     // The output is read back by the target's own front end.
-    static const char *const kExt[] = {".nc", ".mpf", ".h"};
+    static const char *const kExt[] = {".nc", ".mpf", ".h", ".apt", ".cld"};
     std::string name = (out.empty() || out == "-") ? std::string("<translated>") + kExt[(size_t)eo.target] : out;
     uint32_t tf = s.sm.addBuffer(name, text);
     std::string savedDialect = s.opts.dialect;

@@ -24,7 +24,7 @@ static const Subcommand kSubcommands[] = {
     {"run", cmdRun, "compile and execute a program, drive the trajectory core, print a summary or a trace"},
     {"compile", cmdCompile, "stop after a stage and print it: --emit=ir|motion|llvm|obj, or link an executable: --emit=exe"},
     {"opt", cmdOpt, "run named passes on a program or textual NC IR (like LLVM's opt)"},
-    {"translate", cmdTranslate, "emit the program for another controller (--to=iso|sinumerik), optionally --verify"},
+    {"translate", cmdTranslate, "emit the program for another controller or as CL records (--to=iso|sinumerik|heidenhain|apt|cldata), optionally --verify"},
     {"lint", cmdLint, "check programs and report diagnostics"},
     {"canon-diff", cmdCanonDiff, "compare two canonical traces (LinuxCNC rs274 format)"},
     {"machine", cmdMachine, "print or check machine descriptions"},

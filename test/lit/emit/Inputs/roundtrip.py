@@ -4,7 +4,9 @@
 located error naming the record the target cannot hold ([unsupported-code], [tilted-arc]):
 anything else (a path that differs, an output that does not run, a crash) is a MISMATCH.
 
-usage: roundtrip.py NCC SRC_ROOT TARGET MACHINE GLOB...
+usage: roundtrip.py NCC SRC_ROOT TARGET[,TARGET...] MACHINE GLOB...
+  TARGET: several, comma-separated, share the source runs; each line then names its target
+          (`REFUSED apt: …`) and each gets its own count line
   MACHINE: a machine file for programs whose RUN lines name none ("-": ncc's default machine);
            "=FILE" runs every program on FILE
 """
@@ -20,7 +22,8 @@ programs = sorted({p for pat in sys.argv[5:] for p in glob.glob(os.path.join(roo
 option = re.compile(r"--(machine|include)=(%srcroot|%S|%shared)/(\S+)")
 bases = {"%srcroot": root, "%shared": os.path.normpath(os.path.join(root, "..", "shared"))}
 
-verified = refused = mismatches = 0
+targets = target.split(",")
+counts = {t: [0, 0, 0] for t in targets}  # verified, refused, mismatches
 for prog in programs:
     with open(prog, errors="replace") as f:
         text = f.read()
@@ -35,17 +38,20 @@ for prog in programs:
     src = subprocess.run([ncc, "run", prog, "-o", os.devnull] + opts, capture_output=True)
     if src.returncode != 0:
         continue  # an error test: the source itself does not run
-    out = subprocess.run([ncc, "translate", prog, "--to=" + target, "--verify", "-o", os.devnull] + opts,
-                         capture_output=True, text=True)
     name = os.path.relpath(prog, root)
-    first = next((l for l in out.stderr.splitlines() if "error:" in l), "")
-    if out.returncode == 0 and "verified:" in out.stderr:
-        verified += 1
-    elif re.search(r"error: .*\[(unsupported-code|tilted-arc)\]$", first):
-        refused += 1  # a record at its source line, or the machine (a lathe to Klartext)
-        why = re.search(r"record \((.*)\): ", first) or re.search(r"error: (.*) \[", first)
-        print("REFUSED %s: %s" % (name, why.group(1)))
-    else:
-        mismatches += 1
-        print("MISMATCH %s: %s" % (name, first or out.stderr.strip()[-300:]))
-print("%s: %d verified, %d refused, %d mismatches" % (target, verified, refused, mismatches))
+    for t in targets:
+        out = subprocess.run([ncc, "translate", prog, "--to=" + t, "--verify", "-o", os.devnull] + opts,
+                             capture_output=True, text=True)
+        tag = " " + t if len(targets) > 1 else ""
+        first = next((l for l in out.stderr.splitlines() if "error:" in l), "")
+        if out.returncode == 0 and "verified:" in out.stderr:
+            counts[t][0] += 1
+        elif re.search(r"error: .*\[(unsupported-code|tilted-arc)\]$", first):
+            counts[t][1] += 1  # a record at its source line, or the machine (a lathe to Klartext)
+            why = re.search(r"record \((.*)\): ", first) or re.search(r"error: (.*) \[", first)
+            print("REFUSED%s %s: %s" % (tag, name, why.group(1)))
+        else:
+            counts[t][2] += 1
+            print("MISMATCH%s %s: %s" % (tag, name, first or out.stderr.strip()[-300:]))
+for t in targets:
+    print("%s: %d verified, %d refused, %d mismatches" % (t, *counts[t]))

@@ -32,7 +32,8 @@ struct AdemRecord {
   }
 };
 
-// A record code's parameters as the manual's Appendix 2 gives them (the table is in AdemLower.cpp).
+// A record code's parameters as the manual's Appendix 2 gives them (the table kLayouts in AdemRecords.cpp,
+// shared by the readers (frontend/cldata) and the writers (backends/emit/ClRecords.cpp)).
 struct AdemLayout {
   int code;
   const char *names;   // '|'-separated: the manual's names (Russian), then ours (Latin)
