@@ -1,0 +1,148 @@
+// Heidenhain 204 BACK BORING, 205 UNIVERSAL PECKING and 241 SINGLE-LIP DEEP-HOLE DRILLING
+// (seed002a 4.7, 4.8, 4.10, L2589-L3752). docs/CYCLES.md "Heidenhain deep holes and back boring".
+#include "runtime/cycles/Entry.h"
+#include "runtime/cycles/HeiDrill.h"
+#include "runtime/cycles/Hole.h"
+#include "runtime/Geometry.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace ncc {
+
+using namespace entry;
+
+namespace {
+
+bool need(const CycleArgs &a, std::initializer_list<const char *> ks, std::string &err) {
+  for (const char *k : ks)
+    if (!a.has(k)) return fail(err, std::string(k) + " is required");
+  return true;
+}
+
+bool notNegative(const CycleArgs &a, std::initializer_list<const char *> ks, std::string &err) {
+  for (const char *k : ks)
+    if (a.get(k) < 0) return fail(err, fmt::format("{} must not be negative", k));
+  return true;
+}
+
+// 204 BACK BORING (L2589-L2771): rapid to the set-up clearance, oriented stop at Q336, off centre
+// by Q251 (Q214 1 -main axis, 2 -secondary, 3 +main, 4 +secondary), down through the hole at Q253
+// until the edge is Q200 below the lower face (the tool's length is to the bar's bottom, the edge
+// Q252 above it: L2649-L2654), back to the centre, spindle on, up at Q254 to the counterbore
+// depth Q249 above the lower face, dwell Q255; [model] back down at Q253 to where it cut from,
+// oriented stop, off centre, rapid to the 2nd set-up clearance (when larger), back to the centre,
+// the spindle on again as before.
+bool hei204(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  if (!need(a, {"Q200", "Q249", "Q250", "Q251", "Q252", "Q253", "Q254", "Q203", "Q214"}, err) ||
+      !notNegative(a, {"Q200", "Q204", "Q255"}, err))
+    return false;
+  if (a.get("Q249") == 0) return true;  // depth 0: the TNC does not run the cycle
+  if (a.get("Q249") < 0)
+    return fail(err, "Q249 < 0 (a counterbore towards the tool's minus direction) is not simulated yet");
+  for (const char *k : {"Q250", "Q251", "Q252"})
+    if (!(a.get(k) > 0)) return fail(err, fmt::format("{} must be greater than 0", k));
+  const int q214 = (int)a.get("Q214");
+  if (q214 < 1 || q214 > 4 || q214 != a.get("Q214")) return fail(err, "Q214 (disengaging direction) must be 1..4");
+  if (!(a.get("Q253") > 0) || !(a.get("Q254") > 0)) return fail(err, "Q253 and Q254 (feeds) must be greater than 0");
+  if (ctx.spindle == 0) return fail(err, "204 needs the spindle turning (M3/M4) before the cycle");
+  const double s = a.get("Q203"), lower = s - a.get("Q250"), edge = a.get("Q252");
+  BackBoreSpec b;
+  b.start = s + a.get("Q200");
+  b.bottom = lower - a.get("Q200") - edge;
+  b.cutLevel = lower + a.get("Q249") - edge;
+  if (b.cutLevel >= s - edge)
+    return fail(err, "Q249 (counterbore depth) must be less than the material thickness Q250");
+  b.downFeed = a.get("Q253"), b.backDown = true;
+  b.retractSet = true, b.retract = s + std::max(a.get("Q200"), a.get("Q204"));
+  b.feed = a.get("Q254");
+  b.dwell = a.get("Q255") > 0 ? a.get("Q255") : -1;
+  b.orientAngle = a.get("Q336");
+  b.spindle = ctx.spindle;
+  static const int kAxis[] = {0, 0, 1, 0, 1};
+  static const double kSign[] = {0, -1, -1, 1, 1};
+  b.shift[kAxis[q214]] = a.get("Q251") * kSign[q214];
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  CycleStep up;
+  up.pos = ctx.position, up.pos[ax.n] = b.start;
+  out.push_back(up);
+  backBoreSteps(b, ax.u, ax.v, ax.n, ctx.position[ax.u], ctx.position[ax.v], out);
+  return true;
+}
+
+// The deepened start of 205 and 241 (L3003-L3195): the drilling starts min(0.2 x Q379, Q200)
+// above it, chips are removed min(0.8 x Q379, Q200) above it; without Q379 both at the set-up
+// clearance.
+struct DeepStart {
+  double feedFrom, removal;  // depths from the surface (negative: above it)
+};
+DeepStart deepStart(const CycleArgs &a) {
+  const double q379 = a.get("Q379"), q200 = a.get("Q200");
+  if (!(q379 > 0)) return {-q200, -q200};
+  return {q379 - std::min(0.2 * q379, q200), q379 - std::min(0.8 * q379, q200)};
+}
+
+struct DeepLevels {
+  HeiLevels l;
+  double surface;
+};
+
+// The levels of 205 and 241 (heiLevels), Q379 within the depth, the Q253 pre-positioning feed.
+bool deepLevels(const CycleArgs &a, DeepLevels &d, std::string &err) {
+  if (!heiLevels(a, d.l, err) || !notNegative(a, {"Q200", "Q204", "Q379", "Q202", "Q205", "Q212", "Q211"}, err))
+    return false;
+  d.surface = a.get("Q203");
+  if (a.get("Q379") >= std::fabs(a.get("Q201")) && a.get("Q201") != 0)
+    return fail(err, "Q379 (deepened starting point) must lie above the depth Q201");
+  if (a.get("Q379") > 0 && !(a.get("Q253") > 0)) return fail(err, "Q253 (pre-positioning feed) must be greater than 0");
+  return true;
+}
+
+// 205 UNIVERSAL PECKING (L2772-L3196): rapid to the set-up clearance; with Q379 at Q253 to the
+// drilling start over the deepened start; infeeds of Q202 from there, each Q212 less down to Q205;
+// chip breaks every Q257 (back Q256 at rapid) or, without them, after each infeed a rapid to the
+// chip-removal position and back to the advance stop distance over the depth reached (Q258 for
+// the first re-entry to Q259 for the last, evenly between); dwell Q211, out at Q208 (0: Q206) to
+// the set-up clearance, rapid to the 2nd.
+bool hei205(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  DeepLevels d;
+  if (!deepLevels(a, d, err) || !notNegative(a, {"Q258", "Q259", "Q257", "Q256"}, err)) return false;
+  if (a.get("Q201") == 0) return true;
+  if (a.get("Q395") != 0) return fail(err, "Q395 = 1 (depth to the cylindrical part) needs the tool's point angle: not supported");
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  Mill m(out, ctx.plane, {ctx.position[ax.u], ctx.position[ax.v]}, 0, d.l.dir, ctx.position);
+  PeckPlan p;
+  p.surface = d.surface, p.dir = d.l.dir;
+  const DeepStart ds = deepStart(a);
+  m.up(d.l.zsc);
+  if (a.get("Q379") > 0) m.feed({0, 0}, p.level(ds.feedFrom), a.get("Q253"));
+  p.start = a.get("Q379"), p.depth = std::fabs(a.get("Q201"));
+  p.infeed = a.get("Q202"), p.decrement = a.get("Q212"), p.minInfeed = a.get("Q205");
+  p.chipEvery = a.get("Q257"), p.chipBack = a.get("Q256");
+  p.removal = ds.removal, p.advFirst = a.get("Q258"), p.advLast = a.get("Q259");
+  p.feed = a.get("Q206");
+  if (!peckDrill(m, p, err)) return false;
+  if (a.get("Q211") > 0) {
+    CycleStep dwell;
+    dwell.kind = CycleStepKind::Dwell;
+    dwell.seconds = a.get("Q211");
+    out.push_back(dwell);
+  }
+  m.feed({0, 0}, d.l.zsc, a.get("Q208") > 0 ? a.get("Q208") : p.feed);
+  m.up(d.l.z2);
+  return true;
+}
+
+const CycleDef kDeepHoleEntries[] = {
+    {"hei.204", "Q200 Q249 Q250 Q251 Q252 Q253 Q254 Q255 Q203 Q204 Q214 Q336", "Heidenhain back boring", hei204, nullptr},
+    {"hei.205", "Q200 Q201 Q206 Q202 Q203 Q204 Q212 Q205 Q258 Q259 Q257 Q256 Q211 Q379 Q253 Q208 Q395",
+     "Heidenhain universal pecking", hei205, nullptr},
+};
+
+}  // namespace
+
+void addHeiDeepHoleEntries(std::vector<CycleDef> &out) {
+  for (const CycleDef &d : kDeepHoleEntries) out.push_back(d);
+}
+
+}  // namespace ncc
