@@ -133,10 +133,89 @@ bool hei205(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
+void step(std::vector<CycleStep> &out, CycleStepKind k, double speed = 0, uint8_t coolant = 0) {
+  CycleStep st;
+  st.kind = k, st.speed = speed, st.coolant = coolant;
+  out.push_back(st);
+}
+
+// Q426 3 M3, 4 M4, 5 stopped (the spindle direction entering and leaving the hole).
+CycleStepKind spindleKind(int m) {
+  return m == 3 ? CycleStepKind::SpindleCW : m == 4 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleStop;
+}
+
+// Q429/Q430: the coolant M functions ncc knows (M7 mist, M8 flood, M9 off); 0 none.
+bool coolantM(const CycleArgs &a, const char *k, bool on, int &bits, std::string &err) {
+  const double m = a.get(k);
+  bits = m == 7 ? 2 : m == 8 ? 1 : 0;
+  if (m == 0 || (on ? (m == 7 || m == 8) : m == 9)) return true;
+  return fail(err, fmt::format("{}=M{:g}: a machine's own coolant function is not simulated ({} takes {})", k, m, k,
+                               on ? "M7 or M8" : "M9"));
+}
+
+// 241 SINGLE-LIP DEEP-HOLE DRILLING (L3330-L3752): rapid to the set-up clearance; the spindle as
+// Q426 at Q427 (entering); with Q379 at Q253 to the drilling start over the deepened start
+// (205's rule); coolant M(Q429); [model] the spindle at Q428 in the direction it had before the
+// cycle (M3 when it stood); drilling at Q206 in infeeds of Q202 (each Q212 less down to Q205),
+// each ended by the dwell Q211 (the manual's steps 4-6 repeat the dwell with each infeed), the
+// feed times Q401 % beyond the depth Q435; at the depth coolant M(Q430), the spindle as Q426 at
+// Q427; out at Q208 (0: Q206) to the chip-removal position of 205's rule (the set-up clearance
+// without Q379), rapid to the 2nd set-up clearance. The spindle stays at Q427 after the cycle [model] (L3366-L3369 set it at the depth).
+bool hei241(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
+  DeepLevels d;
+  if (!deepLevels(a, d, err) || !notNegative(a, {"Q427", "Q428", "Q435"}, err)) return false;
+  if (a.get("Q201") == 0) return true;
+  const double q426 = a.has("Q426") ? a.get("Q426") : 3, q401 = a.has("Q401") ? a.get("Q401") : 100;
+  if (q426 != 3 && q426 != 4 && q426 != 5) return fail(err, "Q426 (spindle direction in and out) must be 3, 4 or 5");
+  if (!(q401 > 0) || q401 > 100) return fail(err, "Q401 (feed factor) must be greater than 0 and at most 100");
+  int on = 0, off = 0;
+  if (!coolantM(a, "Q429", true, on, err) || !coolantM(a, "Q430", false, off, err)) return false;
+  const double depth = std::fabs(a.get("Q201")), slow = a.get("Q435");
+  if (slow >= depth) return fail(err, "Q435 (dwell depth) must be less than the depth Q201");
+  const PlaneAxes ax = planeAxes((Plane)ctx.plane);
+  Mill m(out, ctx.plane, {ctx.position[ax.u], ctx.position[ax.v]}, 0, d.l.dir, ctx.position);
+  const DeepStart ds = deepStart(a);
+  const auto level = [&](double dd) { return d.surface + d.l.dir * dd; };
+  m.up(d.l.zsc);
+  const double inSpeed = a.has("Q427") && a.get("Q427") > 0 ? a.get("Q427") : ctx.speed;
+  step(out, spindleKind((int)q426));
+  if (q426 != 5) step(out, CycleStepKind::SpindleSpeed, inSpeed);
+  if (a.get("Q379") > 0) m.feed({0, 0}, level(ds.feedFrom), a.get("Q253"));
+  if (a.get("Q429") != 0) step(out, CycleStepKind::Coolant, 0, (uint8_t)on);
+  step(out, ctx.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW);
+  step(out, CycleStepKind::SpindleSpeed, a.get("Q428") > 0 ? a.get("Q428") : ctx.speed);
+  // The infeeds' ends as 205's (PeckPlan without chip breaks or retracts).
+  const double feed = a.get("Q206");
+  double at = a.get("Q379"), infeed = a.get("Q202") > 0 ? a.get("Q202") : depth;
+  for (size_t n = 0; at < depth; ++n) {
+    if (n > kMaxPecks) return fail(err, "the infeed (Q202 or Q205) is too small: more than a million infeeds");
+    const double end = std::min(at + infeed, depth);
+    if (slow > 0 && at < slow && end > slow) m.feed({0, 0}, level(slow), feed);
+    m.feed({0, 0}, level(end), slow > 0 && end > slow ? feed * q401 / 100 : feed);
+    if (a.get("Q211") > 0) {
+      CycleStep dwell;
+      dwell.kind = CycleStepKind::Dwell;
+      dwell.seconds = a.get("Q211");
+      out.push_back(dwell);
+    }
+    at = end;
+    if (a.get("Q212") > 0 && std::max(infeed - a.get("Q212"), a.get("Q205")) > 0)
+      infeed = std::max(infeed - a.get("Q212"), a.get("Q205"));
+  }
+  if (a.get("Q430") != 0) step(out, CycleStepKind::Coolant, 0, (uint8_t)off);
+  step(out, spindleKind((int)q426));
+  if (q426 != 5) step(out, CycleStepKind::SpindleSpeed, inSpeed);
+  m.feed({0, 0}, level(ds.removal), a.get("Q208") > 0 ? a.get("Q208") : feed);
+  m.up(d.l.z2);
+  return true;
+}
+
 const CycleDef kDeepHoleEntries[] = {
     {"hei.204", "Q200 Q249 Q250 Q251 Q252 Q253 Q254 Q255 Q203 Q204 Q214 Q336", "Heidenhain back boring", hei204, nullptr},
     {"hei.205", "Q200 Q201 Q206 Q202 Q203 Q204 Q212 Q205 Q258 Q259 Q257 Q256 Q211 Q379 Q253 Q208 Q395",
      "Heidenhain universal pecking", hei205, nullptr},
+    {"hei.241", "Q200 Q201 Q206 Q211 Q203 Q204 Q379 Q253 Q208 Q426 Q427 Q428 Q429 Q430 Q435 Q401 Q202 Q212 Q205",
+     "Heidenhain single-lip deep-hole drilling", hei241, nullptr},
 };
 
 }  // namespace

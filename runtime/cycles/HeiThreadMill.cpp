@@ -123,7 +123,7 @@ void countersinkCircle(Mill &m, const Thread &t, double r, double level, double 
 // One helix from depth `from` to depth `to`: along the axis at Q253 to the starting plane, the
 // compensating move, the tangential approach (a helical half circle climbing with the helix's
 // slope), |to - from| / pitch turns at the milling feed (referred to the cutting edge: the
-// tool-centre feed is Q207 x centre / radius, L4611-L4618), the tangential departure back to the
+// tool-centre feed is Q207 x centre / radius, L4613-L4618), the tangential departure back to the
 // start point's radius at Q512.
 void helix(Mill &m, const Thread &t, double from, double to) {
   const double way = to > from ? 1 : -1, rho = std::fabs(t.centre - t.start) / 2;
@@ -179,7 +179,7 @@ bool frontCountersink(const CycleArgs &a, Mill &m, const Thread &t, double feed,
   return true;
 }
 
-// The thread depth at least a third of the pitch short of the hole's (L4891-L4893, L5099-L5101).
+// The thread depth at least a third of the pitch short of the hole's (L4894-L4896, L5098-L5100).
 bool thirdOfPitch(const CycleArgs &a, const Thread &t, std::string &err) {
   if (a.get("Q356") == 0 || a.get("Q201") == 0) return true;
   if (std::fabs(a.get("Q201")) > std::fabs(a.get("Q356")) - t.pitch / 3 + 1e-9)
@@ -213,7 +213,7 @@ bool sink263(const CycleArgs &a, const CycleContext &ctx, Mill &m, const Thread 
   const double core = t.radius - 0.54127 * t.pitch - ctx.toolRadius;
   if (!(core > 1e-9)) return fail(err, "the tool does not fit the thread's core diameter (Q335 - 1.0825 x Q239)");
   if (a.get("Q357") > 0) {
-    m.feed({0, 0}, t.level(sink), t.pre);  // clear of the wall: straight to the depth (L4830)
+    m.feed({0, 0}, t.level(sink), t.pre);  // clear of the wall: straight to the depth (L4833-L4836)
   } else {
     m.feed({0, 0}, t.level(sink - a.get("Q200")), t.pre);
     m.feed({0, 0}, t.level(sink), q254);
