@@ -70,6 +70,15 @@ bool hei204(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
+// A dwell of `seconds` (none when not above 0).
+void dwell(std::vector<CycleStep> &out, double seconds) {
+  if (!(seconds > 0)) return;
+  CycleStep st;
+  st.kind = CycleStepKind::Dwell;
+  st.seconds = seconds;
+  out.push_back(st);
+}
+
 // The deepened start of 205 and 241 (L3003-L3195): the drilling starts min(0.2 x Q379, Q200)
 // above it, chips are removed min(0.8 x Q379, Q200) above it; without Q379 both at the set-up
 // clearance.
@@ -122,12 +131,7 @@ bool hei205(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   p.removal = ds.removal, p.advFirst = a.get("Q258"), p.advLast = a.get("Q259");
   p.feed = a.get("Q206");
   if (!peckDrill(m, p, err)) return false;
-  if (a.get("Q211") > 0) {
-    CycleStep dwell;
-    dwell.kind = CycleStepKind::Dwell;
-    dwell.seconds = a.get("Q211");
-    out.push_back(dwell);
-  }
+  dwell(out, a.get("Q211"));
   m.feed({0, 0}, d.l.zsc, a.get("Q208") > 0 ? a.get("Q208") : p.feed);
   m.up(d.l.z2);
   return true;
@@ -184,23 +188,16 @@ bool hei241(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (a.get("Q429") != 0) step(out, CycleStepKind::Coolant, 0, (uint8_t)on);
   step(out, ctx.spindle == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW);
   step(out, CycleStepKind::SpindleSpeed, a.get("Q428") > 0 ? a.get("Q428") : ctx.speed);
-  // The infeeds' ends as 205's (PeckPlan without chip breaks or retracts).
+  // The infeeds' ends as 205's, without chip breaks or retracts between them.
   const double feed = a.get("Q206");
-  double at = a.get("Q379"), infeed = a.get("Q202") > 0 ? a.get("Q202") : depth;
-  for (size_t n = 0; at < depth; ++n) {
-    if (n > kMaxPecks) return fail(err, "the infeed (Q202 or Q205) is too small: more than a million infeeds");
-    const double end = std::min(at + infeed, depth);
+  std::vector<double> ends;
+  if (!infeedEnds(a.get("Q379"), depth, a.get("Q202"), a.get("Q212"), a.get("Q205"), ends, err)) return false;
+  double at = a.get("Q379");
+  for (double end : ends) {
     if (slow > 0 && at < slow && end > slow) m.feed({0, 0}, level(slow), feed);
     m.feed({0, 0}, level(end), slow > 0 && end > slow ? feed * q401 / 100 : feed);
-    if (a.get("Q211") > 0) {
-      CycleStep dwell;
-      dwell.kind = CycleStepKind::Dwell;
-      dwell.seconds = a.get("Q211");
-      out.push_back(dwell);
-    }
+    dwell(out, a.get("Q211"));
     at = end;
-    if (a.get("Q212") > 0 && std::max(infeed - a.get("Q212"), a.get("Q205")) > 0)
-      infeed = std::max(infeed - a.get("Q212"), a.get("Q205"));
   }
   if (a.get("Q430") != 0) step(out, CycleStepKind::Coolant, 0, (uint8_t)off);
   step(out, spindleKind((int)q426));

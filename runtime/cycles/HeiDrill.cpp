@@ -7,18 +7,23 @@
 
 namespace ncc {
 
+bool infeedEnds(double start, double depth, double infeed, double decrement, double minInfeed, std::vector<double> &ends,
+                std::string &err) {
+  for (double at = start, step = infeed; at < depth;) {
+    at = step > 0 ? std::min(at + step, depth) : depth;
+    ends.push_back(at);
+    if (decrement > 0 && std::max(step - decrement, minInfeed) > 0) step = std::max(step - decrement, minInfeed);
+    if (ends.size() > kMaxPecks) return err = "the infeed (Q202, Q205 or Q257) is too small: more than a million infeeds", false;
+  }
+  return true;
+}
+
 bool peckDrill(Mill &m, const PeckPlan &p, std::string &err) {
   const char *tooSmall = "the infeed (Q202, Q205 or Q257) is too small: more than a million infeeds";
   if (p.chipEvery > 0 && (p.depth - p.start) / p.chipEvery > kMaxPecks) return err = tooSmall, false;
   // The infeeds' ends first: the advance distances spread over the re-entries between them.
   std::vector<double> ends;
-  for (double at = p.start, step = p.infeed; at < p.depth;) {
-    at = step > 0 ? std::min(at + step, p.depth) : p.depth;
-    ends.push_back(at);
-    // Smaller by the decrement down to the minimum; without a minimum never down to nothing.
-    if (p.decrement > 0 && std::max(step - p.decrement, p.minInfeed) > 0) step = std::max(step - p.decrement, p.minInfeed);
-    if (ends.size() > kMaxPecks) return err = tooSmall, false;
-  }
+  if (!infeedEnds(p.start, p.depth, p.infeed, p.decrement, p.minInfeed, ends, err)) return false;
   const size_t reentries = ends.size() - 1;
   const PlanePoint centre = m.here();
   double done = p.start;

@@ -5,6 +5,7 @@
 #include "runtime/cycles/Mill.h"
 
 #include <string>
+#include <vector>
 
 namespace ncc {
 
@@ -22,6 +23,12 @@ struct PeckPlan {
   double feed = 0;
   double level(double d) const { return surface + dir * d; }
 };
+
+// The depths where the infeeds end, from `start` to `depth`: `infeed` (<= 0: one), each next
+// smaller by `decrement` down to `minInfeed` (without a minimum never down to nothing). False with
+// `err` beyond kMaxPecks infeeds.
+bool infeedEnds(double start, double depth, double infeed, double decrement, double minInfeed, std::vector<double> &ends,
+                std::string &err);
 
 // Feeds from the tool's level to the bottom as the plan says; the tool ends there. False with
 // `err` when the infeeds would be more than kMaxPecks.
