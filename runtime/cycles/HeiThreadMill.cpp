@@ -57,7 +57,7 @@ bool positive(const CycleArgs &a, const char *k, double &v, std::string &err, co
 }
 
 // The parts every thread cycle shares: levels, pitch, the tool-centre circle, the feeds.
-// `outside`: 267; `needDir`: the depths that set the direction, in the manual's order.
+// `outside`: 267; `depths`: the depths that set the direction, in the manual's order.
 bool threadSetup(const CycleArgs &a, const CycleContext &ctx, bool outside, std::initializer_list<const char *> depths,
                  Thread &t, std::string &err) {
   if (!need(a, {"Q335", "Q239", "Q201", "Q200", "Q203", "Q207", "Q253"}, err)) return false;
