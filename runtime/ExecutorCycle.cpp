@@ -201,10 +201,41 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
       emit(r);
       break;
     }
-    case CycleStepKind::SpindleStop: emit(record(RecordKind::SpindleStop)); break;
-    case CycleStepKind::SpindleCW: emit(record(RecordKind::SpindleCW)); break;
-    case CycleStepKind::SpindleCCW: emit(record(RecordKind::SpindleCCW)); break;
+    case CycleStepKind::SpindleStop:  // the state follows: a later cycle sees the direction it left
+      st.spindle = 0;
+      emit(record(RecordKind::SpindleStop));
+      break;
+    case CycleStepKind::SpindleCW:
+      st.spindle = 1;
+      emit(record(RecordKind::SpindleCW));
+      break;
+    case CycleStepKind::SpindleCCW:
+      st.spindle = 2;
+      emit(record(RecordKind::SpindleCCW));
+      break;
     case CycleStepKind::SpindleOrient: orientSpindle(s.angle, 2, 0, true); break;
+    case CycleStepKind::SpindleSpeed:
+      if (s.speed != st.speed) {
+        st.speed = s.speed;
+        MotionRecord r = record(RecordKind::SpindleSpeed);
+        r.value = s.speed;
+        emit(r);
+      }
+      break;
+    case CycleStepKind::Coolant: {  // as M7/M8/M9 (Executor.cpp CmdKind::Coolant): mist first
+      const bool mist = s.coolant & 2, flood = s.coolant & 1;
+      if (s.coolant == 0 || mist) {
+        MotionRecord r = record(RecordKind::CoolantMist);
+        r.ivalue = st.mist = mist;
+        emit(r);
+      }
+      if (s.coolant == 0 || flood) {
+        MotionRecord r = record(RecordKind::CoolantFlood);
+        r.ivalue = st.flood = flood;
+        emit(r);
+      }
+      break;
+    }
     case CycleStepKind::RigidTap:
       if (!cycleRigidTap(to, s)) return false;
       break;

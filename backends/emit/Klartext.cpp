@@ -26,6 +26,9 @@ const KlartextCycle kCycles[] = {
     {200, "DRILLING"},        {201, "REAMING"},      {202, "BORING"},
     {203, "UNIVERSAL DRILLING"}, {206, "TAPPING"},   {207, "RIGID TAPPING"},
     {208, "BORE MILLING"},    {209, "TAPPING W/ CHIP BRKG"}, {240, "CENTERING"},
+    {204, "BACK BORING"},     {205, "UNIVERSAL PECKING"}, {241, "SINGLE-LIP D.H.DRLNG"},
+    {262, "THREAD MILLING"},  {263, "THREAD MLLNG/CNTSNKG"}, {264, "THREAD DRILLNG/MLLNG"},
+    {265, "HEL. THREAD DRLG/MLG"}, {267, "OUTSIDE THREAD MLLNG"},
 };
 
 // The parameter comments of the TNC's cycle forms (the line reads without them too).
@@ -39,6 +42,15 @@ const std::pair<const char *, const char *> kQComments[] = {
     {"Q344", "DIAMETER"},         {"Q334", "FEED PER REVOLUTION"}, {"Q335", "NOMINAL DIAMETER"},
     {"Q342", "ROUGHING DIAMETER"}, {"Q351", "CLIMB OR UP-CUT"}, {"Q257", "DEPTH FOR CHIP BRKNG"},
     {"Q403", "RPM FACTOR"},
+    {"Q249", "DEPTH OF COUNTERBORE"}, {"Q250", "MATERIAL THICKNESS"}, {"Q251", "OFF-CENTER DISTANCE"},
+    {"Q252", "TOOL EDGE HEIGHT"}, {"Q253", "F PRE-POSITIONING"}, {"Q254", "F COUNTERSINKING"},
+    {"Q255", "DWELL TIME"},       {"Q258", "UPPER ADV STOP DIST"}, {"Q259", "LOWER ADV STOP DIST"},
+    {"Q379", "STARTING POINT"},   {"Q355", "THREADS PER STEP"},
+    {"Q207", "FEED RATE FOR MILLING"}, {"Q512", "FEED FOR APPROACH"}, {"Q356", "COUNTERSINKING DEPTH"},
+    {"Q357", "CLEARANCE TO SIDE"}, {"Q358", "DEPTH AT FRONT"}, {"Q359", "OFFSET AT FRONT"},
+    {"Q360", "COUNTERSINK PROCESS"}, {"Q426", "DIR. OF SPINDLE ROT."}, {"Q427", "ROT.SPEED INFEED/OUT"},
+    {"Q428", "ROT. SPEED DRILLING"}, {"Q429", "COOLANT ON"},      {"Q430", "COOLANT OFF"},
+    {"Q435", "DWELL DEPTH"},      {"Q401", "FEED RATE FACTOR"},
 };
 
 // M functions the Heidenhain front end reads as something else than an auxiliary function

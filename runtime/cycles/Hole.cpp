@@ -43,10 +43,10 @@ public:
     out_.push_back(st);
   }
   // Off the wall at `from` (when the shift moves in the plane), rapid to `to` there, back to the centre.
-  void liftOut(double from, double to, const double shift[3]) {
+  void liftOut(double from, double to, const double shift[3], double f = 0) {
     const bool inPlane = shift[0] != 0 || shift[1] != 0;
     if (inPlane) at(from, shift);
-    at(to, shift);
+    at(to, shift, f > 0 ? CycleStepKind::Feed : CycleStepKind::Rapid, f);
     if (inPlane) at(to, nullptr);
   }
 
@@ -142,12 +142,13 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
 void backBoreSteps(const BackBoreSpec &b, int a1, int a2, int d, double p1, double p2, std::vector<CycleStep> &out) {
   Writer w(out, a1, a2, d, p1, p2);
   w.orient(b.orientAngle);
-  w.liftOut(b.start, b.bottom, b.shift);  // down through the hole off centre
+  w.liftOut(b.start, b.bottom, b.shift, b.downFeed);  // down through the hole off centre
   w.spindleOn(b.spindle);
   w.feed(b.cutLevel, b.feed);
   w.dwell(b.dwell);
+  if (b.backDown) w.go(b.bottom, !(b.downFeed > 0), b.downFeed);
   w.orient(b.orientAngle);
-  w.liftOut(b.cutLevel, b.start, b.shift);
+  w.liftOut(b.backDown ? b.bottom : b.cutLevel, b.retractSet ? b.retract : b.start, b.shift);
   w.spindleOn(b.spindle);
 }
 

@@ -54,11 +54,16 @@ struct HoleSpec {
 
 // Back boring (808D/Fanuc G87, Heidenhain 204): at the `start` level above the hole the spindle
 // stops at `orientAngle` and the tool moves off centre by `shift`, goes down through the hole at
-// rapid to `bottom` (the back face, below), returns to the centre, starts the spindle (`spindle`)
-// and cuts back up to `cutLevel` at `feed`, dwells, stops oriented again, moves off centre and
-// rapids out to `start`, back to the centre, spindle on again.
+// rapid (`downFeed` > 0: at that feed) to `bottom` (the back face, below), returns to the centre,
+// starts the spindle (`spindle`) and cuts back up to `cutLevel` at `feed`, dwells, (`backDown`:
+// goes back down to `bottom` at `downFeed`), stops oriented again, moves off centre and rapids out
+// to `start` (`retract` when set), back to the centre, spindle on again.
 struct BackBoreSpec {
   double start = 0, bottom = 0, cutLevel = 0;
+  double downFeed = 0;  // 0: rapid
+  bool backDown = false;
+  bool retractSet = false;
+  double retract = 0;
   double feed = 0;     // 0: the programmed feed
   double dwell = -1;   // seconds at cutLevel (< 0: none)
   double orientAngle = 0;

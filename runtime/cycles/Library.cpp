@@ -732,6 +732,8 @@ const std::vector<CycleDef> &cycleLibrary() {
     addClearingEntries(v);
     addSinClearingEntries(v);
     addHeiPatternEntries(v);
+    addHeiThreadMillEntries(v);
+    addHeiDeepHoleEntries(v);
     return v;
   }();
   return all;

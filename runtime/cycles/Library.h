@@ -62,6 +62,8 @@ void addHoleEntries(std::vector<CycleDef> &out);
 void addClearingEntries(std::vector<CycleDef> &out);
 void addSinClearingEntries(std::vector<CycleDef> &out);
 void addHeiPatternEntries(std::vector<CycleDef> &out);  // HeiPatternDef.cpp
+void addHeiThreadMillEntries(std::vector<CycleDef> &out);  // HeiThreadMill.cpp: 262-267
+void addHeiDeepHoleEntries(std::vector<CycleDef> &out);    // HeiDeepHole.cpp: 204, 205, 241
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 

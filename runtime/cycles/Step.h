@@ -9,7 +9,11 @@ namespace ncc {
 // RigidTap: a tap without a compensating chuck (Sinumerik CYCLE84's G331/G332), spindle-
 // synchronised down to `pos` along the drilling axis and back to where it began (two Motion IR
 // thread records, sync tap_in / tap_out); the spindle is in position control (an orient before).
-enum class CycleStepKind : uint8_t { Rapid, Feed, Arc, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient, RigidTap };
+// SpindleSpeed: the spindle speed becomes `speed` (Heidenhain 241's entry and drilling speeds);
+// Coolant: `coolant` bit 1 flood, bit 2 mist on (0: both off), as M8, M7, M9.
+enum class CycleStepKind : uint8_t {
+  Rapid, Feed, Arc, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient, RigidTap, SpindleSpeed, Coolant
+};
 
 struct CycleStep {
   CycleStepKind kind = CycleStepKind::Rapid;
@@ -18,7 +22,8 @@ struct CycleStep {
   double feed = 0;              // Feed, Arc: mm/min, 0 = the programmed feed
   double angle = 0;             // SpindleOrient: degrees (the shortest way)
   double lead = 0;              // RigidTap: mm per spindle revolution along the drilling axis
-  double speed = 0;             // RigidTap: the tapping speed, rpm (0: the active S)
+  double speed = 0;             // RigidTap: the tapping speed, rpm (0: the active S); SpindleSpeed: rpm
+  uint8_t coolant = 0;          // Coolant: 1 flood, 2 mist, 0 off
   // Arc: an exact circular move in the active plane about `centre` (its drilling-axis coordinate
   // is ignored), counter-clockwise about the plane's normal when `ccw`; the drilling-axis
   // coordinate may change on the way (a helix). An end equal to the start is a full circle;

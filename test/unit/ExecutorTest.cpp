@@ -317,6 +317,8 @@ std::string steps(const std::vector<CycleStep> &s) {
     case CycleStepKind::SpindleCCW: std::snprintf(b, sizeof b, "CCW "); break;
     case CycleStepKind::SpindleOrient: std::snprintf(b, sizeof b, "O%g ", st.angle); break;
     case CycleStepKind::RigidTap: std::snprintf(b, sizeof b, "T%g/%g ", st.pos[2], st.lead); break;
+    case CycleStepKind::SpindleSpeed: std::snprintf(b, sizeof b, "S%g ", st.speed); break;
+    case CycleStepKind::Coolant: std::snprintf(b, sizeof b, "C%d ", st.coolant); break;
     }
     out += b;
   }
