@@ -3,6 +3,7 @@
 #include "backends/emit/Emitter.h"
 #include "ir/MotionCompare.h"
 #include "utils/ncc/Driver.h"
+#include "utils/ncc/TranslateStructured.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +12,7 @@ namespace ncc::driver {
 int cmdTranslate(int argc, char **argv) {
   Session s;
   std::string file, to, out;
-  bool verify = false, noComments = false, checkTravel = false;
+  bool verify = false, noComments = false, checkTravel = false, keepStructure = false;
   double tol = 1e-3;
   po::options_description desc("ncc translate options");
   desc.add_options()
@@ -21,6 +22,8 @@ int cmdTranslate(int argc, char **argv) {
       ("verify", po::bool_switch(&verify), "run source and output through the motion pipeline; fail if the paths differ")
       ("tolerance", po::value(&tol)->default_value(1e-3), "--verify position tolerance in mm")
       ("no-comments", po::bool_switch(&noComments), "drop comments")
+      ("keep-structure", po::bool_switch(&keepStructure),
+       "keep loops, branches, variables and subprogram calls (iso <-> sinumerik; docs/EMIT.md)")
       ("check-travel", po::bool_switch(&checkTravel),
        "a move outside the machine's axis limits (machine coordinates) is an error");
   addCommonOptions(desc, s.opts);
@@ -39,6 +42,7 @@ int cmdTranslate(int argc, char **argv) {
   eo.programName = file;
   uint32_t f = s.start(file);
   if (!f) return kExitErrors;
+  if (keepStructure) return translateStructured(s, f, eo, out, verify, tol);
 
   MotionBuffer source;
   if (!s.execute(f, source)) return kExitErrors;

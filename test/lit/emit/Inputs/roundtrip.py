@@ -5,6 +5,8 @@ located error naming the record the target cannot hold ([unsupported-code], [til
 anything else (a path that differs, an output that does not run, a crash) is a MISMATCH.
 
 usage: roundtrip.py NCC SRC_ROOT TARGET MACHINE GLOB...
+  TARGET: iso, sinumerik or heidenhain; "sinumerik:structured" translates with --keep-structure
+          (docs/EMIT.md "Structure-keeping translation") and ends with the refusals by reason
   MACHINE: a machine file for programs whose RUN lines name none ("-": ncc's default machine);
            "=FILE" runs every program on FILE
 """
@@ -15,12 +17,15 @@ import subprocess
 import sys
 
 ncc, root, target, machine = sys.argv[1:5]
+target, _, mode = target.partition(":")
+structured = mode == "structured"
 programs = sorted({p for pat in sys.argv[5:] for p in glob.glob(os.path.join(root, pat), recursive=True)})
 # Options the program's own RUN lines give it: its machine, the folders of called programs.
 option = re.compile(r"--(machine|include)=(%srcroot|%S|%shared)/(\S+)")
 bases = {"%srcroot": root, "%shared": os.path.normpath(os.path.join(root, "..", "shared"))}
 
 verified = refused = mismatches = 0
+reasons = {}
 for prog in programs:
     with open(prog, errors="replace") as f:
         text = f.read()
@@ -35,7 +40,8 @@ for prog in programs:
     src = subprocess.run([ncc, "run", prog, "-o", os.devnull] + opts, capture_output=True)
     if src.returncode != 0:
         continue  # an error test: the source itself does not run
-    out = subprocess.run([ncc, "translate", prog, "--to=" + target, "--verify", "-o", os.devnull] + opts,
+    extra = ["--keep-structure"] if structured else []
+    out = subprocess.run([ncc, "translate", prog, "--to=" + target, "--verify", "-o", os.devnull] + extra + opts,
                          capture_output=True, text=True)
     name = os.path.relpath(prog, root)
     first = next((l for l in out.stderr.splitlines() if "error:" in l), "")
@@ -43,9 +49,17 @@ for prog in programs:
         verified += 1
     elif re.search(r"error: .*\[(unsupported-code|tilted-arc)\]$", first):
         refused += 1  # a record at its source line, or the machine (a lathe to Klartext)
-        why = re.search(r"record \((.*)\): ", first) or re.search(r"error: (.*) \[", first)
+        why = (re.search(r"structure-keeping translation to \w+: (.*?); translate", first) or
+               re.search(r"record \((.*)\): ", first) or re.search(r"error: (.*) \[", first))
         print("REFUSED %s: %s" % (name, why.group(1)))
+        # The reason without the program's own names and numbers, to count refusals by kind.
+        reason = re.sub(r"(variable |program |of |\()'[^']*'", r"\1_", why.group(1))
+        reason = re.sub(r"\d+(\.\d+)?", "n", reason)
+        reasons[reason] = reasons.get(reason, 0) + 1
     else:
         mismatches += 1
         print("MISMATCH %s: %s" % (name, first or out.stderr.strip()[-300:]))
+if structured:
+    for reason, n in sorted(reasons.items(), key=lambda kv: (-kv[1], kv[0])):
+        print("refused %3d: %s" % (n, reason))
 print("%s: %d verified, %d refused, %d mismatches" % (target, verified, refused, mismatches))
