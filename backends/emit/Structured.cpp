@@ -250,12 +250,13 @@ bool Writer::declare(const Op &o) {
   const Expr *var = o.get("var");
   std::string type = symbolArg(o, "type");
   if (!var->args.empty()) return fail(o.loc, fmt::format("the array '{}'", var->str));
-  if (type != "real" && type != "int") return fail(o.loc, fmt::format("a {} variable ('{}')", type, var->str));
+  bool boolean = type == "bool" && iso_;  // Sinumerik to Sinumerik is not written
+  if (type != "real" && type != "int" && !boolean) return fail(o.loc, fmt::format("a {} variable ('{}')", type, var->str));
   const Expr *init = o.get("init");
   std::string v;
   if (iso_) {
     // A named local lives in a Fanuc common variable from #500 on, set where the DEF stands.
-    Declared d{type == "int" ? ir::Type::Int : ir::Type::Real, nextCommon_++};
+    Declared d{type == "int" ? ir::Type::Int : boolean ? ir::Type::Bool : ir::Type::Real, nextCommon_++};
     if (d.number > 999) return fail(o.loc, "more named variables than Fanuc's #500..#999");
     locals_[var->str] = d;
     if (init && !storeValue(*var, *init, v)) return false;
@@ -300,7 +301,7 @@ bool Writer::jumpText(const Op &o, std::string &out) {
 
 bool Writer::ifOp(const Op &o, int depth) {
   std::string c;
-  if (!expr(*o.get("cond"), c)) return false;
+  if (!condition(*o.get("cond"), c)) return false;
   const Region &then = o.regions[0];
   bool hasElse = o.regions.size() > 1 && !o.regions[1].empty();
   // A lone jump or break keeps its one-line form: IF [c] GOTO n / IF c GOTOF label.
@@ -350,7 +351,7 @@ bool Writer::loopOp(const Op &o, int depth) {
   if (iso_ && depth >= 3) return fail(o.loc, "a loop nested deeper than Fanuc's DO1..DO3");
   bool endless = o.kind == OpKind::Loop ? !count : cond->kind == ExprKind::Bool && cond->num != 0;
   std::string c, end = newLabel();
-  if (cond && !endless && !expr(*cond, c)) return false;
+  if (cond && !endless && !condition(*cond, c)) return false;
   breakTargets_.push_back(end);
   bool used = false;  // whether a break jumps to `end`
   size_t mark = text_.size();
@@ -379,7 +380,7 @@ bool Writer::loopOp(const Op &o, int depth) {
     ok = region(head, depth + 1);
     flushPrefix();
     std::string u;
-    ok = ok && expr(*body.back().get("cond"), u);
+    ok = ok && condition(*body.back().get("cond"), u);
     statement("UNTIL " + u);
   } else {
     statement(endless ? "LOOP" : "WHILE " + c);
@@ -593,6 +594,15 @@ bool writeStructured(const ir::Module &m, const StructuredOptions &opts, std::ve
                      Diagnostics &diags) {
   if (opts.target == Target::Heidenhain) {
     diags.error({}, "structure-keeping translation writes ISO and Sinumerik programs; translate to heidenhain without --keep-structure",
+                "unsupported-code");
+    return false;
+  }
+  // The pairs written: ISO (Fanuc Macro B, LinuxCNC) to Sinumerik and Sinumerik to ISO.
+  ir::Dialect from = opts.target == Target::ISO ? ir::Dialect::Sinumerik : ir::Dialect::ISO;
+  if (m.dialect != from) {
+    diags.error({}, fmt::format("structure-keeping translation writes ISO programs as Sinumerik and Sinumerik programs as "
+                                "ISO; translate this {} program to {} without --keep-structure",
+                                ir::dialectName(m.dialect), targetName(opts.target)),
                 "unsupported-code");
     return false;
   }

@@ -109,8 +109,8 @@ bool Writer::expr(const Expr &e, std::string &out) {
     out += exactNumber(e.num, false);
     return true;
   case ExprKind::Bool:
-    if (iso_) return fail(e.loc, "a truth constant (Fanuc Macro B has no TRUE/FALSE)");
-    out += e.num != 0 ? "TRUE" : "FALSE";
+    // A truth value is the number 1 or 0 in both engines (docs/IR.md §2.1).
+    out += iso_ ? (e.num != 0 ? "1" : "0") : (e.num != 0 ? "TRUE" : "FALSE");
     return true;
   case ExprKind::String:
     if (iso_) return fail(e.loc, "a string value (Fanuc Macro B has no strings)");
@@ -315,6 +315,11 @@ bool Writer::storeValue(const Expr &target, const Expr &value, std::string &out)
       out += exactNumber(std::round(value.num), false);
       return true;
     }
+    if (it != locals_.end() && it->second.type == ir::Type::Bool) {
+      // A BOOL stores 1 for any number but 0.
+      if (value.kind == ExprKind::Number) return out += value.num != 0 ? "1" : "0", true;
+      return condition(value, out);
+    }
     if (it != locals_.end() && it->second.type == ir::Type::Int) {
       // A Sinumerik INT rounds what it stores, half away from zero: ROUND does the same.
       out += "ROUND[";
@@ -324,6 +329,20 @@ bool Writer::storeValue(const Expr &target, const Expr &value, std::string &out)
     }
   }
   return expr(value, out);
+}
+
+static bool isTruth(const Expr &e) {
+  return e.kind == ExprKind::Bool || (e.kind == ExprKind::Binary && e.op >= OpCode::Eq && e.op <= OpCode::Xor) ||
+         (e.kind == ExprKind::Unary && e.op == OpCode::Not) ||
+         (e.kind == ExprKind::Call && std::string_view(e.str).substr(0, 3) == "TOL");
+}
+
+bool Writer::condition(const Expr &e, std::string &out) {
+  if (!iso_ || isTruth(e)) return expr(e, out);
+  // A number as a condition is true when it is not 0; Fanuc's IF and WHILE want a comparison.
+  if (!wrap(e, out)) return false;
+  out += " NE 0";
+  return true;
 }
 
 bool Writer::word(const Expr &e, std::string &out) {

@@ -31,6 +31,8 @@ public:
   bool expr(const Expr &e, std::string &out);
   // The value after an address letter: ISO `10.`, `#1`, `[#1*2]`; Sinumerik `10`, `=R1`, `=(R1*2)`.
   bool word(const Expr &e, std::string &out);
+  // A condition (IF, WHILE, a BOOL's value): ISO compares a plain number with 0.
+  bool condition(const Expr &e, std::string &out);
   // A variable as an assignment target or operand.
   bool variable(const Expr &e, std::string &out);
   // What a store into `target` must wrap the value in (ISO: ROUND for a Sinumerik INT).
