@@ -111,9 +111,20 @@ bool Writer::block(const Op &o) {
   return true;
 }
 
+// Modes that act only on canned cycles, which this writer refuses: G98/G99 and G80 (Fanuc: the
+// motion mode before the cycle comes back; LinuxCNC: no motion mode, so a program that runs
+// gives one before its next move) change nothing in a program without cycles.
+static const ModeCode kCycleOnly[] = {
+    {"retract", "retract_initial", "", ""}, {"retract", "retract_r", "", ""},
+    {"motion", "cycle_cancel", "", ""},     {"motion", "cycle_off", "", ""},
+};
+
 bool Writer::mode(const Op &o) {
   for (const ir::Arg &a : o.args) {
     std::string value = a.value->kind == ExprKind::Symbol ? a.value->str : "";
+    bool cycleOnly = false;
+    for (const ModeCode &m : kCycleOnly) cycleOnly |= a.key == m.group && value == m.value;
+    if (cycleOnly) continue;
     const ModeCode *found = nullptr;
     for (const ModeCode &m : kModes)
       if (a.key == m.group && value == m.value) found = &m;
@@ -211,6 +222,10 @@ bool Writer::machineWord(const Op &o) {
     if (h && o.args.size() == 1 && h->kind == ExprKind::Number && h->num == 0) return addWord(iso_ ? "G49" : "D0"), true;
     return fail(o.loc, "a tool length from another tool's offset (G43 H<n>: Sinumerik's D is an edge of the spindle tool)");
   }
+  case OpKind::CutterComp:
+    // G40 alone; G41/G42 take the radius from a D register (Fanuc) or the active edge (Sinumerik).
+    if (symbolArg(o, "side") == "off" && o.args.size() == 1) return addWord("G40"), true;
+    return fail(o.loc, "cutter compensation G41/G42 (the radius's source differs)");
   case OpKind::Comment: {
     if (!o_.comments) return true;
     const Expr *t = o.get("text");
@@ -457,6 +472,8 @@ bool Writer::control(const Op &o, int depth) {
   case OpKind::Call: return callOp(o);
   case OpKind::Return:
     if (o.get("value")) return fail(o.loc, "a return value");
+    // M99 in a Fanuc main program starts it again; Sinumerik's M17 there ends it.
+    if (iso_ && inMain_) return fail(o.loc, "a return from the main program (M99 would start it again)");
     addWord(iso_ ? "M99" : "M17");
     return true;
   default: break;
@@ -471,7 +488,7 @@ bool Writer::op(const Op &o, int depth) {
   case OpKind::Move: return move(o);
   case OpKind::Feed: case OpKind::Speed: case OpKind::ToolSelect: case OpKind::ToolChange:
   case OpKind::Spindle: case OpKind::Coolant: case OpKind::Dwell: case OpKind::Stop:
-  case OpKind::Aux: case OpKind::WorkOffset: case OpKind::ToolLength: case OpKind::Comment:
+  case OpKind::Aux: case OpKind::WorkOffset: case OpKind::ToolLength: case OpKind::Comment: case OpKind::CutterComp:
   case OpKind::Message:
     return machineWord(o);
   default: return control(o, depth);
@@ -509,6 +526,7 @@ bool Writer::function(const ir::Function &f, StructuredFile &out) {
   counters_.clear();
   if (!iso_) locals_.clear();  // ISO: named locals keep their #numbers program-wide
   collectBlockNumbers(f.body, blockNumbers_);
+  inMain_ = &f == &m_.functions[0];
   if (!f.params.empty()) return fail(f.loc, fmt::format("the parameters of '{}'", f.name));
   bool ok = region(f.body, 0);
   flushPrefix();

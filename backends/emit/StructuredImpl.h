@@ -93,6 +93,7 @@ private:
   const StructuredOptions &o_;
   Diagnostics &diags_;
   bool iso_ = false;
+  bool inMain_ = false;              // writing the main program
   bool ok_ = true;
   std::string text_;                 // the function being written
   Line cur_;
