@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <set>
 #include <string_view>
 
 namespace ncc::emit::structured {
@@ -288,13 +289,22 @@ bool Writer::variable(const Expr &e, std::string &out) {
       out += fmt::format("#{}", it->second.number);
       return true;
     }
-    // LinuxCNC names are case-insensitive and may hold characters Sinumerik names cannot.
-    bool ok = !e.str.empty() && std::isalpha((unsigned char)e.str[0]) && e.str.size() <= 31;
-    for (char c : e.str) ok &= std::isalnum((unsigned char)c) || c == '_';
-    if (!ok) return fail(e.loc, fmt::format("the variable name '{}' (not a Sinumerik name)", e.str));
-    if (it == locals_.end()) locals_[e.str] = Declared{};
+    // LinuxCNC names are case-insensitive and may hold characters Sinumerik names cannot; a
+    // Sinumerik name starts with two letters (else `X1` would be an axis word) and is no keyword.
+    static const std::set<std::string> kReserved = {
+        "AND", "OR", "NOT", "XOR", "MOD", "DIV", "DEF", "REAL", "INT", "BOOL", "CHAR", "STRING", "AXIS", "FRAME",
+        "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "TO", "ENDFOR", "LOOP", "ENDLOOP", "REPEAT", "UNTIL",
+        "GOTO", "GOTOF", "GOTOB", "GOTOC", "CASE", "OF", "DEFAULT", "CALL", "MCALL", "PROC", "RET", "TRUE", "FALSE",
+        "CR", "AR", "AP", "RP", "RND", "RNDM", "CHF", "CHR", "AC", "IC", "DC", "ACP", "ACN", "CIP", "CT", "TURN", "SF",
+        "PL", "PW", "SD", "MSG", "SETAL", "STOPRE", "SPOS", "TRANS", "ATRANS", "ROT", "AROT", "SCALE", "ASCALE",
+        "MIRROR", "AMIRROR", "LIMS", "SCC", "DISC", "ADIS", "CTOL", "OTOL"};
     std::string up = e.str;
     for (char &c : up) c = (char)std::toupper((unsigned char)c);
+    bool ok = up.size() >= 2 && up.size() <= 31 && !kReserved.count(up);
+    for (size_t i = 0; i < up.size(); ++i)
+      ok &= i < 2 ? (std::isalpha((unsigned char)up[i]) || up[i] == '_') : (std::isalnum((unsigned char)up[i]) || up[i] == '_');
+    if (!ok) return fail(e.loc, fmt::format("the variable name '{}' (not a Sinumerik name: two letters first, no keyword)", e.str));
+    if (it == locals_.end()) locals_[e.str] = Declared{};
     out += up;
     return true;
   }
