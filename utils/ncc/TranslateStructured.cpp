@@ -55,6 +55,11 @@ static bool runTranslation(Session &s, const std::vector<emit::StructuredFile> &
 
 int translateStructured(Session &s, uint32_t file, const emit::EmitOptions &eo, const std::string &out, bool verify,
                         double tolerance) {
+  if (eo.checkTravel) {  // travel is a property of the executed path, which this writer never sees
+    s.diags.error({}, "--check-travel checks the executed path: it works on the flat translation only",
+                  "unsupported-code");
+    return kExitErrors;
+  }
   ir::Module m;
   if (!s.load(file, m)) return kExitErrors;
   emit::StructuredOptions so;
