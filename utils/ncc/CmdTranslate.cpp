@@ -3,15 +3,25 @@
 #include "backends/emit/Emitter.h"
 #include "ir/MotionCompare.h"
 #include "utils/ncc/Driver.h"
+#include "utils/ncc/TranslateStructured.h"
 
 #include <fmt/format.h>
 
 namespace ncc::driver {
 
+bool samePaths(Session &s, const MotionBuffer &source, const MotionBuffer &back, double tolerance) {
+  PathCompareOptions po;
+  po.tolerance = tolerance;
+  std::string report;
+  if (comparePaths(source.records, back.records, po, report)) return true;
+  s.diags.error({}, "verification failed: " + report);
+  return false;
+}
+
 int cmdTranslate(int argc, char **argv) {
   Session s;
   std::string file, to, out;
-  bool verify = false, noComments = false, checkTravel = false, binary = false;
+  bool verify = false, noComments = false, checkTravel = false, binary = false, keepStructure = false;
   double tol = 1e-3;
   po::options_description desc("ncc translate options");
   desc.add_options()
@@ -22,13 +32,15 @@ int cmdTranslate(int argc, char **argv) {
       ("verify", po::bool_switch(&verify), "run source and output through the motion pipeline; fail if the paths differ")
       ("tolerance", po::value(&tol)->default_value(1e-3), "--verify position tolerance in mm")
       ("no-comments", po::bool_switch(&noComments), "drop comments")
+      ("keep-structure", po::bool_switch(&keepStructure),
+       "keep loops, branches, variables and subprogram calls (iso <-> sinumerik; docs/EMIT.md)")
       ("check-travel", po::bool_switch(&checkTravel),
        "a move outside the machine's axis limits (machine coordinates) is an error");
   addCommonOptions(desc, s.opts);
   po::positional_options_description pos;
   pos.add("file", 1);
   po::variables_map vm;
-  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik|heidenhain|apt|cldata [--binary] [-o OUT] [--verify]");
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik|heidenhain|apt|cldata [--binary] [-o OUT] [--verify] [--keep-structure]");
   if (rc >= 0) return rc;
   emit::EmitOptions eo;
   if (!emit::targetFromName(to, eo.target)) {
@@ -45,6 +57,7 @@ int cmdTranslate(int argc, char **argv) {
   eo.programName = file;
   uint32_t f = s.start(file);
   if (!f) return kExitErrors;
+  if (keepStructure) return translateStructured(s, f, eo, out, verify, tol);
 
   MotionBuffer source;
   if (!s.execute(f, source)) return kExitErrors;
@@ -68,13 +81,7 @@ int cmdTranslate(int argc, char **argv) {
       s.diags.error({}, "verification failed: the translated program does not run");
       return kExitErrors;
     }
-    PathCompareOptions po;
-    po.tolerance = tol;
-    std::string report;
-    if (!comparePaths(source.records, back.records, po, report)) {
-      s.diags.error({}, "verification failed: " + report);
-      return kExitErrors;
-    }
+    if (!samePaths(s, source, back, tol)) return kExitErrors;
     std::fprintf(stderr, "ncc: verified: %s and its translation give the same path\n", file.c_str());
   }
   if (!writeOutput(s, out, text)) return kExitErrors;

@@ -5,8 +5,10 @@ located error naming the record the target cannot hold ([unsupported-code], [til
 anything else (a path that differs, an output that does not run, a crash) is a MISMATCH.
 
 usage: roundtrip.py NCC SRC_ROOT TARGET[,TARGET...] MACHINE GLOB...
-  TARGET: several, comma-separated, share the source runs; each line then names its target
-          (`REFUSED apt: …`) and each gets its own count line
+  TARGET: iso, sinumerik, heidenhain, apt or cldata; "sinumerik:structured" translates with
+          --keep-structure (docs/EMIT.md "Structure-keeping translation") and ends with the
+          refusals by reason. Several, comma-separated, share the source runs; each line then
+          names its target (`REFUSED apt: …`) and each gets its own count line
   MACHINE: a machine file for programs whose RUN lines name none ("-": ncc's default machine);
            "=FILE" runs every program on FILE
 """
@@ -24,6 +26,7 @@ bases = {"%srcroot": root, "%shared": os.path.normpath(os.path.join(root, "..", 
 
 targets = target.split(",")
 counts = {t: [0, 0, 0] for t in targets}  # verified, refused, mismatches
+reasons = {t: {} for t in targets}
 for prog in programs:
     with open(prog, errors="replace") as f:
         text = f.read()
@@ -40,7 +43,9 @@ for prog in programs:
         continue  # an error test: the source itself does not run
     name = os.path.relpath(prog, root)
     for t in targets:
-        out = subprocess.run([ncc, "translate", prog, "--to=" + t, "--verify", "-o", os.devnull] + opts,
+        to, _, mode = t.partition(":")
+        extra = ["--keep-structure"] if mode == "structured" else []
+        out = subprocess.run([ncc, "translate", prog, "--to=" + to, "--verify", "-o", os.devnull] + extra + opts,
                              capture_output=True, text=True)
         tag = " " + t if len(targets) > 1 else ""
         first = next((l for l in out.stderr.splitlines() if "error:" in l), "")
@@ -48,10 +53,18 @@ for prog in programs:
             counts[t][0] += 1
         elif re.search(r"error: .*\[(unsupported-code|tilted-arc)\]$", first):
             counts[t][1] += 1  # a record at its source line, or the machine (a lathe to Klartext)
-            why = re.search(r"record \((.*)\): ", first) or re.search(r"error: (.*) \[", first)
+            why = (re.search(r"structure-keeping translation to \w+: (.*?); translate", first) or
+                   re.search(r"record \((.*)\): ", first) or re.search(r"error: (.*) \[", first))
             print("REFUSED%s %s: %s" % (tag, name, why.group(1)))
+            # The reason without the program's own names and numbers, to count refusals by kind.
+            reason = re.sub(r"(variable |program |of |\()'[^']*'", r"\1_", why.group(1))
+            reason = re.sub(r"\d+(\.\d+)?", "n", reason)
+            reasons[t][reason] = reasons[t].get(reason, 0) + 1
         else:
             counts[t][2] += 1
             print("MISMATCH%s %s: %s" % (tag, name, first or out.stderr.strip()[-300:]))
 for t in targets:
-    print("%s: %d verified, %d refused, %d mismatches" % (t, *counts[t]))
+    if t.endswith(":structured"):
+        for reason, n in sorted(reasons[t].items(), key=lambda kv: (-kv[1], kv[0])):
+            print("refused %3d: %s" % (n, reason))
+    print("%s: %d verified, %d refused, %d mismatches" % (t.partition(":")[0], *counts[t]))

@@ -1,0 +1,31 @@
+O0100 (POCKET ROWS)
+G21 G90 G17 G94
+G40 G49 G80 G98
+T1 M6
+S1200 M3
+#1 = 3 (ROWS)
+#2 = 0
+G0 X0 Y0 Z5.
+G1 Z-1. F200.
+WHILE [#1 GT 0] DO1
+  #1 = #1 - 1
+  #3 = 0
+  WHILE [#3 LT 2] DO2
+    G1 X[#3 * 10 + 5] Y[#2 * 8]
+    #3 = #3 + 1
+  END2
+  IF [#1 EQ 1] GOTO 50
+  G2 X[#3 * 10 + 15] Y[#2 * 8] R15.
+N50 #2 = #2 + 1
+END1
+IF [#2 GE 3] THEN #4 = SIN[30] * 2 + FIX[2.7] - ROUND[-2.5]
+G1 X#4
+M98 P1234 L2
+G0 Z5.
+M5
+M30
+O1234 (STEP)
+G91 G1 X1.
+G90
+M99
+%
