@@ -121,13 +121,7 @@ public:
   // The positioning logic (L14792-L14806): below the clearance height Q260 the probe first goes
   // up to it; then in the plane to (x, y), then down to z.
   void approach(E x, E y, E z) {
-    ir::Region up;
-    Gen inner(c_);
-    ir::Region *saved = c_.out;
-    c_.out = &up;
-    inner.position(nullptr, nullptr, p("Q260"), true);
-    c_.out = saved;
-    when(bin(OpCode::Lt, sys("_z"), p("Q260")), std::move(up));
+    when(bin(OpCode::Lt, sys("_z"), p("Q260")), region([&] { position(nullptr, nullptr, p("Q260"), true); }));
     position(std::move(x), std::move(y), nullptr, true);
     position(nullptr, nullptr, std::move(z), true);
   }
@@ -176,25 +170,42 @@ public:
     if (arcCcw) {
       // The direction of the circle's points: Q247 > 0 counter-clockwise.
       for (int ccw = 0; ccw < 2; ++ccw) {
-        ir::Region r;
-        ir::Region *saved = c_.out;
-        c_.out = &r;
-        feed(n(c_.table.fmax));
-        motion(ccw ? "arc_ccw" : "arc_cw");
-        Op mv(OpKind::Move, c_.loc);
-        mv.set("X", v("PX" + s));
-        mv.set("Y", v("PY" + s));
-        mv.set("I", v(cx));
-        mv.set("J", v(cy));
-        mv.set("ac", Expr::symbol("IJ"));
-        emit(std::move(mv));
-        c_.out = saved;
+        ir::Region r = region([&] {
+          feed(n(c_.table.fmax));
+          motion(ccw ? "arc_ccw" : "arc_cw");
+          Op mv(OpKind::Move, c_.loc);
+          mv.set("X", v("PX" + s));
+          mv.set("Y", v("PY" + s));
+          mv.set("I", v(cx));
+          mv.set("J", v(cy));
+          mv.set("ac", Expr::symbol("IJ"));
+          emit(std::move(mv));
+        });
         when(bin(ccw ? OpCode::Ne : OpCode::Eq, arcCcw->clone(), n(0)), std::move(r));
       }
     } else {
       position(v("PX" + s), v("PY" + s), nullptr);
     }
     if (viaClearance) position(nullptr, nullptr, measureZ());
+  }
+
+  // The ops `body` writes, as a region (of an `if`).
+  template <class F>
+  ir::Region region(F body) {
+    ir::Region r;
+    ir::Region *saved = c_.out;
+    c_.out = &r;
+    body();
+    c_.out = saved;
+    return r;
+  }
+  // To point k over the clearance height (Q301=1) or at the measuring height.
+  void betweenByQ301(int k) {
+    Op o(OpKind::If, c_.loc);
+    o.set("cond", bin(OpCode::Eq, p("Q301"), n(1)));
+    o.regions.push_back(region([&] { between(k, true); }));
+    o.regions.push_back(region([&] { between(k, false); }));
+    emit(std::move(o));
   }
 
   // The probe cycles 400-499 run without cycles 7, 8, 10, 11, 26 active (L14755-L14765, HEI-TCH-04):
@@ -232,13 +243,10 @@ public:
   // Q381=1: the datum in the probe axis too, probed at (Q382, Q383) onto Q384 (L17676-L17709).
   void axisDatumProbe() {
     set("MZA", n(0));
-    ir::Region r;
-    ir::Region *saved = c_.out;
-    c_.out = &r;
-    probeAxis("A", p("Q382"), p("Q383"), p("Q384"));
-    toClearance();
-    c_.out = saved;
-    when(bin(OpCode::Eq, p("Q381"), n(1)), std::move(r));
+    when(bin(OpCode::Eq, p("Q381"), n(1)), region([&] {
+           probeAxis("A", p("Q382"), p("Q383"), p("Q384"));
+           toClearance();
+         }));
   }
   // The Z datum's measured value when Q381=1; else Q333, which leaves Z reading as it does.
   E axisDatumZ() {
@@ -262,18 +270,7 @@ bool rectangle(ProbeCall &c, bool inside) {
   g.approach(g.v("PX1"), g.v("PY1"), g.measureZ());
   for (int k = 1; k <= 4; ++k) {
     if (k > 1) {
-      ir::Region viaUp, direct;
-      ir::Region *saved = c.out;
-      c.out = &viaUp;
-      g.between(k, true);
-      c.out = &direct;
-      g.between(k, false);
-      c.out = saved;
-      Op o(OpKind::If, c.loc);
-      o.set("cond", bin(OpCode::Eq, g.p("Q301"), n(1)));
-      o.regions.push_back(std::move(viaUp));
-      o.regions.push_back(std::move(direct));
-      g.emit(std::move(o));
+      g.betweenByQ301(k);
     }
     g.probePlane(k);
   }
@@ -325,18 +322,13 @@ bool circle(ProbeCall &c, bool inside) {
     if (k > 1) {
       // Q301 = 1 over the clearance height, else at the measuring height; Q365 = 1 on an arc
       // about the nominal centre, 0 a straight line.
-      ir::Region branch[4];
-      ir::Region *saved = c.out;
       for (int b = 0; b < 4; ++b) {
-        c.out = &branch[b];
         bool up = b & 1, arc = b & 2;
-        g.between(k, up, arc ? bin(OpCode::Gt, g.p("Q247"), n(0)) : nullptr, "CCX", "CCY");
+        ir::Region r = g.region([&] { g.between(k, up, arc ? bin(OpCode::Gt, g.p("Q247"), n(0)) : nullptr, "CCX", "CCY"); });
+        g.when(bin(OpCode::And, bin(OpCode::Eq, bin(OpCode::Eq, g.p("Q301"), n(1)), n(up)),
+                   bin(OpCode::Eq, bin(OpCode::Eq, g.p("Q365"), n(1)), n(arc))),
+               std::move(r));
       }
-      c.out = saved;
-      for (int b = 0; b < 4; ++b)
-        g.when(bin(OpCode::And, bin(OpCode::Eq, bin(OpCode::Eq, g.p("Q301"), n(1)), n(b & 1)),
-                   bin(OpCode::Eq, bin(OpCode::Eq, g.p("Q365"), n(1)), n((b & 2) ? 1 : 0))),
-               std::move(branch[b]));
     }
     g.probePlane(k);
   }
@@ -447,18 +439,7 @@ bool cycle400(ProbeCall &c) {
   }
   g.approach(g.v("PX1"), g.v("PY1"), g.measureZ());
   g.probePlane(1);
-  ir::Region viaUp, direct;
-  ir::Region *saved = c.out;
-  c.out = &viaUp;
-  g.between(2, true);
-  c.out = &direct;
-  g.between(2, false);
-  c.out = saved;
-  Op o(OpKind::If, c.loc);
-  o.set("cond", bin(OpCode::Eq, g.p("Q301"), n(1)));
-  o.regions.push_back(std::move(viaUp));
-  o.regions.push_back(std::move(direct));
-  g.emit(std::move(o));
+  g.betweenByQ301(2);
   g.probePlane(2);
   g.toClearance();
   // The line from point 1 to point 2 against ax1 (Q272=2: against ax2, 90 less).
