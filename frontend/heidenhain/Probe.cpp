@@ -35,6 +35,8 @@ bool BlockParser::tchProbe() {
   int sub = n.isInt ? -1 : (int)std::lround((n.num - number) * 10);
   ++i_;
   if (!knownProbeCycle(number)) return fail(n, fmt::format("{} is not a touch-probe cycle", n.text), "cycle-invalid");
+  // The probe table (the machine file) is in mm: an INCH program would read it as inches.
+  if (f_.inch) return fail(t_[0], "touch-probe cycles in an INCH program are not simulated yet", "unsupported-code");
   if (sub >= 0) return oldProbeBlock(number, sub, n);
   while (!atEnd() && tok().line == n.line) ++i_;  // the title: free text
   const ProbeCycle *pc = findProbeCycle(number);
