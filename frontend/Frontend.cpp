@@ -138,6 +138,7 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
     ho.searchDirs = opts.searchDirs;
     ho.linkedFunctions = opts.linkedFunctions;
     ho.cycles = opts.cycles;
+    ho.probe = opts.probe;
     return hei::parseHeidenhainProgram(sm, file, ho, diags, out);
   }
   case SourceKind::CLData: return cld::parseAptProgram(sm, file, diags, out);

@@ -24,6 +24,7 @@ struct FrontendOptions {
   char latheSystem = 'A';                  // its gcode_system
   std::vector<std::string> linkedFunctions;  // defined by linked files (driver --link): not searched
   CycleLookup cycles = nullptr;            // the cycle library's entries (the driver's; null: none)
+  ProbeTable probe;                        // Heidenhain touch-probe cycles: machine [controller] probe_*
   // The mode a Sinumerik program file (.mpf/.spf) starts in: "siemens" (G290), or "iso" (G291:
   // the 808D's ISO default mode, machine [controller] start_mode; the ISO front end reads it).
   std::string startMode = "siemens";

@@ -7,6 +7,17 @@
 
 namespace ncc {
 
+// The Heidenhain touch probe's table (tchprobe.tp) as the machine file gives it ([controller]
+// probe_feed, probe_fmax, probe_dist, probe_set_up, probe_prepos; docs/PROBING.md): what a front
+// end needs to lower the probe cycles.
+struct ProbeTable {
+  double feed = 100;         // F: the probing feed, mm/min
+  double fmax = 5000;        // FMAX: the feed between the probing points (and pre-positioning, below)
+  double dist = 10;          // DIST: the longest probing path, mm
+  double setUp = 2;          // SET_UP: the clearance before the probing point, added to Q320
+  bool preposRapid = true;   // F_PREPOS: FMAX_MACHINE (pre-position at rapid) or FMAX_PROBE (at FMAX)
+};
+
 struct CycleSignature {
   const char *name = nullptr;    // "sin.CYCLE81"
   const char *params = nullptr;  // the positional parameter names, space-separated

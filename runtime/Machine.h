@@ -98,6 +98,12 @@ struct Controller {
   // The length unit of offsets, G92 values and reference points as programs read and write
   // them (LinuxCNC #5161-#5390: the machine's LINEAR_UNITS; stand-alone rs274: inch).
   std::string parameterUnits = "mm";
+  // The Heidenhain probe table tchprobe.tp of the touch probe (docs/PROBING.md "Heidenhain touch-
+  // probe cycles"): F probing feed, FMAX feed between the points, DIST the longest probing path,
+  // SET_UP the clearance added to Q320, F_PREPOS "machine" (FMAX_MACHINE: pre-position at rapid)
+  // or "probe" (FMAX_PROBE: at FMAX).
+  double probeFeed = 100, probeFmax = 5000, probeDist = 10, probeSetUp = 2;
+  std::string probePrepos = "machine";
   // Oriented spindle stops the program does not give an angle for (808D SD43240 $SA_M19_SPOS for
   // M19; the GUD _ZSFR[2] of the G76/G87 boring cycles) and the side the boring tool moves off
   // the wall (_ZSFI[5]: 1 +a1, 0 or 2 -a1, 3 +a2, 4 -a2 of the plane's axes, e.g. +X -X +Y -Y in G17).

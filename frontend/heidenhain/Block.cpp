@@ -22,7 +22,7 @@ namespace {
 // Statements of the Klartext language ncc knows but does not run yet: refused, naming them.
 const char *const kNotYet[] = {
     "FC", "FL", "FPOL", "FSELECT", "FCT", "FLT", "RPL", "DECLARE", "CONTOUR",
-    "PLANE", "TCH", "FUNCTION", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
+    "PLANE", "FUNCTION", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
 };
 
 // Text of a block for a comment (BLK FORM is kept that way): the tokens, signs glued to values.
@@ -87,6 +87,7 @@ bool BlockParser::parse() {
       {"STOP", &BlockParser::stop},      {"M", &BlockParser::mOnly},
       {"APPR", &BlockParser::approachDepart}, {"DEP", &BlockParser::approachDepart},
       {"PATTERN", &BlockParser::patternDef}, {"SEL", &BlockParser::select}, {"GLOBAL", &BlockParser::globalDef},
+      {"TCH", &BlockParser::tchProbe},
   };
   // M89's calls follow the blocks in file order: control flow or a rounding of the move before
   // would need them at run time.

@@ -15,6 +15,7 @@ struct HeiOptions {
   std::vector<std::string> searchDirs;       // where CALL PGM looks after the program's folder
   std::vector<std::string> linkedFunctions;  // defined by linked files: not searched
   CycleLookup cycles = nullptr;              // the cycle library's hei.* entries (null: none)
+  ProbeTable probe;                          // the touch probe's table values (Probe.cpp)
 };
 
 // Parses the main program and every program it calls (CALL PGM) into `out`: functions[0] is

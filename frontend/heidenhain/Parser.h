@@ -73,6 +73,11 @@ public:
   std::vector<std::pair<std::string, SourceLoc>> slLabels;
   std::map<int, std::set<std::string>> slGiven;
   std::map<int, bool> slFmaxOut;
+  // TCH PROBE 0.0 <title> Qn X-: the result parameter and the probing axis and direction for 0.1.
+  struct OldProbe {
+    int cycle = -1, resultQ = 0, dir = 0;
+    char axis = 0;
+  } oldProbe;
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
 
 private:
@@ -96,6 +101,7 @@ public:
   bool approach = false;   // some file uses APPR/DEP: … declares their scratch values
   bool callPat = false;    // some CYCL CALL PAT is split over several ops: … declares the call's level
   bool mainInch = false;
+  std::set<std::string> probeVars;  // the touch-probe cycles' scratch values (ProbeGen.cpp)
   std::set<std::string> slVars;  // the SL cycles' frozen parameters: declared by the main program
   bool ok = true;
   // The function of a called program (CALL PGM): parsed on first use; "" with an error at loc.
@@ -197,6 +203,8 @@ private:
   bool patternDef();                               // Patterns.cpp
   bool select();                                   // Patterns.cpp: SEL PATTERN
   bool globalDef();                                // Patterns.cpp: GLOBAL DEF 125
+  bool tchProbe();                                 // Probe.cpp: TCH PROBE
+  bool oldProbeBlock(int number, int sub, const Token &n);  // Probe.cpp: TCH PROBE 0.0, 0.1
   bool approachDepart();                           // Approach.cpp: APPR, DEP
   bool approachBefore(PathWords &firstElement, int dr);  // … the APPR before its first element (dr: C's DR, 0: L)
   void arcTangent(const char *px, const char *py, int dr, SourceLoc l);

@@ -150,6 +150,7 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
       globals.push_back({g, 0});
     for (const char *g : {kScl, kAxisScl[0], kAxisScl[1], kAxisScl[2]}) globals.push_back({g, 1});
   }
+  for (const std::string &v : pp.probeVars) globals.push_back({v.c_str(), 0});
   for (const std::string &v : pp.slVars) globals.push_back({v.c_str(), 0});
   std::vector<Op> decls;
   for (auto [g, init] : globals) {

@@ -73,6 +73,8 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.lathe = machine.controller.lathe();
   fo.latheSystem = machine.controller.gcodeSystem.empty() ? 'A' : machine.controller.gcodeSystem[0];
   fo.startMode = machine.controller.startMode;
+  fo.probe = {machine.controller.probeFeed, machine.controller.probeFmax, machine.controller.probeDist,
+              machine.controller.probeSetUp, machine.controller.probePrepos == "machine"};
   for (auto &[code, call] : machine.controller.macroCalls)
     fo.macroCalls.push_back({code, call.program, call.kind == "subprogram"});
   for (unsigned l : opts.blockDelete)
