@@ -2,7 +2,8 @@ O1000 (MOVES IN ONE CALL, AND MOVES THAT READ THE MACHINE)
 G21 G90 G17 G94 F1000.
 #1=0
 WHILE [#1 LT 3] DO1
-G1 X[#1+1] Y[#5022]
+G1 X[#1+1] Y0
+G1 Y[#5022+1]
 G1 X[#[#1+100]]
 #1=#1+1
 END1
@@ -20,8 +21,11 @@ M30
 ; RUN: FileCheck %s < %t.j
 ; (#[#1+100] is vacant: that line's X word is left out, so it does not move.)
 ; CHECK: STRAIGHT_FEED(1.0000, 0.0000, 0.0000,
+; CHECK-NEXT: STRAIGHT_FEED(1.0000, 1.0000, 0.0000,
 ; CHECK-NEXT: STRAIGHT_FEED(2.0000, 0.0000, 0.0000,
+; CHECK-NEXT: STRAIGHT_FEED(2.0000, 1.0000, 0.0000,
 ; CHECK-NEXT: STRAIGHT_FEED(3.0000, 0.0000, 0.0000,
+; CHECK-NEXT: STRAIGHT_FEED(3.0000, 1.0000, 0.0000,
 ; CHECK-NEXT: SET_G5X_OFFSET(
 ; RUN: %ncc compile --emit=llvm %s | FileCheck %s --check-prefix=IR
 ; IR: call i32 @ncrt_exec_move(ptr %0, ptr %{{[0-9]+}}, i64 %{{[0-9]+}}, ptr @nc.mode, ptr %cmd.site)
