@@ -30,6 +30,14 @@ public:
   virtual bool execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode) {
     return (!blocks || execBlocks(*last, blocks)) && exec(mode);
   }
+  // A move with what waits before it, in one call: `blocks` Block commands ending with *last
+  // (none when 0), then *mode when not null (as execMode), then `move` (ncrt_exec_move: a loop's
+  // `G1 X[…]` line; the flat path's plain block). The executor answers it without a call per
+  // command (Executor::execMove).
+  virtual bool execMove(const MachineCmd *last, uint64_t blocks, const MachineCmd *mode, const MachineCmd &move) {
+    if (mode ? !execMode(last, blocks, *mode) : blocks && !execBlocks(*last, blocks)) return false;
+    return exec(move);
+  }
   // A system variable's current value (ir/SystemVars.h); false when this sink has none (err
   // empty: the engine reports RunError::SysVar) or it does not exist (a tool or edge the
   // machine lacks: the reason in err, which the engine reports).

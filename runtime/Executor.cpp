@@ -5,6 +5,7 @@
 
 #include "ir/Value.h"
 
+#include <cassert>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -586,6 +587,7 @@ Executor::Executor(const Machine &machine, MotionSink &sink, Diagnostics &diags)
     if (modes.nmodes < kMaxModes) modes.modes[modes.nmodes++] = m;
   if (modes.nmodes) impl_->execMode(modes);
   impl_->noteFrame("start");  // a machine whose G54 offset is not zero
+  impl_->plainState = impl_->plainStateNow();
 }
 
 Executor::~Executor() { delete impl_; }
@@ -605,6 +607,14 @@ bool Executor::execMode(const MachineCmd *last, uint64_t blocks, const MachineCm
   return true;
 }
 
+// The waiting blocks, a mode in force, then the move: the calls the three commands would make
+// to exec, less the mode's when it repeats (its location is replaced by the move's at once).
+bool Executor::execMove(const MachineCmd *last, uint64_t blocks, const MachineCmd *mode, const MachineCmd &move) {
+  if (blocks && !execBlocks(*last, blocks)) return false;
+  if (mode && (mode->mask != 0 || !impl_->modeRepeats(*mode)) && !exec(*mode)) return false;
+  return exec(move);
+}
+
 // The blocks before `last` only count: a block that follows a block sees no frame change.
 bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
   if (count > 1) {
@@ -614,16 +624,21 @@ bool Executor::execBlocks(const MachineCmd &last, uint64_t count) {
   return count == 0 || exec(last);
 }
 
+// No motion mode but G0/G1 and nothing in force that reshapes or holds a move (plainState).
+bool Executor::Impl::plainStateNow() const {
+  if (st.motion != ModeValue::Linear && st.motion != ModeValue::Rapid) return false;
+  if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
+  return !(st.feedMode == ModeValue::InverseTime || st.css || st.ended || pf.linear || rotated() || poly.outside ||
+           corner.active || corner.requested || comp.active() || compExit || sinSpline.open || storedCycle.modal ||
+           tapOpen);
+}
+
 // Here, not in ExecutorMotion.cpp with plainMove: exec inlines it.
 bool Executor::Impl::plainMoveFits(const MachineCmd &c) const {
   const WordMask axes = c.mask & kAxisMask;
   if (c.kind != CmdKind::Move || !axes || axes != c.mask || c.sub || c.sub2 || (c.mask & missingAxes)) return false;
-  if (st.motion != ModeValue::Linear && st.motion != ModeValue::Rapid) return false;
-  if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
-  if (st.feedMode == ModeValue::InverseTime || st.css || st.ended || stopOnce || pf.linear || rotated() ||
-      poly.outside || corner.active || corner.requested || comp.active() || compExit || sinSpline.open ||
-      storedCycle.modal || tapOpen)
-    return false;
+  assert(plainState == plainStateNow());  // a state change that missed its PlainStateRefresh
+  if (!plainState || stopOnce) return false;  // G9 ends with its block: checked here
   for (WordMask m = axes; m; m &= m - 1)  // exec's check: a bad number gets its diagnostic there
     if (!std::isfinite(c.w[__builtin_ctzll(m)])) return false;
   return true;
@@ -635,12 +650,13 @@ bool Executor::exec(const MachineCmd &c) {
   // The flat path's commands first (issue 6): a block start or a mode without words needs none
   // of the word checks below, a plain G0/G1 skips the general motion machinery.
   if (!c.mask && c.kind == CmdKind::Block) return x.beginBlock(c);
-  if (!c.mask && c.kind == CmdKind::Mode) return x.modeRepeats(c) || x.execMode(c);
+  if (!c.mask && c.kind == CmdKind::Mode && x.modeRepeats(c)) return true;
   if (x.plainMoveFits(c)) {
     x.plainMove(c);
     return true;
   }
-  return x.execCommand(c);
+  Impl::PlainStateRefresh refresh{x};
+  return !c.mask && c.kind == CmdKind::Mode ? x.execMode(c) : x.execCommand(c);
 }
 
 // Every other command (out of line: the fast paths above stay a small function).
@@ -843,6 +859,7 @@ bool Executor::saveModal() {
 bool Executor::restoreModal(SourceLoc loc) {
   if (impl_->savedModal.empty()) return true;
   Impl &x = *impl_;
+  Impl::PlainStateRefresh refresh{x};
   const Impl::SavedModal &s = x.savedModal.back();
   x.loc = loc;
   if (!x.pf.sameTransform(s.pf.composite, s.pf.local)) {
@@ -886,6 +903,7 @@ bool Executor::restoreModes(SourceLoc loc) {
 
 bool Executor::finish(bool ranToEnd) {
   Impl &x = *impl_;
+  Impl::PlainStateRefresh refresh{x};
   if (ranToEnd && x.sinSpline.open && !x.sinSplineEnd()) return false;
   if (ranToEnd) x.cornerFlush("no move follows");
   x.comp.stop();

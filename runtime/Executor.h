@@ -51,6 +51,8 @@ public:
   bool execBlocks(const MachineCmd &last, uint64_t count);
   // CmdSink::execMode: the blocks, then the mode unless it is in force already.
   bool execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode);
+  // CmdSink::execMove: the blocks, the mode (when given and not in force), then the move.
+  bool execMove(const MachineCmd *last, uint64_t blocks, const MachineCmd *mode, const MachineCmd &move);
   // Flushes pending state at program end; returns false on error. ranToEnd: the program ran
   // to its end (not stopped by an error), so a missing M2/M30 is worth a warning.
   bool finish(bool ranToEnd = true);
@@ -93,6 +95,9 @@ public:
   bool execBlocks(const MachineCmd &last, uint64_t count) override { return exec_.execBlocks(last, count); }
   bool execMode(const MachineCmd *last, uint64_t blocks, const MachineCmd &mode) override {
     return exec_.execMode(last, blocks, mode);
+  }
+  bool execMove(const MachineCmd *last, uint64_t blocks, const MachineCmd *mode, const MachineCmd &move) override {
+    return exec_.execMove(last, blocks, mode, move);
   }
   bool readSystem(const SysRef &v, double &out, std::string &err) override { return exec_.readSystem(v, out, err); }
   bool writeSystem(const SysRef &v, double value, SourceLoc loc, std::string &err) override {

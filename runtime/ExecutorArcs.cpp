@@ -26,13 +26,14 @@ void Executor::Impl::notePath(const MotionRecord &r) {
   if (r.kind != RecordKind::Arc && !(line && (r.end[0] != r.start[0] || r.end[1] != r.start[1] || r.end[2] != r.start[2])))
     return;
   lastPath.kind = r.kind, lastPath.start = r.start, lastPath.end = r.end;
+  lastPathPlain = false;
   if (r.kind != RecordKind::Arc) return;
   lastPath.center = r.center, lastPath.turns = r.turns, lastPath.plane = r.plane, lastPath.normal = r.arcNormal();
 }
 
 // The unit direction the path leaves its last point with (machine XYZ); false before any.
 bool Executor::Impl::pathTangent(Vec3 &t) const {
-  const LastPath &p = lastPath;
+  const LastPath p = lastPathNow();
   if (p.kind == RecordKind::Arc) {
     t = ncc::arcTangent(tiltedArcGeometry(p.start, p.end, p.center, p.normal, p.turns), 1.0);
     return true;

@@ -80,7 +80,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     capture.sl = (ContourUse)c.sub2 == ContourUse::Sub, capture.side = 0;
     capture.st = st;
     capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX;
-    capture.lastPath = lastPath;
+    capture.lastPath = lastPathNow();
     capture.blockNumber = blockNumber, capture.blockLoc = blockLoc;
     route.capture = &capture.records;
     return true;
@@ -142,6 +142,7 @@ bool Executor::Impl::capturedContour(Contour &ct) {
   st = capture.st;
   feedMM = capture.feedMM, toolLength = capture.toolLength, toolOffsetX = capture.toolOffsetX;
   lastPath = capture.lastPath;
+  lastPathPlain = false;
   blockNumber = capture.blockNumber, blockLoc = capture.blockLoc;
   loc = at;
   return true;

@@ -274,6 +274,7 @@ bool Executor::Impl::cycleRigidTap(const AxisVec &bottom, const CycleStep &s) {
 
 bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const CycleDef *pattern,
                         const CycleArgs *patternArgs, SourceLoc loc) {
+  Impl::PlainStateRefresh refresh{*impl_};
   impl_->loc = loc;
   return impl_->runLibraryCycle(&cycle, args, pattern, patternArgs);
 }

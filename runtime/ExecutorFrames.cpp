@@ -103,6 +103,7 @@ bool Executor::readFrame(const SysRef &ref, FrameValue &out, std::string &err) c
 
 bool Executor::writeFrame(const SysRef &ref, const FrameValue &f, SourceLoc loc, std::string &err) {
   Impl &x = *impl_;
+  Impl::PlainStateRefresh refresh{x};
   x.loc = loc;
   double u = x.scale();
   std::string what = "$" + sysRefText(ref);

@@ -346,6 +346,15 @@ struct Executor::Impl {
   // a modal cycle, G9, ...). plainMove does what execMove, moveTo, emitMove, pathOut and emit do
   // for it, into one reused record; plainMoveFits says when (Executor::exec).
   bool plainMoveFits(const MachineCmd &c) const;
+  // plainMoveFits' conditions on the state, cached (issue 6): the state changes only in the
+  // commands and calls that are neither a plain move, a block start nor a mode in force, and each
+  // of those recomputes it on its way out (a PlainStateRefresh at its start).
+  bool plainStateNow() const;
+  bool plainState = false;
+  struct PlainStateRefresh {
+    Impl &x;
+    ~PlainStateRefresh() { x.plainState = x.plainStateNow(); }
+  };
   void plainMove(const MachineCmd &c);
   MotionRecord plainRecord;  // plainMove's record: only the fields record() and moveTo set change
   bool execHome(const MachineCmd &c);
@@ -387,6 +396,14 @@ struct Executor::Impl {
     int turns = 0;
     Plane plane = Plane::XY;
   } lastPath;
+  // plainMove's move stays in plainRecord instead of being copied here per move (issue 6):
+  // while lastPathPlain is set, the last path's kind, start and end are plainRecord's.
+  bool lastPathPlain = false;
+  LastPath lastPathNow() const {
+    LastPath p = lastPath;
+    if (lastPathPlain) p.kind = plainRecord.kind, p.start = plainRecord.start, p.end = plainRecord.end;
+    return p;
+  }
   void notePath(const MotionRecord &r);
   bool pathTangent(Vec3 &t) const;
   // LinuxCNC splines (ExecutorMotion.cpp), as rs274 (2.9) reads them: G5/G5.1 are one Spline

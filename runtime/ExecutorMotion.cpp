@@ -184,7 +184,12 @@ void Executor::Impl::plainMove(const MachineCmd &c) {
     const double off = offset(i);
     to[i] = (inc ? to[i] - off + v : v) + off;
   }
-  // moveTo's record (record() + end, exactStop, feed), notePath, then emit straight to the sink.
+  // notePath: a move in XYZ becomes the last path by staying in plainRecord (lastPathPlain); a
+  // move that is not keeps the one before, taken out of plainRecord before it is reused.
+  const bool pathMove = to[0] != st.position[0] || to[1] != st.position[1] || to[2] != st.position[2];
+  if (!pathMove && lastPathPlain) lastPath = lastPathNow(), lastPathPlain = false;
+  if (pathMove) lastPathPlain = true;
+  // moveTo's record (record() + end, exactStop, feed), then emit straight to the sink.
   const RecordKind k = st.motion == ModeValue::Linear ? RecordKind::Linear : RecordKind::Rapid;
   MotionRecord &r = plainRecord;
   r.kind = k;
@@ -195,8 +200,6 @@ void Executor::Impl::plainMove(const MachineCmd &c) {
   r.end = to;
   r.exactStop = st.pathMode == ModeValue::ExactStop;
   r.feed = k == RecordKind::Linear ? moveFeed(0) : 0;  // not inverse time: the length does not matter
-  if (to[0] != r.start[0] || to[1] != r.start[1] || to[2] != r.start[2])
-    lastPath.kind = k, lastPath.start = r.start, lastPath.end = to;
   st.position = to;
   threadChain = false;
   route.record(r);  // `sink` is route: called on the final class, not through the base

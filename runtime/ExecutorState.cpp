@@ -397,6 +397,7 @@ double *Executor::Impl::storedOffset(const SysVarInfo &info, double &unit) const
 
 bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::string &err) {
   Impl &x = *impl_;
+  Impl::PlainStateRefresh refresh{x};
   SysVarInfo info = sysVarInfo(ref.var);
   if (!sysVarWritable(ref.var)) {
     err = fmt::format("system variable '${}' is read-only", sysRefText(ref));

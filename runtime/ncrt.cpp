@@ -157,6 +157,13 @@ int ncrt_exec_mode(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const n
   return ctx->sink.execMode(last, blocks, *mode) ? NCRT_OK : NCRT_ERROR;  // a mode neither ends nor moves
 }
 
+// A move neither ends the program; the modal call runs after it as after any move (execOne).
+int ncrt_exec_move(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const ncrt_cmd *mode, const ncrt_cmd *move) {
+  if (!ctx->sink.execMove(last, blocks, mode, *move)) return NCRT_ERROR;
+  if (ctx->modal_hook) return ctx->modal_hook(ctx, &ctx->storage, move->loc.file, move->loc.line, move->loc.col);
+  return NCRT_OK;
+}
+
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes) {
   const uint8_t *p = data, *end = data + nbytes;
   MachineCmd c;
@@ -338,6 +345,7 @@ const std::vector<RuntimeSymbol> &runtimeSymbols() {
     add("ncrt_exec_packed", &ncrt_exec_packed);
     add("ncrt_exec_blocks", &ncrt_exec_blocks);
     add("ncrt_exec_mode", &ncrt_exec_mode);
+    add("ncrt_exec_move", &ncrt_exec_move);
     add("ncrt_error", &ncrt_error);
     add("ncrt_fault", &ncrt_fault);
     add("ncrt_poll", &ncrt_poll);

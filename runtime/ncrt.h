@@ -72,7 +72,7 @@ typedef struct ncrt_storage {
 /* Loop iterations between two run-time limit checks. */
 #define NCRT_POLL_INTERVAL 65536
 /* Raised when the C ABI changes in a way abiFingerprint cannot see (a function's meaning). */
-#define NCRT_ABI_VERSION 2
+#define NCRT_ABI_VERSION 3
 
 /* Allocates the storage for a program with the given number of named globals and Q prefix
  * arrays (1 + the highest qPrefixIndex it uses; 0 for none). */
@@ -89,6 +89,9 @@ int ncrt_exec_blocks(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t count);
 /* The `blocks` waiting Block commands ending with *last (none when 0), then the Mode command
  * *mode, in one call (CmdSink::execMode: a mode in force costs a compare). */
 int ncrt_exec_mode(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const ncrt_cmd *mode);
+/* The same, then the Move command *move, in one call (CmdSink::execMove); mode may be null.
+ * Code compiled to merge blocks calls this for a move whose operands make no runtime call. */
+int ncrt_exec_move(ncrt_ctx *ctx, const ncrt_cmd *last, uint64_t blocks, const ncrt_cmd *mode, const ncrt_cmd *move);
 /* Executes a packed command stream (ncc::ncrt::packCmd encoding) of nbytes bytes. */
 int ncrt_exec_packed(ncrt_ctx *ctx, const uint8_t *data, uint64_t nbytes);
 /* Reports a run-time error at a source location. */

@@ -64,6 +64,7 @@ void Codegen::declareRuntime() {
   fExecBlocks = decl("ncrt_exec_blocks", i32Ty, {ptrTy, ptrTy, i64Ty});
   fExecPacked = decl("ncrt_exec_packed", i32Ty, {ptrTy, ptrTy, i64Ty});
   fExecMode = decl("ncrt_exec_mode", i32Ty, {ptrTy, ptrTy, i64Ty, ptrTy});
+  fExecMove = decl("ncrt_exec_move", i32Ty, {ptrTy, ptrTy, i64Ty, ptrTy, ptrTy});
   fError = decl("ncrt_error", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, ptrTy});
   fFault = decl("ncrt_fault", voidTy, {ptrTy, i32Ty, i32Ty, i32Ty, i32Ty, ptrTy, dblTy});
   fPoll = decl("ncrt_poll", i32Ty, {ptrTy, i32Ty, i32Ty, i32Ty});
@@ -122,17 +123,18 @@ void Codegen::declareRuntime() {
 // The command calls run the modal call's NC code after a move, so they qualify only without one.
 void Codegen::markRuntimeOnly() {
   std::vector<FunctionCallee *> calls = {&fPoll};
-  if (!modalFn_) calls.insert(calls.end(), {&fExec, &fExecTable, &fExecPacked, &fExecBlocks, &fExecMode});
+  if (!modalFn_) calls.insert(calls.end(), {&fExec, &fExecTable, &fExecPacked, &fExecBlocks, &fExecMode, &fExecMove});
   for (FunctionCallee *fc : calls)
     cast<Function>(fc->getCallee())
         ->setMemoryEffects(MemoryEffects::argMemOnly() | MemoryEffects::inaccessibleMemOnly());
-  for (FunctionCallee *fc : {&fExec, &fExecTable, &fExecPacked, &fExecBlocks, &fExecMode}) {  // commands are read, not kept
-    cast<Function>(fc->getCallee())->addParamAttr(1, Attribute::NoCapture);
-    cast<Function>(fc->getCallee())->addParamAttr(1, Attribute::ReadOnly);
-  }
-  auto *execMode = cast<Function>(fExecMode.getCallee());
-  execMode->addParamAttr(3, Attribute::NoCapture);
-  execMode->addParamAttr(3, Attribute::ReadOnly);
+  auto readOnly = [](FunctionCallee &fc, unsigned arg) {  // commands are read, not kept
+    cast<Function>(fc.getCallee())->addParamAttr(arg, Attribute::NoCapture);
+    cast<Function>(fc.getCallee())->addParamAttr(arg, Attribute::ReadOnly);
+  };
+  for (FunctionCallee *fc : {&fExec, &fExecTable, &fExecPacked, &fExecBlocks, &fExecMode, &fExecMove}) readOnly(*fc, 1);
+  readOnly(fExecMode, 3);
+  readOnly(fExecMove, 3);
+  readOnly(fExecMove, 4);
 }
 
 // ---------------------------------------------------------------- name scan
@@ -214,6 +216,7 @@ void Codegen::failIf(Value *cond, SourceLoc loc, const std::string &msg) {
   BasicBlock *err = newBlock("error"), *cont = newBlock("cont");
   B.CreateCondBr(cond, err, cont);
   B.SetInsertPoint(err);
+  flushPendingMode();
   auto args = locArgs(loc);
   B.CreateCall(fError, {ctxArg, args[0], args[1], args[2], cstring(msg)});
   B.CreateBr(failBB);
@@ -221,6 +224,7 @@ void Codegen::failIf(Value *cond, SourceLoc loc, const std::string &msg) {
 }
 
 void Codegen::fail(SourceLoc loc, const std::string &msg) {
+  flushPendingMode();
   auto args = locArgs(loc);
   B.CreateCall(fError, {ctxArg, args[0], args[1], args[2], cstring(msg)});
   B.CreateBr(failBB);
@@ -231,6 +235,7 @@ void Codegen::faultIf(Value *cond, SourceLoc loc, unsigned kind, const std::stri
   BasicBlock *err = newBlock("fault"), *cont = newBlock("cont");
   B.CreateCondBr(cond, err, cont);
   B.SetInsertPoint(err);
+  flushPendingMode();
   auto args = locArgs(loc);
   B.CreateCall(fFault, {ctxArg, args[0], args[1], args[2], B.getInt32(kind), cstring(name),
                         value ? value : ConstantFP::get(dblTy, 0.0)});

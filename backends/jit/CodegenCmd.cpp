@@ -1,10 +1,13 @@
 // NC IR -> LLVM IR: machine commands. Runs of constant commands become one constant table and
 // one runtime call (a MachineCmd array for short runs, the packed encoding of runtime/ncrt.h for
 // long ones, so a million-line flat program is a few MB of data, not a million calls); commands
-// with computed operands are built in a stack slot and passed to ncrt_exec.
+// with computed operands are built in a stack slot and passed to ncrt_exec (a move: with the
+// waiting blocks and mode, to ncrt_exec_move).
 #include "backends/jit/CodegenImpl.h"
 
+#include "ir/Builtins.h"
 #include "ir/Strings.h"
+#include "ir/SystemParams.h"
 #include "runtime/ncrt.h"
 
 #include <llvm/IR/Intrinsics.h>
@@ -32,6 +35,41 @@ Constant *Codegen::cmdConstant(const MachineCmd &c) {
               ConstantDataArray::get(C, ArrayRef<double>(c.w, kWords))});
 }
 
+// An operand whose code calls nothing in the runtime but the pure arithmetic and numeric
+// builtins: no system variable, computed parameter number, array element, string or comparison
+// (those reach the target, or report errors themselves). Its errors go through failIf/faultIf.
+static bool quietOperand(const ir::Expr &e) {
+  using ir::ExprKind, ir::OpCode;
+  auto quiet = [](const ir::ExprPtr &a) { return a && quietOperand(*a); };
+  switch (e.kind) {
+  case ExprKind::Number:
+  case ExprKind::Bool:
+  case ExprKind::Vacant: return true;
+  case ExprKind::Var: {  // a named scalar, or #n, R n, Q n with a literal number (no array element)
+    using ir::VarSpace;
+    auto literal = [](const ir::ExprPtr &a) { return a && (a->kind == ExprKind::Number || a->kind == ExprKind::Bool); };
+    const bool param = e.space == VarSpace::Numbered || e.space == VarSpace::RParam || e.space == VarSpace::QParam;
+    ParamMap map;
+    if (computedParameterNumber(e, map)) return false;
+    if (e.args.empty()) return e.space != VarSpace::System;
+    return param && std::all_of(e.args.begin(), e.args.end(), literal);
+  }
+  case ExprKind::Unary: return e.op == OpCode::Neg && e.args.size() == 1 && quiet(e.args[0]);
+  case ExprKind::Binary: {
+    static constexpr OpCode kArithmetic[] = {OpCode::Add, OpCode::Sub, OpCode::Mul, OpCode::Div,
+                                             OpCode::Mod, OpCode::Pow, OpCode::IDiv};
+    return std::find(std::begin(kArithmetic), std::end(kArithmetic), e.op) != std::end(kArithmetic) &&
+           e.args.size() == 2 && quiet(e.args[0]) && quiet(e.args[1]);
+  }
+  case ExprKind::Call: {
+    const BuiltinInfo *bi = findBuiltin(e.str);
+    if (isExistsCall(e.str, e.args.size()) || !bi || bi->sfn || !bi->fn || !bi->accepts(e.args.size())) return false;
+    return std::all_of(e.args.begin(), e.args.end(), quiet);
+  }
+  default: return false;
+  }
+}
+
 void Codegen::emitMachineOp(const ir::Op &op) {
   Diagnostics quiet(diags_.sources());  // validate() already reported template errors
   quiet.setCollect(true);
@@ -42,9 +80,44 @@ void Codegen::emitMachineOp(const ir::Op &op) {
     else appendToRun(t.base);
     return;
   }
-  flushRun();
+  // A move that nothing between its mode line and its call can observe goes in one call with
+  // them (a loop's `G1 X[…]` line: one runtime call per iteration instead of two).
+  const bool oneCall = t.base.kind == CmdKind::Move && !t.text &&
+                       std::all_of(t.slots.begin(), t.slots.end(), [](auto &s) { return quietOperand(*s.expr); });
+  if (oneCall) pendingMode_ = takeModeRun();
+  else flushRun();
   ensureOpen();
-  emitDynamicCmd(t);
+  emitDynamicCmd(t, oneCall);
+}
+
+Value *Codegen::takeModeRun() {
+  if (!packed_.empty() || run_.size() != 1 || run_[0].kind != CmdKind::Mode) {
+    flushRun();
+    return nullptr;
+  }
+  auto *gv = new GlobalVariable(*M, cmdTy, true, GlobalValue::PrivateLinkage, cmdConstant(run_[0]), "nc.mode");
+  run_.clear();
+  return gv;
+}
+
+void Codegen::takeWaitingBlocks(Value *&last, Value *&count) {
+  count = B.getInt64(0), last = ConstantPointerNull::get(ptrTy);
+  if (!blkOn_) return;
+  count = B.CreateLoad(i64Ty, blkCount);
+  last = B.CreateLoad(ptrTy, blkLast);
+  B.CreateStore(B.getInt64(0), blkCount);
+}
+
+// In an error branch of a quiet move's operands: the mode it carries is executed first, as it
+// was before the operands (a mode that fails stops the run with its own error instead).
+void Codegen::flushPendingMode() {
+  if (!pendingMode_) return;
+  Value *last, *count;
+  takeWaitingBlocks(last, count);
+  Value *st = B.CreateCall(fExecMode, {ctxArg, last, count, pendingMode_});
+  BasicBlock *report = newBlock("mode.done");
+  B.CreateCondBr(B.CreateICmpNE(st, B.getInt32(NCRT_OK)), failBB, report);
+  B.SetInsertPoint(report);
 }
 
 // Short runs stay MachineCmds; once a run is longer it is packed as it grows (a flat program
@@ -67,12 +140,8 @@ void Codegen::flushRun() {
     // The `G1` of a loop's `G1 X[…]` line: with the waiting blocks in one call, and a compare in
     // the target when that mode is in force.
     auto *gv = new GlobalVariable(*M, cmdTy, true, GlobalValue::PrivateLinkage, cmdConstant(run_[0]), "nc.mode");
-    Value *n = B.getInt64(0), *last = ConstantPointerNull::get(ptrTy);
-    if (blkOn_) {
-      n = B.CreateLoad(i64Ty, blkCount);
-      last = B.CreateLoad(ptrTy, blkLast);
-      B.CreateStore(B.getInt64(0), blkCount);
-    }
+    Value *n, *last;
+    takeWaitingBlocks(last, n);
     st = B.CreateCall(fExecMode, {ctxArg, last, n, gv});
   } else if (packed_.empty()) {
     std::vector<Constant *> cmds;
@@ -138,7 +207,8 @@ Value *Codegen::cmdSiteSlot(const MachineCmd &base) {
 }
 
 // Operands in template order: a vacant value leaves its word out, a non-finite one is an error.
-void Codegen::emitDynamicCmd(const CmdTemplate &t) {
+// oneCall: a quiet move, passed with the waiting blocks and pendingMode_ (ncrt_exec_move).
+void Codegen::emitDynamicCmd(const CmdTemplate &t, bool oneCall) {
   Value *slot = cmdSiteSlot(t.base);
   Value *mask = B.getInt64(t.base.mask);
   Constant *inf = ConstantFP::getInfinity(dblTy);
@@ -158,7 +228,12 @@ void Codegen::emitDynamicCmd(const CmdTemplate &t) {
     bool fixed = t.base.kind == CmdKind::Message && t.base.sub != (uint8_t)MessageKind::Msg;
     B.CreateStore(stringValue(*t.text, fixed), B.CreateStructGEP(cmdTy, slot, 8));
   }
-  checkStatus(sinkCall(fExec, {ctxArg, slot}));
+  if (!oneCall) return checkStatus(sinkCall(fExec, {ctxArg, slot}));
+  Value *last, *count;
+  takeWaitingBlocks(last, count);
+  Value *mode = pendingMode_ ? pendingMode_ : ConstantPointerNull::get(ptrTy);
+  pendingMode_ = nullptr;
+  checkStatus(B.CreateCall(fExecMove, {ctxArg, last, count, mode, slot}));
 }
 
 }  // namespace ncc::jit

@@ -181,7 +181,14 @@ private:
   void emitMachineOp(const ir::Op &op);
   void appendToRun(const MachineCmd &c);
   void flushRun();
-  void emitDynamicCmd(const CmdTemplate &t);
+  // A move whose operands make no runtime call takes the run's lone Mode command with it
+  // (ncrt_exec_move): takeModeRun leaves it in pendingMode_ (flushing any other run), an error
+  // while the operands are evaluated executes it first (flushPendingMode, from failIf/faultIf/fail).
+  llvm::Value *takeModeRun();
+  void flushPendingMode();
+  llvm::Value *pendingMode_ = nullptr;
+  void takeWaitingBlocks(llvm::Value *&last, llvm::Value *&count);  // and sets the count to 0
+  void emitDynamicCmd(const CmdTemplate &t, bool oneCall);
   llvm::Value *cmdSiteSlot(const MachineCmd &base);
   void storeCmd(const MachineCmd &c, llvm::Value *slot);
   llvm::Constant *cmdConstant(const MachineCmd &c);
@@ -199,7 +206,7 @@ private:
   llvm::PointerType *ptrTy;
   llvm::StructType *cmdTy, *storageTy;
   llvm::FunctionType *ncFnTy;
-  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecBlocks, fExecMode, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
+  llvm::FunctionCallee fBegin, fExec, fExecTable, fExecBlocks, fExecMode, fExecMove, fExecPacked, fError, fFault, fPoll, fMod, fIDiv, fPow, fBitwise;
   llvm::FunctionCallee fUnset, fStrClear, fStrCat, fStrNum, fStrNumFixed, fStr, fCallee, fSysVar, fSysVarAt, fSysVarSet;
   llvm::FunctionCallee fParam;  // ncrt_param: computed parameter numbers that are controller state
   llvm::FunctionCallee fStrConst, fStrIntern, fStrFn, fCompare, fConvert, fFill, fBadIndex, fJump, fSaveModal, fRestoreModal, fSetModalHook,

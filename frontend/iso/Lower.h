@@ -79,6 +79,7 @@ private:
   Diagnostics *diags_;  // a pointer: lowerCodeCall swaps in a scratch one
   ir::Region none_;  // the lean path's Block writes no ops
   MachineCmd cmd_;   // the lean path's command, cleared after each use
+  MachineCmd leanBlock_, leanMode_;  // leanMove's Block and Mode commands (it passes three at once)
   Flavour flavour_;
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
   bool axesScaleEnable_ = false;  // G51 factors: I J K (else P)

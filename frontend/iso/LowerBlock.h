@@ -217,6 +217,8 @@ struct BlockLowerer::Block {
   bool leanClassify();
   bool leanFits() const;
   bool leanEmit(CmdSink &sink);
+  bool leanMove(CmdSink &sink, uint32_t moveWords);  // a block that is a move and its motion mode
+  void leanMoveWords(MachineCmd &c, uint32_t moveWords);
 };
 
 // The arguments of a macro call (G65, G66, a macro called by code) from the block's words whose

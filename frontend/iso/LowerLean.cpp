@@ -81,6 +81,8 @@ bool BlockLowerer::Block::leanFits() const {
 }
 
 bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
+  const uint32_t moveWords = bw.present & ~Words::bit('F');
+  if (moveWords && moveWords == bw.present && !(groups & ~groupBit(GGroup::Motion))) return leanMove(sink, moveWords);
   // The command is back to MachineCmd{} after each use: each kind resets the fields it set
   // (kind, loc, and its own: the block number, the mode, the words), not all of them.
   MachineCmd &c = L.cmd_;
@@ -122,8 +124,35 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
     for (GGroup g : kModesBeforeMotion)
       if (!mode(g)) return false;
   if (!mode(GGroup::Motion)) return false;
-  const uint32_t moveWords = bw.present & ~Words::bit('F');
   if (!moveWords) return true;  // I J K R alone still move an arc (as motion()); F alone does not
+  leanMoveWords(c, moveWords);
+  ok = issue();
+  c.clearWords();
+  return ok;
+}
+
+// Most lines of a flat program: the Block, the motion mode if the block has one, and the move,
+// in one call (CmdSink::execMove; the executor skips a mode that is in force).
+bool BlockLowerer::Block::leanMove(CmdSink &sink, uint32_t moveWords) {
+  MachineCmd &blk = L.leanBlock_, &mode = L.leanMode_, &c = L.cmd_;
+  blk.loc = b.loc;
+  blk.blockNumber = b.n;
+  trackModes();
+  if (G(GGroup::Motion)) {
+    mode.kind = CmdKind::Mode;
+    mode.loc = gloc(GGroup::Motion);
+    mode.nmodes = 1;
+    mode.modes[0] = modeValue(GGroup::Motion);
+  }
+  leanMoveWords(c, moveWords);
+  const bool ok = sink.execMove(&blk, 1, G(GGroup::Motion) ? &mode : nullptr, c);
+  c.kind = CmdKind::Block;
+  c.loc = {};
+  c.clearWords();
+  return ok;
+}
+
+void BlockLowerer::Block::leanMoveWords(MachineCmd &c, uint32_t moveWords) {
   c.kind = CmdKind::Move;
   c.loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
   // A move word's command word and scale by its slot (the letters leanFits lets through).
@@ -142,9 +171,6 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
     const int slot = __builtin_ctz(m);
     c.set(kMoveWords[slot].word, constValue(*bw.w[slot], factor(kMoveWords[slot].scale)));
   }
-  ok = issue();
-  c.clearWords();
-  return ok;
 }
 
 BlockLowerer::Lean BlockLowerer::lowerLean(ParsedBlock &b, CmdSink &sink, bool pending) {

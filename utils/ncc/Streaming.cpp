@@ -20,6 +20,9 @@ class LeanSink : public CmdSink {
 public:
   explicit LeanSink(Executor &e) : exec_(e) {}
   bool exec(const MachineCmd &cmd) override { return exec_.exec(cmd) || (refused = true, false); }
+  bool execMove(const MachineCmd *last, uint64_t blocks, const MachineCmd *mode, const MachineCmd &move) override {
+    return exec_.execMove(last, blocks, mode, move) || (refused = true, false);
+  }
   bool refused = false;
 
 private:

@@ -24,9 +24,9 @@ M30
 %
 ; FEATURES: ISO-MAC-08
 ; A loop's line of a motion mode and a computed move: the waiting blocks and the mode go to the
-; executor in one call (ncrt_exec_mode), which skips a G0/G1 already in force. Modes that change
-; every line (G0/G1 alternating), an arc mode, two modes at once (G91 G1) and a canned cycle
-; take the full path; both engines give the same trace.
+; executor with the move in one call (ncrt_exec_move), which skips a G0/G1 already in force.
+; Modes that change every line (G0/G1 alternating), an arc mode, two modes at once (G91 G1) and a
+; canned cycle take the full path; both engines give the same trace.
 ; RUN: %ncc run %s --engine=eval --trace=canon -q > %t.e
 ; RUN: %ncc run %s --engine=jit --trace=canon -q > %t.j
 ; RUN: diff %t.e %t.j
@@ -47,10 +47,12 @@ M30
 ; RUN: %ncc run %s --engine=eval | grep '^blocks:' > %t.be
 ; RUN: %ncc run %s --engine=jit | grep '^blocks:' > %t.bj
 ; RUN: diff %t.be %t.bj
-; One call per mode line: G1, G0, G1 Z, G2, G91 G1 (G81 follows the constant G90 line: a table).
+; One call per mode line and its move: G1, G0, G1 Z, G2, G91 G1 (G81 follows the constant G90
+; line: a table); the moves without a mode on their line go with the waiting blocks alone.
+; (ncrt_exec_mode remains in the operands' error branches: the mode before the error.)
 ; RUN: %ncc compile --emit=llvm %s | FileCheck %s --check-prefix=IR
-; IR-COUNT-5: call i32 @ncrt_exec_mode(ptr %0, ptr %{{[0-9]+}}, i64 %{{[0-9]+}}, ptr @nc.mode
-; IR-NOT: call i32 @ncrt_exec_mode(
+; IR-COUNT-5: call i32 @ncrt_exec_move(ptr %0, ptr %{{[0-9]+}}, i64 %{{[0-9]+}}, ptr @nc.mode
+; IR-NOT: call i32 @ncrt_exec_move({{.*}}@nc.mode
 ; An error in the move's operands after the mode: the same trace and message as the eval engine.
 ; RUN: not %ncc run %S/Inputs/mode-line-error.nc --engine=eval --trace=canon -q > %t.ee 2> %t.eerr
 ; RUN: not %ncc run %S/Inputs/mode-line-error.nc --engine=jit --trace=canon -q > %t.je 2> %t.jerr
