@@ -17,7 +17,7 @@ struct SourceFrame {
   FrameMatrix matrix{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
   AxisShift axisShift{};    // A B C U V W
   bool started = false;     // a FrameChange was seen (before it: the machine's G54)
-  double toolZ = 0, toolX = 0;
+  double toolZ = 0, toolX = 0, toolY = 0;
   int toolH = 0;            // the ToolLength record's H (Sinumerik D: the spindle tool)
   int spindleTool = 0;
 };
