@@ -146,6 +146,12 @@ bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, 
     return false;
   }
   edgeEdits[{t, d}] = e;
+  if (now && lengthInUse && activeEdge > 0) {  // a Sinumerik edge: its whole length vector (X Y Z)
+    Vec3 length;
+    double radius;
+    rule = "unsupported-code";
+    return sinToolOffsets(t, d, activeDl, length, radius, err) && applySinTool();
+  }
   if (now && lengthInUse && toolLength != data.length) {
     toolLength = data.length;
     MotionRecord r = record(RecordKind::ToolLength);
