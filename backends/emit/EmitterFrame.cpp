@@ -213,6 +213,8 @@ void Emitter::syncFrame(const MotionRecord &r) {
     double length;
     if (src_.toolH > 0 && offsetNumberLength(src_.toolH, length) && near(length, src_.toolZ)) toolWord = src_.toolH;
     else if (src_.toolZ != 0) baked.push_back("the tool length");
+  } else if (!src_.planeXY) {  // Sinumerik in G18/G19: the target's D would lie on Y or X
+    if (src_.toolZ != 0) baked.push_back("the tool length");
   } else {
     double length;
     if (written_.toolWord && spindleEdgeLength(written_.toolWord, length) && near(length, src_.toolZ) &&

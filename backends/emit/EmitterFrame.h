@@ -20,6 +20,9 @@ struct SourceFrame {
   double toolZ = 0, toolX = 0, toolY = 0;
   int toolH = 0;            // the ToolLength record's H (Sinumerik D: the spindle tool)
   int spindleTool = 0;
+  // The plane: a Sinumerik target puts a D word's length on the plane's tool axis (docs/SINUMERIK.md
+  // "Tool offsets"), so in G18/G19 the length is baked instead.
+  bool planeXY = true;
 };
 
 // What the written program has in force, and the translation it adds to its positions.
