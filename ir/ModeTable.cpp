@@ -4,7 +4,8 @@
 namespace ncc {
 
 static const char *kGroupNames[] = {"motion", "plane", "units", "distance", "arc_distance",
-                                    "feed_mode", "retract", "path_mode", "spline_start", "spline_end", "stop_once"};
+                                    "feed_mode", "retract", "path_mode", "spline_start", "spline_end", "stop_once",
+                                    "wear_system"};
 static_assert(sizeof(kGroupNames) / sizeof(kGroupNames[0]) == (size_t)ModeGroup::Count);
 
 static const ModeValueInfo kValues[] = {
@@ -77,6 +78,8 @@ static const ModeValueInfo kValues[] = {
     {ModeValue::EndAuto, ModeGroup::SplineEnd, "end_auto"},
     {ModeValue::EndTangent, ModeGroup::SplineEnd, "end_tangent"},
     {ModeValue::ExactStopOnce, ModeGroup::StopOnce, "exact_stop_once"},
+    {ModeValue::WearMachine, ModeGroup::WearSystem, "wear_machine"},
+    {ModeValue::WearWork, ModeGroup::WearSystem, "wear_work"},
 };
 static_assert(sizeof(kValues) / sizeof(kValues[0]) == (size_t)ModeValue::Count);
 

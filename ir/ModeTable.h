@@ -12,7 +12,10 @@ enum class ModeGroup : uint8_t {
   SplineStart, SplineEnd,
   // A one-block exact stop (Sinumerik G9, group 11): the moves of this block end at rest; the
   // path mode (group 10) stays.
-  StopOnce, Count
+  StopOnce,
+  // The system Sinumerik wear values are given in (G group 56, SIN-TOL-09): TOWSTD and the others,
+  // which coincide without an orientable toolholder or a kinematic transformation, or TOWWCS.
+  WearSystem, Count
 };
 
 // Values are unique across groups so a value alone identifies its group.
@@ -70,6 +73,8 @@ enum class ModeValue : uint8_t {
   StartNatural, StartAuto, StartTangent, EndNatural, EndAuto, EndTangent,
   // StopOnce
   ExactStopOnce,
+  // WearSystem: TOWSTD TOWMCS TOWBCS TOWTCS TOWKCS / TOWWCS
+  WearMachine, WearWork,
   Count
 };
 

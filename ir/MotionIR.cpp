@@ -306,6 +306,7 @@ void appendMotionRecord(std::string &s, const MotionRecord &r) {
   case RecordKind::ToolLength:
     fmt::format_to(out, " {} H{}", r.value, r.ivalue);
     if (r.value2 != 0) fmt::format_to(out, " X{}", r.value2);  // a lathe tool's X offset
+    if (const double *y = r.param("Y")) fmt::format_to(out, " Y{}", *y);  // a Sinumerik length on Y
     break;
   case RecordKind::Aux:
     fmt::format_to(out, " {}{}", r.text.empty() ? "M" : r.text, r.ivalue);
@@ -383,6 +384,8 @@ int workOffsetSelection(const MotionRecord &r) {
 void WorkFrame::note(const MotionRecord &r) {
   if (r.kind == RecordKind::ToolLength) {
     toolZ_ = r.value, toolX_ = r.value2;
+    const double *y = r.param("Y");  // a Sinumerik edge's length on Y
+    toolY_ = y ? *y : 0;
     return;
   }
   if (r.kind != RecordKind::FrameChange) return;
@@ -397,7 +400,7 @@ void WorkFrame::note(const MotionRecord &r) {
 }
 
 AxisVec WorkFrame::work(const AxisVec &machine) const {
-  double d[3] = {machine[0] - toolX_ - origin_[0], machine[1] - origin_[1], machine[2] - toolZ_ - origin_[2]};
+  double d[3] = {machine[0] - toolX_ - origin_[0], machine[1] - toolY_ - origin_[1], machine[2] - toolZ_ - origin_[2]};
   AxisVec w = machine;
   for (int i = 0; i < 3; ++i) w[i] = inv_[i][0] * d[0] + inv_[i][1] * d[1] + inv_[i][2] * d[2];
   for (size_t i = 0; i < shift_.size(); ++i) w[3 + i] = machine[3 + i] - shift_[i];

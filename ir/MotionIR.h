@@ -286,7 +286,7 @@ private:
   double inv_[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   std::array<double, 3> origin_{};  // M's translation
   AxisShift shift_{};
-  double toolZ_ = 0, toolX_ = 0;
+  double toolZ_ = 0, toolX_ = 0, toolY_ = 0;
 };
 
 // The plane's own unit normal (+Z, +Y, +X for XY, ZX, YZ).

@@ -351,6 +351,11 @@ bool parseRecord(LineParser &p, TextState &st, MotionRecord &r) {
       return false;
     if (r.kind == RecordKind::ToolLength && (p.skipBlanks(), p.peek("X")) && !(p.expect("X", "'X'") && p.number(r.value2)))
       return false;
+    if (r.kind == RecordKind::ToolLength && (p.skipBlanks(), p.peek("Y"))) {
+      double y;
+      if (!(p.expect("Y", "'Y'") && p.number(y))) return false;
+      r.setParam("Y", y);
+    }
     break;
   case RecordKind::Aux: {
     p.skipBlanks();

@@ -163,9 +163,10 @@ bool constantCallee(const Expr &callee, std::string &name) {
 // The keys of `mode` are the mode groups (MachineCmd::modes has one slot per group) and the
 // G64 tolerances, which are words (P, Q).
 static constexpr char kModeKeys[] =
-    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end stop_once";
+    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end stop_once wear_system";
 static constexpr char kModeOpKeys[] =
-    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end stop_once tolerance "
+    "motion plane units distance arc_distance feed_mode retract path_mode spline_start spline_end stop_once wear_system "
+    "tolerance "
     "naive_tolerance";
 static constexpr size_t countWords(std::string_view s) {
   size_t n = 0;
@@ -190,7 +191,7 @@ static const OpInfo kOps[] = {
     {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L H E polar_r polar_a chamfer chamfer_leg round via_x via_y via_z opening weight degree poly_index interval denominator dlead ic ac"},
     {OpKind::Home, "home", 0, 0, "ref", "X Y Z A B C U V W ic"},
     {OpKind::MachineMove, "machine_move", 0, 0, "rapid", "X Y Z A B C U V W"},
-    {OpKind::ToolLength, "tool_length", 0, 0, "", "h D form X Y Z A B C U V W"},
+    {OpKind::ToolLength, "tool_length", 0, 0, "", "h D dl form X Y Z A B C U V W"},
     {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d d_default entry"},
     {OpKind::WorkOffset, "work_offset", 0, 0, "index", ""},
     {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C U V W R"},

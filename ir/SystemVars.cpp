@@ -1,6 +1,8 @@
 #include "ir/SystemVars.h"
 #include "ir/Value.h"
 
+#include <fmt/format.h>
+
 #include <iterator>
 #include <string>
 #include <vector>
@@ -27,8 +29,11 @@ constexpr const char *kAxisNames[] = {"x", "y", "z", "a", "b", "c", "r"};
 // Family prefixes after the work offsets, in SysFamily order from G92 on.
 constexpr const char *kFamilyPrefix[] = {"_g92_", "_home1_", "_home2_", "_abs_", "_tool_offset_"};
 // In ToolField order (names in messages; programs index the fields by number).
-constexpr const char *kToolFieldNames[] = {"length", "radius", "length_wear", "radius_wear"};
-static_assert(std::size(kToolFieldNames) == (size_t)kToolFields);
+static_assert(kToolFields == 61, "the range in sysVarIndexMessage");
+constexpr const char *kToolFieldNames[] = {"length",       "radius",       "length_wear", "radius_wear", "type",
+                                           "cut_pos",      "length2",      "length3",     "length2_wear",
+                                           "length3_wear", "base1",        "base2",       "base3"};
+static_assert(std::size(kToolFieldNames) == (size_t)kToolSumFields);
 
 // Every id's name, built once: the named ones, then the families.
 const std::vector<std::string> &allNames() {
@@ -39,6 +44,9 @@ const std::vector<std::string> &allNames() {
     for (const char *p : kFamilyPrefix)
       for (int a = 0; a < 6; ++a) n.push_back(std::string(p) + kAxisNames[a]);
     for (const char *f : kToolFieldNames) n.push_back(std::string("_tool_data_") + f);
+    for (const char *kind : {"scp", "ecp"})  // Sinumerik $TC_SCPxy / $TC_ECPxy
+      for (int x = 1; x <= kDlSets; ++x)
+        for (int y = 3; y < 3 + kDlParams; ++y) n.push_back(fmt::format("_tool_data_{}{}{}", kind, x, y));
     for (int i = 0; i < kUserFrames; ++i) n.push_back("_uifr[" + std::to_string(i) + "]");
     return n;
   }();
@@ -129,7 +137,7 @@ std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, dou
   if (dims > 1) idx += ", " + numberText(j);
   if (dims > 2) idx += ", " + numberText(k);
   const char *range = f == SysFamily::WorkOffset ? "system 1..9, axis 0..6"
-                      : f == SysFamily::ToolData  ? "tool 1..99999, edge 0..99999, field 0..3"
+                      : f == SysFamily::ToolData  ? "tool 1..99999, edge 0..99999, field 0..60"
                       : f == SysFamily::UserFrame ? "settable frame 0..9"
                                                   : "axis 0..5";
   return "system variable '$" + std::string(name) + "[" + idx + "]': index out of range (" + range + ")";

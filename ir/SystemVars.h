@@ -41,9 +41,19 @@ struct SysVarInfo {
   int axis = 0;    // 0..5 X..C, 6 = R (WorkOffset); ToolData: the field (ToolField)
 };
 // The fields of `$_tool_data[t, d, k]` (k), what the machine's [[tools]] edges hold: geometry
-// and wear of length 1 and radius (docs/IR.md maps Sinumerik $TC_DP3/6/12/15 onto them).
-enum class ToolField : uint8_t { Length, Radius, LengthWear, RadiusWear, Count };
-constexpr int kToolFields = (int)ToolField::Count;
+// and wear of length 1 and radius, then the Sinumerik edge data (docs/SINUMERIK.md "Tool
+// offsets": $TC_DP1 type, DP2 cutting edge position, DP4/5 lengths 2 and 3, DP13/14 their wear,
+// DP21-23 the base dimensions), then the additive offsets $TC_SCPxy (wear) and $TC_ECPxy (setup)
+// of DL set x = 1..6 for parameter y = 3..6 (lengths 1-3, radius): field kToolSumFields + (x-1)*4
+// + (y-3), the setup values kToolSetupFields + the same.
+enum class ToolField : uint8_t {
+  Length, Radius, LengthWear, RadiusWear, Type, CutPos, Length2, Length3, Length2Wear, Length3Wear, Base1, Base2,
+  Base3, Count
+};
+constexpr int kDlSets = 6, kDlParams = 4;  // DL 1..6; parameters DP3 DP4 DP5 DP6
+constexpr int kToolSumFields = (int)ToolField::Count;
+constexpr int kToolSetupFields = kToolSumFields + kDlSets * kDlParams;
+constexpr int kToolFields = kToolSetupFields + kDlSets * kDlParams;
 constexpr int kMaxToolNumber = 99999;  // T and D numbers of the machine file
 SysVarInfo sysVarInfo(SysVar v);
 // Numbered parameters (#5221, #2001) map onto these ids through ir/SystemParams.h.
@@ -74,7 +84,7 @@ SysRef sysRefFromNumber(double n);
 // Indexed access: a family's base name with run-time indices, `$_work_offset[s, a]` (system s
 // 1..9, axis a 0..5 = X..C or 6 = the XY rotation R) and `$_g92[a]`, `$_home1[a]`, `$_home2[a]`,
 // `$_abs[a]`, `$_tool_offsets[a]` (a 0..5; `$_tool_offset` is LinuxCNC's "length offset on"),
-// `$_tool_data[t, d, k]` (tool 1..99999, edge 0..99999 with 0 = t is an offset number, field 0..3).
+// `$_tool_data[t, d, k]` (tool 1..99999, edge 0..99999 with 0 = t is an offset number, field 0..kToolFields-1).
 // An index of an axis family may be an axis symbol (X … C), resolved when the program is
 // compiled (axisIndex). Returns the number of indices the family takes, 0 when `name` is not a family.
 int sysFamilyFromName(std::string_view name, SysFamily &out);

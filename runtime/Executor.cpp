@@ -193,11 +193,13 @@ bool Executor::Impl::execMode(const MachineCmd &c) {
       MotionRecord r = record(RecordKind::Plane);
       r.ivalue = (int64_t)plane();
       emit(r);
+      if (!sinPlaneChanged()) return false;
       break;
     }
     case ModeGroup::Units: st.units = v; break;
     case ModeGroup::SplineStart: st.splineStart = v; break;
     case ModeGroup::SplineEnd: st.splineEnd = v; break;
+    case ModeGroup::WearSystem: st.wearSystem = v; break;
     case ModeGroup::Distance: st.distance = v; break;
     case ModeGroup::ArcDistance: st.arcDistance = v; break;
     case ModeGroup::Retract: st.retract = v; break;
@@ -238,19 +240,24 @@ bool Executor::Impl::execToolLength(const MachineCmd &c) {
   if ((ToolLengthForm)c.sub != ToolLengthForm::Table) return offsetToolLength(c, (ToolLengthForm)c.sub);
   ToolData t;
   int h;
-  if (c.has(Word::D)) {  // Sinumerik D<n>: edge n of the tool in the spindle
-    const int d = (int)c.get(Word::D);
-    h = st.toolInSpindle;
-    if (h == 0) return error(fmt::format("D{} needs a tool in the spindle (T… M6)", d), "unknown-tool");
-    if (!hasEdge(h, d)) return error(fmt::format("tool {} has no cutting edge D{}", h, d), "unknown-tool");
-    t = edgeData(h, d);
-    activeEdge = d;
+  // Sinumerik D<n>: edge n of the tool in the spindle, DL its additive set. `h=0 D=1` is the edge
+  // of a tool change: D1 or the tool's only edge, none (as H0) when the spindle is empty.
+  const bool changeEdge = c.has(Word::D) && c.has(Word::H);
+  if (c.has(Word::D) && !(changeEdge && st.toolInSpindle == 0)) {
+    const int d = changeEdge ? offsetEdge(st.toolInSpindle) : (int)c.get(Word::D);
+    if (machine.controller.lathe() && comp.active() && d != activeEdge)
+      return error("a tool offset change with tool nose radius compensation on is not supported: cancel it with G40 first",
+                   "cutcomp-conflict");
+    return selectSinEdge(d, c.has(Word::AddOffset) ? c.get(Word::AddOffset) : machine.controller.dlDefault);
+  } else if (c.has(Word::AddOffset)) {  // Sinumerik DL=n alone: another set of the active edge
+    return selectSinDl(c.get(Word::AddOffset));
   } else {
     // Without H (rs274 G43): the tool in the spindle.
     double hv = c.has(Word::H) ? c.get(Word::H) : st.toolInSpindle;
     if (!offsetData(hv, "H", t)) return false;
     h = (int)hv;
-    activeEdge = 0;
+    activeEdge = activeDl = 0;
+    toolOffsetY = 0;
   }
   if (machine.controller.lathe() && comp.active() && h != st.toolLengthH)
     return error("a tool offset change with tool nose radius compensation on is not supported: cancel it with G40 first",
@@ -393,6 +400,7 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
   if (activeEdge > 0 && toolDefault && !c.has(Word::D)) {  // Sinumerik: the active edge's radius
     compEdge = activeEdge;
     t = edgeData(st.toolInSpindle, compEdge);
+    if (!sinRadius(st.toolInSpindle, compEdge, t.radius)) return false;
   }
   double radius = t.radius;
   // Compensation works on the machine path, in the active plane: a mirrored frame swaps the
@@ -430,7 +438,7 @@ const ResetGroup kResetGroups[] = {
     {"feed_mode", [](X &x) { x.st.feedMode = ModeValue::PerMinute; }},
     {"units", [](X &x) { x.st.units = ModeValue::MM; }},
     {"cutter_comp", [](X &x) { x.st.cutterComp = 0; }},
-    {"tool_length", [](X &x) { x.toolLength = 0, x.st.toolLengthH = 0; }},
+    {"tool_length", [](X &x) { x.toolLength = x.toolOffsetY = 0, x.st.toolLengthH = 0, x.activeEdge = x.activeDl = 0; }},
     {"work_offset", [](X &x) { x.st.workOffset = 1, x.applyWorkOffset(); }},
     {"g92", [](X &x) { x.g92 = {}, x.g92On = false; }},
     {"feed", [](X &x) { x.st.feed = x.feedMM = 0; }},

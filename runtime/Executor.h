@@ -23,6 +23,7 @@ struct ModalState {
   ModeValue retract = ModeValue::RetractInitial;
   ModeValue pathMode = ModeValue::Continuous;
   ModeValue splineStart = ModeValue::StartNatural, splineEnd = ModeValue::EndNatural;  // Sinumerik BNAT ENAT
+  ModeValue wearSystem = ModeValue::WearMachine;  // Sinumerik G group 56: TOWSTD …, TOWWCS
   double feed = 0;          // program units per minute (or rev)
   double speed = 0;
   int spindle = 0;          // 0 stop, 1 cw, 2 ccw

@@ -79,7 +79,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     capture.compOn = false;
     capture.sl = (ContourUse)c.sub2 == ContourUse::Sub, capture.side = 0;
     capture.st = st;
-    capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX;
+    capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX, capture.toolOffsetY = toolOffsetY;
     capture.lastPath = lastPathNow();
     capture.blockNumber = blockNumber, capture.blockLoc = blockLoc;
     route.capture = &capture.records;
@@ -140,7 +140,7 @@ bool Executor::Impl::capturedContour(Contour &ct) {
     ct.elems.push_back(e);
   }
   st = capture.st;
-  feedMM = capture.feedMM, toolLength = capture.toolLength, toolOffsetX = capture.toolOffsetX;
+  feedMM = capture.feedMM, toolLength = capture.toolLength, toolOffsetX = capture.toolOffsetX, toolOffsetY = capture.toolOffsetY;
   lastPath = capture.lastPath;
   lastPathPlain = false;
   blockNumber = capture.blockNumber, blockLoc = capture.blockLoc;

@@ -127,7 +127,10 @@ struct Executor::Impl {
   AxisVec home[2];     // G28 / G30 reference points (machine), G28.1 / G30.1 store them
   double toolLength = 0;
   double toolOffsetX = 0;  // a lathe tool's X offset (mm, machine X), with toolLength on Z
-  double toolOffset(int axis) const { return axis == 2 ? toolLength : axis == 0 ? toolOffsetX : 0.0; }
+  double toolOffsetY = 0;  // a Sinumerik edge's length component on Y (G18 milling, G17 turning)
+  double toolOffset(int axis) const {
+    return axis == 2 ? toolLength : axis == 0 ? toolOffsetX : axis == 1 ? toolOffsetY : 0.0;
+  }
   double feedMM = 0;
   bool feedInBlock = false;  // an F word in the current block (inverse time needs one per move)  // modal feed converted at the time F was given (mm/min, mm/rev or 1/min)
 
@@ -148,6 +151,7 @@ struct Executor::Impl {
   // Sinumerik D<n>: the cutting edge of the spindle tool whose length is active (0: the ISO
   // offset number toolLengthH) and whose radius G41/G42 without D took (compEdge).
   int activeEdge = 0, compEdge = 0;
+  int activeDl = 0;  // Sinumerik DL: the additive offset set of the active edge (0 none)
   // Cutter radius compensation: moves go through `comp` while it is active (radius > 0);
   // compExit marks the move after G40, which starts from the compensated position.
   CompPlaneSink compOut;  // declared before comp, which writes to it
@@ -321,6 +325,15 @@ struct Executor::Impl {
   // the reason when the machine lacks them.
   bool toolDataRef(const SysRef &r, int &t, int &d, std::string &err) const;
   bool execToolOffset(const MachineCmd &c);
+  // Sinumerik tool offsets (ExecutorSinTool.cpp): the length vector (X Y Z) and radius of edge d
+  // of tool t with DL set dl; selection of an edge (D) and of a DL set; the plane's share.
+  bool sinToolOffsets(int t, int d, int dl, Vec3 &length, double &radius, std::string &err) const;
+  bool mirroredAxes(bool out[3]) const;
+  bool applySinTool();
+  bool selectSinEdge(int d, double dl);
+  bool selectSinDl(double dl);
+  bool sinPlaneChanged();
+  bool sinRadius(int t, int d, double &radius);
   bool latheToolOffset(const MachineCmd &c);  // the 808D turning G10 P X Z R
   // Words of axes the machine lacks, and U V W, which the executor has no axes for.
   bool checkAxisWords(const MachineCmd &c);
@@ -514,7 +527,7 @@ struct Executor::Impl {
     std::vector<MotionRecord> records;
     // What the captured blocks may change and a roughing consumer puts back.
     ModalState st;
-    double feedMM = 0, toolLength = 0, toolOffsetX = 0;
+    double feedMM = 0, toolLength = 0, toolOffsetX = 0, toolOffsetY = 0;
     LastPath lastPath;
     int64_t blockNumber = -1;
     SourceLoc blockLoc;

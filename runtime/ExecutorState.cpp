@@ -63,12 +63,38 @@ ToolData Executor::Impl::edgeData(int t, int d) const { return resulting(edgeOf(
 ToolData Executor::Impl::toolNumberData(int t) const { return resulting(edgeOf(t, offsetEdge(t))); }
 
 namespace {
-// A field of an edge by ToolField (the k of $_tool_data[t, d, k]).
-double &fieldOf(ToolEdge &e, ToolField f) {
-  static constexpr double ToolEdge::*kFields[] = {&ToolEdge::length, &ToolEdge::radius, &ToolEdge::lengthWear,
-                                                  &ToolEdge::radiusWear};
-  static_assert(std::size(kFields) == (size_t)kToolFields);
-  return e.*kFields[(int)f];
+// A field of an edge by ToolField (the k of $_tool_data[t, d, k]): lengths in mm, the type and
+// the cutting edge position as numbers (`length` false).
+struct FieldRef {
+  double *value;
+  int *whole;
+  bool length;
+  double get() const { return value ? *value : *whole; }
+};
+// The type ($TC_DP1, 0..9999) and the cutting edge position ($TC_DP2, 0..9) are whole numbers.
+bool toolNumberField(int f, double value, int &out, std::string &err) {
+  const int hi = f == (int)ToolField::Type ? 9999 : 9;
+  if (!(value >= 0 && value <= hi && value == std::floor(value))) {
+    err = fmt::format("{} must be a whole number 0..{}, got {}", f == (int)ToolField::Type ? "the tool type" : "the cutting edge position",
+                      hi, numberText(value));
+    return false;
+  }
+  out = (int)value;
+  return true;
+}
+FieldRef fieldOf(ToolEdge &e, int f) {
+  static constexpr double ToolEdge::*kFields[] = {&ToolEdge::length,      &ToolEdge::radius,      &ToolEdge::lengthWear,
+                                                  &ToolEdge::radiusWear,  nullptr,                nullptr,
+                                                  &ToolEdge::length2,     &ToolEdge::length3,     &ToolEdge::length2Wear,
+                                                  &ToolEdge::length3Wear, &ToolEdge::base1,       &ToolEdge::base2,
+                                                  &ToolEdge::base3};
+  static_assert(std::size(kFields) == (size_t)kToolSumFields);
+  if (f == (int)ToolField::Type) return {nullptr, &e.type, false};
+  if (f == (int)ToolField::CutPos) return {nullptr, &e.tip, false};
+  if (f < kToolSumFields) return {&(e.*kFields[f]), nullptr, true};
+  int i = f - (f < kToolSetupFields ? kToolSumFields : kToolSetupFields);
+  auto &sets = f < kToolSetupFields ? e.sumWear : e.sumSetup;
+  return {&sets[i / kDlParams][i % kDlParams], nullptr, true};
 }
 }  // namespace
 
@@ -120,6 +146,12 @@ bool Executor::Impl::setEdge(int t, int d, const ToolEdge &e, std::string &err, 
     return false;
   }
   edgeEdits[{t, d}] = e;
+  if (now && lengthInUse && activeEdge > 0) {  // a Sinumerik edge: its whole length vector (X Y Z)
+    Vec3 length;
+    double radius;
+    rule = "unsupported-code";
+    return sinToolOffsets(t, d, activeDl, length, radius, err) && applySinTool();
+  }
   if (now && lengthInUse && toolLength != data.length) {
     toolLength = data.length;
     MotionRecord r = record(RecordKind::ToolLength);
@@ -252,7 +284,7 @@ bool Executor::Impl::execToolOffset(const MachineCmd &c) {
                    "unsupported-code");
     static constexpr ToolField kField[] = {ToolField::Length, ToolField::LengthWear, ToolField::Radius,
                                            ToolField::RadiusWear};  // ToolLength … ToolRadiusWear
-    fieldOf(e, kField[(int)kind - (int)SetOffsetKind::ToolLength]) = r;
+    *fieldOf(e, (int)kField[(int)kind - (int)SetOffsetKind::ToolLength]).value = r;
     break;
   }
   }
@@ -294,7 +326,8 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
     int t, d;
     if (!x.toolDataRef(ref, t, d, err)) return false;
     ToolEdge e = x.edgeOf(t, d);
-    out = fieldOf(e, (ToolField)info.axis) / x.paramUnit;
+    FieldRef f = fieldOf(e, info.axis);
+    out = f.length ? f.get() / x.paramUnit : f.get();
     return true;
   }
   case SysFamily::ToolOffset: {  // rs274 #5401…: the table entry of the tool in the spindle (not G43's)
@@ -416,7 +449,9 @@ bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::
     int t, d;
     if (!x.toolDataRef(ref, t, d, err)) return false;
     ToolEdge e = x.edgeOf(t, d);
-    fieldOf(e, (ToolField)info.axis) = value * x.paramUnit;
+    FieldRef f = fieldOf(e, info.axis);
+    if (f.value) *f.value = value * x.paramUnit;
+    else if (!toolNumberField(info.axis, value, *f.whole, err)) return false;
     x.loc = loc;
     const char *rule;
     return x.setEdge(t, d, e, err, rule);

@@ -385,6 +385,12 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"tool_write", &Controller::toolWrite, 0, 0, false, "on-select immediate"},
     {"offset_memory", NodeReader(readOffsetMemory)},
     {"offset_numbers", NodeReader(readOffsetNumbers)},
+    {"mirror_tool_length", &Controller::mirrorToolLength},
+    {"mirror_tool_wear", &Controller::mirrorToolWear},
+    {"wear_sign_cutpos", &Controller::wearSignCutpos},
+    {"wear_sign", &Controller::wearSign},
+    {"tool_length_const", &Controller::toolLengthConst},
+    {"dl_default", &Controller::dlDefault, 0, 6},
 };
 
 void readAxisKind(Ctx &c, const toml::node &n, void *obj) {
@@ -468,6 +474,14 @@ const KeyDef<EdgeIn> kEdgeKeys[] = {
     {"x_offset", &EdgeIn::xOffset},
     {"x_wear", &EdgeIn::xWear},
     {"tip", &EdgeIn::tip, 0, 9},
+    {"type", &EdgeIn::type, 0, 9999},
+    {"length2", &EdgeIn::length2},
+    {"length3", &EdgeIn::length3},
+    {"length2_wear", &EdgeIn::length2Wear},
+    {"length3_wear", &EdgeIn::length3Wear},
+    {"base1", &EdgeIn::base1},
+    {"base2", &EdgeIn::base2},
+    {"base3", &EdgeIn::base3},
 };
 
 struct ToolIn : Tool {

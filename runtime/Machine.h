@@ -36,6 +36,16 @@ struct ToolEdge {
   double lengthWear = 0, radiusWear = 0;  // mm, added to the geometry
   double xOffset = 0, xWear = 0;          // mm, lathe X offset (radius, machine X) and its wear
   int tip = 0;                            // lathe imaginary tool tip 0-9 (0 and 9: the nose centre)
+  // Sinumerik edge data (docs/SINUMERIK.md "Tool offsets"): $TC_DP1 the tool type (1xx/2xx
+  // milling and drilling, 400-599 turning and grinding; 0 none), lengths 2 and 3 ($TC_DP4/5) and
+  // their wear ($TC_DP13/14), the base dimensions of lengths 1-3 ($TC_DP21-23). `length`,
+  // `radius` and their wear are $TC_DP3, $TC_DP6, $TC_DP12, $TC_DP15; `tip` is $TC_DP2.
+  int type = 0;
+  double length2 = 0, length3 = 0, length2Wear = 0, length3Wear = 0;
+  double base1 = 0, base2 = 0, base3 = 0;
+  // The additive offsets of DL sets 1..6 for lengths 1-3 and the radius: wear $TC_SCPxy and
+  // setup values $TC_ECPxy, [x - 1][y - 3] (programs write them; the machine file has none).
+  double sumWear[6][4] = {}, sumSetup[6][4] = {};
 };
 
 struct Tool {
@@ -122,6 +132,13 @@ struct Controller {
   // Key offset_numbers: the edge each ISO H/D offset number addresses (808D `$TC_DPH[t, d]`,
   // "ISO_H"): number -> (tool, edge). Empty: number n is tool n's edge 1 or only edge.
   std::map<int, std::pair<int, int>> offsetNumbers;
+  // Sinumerik tool offset setting data (docs/SINUMERIK.md "Tool offsets"): SD42900
+  // $SC_MIRROR_TOOL_LENGTH, SD42910 $SC_MIRROR_TOOL_WEAR, SD42920 $SC_WEAR_SIGN_CUTPOS, SD42930
+  // $SC_WEAR_SIGN, SD42940 $SC_TOOL_LENGTH_CONST (0: the lengths follow the plane), and the DL set
+  // an edge selection activates (MD20272 $MC_SUMCORR_DEFAULT, 0 none).
+  bool mirrorToolLength = false, mirrorToolWear = false, wearSignCutpos = false, wearSign = false;
+  int toolLengthConst = 0;
+  int dlDefault = 0;
 };
 
 // One rotary joint of a kinematic chain ([[kinematics.joints]], docs/MACHINE.md "Kinematics").

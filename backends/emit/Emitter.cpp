@@ -466,6 +466,10 @@ void Emitter::record(const MotionRecord &source) {
   }
   case RecordKind::Plane: {
     if (r.ivalue < 0 || r.ivalue > 2) break;
+    if (src_.planeXY != (r.ivalue == (int)Plane::XY)) {
+      src_.planeXY = r.ivalue == (int)Plane::XY;
+      frameDirty_ |= st_.target == Target::Sinumerik;
+    }
     Words w;
     planeWord((Plane)r.ivalue, w);
     if (!w.empty()) addPending(PendingGroup::Plane, w[0], r);

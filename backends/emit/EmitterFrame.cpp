@@ -116,6 +116,7 @@ bool Emitter::frameRecord(const MotionRecord &r) {
     return true;
   case RecordKind::ToolLength:
     src_.toolZ = r.value, src_.toolX = r.value2, src_.toolH = (int)r.ivalue;
+    src_.toolY = r.param("Y") ? *r.param("Y") : 0;  // a Sinumerik edge's length on Y
     frameDirty_ = true;
     return true;
   case RecordKind::ToolNumber:  // LinuxCNC M61: no motion; G43 without H would use it
@@ -206,12 +207,14 @@ void Emitter::syncFrame(const MotionRecord &r) {
     }
   // Tool length compensation: written when the target addresses the same length.
   int toolWord = 0;
-  if (st_.lathe || src_.toolX != 0) {
-    if (src_.toolZ != 0 || src_.toolX != 0) baked.push_back(st_.lathe ? "the tool offsets" : "the tool length");
+  if (st_.lathe || src_.toolX != 0 || src_.toolY != 0) {
+    if (src_.toolZ != 0 || src_.toolX != 0 || src_.toolY != 0) baked.push_back(st_.lathe ? "the tool offsets" : "the tool length");
   } else if (st_.target == Target::ISO) {
     double length;
     if (src_.toolH > 0 && offsetNumberLength(machine_, src_.toolH, length) && near(length, src_.toolZ)) toolWord = src_.toolH;
     else if (src_.toolZ != 0) baked.push_back("the tool length");
+  } else if (!src_.planeXY) {  // Sinumerik in G18/G19: the target's D would lie on Y or X
+    if (src_.toolZ != 0) baked.push_back("the tool length");
   } else {
     double length;
     if (written_.toolWord && spindleEdgeLength(written_.toolWord, length) && near(length, src_.toolZ) &&

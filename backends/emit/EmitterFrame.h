@@ -18,9 +18,12 @@ struct SourceFrame {
   FrameMatrix matrix{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
   AxisShift axisShift{};    // A B C U V W
   bool started = false;     // a FrameChange was seen (before it: the machine's G54)
-  double toolZ = 0, toolX = 0;
+  double toolZ = 0, toolX = 0, toolY = 0;
   int toolH = 0;            // the ToolLength record's H (Sinumerik D: the spindle tool)
   int spindleTool = 0;
+  // The plane: a Sinumerik target puts a D word's length on the plane's tool axis (docs/SINUMERIK.md
+  // "Tool offsets"), so in G18/G19 the length is baked instead.
+  bool planeXY = true;
 };
 
 // What the written program has in force, and the translation it adds to its positions.

@@ -1,5 +1,8 @@
 #include "frontend/sinumerik/Codes.h"
 
+#include "ir/SystemVars.h"
+
+#include <cctype>
 #include <cstring>
 
 namespace ncc::sin {
@@ -62,6 +65,14 @@ static const GRow kExecuted[] = {
     {"G153", GAct::MachineCoord, ModeValue::Count, 0},
     {"SUPA", GAct::MachineCoord, ModeValue::Count, 0},
     {"G9", GAct::Mode, ModeValue::ExactStopOnce, 0},
+    // G group 56: without an orientable toolholder or a kinematic transformation every system but
+    // the WCS coincides with the MCS (L17314-L17320), so these are one value.
+    {"TOWSTD", GAct::Mode, ModeValue::WearMachine, 0},
+    {"TOWMCS", GAct::Mode, ModeValue::WearMachine, 0},
+    {"TOWBCS", GAct::Mode, ModeValue::WearMachine, 0},
+    {"TOWTCS", GAct::Mode, ModeValue::WearMachine, 0},
+    {"TOWKCS", GAct::Mode, ModeValue::WearMachine, 0},
+    {"TOWWCS", GAct::Mode, ModeValue::WearWork, 0},
     {"G60", GAct::Mode, ModeValue::ExactStop, 0},
     {"G64", GAct::Mode, ModeValue::Continuous, 0},
     {"G70", GAct::Units, ModeValue::Inch, 2},
@@ -133,7 +144,7 @@ static const AddrInfo kAddrs[] = {
     {"I", Addr::Center}, {"J", Addr::Center}, {"K", Addr::Center},
     {"I1", Addr::Via}, {"J1", Addr::Via}, {"K1", Addr::Via},
     {"CR", Addr::Radius}, {"CHF", Addr::Corner}, {"CHR", Addr::Corner}, {"RND", Addr::Corner},
-    {"F", Addr::Feed}, {"S", Addr::Speed}, {"T", Addr::Tool}, {"D", Addr::Edge}, {"M", Addr::Misc}, {"G", Addr::G},
+    {"F", Addr::Feed}, {"S", Addr::Speed}, {"T", Addr::Tool}, {"D", Addr::Edge}, {"DL", Addr::Edge}, {"M", Addr::Misc}, {"G", Addr::G},
     {"ADIS", Addr::Smoothing}, {"ADISPOS", Addr::Smoothing}, {"CTOL", Addr::Smoothing},
     {"SF", Addr::StartAngle},          {"LIMS", Addr::SpeedLimit},
     {"AR", Addr::Opening},             {"TURN", Addr::Turns},
@@ -153,16 +164,35 @@ const AddrInfo *findAddress(std::string_view name) {
   return nullptr;
 }
 
-// $TC_DP3/6/12/15 are the tool data fields ncc keeps (docs/IR.md §3 "Tool data"); the other
-// $TC_DP parameters have no place in the machine file, so they are errors, not zeros.
+// The $TC_DP parameters ncc keeps (ir/SystemVars.h ToolField; docs/SINUMERIK.md "Tool offsets"):
+// type, cutting edge position, lengths 1-3 with their wear and base dimensions, the radius and its
+// wear. The others (DP7-DP11, DP16-DP20, DP24, DP25) shape a tool ncc does not model: errors,
+// not zeros. $TC_SCPxy / $TC_ECPxy: findToolSumVar.
 static const SysMap kSys[] = {
     {"P_PFRAME", "_pframe", 0},       {"P_IFRAME", "_iframe", 0},       {"P_ACTFRAME", "_actframe", 0},
     {"P_UIFR", "_uifr", 1},           {"AA_IW", "_abs", 1},             {"P_EP", "_abs", 1},
     {"P_TOOLNO", "_current_tool", 0}, {"P_TOOL", "_cutter_d", 0},       {"P_UIFRNUM", "_coord_system_number", 0},
     {"P_F", "_feed", 0},              {"P_S", "_rpm", 0},
-    {"TC_DP3", "_tool_data", 2, 0},   {"TC_DP6", "_tool_data", 2, 1},   {"TC_DP12", "_tool_data", 2, 2},
-    {"TC_DP15", "_tool_data", 2, 3},
+    {"TC_DP1", "_tool_data", 2, (int)ToolField::Type},         {"TC_DP2", "_tool_data", 2, (int)ToolField::CutPos},
+    {"TC_DP3", "_tool_data", 2, (int)ToolField::Length},       {"TC_DP4", "_tool_data", 2, (int)ToolField::Length2},
+    {"TC_DP5", "_tool_data", 2, (int)ToolField::Length3},      {"TC_DP6", "_tool_data", 2, (int)ToolField::Radius},
+    {"TC_DP12", "_tool_data", 2, (int)ToolField::LengthWear},  {"TC_DP13", "_tool_data", 2, (int)ToolField::Length2Wear},
+    {"TC_DP14", "_tool_data", 2, (int)ToolField::Length3Wear}, {"TC_DP15", "_tool_data", 2, (int)ToolField::RadiusWear},
+    {"TC_DP21", "_tool_data", 2, (int)ToolField::Base1},       {"TC_DP22", "_tool_data", 2, (int)ToolField::Base2},
+    {"TC_DP23", "_tool_data", 2, (int)ToolField::Base3},
 };
+
+// $TC_SCPxy (wear) and $TC_ECPxy (setup value) of DL set x = 1..6 for parameter y = 3..6
+// (lengths 1-3, radius; L16993-L17028): the tool data field, -1 for another name, -2 for a
+// parameter ncc does not keep (y = 7..11).
+int findToolSumVar(std::string_view name) {
+  bool wear = name.substr(0, 6) == "TC_SCP", setup = name.substr(0, 6) == "TC_ECP";
+  if ((!wear && !setup) || name.size() != 8 || name[6] < '1' || name[6] > '6' || !std::isdigit((unsigned char)name[7]))
+    return name.size() == 9 && (wear || setup) ? -2 : -1;  // $TC_SCP410: y = 10, 11
+  int x = name[6] - '1', y = name[7] - '0';
+  if (y < 3 || y > 6) return -2;
+  return (wear ? kToolSumFields : kToolSetupFields) + x * kDlParams + (y - 3);
+}
 
 const SysMap *findSystemVar(std::string_view name) {
   for (auto &s : kSys)

@@ -89,6 +89,8 @@ struct SysMap {
   int toolField = -1;     // $TC_DPn: the field k of $_tool_data[t, d, k]
 };
 const SysMap *findSystemVar(std::string_view name);
+// $TC_SCPxy / $TC_ECPxy: the tool data field (>= 0), -2 a parameter ncc does not keep, -1 another name.
+int findToolSumVar(std::string_view name);
 
 // A predefined function: its NC IR builtin and how its arguments are read.
 struct FnMap {

@@ -203,6 +203,13 @@ ExprPtr BlockParser::systemVar(const Token &t) {
   if (ExprPtr arg = f_.pp.opts.macroArguments ? macroArgument(name, loc(t)) : nullptr) return arg;
   const SysMap *m = findSystemVar(name);
   SourceLoc l = loc(t);
+  SysMap sum{"", "_tool_data", 2, findToolSumVar(name)};
+  if (!m && sum.toolField >= 0) m = &sum;
+  else if (!m && sum.toolField == -2) {
+    fail(t, fmt::format("'${}': ncc keeps the additive offsets of lengths 1-3 and the radius ($TC_SCPx3 … x6)", name),
+         "unsupported-code");
+    return nullptr;
+  }
   if (!m && machineCtx_) return machineValue();
   if (!m) {
     fail(t, fmt::format("system variable '${}' is not provided by ncc", name), "unsupported-code");

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 namespace ncc::sin {
 
@@ -128,16 +129,30 @@ bool BlockParser::lowerWords() {
       changed = true;
     }
   // D: the cutting edge of the tool in the spindle (MD20270: D1 after a tool change), its length
-  // and the radius of G41/G42; D0 cancels.
+  // and the radius of G41/G42; D0 cancels. DL=n: the edge's additive offset set (SIN-TOL-04),
+  // with D (selected with it) or alone: then it counts from the next block, after this block's
+  // move (example 39, L16983-L16991: "DL=2 … output in the next block").
+  ExprPtr dl = take("DL");
+  std::optional<Op> dlAfterMove;
   if (ExprPtr d = take("D")) {
     if (d->kind != ir::ExprKind::Number || d->num < 0 || d->num != std::floor(d->num))
       return fail(t_[0], "D takes a constant edge number (D0, D1, D2 …)", "unsupported-code");
+    if (d->num == 0 && dl) return fail(t_[0], "DL needs a cutting edge: D0 cancels the tool offset", "unused-word");
     Op o(OpKind::ToolLength, bl);
     if (d->num == 0) o.set("h", Expr::number(0, ir::Type::Int));
-    else if (d->num > 1) o.set("D", std::move(d));
+    else o.set("D", std::move(d));
+    if (dl) o.set("dl", std::move(dl));
     out.push_back(std::move(o));
   } else if (changed) {
-    out.push_back(Op(OpKind::ToolLength, bl));
+    // The change's own edge: `h=0 D=1` is D1 (or the tool's only edge), none for an empty spindle.
+    Op o(OpKind::ToolLength, bl);
+    o.set("h", Expr::number(0, ir::Type::Int));
+    o.set("D", Expr::number(1, ir::Type::Int));
+    if (dl) o.set("dl", std::move(dl));
+    out.push_back(std::move(o));
+  } else if (dl) {
+    dlAfterMove.emplace(OpKind::ToolLength, bl);
+    dlAfterMove->set("dl", std::move(dl));
   }
   for (auto &[m, l] : ms) {
     if (!m) continue;
@@ -255,6 +270,7 @@ bool BlockParser::lowerWords() {
   } else if (any) {
     if (!ac.empty()) mv.set("ac", Expr::symbol(ac));
     if (!ic.empty()) mv.set("ic", Expr::symbol(ic));
+    if (floatTap && dlAfterMove) return fail(t_[0], "DL in a G63 block is not simulated: program it in its own block", "unsupported-code");
     if (floatTap) return lowerFloatTap(gLoc[1], path, std::move(mv), out);
     out.push_back(std::move(mv));
   } else if (floatTap) {
@@ -265,6 +281,7 @@ bool BlockParser::lowerWords() {
     for (auto &[g, l] : gcodes_) g01 = g01 || g.mode == ModeValue::Rapid || g.mode == ModeValue::Linear;
     if (g01 || hadFeedOrSpeed) out.push_back(Op(OpKind::ModalTrigger, bl));
   }
+  if (dlAfterMove) out.push_back(std::move(*dlAfterMove));
   for (auto &[m, l] : ms) {
     if (!m) continue;
     if (m->act == MAct::Stop) {

@@ -46,7 +46,7 @@ TEST(SystemVars, ToolDataIndices) {
   EXPECT_EQ(r.tool, 12);
   EXPECT_EQ(r.edge, 3);
   EXPECT_EQ(sysVarAt(SysFamily::ToolData, 0, 1, 0).var, kNoSysVar);       // tool 0: no offsets
-  EXPECT_EQ(sysVarAt(SysFamily::ToolData, 1, 1, 4).var, kNoSysVar);       // no field 4
+  EXPECT_EQ(sysVarAt(SysFamily::ToolData, 1, 1, kToolFields).var, kNoSysVar);  // no field 61
   EXPECT_EQ(sysVarAt(SysFamily::ToolData, 1.5, 1, 0).var, kNoSysVar);     // not an integer
   EXPECT_EQ(sysVarAt(SysFamily::ToolData, 100000, 1, 0).var, kNoSysVar);  // beyond the machine file's range
   SysVar v;
