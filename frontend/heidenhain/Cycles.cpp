@@ -352,7 +352,7 @@ bool BlockParser::cycl() {
   return true;
 }
 
-bool BlockParser::cycleParamName(int number, std::set<std::string> &seen, std::string &name) {
+bool BlockParser::cycleParamName(int number, std::set<std::string> &seen, std::string &name, const char *block) {
   const Token &q = tok();
   if (!(q.isWord("Q") || q.isWord("QS")) || peek().kind != Tok::Number || !peek().isInt)
     return fail(q, fmt::format("a cycle parameter line Qn=value was expected, not '{}'", q.text));
@@ -360,7 +360,7 @@ bool BlockParser::cycleParamName(int number, std::set<std::string> &seen, std::s
   i_ += 2;
   if (!tok().is("=")) return fail(tok(), fmt::format("'=' expected after {}", name));
   ++i_;
-  if (!seen.insert(name).second) return fail(q, fmt::format("{} twice in CYCL DEF {}", name, number), "cycle-parameter");
+  if (!seen.insert(name).second) return fail(q, fmt::format("{} twice in {} {}", name, block, number), "cycle-parameter");
   return true;
 }
 

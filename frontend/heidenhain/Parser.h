@@ -196,8 +196,9 @@ private:
   bool programCycle(const Token &n);               // Cycles.cpp: CYCL DEF 12.1 PGM
   bool contourLabels(const Token &n);              // SlCycles.cpp: CYCL DEF 14.1 1/2/3
   bool slDefinition(int number, const Token &n);   // SlCycles.cpp: CYCL DEF 20-25
-  // Reads `Qn=` / `QSn=` of a cycle parameter line into `name` ("Q200"); a repeat is an error.
-  bool cycleParamName(int number, std::set<std::string> &seen, std::string &name);
+  // Reads `Qn=` / `QSn=` of a cycle parameter line into `name` ("Q200"); a repeat is an error
+  // naming `block` ("CYCL DEF 200", "TCH PROBE 410").
+  bool cycleParamName(int number, std::set<std::string> &seen, std::string &name, const char *block = "CYCL DEF");
   bool slCall(const std::string &how);             // SlCycles.cpp: CYCL CALL of 21-25
   bool cyclCallPat();                              // Patterns.cpp
   bool patternDef();                               // Patterns.cpp

@@ -48,7 +48,7 @@ bool BlockParser::tchProbe() {
   while (!atEnd()) {
     const Token &q = tok();
     std::string name;
-    if (!cycleParamName(number, seen, name)) return false;
+    if (!cycleParamName(number, seen, name, "TCH PROBE")) return false;
     if (pc && !listed(pc->params, name))
       return fail(q, fmt::format("{} is not a parameter of touch-probe cycle {}", name, number), "cycle-parameter");
     if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FAUTO")) {
