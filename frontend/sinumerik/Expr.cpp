@@ -250,7 +250,11 @@ ExprPtr BlockParser::systemVar(const Token &t) {
 
 ExprPtr BlockParser::function(const Token &t) {
   SourceLoc l = loc(t);
-  if (t.text == "ISVAR" && !machineCtx_) return isvar(t);
+  if (!machineCtx_) {
+    if (t.text == "ISVAR") return isvar(t);
+    if (t.text == "GETVARTYP") return getvartyp(t);
+    if (t.text == "STRINGIS") return stringis(t);
+  }
   const FnMap *fm = findFunction(t.text);
   if (!fm && machineCtx_) return machineValue();
   if (!fm) {

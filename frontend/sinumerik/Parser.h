@@ -257,7 +257,11 @@ private:
   ir::ExprPtr variable(const Token &t);  // a declared variable, its element or frame component
   ir::ExprPtr systemVar(const Token &t);
   ir::ExprPtr function(const Token &t);
-  ir::ExprPtr isvar(const Token &t);  // Isvar.cpp
+  // Isvar.cpp: the introspection functions, answered when the program is read.
+  ir::ExprPtr isvar(const Token &t);
+  ir::ExprPtr getvartyp(const Token &t);
+  ir::ExprPtr stringis(const Token &t);
+  ir::ExprPtr constantName(const Token &t);
   ir::ExprPtr indexList(std::vector<ir::ExprPtr> &out, bool axisOk);
   ir::ExprPtr comparison(ir::OpCode op, ir::ExprPtr a, ir::ExprPtr b, SourceLoc l);
   bool stringy(const ir::Expr &e) const;
