@@ -78,6 +78,7 @@ bool BlockParser::parse() {
 bool BlockParser::statement() {
   const Token &t = tok();
   if (t.kind != Tok::Name) return fail(t, fmt::format("unexpected '{}'", t.text));
+  if (f_.endproc.line) return fail(t, fmt::format("statement after ENDPROC (line {}), the program's end line", f_.endproc.line));
   f_.sawStatement = f_.sawStatement || t.text != "PROC";
   if (keyword(t.text)) return !failed_;
   if (failed_) return false;

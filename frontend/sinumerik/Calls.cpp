@@ -325,6 +325,18 @@ bool BlockParser::retStatement(bool backward) {
   return true;
 }
 
+// ENDPROC (operator table, L36769): the end line of a program that starts with PROC, a return
+// to the caller like M17; nothing may follow it.
+bool BlockParser::endproc() {
+  const Token &t = tok();
+  if (!f_.startsWithProc) return fail(t, "ENDPROC ends a program whose first statement is PROC");
+  if (peek().kind != Tok::End) return fail(peek(), "'ENDPROC' must stand alone in its block");
+  ++i_;
+  f_.endproc = loc(t);
+  post_.push_back(Op(OpKind::Return, f_.endproc));
+  return true;
+}
+
 // After a call of a program with RET(target): if it left a target, the jump there.
 void BlockParser::resumeAfterCall(SourceLoc l) {
   auto ret = [&] { return Expr::var(ir::VarSpace::Global, kRetTarget, nullptr, l); };
@@ -407,6 +419,7 @@ bool BlockParser::programCall(const std::string &kw) {
   else if (kw == "CALLPATH") callpath();
   else if (kw == "ISOCALL") isocall();
   else if (kw == "RET" || kw == "RETB") retStatement(kw == "RETB");
+  else if (kw == "ENDPROC") endproc();
   else if (kw == "EXECSTRING") execString();
   else return false;
   return true;

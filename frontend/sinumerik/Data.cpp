@@ -300,6 +300,7 @@ bool BlockParser::proc() {
   const Token &p = tok();
   if (f_.sawStatement)
     return fail(p, "PROC must be the first statement of the program");
+  f_.startsWithProc = true;
   ++i_;
   // A name, or (808D macro bodies, seed001 L9816: PROC 0010) the program's number.
   if (tok().kind != Tok::Name && !(tok().kind == Tok::Number && tok().text.find('.') == std::string::npos))

@@ -77,6 +77,8 @@ public:
   bool retTarget = false;    // a RET(target) / RETB(target) was read
   std::vector<std::pair<std::string, SourceLoc>> laterLabels;  // REPEAT A B with B after the REPEAT
   bool sawStatement = false;                // a statement before: PROC must be first
+  bool startsWithProc = false;              // the program's first statement is PROC: ENDPROC may end it
+  SourceLoc endproc;                        // ENDPROC's place (line 0: none yet): nothing may follow it
   std::map<std::string, std::vector<Token>> macros;  // DEFINE NAME AS … of this program
   // DEFINE NAME AS tokens: stores the macro (true); other lines: replaces macro names by their
   // tokens (SIN-MAC-01). False with an error reported.
@@ -219,6 +221,7 @@ private:
                            const std::string &to, SourceLoc l);  // a call of P's section function
   ir::ExprPtr stringArgument(const char *kw, bool empty);
   bool retStatement(bool backward);  // RET, RET(…), RETB(…)
+  bool endproc();                     // ENDPROC
   bool execString();                 // EXECSTRING("block")
   void resumeAfterCall(SourceLoc l);
   bool argumentList(const std::string &name, const std::vector<std::string> &params, const char *prefix, ir::Op &c);
