@@ -35,7 +35,7 @@ const char *sourceKindName(SourceKind k) {
 }
 
 bool sourceKindFromName(std::string_view s, SourceKind &out) {
-  if (s == "cldata") s = "apt";  // the kind's older name
+  if (s == "cldata") s = "apt";  // either CL format: the driver picks ADEM by the file's content
   for (auto &i : kKinds)
     if (s == i.name) {
       out = i.kind;

@@ -58,7 +58,12 @@ uint32_t Session::open(const std::string &path) {
 
 SourceKind Session::kindOf(uint32_t file) const {
   SourceKind k;
-  if (!opts.dialect.empty() && sourceKindFromName(opts.dialect, k)) return k;
+  if (!opts.dialect.empty() && sourceKindFromName(opts.dialect, k)) {
+    // "cldata" covers both CL formats (as --to=cldata writes ADEM): the content decides.
+    if (k == SourceKind::CLData && opts.dialect == "cldata" && detectSourceKind("", sm.text(file)) == SourceKind::Adem)
+      return SourceKind::Adem;
+    return k;
+  }
   return detectSourceKind(sm.name(file), sm.text(file));
 }
 
