@@ -24,10 +24,53 @@ static double linearDistance(const MotionRecord &r) {
   return std::sqrt(d2);
 }
 
-static std::vector<const MotionRecord *> pathOf(const std::vector<MotionRecord> &v) {
-  std::vector<const MotionRecord *> out;
-  for (auto &r : v)
-    if (isPath(r) && !isShortMove(r, 1e-9)) out.push_back(&r);
+// The machine state a cutting move runs with: the tool in the spindle, the spindle's direction
+// and speed (with its CSS mode), the coolant. Where translators place the commands between two
+// moves is theirs to choose; the state each move runs in is not.
+struct MachineState {
+  long tool = -1;  // none loaded yet
+  int spindle = 0;  // 0 stopped, 1 cw, 2 ccw
+  double speed = 0;
+  int speedMode = 0;  // SpindleMode ivalue
+  bool flood = false, mist = false;
+
+  void apply(const MotionRecord &r) {
+    switch (r.kind) {
+    case RecordKind::ToolChange: tool = r.ivalue; break;
+    case RecordKind::SpindleSpeed: speed = r.value; break;
+    case RecordKind::SpindleCW: spindle = 1; break;
+    case RecordKind::SpindleCCW: spindle = 2; break;
+    case RecordKind::SpindleStop: case RecordKind::SpindleOrient: spindle = 0; break;
+    case RecordKind::SpindleMode: speedMode = (int)r.ivalue; break;
+    case RecordKind::CoolantFlood: flood = r.ivalue != 0; break;
+    case RecordKind::CoolantMist: mist = r.ivalue != 0; break;
+    default: break;
+    }
+  }
+  // What differs, empty when nothing does. The speed counts only while the spindle turns.
+  std::string diff(const MachineState &o) const {
+    if (tool != o.tool) return fmt::format("tools differ (T{} vs T{})", tool, o.tool);
+    static const char *kSpindle[] = {"stopped", "cw", "ccw"};
+    if (spindle != o.spindle) return fmt::format("spindle states differ ({} vs {})", kSpindle[spindle], kSpindle[o.spindle]);
+    if (spindle && (speedMode != o.speedMode || std::fabs(speed - o.speed) > 1e-6 * std::max(1.0, std::fabs(speed))))
+      return fmt::format("spindle speeds differ (S{} vs S{})", speed, o.speed);
+    if (flood != o.flood || mist != o.mist) return "coolant states differ";
+    return {};
+  }
+};
+
+struct PathMove {
+  const MotionRecord *r;
+  MachineState state;
+};
+
+static std::vector<PathMove> pathOf(const std::vector<MotionRecord> &v) {
+  std::vector<PathMove> out;
+  MachineState s;
+  for (auto &r : v) {
+    s.apply(r);
+    if (isPath(r) && !isShortMove(r, 1e-9)) out.push_back({&r, s});
+  }
   return out;
 }
 
@@ -40,7 +83,7 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
   const double shortMove = 2 * opts.tolerance;
   size_t i = 0, j = 0;
   while (i < pa.size() && j < pb.size()) {
-    const MotionRecord &x = *pa[i], &y = *pb[j];
+    const MotionRecord &x = *pa[i].r, &y = *pb[j].r;
     std::string why;
     if (x.kind != y.kind) why = "kinds differ";
     for (int k = 0; k < kAxes && why.empty(); ++k)
@@ -94,14 +137,15 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
       why = "feeds differ";
+    if (why.empty() && opts.compareState && x.kind != RecordKind::Rapid) why = pa[i].state.diff(pb[j].state);
     if (why.empty()) { ++i, ++j; continue; }
     if (isShortMove(x, shortMove)) { ++i; continue; }
     if (isShortMove(y, shortMove)) { ++j; continue; }
     report = fmt::format("paths differ at motion {}: {}\n  first:  {}\n  second: {}", i + 1, why, where(x), where(y));
     return false;
   }
-  while (i < pa.size() && isShortMove(*pa[i], shortMove)) ++i;
-  while (j < pb.size() && isShortMove(*pb[j], shortMove)) ++j;
+  while (i < pa.size() && isShortMove(*pa[i].r, shortMove)) ++i;
+  while (j < pb.size() && isShortMove(*pb[j].r, shortMove)) ++j;
   if (i != pa.size() || j != pb.size()) {
     report = fmt::format("paths differ in length: {} vs {} motions", pa.size(), pb.size());
     return false;

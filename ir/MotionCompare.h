@@ -1,5 +1,6 @@
 // Compares two Motion IR streams as paths: the motion records (rapid, linear, arc, dwell) must
-// match in order, end points and arc centres within a tolerance. Used by
+// match in order, end points and arc centres within a tolerance, and every move other than a
+// rapid must run with the same tool, spindle state and speed, and coolant. Used by
 // `ncc translate --verify` and the engine-equivalence tests.
 #pragma once
 #include "ir/MotionIR.h"
@@ -12,6 +13,7 @@ namespace ncc {
 struct PathCompareOptions {
   double tolerance = 1e-3;  // mm
   bool compareFeed = true;
+  bool compareState = true;  // tool, spindle and coolant at each feed move, dwell and thread
 };
 
 // Returns true when equal; otherwise `report` names the first difference.

@@ -8,6 +8,7 @@
 #include "backends/emit/EmitterImpl.h"
 #include "runtime/cycles/Library.h"
 
+#include <algorithm>
 #include <cstring>
 #include <set>
 
@@ -465,8 +466,13 @@ void Klartext::record(const MotionRecord &r) {
     else number(r.value, WordClass::Speed, "S", r, w);  // reports it
     break;
   }
-  case RecordKind::SpindleCW: ms_.push_back(code(Code::SpindleCW)), spindleOn_ = true; break;
-  case RecordKind::SpindleCCW: ms_.push_back(code(Code::SpindleCCW)), spindleOn_ = true; break;
+  case RecordKind::SpindleCW:
+  case RecordKind::SpindleCCW:
+    // The TNC runs M3/M4 at the start of a block and M5 at its end: a stop before a start (a
+    // boring cycle's reversal) gets a block of its own, or the spindle would end up stopped.
+    if (std::find(ms_.begin(), ms_.end(), code(Code::SpindleStop)) != ms_.end()) flushState();
+    ms_.push_back(code(r.kind == RecordKind::SpindleCW ? Code::SpindleCW : Code::SpindleCCW)), spindleOn_ = true;
+    break;
   case RecordKind::SpindleStop: ms_.push_back(code(Code::SpindleStop)), spindleOn_ = false; break;
   case RecordKind::CoolantFlood: floodWanted_ = r.ivalue != 0, coolantPending_ = true; break;
   case RecordKind::CoolantMist: mistWanted_ = r.ivalue != 0, coolantPending_ = true; break;

@@ -61,3 +61,56 @@ TEST(MotionCompare, ShortMovesOfRoundingAreSkipped) {
 }
 
 }  // namespace
+
+// Issue 10: the same tool, spindle and coolant states, in order: each feed move runs in the
+// state the commands before it set, wherever between the moves a translator put them.
+namespace {
+MotionRecord command(RecordKind k, long ivalue = 0, double value = 0) {
+  MotionRecord r;
+  r.kind = k;
+  r.ivalue = ivalue;
+  r.value = value;
+  return r;
+}
+std::vector<MotionRecord> withState(std::vector<MotionRecord> prefix, std::vector<MotionRecord> moves) {
+  prefix.insert(prefix.end(), moves.begin(), moves.end());
+  return prefix;
+}
+}  // namespace
+
+TEST(MotionCompare, MachineStateAtEachFeedMove) {
+  auto moves = path({{10, 0}, {10, 5}});
+  auto on = withState({command(RecordKind::ToolChange, 3), command(RecordKind::SpindleSpeed, 0, 1000),
+                       command(RecordKind::SpindleCW), command(RecordKind::CoolantFlood, 1)},
+                      moves);
+  // The same commands in another order before the first move: equal.
+  auto reordered = withState({command(RecordKind::CoolantFlood, 1), command(RecordKind::ToolChange, 3),
+                              command(RecordKind::SpindleCW), command(RecordKind::SpindleSpeed, 0, 1000)},
+                             moves);
+  EXPECT_TRUE(same(on, reordered));
+  std::string why;
+  auto otherTool = on;
+  otherTool[0].ivalue = 4;
+  EXPECT_FALSE(same(on, otherTool, &why));
+  EXPECT_NE(why.find("motion 1: tools differ (T3 vs T4)"), std::string::npos) << why;
+  auto ccw = on;
+  ccw[2].kind = RecordKind::SpindleCCW;
+  EXPECT_FALSE(same(on, ccw, &why));
+  EXPECT_NE(why.find("spindle states differ (cw vs ccw)"), std::string::npos) << why;
+  auto slower = on;
+  slower[1].value = 900;
+  EXPECT_FALSE(same(on, slower, &why));
+  EXPECT_NE(why.find("spindle speeds differ (S1000 vs S900)"), std::string::npos) << why;
+  auto dry = on;
+  dry[3].ivalue = 0;
+  EXPECT_FALSE(same(on, dry, &why));
+  EXPECT_NE(why.find("coolant states differ"), std::string::npos) << why;
+  // The coolant switched off between the two moves on one side only: the second move differs.
+  auto late = on;
+  late.insert(late.end() - 1, command(RecordKind::CoolantFlood, 0));
+  EXPECT_FALSE(same(on, late, &why));
+  EXPECT_NE(why.find("motion 2: coolant states differ"), std::string::npos) << why;
+  // A speed written while the spindle stands still does not count; rapids are not compared.
+  auto stopped = withState({command(RecordKind::SpindleSpeed, 0, 500)}, moves);
+  EXPECT_TRUE(same(moves, stopped));
+}
