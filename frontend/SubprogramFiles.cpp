@@ -14,7 +14,8 @@ uint32_t findSubprogramFile(SourceManager &sm, const std::vector<std::string> &d
                             const std::vector<std::string> &candidates, bool ignoreCase) {
   for (auto &d : dirs) {
     for (auto &f : candidates) {
-      std::filesystem::path path = std::filesystem::path(d) / f;
+      // Normalised: "./P.SPF" is named as "P.SPF", the way the main program in that folder is.
+      std::filesystem::path path = (std::filesystem::path(d) / f).lexically_normal();
       std::error_code ec;
       if (!std::filesystem::is_regular_file(path, ec)) continue;
       if (uint32_t fid = sm.addFile(path.string())) return fid;
@@ -25,7 +26,7 @@ uint32_t findSubprogramFile(SourceManager &sm, const std::vector<std::string> &d
       std::string name = upper(e.path().filename().string());
       for (auto &f : candidates)
         if (name == upper(f) && e.is_regular_file(ec))
-          if (uint32_t fid = sm.addFile(e.path().string())) return fid;
+          if (uint32_t fid = sm.addFile(e.path().lexically_normal().string())) return fid;
     }
   }
   return 0;
