@@ -111,6 +111,7 @@ static sin::SinOptions sinOptions(const FrontendOptions &o) {
   so.searchDirs = o.searchDirs;
   so.linkedFunctions = o.linkedFunctions;
   so.cycles = o.cycles;
+  so.geoAxes = o.geoAxes;
   return so;
 }
 

@@ -35,6 +35,7 @@ struct FrontendOptions {
     bool subprogram = false;
   };
   std::vector<CodeCall> macroCalls;
+  unsigned geoAxes = 7;  // bit n: the machine has geometry axis n+1 (X, Y, Z): Sinumerik ISAXIS
 };
 
 // What a file holds: a dialect, or textual NC IR.

@@ -254,6 +254,7 @@ ExprPtr BlockParser::function(const Token &t) {
     if (t.text == "ISVAR") return isvar(t);
     if (t.text == "GETVARTYP") return getvartyp(t);
     if (t.text == "STRINGIS") return stringis(t);
+    if (t.text == "ISAXIS") return isaxis(t);
   }
   const FnMap *fm = findFunction(t.text);
   if (!fm && machineCtx_) return machineValue();

@@ -5,6 +5,8 @@
 //   knows, with its dimensions and indices checked; an unknown user name is FALSE.
 // - GETVARTYP("name") (L2645-L2680): the type code 1 BOOL … 7 FRAME, negative for no variable.
 // - STRINGIS("name") (L25639-L25770): what the name is in the control's language, yxx.
+// - ISAXIS(n) (L25089-L25118): whether geometry axis n (1 abscissa X, 2 ordinate Y, 3 applicate
+//   Z) exists on the machine [model: the machine description's X Y Z, as MD20050 assigns them].
 #include "frontend/sinumerik/Parser.h"
 
 #include <fmt/format.h>
@@ -203,6 +205,23 @@ ir::ExprPtr BlockParser::stringis(const Token &t) {
       }
   }
   return unknown("not a name of the operator table or of this program");
+}
+
+ir::ExprPtr BlockParser::isaxis(const Token &t) {
+  SourceLoc l = loc(t);
+  ++i_;  // (
+  ir::ExprPtr arg = expr(0);
+  if (!arg || !expect(")")) return nullptr;
+  if (arg->kind != ir::ExprKind::Number) {
+    fail(t, "ISAXIS with a computed axis number is not supported (a constant is answered when the program is read)",
+         "unsupported-code");
+    return nullptr;
+  }
+  if (arg->num != 1 && arg->num != 2 && arg->num != 3) {
+    fail(t, fmt::format("ISAXIS takes a geometry axis number 1, 2 or 3, not {}", arg->num));
+    return nullptr;
+  }
+  return ir::Expr::boolean((f_.pp.opts.geoAxes >> ((int)arg->num - 1)) & 1u, l);
 }
 
 }  // namespace ncc::sin

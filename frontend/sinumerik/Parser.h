@@ -264,6 +264,7 @@ private:
   ir::ExprPtr isvar(const Token &t);
   ir::ExprPtr getvartyp(const Token &t);
   ir::ExprPtr stringis(const Token &t);
+  ir::ExprPtr isaxis(const Token &t);
   ir::ExprPtr constantName(const Token &t);
   ir::ExprPtr indexList(std::vector<ir::ExprPtr> &out, bool axisOk);
   ir::ExprPtr comparison(ir::OpCode op, ir::ExprPtr a, ir::ExprPtr b, SourceLoc l);

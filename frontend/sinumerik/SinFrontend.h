@@ -19,6 +19,7 @@ struct SinOptions {
   double realTolerance = 1e-12;         // relative tolerance of REAL comparisons (MD, manual L3284)
   GuestFactory isoBlocks;               // G291 … G290: the ISO front end's blocks (null: G291 is an error)
   bool macroArguments = false;          // the program is part of an ISO program: $C_X reads G65's X
+  unsigned geoAxes = 7;                 // bit n: geometry axis n+1 (X, Y, Z) exists (ISAXIS)
 };
 
 // The Siemens-mode blocks of an ISO program (G290 … G291, frontend/ModeSwitch.h): lowered by

@@ -78,6 +78,9 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.lathe = machine.controller.lathe();
   fo.latheSystem = machine.controller.gcodeSystem.empty() ? 'A' : machine.controller.gcodeSystem[0];
   fo.startMode = machine.controller.startMode;
+  fo.geoAxes = 0;
+  for (int i = 0; i < 3; ++i)
+    if (machine.axes[i].present) fo.geoAxes |= 1u << i;
   fo.probe = {machine.controller.probeFeed, machine.controller.probeFmax, machine.controller.probeDist,
               machine.controller.probeSetUp, machine.controller.probePrepos == "machine"};
   for (auto &[code, call] : machine.controller.macroCalls)
