@@ -225,6 +225,7 @@ void Emitter::arcPieces(const MotionRecord &r, int turns, bool sourceFull) {
   const double radius = std::hypot(s[0] - c[0], s[1] - c[1]), a0 = std::atan2(s[1] - c[1], s[0] - c[0]);
   for (int k = 1; k < pieces; ++k) {
     AxisVec mid = r.end;
+    for (int i = 0; i < kAxes; ++i) mid[i] = r.start[i] + (r.end[i] - r.start[i]) * k / pieces;  // a helix's rise
     double a = a0 + (ccw ? 1 : -1) * total * k / pieces;
     mid[pa.a] = c[0] + radius * std::cos(a);
     mid[pa.b] = c[1] + radius * std::sin(a);
@@ -262,8 +263,9 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
   bool preferR = st_.arcStyle == ArcStyle::R && turns == 1;
   ArcWords aw = planArc(s, e, c, ccw, full, preferR, fmt(WordClass::Center), machine_.arcTolerance);
   // NC-200 lathes with diameters have only the R form (whether J is a diameter is not known).
-  if (preferR && !aw.useRadius && st_.centerStyle == CenterStyle::AbsolutePlane && st_.xScale != 1 &&
-      refused(r, "arc", "its R form does not give the centre back within the arc tolerance after rounding"))
+  if (!aw.useRadius && st_.centerStyle == CenterStyle::AbsolutePlane && st_.xScale != 1 &&
+      refused(r, "arc", preferR ? "its R form does not give the centre back within the arc tolerance after rounding"
+                                : "the centre's J on a diameter axis is not known: set arc_style = r"))
     return;
   if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   planeWord(r.plane, w);
