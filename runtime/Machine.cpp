@@ -548,8 +548,8 @@ void flattenEmit(Ctx &c, const toml::table &t, const std::string &prefix, std::m
 void readEmit(Ctx &c, const toml::node &n, void *obj) {
   Machine &m = *static_cast<Machine *>(obj);
   forEachNamed(c, n, "emit", [&](const std::string &name, const toml::key &k, const toml::node &v) {
-    if (name != "iso" && name != "sinumerik" && name != "heidenhain")
-      return c.error(k.source(), "unknown emitter '" + name + "' in [emit] (iso, sinumerik, heidenhain)");
+    if (name != "iso" && name != "sinumerik" && name != "heidenhain" && name != "nc200")
+      return c.error(k.source(), "unknown emitter '" + name + "' in [emit] (iso, sinumerik, heidenhain, nc200)");
     if (!v.is_table()) return c.error(v.source(), "emit." + name + ": expected a table, got " + typeName(v));
     flattenEmit(c, *v.as_table(), "", m.sections["emit." + name]);
   });

@@ -245,6 +245,7 @@ bool applyFormatKey(const std::string &key, const std::string &v, ControllerStyl
 }  // namespace
 
 ControllerStyle defaultStyle(Target t) {
+  if (t == Target::Nc200) return nc200Style();
   ControllerStyle s;
   s.target = t;
   bool iso = t == Target::ISO;
@@ -312,6 +313,7 @@ ControllerStyle defaultStyle(Target t) {
 // T<tt>00 (offset 00: the positions already hold the offsets), no M6.
 bool applyLathe(const Machine &m, ControllerStyle &s, Diagnostics &diags) {
   if (!m.controller.lathe()) return true;
+  if (s.target == Target::Nc200) return applyNc200Lathe(m, s, diags);
   s.lathe = true;
   s.setupPlane = Plane::ZX;
   s.xScale = m.controller.diameterProgramming ? 2 : 1;

@@ -29,7 +29,11 @@ enum class Code : uint8_t {
 enum class ArcStyle : uint8_t { IJK, R };
 enum class HelixTurns : uint8_t { Word, Split };
 enum class CommentStyle : uint8_t { Paren, Semicolon };
-enum class MessageStyle : uint8_t { ParenMsg, MsgCall };
+enum class MessageStyle : uint8_t { ParenMsg, MsgCall, Comment };  // Comment: "; MSG text" (NC-200)
+// Arc centres: `Incremental` I J K = centre minus start on the axes' own letters (ISO, Sinumerik);
+// `AbsolutePlane` I J = the centre's absolute coordinates on the plane's abscissa and ordinate,
+// whatever the axes are called (NC-200, seed 003 L736: `G3 U-10 V0 I0 J0` in the plane U,V).
+enum class CenterStyle : uint8_t { Incremental, AbsolutePlane };
 enum class Numbering : uint8_t { Off, Renumber, Source };
 
 struct ControllerStyle {
@@ -75,7 +79,19 @@ struct ControllerStyle {
   double xScale = 1;
   std::string threadCode;       // ISO lathe: G32 (system A) / G33 (B)
   std::string speedLimitCode;   // ISO lathe: G50 (A) / G92 (B), with S
+
+  // Arc and plane rules of targets whose manuals say less than ISO's (NC-200, Nc200Table.cpp).
+  CenterStyle centerStyle = CenterStyle::Incremental;
+  bool planeOwnBlock = false;   // the plane code stands in a block of its own ("(DPI,Z,X)")
+  bool helixAllowed = true;     // false: an arc that moves the plane's normal axis is refused
+  double maxArcSweep = 0;       // degrees; longer arcs (full circles too) are split into equal pieces (0: never)
+  std::string toolSuffix;       // after the tool number: NC-200 ".0" (T5.0: tool 5, offset 0)
+  std::string unverifiedNote;   // a header comment that the output was never read back (no front end)
 };
+
+// The Balt-System NC-200 defaults (Nc200Table.cpp, seed 003) and a lathe's changes to them.
+ControllerStyle nc200Style();
+bool applyNc200Lathe(const Machine &m, ControllerStyle &style, Diagnostics &diags);
 
 // Defaults of a controller (before the machine description is applied).
 ControllerStyle defaultStyle(Target t);

@@ -43,6 +43,7 @@ void Emitter::writeBlock(const Words &words, int64_t sourceN) {
 
 void Emitter::writeHeader() {
   for (const std::string &l : st_.programHeader) writeLine(l);
+  if (!st_.unverifiedNote.empty()) comment(st_.unverifiedNote);
   // The program is named after the file: "1234.nc" becomes O1234, other names a comment.
   std::string name = opts_.programName;
   if (size_t slash = name.find_last_of("/\\"); slash != std::string::npos) name = name.substr(slash + 1);
@@ -185,6 +186,13 @@ void Emitter::arc(const MotionRecord &r) {
   double s[2] = {r.start[pa.a], r.start[pa.b]}, e[2] = {r.end[pa.a], r.end[pa.b]};
   double c[2] = {r.center[pa.a], r.center[pa.b]};
   bool sourceFull = std::hypot(e[0] - s[0], e[1] - s[1]) < 1e-9;
+  if (!st_.helixAllowed && r.end[pa.normal] != r.start[pa.normal] &&
+      refused(r, "helix", "the target has no helical interpolation: an arc moves two axes of its plane only"))
+    return;
+  if (st_.maxArcSweep > 0) {
+    arcPieces(r, n, sourceFull);
+    return;
+  }
   if (n == 1 || st_.helixTurns == HelixTurns::Word) {
     arcBlock(r, r.end, n, sourceFull);
     return;
@@ -202,6 +210,28 @@ void Emitter::arc(const MotionRecord &r) {
     arcBlock(r, mid, 1, true);
   }
   arcBlock(r, r.end, 1, sourceFull);
+}
+
+// Equal pieces of at most maxArcSweep degrees on the source's circle (the start's radius), the
+// last ending at the record's end: the same path, for targets whose arc words cannot say more
+// (NC-200: a full circle, the sign of R beyond a half circle).
+void Emitter::arcPieces(const MotionRecord &r, int turns, bool sourceFull) {
+  PlaneAxes pa = planeAxes(r.plane);
+  double s[2] = {r.start[pa.a], r.start[pa.b]}, e[2] = {r.end[pa.a], r.end[pa.b]};
+  double c[2] = {r.center[pa.a], r.center[pa.b]};
+  const bool ccw = r.turns >= 0;
+  const double total = (turns - 1) * 2 * kPi + (sourceFull ? 2 * kPi : sweepAngle(s, e, c, ccw));
+  const int pieces = std::max(1, (int)std::ceil(total / (st_.maxArcSweep * kPi / 180) - 1e-9));
+  const double radius = std::hypot(s[0] - c[0], s[1] - c[1]), a0 = std::atan2(s[1] - c[1], s[0] - c[0]);
+  for (int k = 1; k < pieces; ++k) {
+    AxisVec mid = r.end;
+    for (int i = 0; i < kAxes; ++i) mid[i] = r.start[i] + (r.end[i] - r.start[i]) * k / pieces;  // a helix's rise
+    double a = a0 + (ccw ? 1 : -1) * total * k / pieces;
+    mid[pa.a] = c[0] + radius * std::cos(a);
+    mid[pa.b] = c[1] + radius * std::sin(a);
+    arcBlock(r, mid, 1, false);
+  }
+  arcBlock(r, r.end, 1, pieces == 1 && sourceFull);
 }
 
 void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull) {
@@ -225,15 +255,30 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
   }
   Words w;
   double startNormal = pos_[pa.normal];
+  if (st_.planeOwnBlock) {  // a three-letter plane code stands alone, before the arc
+    planeWord(r.plane, w);
+    writeBlock(w, r.blockNumber);
+    w.clear();
+  }
+  bool preferR = st_.arcStyle == ArcStyle::R && turns == 1;
+  ArcWords aw = planArc(s, e, c, ccw, full, preferR, fmt(WordClass::Center), machine_.arcTolerance);
+  // NC-200 lathes with diameters have only the R form (whether J is a diameter is not known).
+  if (!aw.useRadius && st_.centerStyle == CenterStyle::AbsolutePlane && st_.xScale != 1 &&
+      refused(r, "arc", preferR ? "its R form does not give the centre back within the arc tolerance after rounding"
+                                : "the centre's J on a diameter axis is not known: set arc_style = r"))
+    return;
   if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   planeWord(r.plane, w);
   motionCode(ccw ? Code::ArcCCW : Code::ArcCW, w);
   axisWords(end, w, r);
-  bool preferR = st_.arcStyle == ArcStyle::R && turns == 1;
-  ArcWords aw = planArc(s, e, c, ccw, full, preferR, fmt(WordClass::Center), machine_.arcTolerance);
   std::string word;
   if (aw.useRadius) {
     if (number(aw.radius, WordClass::Center, st_.radiusWord, r, word)) w.push_back(word);
+  } else if (st_.centerStyle == CenterStyle::AbsolutePlane) {
+    // I on the abscissa, J on the ordinate: the centre's absolute position (rounded start plus
+    // the chosen offset, both on the centre format's grid).
+    for (int i = 0; i < 2; ++i)
+      if (number(s[i] + aw.offset[i], WordClass::Center, i ? "J" : "I", r, word)) w.push_back(word);
   } else {
     for (int i = 0; i < 3; ++i) {
       if (i == pa.normal) continue;
@@ -312,6 +357,10 @@ void Emitter::spline(const MotionRecord &r) {
 
 
 void Emitter::dwell(const MotionRecord &r) {
+  if (code(Code::Dwell).empty() || st_.dwellWord.empty()) {
+    refused(r, "dwell", "no dwell code and word are known for it: set code_dwell and dwell_word in [" + st_.section + "]");
+    return;
+  }
   flushPending();
   NumberFormat f = fmt(WordClass::Dwell);
   if (st_.dwellScale != 1) {  // milliseconds and the like: an integer count, never a point
@@ -340,7 +389,9 @@ void Emitter::comment(const std::string &text) {
 }
 
 void Emitter::message(const std::string &text, const MotionRecord &r) {
-  if (st_.messageStyle == MessageStyle::ParenMsg)
+  if (st_.messageStyle == MessageStyle::Comment)  // no message code: the text is kept as a comment
+    comment("MSG " + text);
+  else if (st_.messageStyle == MessageStyle::ParenMsg)
     writeBlock({"(MSG, " + sanitizeText(text, "()", "[]") + ")"}, r.blockNumber);
   else
     writeBlock({"MSG(\"" + sanitizeText(text, "\"", "'") + "\")"}, r.blockNumber);
@@ -406,7 +457,7 @@ void Emitter::record(const MotionRecord &source) {
       errors_ = true;
       break;
     }
-    addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, latheIso() ? 2 : st_.toolDigits) + (latheIso() ? "00" : ""), r);
+    addPending(PendingGroup::Tool, "T" + formatInteger(r.ivalue, latheIso() ? 2 : st_.toolDigits) + (latheIso() ? "00" : st_.toolSuffix), r);
     break;
   case RecordKind::ToolChange:
     // The change is a block of its own, together with the T word that prepared it.
@@ -446,8 +497,10 @@ void Emitter::record(const MotionRecord &source) {
   case RecordKind::FeedMode: {
     static const Code codes[] = {Code::PerMinute, Code::PerRev, Code::InverseTime};
     if (r.ivalue < 0 || r.ivalue > 2 || r.ivalue == feedMode_) break;
-    if (code(codes[r.ivalue]).empty()) {  // a lathe has no inverse time
-      diags_.error(r.loc, "the [" + st_.section + "] emitter has no code for this feed mode on a lathe: " + printMotionRecord(r),
+    if (code(codes[r.ivalue]).empty()) {  // a lathe (and the NC-200) has no inverse time
+      diags_.error(r.loc, "the [" + st_.section + "] emitter has no code for this feed mode" +
+                              (st_.target == Target::Nc200 ? std::string(" (set its code_ key in [emit.nc200])") : " on a lathe") +
+                              ": " + printMotionRecord(r),
                    "unsupported-code");
       errors_ = true;
       break;
@@ -472,7 +525,8 @@ void Emitter::record(const MotionRecord &source) {
     }
     Words w;
     planeWord((Plane)r.ivalue, w);
-    if (!w.empty()) addPending(PendingGroup::Plane, w[0], r);
+    if (!w.empty() && st_.planeOwnBlock) flushPending(), writeBlock(w, r.blockNumber);
+    else if (!w.empty()) addPending(PendingGroup::Plane, w[0], r);
     break;
   }
   case RecordKind::Comment:
@@ -565,11 +619,15 @@ bool targetFromName(std::string_view name, Target &out) {
   if (l == "heidenhain" || l == "klartext" || l == "tnc") return out = Target::Heidenhain, true;
   if (l == "apt") return out = Target::Apt, true;
   if (l == "cldata" || l == "adem") return out = Target::Adem, true;
+  // Seed 003 documents the NC-100, NC-110, NC-200 and NC-210 together: one language, whose
+  // features differ by software version only (docs/EMIT.md "NC-200").
+  for (const char *n : {"nc200", "nc210", "nc110", "nc100", "nc-200", "nc-210", "nc-110", "nc-100"})
+    if (l == n) return out = Target::Nc200, true;
   return false;
 }
 
 const char *targetName(Target t) {
-  static const char *const kNames[] = {"iso", "sinumerik", "heidenhain", "apt", "adem"};
+  static const char *const kNames[] = {"iso", "sinumerik", "heidenhain", "apt", "adem", "nc200"};
   return kNames[(size_t)t];
 }
 

@@ -15,11 +15,12 @@
 
 namespace ncc::emit {
 
-// Word-address (ISO, Sinumerik), Klartext (Heidenhain) and CL records (APT CL text, ADEM CLData).
-enum class Target { ISO, Sinumerik, Heidenhain, Apt, Adem };
+// Word-address (ISO, Sinumerik, Balt-System NC-200), Klartext (Heidenhain) and CL records (APT CL
+// text, ADEM CLData). NC-200 has no front end in ncc: its output cannot be verified (docs/EMIT.md).
+enum class Target { ISO, Sinumerik, Heidenhain, Apt, Adem, Nc200 };
 
-// Accepts "iso" / "fanuc", "sinumerik" / "siemens", "heidenhain" / "klartext" / "tnc", "apt" and
-// "cldata" / "adem" (any case). Returns false otherwise. targetName gives the dialect name the
+// Accepts "iso" / "fanuc", "sinumerik" / "siemens", "heidenhain" / "klartext" / "tnc", "apt",
+// "cldata" / "adem" and "nc200" / "nc210" / "nc110" / "nc100" (one language, seed 003; any case). Returns false otherwise. targetName gives the dialect name the
 // target's front end reads (--verify).
 bool targetFromName(std::string_view name, Target &out);
 const char *targetName(Target t);

@@ -34,10 +34,18 @@ const FrameCodes kIsoCodes{{nullptr, "G54", "G55", "G56", "G57", "G58", "G59", "
 const FrameCodes kSinumerikCodes{{"G500", "G54", "G55", "G56", "G57", "G505", "G506", "G507", "G508", "G509"},
                                  "TRANS", false, "", "D", "D0"};
 
+// NC-200: origin n by (UAO,n) (seed 003 L1572, L1609-1611), (UAO,0) the zero origin; the
+// machine's [offsets] g54… are its origins 1…9. Seed 003 shows no local shift and no tool length
+// code (T.x is tool and offset, whose values it does not give): both stay in the positions.
+const FrameCodes kNc200Codes{{"(UAO,0)", "(UAO,1)", "(UAO,2)", "(UAO,3)", "(UAO,4)", "(UAO,5)", "(UAO,6)", "(UAO,7)",
+                              "(UAO,8)", "(UAO,9)"},
+                             nullptr, false, nullptr, nullptr, nullptr};
+
 // A target without these codes: everything stays in the positions (machine coordinates).
 const FrameCodes *frameCodes(Target t) {
   if (t == Target::ISO) return &kIsoCodes;
   if (t == Target::Sinumerik) return &kSinumerikCodes;
+  if (t == Target::Nc200) return &kNc200Codes;
   return nullptr;
 }
 
@@ -192,7 +200,7 @@ void Emitter::syncFrame(const MotionRecord &r) {
     for (int i = 0; i < 3; ++i) {
       double want = m[i * 4 + 3] - offset[i];
       if (near(want, 0) || !machine_.axes[i].present) continue;
-      if (st_.lathe) {  // lathes: no local shift written (the turning G52 is not read back yet)
+      if (st_.lathe || !codes->shift) {  // lathes: no local shift written (the turning G52 is not read back yet)
         baked.push_back("the shift of the work offset");
         shift = {};
         break;
@@ -207,7 +215,7 @@ void Emitter::syncFrame(const MotionRecord &r) {
     }
   // Tool length compensation: written when the target addresses the same length.
   int toolWord = 0;
-  if (st_.lathe || src_.toolX != 0 || src_.toolY != 0) {
+  if (st_.lathe || !codes->lengthOff || src_.toolX != 0 || src_.toolY != 0) {
     if (src_.toolZ != 0 || src_.toolX != 0 || src_.toolY != 0) baked.push_back(st_.lathe ? "the tool offsets" : "the tool length");
   } else if (st_.target == Target::ISO) {
     double length;

@@ -145,6 +145,7 @@ private:
   void move(const MotionRecord &r);
   void arc(const MotionRecord &r);
   void arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull);
+  void arcPieces(const MotionRecord &r, int turns, bool sourceFull);
   // Why this output cannot write the spline exactly (empty: it can, as LinuxCNC G5.2/G5.3).
   std::string splineRefusal(const MotionRecord &r) const;
   void spindleOrient(const MotionRecord &r);
@@ -162,6 +163,9 @@ private:
   std::string threadRefusal(const MotionRecord &r) const;
   void thread(const MotionRecord &r);
   void latheThreadWords(const MotionRecord &r, Words &w);
+  // NC-200 G34 (Nc200Thread.cpp).
+  std::string nc200ThreadRefusal(const MotionRecord &r) const;
+  void nc200Thread(const MotionRecord &r);
   // Probe records (EmitterProbe.cpp): why this output cannot write one (empty: it can).
   std::string probeRefusal(const MotionRecord &r) const;
   void probe(const MotionRecord &r);

@@ -12,7 +12,7 @@ std::string Emitter::probeRefusal(const MotionRecord &r) const {
     return r.probe().missIsError ? "Sinumerik's MEAS raises no alarm when the probe does not switch: a probe that must "
                                    "trip (G38.2, G38.4) has no block of its own"
                                  : "";
-  if (machine_.controller.family != "linuxcnc")
+  if (st_.target != Target::ISO || machine_.controller.family != "linuxcnc")
     return "probing is written for LinuxCNC (G38.2-G38.5: an ISO target of [controller] family \"linuxcnc\") and "
            "Sinumerik (MEAS) only";
   return {};

@@ -10,6 +10,7 @@ namespace ncc::emit::detail {
 // J Y, K Z), SF= the start angle; it runs consecutive G33 blocks as one thread; a rigid tap is
 // G331 in and G332 out with the lead on the tool axis' address, after an SPOS.
 std::string Emitter::threadRefusal(const MotionRecord &r) const {
+  if (st_.target == Target::Nc200) return nc200ThreadRefusal(r);
   if (latheIso()) {  // the 808D/Fanuc lathe's G32 (system B G33)
     if (r.sync == ThreadSync::TapIn || r.sync == ThreadSync::TapOut) return "rigid tapping is not written for lathes";
     return {};
@@ -34,6 +35,7 @@ std::string Emitter::threadRefusal(const MotionRecord &r) const {
 void Emitter::thread(const MotionRecord &r) {
   flushPending();
   ensurePosition(r);
+  if (st_.target == Target::Nc200) return nc200Thread(r);
   const bool sin = st_.target == Target::Sinumerik;
   if (r.sync == ThreadSync::TapOut && !sin) {  // G33.1 has already come back: only the position follows
     notePosition(r.end, 3);
@@ -110,7 +112,7 @@ void Emitter::spindleOrient(const MotionRecord &r) {
                r.blockNumber);
     return;
   }
-  if (machine_.controller.family != "linuxcnc") {
+  if (st_.target != Target::ISO || machine_.controller.family != "linuxcnc") {
     diags_.error(r.loc,
                  "the [" + st_.section + "] emitter writes an oriented spindle stop at an angle only for LinuxCNC "
                  "(M19 R P; Fanuc's M19 turns to a parameter angle): " + printMotionRecord(r),
@@ -143,7 +145,7 @@ void Emitter::spindleMode(const MotionRecord &r) {
   const bool linuxcnc = st_.target == Target::ISO && machine_.controller.family == "linuxcnc";
   const bool latheIso = this->latheIso();
   if (css && !linuxcnc && !latheIso && st_.target != Target::Sinumerik)
-    return refuse("writes constant surface speed (G96) only for LinuxCNC, Sinumerik and lathes");
+    return refuse("writes constant surface speed (G96) only for LinuxCNC, Sinumerik and ISO lathes");
   if (css && std::fabs(r.value2) > 1e-9)
     return refuse("writes positions whose X0 is not the spindle axis constant surface speed measures from "
                   "(it is at written X" + std::to_string(r.value2) + ": a tool X offset or frame kept in the positions)");

@@ -610,8 +610,9 @@ namespace ncc::emit {
 
 bool writeStructured(const ir::Module &m, const StructuredOptions &opts, std::vector<StructuredFile> &files,
                      Diagnostics &diags) {
-  if (opts.target == Target::Heidenhain) {
-    diags.error({}, "structure-keeping translation writes ISO and Sinumerik programs; translate to heidenhain without --keep-structure",
+  if (opts.target != Target::ISO && opts.target != Target::Sinumerik) {
+    diags.error({}, fmt::format("structure-keeping translation writes ISO and Sinumerik programs; translate to {} without "
+                                "--keep-structure", targetName(opts.target)),
                 "unsupported-code");
     return false;
   }

@@ -305,7 +305,7 @@ TEST(Machine, ErrorsAreLocated) {
       {b + "[[tools]]\nnumber = 1\nedges = [{ d = 1, lenght = 3 }]\n",
        "m.toml:7:19: error: unknown key 'lenght' in edge"},
       {b + "[emit.fanuc]\nx = 1\n",
-       "m.toml:5:7: error: unknown emitter 'fanuc' in [emit] (iso, sinumerik, heidenhain)"},
+       "m.toml:5:7: error: unknown emitter 'fanuc' in [emit] (iso, sinumerik, heidenhain, nc200)"},
       {b + "[axes.Q]\n",
        "m.toml:5:7: error: axis 'Q': the machine axes are X Y Z A B C U V W (name them with 'name')"},
       {b + "[axes.x]\n",

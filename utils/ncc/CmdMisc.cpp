@@ -63,7 +63,7 @@ int cmdMachine(int argc, char **argv) {
     if (!s.loadMachine(check, m)) return kExitErrors;
     // The [emit.*] values as the emitters will read them (translate reports the same).
     bool ok = true;
-    for (emit::Target t : {emit::Target::ISO, emit::Target::Sinumerik}) {
+    for (emit::Target t : {emit::Target::ISO, emit::Target::Sinumerik, emit::Target::Nc200}) {
       emit::ControllerStyle style = emit::defaultStyle(t);
       ok = emit::applyMachineSection(m, style, s.diags) && ok;
     }

@@ -26,7 +26,7 @@ int cmdTranslate(int argc, char **argv) {
   po::options_description desc("ncc translate options");
   desc.add_options()
       ("file", po::value(&file)->required(), "program to translate")
-      ("to", po::value(&to)->required(), "target: iso|sinumerik|heidenhain, or CL records apt|cldata (ADEM)")
+      ("to", po::value(&to)->required(), "target: iso|sinumerik|heidenhain|nc200, or CL records apt|cldata (ADEM)")
       ("binary", po::bool_switch(&binary), "with --to=cldata: the binary record file (8-byte cells) instead of the listing")
       ("output,o", po::value(&out), "output file (default: standard output)")
       ("verify", po::bool_switch(&verify), "run source and output through the motion pipeline; fail if the paths differ")
@@ -40,15 +40,20 @@ int cmdTranslate(int argc, char **argv) {
   po::positional_options_description pos;
   pos.add("file", 1);
   po::variables_map vm;
-  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik|heidenhain|apt|cldata [--binary] [-o OUT] [--verify] [--keep-structure]");
+  int rc = parseArgs(argc, argv, desc, pos, vm, "ncc translate FILE --to=iso|sinumerik|heidenhain|nc200|apt|cldata [--binary] [-o OUT] [--verify] [--keep-structure]");
   if (rc >= 0) return rc;
   emit::EmitOptions eo;
   if (!emit::targetFromName(to, eo.target)) {
-    std::fprintf(stderr, "ncc: error: unknown target '%s' (expected iso, sinumerik, heidenhain, apt or cldata)\n", to.c_str());
+    std::fprintf(stderr, "ncc: error: unknown target '%s' (expected iso, sinumerik, heidenhain, nc200, apt or cldata)\n", to.c_str());
     return kExitUsage;
   }
   if (binary && eo.target != emit::Target::Adem) {
     std::fprintf(stderr, "ncc: error: --binary needs --to=cldata (only ADEM CLData has a binary form)\n");
+    return kExitUsage;
+  }
+  if (verify && eo.target == emit::Target::Nc200) {
+    // No NC-200 front end: the output cannot be run back (its header says it is unverified).
+    std::fprintf(stderr, "ncc: error: --verify cannot read an NC-200 program back (ncc has no NC-200 front end)\n");
     return kExitUsage;
   }
   eo.binary = binary;
