@@ -168,7 +168,7 @@ bool cycle431(ProbeCall &c) {
   static const char *const kPoint[3][3] = {{"Q263", "Q264", "Q294"}, {"Q265", "Q266", "Q295"}, {"Q296", "Q297", "Q298"}};
   for (int k = 0; k < 3; ++k) {
     std::string s = std::to_string(k + 1);
-    g.probeAxis(s, g.p(kPoint[k][0]), g.p(kPoint[k][1]), g.p(kPoint[k][2]));
+    g.probeAxis(s, g.p(kPoint[k][0]), g.p(kPoint[k][1]), g.p(kPoint[k][2]), k == 0);
     g.toClearance();
     g.setQ(173 + k, g.v("MZ" + s));
   }

@@ -117,9 +117,9 @@ void Gen::probePlane(const std::string &k) {
   set("MY" + k, add(sys("_probe_y"), mul(v("R"), v("DY" + k))));
   rapidBack(v("PX" + k), v("PY" + k), sys("_z"));
 }
-void Gen::probeAxis(const std::string &k, E x, E y, E z) {
+void Gen::probeAxis(const std::string &k, E x, E y, E z, bool first) {
   set("PZ" + k, add(std::move(z), v("CLR")));
-  approach(std::move(x), std::move(y), v("PZ" + k));
+  approach(std::move(x), std::move(y), v("PZ" + k), first);
   feed(n(c_.table.feed));
   motion("probe_toward");
   Op mv(OpKind::Move, c_.loc);

@@ -76,8 +76,9 @@ public:
   void prePoint(const std::string &k, E ex, E ey, E dx, E dy);
   void fromPoint(const std::string &k, E px, E py, E dx, E dy);
   void probePlane(const std::string &k);
-  // Probing down the probe axis at (x, y) onto the nominal surface z: MZk is the south pole's Z.
-  void probeAxis(const std::string &k, E x, E y, E z);
+  // Probing down the probe axis at (x, y) onto the nominal surface z: MZk is the south pole's Z;
+  // the way there is the pre-positioning (`first`) or at FMAX.
+  void probeAxis(const std::string &k, E x, E y, E z, bool first = true);
   // To the start of point k from the one before: at the measuring height or over the clearance
   // height; on an arc about (cx, cy) when arcCcw is given (its value: counter-clockwise).
   void between(const std::string &k, bool viaClearance, E arcCcw = nullptr, const char *cx = nullptr,
