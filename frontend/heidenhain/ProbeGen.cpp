@@ -89,6 +89,21 @@ bool cycle404(ProbeCall &c) {
   return true;
 }
 
+// 441 FAST PROBING (L23876-L23957): no motion; the following probe cycles of the run position at
+// Q396 instead of the table's FMAX (0: FMAX [model]) and pre-position at machine rapid (Q397=1)
+// or at Q396 (0). Q399 (orient the probe before each probing) and Q400 (stop and show the
+// results) change no path: read and not simulated. END PGM, M2, M30 reset it (L23887): the end of
+// the run [model: an END PGM of a called program does not].
+bool cycle441(ProbeCall &c) {
+  Gen g(c);
+  for (auto &[q, e] : c.given) g.set(q, e->clone());
+  g.abortIf(bin(OpCode::Lt, g.p("Q396"), n(0)), "TCH PROBE 441: Q396 (the positioning feed) is 0 to 99999.999 (L23905)");
+  g.abortIf(bin(OpCode::And, ne(g.p("Q397"), 0), ne(g.p("Q397"), 1)), "TCH PROBE 441: Q397 must be 0 or 1 (L23909)");
+  g.set("F441", g.p("Q396"));
+  g.set("P441", add(g.p("Q397"), n(1)));
+  return true;
+}
+
 const ProbeCycle kProbeCycles[] = {
     {400, "Q263 Q264 Q265 Q266 Q272 Q267 Q261 Q320 Q260 Q301 Q307 Q305", "", cycle400},
     {401, "Q268 Q269 Q270 Q271 Q261 Q260 Q307 Q305 Q402 Q337", "Q402=0 Q337=0", cycle401},
@@ -130,6 +145,7 @@ const ProbeCycle kProbeCycles[] = {
     {430, "Q273 Q274 Q262 Q291 Q292 Q293 Q261 Q260 Q288 Q289 Q279 Q280 Q281 Q309 Q330",
      "Q288=0 Q289=0 Q279=0 Q280=0 Q281=0 Q309=0 Q330=0", cycle430},
     {431, "Q263 Q264 Q294 Q265 Q266 Q295 Q296 Q297 Q298 Q320 Q260 Q281", "Q281=0", cycle431},
+    {441, "Q396 Q397 Q399 Q400", "Q399=0 Q400=0", cycle441},
 };
 }  // namespace
 

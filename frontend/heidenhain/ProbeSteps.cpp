@@ -37,12 +37,18 @@ void Gen::motion(const char *mode) {
   m.set("motion", Expr::symbol(mode));
   emit(std::move(m));
 }
+// Cycle 441 may replace FMAX by its Q396 (the variable F441, 0: not set) and F_PREPOS by its
+// Q397 (P441: 0 not set, 1 at Q396, 2 at machine rapid).
 void Gen::position(E x, E y, E z, bool prepos) {
-  if (prepos && c_.table.preposRapid) {
-    motion("rapid");
-  } else {
-    feed(n(c_.table.fmax));
+  auto atFeed = [&] {
+    feed(add(v("F441"), mul(eq(v("F441"), 0), n(c_.table.fmax))));
     motion("linear");
+  };
+  if (prepos) {
+    E rapid = c_.table.preposRapid ? ne(v("P441"), 1) : eq(v("P441"), 2);
+    when(std::move(rapid), region([&] { motion("rapid"); }), region(atFeed));
+  } else {
+    atFeed();
   }
   Op mv(OpKind::Move, c_.loc);
   if (x) mv.set("X", std::move(x));
