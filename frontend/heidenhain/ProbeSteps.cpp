@@ -215,7 +215,7 @@ bool literalChoice(ProbeCall &c, const char *q, std::initializer_list<int> allow
         return true;
       }
   std::string list;
-  for (int a : allowed) list += (list.empty() ? "" : list.size() < 3 ? " or " : ", ") + std::to_string(a);
+  for (int a : allowed) list += (list.empty() ? "" : ", ") + std::to_string(a);
   size_t last = list.rfind(", ");
   if (last != std::string::npos) list.replace(last, 2, " or ");
   return c.error(fmt::format("TCH PROBE {}: {} ({}) must be the number {}", c.number, q, what, list), "cycle-parameter");
