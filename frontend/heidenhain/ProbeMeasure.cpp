@@ -81,7 +81,7 @@ bool cycle420(ProbeCall &c) {
   int axis;
   if (!literalChoice(c, "Q272", {1, 2, 3}, "the measuring axis", axis)) return false;
   if (axis == 3)
-    return c.error("TCH PROBE 420 with Q272=3 (the angle in the probe axis, L20934) is not simulated yet",
+    return c.error("TCH PROBE 420 with Q272=3 (the angle in the probe axis, L20971) is not simulated yet",
                    "unsupported-code");
   g.begin();
   measuringOptions(g, false);
