@@ -548,6 +548,14 @@ TEST(CanonTrace, Fixed4EqualsPrintf) {
                          999999999.99995, 1e13, 7e13, 7.1e13, 1e14, 1e15, 1e20, 1e300, -1e300,
                          1.7976931348623157e308, INFINITY, -INFINITY, NAN, -NAN};
   for (double v : edge) check(v);
+  // Around the fast path's end (|v| * 10^4 < 99999999): the last values it takes and the first
+  // ones the exact path takes, both signs, the tie that rounds up to 10^4 among them.
+  for (double base : {9999.9999, 9999.99985, 9999.99995, 9999.9998, 10000.0}) {
+    double v = base;
+    for (int i = 0; i < 64; ++i, v = std::nextafter(v, INFINITY)) check(v), check(-v);
+    v = base;
+    for (int i = 0; i < 64; ++i, v = std::nextafter(v, 0.0)) check(v), check(-v);
+  }
   for (int k = -1074; k < 1024; ++k) {  // every power of two, its neighbours, 1.5 times it
     double v = std::ldexp(1.0, k);
     for (double w : {v, -v, std::nextafter(v, 0.0), std::nextafter(v, INFINITY), 1.5 * v}) check(w);
