@@ -24,6 +24,17 @@ constexpr const char *kPlaneNames[] = {"CANON_PLANE_XY", "CANON_PLANE_XZ", "CANO
 constexpr char kStraightNames[2][24] = {"STRAIGHT_FEED(", "STRAIGHT_TRAVERSE("};
 constexpr size_t kStraightLen[2] = {14, 18};
 
+// writtenAxes of one straight move's end on the bits: U V W all +0 or -0 is the usual case.
+int straightAxes(const AxisVec &v) {
+  uint64_t any = 0;
+  for (int i = kBaseAxes; i < kAxes; ++i) {
+    uint64_t bits;
+    std::memcpy(&bits, &v[i], sizeof bits);
+    any |= bits << 1;  // the sign bit shifted out: -0 counts as 0, as != 0 does
+  }
+  return any ? kAxes : kBaseAxes;
+}
+
 char *put(char *p, std::string_view s) {
   std::memcpy(p, s.data(), s.size());
   return p + s.size();
@@ -200,7 +211,7 @@ void CanonTraceWriter::record(const MotionRecord &r) {
   const bool rapid = r.kind == RecordKind::Rapid;
   char *p = begin(r.blockNumber, kMoveMax);  // room for the whole copy
   std::memcpy(p, kStraightNames[rapid], sizeof kStraightNames[rapid]);
-  p = axes(p + kStraightLen[rapid], r.end.data(), writtenAxes({&r.end}));
+  p = axes(p + kStraightLen[rapid], r.end.data(), straightAxes(r.end));
   *p++ = ')';
   end(p);
 }

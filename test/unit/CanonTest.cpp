@@ -573,3 +573,21 @@ TEST(CanonTrace, Fixed4EqualsPrintf) {
     check((double)(int64_t)(g() % 2000001 - 1000000) / 32.0);  // exact binary ties
   }
 }
+
+// A straight move writes U V W only when one of them is not zero (rs274's nine-axis form): -0
+// counts as zero, the smallest subnormal and NaN do not (record()'s own path, after the first line).
+TEST(CanonTrace, StraightMoveWritesUvwWhenNotZero) {
+  auto line = [](double u) {
+    MotionRecord r = rec(RecordKind::Linear);
+    r.end[0] = 1.5;
+    r.end[kBaseAxes + 1] = u;
+    std::string t = writeTrace({rec(RecordKind::Rapid), r});  // the first one starts the trace
+    size_t at = t.find("STRAIGHT_FEED(");
+    return at == std::string::npos ? t : t.substr(at, t.find('\n', at) - at);
+  };
+  EXPECT_EQ(line(0.0), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  EXPECT_EQ(line(-0.0), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  EXPECT_EQ(line(5e-324), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  EXPECT_EQ(line(-2.0), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, -2.0000, 0.0000)");
+  EXPECT_EQ(line(NAN), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, nan, 0.0000)");
+}
