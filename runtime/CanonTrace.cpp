@@ -20,6 +20,21 @@ constexpr size_t kMoveMax = 64 + 9 * (kFixed4Max + 2);
 constexpr int kArcAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
 constexpr const char *kPlaneNames[] = {"CANON_PLANE_XY", "CANON_PLANE_XZ", "CANON_PLANE_YZ"};
 
+// The straight moves' names, padded so that record() copies them 24 bytes at a time.
+constexpr char kStraightNames[2][24] = {"STRAIGHT_FEED(", "STRAIGHT_TRAVERSE("};
+constexpr size_t kStraightLen[2] = {14, 18};
+
+// writtenAxes of one straight move's end on the bits: U V W all +0 or -0 is the usual case.
+int straightAxes(const AxisVec &v) {
+  uint64_t any = 0;
+  for (int i = kBaseAxes; i < kAxes; ++i) {
+    uint64_t bits;
+    std::memcpy(&bits, &v[i], sizeof bits);
+    any |= bits << 1;  // the sign bit shifted out: -0 counts as 0, as != 0 does
+  }
+  return any ? kAxes : kBaseAxes;
+}
+
 char *put(char *p, std::string_view s) {
   std::memcpy(p, s.data(), s.size());
   return p + s.size();
@@ -193,8 +208,10 @@ void CanonTraceWriter::thread(const MotionRecord &r) {
 // general dispatch below: nothing to stop, start or re-enable before or after it.
 void CanonTraceWriter::record(const MotionRecord &r) {
   if (r.kind > RecordKind::Linear || !started_ || finished_ || halted_ || sync_ || enableAfterMove_) return other(r);
-  char *p = put(begin(r.blockNumber, kMoveMax), r.kind == RecordKind::Rapid ? "STRAIGHT_TRAVERSE(" : "STRAIGHT_FEED(");
-  p = axes(p, r.end.data(), writtenAxes({&r.end}));
+  const bool rapid = r.kind == RecordKind::Rapid;
+  char *p = begin(r.blockNumber, kMoveMax);  // room for the whole copy
+  std::memcpy(p, kStraightNames[rapid], sizeof kStraightNames[rapid]);
+  p = axes(p + kStraightLen[rapid], r.end.data(), straightAxes(r.end));
   *p++ = ')';
   end(p);
 }

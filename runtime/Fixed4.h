@@ -35,19 +35,25 @@ inline char *pair(char *p, unsigned v) {
   return pair(pair(p + 1, f / 100), f % 100);
 }
 
-// Writes the sign and q / 10^4 with four decimals at p, returns the end.
-inline char *digits(char *p, bool negative, uint64_t q) {
+// Writes the sign and q / 10^4 with four decimals at p for q < 10^8 (|v| < 10^4, the usual
+// case: 32-bit arithmetic, at most four integer digits), returns the end.
+inline char *digitsSmall(char *p, bool negative, uint32_t q) {
   *p = '-';
   p += negative;
-  if (q >= 100000000) return digitsLarge(p, q);
-  // |v| < 10^4, the usual case: 32-bit arithmetic, at most four integer digits.
-  const uint32_t q32 = uint32_t(q), ip = q32 / 10000, f = q32 % 10000;
+  const uint32_t ip = q / 10000, f = q % 10000;
   if (ip < 10) *p++ = char('0' + ip);
   else if (ip < 100) p = pair(p, ip);
   else if (ip < 1000) *p = char('0' + ip / 100), p = pair(p + 1, ip % 100);
   else p = pair(pair(p, ip / 100), ip % 100);
   *p = '.';
   return pair(pair(p + 1, f / 100), f % 100);
+}
+
+// Writes the sign and q / 10^4 with four decimals at p, returns the end.
+inline char *digits(char *p, bool negative, uint64_t q) {
+  if (q < 100000000) return digitsSmall(p, negative, uint32_t(q));
+  *p = '-';
+  return digitsLarge(p + negative, q);
 }
 
 // round(|v| * 10^4), ties to even, exactly, for |v| < 2^46: v * 10^4 = m * 5^4 * 2^(e+4) with
@@ -75,10 +81,11 @@ inline char *formatFixed4(char *p, double v) {
   // |v| < 10^4, the usual case: |v| * 10^4 in double rounds to the integer the exact product
   // rounds to unless it lies within 0.0001 of a tie (the multiplication is monotonic and the
   // tie, an integer + 0.5, is a double), so near ties the exact path below decides.
+  // Below 99999999 the rounded integer is below 10^8 too, and converts as a 32-bit one.
   const double a = std::fabs(v) * 1e4;
-  if (a < 1e8) {
+  if (a < 99999999.0) {
     const double r = (a + 0x1p52) - 0x1p52;  // a rounded to an integer (ties to even)
-    if (std::fabs(a - r) < 0.4999) return fixed4detail::digits(p, negative, uint64_t(r));
+    if (std::fabs(a - r) < 0.4999) return fixed4detail::digitsSmall(p, negative, uint32_t(int32_t(r)));
   }
   if ((int(bits >> 52) & 0x7ff) >= 1023 + 46) {  // |v| >= 2^46, inf, nan: to_chars rounds like printf
     auto res = std::to_chars(p, p + kFixed4Max, v, std::chars_format::fixed, 4);

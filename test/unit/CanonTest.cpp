@@ -548,6 +548,14 @@ TEST(CanonTrace, Fixed4EqualsPrintf) {
                          999999999.99995, 1e13, 7e13, 7.1e13, 1e14, 1e15, 1e20, 1e300, -1e300,
                          1.7976931348623157e308, INFINITY, -INFINITY, NAN, -NAN};
   for (double v : edge) check(v);
+  // Around the fast path's end (|v| * 10^4 < 99999999): the last values it takes and the first
+  // ones the exact path takes, both signs, the tie that rounds up to 10^4 among them.
+  for (double base : {9999.9999, 9999.99985, 9999.99995, 9999.9998, 10000.0}) {
+    double v = base;
+    for (int i = 0; i < 64; ++i, v = std::nextafter(v, INFINITY)) check(v), check(-v);
+    v = base;
+    for (int i = 0; i < 64; ++i, v = std::nextafter(v, 0.0)) check(v), check(-v);
+  }
   for (int k = -1074; k < 1024; ++k) {  // every power of two, its neighbours, 1.5 times it
     double v = std::ldexp(1.0, k);
     for (double w : {v, -v, std::nextafter(v, 0.0), std::nextafter(v, INFINITY), 1.5 * v}) check(w);
@@ -564,4 +572,22 @@ TEST(CanonTrace, Fixed4EqualsPrintf) {
     check(v);
     check((double)(int64_t)(g() % 2000001 - 1000000) / 32.0);  // exact binary ties
   }
+}
+
+// A straight move writes U V W only when one of them is not zero (rs274's nine-axis form): -0
+// counts as zero, the smallest subnormal and NaN do not (record()'s own path, after the first line).
+TEST(CanonTrace, StraightMoveWritesUvwWhenNotZero) {
+  auto line = [](double u) {
+    MotionRecord r = rec(RecordKind::Linear);
+    r.end[0] = 1.5;
+    r.end[kBaseAxes + 1] = u;
+    std::string t = writeTrace({rec(RecordKind::Rapid), r});  // the first one starts the trace
+    size_t at = t.find("STRAIGHT_FEED(");
+    return at == std::string::npos ? t : t.substr(at, t.find('\n', at) - at);
+  };
+  EXPECT_EQ(line(0.0), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  EXPECT_EQ(line(-0.0), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  EXPECT_EQ(line(5e-324), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)");
+  EXPECT_EQ(line(-2.0), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, -2.0000, 0.0000)");
+  EXPECT_EQ(line(NAN), "STRAIGHT_FEED(1.5000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000, nan, 0.0000)");
 }
