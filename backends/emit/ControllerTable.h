@@ -31,6 +31,9 @@ enum class HelixTurns : uint8_t { Word, Split };
 enum class CommentStyle : uint8_t { Paren, Semicolon };
 enum class MessageStyle : uint8_t { ParenMsg, MsgCall };
 enum class Numbering : uint8_t { Off, Renumber, Source };
+// Rapid moves along several axes (seed 004 §3.3 "Motions"): all together, or the plane's two
+// axes together and the third one on its own (xy_then_z: X Y together, Z alone).
+enum class RapidSplit : uint8_t { Together, XYThenZ, XZThenY, ZYThenX };
 
 struct ControllerStyle {
   Target target = Target::ISO;
@@ -75,6 +78,16 @@ struct ControllerStyle {
   double xScale = 1;
   std::string threadCode;       // ISO lathe: G32 (system A) / G33 (B)
   std::string speedLimitCode;   // ISO lathe: G50 (A) / G92 (B), with S
+
+  // Passport rules of the motions and interpolators (seed 004 §3.3 items 5-6; docs/EMIT.md
+  // "Passport"). Each changes the blocks, never the path: a split move ends where the source's
+  // did and its pieces lie on the source's line or arc; what cannot be written exactly is refused.
+  std::array<double, 3> maxIncrement{};  // X Y Z: longer straight moves become equal parts; 0 = unlimited
+  RapidSplit rapidSplit = RapidSplit::Together;
+  bool arcs = true;              // the circular interpolator exists (else every arc is refused)
+  bool arcQuadrants = false;     // an arc crossing a quadrant boundary is split there
+  double maxArcRadius = 0;       // larger arcs are refused; 0 = unlimited
+  bool motionModal = true;       // G0/G1/G2/G3 only when it changes (the passport's modal flag)
 };
 
 // Defaults of a controller (before the machine description is applied).
