@@ -24,6 +24,62 @@ static double linearDistance(const MotionRecord &r) {
   return std::sqrt(d2);
 }
 
+// In-plane axes of an untilted arc's plane (counter-clockwise from the first to the second).
+static void arcAxes(Plane p, int &a, int &b) {
+  static const int kAxesOf[3][2] = {{0, 1}, {2, 0}, {1, 2}};
+  a = kAxesOf[(int)p][0];
+  b = kAxesOf[(int)p][1];
+}
+
+// Angle an untilted arc sweeps, counting its full turns.
+static double arcSweep(const MotionRecord &r) {
+  int a, b;
+  arcAxes(r.plane, a, b);
+  const double twoPi = 2 * 3.14159265358979323846;
+  double as = std::atan2(r.start[b] - r.center[b], r.start[a] - r.center[a]);
+  double ae = std::atan2(r.end[b] - r.center[b], r.end[a] - r.center[a]);
+  double d = r.turns >= 0 ? ae - as : as - ae;
+  while (d <= 1e-12) d += twoPi;
+  int n = r.turns == 0 ? 1 : std::abs(r.turns);
+  return (n - 1) * twoPi + d;
+}
+
+// y is a piece of x that ends before x does: on x's segment (a straight move in parts), inside
+// x's box (rapid legs), or on x's circle in x's direction (an arc in parts).
+static bool isPieceOf(const MotionRecord &x, const MotionRecord &y, const PathCompareOptions &opts, double *along = nullptr) {
+  if (x.kind != y.kind) return false;
+  if (opts.compareFeed && x.kind != RecordKind::Rapid && std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
+    return false;
+  const double tol = opts.tolerance;
+  if (x.kind == RecordKind::Rapid && opts.rapidLegs) {
+    for (int k = 0; k < kAxes; ++k)
+      if (y.end[k] < std::min(x.start[k], x.end[k]) - tol || y.end[k] > std::max(x.start[k], x.end[k]) + tol) return false;
+    return true;
+  }
+  if (x.kind == RecordKind::Rapid || x.kind == RecordKind::Linear) {
+    double len2 = 0, t = 0;
+    for (int k = 0; k < kAxes; ++k) {
+      double d = x.end[k] - x.start[k];
+      len2 += d * d;
+      t += (y.end[k] - x.start[k]) * d;
+    }
+    if (len2 <= 0) return false;
+    t /= len2;
+    if (t <= 0 || t >= 1) return false;
+    for (int k = 0; k < kAxes; ++k)
+      if (std::fabs(x.start[k] + (x.end[k] - x.start[k]) * t - y.end[k]) > tol) return false;
+    if (along) *along = t;
+    return true;
+  }
+  if (x.kind != RecordKind::Arc || x.tiltedArc() || y.tiltedArc() || x.plane != y.plane || (x.turns >= 0) != (y.turns >= 0))
+    return false;
+  int a, b;
+  arcAxes(x.plane, a, b);
+  if (std::fabs(x.center[a] - y.center[a]) > tol || std::fabs(x.center[b] - y.center[b]) > tol) return false;
+  double rx = std::hypot(x.start[a] - x.center[a], x.start[b] - x.center[b]);
+  return std::fabs(std::hypot(y.end[a] - x.center[a], y.end[b] - x.center[b]) - rx) <= tol;
+}
+
 // The machine state a cutting move runs with: the tool in the spindle, the spindle's direction
 // and speed (with its CSS mode), the coolant. Where translators place the commands between two
 // moves is theirs to choose; the state each move runs in is not.
@@ -82,9 +138,29 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
   // compared absolutely, so what skipped moves add up to still counts.
   const double shortMove = 2 * opts.tolerance;
   size_t i = 0, j = 0;
+  double pieceSweep = 0;  // what the pieces of the current arc of `a` have swept so far
+  double pieceAlong = 0;  // how far along the current straight move of `a` its pieces have come (0..1)
   while (i < pa.size() && j < pb.size()) {
     const MotionRecord &x = *pa[i].r, &y = *pb[j].r;
     std::string why;
+    // A piece of a split move runs in the machine state of the move it is part of.
+    bool sameState = !opts.compareState || x.kind == RecordKind::Rapid || pa[i].state.diff(pb[j].state).empty();
+    if (pieceSweep > 0 && x.kind == RecordKind::Arc && sameState && isPieceOf(x, y, opts)) {
+      // The last piece of a split arc: the pieces together sweep what the arc does.
+      double swept = pieceSweep + arcSweep(y), want = arcSweep(x);
+      bool ends = true;
+      for (int k = 0; k < kAxes; ++k) ends &= std::fabs(x.end[k] - y.end[k]) <= opts.tolerance;
+      if (ends && std::fabs(swept - want) < 1e-6) {
+        pieceSweep = 0;
+        ++i, ++j;
+        continue;
+      }
+      if (swept < want - 1e-9 && !ends) {
+        pieceSweep = swept;
+        ++j;
+        continue;
+      }
+    }
     if (x.kind != y.kind) why = "kinds differ";
     for (int k = 0; k < kAxes && why.empty(); ++k)
       if (std::fabs(x.end[k] - y.end[k]) > opts.tolerance) why = fmt::format("end points differ in {}", kAxisLetters[k]);
@@ -138,7 +214,20 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
       why = "feeds differ";
     if (why.empty() && opts.compareState && x.kind != RecordKind::Rapid) why = pa[i].state.diff(pb[j].state);
-    if (why.empty()) { ++i, ++j; continue; }
+        if (why.empty()) { ++i, ++j, pieceSweep = pieceAlong = 0; continue; }
+    double along = 0;
+    if (pieceSweep == 0 && sameState && isPieceOf(x, y, opts, &along)) {
+      // A piece of a split move: the rest follow on the same line (forwards) or circle.
+      if (x.kind == RecordKind::Arc) {
+        pieceSweep = arcSweep(y);
+        if (pieceSweep >= arcSweep(x) - 1e-9) pieceSweep = 0;
+        else { ++j; continue; }
+      } else if (along == 0 || along > pieceAlong) {
+        pieceAlong = along;
+        ++j;
+        continue;
+      }
+    }
     if (isShortMove(x, shortMove)) { ++i; continue; }
     if (isShortMove(y, shortMove)) { ++j; continue; }
     report = fmt::format("paths differ at motion {}: {}\n  first:  {}\n  second: {}", i + 1, why, where(x), where(y));

@@ -533,10 +533,12 @@ void readTools(Ctx &c, const toml::node &n, void *obj) {
 }
 
 // [emit.iso], [emit.sinumerik]: kept as text for the emitters (nested tables become dotted keys).
-void flattenEmit(Ctx &c, const toml::table &t, const std::string &prefix, std::map<std::string, std::string> &out) {
+void flattenEmit(Ctx &c, const toml::table &t, const std::string &prefix, std::map<std::string, std::string> &out,
+                 std::map<std::string, std::pair<uint32_t, uint32_t>> &positions) {
   for (auto &&[k, v] : t) {
     std::string key = prefix + std::string(k.str());
-    if (auto *sub = v.as_table()) flattenEmit(c, *sub, key + ".", out);
+    positions[key] = {v.source().begin.line, v.source().begin.column};
+    if (auto *sub = v.as_table()) flattenEmit(c, *sub, key + ".", out, positions);
     else if (auto *s = v.as_string()) out[key] = **s;
     else if (auto *b = v.as_boolean()) out[key] = **b ? "true" : "false";
     else if (auto *i = v.as_integer()) out[key] = std::to_string(**i);
@@ -551,7 +553,7 @@ void readEmit(Ctx &c, const toml::node &n, void *obj) {
     if (name != "iso" && name != "sinumerik" && name != "heidenhain" && name != "nc200")
       return c.error(k.source(), "unknown emitter '" + name + "' in [emit] (iso, sinumerik, heidenhain, nc200)");
     if (!v.is_table()) return c.error(v.source(), "emit." + name + ": expected a table, got " + typeName(v));
-    flattenEmit(c, *v.as_table(), "", m.sections["emit." + name]);
+    flattenEmit(c, *v.as_table(), "", m.sections["emit." + name], m.sectionPositions["emit." + name]);
   });
 }
 

@@ -212,6 +212,11 @@ struct Machine {
   // The [emit.NAME] tables as text, section "emit.NAME", nested keys dotted ("format.X"), for
   // the emitters, which check their own keys.
   std::map<std::string, std::map<std::string, std::string>> sections;
+  // Where each of those values stands in the file (line, column; keys as in `sections`), and the
+  // SourceManager id the driver registered the file under (0: none), so that the emitters'
+  // checks of their keys point at the value.
+  std::map<std::string, std::map<std::string, std::pair<uint32_t, uint32_t>>> sectionPositions;
+  uint32_t sourceFile = 0;
   // What the simulated probe meets (the driver's --probe-results, docs/PROBING.md); null: a probe
   // move is an error.
   std::shared_ptr<const ProbeResults> probeResults;

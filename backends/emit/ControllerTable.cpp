@@ -2,6 +2,7 @@
 #include "backends/emit/ControllerTable.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 
@@ -82,6 +83,22 @@ bool parseInt(const std::string &v, int64_t lo, int64_t hi, int64_t &out) {
   return true;
 }
 
+bool parseDouble(const std::string &v, double lo, double hi, double &out) {
+  if (v.empty()) return false;
+  char *end = nullptr;
+  double x = std::strtod(v.c_str(), &end);
+  if (*end || !(x >= lo && x <= hi)) return false;
+  out = x;
+  return true;
+}
+
+// A discrete size 1, 0.1 ... 1e-9 as the decimals it stands for (-1: not a power of ten).
+int discreteDecimals(double d) {
+  for (int k = 0; k <= 9; ++k)
+    if (std::fabs(d - std::pow(10.0, -k)) <= 1e-12 * std::pow(10.0, -k)) return k;
+  return -1;
+}
+
 // "none" (or empty) means no text.
 std::string optText(const std::string &v) { return lower(v) == "none" ? std::string() : v; }
 
@@ -138,6 +155,19 @@ Setter intSetter(int64_t lo, int64_t hi, std::function<void(ControllerStyle &, i
     put(s, x);
     return true;
   };
+}
+
+Setter numberSetter(double lo, double hi, std::function<void(ControllerStyle &, double)> put) {
+  return [lo, hi, put](const std::string &v, ControllerStyle &s) {
+    double x;
+    if (!parseDouble(v, lo, hi, x)) return false;
+    put(s, x);
+    return true;
+  };
+}
+
+Setter boolSetter(bool ControllerStyle::*field) {
+  return [field](const std::string &v, ControllerStyle &s) { return parseBool(v, s.*field); };
 }
 
 const std::vector<KeyDef> &keyTable() {
@@ -199,16 +229,32 @@ const std::vector<KeyDef> &keyTable() {
        intSetter(1, 8, [](ControllerStyle &s, int64_t x) { s.programNumberDigits = (int)x; })},
       {"setup_blocks", "blocks separated by |",
        [](const std::string &v, ControllerStyle &s) { return s.setup = splitBlocks(v), true; }},
+      // The passport's motions and interpolators (seed 004 §3.3 items 5-6).
+      {"max_increment", "a length 0..1e6 mm (0 = unlimited)",
+       numberSetter(0, 1e6, [](ControllerStyle &s, double x) { s.maxIncrement = {x, x, x}; })},
+      {"max_increment.x", "a length 0..1e6 mm (0 = unlimited)",
+       numberSetter(0, 1e6, [](ControllerStyle &s, double x) { s.maxIncrement[0] = x; })},
+      {"max_increment.y", "a length 0..1e6 mm (0 = unlimited)",
+       numberSetter(0, 1e6, [](ControllerStyle &s, double x) { s.maxIncrement[1] = x; })},
+      {"max_increment.z", "a length 0..1e6 mm (0 = unlimited)",
+       numberSetter(0, 1e6, [](ControllerStyle &s, double x) { s.maxIncrement[2] = x; })},
+      {"rapid_split", "xyz, xy_then_z, xz_then_y or zy_then_x",
+       enumSetter(&ControllerStyle::rapidSplit, {"xyz", "xy_then_z", "xz_then_y", "zy_then_x"})},
+      {"arcs", "yes or no", boolSetter(&ControllerStyle::arcs)},
+      {"arc_quadrants", "yes or no", boolSetter(&ControllerStyle::arcQuadrants)},
+      {"max_arc_radius", "a length 0..1e9 mm (0 = unlimited)",
+       numberSetter(0, 1e9, [](ControllerStyle &s, double x) { s.maxArcRadius = x; })},
+      {"motion_modal", "yes or no", boolSetter(&ControllerStyle::motionModal)},
   };
   return table;
 }
 
 // <class>_<property> or <property> (all classes).
-bool applyFormatKey(const std::string &key, const std::string &v, ControllerStyle &s, bool &known) {
-  static const char *const props[] = {"decimals", "trailing_zeros", "point_on_integer",
-                                      "leading_zero", "plus_sign", "max_digits"};
+bool applyFormatKey(const std::string &key, const std::string &v, ControllerStyle &s, bool &known, const char *&expect) {
+  static const char *const props[] = {"decimals",  "trailing_zeros", "point_on_integer", "leading_zero",
+                                      "plus_sign", "max_digits",     "modal",            "discrete"};
   known = false;
-  for (int p = 0; p < 6; ++p) {
+  for (int p = 0; p < 8; ++p) {
     std::string prop = props[p];
     if (key.size() < prop.size() || key.compare(key.size() - prop.size(), prop.size(), prop) != 0) continue;
     std::string prefix = key.substr(0, key.size() - prop.size());
@@ -222,8 +268,20 @@ bool applyFormatKey(const std::string &key, const std::string &v, ControllerStyl
       if (first < 0) continue;
     }
     known = true;
+    static const char *const expects[] = {"decimals 0..9", "yes or no", "yes or no", "yes or no", "yes or no",
+                                          "digits 0..18", "yes or no", "a power of ten 1, 0.1 ... 1e-9 (0 = off)"};
+    expect = expects[p];
     int64_t n = 0;
     bool b = false;
+    if (p == 7) {  // a discrete size: a power of ten, 0 = off (the decimals then stay)
+      double d;
+      if (!parseDouble(v, 0, 1, d) || (d != 0 && discreteDecimals(d) < 0)) return false;
+      for (int c = first; c < last; ++c) {
+        s.formats[c].discrete = d != 0;
+        if (d != 0) s.formats[c].decimals = discreteDecimals(d);
+      }
+      return true;
+    }
     bool isInt = p == 0 || p == 5;
     if (isInt ? !parseInt(v, 0, p == 0 ? 9 : 18, n) : !parseBool(v, b)) return false;
     for (int c = first; c < last; ++c) {
@@ -235,6 +293,7 @@ bool applyFormatKey(const std::string &key, const std::string &v, ControllerStyl
       case 3: f.leadingZero = b; break;
       case 4: f.plusSign = b; break;
       case 5: f.maxIntDigits = (int)n; break;
+      case 6: f.modal = b; break;
       }
     }
     return true;
@@ -342,18 +401,27 @@ bool applyMachineSection(const Machine &m, ControllerStyle &style, Diagnostics &
   auto sec = m.sections.find(style.section);
   if (sec == m.sections.end()) return true;
   bool ok = true;
+  // The value's place in the machine file when the driver registered it (docs/MACHINE.md).
+  auto at = [&](const std::string &rawKey) {
+    auto sp = m.sectionPositions.find(style.section);
+    if (!m.sourceFile || sp == m.sectionPositions.end()) return SourceLoc{};
+    auto p = sp->second.find(rawKey);
+    return p == sp->second.end() ? SourceLoc{} : SourceLoc{m.sourceFile, p->second.first, p->second.second};
+  };
+  std::string rawKey;
   auto bad = [&](const std::string &key, const std::string &value, const char *expect) {
-    diags.error(SourceLoc{}, "machine '" + m.name + "' [" + style.section + "] " + key + " = '" + value +
-                                 "': expected " + expect);
+    diags.error(at(rawKey), "machine '" + m.name + "' [" + style.section + "] " + key + " = '" + value +
+                                "': expected " + expect);
     ok = false;
   };
   // Global number-format keys first so that class keys refine them whatever the file order.
   for (int pass = 0; pass < 2; ++pass) {
-    for (const auto &[rawKey, rawValue] : sec->second) {
+    for (const auto &[fileKey, rawValue] : sec->second) {
+      rawKey = fileKey;
       std::string key = lower(trim(rawKey)), value = trim(rawValue);
       bool isGlobalFormat = false;
       for (const char *p : {"decimals", "trailing_zeros", "point_on_integer", "leading_zero", "plus_sign",
-                            "max_digits"})
+                            "max_digits", "modal", "discrete"})
         if (key == p) isGlobalFormat = true;
       if ((pass == 0) != isGlobalFormat) continue;
 
@@ -385,9 +453,10 @@ bool applyMachineSection(const Machine &m, ControllerStyle &style, Diagnostics &
             else style.formats[(size_t)cls].decimals = (int)n;
           }
       }
-      if (!known && !applyFormatKey(key, value, style, known)) bad(key, value, "a number or yes/no");
+      const char *expect = "";
+      if (!known && !applyFormatKey(key, value, style, known, expect)) bad(key, value, expect);
       if (!known)
-        diags.warning(SourceLoc{}, "machine '" + m.name + "' [" + style.section + "]: unknown key '" + key + "'");
+        diags.warning(at(rawKey), "machine '" + m.name + "' [" + style.section + "]: unknown key '" + key + "'");
     }
   }
   return ok;

@@ -35,6 +35,9 @@ enum class MessageStyle : uint8_t { ParenMsg, MsgCall, Comment };  // Comment: "
 // whatever the axes are called (NC-200, seed 003 L736: `G3 U-10 V0 I0 J0` in the plane U,V).
 enum class CenterStyle : uint8_t { Incremental, AbsolutePlane };
 enum class Numbering : uint8_t { Off, Renumber, Source };
+// Rapid moves along several axes (seed 004 §3.3 "Motions"): all together, or the plane's two
+// axes together and the third one on its own (xy_then_z: X Y together, Z alone).
+enum class RapidSplit : uint8_t { Together, XYThenZ, XZThenY, ZYThenX };
 
 struct ControllerStyle {
   Target target = Target::ISO;
@@ -87,6 +90,15 @@ struct ControllerStyle {
   double maxArcSweep = 0;       // degrees; longer arcs (full circles too) are split into equal pieces (0: never)
   std::string toolSuffix;       // after the tool number: NC-200 ".0" (T5.0: tool 5, offset 0)
   std::string unverifiedNote;   // a header comment that the output was never read back (no front end)
+  // Passport rules of the motions and interpolators (seed 004 §3.3 items 5-6; docs/EMIT.md
+  // "Passport"). Each changes the blocks, never the path: a split move ends where the source's
+  // did and its pieces lie on the source's line or arc; what cannot be written exactly is refused.
+  std::array<double, 3> maxIncrement{};  // X Y Z: longer straight moves become equal parts; 0 = unlimited
+  RapidSplit rapidSplit = RapidSplit::Together;
+  bool arcs = true;              // the circular interpolator exists (else every arc is refused)
+  bool arcQuadrants = false;     // an arc crossing a quadrant boundary is split there
+  double maxArcRadius = 0;       // larger arcs are refused; 0 = unlimited
+  bool motionModal = true;       // G0/G1/G2/G3 only when it changes (the passport's modal flag)
 };
 
 // The Balt-System NC-200 defaults (Nc200Table.cpp, seed 003) and a lathe's changes to them.

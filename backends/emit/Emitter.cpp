@@ -111,7 +111,8 @@ void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r) {
       badNumber(written(i, end[i]), std::string(1, kAxisLetters[i]), r);
       continue;
     }
-    if (digits == posText_[i]) continue;
+    // A non-modal class (the passport's modal flag off) restates every axis the machine has.
+    if (digits == posText_[i] && (fmt(c).modal || !machine_.axes[i].present)) continue;
     posText_[i] = digits;
     pos_[i] = readBack(i, end[i]);
     w.push_back(axisWord(i) + digits);
@@ -128,7 +129,7 @@ std::string Emitter::axisWord(int axis) const {
 
 void Emitter::motionCode(Code c, Words &w) {
   const std::string &g = code(c);
-  if (g == motion_) return;
+  if (g == motion_ && st_.motionModal) return;
   motion_ = g;
   push(w, g);
 }
@@ -141,7 +142,7 @@ void Emitter::feedWord(const MotionRecord &r, Words &w, double lengthMM) {
   if (feedMode_ == 2) f = lengthMM > 1e-9 ? r.feed / lengthMM : 1;
   std::string word;
   if (!number(f, WordClass::Feed, "F", r, word)) return;
-  bool everyBlock = feedMode_ == 2;  // inverse time: F belongs to each block
+  bool everyBlock = feedMode_ == 2 || !fmt(WordClass::Feed).modal;  // inverse time: F belongs to each block
   if (!everyBlock && word == feedText_) return;
   feedText_ = word;
   w.push_back(word);
@@ -155,6 +156,14 @@ void Emitter::planeWord(Plane p, Words &w) {
 }
 
 void Emitter::move(const MotionRecord &r) {
+  std::vector<MotionRecord> parts;
+  for (const MotionRecord &leg : rapidLegs(r)) {
+    if (!incrementParts(leg, parts)) return;
+    for (const MotionRecord &p : parts) moveBlock(p);
+  }
+}
+
+void Emitter::moveBlock(const MotionRecord &r) {
   flushPending();
   ensurePosition(r);
   Words w;
@@ -181,6 +190,7 @@ void Emitter::move(const MotionRecord &r) {
 void Emitter::arc(const MotionRecord &r) {
   flushPending();
   ensurePosition(r);
+  if (st_.arcQuadrants) return quadrantArcs(r);
   int n = r.turns == 0 ? 1 : std::abs(r.turns);
   PlaneAxes pa = planeAxes(r.plane);
   double s[2] = {r.start[pa.a], r.start[pa.b]}, e[2] = {r.end[pa.a], r.end[pa.b]};
@@ -435,7 +445,7 @@ void Emitter::record(const MotionRecord &source) {
       errors_ = true;
       break;
     }
-    arc(r);
+    if (!refused(r, "arc", arcRefusal(r))) arc(r);
     break;
   case RecordKind::Spline:
     // Written exactly (LinuxCNC G5.2/G5.3) or refused, never as chords: those would be a silent

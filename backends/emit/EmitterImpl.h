@@ -143,6 +143,13 @@ private:
   void feedWord(const MotionRecord &r, Words &w, double lengthMM);
   void motionCode(Code c, Words &w);
   void move(const MotionRecord &r);
+  void moveBlock(const MotionRecord &r);
+  // The passport's motion rules (EmitterPassport.cpp, seed 004 §3.3): a rapid in legs, a straight
+  // move in equal parts, an arc refused or split at its quadrant boundaries.
+  std::vector<MotionRecord> rapidLegs(const MotionRecord &r) const;
+  bool incrementParts(const MotionRecord &r, std::vector<MotionRecord> &parts);
+  std::string arcRefusal(const MotionRecord &r) const;
+  void quadrantArcs(const MotionRecord &r);
   void arc(const MotionRecord &r);
   void arcBlock(const MotionRecord &r, const AxisVec &end, int turns, bool sourceFull);
   void arcPieces(const MotionRecord &r, int turns, bool sourceFull);

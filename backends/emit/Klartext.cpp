@@ -530,6 +530,7 @@ std::unique_ptr<ProgramEmitter> makeKlartext(const Machine &m, const EmitOptions
     return nullptr;
   }
   if (!applyMachineSection(m, style, diags)) return nullptr;
+  for (NumberFormat &f : style.formats) f.discrete = false, f.modal = true;  // not Klartext's: warned below
   if (auto sec = m.sections.find(style.section); sec != m.sections.end())
     for (const auto &kv : sec->second)
       if (!kHonoured.count(kv.first) && !formatKey(kv.first))

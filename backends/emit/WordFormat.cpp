@@ -25,6 +25,11 @@ bool formatNumber(double v, const NumberFormat &fmt, std::string &out) {
   uint64_t scale = (uint64_t)kPow10[dec];
   uint64_t ipart = units / scale, fpart = units % scale;
 
+  if (fmt.discrete) {  // the passport's "integer number of discretes": the units themselves
+    ipart = units;
+    fpart = 0;
+    dec = 0;
+  }
   std::string digits = std::to_string(ipart);
   if (fmt.maxIntDigits > 0 && (int)digits.size() > fmt.maxIntDigits) return false;
   std::string frac;
@@ -45,7 +50,7 @@ bool formatNumber(double v, const NumberFormat &fmt, std::string &out) {
   if (!frac.empty()) {
     out += '.';
     out += frac;
-  } else if (fmt.pointOnInteger) {
+  } else if (fmt.pointOnInteger && !fmt.discrete) {
     out += '.';
   }
   return true;

@@ -1,6 +1,6 @@
 // Number and text formatting for NC words, after the window parameters of a postprocessor
 // passport (seed 004 §3.5): decimals, trailing zeros, point on integers, leading zero, plus sign,
-// integer-digit limit and left padding.
+// integer-digit limit, left padding, integer count of discretes and the modal flag.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -16,6 +16,8 @@ struct NumberFormat {
   bool plusSign = false;        // X+12.5
   int maxIntDigits = 0;         // integer digits allowed; 0 = unlimited
   int padDigits = 0;            // left-pad the integer part with zeros (G01, T01)
+  bool discrete = false;        // an integer count of 10^-decimals units, no point: X12500 for 12.5 at 3
+  bool modal = true;            // written only when the formatted value changes
 };
 
 // The value after rounding to fmt.decimals (what the controller will read back).

@@ -113,4 +113,60 @@ TEST(MotionCompare, MachineStateAtEachFeedMove) {
   // A speed written while the spindle stands still does not count; rapids are not compared.
   auto stopped = withState({command(RecordKind::SpindleSpeed, 0, 500)}, moves);
   EXPECT_TRUE(same(moves, stopped));
+
+// A postprocessor passport's split moves (docs/EMIT.md "Passport"): pieces on the source's line,
+// forwards, or on its circle adding up to its sweep, pass; anything else is a difference.
+namespace {
+
+MotionRecord arcRecord(AxisVec start, AxisVec end, double cx, double cy, int turns) {
+  MotionRecord r;
+  r.kind = RecordKind::Arc;
+  r.feed = 100;
+  r.start = start;
+  r.end = end;
+  r.center = {cx, cy, 0};
+  r.turns = turns;
+  return r;
+}
+
+}  // namespace
+
+TEST(MotionCompare, StraightMoveInParts) {
+  EXPECT_TRUE(same(path({{30, 0}}), path({{10, 0}, {20, 0}, {30, 0}})));
+  EXPECT_FALSE(same(path({{30, 0}}), path({{10, 0.01}, {30, 0}})));       // off the line
+  EXPECT_FALSE(same(path({{30, 0}}), path({{20, 0}, {10, 0}, {30, 0}})));  // backwards on it
+}
+
+TEST(MotionCompare, ArcInQuadrants) {
+  // A half circle of radius 10 about (10, 0) from (20, 0) counter-clockwise to (0, 0).
+  std::vector<MotionRecord> whole = {arcRecord({20, 0, 0}, {0, 0, 0}, 10, 0, 1)};
+  std::vector<MotionRecord> parts = {arcRecord({20, 0, 0}, {10, 10, 0}, 10, 0, 1),
+                                     arcRecord({10, 10, 0}, {0, 0, 0}, 10, 0, 1)};
+  EXPECT_TRUE(same(whole, parts));
+  // The same pieces the other way round, and an extra full turn, are not the arc.
+  std::vector<MotionRecord> cw = {arcRecord({20, 0, 0}, {10, -10, 0}, 10, 0, -1),
+                                  arcRecord({10, -10, 0}, {0, 0, 0}, 10, 0, -1)};
+  EXPECT_FALSE(same(whole, cw));
+  std::vector<MotionRecord> more = {arcRecord({20, 0, 0}, {10, 10, 0}, 10, 0, 2),
+                                    arcRecord({10, 10, 0}, {0, 0, 0}, 10, 0, 1)};
+  EXPECT_FALSE(same(whole, more));
+}
+
+TEST(MotionCompare, RapidLegsOnlyWhenAsked) {
+  auto rapid = [](AxisVec s, AxisVec e) {
+    MotionRecord r;
+    r.kind = RecordKind::Rapid;
+    r.start = s;
+    r.end = e;
+    return r;
+  };
+  std::vector<MotionRecord> src = {rapid({0, 0, 10}, {50, 20, 2})};
+  std::vector<MotionRecord> legs = {rapid({0, 0, 10}, {50, 20, 10}), rapid({50, 20, 10}, {50, 20, 2})};
+  std::vector<MotionRecord> outside = {rapid({0, 0, 10}, {50, 20, 12}), rapid({50, 20, 12}, {50, 20, 2})};
+  std::string report;
+  PathCompareOptions o;
+  EXPECT_FALSE(comparePaths(src, legs, o, report));
+  o.rapidLegs = true;
+  EXPECT_TRUE(comparePaths(src, legs, o, report)) << report;
+  EXPECT_FALSE(comparePaths(src, outside, o, report));
 }

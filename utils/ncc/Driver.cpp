@@ -1,5 +1,6 @@
 #include "utils/ncc/Driver.h"
 
+#include "backends/emit/ControllerTable.h"
 #include "utils/ncc/JitCache.h"
 #include "utils/ncc/JitLoader.h"
 #include "passes/Eval.h"
@@ -41,12 +42,33 @@ bool Session::setUp() {
 
 bool Session::loadMachine(const std::string &nameOrPath, Machine &out) {
   std::vector<MachineError> errors;
-  if (Machine::load(nameOrPath, out, errors)) return true;
+  if (Machine::load(nameOrPath, out, errors)) return checkEmitSections(nameOrPath, out);
   // Register the file only now, so that a good machine file adds no source to the session.
   uint32_t f = errors[0].line ? sm.addFile(nameOrPath) : 0;
   for (auto &e : errors)
     diags.error(SourceLoc{f, e.line, e.col},
                 f ? e.message : fmt::format("cannot load machine '{}': {}", nameOrPath, e.message));
+  return false;
+}
+
+// The emitters' [emit.*] values are checked when the machine loads, so that a bad one stops every
+// command with its place in the file (registered only then, like the file's own errors).
+bool Session::checkEmitSections(const std::string &path, Machine &m) {
+  if (m.sections.empty()) return true;
+  static const emit::Target kTargets[] = {emit::Target::ISO, emit::Target::Sinumerik, emit::Target::Heidenhain};
+  Diagnostics quiet(sm);
+  quiet.setCollect(true);
+  bool ok = true;
+  for (emit::Target t : kTargets) {
+    emit::ControllerStyle style = emit::defaultStyle(t);
+    ok = emit::applyMachineSection(m, style, quiet) && ok;
+  }
+  if (ok) return true;
+  m.sourceFile = sm.addFile(path);
+  for (emit::Target t : kTargets) {
+    emit::ControllerStyle style = emit::defaultStyle(t);
+    emit::applyMachineSection(m, style, diags);
+  }
   return false;
 }
 

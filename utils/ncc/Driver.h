@@ -46,6 +46,7 @@ public:
   // Applies opts (machine, diagnostics format). Reports and returns false on failure.
   // Loads a machine description into out; its problems become diagnostics in the file.
   bool loadMachine(const std::string &nameOrPath, Machine &out);
+  bool checkEmitSections(const std::string &path, Machine &m);
   bool setUp();
   // Reads a source file; 0 after reporting when it cannot be read.
   uint32_t open(const std::string &path);

@@ -9,7 +9,7 @@ namespace ncc::driver {
 // with `verify` compares the two paths. Returns the exit code.
 // --verify's comparison (CmdTranslate.cpp): false, with the first difference reported, when the
 // translation's path differs from the source's.
-bool samePaths(Session &s, const MotionBuffer &source, const MotionBuffer &back, double tolerance);
+bool samePaths(Session &s, const MotionBuffer &source, const MotionBuffer &back, double tolerance, bool rapidLegs = false);
 
 int translateStructured(Session &s, uint32_t file, const emit::EmitOptions &eo, const std::string &out, bool verify,
                         double tolerance);
