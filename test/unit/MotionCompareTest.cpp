@@ -113,6 +113,7 @@ TEST(MotionCompare, MachineStateAtEachFeedMove) {
   // A speed written while the spindle stands still does not count; rapids are not compared.
   auto stopped = withState({command(RecordKind::SpindleSpeed, 0, 500)}, moves);
   EXPECT_TRUE(same(moves, stopped));
+}
 
 // A postprocessor passport's split moves (docs/EMIT.md "Passport"): pieces on the source's line,
 // forwards, or on its circle adding up to its sweep, pass; anything else is a difference.
