@@ -20,7 +20,9 @@ static const char *const kNames[] = {
     "_w", "_current_tool", "_current_pocket", "_selected_tool", "_selected_pocket",
     "_remap_level", "_task", "_g92_on", "_coord_system_number", "_tool_diameter", "_tool_length_h",
     "_cutter_d", "_probe_x", "_probe_y", "_probe_z", "_probe_a", "_probe_b", "_probe_c", "_probe_u",
-    "_probe_v", "_probe_w", "_probe_tripped", "_pframe", "_iframe", "_actframe"};
+    "_probe_v", "_probe_w", "_probe_tripped", "_pframe", "_iframe", "_actframe", "_actbframe", "_chbfrmask",
+    "_ncbfrmask", "_partframe", "_setframe", "_extframe", "_iso1frame", "_iso2frame", "_iso3frame", "_gframe",
+    "_toolframe", "_wpframe", "_traframe", "_iso4frame", "_cycframe"};
 static_assert(sizeof(kNames) / sizeof(kNames[0]) == (size_t)SysVar::Count);
 
 namespace {
@@ -48,6 +50,8 @@ const std::vector<std::string> &allNames() {
       for (int x = 1; x <= kDlSets; ++x)
         for (int y = 3; y < 3 + kDlParams; ++y) n.push_back(fmt::format("_tool_data_{}{}{}", kind, x, y));
     for (int i = 0; i < kUserFrames; ++i) n.push_back("_uifr[" + std::to_string(i) + "]");
+    for (const char *base : {"_chbfr", "_chbframe", "_ncbfr", "_ncbframe"})
+      for (int i = 0; i < kBaseFrames; ++i) n.push_back(fmt::format("{}[{}]", base, i));
     return n;
   }();
   return names;
@@ -76,6 +80,10 @@ SysVarInfo sysVarInfo(SysVar v) {
   int id = (int)v - (int)SysVar::Count;
   if (id < 0 || id >= kSysVarIds - (int)SysVar::Count) return {};
   if (id < kWorkOffsetIds) return {SysFamily::WorkOffset, id / 7 + 1, id % 7};
+  if ((int)v >= kBaseFrameIds) {
+    int b = (int)v - kBaseFrameIds;
+    return {(SysFamily)((int)SysFamily::ChBfr + b / kBaseFrames), b % kBaseFrames, 0};
+  }
   if ((int)v >= kUserFrameIds) return {SysFamily::UserFrame, (int)v - kUserFrameIds, 0};
   if ((int)v >= kToolDataIds) return {SysFamily::ToolData, 0, (int)v - kToolDataIds};
   id -= kWorkOffsetIds;
@@ -90,6 +98,8 @@ SysVar sysVarOf(SysFamily f, int system, int axis) {
     return (SysVar)(base + kWorkOffsetIds + ((int)f - (int)SysFamily::G92) * 6 + axis);
   if (f == SysFamily::ToolData && axis >= 0 && axis < kToolFields) return (SysVar)(kToolDataIds + axis);
   if (f == SysFamily::UserFrame && system >= 0 && system < kUserFrames) return (SysVar)(kUserFrameIds + system);
+  if (f >= SysFamily::ChBfr && f <= SysFamily::NcBframe && system >= 0 && system < kBaseFrames)
+    return (SysVar)(kBaseFrameIds + ((int)f - (int)SysFamily::ChBfr) * kBaseFrames + system);
   return kNoSysVar;
 }
 
@@ -104,8 +114,9 @@ static_assert(kMaxToolNumber < 131072);
 namespace {
 // Base names of the indexed families, in SysFamily order from WorkOffset on.
 constexpr const char *kFamilyBase[] = {"_work_offset", "_g92", "_home1", "_home2", "_abs", "_tool_offsets", "_tool_data",
-                                       "_uifr"};
-constexpr int kFamilyDims[] = {2, 1, 1, 1, 1, 1, 3, 1};
+                                       "_uifr",         "_chbfr", "_chbframe", "_ncbfr",      "_ncbframe"};
+constexpr int kFamilyDims[] = {2, 1, 1, 1, 1, 1, 3, 1, 1, 1, 1, 1};
+static_assert(std::size(kFamilyBase) == (size_t)SysFamily::NcBframe && std::size(kFamilyDims) == std::size(kFamilyBase));
 bool wholeIn(double x, int lo, int hi) { return x >= lo && x <= hi && x == (double)(int)x; }
 }  // namespace
 
@@ -127,6 +138,10 @@ SysRef sysVarAt(SysFamily f, double i, double j, double k) {
     if (!wholeIn(i, 1, kMaxToolNumber) || !wholeIn(j, 0, kMaxToolNumber) || !wholeIn(k, 0, kToolFields - 1)) return {};
     return {sysVarOf(f, 0, (int)k), (int32_t)i, (int32_t)j};
   case SysFamily::UserFrame: return {wholeIn(i, 0, kUserFrames - 1) ? sysVarOf(f, (int)i, 0) : kNoSysVar};
+  case SysFamily::ChBfr:
+  case SysFamily::ChBframe:
+  case SysFamily::NcBfr:
+  case SysFamily::NcBframe: return {wholeIn(i, 0, kBaseFrames - 1) ? sysVarOf(f, (int)i, 0) : kNoSysVar};
   default: return {wholeIn(i, 0, 5) ? sysVarOf(f, 0, (int)i) : kNoSysVar};
   }
 }
@@ -139,6 +154,7 @@ std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, dou
   const char *range = f == SysFamily::WorkOffset ? "system 1..9, axis 0..6"
                       : f == SysFamily::ToolData  ? "tool 1..99999, edge 0..99999, field 0..60"
                       : f == SysFamily::UserFrame ? "settable frame 0..9"
+                      : f >= SysFamily::ChBfr     ? "base frame 0..7"
                                                   : "axis 0..5";
   return "system variable '$" + std::string(name) + "[" + idx + "]': index out of range (" + range + ")";
 }
@@ -159,19 +175,23 @@ bool sysFamilyWritable(SysFamily f) {
   case SysFamily::Home1:
   case SysFamily::Home2:
   case SysFamily::ToolData:
-  case SysFamily::UserFrame: return true;
+  case SysFamily::UserFrame:
+  case SysFamily::ChBfr:
+  case SysFamily::ChBframe:
+  case SysFamily::NcBfr:
+  case SysFamily::NcBframe: return true;
   default: return false;
   }
 }
 
 bool sysVarWritable(SysVar v) {
   return v == SysVar::PFrame || v == SysVar::IFrame || (v >= SysVar::ProbeX && v <= SysVar::ProbeTripped) ||
-         sysFamilyWritable(sysVarInfo(v).family);
+         (v >= SysVar::ChBfrMask && v < SysVar::Count) || sysFamilyWritable(sysVarInfo(v).family);
 }
 
 bool sysVarIsFrame(SysVar v) {
-  return v == SysVar::PFrame || v == SysVar::IFrame || v == SysVar::ActFrame ||
-         sysFamilyIsFrame(sysVarInfo(v).family);
+  return v == SysVar::PFrame || v == SysVar::IFrame || v == SysVar::ActFrame || v == SysVar::ActBFrame ||
+         (v >= SysVar::PartFrame && v < SysVar::Count) || sysFamilyIsFrame(sysVarInfo(v).family);
 }
 
 bool sysVarNameIsFrame(std::string_view name) {

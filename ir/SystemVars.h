@@ -27,14 +27,24 @@ enum class SysVar : uint16_t {
   ProbeX, ProbeY, ProbeZ, ProbeA, ProbeB, ProbeC, ProbeU, ProbeV, ProbeW, ProbeTripped,
   // Frames (FRAME values, ir/FrameValue.h): the programmable frame (Sinumerik $P_PFRAME), the
   // active settable frame ($P_IFRAME), the whole chain without the tool ($P_ACTFRAME, read-only).
-  PFrame, IFrame, ActFrame, Count
+  PFrame, IFrame, ActFrame,
+  // Sinumerik base frames (docs/SINUMERIK.md "Frame chain"): the total base frame ($P_ACTBFRAME,
+  // read-only) and the masks choosing the members that enter it ($P_CHBFRMASK, $P_NCBFRMASK);
+  // the system frames of the chain, outer ones first ($P_PARTFRAME … $P_GFRAME).
+  ActBFrame, ChBfrMask, NcBfrMask, PartFrame, SetFrame, ExtFrame, Iso1Frame, Iso2Frame, Iso3Frame, GFrame,
+  ToolFrame, WpFrame, TraFrame, Iso4Frame, CycFrame, Count
 };
 
 // Indexed families after the named variables (ids from SysVar::Count on): work offsets of
 // systems 1..9 (X Y Z A B C and the XY rotation R), the G92 offsets, reference points 1 and 2,
 // the machine position and the tool offsets (X Y Z A B C), then the tool data fields. Offsets,
 // reference points and tool data are in parameter units (mm); positions in program units.
-enum class SysFamily : uint8_t { None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset, ToolData, UserFrame };
+enum class SysFamily : uint8_t {
+  None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset, ToolData, UserFrame,
+  // Sinumerik base frames n = 0..7: the channel's stored ($P_CHBFR[n]) and active
+  // ($P_CHBFRAME[n]) ones, the NCU-global stored ($P_NCBFR[n]) and active ($P_NCBFRAME[n]) ones.
+  ChBfr, ChBframe, NcBfr, NcBframe
+};
 struct SysVarInfo {
   SysFamily family = SysFamily::None;
   int system = 0;  // WorkOffset: 1..9
@@ -67,7 +77,11 @@ constexpr int kToolDataIds = (int)SysVar::Count + 9 * 7 + 5 * 6;  // the first t
 // offset systems G54 … (frames of the work offset table: system n's offsets and XY rotation).
 constexpr int kUserFrames = 10;
 constexpr int kUserFrameIds = kToolDataIds + kToolFields;
-constexpr int kSysVarIds = kUserFrameIds + kUserFrames;
+// The base frames of the four families ChBfr … NcBframe, 8 each (MD28081 and the NCU-global
+// count at most 8), system = the index.
+constexpr int kBaseFrames = 8;
+constexpr int kBaseFrameIds = kUserFrameIds + kUserFrames;
+constexpr int kSysVarIds = kBaseFrameIds + 4 * kBaseFrames;
 static_assert(kSysVarIds < (int)kNoSysVar);
 
 // What an engine reads or writes: the id and, for tool data, the tool and the edge (edge 0: the
@@ -104,7 +118,7 @@ bool sysVarWritable(SysVar v);
 bool sysFamilyWritable(SysFamily f);
 // Variables whose values are FRAMEs (engines read and write them with CmdSink::readFrame/writeFrame).
 bool sysVarIsFrame(SysVar v);
-inline bool sysFamilyIsFrame(SysFamily f) { return f == SysFamily::UserFrame; }
+inline bool sysFamilyIsFrame(SysFamily f) { return f == SysFamily::UserFrame || f >= SysFamily::ChBfr; }
 // The same by IR name (`_pframe`, the family `_uifr`), for the static types of sema and the JIT.
 bool sysVarNameIsFrame(std::string_view name);
 

@@ -21,7 +21,7 @@ static void rotateXY(AxisVec &p, double degrees) {
 AxisVec Executor::Impl::frameIn(const AxisVec &m) const {
   if (!linearFrame()) return m;
   AxisVec f;
-  const AxisVec &o = g5xActive;
+  const AxisVec &o = chainOffset;
   for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - toolOffset(i);
   if (rotated()) rotateXY(f, -rotation());
   if (!pf.linear) return f;
@@ -37,7 +37,7 @@ AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
     for (int i = 0; i < kAxes; ++i) m[i] += g92[i];
   }
   if (rotated()) rotateXY(m, rotation());
-  const AxisVec &o = g5xActive;
+  const AxisVec &o = chainOffset;
   for (int i = 0; i < kAxes; ++i) m[i] += o[i] + toolOffset(i);
   return m;
 }
@@ -270,7 +270,7 @@ bool Executor::Impl::execSetOffset(const MachineCmd &c) {
     for (int i = 0; i < kAxes; ++i)
       if (c.has((Word)i)) {
         pf.local[i] = 0;
-        double before = rotated() ? f[i] : st.position[i] - g5xActive[i] - toolOffset(i);
+        double before = rotated() ? f[i] : st.position[i] - chainOffset[i] - toolOffset(i);
         g92[i] = before - c.get((Word)i) * axisScale(i);
       }
     g92Saved = g92;
@@ -690,7 +690,15 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
   }
   case CmdKind::WorkOffset: {
     static const char *kSystems[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
+    if (c.sub == 0) {  // Sinumerik G500: no settable frame; the stored base frames become active
+      x.activateBaseFrames();
+      x.selectNoSettableFrame();
+      x.curBlockFrame = true;
+      x.noteFrame("G500");
+      return true;
+    }
     if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
+    x.activateBaseFrames();  // Sinumerik G54…: the stored base frames too (manual L12337-L12345)
     // The ISO manuals forbid it under G68/G51/G51.1; Sinumerik frames are independent members of
     // one chain (a settable frame under the programmable one), so G54… under $P_PFRAME is fine.
     if (c.sub != x.st.workOffset && x.machine.dialect != "sinumerik" && !x.frameForbids("changing the work offset"))
@@ -699,6 +707,7 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
     bool apply = c.sub != x.st.workOffset || x.offsetWrite != OffsetWrite::OnChange;
     x.st.workOffset = c.sub;
     if (apply) x.applyWorkOffset();
+    else x.updateChain();
     x.curBlockFrame = true;
     x.noteFrame(kSystems[c.sub - 1]);
     return true;

@@ -73,7 +73,7 @@ struct Executor::Impl {
     offsetWrite = m.controller.offsetWritePolicy();
     toolWrite = m.controller.toolWritePolicy();
     paramUnit = m.controller.parameterUnits == "inch" ? 25.4 : 1.0;
-    applyWorkOffset();
+    startFrames();
     home[0] = m.home1;
     home[1] = m.home2;
     // A Machine with no axis at all is an undescribed one (unit tests): every axis exists.
@@ -115,8 +115,35 @@ struct Executor::Impl {
   double *storedOffset(const SysVarInfo &info, double &unit) const;
   void applyWorkOffset() {
     g5xActive = g5x[st.workOffset - 1], g5xRotActive = g5xRotation[st.workOffset - 1];
-    settableFrameWritten = false;
+    settableFrameWritten = noSettableFrame = false;
+    updateChain();
   }
+  // Sinumerik G500: no settable frame ($P_IFRAME the identity, $P_UIFRNUM 0) until a G54….
+  bool noSettableFrame = false;
+  // The Sinumerik frames around the settable one (ExecutorFrames.cpp, docs/SINUMERIK.md "Frame
+  // chain"), FRAME values in mm: the stored and active base frames of the channel and the NCU,
+  // the masks choosing the active ones that enter the total base frame, and the system frames
+  // ($P_PARTFRAME $P_SETFRAME $P_EXTFRAME outside the base frames, $P_TOOLFRAME $P_WPFRAME
+  // $P_TRAFRAME between the settable and the programmable frame). Each holds offsets and a
+  // rotation about Z, like a work offset.
+  struct BaseFrames {
+    std::array<FrameValue, kBaseFrames> chStored, chActive, ncStored, ncActive;
+    int chMask = 0xff, ncMask = 0xff;
+  } base;
+  enum SystemFrame { PartFrame, SetFrame, ExtFrame, ToolFrame, WpFrame, TraFrame, kSystemFrames };
+  std::array<FrameValue, kSystemFrames> systemFrames;
+  void startFrames();  // the machine's stored frames, what is active after reset (MD20110)
+  void activateBaseFrames() { base.chActive = base.chStored, base.ncActive = base.ncStored; }
+  FrameValue totalBaseFrame() const;  // $P_ACTBFRAME, mm
+  const FrameValue *baseFrame(const SysRef &ref, std::string &err) const;
+  bool writeChainFrame(const SysRef &ref, const FrameValue &f, double unit, const std::string &what, std::string &err);
+  bool writeBaseMask(SysVar v, double value, std::string &err);
+  void selectNoSettableFrame();
+  // What the motion sees of the settable link: the chain outside : settable : inside, folded
+  // into one work offset and XY rotation (updateChain after any of them changes).
+  AxisVec chainOffset{};
+  double chainRot = 0;
+  void updateChain();
   // The active settable frame was assigned ($P_IFRAME, Sinumerik G500) rather than read from the
   // table: no work offset is selected (the FrameChange record's `wcs` 0, docs/IR.md).
   bool settableFrameWritten = false;
@@ -176,9 +203,9 @@ struct Executor::Impl {
     return axis == 0 && machine.controller.diameterProgramming ? scale() * 0.5 : isLengthAxis(axis) ? scale() : 1.0;
   }
   double offset(int axis) const {
-    return g5xActive[axis] + g92[axis] + pf.local[axis] + toolOffset(axis);
+    return chainOffset[axis] + g92[axis] + pf.local[axis] + toolOffset(axis);
   }
-  double rotation() const { return g5xRotActive; }
+  double rotation() const { return chainRot; }
   // The "offset frame": program coordinates plus G92. Without rotation it is the machine frame
   // (frameOffset = every offset), so unrotated programs compute exactly as before; with a
   // rotation it is the frame before Rz, where only G92 offsets. Targets, arc centres and

@@ -43,7 +43,7 @@ constexpr int kCutPosWearSign[10] = {0, 0, 2, 3, 1, 0, 0, 2, 1, 0};
 // together. A linear part that is not diagonal (a rotation) leaves the mirrored axes undefined.
 bool Executor::Impl::mirroredAxes(bool out[3]) const {
   double R[3][3];
-  frameRotation(0, 0, g5xRotActive, R);
+  frameRotation(0, 0, chainRot, R);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       double m = 0;
@@ -84,7 +84,7 @@ bool Executor::Impl::sinToolOffsets(int t, int d, int dl, Vec3 &length, double &
   // the conversion, which ncc does not make.
   if (st.wearSystem == ModeValue::WearWork && (wear[0] != 0 || wear[1] != 0 || wear[2] != 0)) {
     double R[3][3];
-    frameRotation(0, 0, g5xRotActive, R);
+    frameRotation(0, 0, chainRot, R);
     bool plain = pf.composite.linearIdentity();
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k) plain = plain && std::fabs(R[i][k] - (i == k)) < 1e-12;

@@ -272,7 +272,7 @@ bool Executor::Impl::execToolOffset(const MachineCmd &c) {
     if (!frameForbids(kind == SetOffsetKind::ToolTouch ? "G10 L10" : "G10 L11")) return false;
     // rs274: the length that puts the tool tip at Z in the current system (L10) or in G59.3
     // (L11, where G92 does not count), from the machine position.
-    double z0 = kind == SetOffsetKind::ToolTouch ? g5xActive[2] + g92[2] + pf.local[2] : g5x[8][2];
+    double z0 = kind == SetOffsetKind::ToolTouch ? chainOffset[2] + g92[2] + pf.local[2] : g5x[8][2];
     if (c.has(Word::Z)) e.length = st.position[2] - z0 - c.get(Word::Z) * scale(), e.lengthWear = 0;
     if (c.has(Word::R)) e.radius = r, e.radiusWear = 0;
     break;
@@ -386,7 +386,9 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::RemapLevel:
   case SysVar::Task: out = 0; return true;
   case SysVar::G92On: out = is(x.g92On); return true;
-  case SysVar::CoordSystemNumber: out = st.workOffset; return true;
+  case SysVar::CoordSystemNumber: out = x.noSettableFrame ? 0 : st.workOffset; return true;  // G500: 0
+  case SysVar::ChBfrMask: out = x.base.chMask; return true;
+  case SysVar::NcBfrMask: out = x.base.ncMask; return true;
   case SysVar::ToolDiameter: {
     out = st.toolInSpindle > 0 ? 2 * x.toolNumberData(st.toolInSpindle).radius / x.paramUnit : 0;
     return true;
@@ -406,6 +408,19 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::PFrame:
   case SysVar::IFrame:
   case SysVar::ActFrame:  // FRAME values: readFrame (ExecutorFrames.cpp)
+  case SysVar::ActBFrame:
+  case SysVar::PartFrame:
+  case SysVar::SetFrame:
+  case SysVar::ExtFrame:
+  case SysVar::Iso1Frame:
+  case SysVar::Iso2Frame:
+  case SysVar::Iso3Frame:
+  case SysVar::GFrame:
+  case SysVar::ToolFrame:
+  case SysVar::WpFrame:
+  case SysVar::TraFrame:
+  case SysVar::Iso4Frame:
+  case SysVar::CycFrame:
   case SysVar::Count: return false;
   }
   // Positions: program coordinates (all offsets applied), in program units.
@@ -440,6 +455,10 @@ bool Executor::writeSystem(const SysRef &ref, double value, SourceLoc loc, std::
     if (ref.var == SysVar::ProbeTripped) x.probeTripped = value;
     else x.probeResult[(int)ref.var - (int)SysVar::ProbeX] = value;
     return true;
+  }
+  if (ref.var == SysVar::ChBfrMask || ref.var == SysVar::NcBfrMask) {
+    x.loc = loc;
+    return x.writeBaseMask(ref.var, value, err);
   }
   if (!std::isfinite(value) || std::fabs(value) > 1e9) {
     err = fmt::format("system variable '${}': {} is not a valid offset", sysRefText(ref), numberText(value));

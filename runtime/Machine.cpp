@@ -391,6 +391,10 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"wear_sign", &Controller::wearSign},
     {"tool_length_const", &Controller::toolLengthConst},
     {"dl_default", &Controller::dlDefault, 0, 6},
+    {"base_frames", &Controller::baseFrames, 0, 8},
+    {"nc_base_frames", &Controller::ncBaseFrames, 0, 8},
+    {"base_frame_mask", &Controller::baseFrameMask, 0, 255},
+    {"reset_mode_mask", &Controller::resetModeMask, 0, 0x3ffff},
 };
 
 void readAxisKind(Ctx &c, const toml::node &n, void *obj) {
@@ -443,13 +447,26 @@ void readAxes(Ctx &c, const toml::node &n, void *obj) {
 // The [offsets] table: named reference positions, copied into Machine afterwards.
 struct OffsetsIn {
   AxisVec g54{}, g55{}, g56{}, g57{}, g58{}, g59{}, g59_1{}, g59_2{}, g59_3{}, home1{}, home2{};
+  std::array<AxisVec, 8> base{}, ncBase{};  // Sinumerik $P_CHBFR[n], $P_NCBFR[n]
 };
+
+// [offsets] base = [[x, y, z…], …] and nc_base: the stored base frames 0, 1, … (offsets).
+template <std::array<AxisVec, 8> OffsetsIn::*Member> void readBaseFrames(Ctx &c, const toml::node &n, void *obj) {
+  const char *key = Member == &OffsetsIn::base ? "base" : "nc_base";
+  const toml::array *a = n.as_array();
+  if (!a || a->size() > 8)
+    return c.error(n.source(), std::string(key) + ": expected an array of at most 8 offsets [[x, y, z…], …], got " +
+                                   (a ? std::to_string(a->size()) + " elements" : typeName(n)));
+  for (size_t i = 0; i < a->size(); ++i)
+    readAxisVec(c, *a->get(i), std::string(key) + "[" + std::to_string(i) + "]", (static_cast<OffsetsIn *>(obj)->*Member)[i]);
+}
 
 const KeyDef<OffsetsIn> kOffsetKeys[] = {
     {"g54", &OffsetsIn::g54},     {"g55", &OffsetsIn::g55},     {"g56", &OffsetsIn::g56},
     {"g57", &OffsetsIn::g57},     {"g58", &OffsetsIn::g58},     {"g59", &OffsetsIn::g59},
     {"g59.1", &OffsetsIn::g59_1}, {"g59.2", &OffsetsIn::g59_2}, {"g59.3", &OffsetsIn::g59_3},
     {"home1", &OffsetsIn::home1}, {"home2", &OffsetsIn::home2},
+    {"base", NodeReader(readBaseFrames<&OffsetsIn::base>)}, {"nc_base", NodeReader(readBaseFrames<&OffsetsIn::ncBase>)},
 };
 
 void readOffsets(Ctx &c, const toml::node &n, void *obj) {
@@ -459,6 +476,7 @@ void readOffsets(Ctx &c, const toml::node &n, void *obj) {
   m.workOffsets = {o.g54, o.g55, o.g56, o.g57, o.g58, o.g59, o.g59_1, o.g59_2, o.g59_3};
   m.home1 = o.home1;
   m.home2 = o.home2;
+  m.chanBaseFrames = o.base, m.ncBaseFrames = o.ncBase;
 }
 
 struct EdgeIn : ToolEdge {
@@ -753,6 +771,14 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
                     (tool == m.toolTable.end() ? " is not in [[tools]]" : " has no edge d = " + std::to_string(edge.second)));
     }
     if (m.controller.lathe()) latheChecks(c, doc, m);
+    // Stored base frames beyond the configured number (base_frames, nc_base_frames).
+    for (auto [key, list, count] : {std::tuple{"base", &m.chanBaseFrames, m.controller.baseFrames},
+                                    std::tuple{"nc_base", &m.ncBaseFrames, m.controller.ncBaseFrames}})
+      for (int i = count; i < 8; ++i)
+        if ((*list)[i] != AxisVec{})
+          c.error(doc["offsets"][key].node()->source(), std::string("offsets.") + key + "[" + std::to_string(i) +
+                                                            "]: the machine has " + std::to_string(count) + " such base frames (" +
+                                                            (key[0] == 'b' ? "base_frames" : "nc_base_frames") + ")");
   }
   errors = std::move(c.problems);
   std::stable_sort(errors.begin(), errors.end(),

@@ -139,6 +139,14 @@ struct Controller {
   bool mirrorToolLength = false, mirrorToolWear = false, wearSignCutpos = false, wearSign = false;
   int toolLengthConst = 0;
   int dlDefault = 0;
+  // Sinumerik frames (docs/SINUMERIK.md "Frame chain"): MD28081 $MC_MM_NUM_BASE_FRAMES (channel
+  // base frames), the NCU-global base frames (MD18602), MD24002 $MC_CHBFRAME_RESET_MASK (the
+  // base frames that enter the total base frame after reset: both masks, as the manual says) and
+  // MD20110 $MC_RESET_MODE_MASK (bits 0, 5, 14: which frames are active after reset, i.e. when a
+  // run starts).
+  int baseFrames = 1, ncBaseFrames = 0;
+  int baseFrameMask = 0xff;
+  int resetModeMask = 0x4021;
 };
 
 // One rotary joint of a kinematic chain ([[kinematics.joints]], docs/MACHINE.md "Kinematics").
@@ -192,6 +200,8 @@ struct Machine {
   // (x 0.001), "is-c" (x 0.0001).
   std::string decimalMode = "calculator";
   std::array<AxisVec, 9> workOffsets{};  // G54..G59.3, machine mm
+  // The stored Sinumerik base frames $P_CHBFR[n] and $P_NCBFR[n] (offsets, machine mm).
+  std::array<AxisVec, 8> chanBaseFrames{}, ncBaseFrames{};
   AxisVec home1{}, home2{};              // G28 / G30 reference positions, machine mm
   std::map<int, Tool> toolTable;         // every tool with its name and edges
   std::map<int, ToolData> tools;         // by T/H/D number: edge 1 of toolTable (see ToolData)

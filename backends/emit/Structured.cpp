@@ -211,8 +211,12 @@ bool Writer::machineWord(const Op &o) {
   }
   case OpKind::WorkOffset: {
     const Expr *i = o.get("index");
-    if (i->kind != ExprKind::Number || i->num < 1 || i->num > 9 || i->num != std::floor(i->num))
+    if (i->kind != ExprKind::Number || i->num < 0 || i->num > 9 || i->num != std::floor(i->num))
       return fail(o.loc, "a computed work offset");
+    if (i->num == 0) {  // Sinumerik G500: no settable frame
+      if (iso_) return fail(o.loc, "Sinumerik G500 (no settable frame)");
+      return addWord("G500"), true;
+    }
     addWord((iso_ ? kIsoOffsets : kSinOffsets)[(int)i->num - 1]);
     return true;
   }

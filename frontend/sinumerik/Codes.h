@@ -87,6 +87,7 @@ struct SysMap {
   const char *irName;     // NC IR name without '$': _uifr
   int indices;            // 0, 1 (axis or number) or 2
   int toolField = -1;     // $TC_DPn: the field k of $_tool_data[t, d, k]
+  int fixedIndex = -1;    // $P_UBFR, $P_BFRAME: the member 0 of $_chbfr / $_chbframe
 };
 const SysMap *findSystemVar(std::string_view name);
 // $TC_SCPxy / $TC_ECPxy: the tool data field (>= 0), -2 a parameter ncc does not keep, -1 another name.

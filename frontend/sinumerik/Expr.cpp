@@ -2,6 +2,7 @@
 // below << and the logical operators, so `R1<5 AND R2>3` is `R1 < (5 AND R2) > 3`.
 #include "frontend/sinumerik/Parser.h"
 #include "ir/Builtins.h"
+#include "ir/SystemVars.h"
 
 #include <fmt/format.h>
 
@@ -53,8 +54,7 @@ bool BlockParser::frameTyped(const Expr &e) const {
     const BuiltinInfo *b = findBuiltin(e.str);
     return b && b->result == 'f';
   }
-  if (e.kind == ir::ExprKind::Var && e.space == ir::VarSpace::System)
-    return e.str == "_pframe" || e.str == "_iframe" || e.str == "_actframe" || e.str == "_uifr";
+  if (e.kind == ir::ExprKind::Var && e.space == ir::VarSpace::System) return sysVarNameIsFrame(e.str);
   if (e.kind == ir::ExprKind::Var) {
     auto it = f_.vars.find(e.str);
     return it != f_.vars.end() && it->second.type == ir::Type::Frame;
@@ -176,10 +176,6 @@ ExprPtr BlockParser::indexList(std::vector<ExprPtr> &out, bool axisOk) {
   return Expr::boolean(true);  // success marker
 }
 
-static bool frameSys(std::string_view ir) {
-  return ir == "_pframe" || ir == "_iframe" || ir == "_actframe" || ir == "_uifr";
-}
-
 // 808D macro arguments (seed001 §2.14.2, ISO-MAC-02): G65/G66 and the M-code macros of an ISO
 // program pass address X as $C_X; ncc's ISO front end passes them into the Fanuc locals of the
 // callee (argument specification I: A #1 … Z #26), so $C_<letter> reads that local and
@@ -211,19 +207,32 @@ ExprPtr BlockParser::systemVar(const Token &t) {
     return nullptr;
   }
   if (!m && machineCtx_) return machineValue();
+  if (!m && (name == "AA_ETRANS" || name == "P_EXTFR")) {  // SIN-FRM-17, manual L12683-L12748
+    fail(t, fmt::format("'${}': the external zero offset takes effect by the PLC signal DB31 DBX3.0, which ncc does "
+                        "not simulate (write the system frame $P_EXTFRAME)",
+                        name),
+         "unsupported-code");
+    return nullptr;
+  }
   if (!m) {
     fail(t, fmt::format("system variable '${}' is not provided by ncc", name), "unsupported-code");
     return nullptr;
   }
   std::vector<ExprPtr> idx;
   if (tok().is("[") && !indexList(idx, true)) return nullptr;
+  SysMap fixed = *m;
+  if (m->fixedIndex >= 0) {  // $P_UBFR = $P_CHBFR[0]: the index as if written
+    idx.insert(idx.begin(), Expr::number(m->fixedIndex, ir::Type::Int, l));
+    fixed.indices = 1;
+    m = &fixed;
+  }
   if (m->toolField >= 0) {  // $TC_DP3[t, d] -> $_tool_data[t, d, k]
     if (idx.size() != 2) {
       fail(t, fmt::format("'${}' takes two indices [tool, edge]", name));
       return nullptr;
     }
     idx.push_back(Expr::number(m->toolField, ir::Type::Int, l));
-  } else if (frameSys(m->irName) && (int)idx.size() == m->indices + 2) {
+  } else if (sysVarNameIsFrame(m->irName) && (int)idx.size() == m->indices + 2) {
     // $P_PFRAME[X, TR], $P_UIFR[n, X, RT]: a component of the frame (FRAME_GET).
     const Expr &ax = *idx[m->indices], &comp = *idx[m->indices + 1];
     if (ax.kind != ir::ExprKind::Symbol || comp.kind != ir::ExprKind::Var) {
@@ -240,7 +249,8 @@ ExprPtr BlockParser::systemVar(const Token &t) {
     a.push_back(Expr::string(c, l));
     return Expr::call("FRAME_GET", std::move(a), l);
   } else if ((int)idx.size() != m->indices) {
-    fail(t, fmt::format("'${}' takes {} ind{}", name, m->indices, m->indices == 1 ? "ex" : "ices"));
+    int n = m->indices - (m->fixedIndex >= 0);
+    fail(t, fmt::format("'${}' takes {} ind{}", name, n, n == 1 ? "ex" : "ices"));
     return nullptr;
   }
   auto v = Expr::var(ir::VarSpace::System, m->irName, nullptr, l);

@@ -185,11 +185,7 @@ bool BlockParser::lowerWords() {
     if (comp->arg) o.set("d_default", Expr::symbol("tool"));
     out.push_back(std::move(o));
   }
-  if (offset && offset->arg == 0) {
-    // G500: no settable frame. The core's work offsets are G54…, so the active settable frame
-    // ($P_IFRAME) becomes the identity; the next G54… reads its table entry again.
-    out.push_back(assignOp(Expr::var(ir::VarSpace::System, "_iframe", nullptr, bl), Expr::call("CTRANS", {}, bl), bl));
-  } else if (offset) {
+  if (offset) {  // G500 is index 0: no settable frame (the executor activates the stored base frames)
     Op o(OpKind::WorkOffset, bl);
     o.set("index", Expr::number(offset->arg, ir::Type::Int));
     out.push_back(std::move(o));
