@@ -130,7 +130,11 @@ enum class ContourAction : uint8_t { Data, Begin, End, Run };
 // `Sub` (Heidenhain SL): a sub-contour whose RL/RR and direction make it a pocket or an island
 // (the capture notes RL/RR instead of compensating: begin says use=subcontour); `Pilot` and
 // `Floor` run on the region as `Pocket` does (cycles 21 and 23).
-enum class ContourUse : uint8_t { Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket, Sub, Pilot, Floor };
+// Rs274*: LinuxCNC's G70, G71 and G72 (runtime/cycles/TurningRs274.h).
+enum class ContourUse : uint8_t {
+  Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket, Sub, Pilot, Floor,
+  Rs274Finish, Rs274RoughZ, Rs274RoughX
+};
 // What a `cycle` op does (docs/IR.md §5.8): Run the entry here (at each position of its
 // pattern), Define store it for Call (Heidenhain CYCL DEF), Modal store it and run it after each
 // following move (Sinumerik MCALL), Call run the stored one here, Cancel end Modal; Trigger (no

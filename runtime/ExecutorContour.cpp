@@ -6,6 +6,7 @@
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
 #include "runtime/cycles/Turning.h"
+#include "runtime/cycles/TurningRs274.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -14,6 +15,7 @@ namespace ncc {
 
 namespace {
 const char *const kUseNames[] = {"contour.finish", "contour.rough_z", "contour.rough_x", "contour.pattern"};
+const char *const kRs274Names[] = {"rs274.G70", "rs274.G71", "rs274.G72"};
 
 // What a record inside a contour may be: motion becomes an element, state records are read
 // (their effect is in the captured feeds), the rest has no place in a contour.
@@ -70,6 +72,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
   case ContourAction::Data: return contourData(c);
   case ContourAction::Begin:
     if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
+    if ((ContourUse)c.sub2 >= ContourUse::Rs274Finish && !rs274ContourAllowed((ContourUse)c.sub2)) return false;
     if (linearFrame()) return error("contour cycles under a rotation, scaling or mirror are not supported", "unsupported-code");
     if (comp.active()) return error("contour cycles with cutter compensation on are not supported", "unsupported-code");
     cornerFlush("a contour begins");
@@ -105,6 +108,15 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     return contourConsume(c);
   }
   return error("bad contour action", "contour-invalid");
+}
+
+// rs274's checks before it reads the profile of G70-G72 (it runs G70 under compensation, which
+// ncc does not yet).
+bool Executor::Impl::rs274ContourAllowed(ContourUse use) {
+  if (plane() != Plane::ZX) return error("G70-G72 can only be used in the XZ plane (G18)", "unsupported-code");
+  if (!comp.active()) return true;
+  if (use == ContourUse::Rs274Finish) return error("G70 with cutter compensation on is not supported", "unsupported-code");
+  return error("G71/G72 cannot be used with cutter compensation enabled", "cutcomp-conflict");
 }
 
 // The blocks were only read: the captured motion becomes a contour in the active plane and the
@@ -169,11 +181,11 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
   if (capture.sl) return error("a capture begun with use=subcontour must end with it", "contour-invalid");
   if (use == ContourUse::Pilot || use == ContourUse::Floor)
     return error("the pilot and floor consumers run with action=run, not after a capture", "contour-invalid");
-  const PlaneAxes ax = planeAxes(plane());
   std::vector<ContourElem> moves;
   std::string err;
   // Plane coordinates of X and Z: the turning consumers need the ZX plane.
   if (plane() != Plane::ZX) return error("turning contour cycles need the ZX plane (G18)", "unsupported-code");
+  if (use >= ContourUse::Rs274Finish) return rs274Contour(c, ct);
   const int ix = 1, iz = 0;  // G18: a = Z, b = X
   // The finishing allowance: U along X (a diameter when X is), W along Z, signed as programmed.
   double allowance[2] = {0, 0};
@@ -199,8 +211,35 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
     s.allowance = {allowance[0], allowance[1]};
     if (!stockRemoval(ct, s, moves, err)) return error(err, "contour-invalid");
   }
+  return emitContourMoves(moves, kUseNames[(int)use]);
+}
+
+// LinuxCNC G70, G71 (.1 .2), G72 (.1 .2): the words of the cycle block (program units), the cut
+// pattern rs274 makes (runtime/cycles/TurningRs274.h) from the contour read at the start point.
+bool Executor::Impl::rs274Contour(const MachineCmd &c, const Contour &ct) {
+  const int which = (int)c.sub2 - (int)ContourUse::Rs274Finish;
+  Rs274Turning s;
+  s.cycle = 70 + which;
+  auto word = [&](Word w, double &v, double unit) {
+    if (c.has(w)) v = c.get(w) * unit;
+  };
+  word(Word::D, s.d, scale()), word(Word::E, s.e, scale()), word(Word::I, s.i, scale());
+  word(Word::R, s.r, scale()), word(Word::U, s.u, scale()), word(Word::W, s.w, scale());
+  if (which == 0) word(Word::P, s.passes, 1.0);
+  else if (c.has(Word::P)) s.sub = (int)c.get(Word::P);
+  if (which == 0 && !(s.passes >= 1 && s.passes < 1e6))
+    return error("G70 P (the number of passes) must be at least 1", "bad-number");
+  std::vector<ContourElem> moves;
+  std::string err;
+  if (!rs274Turning(ct, s, moves, err)) return error(err, "contour-invalid");
+  return emitContourMoves(moves, kRs274Names[which]);
+}
+
+// A consumer's moves (plane coordinates of the ZX plane) between its cycle records.
+bool Executor::Impl::emitContourMoves(const std::vector<ContourElem> &moves, const char *name) {
+  const PlaneAxes ax = planeAxes(plane());
   MotionRecord begin = record(RecordKind::CycleBegin);
-  begin.text = kUseNames[(int)use];
+  begin.text = name;
   emit(begin);
   for (auto &m : moves) {
     AxisVec to = st.position;

@@ -570,6 +570,9 @@ struct Executor::Impl {
   bool patternSet = false;
   bool contourData(const MachineCmd &c);
   bool contourConsume(const MachineCmd &c);
+  bool rs274Contour(const MachineCmd &c, const struct Contour &ct);  // LinuxCNC G70-G72
+  bool rs274ContourAllowed(ContourUse use);
+  bool emitContourMoves(const std::vector<struct ContourElem> &moves, const char *name);
   // The captured records as a contour in the active plane (the state put back as at `begin`).
   bool capturedContour(struct Contour &ct);
   // Region pockets (ExecutorRegion.cpp): the outline and islands collected so far.

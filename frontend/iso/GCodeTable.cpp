@@ -139,6 +139,14 @@ static const GCodeInfo kRs274GCodes[] = {
     SPECIAL(431, ToolLength, ToolLength, 2, "dynamic tool length offset"),
     SPECIAL(432, ToolLength, ToolLength, 3, "additional tool length offset"),
     MODE(760, Motion, ThreadCycle, "threading cycle"),
+    // LinuxCNC's lathe contour cycles (Q the profile's subroutine; LowerTurning.cpp).
+    SPECIAL(700, TurnCycle, NonModal, 700, "finishing cycle"),
+    SPECIAL(710, TurnCycle, NonModal, 710, "stock removal in turning"),
+    SPECIAL(711, TurnCycle, NonModal, 711, "stock removal in turning, no pockets"),
+    SPECIAL(712, TurnCycle, NonModal, 712, "stock removal in turning, pockets only"),
+    SPECIAL(720, TurnCycle, NonModal, 720, "stock removal in facing"),
+    SPECIAL(721, TurnCycle, NonModal, 721, "stock removal in facing, no pockets"),
+    SPECIAL(722, TurnCycle, NonModal, 722, "stock removal in facing, pockets only"),
 };
 
 const GCodeInfo *findRs274GCode(int32_t code10) {

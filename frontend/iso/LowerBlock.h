@@ -194,6 +194,7 @@ struct BlockLowerer::Block {
   bool cornerTaken = false;  // a ,C / ,R went to the move
   bool coordinateOps();  // G10/G92, G28/G30, G53
   bool turnCycle();      // G70-G73 (LowerTurning.cpp)
+  bool rs274TurnCycle(); // LinuxCNC G70, G71 (.1 .2), G72 (.1 .2) (LowerTurning.cpp)
   bool speedOp();        // S, G96/G97, G50 S / G92 S (LowerTurning.cpp)
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
   bool motion();

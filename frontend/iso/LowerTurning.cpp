@@ -30,6 +30,7 @@ const char *const kDataWords[] = {"", "UR", "WR", "UWR"};
 
 bool BlockLowerer::Block::turnCycle() {
   if (!nonModal || nonModal->kind != GKind::TurnCycle) return true;
+  if (L.flavour_ == Flavour::RS274) return rs274TurnCycle();
   const SourceLoc loc = gloc(GGroup::NonModal);
   const int code = nonModal->arg;
   const char *use = kUses[code - 70];
@@ -85,6 +86,65 @@ bool BlockLowerer::Block::turnCycle() {
     for (char c : std::string_view("UW"))
       if (bw.has(c)) add(end, c, take(c, Scale::Linear));
   if (code != 70) emit(OpKind::Goto, loc).set("label", Expr::string(fmt::format("N{}_end", range[1]), loc));
+  return true;
+}
+
+// LinuxCNC's G70/G71/G72 (2.9 documentation "G70 Finishing Cycle", "G71 G72 Roughing Cycles"):
+//   G7x Q<sub> X Z [D I R U W] [E P]   mode motion=rapid; move X Z (rs274 goes to X Z first)
+//                                      contour action=begin use=(as at end)
+//                                      call callee="O<sub>" frame=new
+//                                      contour action=end use=rs274_finish|rs274_rough_z|rs274_rough_x
+//                                        D E I P R U W (type=1/2 for G7x.1/G7x.2)
+//                                      mode motion=cycle_off
+// The subroutine is the profile, run from X Z into the capture; the executor cuts it as rs274
+// does (runtime/cycles/TurningRs274.h). rs274 leaves the mode of its last move (G0, G1, G2 or
+// G3) in force afterwards; ncc leaves none, so axis words after the cycle need a motion code.
+bool BlockLowerer::Block::rs274TurnCycle() {
+  const SourceLoc loc = gloc(GGroup::NonModal);
+  const int code10 = nonModal->arg;
+  const std::string name = gName(code10);
+  axesTaken = true;
+  if (G(GGroup::Motion)) {
+    L.diags_->error(gloc(GGroup::Motion), fmt::format("{} must not share its block with {}", name, gName(G(GGroup::Motion)->code10)),
+                   "modal-group-conflict");
+    return false;
+  }
+  IsoWord *q = bw.get('Q');
+  if (!q) {
+    L.diags_->error(loc, fmt::format("{} requires a Q word (the profile's subroutine number)", name), "missing-word");
+    return false;
+  }
+  if (!q->expr && (q->value < 0 || q->value != std::floor(q->value) || q->value > 99999999)) {
+    L.diags_->error(q->loc, fmt::format("{} Q must be a subroutine number", name), "syntax");
+    return false;
+  }
+  bw.used |= Words::bit('Q');
+  if (!callAllowed(loc, name)) return false;
+  add(emit(OpKind::Mode, loc), "motion", Expr::symbol(modeValueInfo(ModeValue::Rapid).name, loc));
+  if (bw.hasAny("XZ")) axisWords(emit(OpKind::Move, loc), "XZ");
+  static const char *const kUse[] = {"rs274_finish", "rs274_rough_z", "rs274_rough_x"};
+  Op &begin = emit(OpKind::Contour, loc);
+  begin.set("action", Expr::symbol("begin", loc));
+  begin.set("use", Expr::symbol(kUse[code10 / 10 - 70], loc));
+  Op &call = emit(OpKind::Call, loc);
+  if (q->expr) {  // Q[...]: the number is computed, its sub O<n> found when the call runs
+    call.set("callee", q->expr->clone());
+  } else {
+    const std::string callee = fmt::format("O{}", (long long)q->value);
+    L.calls.push_back({callee, loc});
+    call.set("callee", Expr::string(callee, loc));
+  }
+  call.set("frame", Expr::symbol("new", loc));
+  Op &end = emit(OpKind::Contour, loc);
+  end.set("action", Expr::symbol("end", loc));
+  end.set("use", Expr::symbol(kUse[code10 / 10 - 70], loc));
+  // G70: D E the first and last pass's distance, P the passes; G71/G72: D the finishing distance,
+  // I the depth of cut, R the retract, U W a shift. rs274 checks I > 0 for G70 too.
+  for (char c : std::string_view(code10 == 700 ? "DEIP" : "DIR"))
+    if (bw.has(c)) add(end, c, take(c, c == 'P' ? Scale::None : Scale::Linear));
+  if (code10 % 10) end.set("type", Expr::number(code10 % 10, ir::Type::Int, loc));
+  add(emit(OpKind::Mode, loc), "motion", Expr::symbol(modeValueInfo(ModeValue::CycleOff).name, loc));
+  L.motion_ = ModeValue::CycleOff;
   return true;
 }
 
