@@ -54,6 +54,14 @@ HoleSpec isoHole(const CycleInput &in, double r, double bottom, double clear) {
     h.exit = HoleExit::Tap;
     h.dwellBottom = in.p;
     h.spindle = in.cycle == ModeValue::Tap ? 1 : 2;
+    if (in.tapPecks) {
+      // The tap stays in its thread: every move in the hole is at the feed, reversed out.
+      h.peck = in.q;
+      h.breaksPerRetract = in.tapPecks == 2 ? -1 : 0;
+      h.chipBreak = h.reentry = in.tapBack;
+      h.chipBreakRapid = false;
+      h.fullRetractFeed = 0;
+    }
     break;
   case ModeValue::BoreFeed: h.exit = HoleExit::Feed, h.exitLevel = r; break;
   case ModeValue::BoreStop: h.exit = HoleExit::SpindleStopRapid, h.dwellBottom = in.p; break;
@@ -130,7 +138,7 @@ bool expandCycle(const CycleInput &in, std::vector<CycleStep> &out, std::string 
     err = std::string("R less than z in cycle in ") + ax.name + " plane";
     return false;
   }
-  bool peck = in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak;
+  bool peck = in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak || in.tapPecks;
   if (peck) {
     if (!(in.q > 0)) {
       err = "Negative or zero q value used";

@@ -43,6 +43,11 @@ struct CycleInput {
   // oriented stop's angle and the side the tool moves off the wall by Q (Controller::boringLift).
   double orientAngle = 0;
   int lift = 0;
+  // 808D peck tapping (G84/G74 with Q, machine peck_tapping = GUD _ZSFI[1]): 0 one pass, 2 chip
+  // breaking (back by tapBack after each infeed of q), 3 chip removal (back to R, then in again
+  // at the feed to tapBack short of the last depth).
+  int tapPecks = 0;
+  double tapBack = 1;
 };
 
 // Appends the steps of one cycle block to `out`. Returns false with an rs274-like message in

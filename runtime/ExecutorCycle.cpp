@@ -33,7 +33,8 @@ void cycleParams(MotionRecord &r, const CycleInput &in, const std::vector<CycleS
   r.setParam(kWordKeys[d], z);
   r.setParam("R", rLevel);
   const bool boring = in.cycle == ModeValue::BoreFine || in.cycle == ModeValue::BoreBack;
-  if (in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak || boring) r.setParam("Q", in.q);
+  if (in.cycle == ModeValue::Peck || in.cycle == ModeValue::PeckChipBreak || boring || in.tapPecks)
+    r.setParam("Q", in.q);
   if (in.cycle == ModeValue::DrillDwell || in.cycle == ModeValue::BoreStop || in.cycle == ModeValue::BoreDwell ||
       boring)
     r.setParam("P", in.p);
@@ -75,6 +76,17 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
     return error(std::string(code) + " under a coordinate rotation, scaling or mirror is not supported: the shift "
                                      "off the wall would no longer point away from the oriented cutting edge",
                  "unsupported-code");
+  const bool tapping = cyc == ModeValue::Tap || cyc == ModeValue::TapLeft;
+  if (first) tapQ = false;
+  if (tapping && c.has(Word::Q)) {
+    // 808D peck tapping: the machine's GUD _ZSFI[1] says how; without it Q has no meaning.
+    if (machine.controller.peckTapping == "off")
+      return error(std::string(code) + " with Q (peck tapping) needs the machine's [controller] peck_tapping "
+                                       "(808D GUD _ZSFI[1]: chip-breaking or chip-removal)",
+                   "unsupported-code");
+    if (!(cycleQ > 0)) return error("Negative or zero q value used", "cycle-invalid");
+    tapQ = true;
+  }
   bool peck = cyc == ModeValue::Peck || cyc == ModeValue::PeckChipBreak;
   if (peck && !haveQ) return error(std::string("Q word missing with ") + lower(code), "cycle-missing-word");
   int repeats = 1;
@@ -117,6 +129,11 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   in.spindle = st.spindle;
   in.orientAngle = machine.controller.boringOrientAngle;
   in.lift = machine.controller.boringLift;
+  if (tapping && tapQ) {
+    in.tapPecks = machine.controller.peckTapping == "chip-breaking" ? 2 : 3;
+    const double d = machine.controller.chipBreakRetract;  // _ZSFR[1]: 0 means 1 mm
+    in.tapBack = d > 0 ? d : 1.0;
+  }
   for (int i = 0; i < 3; ++i) {
     if (i == d) continue;
     bool has = c.has((Word)i);

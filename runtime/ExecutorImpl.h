@@ -172,6 +172,7 @@ struct Executor::Impl {
   ModeValue lastCycle = ModeValue::CycleOff;
   double cycleR = 0, cycleZ = 0, cycleQ = 0, cycleP = 0;
   bool haveQ = false;
+  bool tapQ = false;  // a Q given since G84/G74 was entered: 808D peck tapping (machine peck_tapping)
   std::vector<CycleStep> steps;
 
   int cutterD = 0;

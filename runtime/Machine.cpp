@@ -377,6 +377,8 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"boring_orient_angle", &Controller::boringOrientAngle, 0, 360},
     {"boring_lift", &Controller::boringLift, 0, 4},
     {"peck_retract", &Controller::peckRetract, 0, 1000},
+    {"peck_tapping", &Controller::peckTapping, 0, 0, false, "off chip-breaking chip-removal"},
+    {"chip_break_retract", &Controller::chipBreakRetract, 0, 1000},
     {"probe_feed", &Controller::probeFeed, 0.001, 100000},
     {"probe_fmax", &Controller::probeFmax, 0.001, 100000},
     {"probe_prepos", &Controller::probePrepos, 0, 0, false, "machine probe"},

@@ -123,6 +123,12 @@ struct Controller {
   // The retract e after each peck of the lathe's G74/G75 until a program gives `G74 R` (808D GUD
   // _ZSFI[29]), mm. 1 mm as the 808D's milling peck retract _ZSFR[1] takes for 0.
   double peckRetract = 1.0;
+  // Peck tapping of the milling G84/G74 with Q (808D GUD _ZSFI[1]): "off" (Q in a tapping block
+  // is an error), "chip-breaking" (_ZSFI[1] = 2: back by chipBreakRetract after each infeed) or
+  // "chip-removal" (_ZSFI[1] = 3: back to R after each infeed). chipBreakRetract is the GUD
+  // _ZSFR[1] in mm; 0 takes the 808D's 1 mm.
+  std::string peckTapping = "off";
+  double chipBreakRetract = 0;
   // Key tool_write: "on-select" (default) or "immediate".
   std::string toolWrite = "on-select";
   ToolWrite toolWritePolicy() const { return toolWrite == "immediate" ? ToolWrite::Immediate : ToolWrite::OnSelect; }

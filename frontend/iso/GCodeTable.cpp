@@ -49,7 +49,9 @@ static const GCodeInfo kGCodes[] = {
     SPECIAL(280, Home, NonModal, 1, "reference point return"),
     SPECIAL(281, SetOffset, NonModal, 5, "store reference point 1"),
     SPECIAL(300, Home, NonModal, 2, "2nd/3rd/4th reference point return"),
-    SPECIAL(301, SetOffset, NonModal, 6, "store reference point 2"),
+    // 808D G30.1 "reference point position" is listed without a format or meaning (L582, L5469;
+    // Fanuc's G30.1 returns to the floating reference point): refused, not LinuxCNC's store.
+    UNSUP(301, NonModal, "reference point position (listed without a description by the 808D manual)"),
     NOOP(310, NonModal, "skip function (the motion mode skip for its block, ISO-MEAS-01)"),
     UNSUP(320, Motion, "thread cutting"),
     UNSUP(330, Motion, "thread cutting"),
@@ -136,6 +138,7 @@ static const GCodeInfo kRs274GCodes[] = {
     MODE(383, Motion, ProbeTowardNoError, "straight probe toward the work"),
     MODE(384, Motion, ProbeAway, "straight probe away from the work, error on a miss"),
     MODE(385, Motion, ProbeAwayNoError, "straight probe away from the work"),
+    SPECIAL(301, SetOffset, NonModal, 6, "store reference point 2"),
     SPECIAL(431, ToolLength, ToolLength, 2, "dynamic tool length offset"),
     SPECIAL(432, ToolLength, ToolLength, 3, "additional tool length offset"),
     MODE(760, Motion, ThreadCycle, "threading cycle"),
@@ -274,9 +277,9 @@ struct CycleWords {
   const char *fanuc, *rs274;
 };
 static const CycleWords kCycleWords[] = {
-    {MV::PeckChipBreak, "Q", "Q"}, {MV::TapLeft, "P", ""},  {MV::BoreFine, "PQ", ""},
+    {MV::PeckChipBreak, "Q", "Q"}, {MV::TapLeft, "PQ", ""},  {MV::BoreFine, "PQ", ""},
     {MV::Drill, "", ""},           {MV::DrillDwell, "P", "P"}, {MV::Peck, "Q", "Q"},
-    {MV::Tap, "P", ""},            {MV::BoreFeed, "", ""},  {MV::BoreStop, "", "P"},
+    {MV::Tap, "PQ", ""},            {MV::BoreFeed, "", ""},  {MV::BoreStop, "", "P"},
     {MV::BoreBack, "PQ", ""},      {MV::BoreDwell, "P", "P"},
 };
 

@@ -297,8 +297,38 @@ void BlockLowerer::Block::checkFeed(const IsoWord &f) {
     L.diags_->warning(f.loc, "path feed F must be greater than zero (808D alarm 14800)", "zero-feed");
 }
 
+// 808D ISO (ISO-LEX-11, manual L1466): G13.1 is programmed in a block of its own (block number
+// and comments only). G04 (dwell-with-motion) and G68/G69 (frameOps) have their own checks, G07.1
+// and G12.1 are refused as codes. G20/G21 are not held to it: the manual's own example (spec
+// example 60, `G21 X100`) breaks its rule of L2063, and ncc applies a block's unit to its words.
+bool BlockLowerer::Block::standAloneOk() {
+  const GCodeInfo *gi = G(GGroup::Polar);
+  if (L.flavour_ != Flavour::Fanuc || !gi || gi->code10 != 131) return true;
+  if (!nm && !bw.present && (groups & (groups - 1)) == 0) return true;
+  L.diags_->error(gs[(size_t)GGroup::Polar].word->loc,
+                  fmt::format("{} must be programmed in a block of its own (no other codes or words)", gName(131)),
+                  "syntax");
+  return false;
+}
+
+// 808D mills (ISO-MOT-06, ISO-CS-10; L5804-5818, L6349-6378): U V W in a plane-selection block
+// choose a plane with that parallel axis, and in an arc block they make the arc in such a plane.
+// ncc's planes are XY, ZX and YZ only: both are errors, never an XY arc with U moving along.
+bool BlockLowerer::Block::parallelAxesOk() {
+  if (L.flavour_ != Flavour::Fanuc || L.lathe_ || !bw.hasAny("UVW")) return true;
+  const char *what = G(GGroup::Plane) ? "a plane with a parallel axis U, V or W (G17-G19 with U V W)"
+                     : L.motion_ == ModeValue::ArcCW || L.motion_ == ModeValue::ArcCCW ? "an arc in a plane with a parallel axis U, V or W"
+                                        : nullptr;
+  if (!what) return true;
+  const IsoWord *w = bw.w[Words::slot(bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W')];
+  L.diags_->error(w->loc, fmt::format("{} is not supported", what), "unsupported-code");
+  return false;
+}
+
 bool BlockLowerer::Block::setup() {
+  if (!standAloneOk()) return false;
   trackModes();
+  if (!parallelAxesOk()) return false;
   nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
   // In G16 X and Y are a radius and an angle; G28/G30/G92/G53/G10/G52/G04 X... would read them

@@ -83,6 +83,8 @@ struct BlockLowerer::Block {
   const GCodeInfo *nonModal = nullptr;
 
   Block(BlockLowerer &l, ParsedBlock &blk, Region &o) : L(l), b(blk), out(o) {}
+  bool standAloneOk();
+  bool parallelAxesOk();
 
   // Divisor of a word written without a decimal point (spec 2.3, tables 1-1 / 2-1). Dividing
   // by a power of ten keeps X1234 in IS-B exactly 1.234.

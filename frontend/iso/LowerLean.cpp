@@ -72,6 +72,7 @@ bool BlockLowerer::Block::leanClassify() {
 // the block's mode and move use (an unused word takes lowerActions, which reports it).
 bool BlockLowerer::Block::leanFits() const {
   if (nm || macroCall || (groups & ~kLeanGroups)) return false;
+  if (L.flavour_ == Flavour::Fanuc && !L.lathe_ && bw.hasAny("UVW")) return false;  // setup's parallelAxesOk
   for (uint32_t g = groups; g; g &= g - 1)
     if (gs[__builtin_ctz(g)].info->kind != GKind::Mode) return false;
   const ModeValue m = G(GGroup::Motion) ? G(GGroup::Motion)->mode : L.motion_;

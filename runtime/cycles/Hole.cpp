@@ -25,6 +25,11 @@ public:
     st.kind = k;
     out_.push_back(st);
   }
+  // A tap's spindle stops and turns the other way (`reversed`) or back the tapping way.
+  void tapTurn(int tapDir, bool reversed) {
+    spindle(CycleStepKind::SpindleStop);
+    spindleOn((tapDir == 2) != reversed ? 2 : 1);
+  }
   void spindleOn(int dir) { spindle(dir == 2 ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW); }
   void orient(double angle) {
     CycleStep st;
@@ -62,6 +67,7 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
   const double dir = h.bottom < h.start ? -1.0 : 1.0;
   auto above = [&](double level) { return dir < 0 ? level > h.bottom : level < h.bottom; };
   bool first = true;
+  const bool tap = h.exit == HoleExit::Tap;
   auto feedTo = [&](double level) {
     w.feed(level, first && h.firstFeed > 0 ? h.firstFeed : h.feed);
     first = false;
@@ -74,13 +80,22 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
       if (!above(next)) break;
       feedTo(next);
       w.dwell(h.dwellPeck);
+      if (tap) w.tapTurn(h.spindle, true);  // out with the spindle reversed
       if (h.breaksPerRetract < 0 || breaks < h.breaksPerRetract) {
         w.go(next - dir * h.chipBreak, h.chipBreakRapid, h.feed);
+        if (tap) w.tapTurn(h.spindle, false);
         ++breaks;
       } else {
         w.go(h.start, h.fullRetractFeed < 0, std::max(h.fullRetractFeed, 0.0));
         w.dwell(h.dwellTop);
-        w.rapid(next - dir * h.reentry);
+        if (tap) w.tapTurn(h.spindle, false);
+        // A tap goes back in along its thread at the feed; a drill at rapid.
+        const double reentry = next - dir * h.reentry;
+        if (tap) {
+          if ((reentry - h.start) * dir > 0) w.feed(reentry, h.feed);
+        } else {
+          w.rapid(reentry);
+        }
         breaks = 0;
       }
       cur = next;
@@ -127,13 +142,10 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
   case HoleExit::Tap: {
     // Reverse at the bottom, feed straight out, restore the direction (rs274 order: the dwell
     // comes after the reversal).
-    bool right = h.spindle != 2;
-    w.spindle(CycleStepKind::SpindleStop);
-    w.spindle(right ? CycleStepKind::SpindleCCW : CycleStepKind::SpindleCW);
+    w.tapTurn(h.spindle, true);
     w.dwell(h.dwellBottom);
     w.feed(h.retract, h.exitFeed);
-    w.spindle(CycleStepKind::SpindleStop);
-    w.spindle(right ? CycleStepKind::SpindleCW : CycleStepKind::SpindleCCW);
+    w.tapTurn(h.spindle, false);
     break;
   }
   }

@@ -33,6 +33,8 @@ struct HoleSpec {
   // After each peck: a chip break (back by chipBreak, rapid or at the feed) or a full retract to
   // `start`, a dwell there, and a rapid back to `reentry` above the last depth. breaksPerRetract:
   // -1 always chip break, 0 always full retract, n: n chip breaks, then a full retract.
+  // With the Tap exit (808D peck tapping) the spindle reverses for each way out and turns the
+  // tapping way again before the next infeed, and the way back in is at the feed.
   int breaksPerRetract = 0;
   double chipBreak = 0;
   bool chipBreakRapid = true;
