@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets (test/fuzz) with clang-19 into ./build-fuzz and runs each for
 # SECONDS (default 60), starting from the seed corpus test/fuzz/corpus/<target>, mutating
 # with the words of test/fuzz/<target>.dict.
-# Usage: utils/fuzz.sh [SECONDS] [TARGET...]   (targets: iso ir machine motion heidenhain; default all)
+# Usage: utils/fuzz.sh [SECONDS] [TARGET...]
+#   (targets: iso ir machine motion heidenhain sinumerik apt adem; default all)
 # New inputs go to build-fuzz/corpus/<target> (not the repository); findings (crash-*, leak-*,
 # timeout-*, oom-*) to build-fuzz/findings/<target>/. Reproduce one with
 #   build-fuzz/test/fuzz/fuzz-<target> FILE
@@ -12,15 +13,19 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(iso ir machine motion heidenhain)
+[ ${#targets[@]} -eq 0 ] && targets=(iso ir machine motion heidenhain sinumerik apt adem)
 
 utils/install-missing.sh clang-19 libclang-rt-19-dev
 
 if [ ! -f build-fuzz/build.ninja ]; then
+  # -O1 and line tables only, as OSS-Fuzz builds: smaller objects than -O2 -g, the reports
+  # still name file and line.
   cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
+        -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
         -DCMAKE_C_COMPILER=clang-19 -DCMAKE_CXX_COMPILER=clang++-19 -DNCC_FUZZ=ON
 fi
-ninja -C build-fuzz -j2 "${targets[@]/#/fuzz-}"
+nice ninja -C build-fuzz -j2 "${targets[@]/#/fuzz-}"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}

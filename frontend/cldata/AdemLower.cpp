@@ -254,11 +254,11 @@ bool AdemLowerer::dwell(const AdemRecord &r) {
 bool AdemLowerer::tool(const AdemRecord &r) {
   double pocket;
   if (!need(r, 4, "the pocket: `Позиция n` in the listing", pocket)) return false;
-  if (pocket < 1 || pocket != std::floor(pocket)) return bad(r, 4, pocket, "the pocket, a whole number from 1");
+  if (!isToolNumber(pocket)) return bad(r, 4, pocket, fmt::format("the pocket, a whole number from 1 to {}", kMaxToolNumber).c_str());
   int h = (int)pocket;
   if (opt(r, 9) == 1) {  // the Z length offset's number, when the record gives one
     double z = opt(r, 10);
-    if (z < 0 || z != std::floor(z)) return bad(r, 10, z, "the Z offset's number, a whole number");
+    if (!isToolNumber(z, 0)) return bad(r, 10, z, fmt::format("the Z offset's number, a whole number from 0 to {}", kMaxToolNumber).c_str());
     h = (int)z;
   }
   double kind = opt(r, 3);

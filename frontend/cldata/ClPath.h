@@ -5,7 +5,9 @@
 #pragma once
 #include "ir/Diagnostics.h"
 #include "ir/NCIR.h"
+#include "ir/SystemVars.h"
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -26,6 +28,10 @@ struct ClArc {
 // The module a CL file lowers to: dialect, name, and its one function "main" (returned, to be
 // filled and then pushed into out.functions).
 ir::Function beginClModule(SourceManager &sm, uint32_t file, ir::Module &out);
+
+// A tool (or length offset) number the machine file can hold: a whole number from `from` to
+// kMaxToolNumber. Checked before the value becomes an int (a larger double does not fit one).
+inline bool isToolNumber(double v, int from = 1) { return v >= from && v <= kMaxToolNumber && v == std::floor(v); }
 
 // How a front end names its records in the shared diagnostics.
 struct ClWords {

@@ -129,7 +129,8 @@ bool Lowerer::multax(const Record &r) {
 bool Lowerer::loadtl(const Record &r) {
   std::vector<double> v;
   if (!numbers(r, 1, 1, v)) return false;
-  if (v[0] < 1 || v[0] != std::floor(v[0])) return error(r.params[0].loc, "LOADTL needs a tool number (a whole number from 1)", "syntax");
+  if (!isToolNumber(v[0]))
+    return error(r.params[0].loc, fmt::format("LOADTL needs a tool number (a whole number from 1 to {})", kMaxToolNumber), "syntax");
   toolLoad((int)v[0], (int)v[0], r.loc);
   return true;
 }

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace ncc::sin {
 
 using ir::Expr;
@@ -87,6 +89,12 @@ bool BlockParser::arrayInit(const Expr &target, const VarDecl &d, std::vector<Op
   for (size_t k = 0; k < target.args.size(); ++k) {
     const Expr &ix = *target.args[k];
     if (ix.kind != ir::ExprKind::Number) return fail(t_[i_ - 1], "SET/REP into an element given by a computed index is not supported", "unsupported-code");
+    // A constant index outside the array, or one index too many, names no element.
+    if (k >= d.dims.size())
+      return fail(t_[i_ - 1], fmt::format("SET/REP: array '{}' has {} dimension(s)", target.str, d.dims.size()));
+    if (ix.num < 0 || ix.num >= d.dims[k] || ix.num != std::floor(ix.num))
+      return fail(t_[i_ - 1], fmt::format("SET/REP: index {} of array '{}' is not a whole number from 0 to {}", ix.num,
+                                          target.str, d.dims[k] - 1));
     start = start * d.dims[k] + (size_t)ix.num;
   }
   size_t count;
@@ -94,7 +102,11 @@ bool BlockParser::arrayInit(const Expr &target, const VarDecl &d, std::vector<Op
   if (rep) {
     if (vals.empty() || vals.size() > 2) return fail(t_[i_ - 1], "REP takes a value and an optional count");
     if (vals.size() == 2 && vals[1]->kind != ir::ExprKind::Number) return fail(t_[i_ - 1], "the count of REP must be a constant");
-    count = vals.size() == 2 ? (size_t)vals[1]->num : total - start;
+    double n = vals.size() == 2 ? vals[1]->num : double(total - start);
+    if (n < 0 || n > double(total - start) || n != std::floor(n))
+      return fail(t_[i_ - 1], fmt::format("the count {} of REP does not fit array '{}' of {} elements from element {}", n,
+                                          target.str, total, start));
+    count = (size_t)n;
     value = std::move(vals[0]);
   } else {
     count = vals.size();
@@ -323,7 +335,8 @@ bool BlockParser::proc() {
       d.isChar = std::string_view(ty->name) == "CHAR";
       if (ty->type == ir::Type::String && tok().is("[")) {
         ++i_;
-        if (tok().kind != Tok::Number) return fail(tok(), "expected the STRING length");
+        if (tok().kind != Tok::Number || !tok().isInt || tok().num < 1 || tok().num > 200)
+          return fail(tok(), "the length of a STRING is an integer 1..200");
         d.len = (unsigned)tok().num;
         ++i_;
         if (!expect("]")) return false;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
 
 namespace ncc::sin {
 
@@ -57,7 +58,7 @@ bool BlockParser::addressWord() {
     ++i_;
     if (letters == "G") {  // G01 is G1
       if (!t.isInt) return fail(t, fmt::format("unknown G function {}", t.text), "unknown-code");
-      return gcode(fmt::format("G{}", (long)t.num), t);
+      return gcode(fmt::format("G{}", t.num), t);  // a double: G99999999999999999999 has no long
     }
   } else if (full && (peek().kind == Tok::Number || ((peek().is("-") || peek().is("+")) && peek(2).kind == Tok::Number))) {
     w.addr = t.text;  // X-10, X 10
@@ -110,8 +111,10 @@ bool BlockParser::addressWord() {
   const AddrInfo *a = findAddress(w.addr);
   if (a->kind == Addr::Refused) return fail(t, fmt::format("{} ({}) is not simulated", w.addr, a->why), "unsupported-code");
   if (a->kind == Addr::Misc) {
-    if (w.value->kind != ir::ExprKind::Number || w.value->num != std::floor(w.value->num) || w.value->num < 0)
-      return fail(t, "an M function is a constant non-negative integer (M=expressions are not simulated)", "unsupported-code");
+    if (w.value->kind != ir::ExprKind::Number || w.value->num != std::floor(w.value->num) || w.value->num < 0 ||
+        w.value->num > INT32_MAX)
+      return fail(t, "an M function is a constant integer from 0 to 2147483647 (M=expressions are not simulated)",
+                  "unsupported-code");
     mcodes_.push_back({(int)w.value->num, l});
     return true;
   }

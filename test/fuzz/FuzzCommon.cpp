@@ -120,6 +120,24 @@ std::string roundTrip(Session &s, const ir::Module &m) {
   return text;
 }
 
+bool loadAndRun(std::string_view name, std::string_view text) {
+  bool small = text.size() <= kMaxRunBytes;
+  {
+    Session s;
+    s.diags.setErrorLimit(100000);
+    uint32_t f = s.add(name, text);
+    if (small) s.lint(f);
+  }
+  Session s;
+  uint32_t f = s.add(name, text);
+  ir::Module m;
+  if (!s.load(f, m)) return false;
+  roundTrip(s, m);
+  MotionBuffer whole;
+  if (small && s.executeModule(m, whole)) feedSinks(s, whole);
+  return true;
+}
+
 std::string motionText(const MotionBuffer &b) {
   std::string t;
   for (auto &r : b.records) t += printMotionRecord(r) + "\n";

@@ -40,6 +40,11 @@ bool feedSinks(Session &s, const MotionBuffer &records);
 // every pass must survive it. Returns the printed text.
 std::string roundTrip(Session &s, const ir::Module &m);
 
+// What a user runs on one program file named `name` (its extension picks the front end): ncc lint
+// (recovery after front-end errors), then ncc compile / ncc opt (roundTrip) and, for inputs up to
+// kMaxRunBytes, ncc run of the module into every sink. Returns whether the module loaded.
+bool loadAndRun(std::string_view name, std::string_view text);
+
 // The records as Motion IR text, for comparing two runs.
 std::string motionText(const MotionBuffer &b);
 

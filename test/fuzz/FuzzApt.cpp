@@ -1,0 +1,8 @@
+// libFuzzer target: the APT CL text reader (frontend/cldata, .apt), then everything a user would
+// run on the module (see FuzzCommon.h): the IR round trip and passes, the run into every sink.
+#include "test/fuzz/FuzzCommon.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  ncc::fuzz::loadAndRun("fuzz.apt", std::string_view((const char *)data, size));
+  return 0;
+}
