@@ -36,11 +36,16 @@ static const char *const kControl[] = {"IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE
 bool BlockParser::parse() {
   // Block number: N10 (auxiliary) or :10 (main block).
   int64_t n = -1;
+  // A number past any integer would make the conversion undefined (found by fuzz-sinumerik).
+  auto number = [&](const Token &t) {
+    if (t.num >= 0 && t.num <= 2147483647.0) return n = (int64_t)t.num, true;
+    return fail(t, "block number out of range (0 to 2147483647)");
+  };
   if (tok().kind == Tok::Name && tok().text[0] == 'N' && tok().digitsAt == 1 && !tok().fraction) {
-    n = (int64_t)tok().num;
+    if (!number(tok())) return false;
     ++i_;
   } else if (tok().is(":") && peek().kind == Tok::Number) {
-    n = (int64_t)peek().num;
+    if (!number(peek())) return false;
     i_ += 2;
   }
   // Label: NAME: (2-32 characters, the first two letters or '_', L4447). It goes before the
