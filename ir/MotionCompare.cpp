@@ -144,7 +144,9 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
     const MotionRecord &x = *pa[i].r, &y = *pb[j].r;
     std::string why;
     // A piece of a split move runs in the machine state of the move it is part of.
-    bool sameState = !opts.compareState || x.kind == RecordKind::Rapid || pa[i].state.diff(pb[j].state).empty();
+    std::string stateWhy =
+        !opts.compareState || x.kind == RecordKind::Rapid ? std::string() : pa[i].state.diff(pb[j].state);
+    bool sameState = stateWhy.empty();
     if (pieceSweep > 0 && x.kind == RecordKind::Arc && sameState && isPieceOf(x, y, opts)) {
       // The last piece of a split arc: the pieces together sweep what the arc does.
       double swept = pieceSweep + arcSweep(y), want = arcSweep(x);
@@ -213,8 +215,8 @@ bool comparePaths(const std::vector<MotionRecord> &a, const std::vector<MotionRe
     if (why.empty() && opts.compareFeed && x.kind != RecordKind::Rapid && x.kind != RecordKind::Dwell &&
         std::fabs(x.feed - y.feed) > 1e-6 * std::max(1.0, std::fabs(x.feed)))
       why = "feeds differ";
-    if (why.empty() && opts.compareState && x.kind != RecordKind::Rapid) why = pa[i].state.diff(pb[j].state);
-        if (why.empty()) { ++i, ++j, pieceSweep = pieceAlong = 0; continue; }
+    if (why.empty()) why = stateWhy;
+    if (why.empty()) { ++i, ++j, pieceSweep = pieceAlong = 0; continue; }
     double along = 0;
     if (pieceSweep == 0 && sameState && isPieceOf(x, y, opts, &along)) {
       // A piece of a split move: the rest follow on the same line (forwards) or circle.

@@ -16,12 +16,16 @@
 namespace ncc::sin {
 
 namespace {
+std::string upperName(std::string s) {
+  for (auto &c : s) c = (char)std::toupper((unsigned char)c);
+  return s;
+}
+
 // "NAME", "NAME[]", "NAME[,]", "NAME[8,]": the name and the index slots (-1 empty); false on a
 // syntax error (which ISVAR answers with FALSE).
 bool splitName(const std::string &text, std::string &name, std::vector<long> &slots, bool &bracket) {
   size_t b = text.find('[');
-  name = text.substr(0, b);
-  for (auto &c : name) c = (char)std::toupper((unsigned char)c);
+  name = upperName(text.substr(0, b));
   bracket = b != std::string::npos;
   if (name.empty()) return false;
   if (!bracket) return true;
@@ -43,14 +47,16 @@ bool splitName(const std::string &text, std::string &name, std::vector<long> &sl
 }
 }  // namespace
 
-// The one argument of an introspection function: a constant string, else null with an error.
-ir::ExprPtr BlockParser::constantName(const Token &t) {
+// The one argument of an introspection function: a constant string (or number for ISAXIS), else
+// null with an error.
+ir::ExprPtr BlockParser::constantArg(const Token &t, ir::ExprKind kind) {
   ++i_;  // (
   ir::ExprPtr arg = expr(0);
   if (!arg || !expect(")")) return nullptr;
-  if (arg->kind != ir::ExprKind::String) {
-    fail(t, fmt::format("{} with a computed name is not supported (a constant string is answered when the program is read)",
-                        t.text),
+  if (arg->kind != kind) {
+    bool str = kind == ir::ExprKind::String;
+    fail(t, fmt::format("{} with a computed {} is not supported (a constant{} is answered when the program is read)",
+                        t.text, str ? "name" : "axis number", str ? " string" : ""),
          "unsupported-code");
     return nullptr;
   }
@@ -59,7 +65,7 @@ ir::ExprPtr BlockParser::constantName(const Token &t) {
 
 ir::ExprPtr BlockParser::isvar(const Token &t) {
   SourceLoc l = loc(t);
-  ir::ExprPtr arg = constantName(t);
+  ir::ExprPtr arg = constantArg(t, ir::ExprKind::String);
   if (!arg) return nullptr;
   std::string name;
   std::vector<long> slots;
@@ -119,10 +125,9 @@ int systemTypeCode(std::string_view name) {
 
 ir::ExprPtr BlockParser::getvartyp(const Token &t) {
   SourceLoc l = loc(t);
-  ir::ExprPtr arg = constantName(t);
+  ir::ExprPtr arg = constantArg(t, ir::ExprKind::String);
   if (!arg) return nullptr;
-  std::string name = arg->str;
-  for (auto &c : name) c = (char)std::toupper((unsigned char)c);
+  std::string name = upperName(arg->str);
   auto answer = [&](int code) { return ir::Expr::number(code, ir::Type::Int, l); };
   if (name.find_first_of("[ ") != std::string::npos) {
     fail(t, fmt::format("GETVARTYP(\"{}\"): the name of a variable, without indices", arg->str));
@@ -159,12 +164,11 @@ bool userAddress(char c) { return std::strchr("DFHLMNOPST", c) != nullptr; }
 
 ir::ExprPtr BlockParser::stringis(const Token &t) {
   SourceLoc l = loc(t);
-  ir::ExprPtr arg = constantName(t);
+  ir::ExprPtr arg = constantArg(t, ir::ExprKind::String);
   if (!arg) return nullptr;
-  std::string name = arg->str;
+  std::string name = upperName(arg->str);
   name.erase(name.find_last_not_of(' ') + 1);  // "GETMDACT " in the manual's example 6
   name.erase(0, name.find_first_not_of(' '));
-  for (auto &c : name) c = (char)std::toupper((unsigned char)c);
   auto answer = [&](int code) { return ir::Expr::number(code, ir::Type::Int, l); };
   auto unknown = [&](const char *why) {
     fail(t, fmt::format("STRINGIS(\"{}\"): {}; ncc cannot tell what the control answers", arg->str, why),
@@ -209,14 +213,8 @@ ir::ExprPtr BlockParser::stringis(const Token &t) {
 
 ir::ExprPtr BlockParser::isaxis(const Token &t) {
   SourceLoc l = loc(t);
-  ++i_;  // (
-  ir::ExprPtr arg = expr(0);
-  if (!arg || !expect(")")) return nullptr;
-  if (arg->kind != ir::ExprKind::Number) {
-    fail(t, "ISAXIS with a computed axis number is not supported (a constant is answered when the program is read)",
-         "unsupported-code");
-    return nullptr;
-  }
+  ir::ExprPtr arg = constantArg(t, ir::ExprKind::Number);
+  if (!arg) return nullptr;
   if (arg->num != 1 && arg->num != 2 && arg->num != 3) {
     fail(t, fmt::format("ISAXIS takes a geometry axis number 1, 2 or 3, not {}", arg->num));
     return nullptr;
