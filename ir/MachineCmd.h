@@ -119,6 +119,10 @@ enum class FrameSlot : uint8_t { Local, Rotation, Scale, Mirror, Count };
 enum class ToolLengthForm : uint8_t { Table, Dynamic, Add };
 enum class FrameAction : uint8_t { Cancel, Set };
 constexpr uint8_t kFrameFormAxis = 0x10;  // in sub2, beside the FrameAction
+// combine=ordered (Heidenhain's cycles 8/10/11/26): the slot may be set while others are, and they
+// compose scale, then mirror, then rotation (ProgrammableFrame::update); without it (ISO G51,
+// G51.1, G68, whose manuals give no order) a second kind is an error.
+constexpr uint8_t kFrameCombine = 0x20;
 
 // Contour capture (runtime/ExecutorContour.cpp): `Begin` makes the following motion a contour
 // (records go to the capture, not the sinks), `End` hands it to a consumer (`ContourUse`) with

@@ -67,6 +67,8 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::Frame, "action", "cancel", (uint8_t)FrameAction::Cancel},
     {OpKind::Frame, "form", "plane", 0},
     {OpKind::Frame, "form", "axis", kFrameFormAxis},
+    {OpKind::Frame, "combine", "refuse", 0},
+    {OpKind::Frame, "combine", "ordered", kFrameCombine},
     {OpKind::Contour, "action", "data", (uint8_t)ContourAction::Data},
     {OpKind::Contour, "action", "begin", (uint8_t)ContourAction::Begin},
     {OpKind::Contour, "action", "end", (uint8_t)ContourAction::End},

@@ -172,9 +172,11 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     if (!symbolArg("kind", c.sub)) return false;
     break;
   case OpKind::Frame: {
-    uint16_t action = 0, form = 0;
-    if (!symbolArg("slot", c.sub) || !symbolArg("action", action) || !symbolArg("form", form)) return false;
-    c.sub2 = (uint16_t)(action | form);
+    uint16_t action = 0, form = 0, combine = 0;
+    if (!symbolArg("slot", c.sub) || !symbolArg("action", action) || !symbolArg("form", form) ||
+        !symbolArg("combine", combine))
+      return false;
+    c.sub2 = (uint16_t)(action | form | combine);
     break;
   }
   case OpKind::Contour:
@@ -311,6 +313,7 @@ Op cmdToOp(const MachineCmd &c) {
     op.set("action", Expr::symbol(opSymbolName(op.kind, "action", c.sub2 & 0x0f)));
     if (c.sub == (uint8_t)FrameSlot::Rotation && (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set)
       op.set("form", Expr::symbol(opSymbolName(op.kind, "form", c.sub2 & kFrameFormAxis)));
+    if (c.sub2 & kFrameCombine) op.set("combine", Expr::symbol("ordered"));
     break;
   case CmdKind::Contour:
     op.set("action", Expr::symbol(opSymbolName(op.kind, "action", c.sub)));

@@ -354,6 +354,7 @@ uint32_t resetGroupMask(const std::vector<std::string> &groups) {
 bool Executor::Impl::execFrame(const MachineCmd &c) {
   auto slot = (FrameSlot)c.sub;
   bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
+  bool combine = c.sub2 & kFrameCombine;
   if (comp.active()) return error("Cannot change the programmable frame with cutter radius comp on", "cutcomp-conflict");
   const AxisVec program = programPosition();
   auto word = [&](int axis, double def) { return c.has((Word)axis) ? c.get((Word)axis) * axisScale(axis) : def; };
@@ -371,7 +372,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
       pf.clearRotation();
       break;
     }
-    if (pf.scaleOn || pf.mirrorOn())
+    if (!combine && (pf.scaleOn || pf.mirrorOn()))
       return error("G68 together with scaling or mirroring (G51, G51.1) is not supported", "unsupported-code");
     bool axisForm = c.sub2 & kFrameFormAxis;
     const PlaneAxes ax = planeAxes(plane());
@@ -409,7 +410,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
       pf.clearScale();
       break;
     }
-    if (pf.rotationLevels || pf.mirrorOn())
+    if (!combine && (pf.rotationLevels || pf.mirrorOn()))
       return error("G51 together with a rotation or mirror (G68, G51.1) is not supported", "unsupported-code");
     // A G51 while scaling is on replaces it (the manual's example 2-20 does so).
     Vec3 f{c.has(Word::I) ? c.get(Word::I) : 1, c.has(Word::J) ? c.get(Word::J) : 1,
@@ -428,7 +429,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
         if (!any || c.has((Word)i)) pf.mirrorAxes[i] = 0, pf.mirrorAt[i] = 0;
       break;
     }
-    if (pf.rotationLevels || pf.scaleOn)
+    if (!combine && (pf.rotationLevels || pf.scaleOn))
       return error("G51.1 together with a rotation or scaling (G68, G51) is not supported", "unsupported-code");
     if (st.distance == ModeValue::Incremental)
       return error("G51.1 mirror positions are absolute: program it in G90", "frame-invalid");

@@ -71,8 +71,10 @@ void ProgrammableFrame::update() {
   Vec3 mirror{1, 1, 1};
   for (int i = 0; i < 3; ++i)
     if (mirrorAxes[i]) mirror[i] = -1;
-  c = Affine::scaling(mirror, mirrorAt);
-  if (scaleOn) c = c.then(Affine::scaling(scaleFactors, scaleCentre));
+  // Scale, then mirror, then rotate (Heidenhain's 26/11, 8, 10: digest seed002a §4.8's model;
+  // ISO never has two kinds at once).
+  if (scaleOn) c = Affine::scaling(scaleFactors, scaleCentre);
+  c = c.then(Affine::scaling(mirror, mirrorAt));
   if (rotationLevels == 2) c = c.then(rotation[1]);
   if (rotationLevels >= 1) c = c.then(rotation[0]);
   linear = !c.linearIdentity();

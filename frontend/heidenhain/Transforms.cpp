@@ -2,8 +2,8 @@
 // "Transformations"): 7 DATUM SHIFT (local shift), 10 ROTATION, 8 MIRROR IMAGE, 11 SCALING and
 // 26 AXIS-SPECIFIC SCALING. The TNC keeps one value of each (digest §4), kept in program-wide
 // variables; every definition takes the active rotation, scaling and mirror off, changes its
-// value and puts them back, because the core refuses a shift under them (and its mirror, scale,
-// rotation slots take no combination: such a combination is an error at run time here).
+// value and puts them back, because the core refuses a shift under them. The slots combine in the
+// digest's order (combine=ordered: 26 and 11, then 8, then 10, all about the datum).
 #include "frontend/heidenhain/Parser.h"
 
 #include <fmt/format.h>
@@ -43,6 +43,7 @@ Op slotOp(const char *slot, bool set, SourceLoc l) {
   Op o(OpKind::Frame, l);
   o.set("slot", Expr::symbol(slot));
   o.set("action", Expr::symbol(set ? "set" : "cancel"));
+  if (set) o.set("combine", Expr::symbol("ordered"));
   return o;
 }
 
@@ -60,14 +61,10 @@ void frameTakeOff(ir::Region &out, SourceLoc l) {
   out.push_back(when(mirrored(l), slotOp("mirror", false, l), l));
 }
 
-// Puts the active rotation, scaling and mirror back. Cycle 11 scales about the datum, cycle 26
+// Puts the active scaling, mirror and rotation back. Cycle 11 scales about the datum, cycle 26
 // about its centre: together they are one scaling only when 26's centre is the datum on its
 // scaled axes (a centre on an axis of factor 1 does nothing and is dropped at its definition).
 void framePutOn(ir::Region &out, SourceLoc l) {
-  out.push_back(when(bin(OpCode::And, rotated(l), bin(OpCode::Or, scaled(l), mirrored(l), l), l),
-                     abortOp("cycle 10 (rotation) together with cycle 8, 11 or 26 is not supported", l), l));
-  out.push_back(when(bin(OpCode::And, scaled(l), mirrored(l), l),
-                     abortOp("cycle 8 (mirror) together with cycle 11 or 26 is not supported", l), l));
   ExprPtr offCentre = bin(OpCode::Ne, g(kAxisCc[0], l), num(0), l);
   for (int i = 1; i < 3; ++i) offCentre = bin(OpCode::Or, std::move(offCentre), bin(OpCode::Ne, g(kAxisCc[i], l), num(0), l), l);
   out.push_back(when(bin(OpCode::And, bin(OpCode::Ne, g(kScl, l), num(1), l), std::move(offCentre), l),
