@@ -28,7 +28,7 @@ ExprPtr valueFor(OpKind op, const std::string &key) {
   static const std::map<std::string, const char *> kSymbols = {
       {"dir", "ccw"},       {"flood", "on"},   {"mist", "on"},   {"side", "left"}, {"d_default", "tool"},
       {"slot", "rotation"}, {"action", "set"}, {"form", "axis"}, {"ic", "X"}, {"ac", "Y"}, {"way", "shortest"},
-      {"mode", "css"},      {"after_css", "error"}, {"entry", "normal"},
+      {"mode", "css"},      {"after_css", "error"}, {"entry", "normal"}, {"combine", "ordered"},
   };
   if (key == "text") return Expr::string("x");
   if (op == OpKind::ToolLength && key == "form") return Expr::symbol("dynamic");
