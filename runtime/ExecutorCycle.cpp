@@ -2,6 +2,7 @@
 // resolves the words into the machine frame and turns the steps of expandCycle into records.
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
+#include "runtime/cycles/Entry.h"
 
 #include <cctype>
 #include <cmath>
@@ -256,6 +257,11 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
     case CycleStepKind::RigidTap:
       if (!cycleRigidTap(to, s)) return false;
       break;
+    case CycleStepKind::Thread:
+      if (!s.chain && !threadAllowed("a thread cycle")) return false;
+      if (!threadTo(to, s.lead, (ThreadAxis)s.along, s.chain ? ThreadSync::Chain : ThreadSync::Index, s.angle))
+        return false;
+      break;
     }
   }
   if (rate != feedMM) {
@@ -319,7 +325,11 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
   bool ok = pattern ? expandPattern(*pattern, *patternArgs, cyc, args, ctx, steps, err)
                     : cyc->expand ? cyc->expand(args, ctx, steps, err)
                                   : (err = "a position pattern: give it a cycle to run", false);
-  if (!ok) return x.error(std::string(name) + ": " + err, "cycle-invalid");
+  if (!ok) {  // entry::unsupported marks a parameter value ncc does not honour
+    const bool unsupported = err.compare(0, entry::kUnsupported.size(), entry::kUnsupported) == 0;
+    if (unsupported) err.erase(0, entry::kUnsupported.size());
+    return x.error(std::string(name) + ": " + err, unsupported ? "unsupported-code" : "cycle-invalid");
+  }
   for (const CycleStep &s : steps)
     if ((s.kind == CycleStepKind::Feed || s.kind == CycleStepKind::Arc) && s.feed <= 0 && !x.checkFeed(name))
       return false;

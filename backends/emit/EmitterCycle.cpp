@@ -64,7 +64,7 @@ bool Emitter::cycleArguments(const MotionRecord &r, const CycleDef &d, const cha
     if (char role = coordRole(d, name)) {
       int axis = role == 'n' ? ax.n : role == 'u' ? ax.u : ax.v;
       const double *m = r.param(std::string("m") + (char)('x' + axis));
-      value += m ? *m : 0;
+      value += (m ? *m : 0) * (role == 'd' ? 2 : 1);  // 'd': a diameter along v (the lathe cycles' X)
     }
     NumberFormat f;
     f.decimals = 6;  // parameters keep more digits than the axes: a depth or an angle

@@ -20,6 +20,19 @@ Op BlockParser::cycleCancel(SourceLoc l) const {
   return o;
 }
 
+// Whether `param` is one of an entry's STRING parameters (CycleSignature::strings): 1 a string the
+// cycle uses, 2 one for the input screens only ("~_PTAB"), 0 none.
+static int stringParam(std::string_view list, std::string_view param) {
+  for (size_t i = 0; i < list.size();) {
+    size_t j = std::min(list.find(' ', i), list.size());
+    std::string_view item = list.substr(i, j - i);
+    if (item == param) return 1;
+    if (item.size() == param.size() + 1 && item[0] == '~' && item.substr(1) == param) return 2;
+    i = j + 1;
+  }
+  return 0;
+}
+
 bool BlockParser::libraryCycle(bool modal, const std::string &name, const CycleSignature &lib, const Token &at) {
   SourceLoc l = loc(at);
   if (modal && lib.pattern)
@@ -38,11 +51,16 @@ bool BlockParser::libraryCycle(bool modal, const std::string &name, const CycleS
   if (!tok().is("(")) return fail(tok(), fmt::format("{} needs its parameters in parentheses", name));
   if (!argumentList(name, params, lib.pattern ? "p." : "a.", c)) return false;
   int strings = 0;  // the command carries one constant string (HOLES1's _HIDE "1,3")
-  for (auto &a : c.args) {
+  for (size_t i = 0; i < c.args.size(); ++i) {
+    auto &a = c.args[i];
     if (a.key[1] != '.' || !a.value || a.value->kind != ir::ExprKind::String) continue;
     std::string param = a.key.substr(2);
-    if (std::string_view(lib.strings).find(param) == std::string_view::npos)
-      return fail(at, fmt::format("{} parameter {} takes a number, not a string", name, param));
+    const int kind = stringParam(lib.strings, param);
+    if (kind == 0) return fail(at, fmt::format("{} parameter {} takes a number, not a string", name, param));
+    if (kind == 2) {  // for the control's input screens only (thread tables): no effect on the cycle
+      c.args.erase(c.args.begin() + (long)i--);
+      continue;
+    }
     if (++strings > 1)
       return fail(at, fmt::format("{} parameter {}: only one string argument is supported", name, param),
                   "unsupported-code");

@@ -4,6 +4,7 @@
 #include "runtime/cycles/Library.h"
 
 #include <string>
+#include <string_view>
 
 namespace ncc::entry {
 
@@ -11,6 +12,11 @@ inline bool fail(std::string &err, std::string msg) {
   err = std::move(msg);
   return false;
 }
+
+// A parameter value that would change the motion in a way the entry does not model: the
+// executor reports it as `unsupported-code` (not `cycle-invalid`).
+inline constexpr std::string_view kUnsupported = "\x01unsupported:";
+inline bool unsupported(std::string &err, std::string msg) { return fail(err, std::string(kUnsupported) + msg); }
 
 // Digit n (1 = units) of a Sinumerik mode word (_AMODE, _VARI, _DMODE …).
 int digit(double word, int n);

@@ -734,6 +734,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addHeiPatternEntries(v);
     addHeiThreadMillEntries(v);
     addHeiDeepHoleEntries(v);
+    addSinThreadEntries(v);
     return v;
   }();
   return all;

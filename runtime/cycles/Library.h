@@ -47,11 +47,13 @@ struct CycleDef {
   // A position pattern: the positions in the plane, in the order they are visited.
   bool (*positions)(const CycleArgs &args, std::vector<PlanePoint> &out, std::string &err);
   // The parameters that are absolute positions, "NAME:axis …" (n the drilling axis, u v the
-  // plane's first and second), valid while no mode parameter (a name with MODE, _AXN) is set:
+  // plane's first and second, d a diameter along v: the turning cycles' X), valid while no mode parameter (a name with MODE, _AXN) is set:
   // an emitter that writes the call back in another frame shifts them (docs/EMIT.md "Cycles").
   // Null: the call cannot be written back (its expanded moves are).
   const char *coords = nullptr;
-  // The STRING parameters, space-separated (HOLES1's _HIDE); the others take numbers.
+  // The STRING parameters, space-separated (HOLES1's _HIDE); the others take numbers. A name
+  // with a `~` before it is one for the control's input screens only (CYCLE99's thread table
+  // _PTAB): the front end accepts and drops it.
   const char *strings = nullptr;
 };
 
@@ -64,6 +66,7 @@ void addSinClearingEntries(std::vector<CycleDef> &out);
 void addHeiPatternEntries(std::vector<CycleDef> &out);  // HeiPatternDef.cpp
 void addHeiThreadMillEntries(std::vector<CycleDef> &out);  // HeiThreadMill.cpp: 262-267
 void addHeiDeepHoleEntries(std::vector<CycleDef> &out);    // HeiDeepHole.cpp: 204, 205, 241
+void addSinThreadEntries(std::vector<CycleDef> &out);      // SinThread.cpp: CYCLE98, CYCLE99
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 

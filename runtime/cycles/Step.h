@@ -11,8 +11,11 @@ namespace ncc {
 // thread records, sync tap_in / tap_out); the spindle is in position control (an orient before).
 // SpindleSpeed: the spindle speed becomes `speed` (Heidenhain 241's entry and drilling speeds);
 // Coolant: `coolant` bit 1 flood, bit 2 mist on (0: both off), as M8, M7, M9.
+// Thread: a spindle-synchronised move to `pos` with `lead` mm/rev along `along` (0 X, 2 Z); a new
+// synchronisation at the start angle `angle` (degrees), or (`chain`) continuing the thread
+// move before it (Sinumerik CYCLE98/CYCLE99, runtime/cycles/SinTurning.cpp).
 enum class CycleStepKind : uint8_t {
-  Rapid, Feed, Arc, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient, RigidTap, SpindleSpeed, Coolant
+  Rapid, Feed, Arc, Dwell, SpindleStop, SpindleCW, SpindleCCW, SpindleOrient, RigidTap, SpindleSpeed, Coolant, Thread
 };
 
 struct CycleStep {
@@ -20,8 +23,10 @@ struct CycleStep {
   std::array<double, 3> pos{};  // X Y Z target of Rapid/Feed/Arc
   double seconds = 0;           // Dwell
   double feed = 0;              // Feed, Arc: mm/min, 0 = the programmed feed
-  double angle = 0;             // SpindleOrient: degrees (the shortest way)
-  double lead = 0;              // RigidTap: mm per spindle revolution along the drilling axis
+  double angle = 0;             // SpindleOrient: degrees (the shortest way); Thread: the start angle
+  double lead = 0;              // RigidTap: mm per spindle revolution along the drilling axis; Thread: the lead
+  uint8_t along = 2;            // Thread: the axis the lead is measured along (0 X, 2 Z)
+  bool chain = false;           // Thread: continues the thread move before it
   double speed = 0;             // RigidTap: the tapping speed, rpm (0: the active S); SpindleSpeed: rpm
   uint8_t coolant = 0;          // Coolant: 1 flood, 2 mist, 0 off
   // Arc: an exact circular move in the active plane about `centre` (its drilling-axis coordinate

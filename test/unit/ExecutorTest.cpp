@@ -319,6 +319,9 @@ std::string steps(const std::vector<CycleStep> &s) {
     case CycleStepKind::RigidTap: std::snprintf(b, sizeof b, "T%g/%g ", st.pos[2], st.lead); break;
     case CycleStepKind::SpindleSpeed: std::snprintf(b, sizeof b, "S%g ", st.speed); break;
     case CycleStepKind::Coolant: std::snprintf(b, sizeof b, "C%d ", st.coolant); break;
+    case CycleStepKind::Thread:
+      std::snprintf(b, sizeof b, "%s(%g,%g,%g)/%g ", st.chain ? "TC" : "TS", st.pos[0], st.pos[1], st.pos[2], st.lead);
+      break;
     }
     out += b;
   }
