@@ -21,7 +21,7 @@ bool BlockParser::expectWord(std::string_view w) {
 namespace {
 // Statements of the Klartext language ncc knows but does not run yet: refused, naming them.
 const char *const kNotYet[] = {
-    "FC", "FL", "FPOL", "FSELECT", "FCT", "FLT", "RPL", "DECLARE", "CONTOUR",
+    "RPL", "DECLARE", "CONTOUR",
     "PLANE", "FUNCTION", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
 };
 
@@ -88,6 +88,8 @@ bool BlockParser::parse() {
       {"APPR", &BlockParser::approachDepart}, {"DEP", &BlockParser::approachDepart},
       {"PATTERN", &BlockParser::patternDef}, {"SEL", &BlockParser::select}, {"GLOBAL", &BlockParser::globalDef},
       {"TCH", &BlockParser::tchProbe},
+      {"FL", &BlockParser::fkElement}, {"FLT", &BlockParser::fkElement}, {"FC", &BlockParser::fkElement},
+      {"FCT", &BlockParser::fkElement}, {"FPOL", &BlockParser::fkPole}, {"FSELECT", &BlockParser::fkSelect},
   };
   // M89's calls follow the blocks in file order: control flow or a rounding of the move before
   // would need them at run time.
