@@ -285,7 +285,8 @@ std::vector<Hyp> extend(const Hyp &h, const Data &e, size_t index, std::string &
   };
   if (h.open) {
     if (e.tangent) {
-      why = "a tangential element after one whose end is still open is not simulated";
+      why = "it is tangential to an element whose end is still open";
+      undetermined = true;
       return out;
     }
     for (const Carrier &k : carriers(e, std::nullopt, std::nullopt, undetermined))
@@ -302,6 +303,7 @@ std::vector<Hyp> extend(const Hyp &h, const Data &e, size_t index, std::string &
   } else {
     if (e.tangent && !h.heading) {
       why = "the direction of the element before is not known when the program is read";
+      undetermined = true;
       return out;
     }
     for (const Carrier &k : carriers(e, h.at, h.heading, undetermined)) grow(h, k, h.at);

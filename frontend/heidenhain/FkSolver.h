@@ -53,7 +53,7 @@ struct Hyp {
 
 // The hypotheses element `index` with data `e` makes of `h`, in ncc's order (docs); none: `why`
 // says what does not fit. `undetermined` is set when the element's carrier does not follow
-// from its data (ncc does not look further ahead).
+// from its data (ncc does not look further ahead) or it is tangent to a direction not known.
 std::vector<Hyp> extend(const Hyp &h, const Data &e, size_t index, std::string &why, bool &undetermined);
 
 // Unit direction of travel at the end of a solved element.
