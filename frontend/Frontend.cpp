@@ -140,6 +140,7 @@ bool parseProgram(SourceKind kind, SourceManager &sm, uint32_t file, const Front
     ho.linkedFunctions = opts.linkedFunctions;
     ho.cycles = opts.cycles;
     ho.probe = opts.probe;
+    ho.toolNames = opts.toolNames;
     return hei::parseHeidenhainProgram(sm, file, ho, diags, out);
   }
   case SourceKind::CLData: return cld::parseAptProgram(sm, file, diags, out);

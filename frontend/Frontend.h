@@ -5,6 +5,7 @@
 #include "ir/ModeTable.h"
 #include "ir/NCIR.h"
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ struct FrontendOptions {
   std::vector<std::string> linkedFunctions;  // defined by linked files (driver --link): not searched
   CycleLookup cycles = nullptr;            // the cycle library's entries (the driver's; null: none)
   ProbeTable probe;                        // Heidenhain touch-probe cycles: machine [controller] probe_*
+  std::multimap<std::string, int> toolNames;  // the machine's tool names (Klartext TOOL CALL "name")
   // The mode a Sinumerik program file (.mpf/.spf) starts in: "siemens" (G290), or "iso" (G291:
   // the 808D's ISO default mode, machine [controller] start_mode; the ISO front end reads it).
   std::string startMode = "siemens";

@@ -21,7 +21,7 @@ bool BlockParser::expectWord(std::string_view w) {
 namespace {
 // Statements of the Klartext language ncc knows but does not run yet: refused, naming them.
 const char *const kNotYet[] = {
-    "FC", "FL", "FPOL", "FSELECT", "FCT", "FLT", "RPL", "DECLARE", "CONTOUR",
+    "RPL", "DECLARE", "CONTOUR",
     "PLANE", "FUNCTION", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
 };
 
@@ -88,6 +88,8 @@ bool BlockParser::parse() {
       {"APPR", &BlockParser::approachDepart}, {"DEP", &BlockParser::approachDepart},
       {"PATTERN", &BlockParser::patternDef}, {"SEL", &BlockParser::select}, {"GLOBAL", &BlockParser::globalDef},
       {"TCH", &BlockParser::tchProbe},
+      {"FL", &BlockParser::fkElement}, {"FLT", &BlockParser::fkElement}, {"FC", &BlockParser::fkElement},
+      {"FCT", &BlockParser::fkElement}, {"FPOL", &BlockParser::fkPole}, {"FSELECT", &BlockParser::fkSelect},
   };
   // M89's calls follow the blocks in file order: control flow or a rounding of the move before
   // would need them at run time.
@@ -201,8 +203,18 @@ bool BlockParser::tool() {
   }
   if (!expectWord("CALL")) return false;
   ExprPtr number;
-  if (tok().kind == Tok::String) return fail(tok(), "tool names in TOOL CALL are not simulated yet: call the tool by number", "unsupported-code");
-  if (tok().kind == Tok::Number) {
+  if (tok().kind == Tok::String) {  // a tool name: the machine's tool table gives its number
+    const std::string &name = tok().text;
+    auto [from, to] = f_.pp.opts.toolNames.equal_range(name);
+    if (from == to) return fail(tok(), fmt::format("tool \"{}\" is not in the machine's tool table", name), "unknown-tool");
+    if (std::next(from) != to)  // sister tools: the TNC picks by tool life, which ncc does not keep
+      return fail(tok(), fmt::format("tool \"{}\" names {} tools of the machine's table (a replacement tool is chosen by tool "
+                                     "life, which is not simulated): call the tool by number",
+                                     name, std::distance(from, to)),
+                  "unsupported-code");
+    number = Expr::number(from->second, ir::Type::Int);
+    ++i_;
+  } else if (tok().kind == Tok::Number) {
     if (!tok().isInt) return fail(tok(), "a tool number is a whole number");
     number = Expr::number(tok().num, ir::Type::Int);
     ++i_;

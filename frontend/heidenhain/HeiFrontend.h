@@ -6,6 +6,7 @@
 #include "ir/Diagnostics.h"
 #include "ir/NCIR.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct HeiOptions {
   std::vector<std::string> linkedFunctions;  // defined by linked files: not searched
   CycleLookup cycles = nullptr;              // the cycle library's hei.* entries (null: none)
   ProbeTable probe;                          // the touch probe's table values (Probe.cpp)
+  std::multimap<std::string, int> toolNames;  // the machine's tool names -> numbers (TOOL CALL "name")
 };
 
 // Parses the main program and every program it calls (CALL PGM) into `out`: functions[0] is

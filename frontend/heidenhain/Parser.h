@@ -23,6 +23,10 @@ using ir::OpKind;
 
 class ProgramParser;
 struct Approach;  // an APPR block waiting for its first contour element (Approach.cpp)
+struct FkChain;   // FK blocks being solved (Fk.h)
+namespace fk {
+struct Element;
+}
 
 // CALL LBL n: resolved once every label of the file is known (a subprogram LBL n … LBL 0, or
 // with REP a section repeat back to LBL n).
@@ -78,6 +82,10 @@ public:
     int cycle = -1, resultQ = 0, dir = 0;
     char axis = 0;
   } oldProbe;
+  std::shared_ptr<FkChain> fk;      // FK: the chain being solved, the position known statically
+  FkChain &fkChain();
+  bool fkLower();                   // hands on the elements solved once one solution is left
+  bool fkFinish(SourceLoc at, const std::string &what);  // the contour continues with `what`: solved?
   bool error(SourceLoc loc, std::string msg, const char *rule = "syntax");
 
 private:
@@ -153,6 +161,7 @@ public:
   BlockParser(FileParser &f, Block &b) : f_(f), b_(b), t_(b.toks) {}
   bool parse();
   int arcDir() const { return arcDir_; }  // a C block's DR (+1, -1), after parse()
+  bool fkLowerElement(const fk::Element &e, PathWords &w);  // Fk.cpp: a solved FK element as L or C
 
   // Expressions (Expr.cpp)
   ir::ExprPtr formula();           // + - * / ^, functions, parentheses
@@ -216,6 +225,11 @@ private:
   void keepLineStart();
   bool stop();
   bool mOnly();
+  // FK free contour (Fk.cpp)
+  bool fkElement();
+  bool fkPole();
+  bool fkSelect();
+  void fkFollowLine(const PathWords &w);  // where an L leaves the contour, when known statically
   // paths (Path.cpp)
   bool line();
   bool linePolar();

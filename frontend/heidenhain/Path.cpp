@@ -283,6 +283,7 @@ bool BlockParser::line() {
   if (!words(w, kCoords | kComp | kFeed | kM, "L")) return false;
   if (f_.approach && !approachBefore(w, 0)) return false;
   keepLineStart();
+  fkFollowLine(w);
   if (!emitBefore(w)) return false;
   return emitMove(Op(OpKind::Move), w, "linear") && emitAfter(w);
 }

@@ -1,7 +1,7 @@
 // The program: the main file, the programs it calls (CALL PGM, found in its folder, then on the
 // search path), each file's frame (BEGIN PGM … END PGM) and its labels.
 #include "frontend/SubprogramFiles.h"
-#include "frontend/heidenhain/Parser.h"
+#include "frontend/heidenhain/Fk.h"
 
 #include <fmt/format.h>
 
@@ -40,12 +40,19 @@ bool FileParser::run() {
                  "after APPR the first contour element must be a straight line L or a circle C (CR, CT, polar: not simulated yet)",
                  "unsupported-code");
     }
+    // FK: a block other than FL FLT FC FCT FPOL FSELECT needs the FK contour before it solved;
+    // the position is known statically only after an L or FK element (Fk.cpp).
+    static const char *const kFk[] = {"FL", "FLT", "FC", "FCT", "FPOL", "FSELECT"};
+    bool fkBlock = std::any_of(std::begin(kFk), std::end(kFk), [&](const char *k) { return first.isWord(k); });
+    if (!comment && !fkBlock && !fkFinish({file, first.line, first.col}, first.text)) ok = false;
     BlockParser bp(*this, b);
     if (!bp.parse()) ok = false;
+    if (!comment && !fkBlock && !first.isWord("L") && fk) fk->here = fk->heading = std::nullopt;
     if (!comment) lastWasLine = first.isWord("L");
     if (!comment) lastArcDir = first.isWord("C") ? bp.arcDir() : 0;
   }
   if (approach) ok = error({file, lr.blocks.back().line, 1}, "APPR without a contour element after it", "syntax");
+  if (!fkFinish({file, lr.blocks.back().line, 1}, "the end of the file")) ok = false;
   if (begun && !ended) ok = error(beginLoc, fmt::format("BEGIN PGM {} has no END PGM", pgmName), "program-frame");
   if (!resolveLabels()) ok = false;
   if (usesQL) {  // QL0…QL499: local to this program, 0 at its start

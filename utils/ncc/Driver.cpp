@@ -105,6 +105,8 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
     if (machine.axes[i].present) fo.geoAxes |= 1u << i;
   fo.probe = {machine.controller.probeFeed, machine.controller.probeFmax, machine.controller.probeDist,
               machine.controller.probeSetUp, machine.controller.probePrepos == "machine"};
+  for (auto &[n, tool] : machine.toolTable)
+    if (!tool.name.empty()) fo.toolNames.emplace(tool.name, n);
   for (auto &[code, call] : machine.controller.macroCalls)
     fo.macroCalls.push_back({code, call.program, call.kind == "subprogram"});
   for (unsigned l : opts.blockDelete)
