@@ -32,6 +32,7 @@ enum class Word : uint8_t {
   LeadChange,  // Sinumerik G34/G35: the thread lead's change per revolution (signed), mm/rev^2
   RetractFeed, CornerRadius,  // region cycles: the feed out at the end, the rounding of inner corners
   AddOffset,  // Sinumerik DL: the additive offset set of the edge (tool_length)
+  FinishAllowance, Extension,  // Heidenhain 24 Q14 (left after side finishing), 25 Q448 (path extension)
   Count
 };
 constexpr int kWords = (int)Word::Count;
@@ -41,7 +42,7 @@ constexpr const char *kWordKeys[kWords] = {
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
     "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator", "dlead",
-    "retract_feed", "corner_radius", "dl"};
+    "retract_feed", "corner_radius", "dl", "finish_allowance", "extension"};
 // A word's address letter (the key's one character), 0 for a named word.
 constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;
@@ -133,11 +134,12 @@ constexpr uint8_t kFrameCombine = 0x20;
 enum class ContourAction : uint8_t { Data, Begin, End, Run };
 // `Sub` (Heidenhain SL): a sub-contour whose RL/RR and direction make it a pocket or an island
 // (the capture notes RL/RR instead of compensating: begin says use=subcontour); `Pilot` and
-// `Floor` run on the region as `Pocket` does (cycles 21 and 23).
+// `Floor` run on the region as `Pocket` does (cycles 21 and 23); `Side` finishes its walls
+// (cycle 24); `Train` (cycle 25) mills a captured open contour on its RL/RR side, noted as `Sub`'s.
 // Rs274*: LinuxCNC's G70, G71 and G72 (runtime/cycles/TurningRs274.h).
 enum class ContourUse : uint8_t {
   Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket, Sub, Pilot, Floor,
-  Rs274Finish, Rs274RoughZ, Rs274RoughX
+  Side, Train, Rs274Finish, Rs274RoughZ, Rs274RoughX
 };
 // What a `cycle` op does (docs/IR.md §5.8): Run the entry here (at each position of its
 // pattern), Define store it for Call (Heidenhain CYCL DEF), Modal store it and run it after each

@@ -83,6 +83,8 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::Contour, "use", "subcontour", (uint8_t)ContourUse::Sub},
     {OpKind::Contour, "use", "pilot", (uint8_t)ContourUse::Pilot},
     {OpKind::Contour, "use", "floor", (uint8_t)ContourUse::Floor},
+    {OpKind::Contour, "use", "side", (uint8_t)ContourUse::Side},
+    {OpKind::Contour, "use", "train", (uint8_t)ContourUse::Train},
     {OpKind::Contour, "use", "rs274_finish", (uint8_t)ContourUse::Rs274Finish},
     {OpKind::Contour, "use", "rs274_rough_z", (uint8_t)ContourUse::Rs274RoughZ},
     {OpKind::Contour, "use", "rs274_rough_x", (uint8_t)ContourUse::Rs274RoughX},

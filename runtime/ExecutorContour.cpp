@@ -80,7 +80,8 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     capture.loc = loc;
     capture.records.clear();
     capture.compOn = false;
-    capture.sl = (ContourUse)c.sub2 == ContourUse::Sub, capture.side = 0;
+    capture.train = (ContourUse)c.sub2 == ContourUse::Train;
+    capture.sl = (ContourUse)c.sub2 == ContourUse::Sub || capture.train, capture.side = 0;
     capture.st = st;
     capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX, capture.toolOffsetY = toolOffsetY;
     capture.lastPath = lastPathNow();
@@ -89,9 +90,10 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     return true;
   case ContourAction::Run:
     if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
+    if ((ContourUse)c.sub2 == ContourUse::Side) return regionSide(c);
     if ((ContourUse)c.sub2 != ContourUse::Pocket && (ContourUse)c.sub2 != ContourUse::Pilot &&
         (ContourUse)c.sub2 != ContourUse::Floor)
-      return error("only the pocket, pilot and floor consumers run without a capture", "contour-invalid");
+      return error("only the pocket, pilot, floor and side consumers run without a capture", "contour-invalid");
     return regionRun(c);
   case ContourAction::End:
     if (!capture.active) return error("a contour ends that did not begin", "contour-invalid");
@@ -174,13 +176,18 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
   Contour ct;
   if (!capturedContour(ct)) return false;
   if (use == ContourUse::Outline || use == ContourUse::Island) return regionCapture(c, ct);
+  if (use == ContourUse::Train || capture.train) {
+    if (use != ContourUse::Train || !capture.train)
+      return error("a contour train's capture must begin and end with use=train", "contour-invalid");
+    return contourTrainRun(c, ct);
+  }
   if (use == ContourUse::Sub) {
     if (!capture.sl) return error("an SL sub-contour's capture must begin with use=subcontour", "contour-invalid");
     return regionSub(ct);
   }
   if (capture.sl) return error("a capture begun with use=subcontour must end with it", "contour-invalid");
-  if (use == ContourUse::Pilot || use == ContourUse::Floor)
-    return error("the pilot and floor consumers run with action=run, not after a capture", "contour-invalid");
+  if (use == ContourUse::Pilot || use == ContourUse::Floor || use == ContourUse::Side)
+    return error("the pilot, floor and side consumers run with action=run, not after a capture", "contour-invalid");
   std::vector<ContourElem> moves;
   std::string err;
   // Plane coordinates of X and Z: the turning consumers need the ZX plane.

@@ -560,8 +560,9 @@ struct Executor::Impl {
     int64_t blockNumber = -1;
     SourceLoc blockLoc;
     bool compOn = false;  // G41/G42 ran in the contour (a lathe's G70 only)
-    // An SL sub-contour (begin use=subcontour): RL/RR are noted, not run (its side: 1 left, 2 right).
-    bool sl = false;
+    // An SL sub-contour (begin use=subcontour) or contour train (use=train): RL/RR are noted, not
+    // run (its side: 1 left, 2 right); `train` for the latter.
+    bool sl = false, train = false;
     int side = 0;
   } capture;
   // Modal consumer data (ISO G71/G72 U R: layer depth and retract; G73 U W R: relief, count), mm.
@@ -581,6 +582,10 @@ struct Executor::Impl {
   bool regionCapture(const MachineCmd &c, const struct Contour &ct);
   bool regionRun(const MachineCmd &c);
   bool regionSub(const struct Contour &ct);
+  // Heidenhain 24 (run use=side) and 25 (end use=train), runtime/ExecutorSlFinish.cpp.
+  bool regionSide(const MachineCmd &c);
+  bool contourTrainRun(const MachineCmd &c, const struct Contour &ct);
+  int lastRoughTool = 0;  // the tool of the last region roughing (24's Q438 = -1), 0: none
   // Cycles keep their geometry only under a rotation about the drilling axis: an error otherwise.
   bool cycleFrameOk();
   // Emits cycle steps (offset-frame positions) as records, the holes in exact-path mode.

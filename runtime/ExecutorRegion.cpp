@@ -108,6 +108,7 @@ bool Executor::Impl::regionRun(const MachineCmd &c) {
     return error(fmt::format("{}: {}", kWhat[what], err), "cycle-invalid");
   for (const CycleStep &s : steps)
     if (s.kind == CycleStepKind::Feed && s.feed <= 0 && !checkFeed("the region pocket")) return false;
+  if (use == ContourUse::Pocket) lastRoughTool = st.toolInSpindle;
   MotionRecord begin = record(RecordKind::CycleBegin);
   static const char *const kBracket[] = {"contour.pocket", "contour.pilot", "contour.floor"};
   begin.text = kBracket[what];

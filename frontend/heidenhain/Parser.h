@@ -209,6 +209,8 @@ private:
   // naming `block` ("CYCL DEF 200", "TCH PROBE 410").
   bool cycleParamName(int number, std::set<std::string> &seen, std::string &name, const char *block = "CYCL DEF");
   bool slCall(const std::string &how);             // SlCycles.cpp: CYCL CALL of 21-25
+  void subContourCapture(const char *use, const std::string &label, SourceLoc at, SourceLoc bl);
+  bool trainCall(SourceLoc bl, PathWords &w);
   bool cyclCallPat();                              // Patterns.cpp
   bool patternDef();                               // Patterns.cpp
   bool select();                                   // Patterns.cpp: SEL PATTERN

@@ -25,6 +25,7 @@ constexpr SlCycle kSl[] = {
     {23, "FLOOR FINISHING", "Q11 Q12 Q208"},
     {24, "SIDE FINISHING", "Q9 Q10 Q11 Q12 Q14 Q438"},
     {25, "CONTOUR TRAIN", "Q1 Q3 Q5 Q7 Q10 Q11 Q12 Q15 Q18 Q446 Q447 Q448"},
+    {270, "CONTOUR TRAIN DATA", "Q390 Q391 Q392 Q393 Q394"},
 };
 
 const SlCycle *slRow(int number) {
@@ -43,7 +44,10 @@ bool takesParam(const char *params, const std::string &q) {
 }
 
 // Which consumer a machining cycle's call runs.
-const char *slUse(int number) { return number == 21 ? "pilot" : number == 23 ? "floor" : "pocket"; }
+const char *slUse(int number) {
+  static const char *const kUse[] = {"pilot", "pocket", "floor", "side", "train"};
+  return kUse[number - 21];
+}
 }  // namespace
 
 bool slCycle(int number) { return slRow(number) != nullptr; }
@@ -70,8 +74,9 @@ bool BlockParser::contourLabels(const Token &n) {
   return true;
 }
 
-// CYCL DEF 20-25 with their parameter lines: the values go to program-wide variables now (a
-// definition freezes them, as the library cycles' do); 20 is valid for 21-24 (L9181).
+// CYCL DEF 20-25 and 270 with their parameter lines: the values go to program-wide variables now
+// (a definition freezes them, as the library cycles' do); 20 is valid for 21-24 (L9181), 270 for
+// 25 (L10250).
 bool BlockParser::slDefinition(int number, const Token &n) {
   SourceLoc bl = loc(t_[0]);
   const SlCycle &row = *slRow(number);
@@ -109,7 +114,7 @@ bool BlockParser::slDefinition(int number, const Token &n) {
   f_.cycleLoc = bl;
   f_.slGiven[number] = std::move(given);
   f_.slFmaxOut[number] = fmaxOut;
-  if (number != 20) {  // a machining cycle: CYCL CALL runs it
+  if (number != 20 && number != 270) {  // a machining cycle: CYCL CALL runs it
     f_.cycle = number;
     f_.cycleRuns = false;
     f_.cycleSurface = false;
@@ -126,11 +131,9 @@ bool BlockParser::slCall(const std::string &how) {
   const int number = f_.cycle;
   if (!how.empty())
     return fail(t_[0], fmt::format("cycle {} by CYCL CALL{} is not simulated yet", number, how), "unsupported-code");
-  if (number == 24 || number == 25)
-    return fail(t_[0], fmt::format("cycle {} ({}) is not simulated yet (CYCL CALL)", number, slRow(number)->name), "unsupported-code");
   if (f_.slLabels.empty())
     return fail(t_[0], fmt::format("cycle {} needs cycle 14 (CONTOUR) with the contour's labels before it", number), "cycle-invalid");
-  if (!f_.slGiven.count(20))
+  if (number != 25 && !f_.slGiven.count(20))
     return fail(t_[0], fmt::format("cycle {} needs cycle 20 (CONTOUR DATA) before it (L9181)", number), "cycle-invalid");
   const std::set<std::string> &data = f_.slGiven[20], &own = f_.slGiven[number];
   auto value = [&](int cyc, const char *q) -> ExprPtr {
@@ -149,6 +152,7 @@ bool BlockParser::slCall(const std::string &how) {
       {22, "Q18", 0, "fine roughing with a coarse roughing tool (Q18) is not simulated yet"},
       {22, "Q19", 0, "plunging along the tool table's ANGLE (Q19 not 0) is not simulated: the tool data has no ANGLE"},
       {22, "Q401", 100, "a feed factor Q401 below 100 % for full-width cuts is not simulated"},
+      {25, "Q18", 0, "residual machining after a coarse roughing tool (Q18) is not simulated yet"},
   };
   for (const Refusal &r : kRefused) {
     if (r.cycle != number) continue;
@@ -165,20 +169,13 @@ bool BlockParser::slCall(const std::string &how) {
   }
   PathWords w;  // CYCL CALL M3: the M functions around the call
   if (!words(w, kM, "CYCL CALL") || !emitBefore(w)) return false;
+  if (number == 25) return trainCall(bl, w);
   Op reset(OpKind::Contour, bl);
   reset.set("action", Expr::symbol("data", bl));
   reset.set("use", Expr::symbol("subcontour", bl));
   out().push_back(std::move(reset));
   for (auto &[label, at] : f_.slLabels) {
-    // Located at the label in 14.1: an error of the sub-contour (open, crossing, no RL/RR) names it.
-    Op begin(OpKind::Contour, at);
-    begin.set("action", Expr::symbol("begin", bl));
-    begin.set("use", Expr::symbol("subcontour", bl));
-    out().push_back(std::move(begin));
-    Op call(OpKind::CallSection, at);
-    call.set("from", Expr::string(label));
-    f_.calls.push_back({out().size(), label, false, at});
-    out().push_back(std::move(call));
+    subContourCapture("subcontour", label, at, bl);
     Op end(OpKind::Contour, at);
     end.set("action", Expr::symbol("end", bl));
     end.set("use", Expr::symbol("subcontour", bl));
@@ -204,14 +201,68 @@ bool BlockParser::slCall(const std::string &how) {
   key("surface", value(20, "Q5"));
   key("clearance", value(20, "Q6"));
   key("height", value(20, "Q7"));
-  key("direction", value(20, "Q9"));
-  if (number != 23) key("corner_radius", value(20, "Q8"));  // 21 drills where 22 plunges
+  if (number != 24) key("direction", value(20, "Q9"));
+  if (number == 21 || number == 22) key("corner_radius", value(20, "Q8"));  // 21 drills where 22 plunges
   if (number != 23) key("infeed", abs(value(number, "Q10")));
+  if (number == 24) {  // its own direction, the allowance it leaves, the rough-out tool
+    key("direction", value(24, "Q9"));
+    key("finish_allowance", value(24, "Q14"));
+    key("T", value(24, "Q438"));
+  }
   key("plunge_feed", value(number, "Q11"));
   if (number != 21) key("feed", value(number, "Q12"));
-  if (number != 21 && !f_.slFmaxOut[number]) key("retract_feed", value(number, "Q208"));
+  if (number != 21 && number != 24 && !f_.slFmaxOut[number]) key("retract_feed", value(number, "Q208"));
   if (number == 21) key("T", value(21, "Q13"));
   out().push_back(std::move(run));
+  return emitAfter(w);
+}
+
+// The start of a capture of one label of cycle 14 (`use` subcontour or train) and its section
+// call, located at the label in 14.1: an error of the sub-contour (open, crossing, no RL/RR) names it.
+void BlockParser::subContourCapture(const char *use, const std::string &label, SourceLoc at, SourceLoc bl) {
+  Op begin(OpKind::Contour, at);
+  begin.set("action", Expr::symbol("begin", bl));
+  begin.set("use", Expr::symbol(use, bl));
+  out().push_back(std::move(begin));
+  Op call(OpKind::CallSection, at);
+  call.set("from", Expr::string(label));
+  f_.calls.push_back({out().size(), label, false, at});
+  out().push_back(std::move(call));
+}
+
+// Cycle 25 (L9841-L10009): only the first label of cycle 14, cycle 20 not needed; the captured
+// open contour is milled at its RL/RR side with the cycle's own values.
+bool BlockParser::trainCall(SourceLoc bl, PathWords &w) {
+  auto &[label, at] = f_.slLabels.front();
+  subContourCapture("train", label, at, bl);
+  Op end(OpKind::Contour, bl);
+  end.set("action", Expr::symbol("end", bl));
+  end.set("use", Expr::symbol("train", bl));
+  const std::set<std::string> &own = f_.slGiven[25];
+  auto value = [&](const char *q) -> ExprPtr {
+    return own.count(q) ? Expr::var(ir::VarSpace::Global, slVar(25, q), nullptr, bl) : nullptr;
+  };
+  auto key = [&](const char *k, ExprPtr v) {
+    if (v) end.set(k, std::move(v));
+  };
+  if (ExprPtr q1 = value("Q1")) key("depth", Expr::unary(ir::OpCode::Neg, std::move(q1), bl));
+  key("side_allowance", value("Q3"));
+  key("surface", value("Q5"));
+  key("height", value("Q7"));
+  key("infeed", value("Q10"));  // the executor takes its size
+  key("plunge_feed", value("Q11"));
+  key("feed", value("Q12"));
+  key("direction", value("Q15"));
+  key("extension", value("Q448"));
+  if (f_.slGiven.count(270)) {  // the approach and departure of cycle 270, in the words I P R E D
+    const std::set<std::string> &data = f_.slGiven[270];
+    static const char *const kData[][2] = {{"I", "Q390"}, {"P", "Q391"}, {"R", "Q392"}, {"E", "Q393"}, {"D", "Q394"}};
+    for (auto &[k, q] : kData)
+      key(k, data.count(q) ? Expr::var(ir::VarSpace::Global, slVar(270, q), nullptr, bl) : nullptr);
+    if (!data.count("Q390") || !data.count("Q391"))
+      return fail(t_[0], "cycle 270 needs Q390 and Q391 (the approach and the compensation)", "cycle-parameter");
+  }
+  out().push_back(std::move(end));
   return emitAfter(w);
 }
 

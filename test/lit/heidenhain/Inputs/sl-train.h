@@ -1,0 +1,29 @@
+; Cycle 25 CONTOUR TRAIN on an open contour (LBL 1, RL): up from (0, 0) to (0, 40), right to
+; (30, 40). Tool 2 of tnc-sl.toml (radius 6); Q3=1, so the tool centre runs 7 off the contour;
+; Q448=2 extends the path at both ends. Used by sl-train.test (Q15 and Q448 varied there by sed).
+0 BEGIN PGM SLTRAIN MM
+1 TOOL CALL 2 Z S2000
+2 L X-20 Y-20 Z+100 R0 FMAX
+3 CYCL DEF 14.0 KONTUR
+4 CYCL DEF 14.1 METKA KONTURA 1
+5 CYCL DEF 25 CONTOUR TRAIN
+  Q1=-10 ;DEPTH
+  Q3=+1 ;ALLOWANCE
+  Q5=+0 ;SURFACE
+  Q7=+50 ;CLEARANCE HEIGHT
+  Q10=+5 ;INFEED
+  Q11=100 ;PLUNGE FEED
+  Q12=300 ;MILLING FEED
+  Q15=+1 ;CLIMB
+  Q18=0 ;ROUGH TOOL
+  Q446=+0.01 ;RESIDUAL
+  Q447=+10 ;CONNECTING DISTANCE
+  Q448=+2 ;EXTENSION
+6 CYCL CALL M3
+7 L Z+100 R0 FMAX M2
+8 LBL 1
+9 L X+0 Y+0 RL
+10 L Y+40
+11 L X+30
+12 LBL 0
+13 END PGM SLTRAIN MM
