@@ -94,6 +94,7 @@ static iso::IsoOptions isoOptions(const FrontendOptions &o) {
   io.offsetMemory = o.offsetMemory == "C" ? iso::OffsetMemory::C : iso::OffsetMemory::None;
   io.lathe = o.lathe;
   io.latheSystem = o.latheSystem;
+  io.auxiliaryB = o.auxiliaryB;
   for (auto &c : o.macroCalls) {
     // "O0012" names program O12, as M98 P12 does; other names stay ("M6_MAKRO").
     std::string callee = c.program;

@@ -22,6 +22,7 @@ struct FrontendOptions {
   double scaleWeighting = 0.001;           // ISO G51: unit of the factors
   std::string offsetMemory = "none";       // Fanuc tool offset variables: "none" or "C", machine [controller]
   bool lathe = false;                      // machine [controller] kind = "lathe"
+  bool auxiliaryB = false;                 // ISO .nc: no B axis, B<n> is the 808D auxiliary function (H1=n)
   char latheSystem = 'A';                  // its gcode_system
   std::vector<std::string> linkedFunctions;  // defined by linked files (driver --link): not searched
   CycleLookup cycles = nullptr;            // the cycle library's entries (the driver's; null: none)

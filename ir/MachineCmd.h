@@ -33,6 +33,7 @@ enum class Word : uint8_t {
   RetractFeed, CornerRadius,  // region cycles: the feed out at the end, the rounding of inner corners
   AddOffset,  // Sinumerik DL: the additive offset set of the edge (tool_length)
   FinishAllowance, Extension,  // Heidenhain 24 Q14 (left after side finishing), 25 Q448 (path extension)
+  FanucCycle,  // 808D/Fanuc drilling cycle (.nc G73, G74, G84): the manual's steps, not rs274's
   Count
 };
 constexpr int kWords = (int)Word::Count;
@@ -42,7 +43,7 @@ constexpr const char *kWordKeys[kWords] = {
     "polar_r", "polar_a", "chamfer", "round", "via_x", "via_y", "via_z", "depth", "infeed", "surface",
     "clearance", "height", "stepover", "overlap", "side_allowance", "floor_allowance", "direction",
     "plunge_feed", "feed", "opening", "chamfer_leg", "weight", "degree", "poly_index", "interval", "denominator", "dlead",
-    "retract_feed", "corner_radius", "dl", "finish_allowance", "extension"};
+    "retract_feed", "corner_radius", "dl", "finish_allowance", "extension", "fanuc_cycle"};
 // A word's address letter (the key's one character), 0 for a named word.
 constexpr char wordLetter(Word w) { return kWordKeys[(int)w][1] == 0 ? kWordKeys[(int)w][0] : 0; }
 using WordMask = uint64_t;

@@ -188,7 +188,7 @@ static const OpInfo kOps[] = {
     {OpKind::Spindle, "spindle", 0, 0, "dir", "angle way wait"},
     {OpKind::Coolant, "coolant", 0, 0, "", "flood mist"},
     {OpKind::Dwell, "dwell", 0, 0, "seconds", ""},
-    {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L H E polar_r polar_a chamfer chamfer_leg round via_x via_y via_z opening weight degree poly_index interval denominator dlead ic ac"},
+    {OpKind::Move, "move", 0, 0, "", "X Y Z A B C U V W I J K R P Q L H E polar_r polar_a chamfer chamfer_leg round via_x via_y via_z opening weight degree poly_index interval denominator dlead fanuc_cycle ic ac"},
     {OpKind::Home, "home", 0, 0, "ref", "X Y Z A B C U V W ic"},
     {OpKind::MachineMove, "machine_move", 0, 0, "rapid", "X Y Z A B C U V W"},
     {OpKind::ToolLength, "tool_length", 0, 0, "", "h D dl form X Y Z A B C U V W"},

@@ -208,8 +208,8 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   case OpKind::WorkOffset: {
     double v = 1;
-    if (!constNumber(op.get("index"), v) || v < 0 || v > 9) {
-      diags.error(op.loc, "work offset index must be a constant 0..9");
+    if (!constNumber(op.get("index"), v) || v < 0 || v > 99) {
+      diags.error(op.loc, "work offset index must be a constant 0..99");
       return false;
     }
     c.sub = (uint8_t)v;

@@ -48,11 +48,13 @@ HoleSpec isoHole(const CycleInput &in, double r, double bottom, double clear) {
     h.peck = in.q;
     h.breaksPerRetract = in.cycle == ModeValue::Peck ? 0 : -1;
     h.chipBreak = h.reentry = in.peckClearance;
+    if (in.cycle == ModeValue::PeckChipBreak && in.chipBreak >= 0) h.chipBreak = in.chipBreak;
     break;
   case ModeValue::Tap:
   case ModeValue::TapLeft:
     h.exit = HoleExit::Tap;
     h.dwellBottom = in.p;
+    if (in.tapOutToR) h.tapOutToStart = true, h.dwellStart = in.p;
     h.spindle = in.cycle == ModeValue::Tap ? 1 : 2;
     if (in.tapPecks) {
       // The tap stays in its thread: every move in the hole is at the feed, reversed out.

@@ -34,6 +34,10 @@ struct CycleInput {
   int repeats = 1;          // L (Fanuc K)
   int spindle = 1;          // spindle direction before the cycle: 1 cw, 2 ccw (G86 restart)
   double peckClearance = 0.254;  // G83 stop short / G73 retract (0.010 inch), same unit as positions
+  double chipBreak = -1;         // G73 retract when >= 0 (808D: _ZSFR[1]), else peckClearance
+  // 808D/Fanuc G84/G74: reversed out to R with the dwell P there too, then a rapid to the
+  // initial level in G98 (manual L8662, figure 2-44); false: rs274's feed out to the clear level.
+  bool tapOutToR = false;
   // RS274NGC polar hole positions (XY plane): each repeat applies the @ ^ step (polarStep) to
   // the previous hole, about the program origin `origin`, instead of `target`.
   bool polar = false, polarHasR = false, polarHasA = false;

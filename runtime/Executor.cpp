@@ -691,6 +691,11 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
   }
   case CmdKind::WorkOffset: {
     static const char *kSystems[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
+    static const std::array<std::string, Machine::kWorkOffsets + 1> kExtended = [] {
+      std::array<std::string, Machine::kWorkOffsets + 1> a;  // 808D G54 P1…P93: slots 7..99 (7..9 named G59.x)
+      for (int i = 7; i <= Machine::kWorkOffsets; ++i) a[i] = "G54 P" + std::to_string(i - 6);
+      return a;
+    }();
     if (c.sub == 0) {  // Sinumerik G500: no settable frame; the stored base frames become active
       x.activateBaseFrames();
       x.selectNoSettableFrame();
@@ -698,7 +703,7 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
       x.noteFrame("G500");
       return true;
     }
-    if (c.sub < 1 || c.sub > 9) return x.error("bad work offset number", "bad-offset-index");
+    if (c.sub < 1 || c.sub > Machine::kWorkOffsets) return x.error("bad work offset number", "bad-offset-index");
     x.activateBaseFrames();  // Sinumerik G54…: the stored base frames too (manual L12337-L12345)
     // The ISO manuals forbid it under G68/G51/G51.1; Sinumerik frames are independent members of
     // one chain (a settable frame under the programmable one), so G54… under $P_PFRAME is fine.
@@ -710,7 +715,7 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
     if (apply) x.applyWorkOffset();
     else x.updateChain();
     x.curBlockFrame = true;
-    x.noteFrame(kSystems[c.sub - 1]);
+    x.noteFrame(c.sub > 9 ? kExtended[c.sub].c_str() : kSystems[c.sub - 1]);
     return true;
   }
   case CmdKind::SetOffset: {

@@ -130,6 +130,13 @@ bool Executor::Impl::cycle(const MachineCmd &c) {
   in.spindle = st.spindle;
   in.orientAngle = machine.controller.boringOrientAngle;
   in.lift = machine.controller.boringLift;
+  if (c.has(Word::FanucCycle)) {
+    // 808D G73 backs off by the GUD _ZSFR[1] (0 means 1 mm, manual L7686-7689); G84/G74 go back
+    // to R, dwell P there too and rapid on (L8662, figure 2-44).
+    const double back = machine.controller.chipBreakRetract;
+    if (cyc == ModeValue::PeckChipBreak) in.chipBreak = back > 0 ? back : 1.0;
+    in.tapOutToR = tapping;
+  }
   if (tapping && tapQ) {
     in.tapPecks = machine.controller.peckTapping == "chip-breaking" ? 2 : 3;
     const double d = machine.controller.chipBreakRetract;  // _ZSFR[1]: 0 means 1 mm

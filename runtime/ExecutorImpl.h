@@ -106,8 +106,8 @@ struct Executor::Impl {
   FrameValue programmableFrame() const;  // in program units
   // The work offset tables (what G10 L2 and parameter writes change) and the active system's
   // origin as applied: a written offset takes effect when the controller says (offset_write).
-  std::array<AxisVec, 9> g5x{};
-  std::array<double, 9> g5xRotation{};  // degrees
+  std::array<AxisVec, Machine::kWorkOffsets> g5x{};
+  std::array<double, Machine::kWorkOffsets> g5xRotation{};  // degrees
   AxisVec g5xActive{};
   double g5xRotActive = 0;
   OffsetWrite offsetWrite = OffsetWrite::Immediate;

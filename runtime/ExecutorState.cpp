@@ -351,7 +351,10 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::InverseTime: out = is(st.feedMode == ModeValue::InverseTime); return true;
   case SysVar::UnitsPerMinute: out = is(st.feedMode == ModeValue::PerMinute); return true;
   case SysVar::UnitsPerRev: out = is(st.feedMode == ModeValue::PerRev); return true;
-  case SysVar::CoordSystem: out = kCoordSystems[st.workOffset - 1]; return true;
+  case SysVar::CoordSystem:  // LinuxCNC's systems only (an 808D G54 P<n> has no such number)
+    if (st.workOffset > 9) return err = "#<_coord_system> has no value in an 808D G54 P<n> system", false;
+    out = kCoordSystems[st.workOffset - 1];
+    return true;
   case SysVar::ToolOffset: out = is(st.toolLengthH != 0); return true;
   case SysVar::RetractR: out = is(st.retract == ModeValue::RetractR); return true;
   case SysVar::RetractOldZ: out = is(st.retract == ModeValue::RetractInitial); return true;

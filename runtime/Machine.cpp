@@ -449,6 +449,7 @@ void readAxes(Ctx &c, const toml::node &n, void *obj) {
 // The [offsets] table: named reference positions, copied into Machine afterwards.
 struct OffsetsIn {
   AxisVec g54{}, g55{}, g56{}, g57{}, g58{}, g59{}, g59_1{}, g59_2{}, g59_3{}, home1{}, home2{};
+  std::vector<AxisVec> g54p;  // the 808D's extended offsets G54 P1, P2, …
   std::array<AxisVec, 8> base{}, ncBase{};  // Sinumerik $P_CHBFR[n], $P_NCBFR[n]
 };
 
@@ -463,12 +464,24 @@ template <std::array<AxisVec, 8> OffsetsIn::*Member> void readBaseFrames(Ctx &c,
     readAxisVec(c, *a->get(i), std::string(key) + "[" + std::to_string(i) + "]", (static_cast<OffsetsIn *>(obj)->*Member)[i]);
 }
 
+// [offsets] g54p = [[x, y, z…], …]: the 808D's extended work offsets G54 P1…P93.
+void readExtendedOffsets(Ctx &c, const toml::node &n, void *obj) {
+  const toml::array *a = n.as_array();
+  if (!a || a->size() > 93)
+    return c.error(n.source(), "g54p: expected an array of at most 93 offsets [[x, y, z…], …] (G54 P1…P93), got " +
+                                   (a ? std::to_string(a->size()) + " elements" : typeName(n)));
+  auto &out = static_cast<OffsetsIn *>(obj)->g54p;
+  out.assign(a->size(), AxisVec{});
+  for (size_t i = 0; i < a->size(); ++i) readAxisVec(c, *a->get(i), "g54p[" + std::to_string(i) + "]", out[i]);
+}
+
 const KeyDef<OffsetsIn> kOffsetKeys[] = {
     {"g54", &OffsetsIn::g54},     {"g55", &OffsetsIn::g55},     {"g56", &OffsetsIn::g56},
     {"g57", &OffsetsIn::g57},     {"g58", &OffsetsIn::g58},     {"g59", &OffsetsIn::g59},
     {"g59.1", &OffsetsIn::g59_1}, {"g59.2", &OffsetsIn::g59_2}, {"g59.3", &OffsetsIn::g59_3},
     {"home1", &OffsetsIn::home1}, {"home2", &OffsetsIn::home2},
     {"base", NodeReader(readBaseFrames<&OffsetsIn::base>)}, {"nc_base", NodeReader(readBaseFrames<&OffsetsIn::ncBase>)},
+    {"g54p", NodeReader(readExtendedOffsets)},
 };
 
 void readOffsets(Ctx &c, const toml::node &n, void *obj) {
@@ -476,6 +489,14 @@ void readOffsets(Ctx &c, const toml::node &n, void *obj) {
   OffsetsIn o;
   readTable(c, n, "[offsets]", kOffsetKeys, o);
   m.workOffsets = {o.g54, o.g55, o.g56, o.g57, o.g58, o.g59, o.g59_1, o.g59_2, o.g59_3};
+  // G54 P1-P3 are the slots of G59.1-G59.3: one machine file gives each slot once.
+  for (size_t i = 0; i < o.g54p.size(); ++i) {
+    AxisVec &slot = m.workOffsets[6 + i];
+    if (i < 3 && slot != AxisVec{} && o.g54p[i] != slot)
+      c.error(n.source(), "[offsets]: g54p[" + std::to_string(i) + "] (G54 P" + std::to_string(i + 1) +
+                              ") and \"g59." + std::to_string(i + 1) + "\" are one offset: give it once");
+    slot = o.g54p[i];
+  }
   m.home1 = o.home1;
   m.home2 = o.home2;
   m.chanBaseFrames = o.base, m.ncBaseFrames = o.ncBase;

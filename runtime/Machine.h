@@ -205,7 +205,11 @@ struct Machine {
   // How a number without a decimal point is read: "calculator" (X1000 = 1000 mm), "is-b"
   // (x 0.001), "is-c" (x 0.0001).
   std::string decimalMode = "calculator";
-  std::array<AxisVec, 9> workOffsets{};  // G54..G59.3, machine mm
+  // The settable work offsets 1..99, machine mm: G54..G59.3 are 1..9; the 808D's G54 P1…P93 are
+  // 7..99 (key g54p; its first three share the slots of LinuxCNC's G59.1-G59.3, as Sinumerik's
+  // G507-G599 do).
+  static constexpr int kWorkOffsets = 99;
+  std::array<AxisVec, kWorkOffsets> workOffsets{};
   // The stored Sinumerik base frames $P_CHBFR[n] and $P_NCBFR[n] (offsets, machine mm).
   std::array<AxisVec, 8> chanBaseFrames{}, ncBaseFrames{};
   AxisVec home1{}, home2{};              // G28 / G30 reference positions, machine mm

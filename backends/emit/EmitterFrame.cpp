@@ -49,9 +49,10 @@ const FrameCodes *frameCodes(Target t) {
   return nullptr;
 }
 
-const char *sourceSelectionName(int selection) {
+std::string sourceSelectionName(int selection) {
   static const char *kNames[] = {"G500", "G54", "G55", "G56", "G57", "G58/G505", "G59/G506",
                                  "G59.1/G507", "G59.2/G508", "G59.3/G509"};
+  if (selection > 9 && selection <= 99) return fmt::format("G54 P{}", selection - 6);  // the 808D's extended offsets
   return selection >= 0 && selection <= 9 ? kNames[selection] : "an unknown work offset";
 }
 
@@ -186,7 +187,7 @@ void Emitter::syncFrame(const MotionRecord &r) {
   // The work offset: the source's when the target has a code for it, else the one in force
   // with the whole translation in the positions.
   int sel = written_.selection;
-  const bool selectable = codes->select[src_.selection] != nullptr;
+  const bool selectable = src_.selection <= 9 && codes->select[src_.selection] != nullptr;
   if (selectable) sel = src_.selection;
   else baked.push_back(std::string("the frame of ") + sourceSelectionName(src_.selection));
   AxisVec offset{};

@@ -47,6 +47,7 @@ struct IsoOptions {
   OffsetMemory offsetMemory = OffsetMemory::None;
   bool lathe = false;                   // machine [controller] kind = "lathe": turning codes, T0101, U/W
   char latheSystem = 'A';               // its G-code system: 'A' (U/W incremental), 'B' or 'C'
+  bool auxiliaryB = false;              // the machine has no B axis: .nc B<n> is an auxiliary function
   std::vector<std::string> linkedFunctions;  // defined by linked files: calls to them are not searched
   std::vector<CodeCall> codeCalls;      // machine macro_calls
   GuestFactory siemensBlocks;           // G290 … G291: the Sinumerik front end's blocks (null: G290 is an error)

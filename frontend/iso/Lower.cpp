@@ -25,7 +25,7 @@ std::string gName(int32_t code10) {
 
 BlockLowerer::BlockLowerer(const IsoOptions &opts, Flavour flavour, Diagnostics &diags)
     : codeCalls_(opts.codeCalls), diags_(&diags), flavour_(flavour), axesScaleEnable_(opts.axesScaleEnable),
-      lathe_(opts.lathe && flavour == Flavour::Fanuc), system_(opts.latheSystem), scaleWeighting_(opts.scaleWeighting) {
+      lathe_(opts.lathe && flavour == Flavour::Fanuc), auxiliaryB_(opts.auxiliaryB && flavour == Flavour::Fanuc), system_(opts.latheSystem), scaleWeighting_(opts.scaleWeighting) {
   if (opts.decimalMode == "calculator") decimal_ = 0;
   else if (opts.decimalMode == "is-b") decimal_ = 1;
   else if (opts.decimalMode == "is-c") decimal_ = 2;
@@ -331,6 +331,12 @@ bool BlockLowerer::Block::setup() {
   if (!parallelAxesOk()) return false;
   nonModal = G(GGroup::NonModal);
   if (nonModal && nonModal->kind == GKind::MacroCall && !macroCall) nonModal = nullptr;
+  // 808D: where B names no axis it is an auxiliary function, a PLC output as H1=<n> (manual
+  // L2752-2760): not an axis word of the block's move.
+  if (L.auxiliaryB_ && !macroCall && bw.has('B')) {
+    auxB = take('B', Scale::None);
+    bw.present &= ~Words::bit('B');
+  }
   // In G16 X and Y are a radius and an angle; G28/G30/G92/G53/G10/G52/G04 X... would read them
   // as coordinates: an error rather than a guess (ISO-MOT-11).
   if (L.polar_ && nonModal && !macroCall && bw.hasAny("XY")) {
@@ -453,15 +459,12 @@ bool BlockLowerer::Block::setup() {
       if (h) op.set("h", std::move(h));  // none: the tool in the spindle (rs274 G43 without H)
     }
   }
-  if (auto *gi = G(GGroup::WorkOffset); gi && gi->arg == 1 && L.flavour_ == Flavour::Fanuc && !nonModal && bw.has('P')) {
-    // 808D G54 P1…P93 (the extended offsets) and G54 P0 (the external one): ncc's table has G54-G59.
-    L.diags_->error(bw.get('P')->loc, "G54 P (the extended work offsets P1-P93, the external offset P0) is not supported",
-                   "unsupported-code");
+  int workOffset = G(GGroup::WorkOffset) ? G(GGroup::WorkOffset)->arg : 0;
+  if (workOffset == 1 && L.flavour_ == Flavour::Fanuc && !nonModal && bw.has('P') && !extendedWorkOffset(workOffset))
     return false;
-  }
-  if (auto *gi = G(GGroup::WorkOffset))
+  if (workOffset)
     emit(OpKind::WorkOffset, gloc(GGroup::WorkOffset))
-        .set("index", Expr::number(gi->arg, ir::Type::Int, gloc(GGroup::WorkOffset)));
+        .set("index", Expr::number(workOffset, ir::Type::Int, gloc(GGroup::WorkOffset)));
   modeOp(GGroup::PathMode, "path_mode");
   if (G(GGroup::PathMode) && G(GGroup::PathMode)->mode == ModeValue::Continuous) {
     // G64 P<path tolerance> Q<naive-CAM tolerance>; rs274: Q defaults to P.
@@ -472,6 +475,26 @@ bool BlockLowerer::Block::setup() {
   modeOp(GGroup::Distance, "distance");
   modeOp(GGroup::ArcDistance, "arc_distance");
   modeOp(GGroup::Retract, "retract");
+  return true;
+}
+
+// 808D G54 P1…P93: the extended work offsets (manual L1972, L5426, L6224), the machine's
+// [offsets] g54p table: settable offsets 7…99 after G54-G59's 1…6 (docs/IR.md `work_offset`). G54 P0, the external work
+// offset, is set by the PLC: nothing in a program or a machine file says its value.
+bool BlockLowerer::Block::extendedWorkOffset(int &index) {
+  IsoWord *p = bw.get('P');
+  if (p->expr || p->hasPoint || !(p->value >= 0 && p->value <= 93) || p->value != std::floor(p->value)) {
+    L.diags_->error(p->loc, "G54 P needs a whole number 1 to 93 (an extended work offset) written as a constant",
+                   "bad-offset-index");
+    return false;
+  }
+  if (p->value == 0) {
+    L.diags_->error(p->loc, "G54 P0 (the external work offset, set by the PLC) is not supported: its value is not known",
+                   "unsupported-code");
+    return false;
+  }
+  bw.used |= Words::bit('P');
+  index = 6 + (int)p->value;
   return true;
 }
 
@@ -625,6 +648,9 @@ bool BlockLowerer::Block::motion() {
       if (isPeckMotion(m)) peckWords(op);
       // The repeat count: K (Fanuc/808D) or L; rs274 has L only.
       if (cycle && (bw.has('L') || (bw.has('K') && !rs274))) op.set("L", take(bw.has('L') ? 'L' : 'K', Scale::None));
+      // The 808D's G73 and G84/G74 steps differ from rs274's (docs/CYCLES.md "808D drilling").
+      if (!rs274 && (m == ModeValue::PeckChipBreak || m == ModeValue::Tap || m == ModeValue::TapLeft))
+        op.set("fanuc_cycle", Expr::number(1, ir::Type::Int, loc));
       if (!b.corner.empty() && (arc || m == ModeValue::Linear)) {
         const IsoWord &w = b.corner.front();
         op.set(w.letter == 'C' ? "chamfer" : "round", literal(w, factor(Scale::Linear)));
@@ -737,6 +763,10 @@ bool BlockLowerer::Block::stops() {
   for (int i = 0; i < nm; ++i)
     if (ms[i].info.kind == MKind::Aux)
       emit(OpKind::Aux, ms[i].word->loc).set("m", Expr::number(ms[i].info.code, ir::Type::Int, ms[i].word->loc));
+  if (auxB) {
+    SourceLoc loc = auxB->loc;
+    emit(OpKind::Aux, loc).set("b", std::move(auxB));
+  }
   return true;
 }
 

@@ -84,6 +84,7 @@ private:
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
   bool axesScaleEnable_ = false;  // G51 factors: I J K (else P)
   bool lathe_ = false;            // turning codes, T0101, (system A) U/W incremental X/Z
+  bool auxiliaryB_ = false;       // .nc on a machine without a B axis: B<n> is an auxiliary output
   char system_ = 'A';             // the lathe's G-code system
   double scaleWeighting_ = 0.001;
   ModeValue motion_ = ModeValue::Rapid;

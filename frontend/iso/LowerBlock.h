@@ -77,6 +77,7 @@ struct BlockLowerer::Block {
   int nm = 0;
   bool macroCall = false;  // G65, G66: every other address is an argument (M too)
   bool axesTaken = false;  // a non-modal code took the axis words
+  ExprPtr auxB;            // the 808D's B function of the block (stops() emits it)
   bool dwellTookAxis = false;  // Fanuc G4 X<seconds>
   bool offsetTookAxes = false;  // LinuxCNC G43.1/G43.2 axis words in a block without a motion code
   ModeValue motionBefore = ModeValue::Rapid;  // the motion mode a G5/G5.1 block gives back
@@ -142,6 +143,8 @@ struct BlockLowerer::Block {
   bool polarWords(Op &op, ModeValue m, SourceLoc loc);
   bool skipMove();  // G31 (ISO-MEAS-01)  // a move in G16 (ISO-MOT-11)
   bool offsetToolLength(bool add, SourceLoc loc);
+  bool extendedWorkOffset(int &index);  // 808D G54 P1…P93
+  bool fanucWorkOffsetWrite(SourceLoc loc);  // 808D G10 L2: P0 and G91 refused
   void axisWords(Op &op, const char *axes) {
     for (const char *a = axes; *a; ++a)
       if (bw.has(*a)) add(op, *a, take(*a, scaleOf(*a)));

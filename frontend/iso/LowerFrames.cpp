@@ -92,6 +92,24 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
   return frameOps();
 }
 
+// The 808D's G10 L2 P<p> (manual L1982-1993, L6236-6243): p = 0 writes the external work offset
+// (the PLC's, which ncc does not model), where rs274 writes the active system; in G91 the values
+// are added to the offset, which ncc does not do yet. Both are errors, never an absolute write.
+bool BlockLowerer::Block::fanucWorkOffsetWrite(SourceLoc loc) {
+  IsoWord *p = bw.get('P');
+  if (!p->expr && p->value == 0) {
+    L.diags_->error(p->loc, "G10 L2 P0 writes the 808D's external work offset (set by the PLC): not supported",
+                   "unsupported-code");
+    return false;
+  }
+  if (L.distance_ == ModeValue::Incremental) {
+    L.diags_->error(loc, "G10 L2 in G91 adds the values to the work offset (808D): not supported, write it in G90",
+                   "unsupported-code");
+    return false;
+  }
+  return true;
+}
+
 // Non-modal codes that take the axis words for themselves: G10/G92, G28/G30, G53.
 bool BlockLowerer::Block::coordinateOps() {
   // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
@@ -110,6 +128,7 @@ bool BlockLowerer::Block::coordinateOps() {
         return false;
       }
       bw.used |= 1u << ('L' - 'A');
+      if (L.flavour_ == Flavour::Fanuc && lv == 2 && !fanucWorkOffsetWrite(loc)) return false;
       op.set("kind", Expr::symbol(lv == 2 ? "g10l2" : "g10l20", loc));
       op.set("index", take('P', Scale::None));
       // RS274NGC G10 L2 R<degrees>: the system's rotation about the Z axis (Fanuc has none).

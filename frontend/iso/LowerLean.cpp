@@ -73,6 +73,7 @@ bool BlockLowerer::Block::leanClassify() {
 bool BlockLowerer::Block::leanFits() const {
   if (nm || macroCall || (groups & ~kLeanGroups)) return false;
   if (L.flavour_ == Flavour::Fanuc && !L.lathe_ && bw.hasAny("UVW")) return false;  // setup's parallelAxesOk
+  if (L.auxiliaryB_ && bw.has('B')) return false;  // the 808D's B function: setup()
   for (uint32_t g = groups; g; g &= g - 1)
     if (gs[__builtin_ctz(g)].info->kind != GKind::Mode) return false;
   const ModeValue m = G(GGroup::Motion) ? G(GGroup::Motion)->mode : L.motion_;

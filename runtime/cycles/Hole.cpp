@@ -144,8 +144,10 @@ void holeSteps(const HoleSpec &h, int a1, int a2, int d, double p1, double p2, s
     // comes after the reversal).
     w.tapTurn(h.spindle, true);
     w.dwell(h.dwellBottom);
-    w.feed(h.retract, h.exitFeed);
+    w.feed(h.tapOutToStart ? h.start : h.retract, h.exitFeed);
+    w.dwell(h.dwellStart);
     w.tapTurn(h.spindle, false);
+    if (h.tapOutToStart && h.retract != h.start) w.rapid(h.retract);
     break;
   }
   }

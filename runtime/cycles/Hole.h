@@ -44,6 +44,10 @@ struct HoleSpec {
   double dwellPeck = -1;        // at each peck depth
   double dwellTop = -1;         // at `start` after a full retract
   double dwellBottom = -1;      // at the bottom (tapping: after the reversal)
+  // Tap exit: reversed out to `start` only, `dwellStart` there, the tapping way again, then a
+  // rapid to `retract` (808D/Fanuc G84/G74); false: reversed out to `retract` (rs274).
+  bool tapOutToStart = false;
+  double dwellStart = -1;
   double feed = 0, firstFeed = 0;  // 0: the programmed feed
   HoleExit exit = HoleExit::Rapid;
   double exitLevel = 0, exitFeed = 0;

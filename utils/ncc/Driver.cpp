@@ -100,6 +100,7 @@ FrontendOptions Session::frontendOptions(uint32_t file) const {
   fo.lathe = machine.controller.lathe();
   fo.latheSystem = machine.controller.gcodeSystem.empty() ? 'A' : machine.controller.gcodeSystem[0];
   fo.startMode = machine.controller.startMode;
+  fo.auxiliaryB = !machine.axes[4].present;  // the 808D's B function (manual L2752-2760)
   fo.geoAxes = 0;
   for (int i = 0; i < 3; ++i)
     if (machine.axes[i].present) fo.geoAxes |= 1u << i;
