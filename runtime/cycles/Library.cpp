@@ -731,6 +731,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addHoleEntries(v);
     addClearingEntries(v);
     addSinClearingEntries(v);
+    addSinSpigotEntries(v);
     addHeiPatternEntries(v);
     addHeiThreadMillEntries(v);
     addHeiDeepHoleEntries(v);
