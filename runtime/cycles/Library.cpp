@@ -732,6 +732,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addClearingEntries(v);
     addSinClearingEntries(v);
     addSinSpigotEntries(v);
+    addSinThreadMillEntries(v);
     addHeiPatternEntries(v);
     addHeiThreadMillEntries(v);
     addHeiDeepHoleEntries(v);
