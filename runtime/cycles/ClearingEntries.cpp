@@ -5,6 +5,7 @@
 #include "runtime/Geometry.h"
 #include "runtime/cycles/Hole.h"
 #include "runtime/cycles/Pocket.h"
+#include "runtime/cycles/Stud.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -150,81 +151,7 @@ bool hei254(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return arcSlots(m, ctx.plane, centre, rp, W, sweepDeg, start, step, (int)reps, "side allowance Q368", out, err);
 }
 
-// ---- studs (256, 257): laps round the stud from the blank inward.
-// The stud in its own frame: its outline offset outward by d (a tool-centre lap, counter-clockwise
-// from the +x side), how far from the stud the blank reaches at most, and the approach point.
-struct StudShape {
-  Contour (*lap)(const StudShape &, double d);
-  double a = 0, b = 0, rc = 0;  // half sides and corner radius (a circle: a = b = rc = radius;
-                                // a polygon: a = the apothem)
-  double reach = 0;
-  PlanePoint approach{};
-  int corners = 0;              // a regular polygon's
-};
-Contour rectLap(const StudShape &s, double d) { return roundedRect(s.a + d, s.b + d, s.rc + d); }
-Contour circleLap(const StudShape &s, double d) { return circleContour(s.a + d); }
-// A regular polygon (apothem a, corners rounded by rc) offset by d, its first side's outward
-// normal along +x: from that side's middle, each side then the arc round the next corner.
-Contour polygonLap(const StudShape &s, double d) {
-  const int n = s.corners;
-  const double rho = s.rc + d, circum = (s.a - s.rc) / std::cos(M_PI / n);  // the rounding centres'
-  auto polar = [](double r, double t) { return PlanePoint{r * std::cos(t), r * std::sin(t)}; };
-  Contour c;
-  c.start = {s.a - s.rc + rho, 0};
-  for (int k = 0; k < n; ++k) {
-    const PlanePoint centre = polar(circum, M_PI / n + k * 2 * M_PI / n);
-    const PlanePoint from = polar(rho, k * 2 * M_PI / n), to = polar(rho, (k + 1) * 2 * M_PI / n);
-    c.segs.push_back({{centre[0] + from[0], centre[1] + from[1]}, false, {}, true});
-    c.segs.push_back({{centre[0] + to[0], centre[1] + to[1]}, true, centre, true});
-  }
-  c.segs.push_back({c.start, false, {}, true});
-  return c;
-}
-
-// The laps' tool-centre distances from the stud, outermost first: the innermost leaves
-// `allowance`, the outermost reaches the blank's farthest point, evenly at most a stepover apart
-// (seed002a L7034-7081: further laps "with constant lateral step").
-std::vector<double> lapOffsets(const MillJob &m, const StudShape &s, double allowance) {
-  const double inner = m.r + allowance, outer = std::max(inner, s.reach - m.r);
-  int n = (int)std::ceil((outer - inner) / m.stepover - 1e-9);
-  std::vector<double> out;
-  for (int k = n; k > 0; --k) out.push_back(inner + (outer - inner) * k / n);
-  out.push_back(inner);
-  return out;
-}
-
-// Heidenhain 256/257: each level from the approach point outside the blank (plunge there at Q206),
-// in to the outermost lap, the laps inward at Q207, back out to the approach point; then the wall
-// (finishWalls, from outside) and the floor; the end at the 2nd set-up clearance there.
-// [model] The moves onto the laps and back out are straight and radial, the laps concentric.
-void heiStud(const MillJob &m, const StudShape &s, Mill &mill) {
-  const bool ccw = !m.ccw;  // climb milling on an outer wall runs clockwise with M3
-  const double roughDepth = m.depth - m.floorAllowance;
-  auto laps = [&](double level, double allowance, double f) {
-    for (double d : lapOffsets(m, s, allowance)) {
-      Contour lap = s.lap(s, d);
-      mill.feed(lap.start, level, f);
-      mill.run(lap, ccw, level, f);
-    }
-    mill.feed(s.approach, level, f);
-  };
-  if (m.roughing()) {
-    mill.go(s.approach, m.lv.zsc);
-    for (double t : infeeds(m.infeed, roughDepth)) {
-      mill.feed(s.approach, m.level(t), m.plungeFeed);
-      laps(m.level(t), m.sideAllowance, m.millFeed);
-    }
-  }
-  if (m.wallPass)
-    finishWalls(m, {s.lap(s, m.r), {1, 0}, m.sideAllowance + m.clearance, false}, ccw, mill);
-  if (m.floorPass) {
-    mill.go(s.approach, m.level(roughDepth - m.clearance));
-    mill.feed(s.approach, m.level(m.depth), m.plungeFeed);
-    laps(m.level(m.depth), 0, m.finishFeed);
-  }
-  mill.up(m.lv.z2);
-}
-
+// ---- studs (256, 257, 258): the stud engine (Stud.h).
 bool hei256(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
   MillJob m;
   if (!heiMill(a, ctx, 0.1, m, err)) return err.empty();
@@ -237,12 +164,10 @@ bool hei256(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (!position(a, "Q367", 4, pos, err)) return false;
   if (a.get("Q437") != 0) return fail(err, "Q437 1-4 (approach at a corner, spiralling in) is not supported: program Q437=0");
   StudShape s{rectLap, L / 2, W / 2, rc};
-  // The farthest blank point is a corner: its distance from the rounded stud.
-  double qx = BL / 2 - (L / 2 - rc), qy = BW / 2 - (W / 2 - rc);
-  s.reach = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) - rc;
+  s.reach = rectReach(s, BL / 2, BW / 2);
   s.approach = {BL / 2 + m.r + 2, 0};  // 2 mm outside the blank, right of the stud (Q437 0)
   Mill mill = placed(out, ctx, m, {-kCorner[pos][0] * L / 2, -kCorner[pos][1] * W / 2}, a.get("Q224"));
-  heiStud(m, s, mill);
+  millStud(m, s, mill);
   return true;
 }
 
@@ -258,7 +183,7 @@ bool hei257(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   s.approach = {blank / 2 + m.r + 2, 0};
   // [model] Q376 -1 (the controller's optimum) approaches at 0 degrees.
   Mill mill = placed(out, ctx, m, {0, 0}, angle < 0 ? 0 : angle);
-  heiStud(m, s, mill);
+  millStud(m, s, mill);
   return true;
 }
 
@@ -283,7 +208,7 @@ bool hei258(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   s.reach = blank / 2 - s.a;  // the blank's farthest point lies off the middle of a side
   s.approach = {blank / 2 + m.r + 2, 0};
   Mill mill = placed(out, ctx, m, {0, 0}, a.get("Q224") - 180 / n);
-  heiStud(m, s, mill);
+  millStud(m, s, mill);
   return true;
 }
 

@@ -5,6 +5,7 @@
 #include "runtime/cycles/Entry.h"
 #include "runtime/cycles/HeiDrill.h"
 #include "runtime/cycles/Mill.h"
+#include "runtime/cycles/ThreadMill.h"
 #include "runtime/Geometry.h"
 
 #include <cmath>
@@ -15,19 +16,6 @@ namespace ncc {
 using namespace entry;
 
 namespace {
-
-// A thread job in the hole's own frame: the centre at the origin, depths d >= 0 measured from
-// the surface into the material (the level of depth d is surface + dir * d).
-struct Thread {
-  double surface = 0, dir = -1, zsc = 0, z2 = 0;
-  double radius = 0;  // the nominal radius Q335 / 2
-  double pitch = 0;   // |Q239|
-  double centre = 0;  // the tool-centre circle: radius - r inside, radius + r outside
-  double start = 0;   // the start point on +x: 0 (the hole's centre) or outside the stud (267)
-  bool ccw = true;    // the turning sense of the helix about the tool axis
-  double pre = 0, mill = 0, approach = 0;  // feeds Q253, Q207 (at the cutting edge), Q512
-  double level(double d) const { return surface + dir * d; }
-};
 
 bool need(const CycleArgs &a, std::initializer_list<const char *> ks, std::string &err) {
   for (const char *k : ks)
@@ -118,25 +106,6 @@ void countersinkCircle(Mill &m, const Thread &t, double r, double level, double 
   halfCircle(m, t, t.start, r, 0, level, f);
   m.arc({r, 0}, {0, 0}, t.ccw, level, f);
   halfCircle(m, t, r, t.start, 0, level, f);
-}
-
-// One helix from depth `from` to depth `to`: along the axis at Q253 to the starting plane, the
-// compensating move, the tangential approach (a helical half circle climbing with the helix's
-// slope), |to - from| / pitch turns at the milling feed (referred to the cutting edge: the
-// tool-centre feed is Q207 x centre / radius, L4613-L4618), the tangential departure back to the
-// start point's radius at Q512.
-void helix(Mill &m, const Thread &t, double from, double to) {
-  const double way = to > from ? 1 : -1, rho = std::fabs(t.centre - t.start) / 2;
-  const double lead = t.pitch * rho / (2 * t.centre);  // the half circle's share of the depth
-  const PlanePoint start{t.start, 0};
-  if (m.level() != t.level(from)) m.feed(start, t.level(from), t.pre);
-  m.feed(start, t.level(from - way * lead), t.pre);
-  halfCircle(m, t, t.start, t.centre, 0, t.level(from), t.approach);
-  const double turns = std::fabs(to - from) / t.pitch, whole = std::floor(turns + 1e-9), part = turns - whole;
-  const double angle = part < 1e-9 ? 0 : (t.ccw ? 1 : -1) * part * 2 * M_PI;
-  m.arc({t.centre * std::cos(angle), t.centre * std::sin(angle)}, {0, 0}, t.ccw, t.level(to),
-        t.mill * t.centre / t.radius, part < 1e-9 ? (int)whole : (int)whole + 1);
-  halfCircle(m, t, t.centre, t.start, angle, t.level(to + way * lead), t.approach);
 }
 
 // The thread between the surface and the depth L by Q355 (L4745-L4752): 0 one helix at the
@@ -297,6 +266,30 @@ bool hei267(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (m.here() != PlanePoint{t.start, 0}) m.rapid({t.start, 0}, t.z2);
   return true;
 }
+
+}  // namespace
+
+// One helix from depth `from` to depth `to`: along the axis at Q253 to the starting plane, the
+// compensating move, the tangential approach (a helical half circle climbing with the helix's
+// slope), |to - from| / pitch turns at the milling feed (referred to the cutting edge: the
+// tool-centre feed is Q207 x centre / radius, L4613-L4618), the tangential departure back to the
+// start point's radius at Q512.
+void entry::helix(Mill &m, const Thread &t, double from, double to) {
+  const double way = to > from ? 1 : -1, rho = std::fabs(t.centre - t.start) / 2;
+  const double lead = t.pitch * rho / (2 * t.centre);  // the half circle's share of the depth
+  const PlanePoint start{t.start, 0};
+  auto pre = [&](double level) { t.pre > 0 ? m.feed(start, level, t.pre) : m.rapid(start, level); };
+  if (m.level() != t.level(from)) pre(t.level(from));
+  pre(t.level(from - way * lead));
+  halfCircle(m, t, t.start, t.centre, 0, t.level(from), t.approach);
+  const double turns = std::fabs(to - from) / t.pitch, whole = std::floor(turns + 1e-9), part = turns - whole;
+  const double angle = part < 1e-9 ? 0 : (t.ccw ? 1 : -1) * part * 2 * M_PI;
+  m.arc({t.centre * std::cos(angle), t.centre * std::sin(angle)}, {0, 0}, t.ccw, t.level(to),
+        t.mill * t.centre / t.radius, part < 1e-9 ? (int)whole : (int)whole + 1);
+  halfCircle(m, t, t.centre, t.start, angle, t.level(to + way * lead), t.approach);
+}
+
+namespace {
 
 const CycleDef kThreadMillEntries[] = {
     {"hei.262", "Q335 Q239 Q201 Q355 Q253 Q351 Q200 Q203 Q204 Q207 Q512", "Heidenhain thread milling", hei262, nullptr},

@@ -731,6 +731,8 @@ const std::vector<CycleDef> &cycleLibrary() {
     addHoleEntries(v);
     addClearingEntries(v);
     addSinClearingEntries(v);
+    addSinSpigotEntries(v);
+    addSinThreadMillEntries(v);
     addHeiPatternEntries(v);
     addHeiThreadMillEntries(v);
     addHeiDeepHoleEntries(v);

@@ -3,7 +3,7 @@
 // onto a MillJob and a shape for the shared milling engine (Pocket.h) [model], docs/CYCLES.md.
 #include "runtime/Geometry.h"
 #include "runtime/cycles/Hole.h"
-#include "runtime/cycles/Pocket.h"
+#include "runtime/cycles/SinMill.h"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -17,31 +17,26 @@ namespace {
 // ---- Sinumerik POCKET3 and POCKET4 (seed000c 19.1.5, 19.1.6). The manual lists the parameters
 // only: the motion is the shared pocket's (heiPocket) [model], from over the pocket's centre at
 // the retraction plane _RTP, back up to it at the end.
-// The parameter names of the Sinumerik milling cycles (POCKET3/4 write _RTP, SLOT1 RTP …); null:
-// the cycle has none (its default applies).
-struct SinNames {
-  const char *rtp, *rfp, *sdis, *mid, *fal, *fald, *ffp1, *ffd, *cdir, *vari, *helixRadius, *helixPitch;
-  bool slotDepth;  // _DP absolute / _DPR relative by _AMODE (SLOT1, LONGHOLE), else _DP by _AMODE
-};
 constexpr SinNames kPocketNames{"_RTP", "_RFP", "_SDIS", "_MID", "_FAL", "_FALD", "_FFP1", "_FFD",
-                                "_CDIR", "_VARI", "_RAD1", "_DP1", false};
+                                "_CDIR", "_VARI", "_RAD1", "_DP1", kDepthDP};
 constexpr SinNames kSlotNames{"RTP", "RFP", "SDIS", "_MID", "_FAL", "_FALD", "FFP1", "FFD",
-                              "CDIR", "VARI", "_STA2", "_DP1", true};
+                              "CDIR", "VARI", "_STA2", "_DP1", kDepthSlot};
 constexpr SinNames kLongholeNames{"RTP", "_RFP", "SDIS", "MID", nullptr, nullptr, "FFP1", "FFD",
-                                  nullptr, nullptr, nullptr, nullptr, true};
+                                  nullptr, nullptr, nullptr, nullptr, kDepthSlot};
 
-double get(const CycleArgs &a, const char *k) { return k ? a.get(k) : 0; }
+}  // namespace
 
-bool sinPocketJob(const CycleArgs &a, const CycleContext &ctx, const SinNames &n, MillJob &m, std::string &err) {
+static double get(const CycleArgs &a, const char *k) { return k ? a.get(k) : 0; }
+
+bool entry::sinPocketJob(const CycleArgs &a, const CycleContext &ctx, const SinNames &n, MillJob &m, std::string &err) {
   for (const char *k : {n.rtp, n.rfp, n.mid, n.ffp1, n.ffd})
     if (!a.has(k)) return fail(err, std::string(k) + " is required");
   if (!toolRadius(ctx, m, err)) return false;
-  // The depth: POCKET3/4 _DP absolute, or (_AMODE 1st digit 1) below the reference plane; the
-  // slots _DP absolute (2) or _DPR below it (1), 0: _DPR when given.
+  // The depth by n.depthMode (SinMill.h).
   const double rfp = a.get(n.rfp);
   const int mode = digit(a.get("_AMODE"), 1);
-  bool below = n.slotDepth ? mode == 1 || (mode == 0 && a.has("_DPR")) : mode == 1;
-  const char *depthKey = n.slotDepth && below ? "_DPR" : "_DP";
+  const bool below = mode == 1 || (n.depthMode == kDepthSlot && mode == 0 && a.has("_DPR"));
+  const char *depthKey = n.depthMode != kDepthDP && below ? "_DPR" : "_DP";
   if (!a.has(depthKey)) return fail(err, std::string(depthKey) + " (depth) is required");
   const double bottom = below ? rfp - a.get(depthKey) : a.get(depthKey);
   if (bottom == rfp) return fail(err, fmt::format("the depth lies on the reference plane {}", n.rfp));
@@ -94,21 +89,25 @@ bool sinPocketJob(const CycleArgs &a, const CycleContext &ctx, const SinNames &n
   return true;
 }
 
-// The reference point of a Sinumerik element: (ka, kb) when programmed, else (null) the tool's
-// position, so that MCALL with a position pattern puts one at each position [model].
-const PlanePoint *reference(const CycleArgs &a, const char *ka, const char *kb, PlanePoint &out) {
+const PlanePoint *entry::reference(const CycleArgs &a, const char *ka, const char *kb, PlanePoint &out) {
   if (!a.has(ka) && !a.has(kb)) return nullptr;
   out = {a.get(ka), a.get(kb)};
   return &out;
 }
 
-// POCKET3/4: _MIDA, mm or (_AMODE 2nd digit 1) percent of the tool diameter, 0: 80 % of it; no
-// pre-machined pockets.
-bool sinPlaneInfeed(const CycleArgs &a, MillJob &m, std::string &err) {
+bool entry::sinMida(const CycleArgs &a, MillJob &m, std::string &err) {
   double mida = a.get("_MIDA");
   if (digit(a.get("_AMODE"), 2) == 1) mida *= 2 * m.r / 100;
   m.stepover = mida > 0 ? mida : 1.6 * m.r;
   if (mida < 0 || m.stepover > 2 * m.r) return fail(err, "_MIDA (plane infeed) must lie between 0 and the tool diameter");
+  return true;
+}
+
+namespace {
+
+// POCKET3/4: _MIDA (sinMida); no pre-machined pockets.
+bool sinPlaneInfeed(const CycleArgs &a, MillJob &m, std::string &err) {
+  if (!sinMida(a, m, err)) return false;
   if (digit(a.get("_GMODE"), 5) == 2 || a.get("_AP1") != 0 || a.get("_AP2") != 0 || a.get("_AD") != 0)
     return fail(err, "machining a pre-machined pocket (_AP1 _AP2 _AD, _GMODE 5th digit 2) is not supported");
   return true;
@@ -121,10 +120,6 @@ bool sinPocket(const MillJob &m, const PocketShape &p, Mill &mill, std::string &
   mill.up(m.lv.z2);
   return true;
 }
-
-// _GMODE 4th digit: 0, 1 the reference point is the centre; 2-5 a corner, the pocket running
-// +/-_LENG, +/-_WID from it: the centre from the corner in half sides.
-constexpr double kSinCorner[6][2] = {{0, 0}, {0, 0}, {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
 
 bool sinPocket3(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
   MillJob m;
@@ -206,7 +201,7 @@ bool sinLonghole(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
 // of radius RAD about (_CPA, _CPO), the first from STA1, the next INDA further (full circle:
 // 360 / NUM), each as hei.254's [model], up to RTP between them (straight, VARI 2nd digit 0).
 constexpr SinNames kSlot2Names{"RTP", "RFP", "SDIS", "_MID", "_FAL", nullptr, "FFP1", "FFD",
-                               "CDIR", nullptr, nullptr, nullptr, true};
+                               "CDIR", nullptr, nullptr, nullptr, kDepthSlot};
 
 bool sinSlot2(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
   MillJob m;
