@@ -66,18 +66,12 @@ int cmdTranslate(int argc, char **argv) {
   if (!f) return kExitErrors;
   if (keepStructure) return translateStructured(s, f, eo, out, verify, tol);
 
+  MotionBuffer source;
+  if (!s.execute(f, source)) return kExitErrors;
   std::string text;
   auto emitter = emit::ProgramEmitter::create(s.machine, eo, text, s.diags);
   if (!emitter) return kExitErrors;
-  // Only --verify needs the source's records again: without it they go straight to the emitter,
-  // so the stream is never held whole (bench/cldata.sh).
-  MotionBuffer source;
-  if (verify) {
-    if (!s.execute(f, source)) return kExitErrors;
-    for (auto &r : source.records) emitter->record(r);
-  } else if (!s.execute(f, *emitter)) {
-    return kExitErrors;
-  }
+  for (auto &r : source.records) emitter->record(r);
   if (!emitter->finish(s.diags)) return kExitErrors;
 
   if (verify) {
