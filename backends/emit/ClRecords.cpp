@@ -58,7 +58,8 @@ class ClWriter : public ProgramEmitter {
 public:
   ClWriter(const Machine &m, const EmitOptions &o, LineSink out, Diagnostics &d)
       : machine_(m), opts_(o), out_(out), diags_(d) {
-    for (int i = 0; i < 3; ++i) origin_[i] = m.workOffsets[0][i];
+    const AxisVec start = startFrame(m);  // the readers select nothing: the machine's start frame
+    for (int i = 0; i < 3; ++i) origin_[i] = start[i];
   }
   void start();
   void record(const MotionRecord &r) override;
@@ -121,7 +122,7 @@ protected:
   Diagnostics &diags_;
   uint64_t lines_ = 0;
   bool errors_ = false, ended_ = false, finished_ = false;
-  Vec3 origin_{};          // the machine's G54: both readers run in it
+  Vec3 origin_{};          // the machine's G54 after its stored base frames: both readers run in it
   double toolLength_ = 0;  // what the reader's tool length offset adds on Z
   double loadedLength_ = 0;  // the length the last tool load switched on
   double sourceLength_ = 0;  // the source's tool length in force (ToolLength records)
@@ -160,9 +161,9 @@ void ClWriter::start() {
   name = name.substr(0, name.find('.'));
   for (char &c : name) c = (char)std::toupper((unsigned char)c);
   header(name.empty() ? "NCC" : name,
-         fmt::format("ncc: tool-tip positions in the G54 work coordinates of machine '{}' (mm); a tool load switches the "
+         fmt::format("ncc: tool-tip positions in the G54 work coordinates{} of machine '{}' (mm); a tool load switches the "
                      "tool's length offset on; other work offsets, shifts and frames of the source are in the positions",
-                     machine_.name));
+                     storedBaseFrames(machine_, false) != AxisVec{} ? " (after its stored base frames)" : "", machine_.name));
 }
 
 // The reader's tool length follows the source's where the format can switch it (ADEM [709],

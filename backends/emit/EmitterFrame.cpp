@@ -90,6 +90,27 @@ bool offsetNumberLength(const Machine &machine_, int n, double &length) {
   return true;
 }
 
+AxisVec storedBaseFrames(const Machine &machine_, bool selected) {
+  const Controller &c = machine_.controller;
+  AxisVec sum{};
+  const bool kept = (c.resetModeMask & 1) && (c.resetModeMask & (1 << 14));
+  if (!selected && !kept) return sum;
+  for (auto [frames, count] : {std::pair{&machine_.ncBaseFrames, c.ncBaseFrames}, {&machine_.chanBaseFrames, c.baseFrames}})
+    for (int i = 0; i < count && i < (int)frames->size(); ++i)
+      if (c.baseFrameMask >> i & 1)
+        for (int a = 0; a < kAxes; ++a) sum[a] += (*frames)[i][a];
+  return sum;
+}
+
+AxisVec startFrame(const Machine &machine_) {
+  AxisVec o = storedBaseFrames(machine_, false);
+  const int r = machine_.controller.resetModeMask;
+  const bool g500 = machine_.dialect == "sinumerik" && !((r & 1) && (r & (1 << 5)));
+  if (!g500)
+    for (int a = 0; a < kAxes; ++a) o[a] += machine_.workOffsets[0][a];
+  return o;
+}
+
 // Sinumerik D<d>: the length edge d of the tool in the spindle adds; false when it has no such
 // edge (a free tool number has edge 1 of zero data).
 bool Emitter::spindleEdgeLength(int d, double &length) const {
@@ -170,19 +191,25 @@ void Emitter::syncFrame(const MotionRecord &r) {
   if (!frameInit_) {  // the set-up blocks' selection is in force at the start, else the reset one (G54)
     frameInit_ = true;
     written_.selection = 1;
+    bool selected = false;
     for (const std::string &blk : st_.setup)
       for (int i = 0; i <= 9; ++i)
         if (codes->select[i] && (" " + blk + " ").find(std::string(" ") + codes->select[i] + " ") != std::string::npos)
-          written_.selection = i;
+          written_.selection = i, selected = true;
+    // A selection activates the stored base frames on the target (ncc's reader, as the Sinumerik
+    // control, also in ISO mode); the NC-200 has none: there they stay in the positions.
+    if (st_.target != Target::Nc200) written_.base = storedBaseFrames(machine_, selected);
   }
   std::vector<std::string> baked;
-  // Before the first FrameChange the machine's G54 is in force (the executor writes one at the
-  // start only when it is not zero).
+  // Before the first FrameChange the machine's G54 (and its base frames) is in force (the
+  // executor writes one at the start only when it is not zero).
   FrameMatrix m = src_.matrix;
   AxisShift otherAxes = src_.axisShift;
   if (!src_.started) {
-    for (int i = 0; i < 3; ++i) m[i * 4 + 3] = machine_.workOffsets[0][i];
-    for (int i = 3; i < kAxes; ++i) otherAxes[i - 3] = machine_.workOffsets[0][i];
+    AxisVec start = storedBaseFrames(machine_, false);
+    for (int i = 0; i < kAxes; ++i) start[i] += machine_.workOffsets[0][i];
+    for (int i = 0; i < 3; ++i) m[i * 4 + 3] = start[i];
+    for (int i = 3; i < kAxes; ++i) otherAxes[i - 3] = start[i];
   }
   // The work offset: the source's when the target has a code for it, else the one in force
   // with the whole translation in the positions.
@@ -190,8 +217,13 @@ void Emitter::syncFrame(const MotionRecord &r) {
   const bool selectable = src_.selection <= 9 && codes->select[src_.selection] != nullptr;
   if (selectable) sel = src_.selection;
   else baked.push_back(std::string("the frame of ") + sourceSelectionName(src_.selection));
-  AxisVec offset{};
-  if (sel > 0) offset = machine_.workOffsets[sel - 1];
+  // What the target adds for the selection: its table entry after the stored base frames, which
+  // a selection block makes active.
+  const AxisVec base = sel != written_.selection && st_.target != Target::Nc200 ? storedBaseFrames(machine_, true)
+                                                                               : written_.base;
+  AxisVec offset = base;
+  if (sel > 0)
+    for (int i = 0; i < kAxes; ++i) offset[i] += machine_.workOffsets[sel - 1][i];
   // The rest of the translation as a local shift, rounded as the target reads it back; a
   // rotation, scaling or mirror stays in the positions (so does a shift of other axes).
   std::array<double, 3> shift{};
@@ -202,7 +234,10 @@ void Emitter::syncFrame(const MotionRecord &r) {
       double want = m[i * 4 + 3] - offset[i];
       if (near(want, 0) || !machine_.axes[i].present) continue;
       if (st_.lathe || !codes->shift) {  // lathes: no local shift written (the turning G52 is not read back yet)
-        baked.push_back("the shift of the work offset");
+        // The NC-200 has no base frames: the machine's stay in the positions with the shift.
+        baked.push_back(!st_.lathe && storedBaseFrames(machine_, true) != AxisVec{}
+                            ? "the shift of the work offset and the Sinumerik base frames"
+                            : "the shift of the work offset");
         shift = {};
         break;
       }
@@ -243,6 +278,7 @@ void Emitter::syncFrame(const MotionRecord &r) {
   if (sel != written_.selection) {
     block({codes->select[sel]});
     written_.selection = sel;
+    written_.base = base;
   }
   if (shift != written_.shift) {
     Words w{codes->shift};

@@ -33,6 +33,7 @@ struct WrittenFrame {
   double toolZ = 0;            // the tool length the written G43 H / D adds on Z
   int toolWord = 0;            // the H (ISO) or D (Sinumerik) number written, 0 none
   AxisVec offset{};            // machine = written position + offset, per axis
+  AxisVec base{};              // what the machine's stored base frames add on the target (in offset)
   std::string baked;           // what the positions hold that no code says (the last note written)
 };
 
@@ -40,5 +41,17 @@ struct WrittenFrame {
 // machine's offset_numbers when it has them (808D $TC_DPH), else tool n's edge 1. False when the
 // machine has none.
 bool offsetNumberLength(const Machine &machine, int n, double &length);
+
+// The translation the machine's stored Sinumerik base frames ([offsets] base, nc_base) add to a
+// program run on it, as runtime/ExecutorFrames.cpp builds $P_ACTBFRAME: the frames selected by
+// base_frame_mask, active once the program selects a work offset (G500, G54…, `selected`), and
+// at the start only when reset_mode_mask keeps them (MD20110 bits 0 and 14). The stored frames
+// are offsets without rotation, so their chain is the sum. Zero on a machine without them.
+AxisVec storedBaseFrames(const Machine &machine, bool selected);
+
+// The translation in force when a run on the machine starts and the program selects nothing
+// (the Klartext and CL readers): the stored base frames as above and the G54 offset, unless the
+// machine starts a Sinumerik program in G500 (reset_mode_mask without bit 5).
+AxisVec startFrame(const Machine &machine);
 
 }  // namespace ncc::emit::detail

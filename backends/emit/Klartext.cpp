@@ -8,6 +8,8 @@
 #include "backends/emit/EmitterImpl.h"
 #include "runtime/cycles/Library.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstring>
 #include <set>
@@ -181,11 +183,22 @@ void Klartext::writeHeader() {
   block("BEGIN PGM " + name_ + " MM");
   // Motion IR is in machine coordinates with the tool lengths in them (docs/EMIT.md "Klartext").
   block("; ncc: machine coordinates, tool lengths included (TOOL CALL DL cancels the table's)");
-  const AxisVec &preset = machine_.workOffsets[0];
+  // The TNC runs the program in its preset (the machine's G54) and, on a machine with stored
+  // Sinumerik base frames, after them (startFrame): cycle 7 moves the datum back to machine zero,
+  // so the coordinates below are the machine's. Cycle 7 shifts X Y Z only.
+  const AxisVec preset = startFrame(machine_);
+  for (int i = 3; i < kAxes; ++i)
+    if (preset[i] != 0 && machine_.axes[i].present) {
+      diags_.error({}, fmt::format("machine '{}' starts a program with axis {} shifted by {} (its G54 and base frames): "
+                                   "cycle 7 cannot take it back, so the Klartext positions would run shifted",
+                                   machine_.name, machine_.axisName(i), preset[i]),
+                   "unsupported-code");
+      errors_ = true;
+    }
   if (preset[0] == 0 && preset[1] == 0 && preset[2] == 0) return;
-  // The TNC runs the program in its preset (the machine's G54): cycle 7 moves the datum back to
-  // machine zero, so the coordinates below are the machine's.
-  block("; the datum shift cancels the preset of machine '" + machine_.name + "'");
+  const bool base = storedBaseFrames(machine_, false) != AxisVec{};
+  block("; the datum shift cancels the preset" + std::string(base ? " and the base frames" : "") + " of machine '" +
+        machine_.name + "'");
   block("CYCL DEF 7.0 DATUM SHIFT");
   MotionRecord at;
   for (int i = 0; i < 3; ++i) {

@@ -64,17 +64,6 @@ int cmdTranslate(int argc, char **argv) {
   eo.programName = file;
   uint32_t f = s.start(file);
   if (!f) return kExitErrors;
-  // Stored Sinumerik base frames shift every work offset when the output runs again on this
-  // machine; no emitter writes them (or removes them from its positions) yet.
-  for (const auto *frames : {&s.machine.chanBaseFrames, &s.machine.ncBaseFrames})
-    for (const AxisVec &v : *frames)
-      for (double c : v)
-        if (c != 0) {
-          s.diags.error({}, "the machine has stored Sinumerik base frames ([offsets] base, nc_base): the emitters do "
-                            "not write base frames, so the output would run shifted",
-                        "unsupported-code");
-          return kExitErrors;
-        }
   if (keepStructure) return translateStructured(s, f, eo, out, verify, tol);
 
   MotionBuffer source;
