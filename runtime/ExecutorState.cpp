@@ -351,7 +351,7 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::InverseTime: out = is(st.feedMode == ModeValue::InverseTime); return true;
   case SysVar::UnitsPerMinute: out = is(st.feedMode == ModeValue::PerMinute); return true;
   case SysVar::UnitsPerRev: out = is(st.feedMode == ModeValue::PerRev); return true;
-  case SysVar::CoordSystem: out = kCoordSystems[st.workOffset - 1]; return true;
+  case SysVar::CoordSystem: out = st.workOffset <= 9 ? kCoordSystems[st.workOffset - 1] : 0; return true;
   case SysVar::ToolOffset: out = is(st.toolLengthH != 0); return true;
   case SysVar::RetractR: out = is(st.retract == ModeValue::RetractR); return true;
   case SysVar::RetractOldZ: out = is(st.retract == ModeValue::RetractInitial); return true;

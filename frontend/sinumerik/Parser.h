@@ -265,6 +265,7 @@ private:
   ir::ExprPtr getvartyp(const Token &t);
   ir::ExprPtr stringis(const Token &t);
   ir::ExprPtr isaxis(const Token &t);
+  ir::ExprPtr modaxval(const Token &t);
   ir::ExprPtr constantName(const Token &t);
   ir::ExprPtr indexList(std::vector<ir::ExprPtr> &out, bool axisOk);
   ir::ExprPtr comparison(ir::OpCode op, ir::ExprPtr a, ir::ExprPtr b, SourceLoc l);
