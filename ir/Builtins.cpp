@@ -315,6 +315,7 @@ static const BuiltinInfo kBuiltins[] = {
     {"CTRANS", 12, nullptr, nullptr, frameCtrans, "snsnsnsnsnsn", 'f', 0},
     {"CFINE", 12, nullptr, nullptr, frameCfine, "snsnsnsnsnsn", 'f', 0},
     {"CROT", 6, nullptr, nullptr, frameCrot, "snsnsn", 'f', 0},
+    {"CROTS", 6, nullptr, nullptr, frameCrots, "snsnsn", 'f', 0},
     {"CSCALE", 12, nullptr, nullptr, frameCscale, "snsnsnsnsnsn", 'f', 0},
     {"CMIRROR", 6, nullptr, nullptr, frameCmirror, "ssssss", 'f', 0},
     {"INVFRAME", 1, nullptr, nullptr, frameInvframe, "f", 'f'},

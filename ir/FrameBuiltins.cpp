@@ -83,6 +83,21 @@ bool frameCrot(ValuePool &pool, const double *args, unsigned n, double &out, std
          a.ret(frameCompose(p), out);
 }
 
+bool frameCrots(ValuePool &pool, const double *args, unsigned n, double &out, std::string &error) {
+  FrameArgs a{pool, args, n, error, "CROTS"};
+  FrameParts p;
+  bool given[3] = {};
+  if (!a.pairs(p, [&](FrameParts &p, int ax, double v) {
+        if (ax >= 3) return a.fail(fmt::format("a solid angle at {} (frames rotate about X Y Z)", frameAxisName(ax)));
+        return given[ax] = true, p.rt[ax] = v, true;
+      }))
+    return false;
+  FrameValue f;
+  std::string err;
+  if (!frameSolidRotation(given, p.rt, f.L, err)) return a.fail(err);
+  return a.ret(f, out);
+}
+
 bool frameCscale(ValuePool &pool, const double *args, unsigned n, double &out, std::string &error) {
   FrameArgs a{pool, args, n, error, "CSCALE"};
   FrameParts p;

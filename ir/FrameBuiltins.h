@@ -11,6 +11,7 @@ class ValuePool;
 NCC_FRAMEFN(frameCtrans);    // CTRANS(ax, v, …): coarse offsets
 NCC_FRAMEFN(frameCfine);     // CFINE(ax, v, …): fine offsets
 NCC_FRAMEFN(frameCrot);      // CROT(ax, deg, …): rotation about X Y Z (RPY)
+NCC_FRAMEFN(frameCrots);     // CROTS(ax, deg, …): rotation by solid angles
 NCC_FRAMEFN(frameCscale);    // CSCALE(ax, f, …): scale factors (negative mirrors)
 NCC_FRAMEFN(frameCmirror);   // CMIRROR(ax, …)
 NCC_FRAMEFN(frameInvframe);  // INVFRAME(f)

@@ -87,6 +87,35 @@ void frameRotation(double x, double y, double z, double R[3][3]) {
   std::memcpy(R, r, sizeof r);
 }
 
+bool frameSolidRotation(const bool given[3], const double angle[3], double R[3][3], std::string &error) {
+  int count = given[0] + given[1] + given[2];
+  if (count > 2) {
+    error = "the orientation of a plane takes at most two solid angles (X Y, Y Z or Z X)";
+    return false;
+  }
+  if (count < 2) {
+    frameRotation(given[0] ? angle[0] : 0, given[1] ? angle[1] : 0, given[2] ? angle[2] : 0, R);
+    return true;
+  }
+  int f = given[0] && given[1] ? 0 : given[1] && given[2] ? 1 : 2, s = (f + 1) % 3, t = (f + 2) % 3;
+  double sa, ca, sb, cb;
+  sinCos(angle[f], sa, ca), sinCos(angle[s], sb, cb);
+  // In the right-handed basis (f, s, t): the new f axis and the line of the plane in the s-t plane.
+  const double u[3] = {cb, 0, -sb}, v[3] = {0, ca, sa};
+  double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (len < 1e-12) {
+    error = "the solid angles span no plane (both are 90°)";
+    return false;
+  }
+  for (double &c : n) c /= len;
+  const double w[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};  // t × f
+  const int axis[3] = {f, s, t};
+  for (int i = 0; i < 3; ++i)  // columns: the new axes in the old system, back from (f, s, t)
+    R[axis[i]][f] = u[i], R[axis[i]][s] = w[i], R[axis[i]][t] = n[i];
+  return true;
+}
+
 FrameValue frameCompose(const FrameParts &p) {
   FrameValue f;
   double R[3][3];

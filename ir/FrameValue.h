@@ -55,6 +55,16 @@ FrameValue frameCompose(const FrameParts &p);
 // The rotation R = Rz(z)·Ry(y)·Rx(x), degrees.
 void frameRotation(double x, double y, double z, double R[3][3]);
 
+// The rotation of Sinumerik's solid angles (ROTS, AROTS, CROTS), degrees about X Y Z with
+// `given` the angles programmed. One angle is the rotation about that axis (as ROT). Two span
+// a plane with the third axis t (X Y -> Z, Y Z -> X, Z X -> Y: first f, second s): the angle at
+// s turns f about s onto the line where the new plane meets the f-t plane, the angle at f turns s
+// about f onto the line where it meets the s-t plane; the new f is the first line (it stays in
+// the old f-t plane) and the new t the plane's normal (Siemens function manual K2, "Frame
+// rotations with solid angles"). False with `error` for three angles or a pair that spans no
+// plane (both 90°).
+bool frameSolidRotation(const bool given[3], const double angle[3], double R[3][3], std::string &error);
+
 // "X".."C" (any case) -> 0..5; false for another name.
 bool frameAxis(std::string_view name, int &axis);
 bool frameComp(std::string_view name, FrameComp &out);

@@ -267,7 +267,8 @@ using AxisShift = std::array<double, kAxes - 3>;
 void setAxisShift(MotionRecord &r, const AxisShift &s);
 AxisShift axisShift(const MotionRecord &r);
 // The work offset selected when the frame changed: 1..9 the machine's [offsets] g54…"g59.3" (ISO
-// G54…G59.3, Sinumerik G54…G57, G505…G509), 7..99 also the 808D's G54 P1…P93 ([offsets] g54p), 0 none (Sinumerik G500 or an assigned $P_IFRAME).
+// G54…G59.3, Sinumerik G54…G57, G505…G509), 7..99 also the 808D's G54 P1…P93 ([offsets] g54p), 0 none
+// (Sinumerik G500, an assigned $P_IFRAME, or G510…G599: the transform carries their offsets).
 // The named number `wcs`, written when not 1 (G54, the selection at the start). Emitters select
 // the same offset on their target (docs/EMIT.md "Work offsets").
 void setWorkOffsetSelection(MotionRecord &r, int selection);

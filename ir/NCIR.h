@@ -109,7 +109,7 @@ enum class OpKind : uint8_t {
   MachineMove, // rapid=<bool> X Y Z…  G53: one move in machine coordinates
   ToolLength,  // h=<int> (0 = cancel)
   CutterComp,  // side=off|left|right d=<int>?
-  WorkOffset,  // index=<int> 1..9 (G54..)
+  WorkOffset,  // index=<int> 0..99 (Sinumerik G500, G54.., G505..G599; ISO 1..9)
   SetOffset,   // kind=g92|g92_1|g92_2|g92_3|g10l2|g10l20|g28_1|g30_1|g52 index=<int>? X Y Z… offsets and origin setting
   Stop,        // kind=program|optional|end|end_rewind
   Aux,         // m=<int>  other M codes; h=/b= auxiliary values

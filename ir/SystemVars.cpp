@@ -153,7 +153,7 @@ std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, dou
   if (dims > 2) idx += ", " + numberText(k);
   const char *range = f == SysFamily::WorkOffset ? "system 1..9, axis 0..6"
                       : f == SysFamily::ToolData  ? "tool 1..99999, edge 0..99999, field 0..60"
-                      : f == SysFamily::UserFrame ? "settable frame 0..9"
+                      : f == SysFamily::UserFrame ? "settable frame 0..99"
                       : f >= SysFamily::ChBfr     ? "base frame 0..7"
                                                   : "axis 0..5";
   return "system variable '$" + std::string(name) + "[" + idx + "]': index out of range (" + range + ")";

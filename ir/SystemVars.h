@@ -73,9 +73,10 @@ constexpr SysVar kNoSysVar = (SysVar)0xffff;
 // The id of a family member (ToolData: axis = the field); kNoSysVar when out of range.
 SysVar sysVarOf(SysFamily f, int system, int axis);
 constexpr int kToolDataIds = (int)SysVar::Count + 9 * 7 + 5 * 6;  // the first tool data field
-// The stored settable frames `$_uifr[n]` (Sinumerik $P_UIFR[n]): n = 0 (G500) .. 9, the work
-// offset systems G54 … (frames of the work offset table: system n's offsets and XY rotation).
-constexpr int kUserFrames = 10;
+// The stored settable frames `$_uifr[n]` (Sinumerik $P_UIFR[n]): n = 0 (G500) .. 99, the work
+// offset systems G54 … G57, G505 … G599 (system n's offsets and XY rotation); how many a machine
+// has is its settable_frames (MD28080).
+constexpr int kUserFrames = 100;
 constexpr int kUserFrameIds = kToolDataIds + kToolFields;
 // The base frames of the four families ChBfr … NcBframe, 8 each (MD28081 and the NCU-global
 // count at most 8), system = the index.

@@ -436,7 +436,7 @@ private:
         error(op.loc, "'machine_move' argument 'rapid' must be true or false");
       break;
     case OpKind::WorkOffset:
-      if (const Expr *i = op.get("index"); i && !(isIntConst(i) && i->num >= 0 && i->num <= 99))
+      if (const Expr *i = op.get("index"); i && !(isIntConst(i) && i->num >= 0 && i->num < kUserFrames))
         error(op.loc, "'work_offset' argument 'index' must be a constant 0..99");
       break;
     default: break;

@@ -1,5 +1,6 @@
 #include "passes/CmdTemplate.h"
 #include "ir/OpSymbols.h"
+#include "ir/SystemVars.h"
 #include "passes/CycleOp.h"
 
 #include <fmt/format.h>
@@ -208,7 +209,7 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
   }
   case OpKind::WorkOffset: {
     double v = 1;
-    if (!constNumber(op.get("index"), v) || v < 0 || v > 99) {
+    if (!constNumber(op.get("index"), v) || v < 0 || v >= kUserFrames) {
       diags.error(op.loc, "work offset index must be a constant 0..99");
       return false;
     }

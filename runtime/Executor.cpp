@@ -12,6 +12,11 @@
 
 namespace ncc {
 
+// The Sinumerik code of settable frame n: G500, G54…G57, G505…G599.
+std::string settableFrameCode(int n) {
+  return n == 0 ? "G500" : n < 5 ? fmt::format("G5{}", 3 + n) : fmt::format("G5{:02d}", n);
+}
+
 static void rotateXY(AxisVec &p, double degrees) {
   double r = degrees * M_PI / 180, c = std::cos(r), s = std::sin(r);
   double x = p[0] * c - p[1] * s, y = p[0] * s + p[1] * c;
@@ -703,7 +708,12 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
       x.noteFrame("G500");
       return true;
     }
-    if (c.sub < 1 || c.sub > Machine::kWorkOffsets) return x.error("bad work offset number", "bad-offset-index");
+    if (c.sub < 1 || c.sub > (x.machine.dialect == "sinumerik" ? x.settableFrames() - 1 : Machine::kWorkOffsets)) {
+      if (x.machine.dialect != "sinumerik") return x.error("bad work offset number", "bad-offset-index");
+      return x.error(fmt::format("{}: the machine has {} settable frames, G500 … {} (settable_frames, MD28080)",
+                                 settableFrameCode(c.sub), x.settableFrames(), settableFrameCode(x.settableFrames() - 1)),
+                     "bad-offset-index");
+    }
     x.activateBaseFrames();  // Sinumerik G54…: the stored base frames too (manual L12337-L12345)
     // The ISO manuals forbid it under G68/G51/G51.1; Sinumerik frames are independent members of
     // one chain (a settable frame under the programmable one), so G54… under $P_PFRAME is fine.
@@ -715,7 +725,9 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
     if (apply) x.applyWorkOffset();
     else x.updateChain();
     x.curBlockFrame = true;
-    x.noteFrame(c.sub > 9 ? kExtended[c.sub].c_str() : kSystems[c.sub - 1]);
+    x.noteFrame(c.sub <= 9                              ? kSystems[c.sub - 1]
+                : x.machine.dialect == "sinumerik" ? settableFrameCode(c.sub).c_str()
+                                                   : kExtended[c.sub].c_str());
     return true;
   }
   case CmdKind::SetOffset: {

@@ -207,6 +207,7 @@ bool Executor::readFrame(const SysRef &ref, FrameValue &out, std::string &err) c
   double u = x.scale();
   SysVarInfo info = sysVarInfo(ref.var);
   if (info.family == SysFamily::UserFrame) {
+    if (!x.haveSettableFrame(ref, err)) return false;
     out = info.system == 0 ? FrameValue{} : workOffsetFrame(x.g5x[info.system - 1], x.g5xRotation[info.system - 1], u);
     return true;
   }
@@ -277,6 +278,7 @@ bool Executor::writeFrame(const SysRef &ref, const FrameValue &f, SourceLoc loc,
     x.noteFrame("$P_IFRAME");
     return true;
   }
+  if (!x.haveSettableFrame(ref, err)) return false;
   if (info.system == 0) {
     err = fmt::format("system variable '{}': settable frame 0 (G500) is the zero frame in ncc", what);
     return false;
@@ -288,6 +290,16 @@ bool Executor::writeFrame(const SysRef &ref, const FrameValue &f, SourceLoc loc,
     x.noteFrame("offset write");
   }
   return true;
+}
+
+// $P_UIFR[n] of a settable frame the machine has; false with the manual's alarm otherwise.
+bool Executor::Impl::haveSettableFrame(const SysRef &ref, std::string &err) const {
+  int n = sysVarInfo(ref.var).system;
+  if (n < settableFrames()) return true;
+  err = fmt::format("system variable '${}': frame: instruction not permitted: the machine has {} settable frames "
+                    "$P_UIFR[0…{}] (settable_frames, MD28080)",
+                    sysRefText(ref), settableFrames(), settableFrames() - 1);
+  return false;
 }
 
 // $P_CHBFR[n] … $P_NCBFRAME[n]: the frame, or null with `err` for a base frame the machine

@@ -62,6 +62,8 @@ public:
   }
 };
 
+std::string settableFrameCode(int n);  // Sinumerik G500, G54…G57, G505…G599 (Executor.cpp)
+
 // The [controller] reset list as bits (Executor.cpp: kResetGroups).
 uint32_t resetGroupMask(const std::vector<std::string> &groups);
 
@@ -69,7 +71,8 @@ struct Executor::Impl {
   bool lintRun = false;  // Executor::setLintRun
   Impl(const Machine &m, MotionSink &s, Diagnostics &d)
       : route(s), machine(m), sink(route), diags(d), compOut(route), comp(compOut) {
-    g5x = m.workOffsets;
+    std::copy(m.workOffsets.begin(), m.workOffsets.end(), g5x.begin());
+    for (auto &[n, offsets] : m.settableFrames) g5x[n - 1] = offsets;
     offsetWrite = m.controller.offsetWritePolicy();
     toolWrite = m.controller.toolWritePolicy();
     paramUnit = m.controller.parameterUnits == "inch" ? 25.4 : 1.0;
@@ -106,8 +109,11 @@ struct Executor::Impl {
   FrameValue programmableFrame() const;  // in program units
   // The work offset tables (what G10 L2 and parameter writes change) and the active system's
   // origin as applied: a written offset takes effect when the controller says (offset_write).
+  // Systems 1..9 are the machine's nine [offsets] (ISO G54…G59.3); the 808D's G54 P1…P93 are 7..99
+  // ([offsets] g54p), Sinumerik's G510…G599 10..99 ([offsets] settable).
   std::array<AxisVec, Machine::kWorkOffsets> g5x{};
   std::array<double, Machine::kWorkOffsets> g5xRotation{};  // degrees
+  static_assert(Machine::kWorkOffsets == kUserFrames - 1);
   AxisVec g5xActive{};
   double g5xRotActive = 0;
   OffsetWrite offsetWrite = OffsetWrite::Immediate;
@@ -147,7 +153,12 @@ struct Executor::Impl {
   // The active settable frame was assigned ($P_IFRAME, Sinumerik G500) rather than read from the
   // table: no work offset is selected (the FrameChange record's `wcs` 0, docs/IR.md).
   bool settableFrameWritten = false;
-  int offsetSelection() const { return settableFrameWritten ? 0 : st.workOffset; }
+  // G510…G599 have no number among the nine the emitters know: none, the transform carries them.
+  int offsetSelection() const { return settableFrameWritten || st.workOffset > 9 ? 0 : st.workOffset; }
+  // The settable frames $P_UIFR[0 … n-1] the machine has: Sinumerik's settable_frames, else the
+  // nine work offsets and G500's 0.
+  bool haveSettableFrame(const SysRef &ref, std::string &err) const;  // $P_UIFR[n]: n < settableFrames()
+  int settableFrames() const { return machine.dialect == "sinumerik" ? machine.controller.settableFrames : 10; }
   AxisVec g92{};
   AxisVec g92Saved{};  // what G92.3 restores (G92.2 zeroes g92 only)
   bool g92On = false;  // G92 offsets applied (rs274 #5210)

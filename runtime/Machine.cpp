@@ -395,6 +395,7 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"dl_default", &Controller::dlDefault, 0, 6},
     {"base_frames", &Controller::baseFrames, 0, 8},
     {"nc_base_frames", &Controller::ncBaseFrames, 0, 8},
+    {"settable_frames", &Controller::settableFrames, 5, 100},
     {"base_frame_mask", &Controller::baseFrameMask, 0, 255},
     {"reset_mode_mask", &Controller::resetModeMask, 0, 0x3ffff},
 };
@@ -451,7 +452,22 @@ struct OffsetsIn {
   AxisVec g54{}, g55{}, g56{}, g57{}, g58{}, g59{}, g59_1{}, g59_2{}, g59_3{}, home1{}, home2{};
   std::vector<AxisVec> g54p;  // the 808D's extended offsets G54 P1, P2, …
   std::array<AxisVec, 8> base{}, ncBase{};  // Sinumerik $P_CHBFR[n], $P_NCBFR[n]
+  std::map<int, AxisVec> settable;           // Sinumerik G510…G599: $P_UIFR[10…99]
 };
+
+// [offsets] settable = { g510 = [x, y, z…], … }: the Sinumerik settable frames past G509 (G505…
+// G509 are g58…"g59.3", the nine ISO offsets).
+void readSettableFrames(Ctx &c, const toml::node &n, void *obj) {
+  auto &out = static_cast<OffsetsIn *>(obj)->settable;
+  forEachEntry(c, n, "settable: expected a table { g510 = [x, y, z…], … }", [&](const std::string &code, const toml::key &k,
+                                                                             const toml::node &v) {
+    bool ok = code.size() == 4 && code[0] == 'g' && code[1] == '5' && std::isdigit((unsigned char)code[2]) &&
+              std::isdigit((unsigned char)code[3]) && code[2] != '0';
+    if (!ok)
+      return c.error(k.source(), "settable: '" + code + "' is not one of g510 … g599 (G54…G57 and G505…G509 are g54 … \"g59.3\")");
+    readAxisVec(c, v, "settable." + code, out[std::stoi(code.substr(2))]);
+  });
+}
 
 // [offsets] base = [[x, y, z…], …] and nc_base: the stored base frames 0, 1, … (offsets).
 template <std::array<AxisVec, 8> OffsetsIn::*Member> void readBaseFrames(Ctx &c, const toml::node &n, void *obj) {
@@ -482,6 +498,7 @@ const KeyDef<OffsetsIn> kOffsetKeys[] = {
     {"home1", &OffsetsIn::home1}, {"home2", &OffsetsIn::home2},
     {"base", NodeReader(readBaseFrames<&OffsetsIn::base>)}, {"nc_base", NodeReader(readBaseFrames<&OffsetsIn::ncBase>)},
     {"g54p", NodeReader(readExtendedOffsets)},
+    {"settable", NodeReader(readSettableFrames)},
 };
 
 void readOffsets(Ctx &c, const toml::node &n, void *obj) {
@@ -500,6 +517,7 @@ void readOffsets(Ctx &c, const toml::node &n, void *obj) {
   m.home1 = o.home1;
   m.home2 = o.home2;
   m.chanBaseFrames = o.base, m.ncBaseFrames = o.ncBase;
+  m.settableFrames = o.settable;
 }
 
 struct EdgeIn : ToolEdge {
@@ -802,6 +820,13 @@ bool Machine::parse(const std::string &text, const std::string &name, Machine &o
           c.error(doc["offsets"][key].node()->source(), std::string("offsets.") + key + "[" + std::to_string(i) +
                                                             "]: the machine has " + std::to_string(count) + " such base frames (" +
                                                             (key[0] == 'b' ? "base_frames" : "nc_base_frames") + ")");
+    // Settable frames beyond the configured number (settable_frames, MD28080).
+    for (auto &[n, offsets] : m.settableFrames)
+      if (n >= m.controller.settableFrames)
+        c.error(doc["offsets"]["settable"]["g" + std::to_string(500 + n)].node()->source(),
+                "offsets.settable.g" + std::to_string(500 + n) + ": the machine has " +
+                    std::to_string(m.controller.settableFrames) + " settable frames $P_UIFR[0…" +
+                    std::to_string(m.controller.settableFrames - 1) + "] (settable_frames)");
   }
   errors = std::move(c.problems);
   std::stable_sort(errors.begin(), errors.end(),

@@ -151,6 +151,9 @@ struct Controller {
   // MD20110 $MC_RESET_MODE_MASK (bits 0, 5, 14: which frames are active after reset, i.e. when a
   // run starts).
   int baseFrames = 1, ncBaseFrames = 0;
+  // MD28080 $MC_MM_NUM_USER_FRAMES: the settable frames $P_UIFR[0 … n-1] (G500, G54…G57,
+  // G505…); ncc's default 10 keeps G505…G509, which it always had.
+  int settableFrames = 10;
   int baseFrameMask = 0xff;
   int resetModeMask = 0x4021;
 };
@@ -212,6 +215,8 @@ struct Machine {
   std::array<AxisVec, kWorkOffsets> workOffsets{};
   // The stored Sinumerik base frames $P_CHBFR[n] and $P_NCBFR[n] (offsets, machine mm).
   std::array<AxisVec, 8> chanBaseFrames{}, ncBaseFrames{};
+  // The stored Sinumerik settable frames past G509: n -> $P_UIFR[n] (G5nn, n 10..99), offsets.
+  std::map<int, AxisVec> settableFrames;
   AxisVec home1{}, home2{};              // G28 / G30 reference positions, machine mm
   std::map<int, Tool> toolTable;         // every tool with its name and edges
   std::map<int, ToolData> tools;         // by T/H/D number: edge 1 of toolTable (see ToolData)

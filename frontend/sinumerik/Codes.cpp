@@ -56,11 +56,7 @@ static const GRow kExecuted[] = {
     {"G55", GAct::WorkOffset, ModeValue::Count, 2},
     {"G56", GAct::WorkOffset, ModeValue::Count, 3},
     {"G57", GAct::WorkOffset, ModeValue::Count, 4},
-    {"G505", GAct::WorkOffset, ModeValue::Count, 5},
-    {"G506", GAct::WorkOffset, ModeValue::Count, 6},
-    {"G507", GAct::WorkOffset, ModeValue::Count, 7},
-    {"G508", GAct::WorkOffset, ModeValue::Count, 8},
-    {"G509", GAct::WorkOffset, ModeValue::Count, 9},
+    // G505 … G599: settable frames 5 … 99 (findGCode).
     {"G53", GAct::MachineCoord, ModeValue::Count, 0},
     {"G153", GAct::MachineCoord, ModeValue::Count, 0},
     {"SUPA", GAct::MachineCoord, ModeValue::Count, 0},
@@ -108,6 +104,8 @@ static const GRow kExecuted[] = {
     {"ASCALE", GAct::Frame, ModeValue::Count, (int)FrameKind::Scale},
     {"MIRROR", GAct::Frame, ModeValue::Count, (int)FrameKind::Mirror},
     {"AMIRROR", GAct::Frame, ModeValue::Count, (int)FrameKind::Mirror},
+    {"ROTS", GAct::Frame, ModeValue::Count, (int)FrameKind::SolidRot},
+    {"AROTS", GAct::Frame, ModeValue::Count, (int)FrameKind::SolidRot},
 };
 
 const SpindleModeArg &spindleModeArg(int arg) {
@@ -126,6 +124,12 @@ GInfo findGCode(std::string_view name) {
       break;
     }
   if (!g.code) return g;
+  // G505 … G599 select settable frame 5 … 99 (manual L12358-L12372); whether the machine has it
+  // is the executor's question (settable_frames).
+  if (name.size() == 4 && name.substr(0, 2) == "G5" && name >= "G505" && name <= "G599") {
+    g.act = GAct::WorkOffset, g.mode = ModeValue::Count, g.arg = (name[2] - '0') * 10 + (name[3] - '0');
+    return g;
+  }
   for (auto &r : kExecuted)
     if (name == r.name) {
       g.act = r.act;
@@ -219,6 +223,7 @@ static const FnMap kFns[] = {
     {"MATCH", "MATCH", false},     {"SUBSTR", "SUBSTR", false},   {"TOUPPER", "TOUPPER", false},
     {"TOLOWER", "TOLOWER", false}, {"NUMBER", "NUMBER", false},   {"ISNUMBER", "ISNUMBER", false},
     {"CTRANS", "CTRANS", true},    {"CFINE", "CFINE", true},      {"CROT", "CROT", true},
+    {"CROTS", "CROTS", true},
     {"CSCALE", "CSCALE", true},    {"CMIRROR", "CMIRROR", true},  {"INVFRAME", "INVFRAME", false},
     {"SPRINT", "SPRINT", false},
     {"AXNAME", "AXNAME", false},   {"AXSTRING", "TOSTR", false},  // an AXIS holds its name

@@ -16,7 +16,7 @@ enum class GAct : uint8_t {
   Default,       // the group's initial setting, which is what ncc models: nothing to do
   Mode,          // a mode op (mode holds the value)
   Dwell,         // G4
-  WorkOffset,    // G500, G54-G57, G505-G509 (arg: index)
+  WorkOffset,    // G500, G54-G57, G505-G599 (arg: index)
   MachineCoord,  // G53, G153, SUPA: the block's move in machine coordinates
   CutterComp,    // G40/G41/G42 (arg: 0 off, 1 left, 2 right)
   Frame,         // TRANS ROT SCALE MIRROR and their additive forms (arg: FrameKind)
@@ -34,7 +34,7 @@ struct SpindleModeArg {
 };
 const SpindleModeArg &spindleModeArg(int arg);
 
-enum class FrameKind : uint8_t { Trans, Rot, Scale, Mirror };
+enum class FrameKind : uint8_t { Trans, Rot, Scale, Mirror, SolidRot };
 
 struct GCode {
   const char *name;     // upper case: G1, G500, TRANS, CIP

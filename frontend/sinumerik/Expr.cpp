@@ -265,6 +265,7 @@ ExprPtr BlockParser::function(const Token &t) {
     if (t.text == "GETVARTYP") return getvartyp(t);
     if (t.text == "STRINGIS") return stringis(t);
     if (t.text == "ISAXIS") return isaxis(t);
+    if (t.text == "MODAXVAL") return modaxval(t);
   }
   const FnMap *fm = findFunction(t.text);
   if (!fm && machineCtx_) return machineValue();

@@ -222,4 +222,31 @@ ir::ExprPtr BlockParser::isaxis(const Token &t) {
   return ir::Expr::boolean((f_.pp.opts.geoAxes >> ((int)arg->num - 1)) & 1u, l);
 }
 
+// MODAXVAL(<axis>, <position>) (SIN-AUX-04, manual L25092-L25182): the position reduced to a
+// modulo rotary axis's range, unchanged for any other axis. The linear axes X Y Z U V W are
+// answered (the position itself); whether A B C are modulo axes and their range (MD30310,
+// MD30330, MD30340) the machine description does not say, so they are refused, as is an axis
+// only known at run time.
+ir::ExprPtr BlockParser::modaxval(const Token &t) {
+  ++i_;  // (
+  const Token &a = tok();
+  const AddrInfo *addr = a.kind == Tok::Name ? findAddress(a.text) : nullptr;
+  if (!addr || addr->kind != Addr::Axis) {
+    fail(a, "MODAXVAL takes an axis name (X Y Z U V W; a computed axis is not supported)", "unsupported-code");
+    return nullptr;
+  }
+  if (std::string_view("ABC").find(a.text[0]) != std::string_view::npos) {
+    fail(a, fmt::format("MODAXVAL of the rotary axis {}: whether it is a modulo axis and its range (MD30310, MD30330, "
+                        "MD30340) are not in the machine description",
+                        a.text),
+         "unsupported-code");
+    return nullptr;
+  }
+  ++i_;
+  if (!expect(",")) return nullptr;
+  ir::ExprPtr pos = expr(0);
+  if (!pos || !expect(")")) return nullptr;
+  return pos;  // a linear axis: the position unchanged (L25174-L25182)
+}
+
 }  // namespace ncc::sin

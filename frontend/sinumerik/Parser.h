@@ -266,6 +266,7 @@ private:
   ir::ExprPtr stringis(const Token &t);
   ir::ExprPtr isaxis(const Token &t);
   ir::ExprPtr constantArg(const Token &t, ir::ExprKind kind);
+  ir::ExprPtr modaxval(const Token &t);
   ir::ExprPtr indexList(std::vector<ir::ExprPtr> &out, bool axisOk);
   ir::ExprPtr comparison(ir::OpCode op, ir::ExprPtr a, ir::ExprPtr b, SourceLoc l);
   bool stringy(const ir::Expr &e) const;

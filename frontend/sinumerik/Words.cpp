@@ -176,7 +176,7 @@ bool BlockParser::gcode(const std::string &name, const Token &at) {
 // (docs/IR.md §2.4): the absolute form replaces the programmable frame, the additive one chains.
 bool BlockParser::frameStatement(const GInfo &g, const Token &at) {
   SourceLoc l = loc(at);
-  static const char *kBuiltin[] = {"CTRANS", "CROT", "CSCALE", "CMIRROR"};
+  static const char *kBuiltin[] = {"CTRANS", "CROT", "CSCALE", "CMIRROR", "CROTS"};
   FrameKind k = (FrameKind)g.arg;
   std::vector<ExprPtr> args;
   while (!atEnd()) {

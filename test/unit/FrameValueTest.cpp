@@ -144,3 +144,68 @@ TEST(FrameValue, PoolInternsEqualFrames) {
   EXPECT_EQ(pool.get(a).coarse[0], 5);
   EXPECT_EQ(frameText(pool.get(a)), "TR X5");
 }
+
+// ROTS/AROTS/CROTS (SIN-FRM-31): the solid-angle rotation against the definition (Siemens K2,
+// "Frame rotations with solid angles"): for two angles at the first axis f and the second s of a
+// plane (X Y, Y Z, Z X; third t), the new f is f turned about s by the angle at s (so it stays in
+// the old f-t plane), the new plane also holds s turned about f by the angle at f, and the
+// result is a proper rotation. One angle is the plain rotation about its axis.
+TEST(FrameValue, SolidAnglesFollowTheDefinition) {
+  auto axisTurn = [](int axis, double deg, int v, double out[3]) {  // e_v turned about `axis`
+    double a[3] = {}, R[3][3];
+    a[axis] = deg;
+    frameRotation(a[0], a[1], a[2], R);
+    for (int i = 0; i < 3; ++i) out[i] = R[i][v];
+  };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> ang(-85, 85);
+  for (int f = 0; f < 3; ++f) {
+    int s = (f + 1) % 3, t = (f + 2) % 3;
+    for (int n = 0; n < 50; ++n) {
+      bool given[3] = {};
+      double angle[3] = {}, R[3][3];
+      given[f] = given[s] = true;
+      angle[f] = ang(rng), angle[s] = ang(rng);
+      std::string err;
+      ASSERT_TRUE(frameSolidRotation(given, angle, R, err)) << err;
+      for (int i = 0; i < 3; ++i)  // orthonormal
+        for (int j = 0; j < 3; ++j)
+          EXPECT_NEAR(R[0][i] * R[0][j] + R[1][i] * R[1][j] + R[2][i] * R[2][j], i == j ? 1 : 0, 1e-12);
+      double det = R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) - R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0]) +
+                   R[0][2] * (R[1][0] * R[2][1] - R[1][1] * R[2][0]);
+      EXPECT_NEAR(det, 1, 1e-12);
+      double fTurned[3], sTurned[3];
+      axisTurn(s, angle[s], f, fTurned);
+      axisTurn(f, angle[f], s, sTurned);
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(R[i][f], fTurned[i], 1e-12) << "new first axis, f=" << f;
+      EXPECT_NEAR(R[s][f], 0, 1e-12);  // in the old f-t plane
+      double normalDotS = R[0][t] * sTurned[0] + R[1][t] * sTurned[1] + R[2][t] * sTurned[2];
+      EXPECT_NEAR(normalDotS, 0, 1e-12) << "the plane holds s turned about f";
+    }
+  }
+  // ROTS X30 Y45 by hand: new X (cos45, 0, -sin45), the plane's normal ∝ X' × (0, cos30, sin30).
+  bool xy[3] = {true, true, false};
+  double a[3] = {30, 45, 0}, R[3][3];
+  std::string err;
+  ASSERT_TRUE(frameSolidRotation(xy, a, R, err));
+  double c45 = std::sqrt(0.5), c30 = std::sqrt(3) / 2, n[3] = {c45 * c30, -c45 * 0.5, c45 * c30};
+  double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  EXPECT_NEAR(R[0][0], c45, 1e-12);
+  EXPECT_NEAR(R[1][0], 0, 1e-12);
+  EXPECT_NEAR(R[2][0], -c45, 1e-12);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(R[i][2], n[i] / len, 1e-12);
+  // One angle: ROT about that axis.
+  for (int k = 0; k < 3; ++k) {
+    bool one[3] = {};
+    double ang1[3] = {}, Q[3][3], P[3][3];
+    one[k] = true, ang1[k] = 37;
+    ASSERT_TRUE(frameSolidRotation(one, ang1, Q, err));
+    frameRotation(ang1[0], ang1[1], ang1[2], P);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) EXPECT_NEAR(Q[i][j], P[i][j], 1e-15);
+  }
+  bool all[3] = {true, true, true};
+  EXPECT_FALSE(frameSolidRotation(all, a, R, err));
+  double right[3] = {90, 90, 0};
+  EXPECT_FALSE(frameSolidRotation(xy, right, R, err));
+}
