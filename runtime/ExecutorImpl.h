@@ -154,7 +154,11 @@ struct Executor::Impl {
   // table: no work offset is selected (the FrameChange record's `wcs` 0, docs/IR.md).
   bool settableFrameWritten = false;
   // G510…G599 have no number among the nine the emitters know: none, the transform carries them.
-  int offsetSelection() const { return settableFrameWritten || st.workOffset > 9 ? 0 : st.workOffset; }
+  // Sinumerik's G510…G599 are reported as no selection (the transform carries them: the emitters
+  // name nine); the 808D's G54 P<n> keep their number (the emitters write their positions).
+  int offsetSelection() const {
+    return settableFrameWritten || (st.workOffset > 9 && machine.dialect == "sinumerik") ? 0 : st.workOffset;
+  }
   // The settable frames $P_UIFR[0 … n-1] the machine has: Sinumerik's settable_frames, else the
   // nine work offsets and G500's 0.
   bool haveSettableFrame(const SysRef &ref, std::string &err) const;  // $P_UIFR[n]: n < settableFrames()
