@@ -45,11 +45,13 @@ bool FileParser::run() {
     static const char *const kFk[] = {"FL", "FLT", "FC", "FCT", "FPOL", "FSELECT"};
     bool fkBlock = std::any_of(std::begin(kFk), std::end(kFk), [&](const char *k) { return first.isWord(k); });
     if (!comment && !fkBlock && !fkFinish({file, first.line, first.col}, first.text)) ok = false;
+    // The parser may rewrite the block's tokens (FK lowering): `first` is read before it runs.
+    const bool isLine = first.isWord("L"), isCircle = first.isWord("C");
     BlockParser bp(*this, b);
     if (!bp.parse()) ok = false;
-    if (!comment && !fkBlock && !first.isWord("L") && fk) fk->here = fk->heading = std::nullopt;
-    if (!comment) lastWasLine = first.isWord("L");
-    if (!comment) lastArcDir = first.isWord("C") ? bp.arcDir() : 0;
+    if (!comment && !fkBlock && !isLine && fk) fk->here = fk->heading = std::nullopt;
+    if (!comment) lastWasLine = isLine;
+    if (!comment) lastArcDir = isCircle ? bp.arcDir() : 0;
   }
   if (approach) ok = error({file, lr.blocks.back().line, 1}, "APPR without a contour element after it", "syntax");
   if (!fkFinish({file, lr.blocks.back().line, 1}, "the end of the file")) ok = false;
