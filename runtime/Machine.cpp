@@ -2,6 +2,7 @@
 // positions; each table's keys are a data table (name, field, range or choices), so adding a
 // setting is one row, and every problem is reported as "file:line:col: error: message".
 #include "runtime/Machine.h"
+#include "runtime/MachineReader.h"
 
 #include "runtime/Geometry.h"
 
@@ -24,206 +25,16 @@
 
 namespace ncc {
 
+using namespace machine_reader;
+
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr const char *kAxisNames = kAxisLetters;
 constexpr const char *kDialects = "iso fanuc linuxcnc sinumerik heidenhain cldata";
 // Modal groups a controller may reset at M2/M30 (the executor's table in runtime/Executor.cpp).
 constexpr const char *kResetGroups =
     "motion plane distance feed_mode units cutter_comp tool_length work_offset g92 feed spindle coolant path_mode "
     "rotation scaling mirror local_offset";
-
-struct Ctx {
-  std::vector<MachineError> problems;
-  void error(const toml::source_region &at, const std::string &msg) {
-    // Implicit tables (the [axes] of [axes.X]) have no position: report them at the start.
-    problems.push_back({std::max<uint32_t>(at.begin.line, 1), std::max<uint32_t>(at.begin.column, 1), msg});
-  }
-};
-
-using NodeReader = void (*)(Ctx &, const toml::node &, void *obj);
-
-// What a key sets: a field of the table's struct (its type decides the TOML type expected), or a
-// reader for structured values.
-template <class T>
-using Field = std::variant<double T::*, int T::*, std::string T::*, bool T::*, AxisVec T::*, Vec3 T::*,
-                           std::vector<std::string> T::*, NodeReader>;
-
-template <class T> struct KeyDef {
-  const char *key;
-  Field<T> field;
-  double lo = -kInf, hi = kInf;  // numbers: allowed range
-  bool loOpen = false;           // lo itself is excluded
-  const char *choices = nullptr; // strings: the allowed values, blank-separated
-  bool required = false;
-};
-
-std::string typeName(const toml::node &n) {
-  switch (n.type()) {
-  case toml::node_type::table: return "a table";
-  case toml::node_type::array: return "an array";
-  case toml::node_type::string: return "a string";
-  case toml::node_type::integer: return "an integer";
-  case toml::node_type::floating_point: return "a floating-point number";
-  case toml::node_type::boolean: return "a boolean";
-  default: return "a date or time";
-  }
-}
-
-std::string num(double d) {
-  if (d == std::floor(d) && std::fabs(d) < 1e15) return std::to_string((long long)d);
-  char buf[32];
-  auto r = std::to_chars(buf, buf + sizeof buf, d);
-  return std::string(buf, r.ptr);
-}
-
-bool isChoice(const char *choices, const std::string &v) {
-  std::istringstream in(choices);
-  std::string w;
-  while (in >> w)
-    if (w == v) return true;
-  return false;
-}
-
-std::string choiceList(const char *choices) {
-  std::istringstream in(choices);
-  std::string w, out;
-  while (in >> w) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
-
-std::optional<double> readNumber(Ctx &c, const toml::node &n, const std::string &key) {
-  if (auto d = n.value<double>(); d && (n.is_integer() || n.is_floating_point()) && std::isfinite(*d)) return d;
-  c.error(n.source(), key + ": expected a number, got " + typeName(n));
-  return std::nullopt;
-}
-
-std::optional<std::string> readString(Ctx &c, const toml::node &n, const std::string &key, const char *choices) {
-  if (!n.is_string()) {
-    c.error(n.source(), key + ": expected a string, got " + typeName(n));
-    return std::nullopt;
-  }
-  std::string v = **n.as_string();
-  if (choices && !isChoice(choices, v)) {
-    c.error(n.source(), key + ": '" + v + "' is not one of " + choiceList(choices));
-    return std::nullopt;
-  }
-  return v;
-}
-
-// [x, y, z (, a, b, c (, u, v, w))] into out; out is unchanged after a problem. Not inlined: GCC's bounds
-// check otherwise warns about the instantiations for structs without an AxisVec member.
-[[gnu::noinline]] void readAxisVec(Ctx &c, const toml::node &n, const std::string &key, AxisVec &out) {
-  // An unquoted g59.1 is a dotted key (table g59, key 1): say how to write it.
-  if (n.is_table())
-    return c.error(n.source(), key + ": expected an array, got a table (quote keys with a dot: \"" + key + ".1\")");
-  const toml::array *a = n.as_array();
-  if (!a || a->size() < 3 || a->size() > (size_t)kAxes)
-    return c.error(n.source(), key + ": expected an array of 3 to 9 numbers [x, y, z, a, b, c, u, v, w], got " +
-                                   (a ? std::to_string(a->size()) + " elements" : typeName(n)));
-  AxisVec v{};
-  for (size_t i = 0; i < a->size(); ++i) {
-    auto d = readNumber(c, *a->get(i), key + "[" + std::to_string(i) + "]");
-    if (!d) return;
-    v[i] = *d;
-  }
-  out = v;
-}
-
-// [x, y, z] into out; out is unchanged after a problem.
-[[gnu::noinline]] bool readVec3(Ctx &c, const toml::node &n, const std::string &key, Vec3 &out) {
-  const toml::array *a = n.as_array();
-  if (!a || a->size() != 3) {
-    c.error(n.source(), key + ": expected an array of 3 numbers [x, y, z], got " +
-                            (a ? std::to_string(a->size()) + " elements" : typeName(n)));
-    return false;
-  }
-  Vec3 v{};
-  for (size_t i = 0; i < 3; ++i) {
-    auto d = readNumber(c, *a->get(i), key + "[" + std::to_string(i) + "]");
-    if (!d) return false;
-    v[i] = *d;
-  }
-  out = v;
-  return true;
-}
-
-// A direction: a unit vector, within 1e-4 (so 0.7071 passes for sin 45), then normalised.
-bool readUnitVec(Ctx &c, const toml::node &n, const std::string &key, Vec3 &out) {
-  Vec3 v;
-  if (!readVec3(c, n, key, v)) return false;
-  double len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  if (len == 0) c.error(n.source(), key + ": the zero vector has no direction");
-  else if (std::fabs(len - 1) > 1e-4) c.error(n.source(), key + ": expected a unit vector, its length is " + num(len));
-  else {
-    for (int i = 0; i < 3; ++i) out[i] = v[i] / len;
-    return true;
-  }
-  return false;
-}
-
-// Sets one key's field, or reports why not.
-template <class T> void apply(Ctx &c, const KeyDef<T> &def, const toml::node &n, T &obj) {
-  const std::string key = def.key;
-  auto inRange = [&](double d) {
-    if ((def.loOpen ? d > def.lo : d >= def.lo) && d <= def.hi) return true;
-    std::string want = def.hi < kInf ? num(def.lo) + ".." + num(def.hi) : (def.loOpen ? "> " : ">= ") + num(def.lo);
-    c.error(n.source(), key + ": must be " + want + ", got " + num(d));
-    return false;
-  };
-  std::visit(
-      [&](auto field) {
-        using F = decltype(field);
-        if constexpr (std::is_same_v<F, NodeReader>) {
-          field(c, n, &obj);
-        } else if constexpr (std::is_same_v<F, double T::*>) {
-          if (auto d = readNumber(c, n, key); d && inRange(*d)) obj.*field = *d;
-        } else if constexpr (std::is_same_v<F, int T::*>) {
-          if (!n.is_integer()) return c.error(n.source(), key + ": expected an integer, got " + typeName(n));
-          double d = (double)**n.as_integer();
-          if (inRange(d)) obj.*field = (int)d;
-        } else if constexpr (std::is_same_v<F, std::string T::*>) {
-          if (auto s = readString(c, n, key, def.choices)) obj.*field = *s;
-        } else if constexpr (std::is_same_v<F, bool T::*>) {
-          if (!n.is_boolean()) return c.error(n.source(), key + ": expected true or false, got " + typeName(n));
-          obj.*field = **n.as_boolean();
-        } else if constexpr (std::is_same_v<F, AxisVec T::*>) {
-          readAxisVec(c, n, key, obj.*field);
-        } else if constexpr (std::is_same_v<F, Vec3 T::*>) {
-          readVec3(c, n, key, obj.*field);
-        } else {  // list of strings
-          const toml::array *a = n.as_array();
-          if (!a) return c.error(n.source(), key + ": expected an array of strings, got " + typeName(n));
-          std::vector<std::string> v;
-          for (const toml::node &e : *a)
-            if (auto s = readString(c, e, key, def.choices)) v.push_back(*s);
-          obj.*field = v;
-        }
-      },
-      def.field);
-}
-
-// Reads table t into obj by the key table; unknown keys and missing required keys are errors.
-template <class T, size_t N>
-bool readTable(Ctx &c, const toml::node &node, const std::string &where, const KeyDef<T> (&keys)[N], T &obj) {
-  const toml::table *t = node.as_table();
-  if (!t) {
-    c.error(node.source(), where + ": expected a table, got " + typeName(node));
-    return false;
-  }
-  size_t before = c.problems.size();
-  for (auto &&[k, v] : *t) {
-    auto def = std::find_if(std::begin(keys), std::end(keys), [&](auto &d) { return k.str() == d.key; });
-    if (def == std::end(keys))
-      c.error(k.source(), "unknown key '" + std::string(k.str()) + "' in " + where);
-    else
-      apply(c, *def, v, obj);
-  }
-  for (auto &d : keys)
-    if (d.required && !t->contains(d.key)) c.error(t->source(), where + " needs '" + d.key + "'");
-  return c.problems.size() == before;
-}
 
 // ---- the schema ------------------------------------------------------------------------------
 
@@ -239,14 +50,6 @@ const KeyDef<Machine> kMachineKeys[] = {
     {"free_tools", &Machine::freeTools, 0, 99999},
     {"max_spindle_speed", &Machine::maxSpindleSpeed, 0, kInf},
 };
-
-// The entries of a table value: f(key text, key, value) for each; `expected` (", got <type>"
-// added) when the value is no table.
-template <class F> void forEachEntry(Ctx &c, const toml::node &n, const std::string &expected, F f) {
-  const toml::table *t = n.as_table();
-  if (!t) return c.error(n.source(), expected + ", got " + typeName(n));
-  for (auto &&[k, v] : *t) f(std::string(k.str()), k, v);
-}
 
 const KeyDef<Controller::MacroCall> kMacroCallKeys[] = {
     {"program", &Controller::MacroCall::program, 0, 0, true},
@@ -424,11 +227,6 @@ const KeyDef<AxisLimits> kAxisKeys[] = {
     {"min", &AxisLimits::minPos},
     {"max", &AxisLimits::maxPos},
 };
-
-// A table of named tables ([axes.X], [emit.iso]): f(name, key, value) for each.
-template <class F> void forEachNamed(Ctx &c, const toml::node &n, const std::string &what, F f) {
-  forEachEntry(c, n, what + ": expected tables [" + what + ".NAME]", f);
-}
 
 void readAxes(Ctx &c, const toml::node &n, void *obj) {
   Machine &m = *static_cast<Machine *>(obj);

@@ -1,5 +1,6 @@
 // The ISO lowering of coordinate codes (LowerBlock.h): G10 offset and tool-offset writes,
-// G92 and its variants, G28/G30, G53, and the programmable frame (G52 G68 G51 G51.1).
+// G92 and its variants, G28/G30, G53, the programmable frame (G52 G68 G51 G51.1), the 808D's
+// extended work offsets (G54 P) and LinuxCNC's G43.1/G43.2.
 #include "frontend/iso/LowerBlock.h"
 
 #include <cmath>
@@ -273,6 +274,50 @@ bool BlockLowerer::Block::frameOps() {
   default: break;  // G69, G50
   }
   out.push_back(std::move(op));
+  return true;
+}
+
+
+// 808D G54 P1…P93: the extended work offsets (manual L1972, L5426, L6224), the machine's
+// [offsets] g54p table: settable offsets 7…99 after G54-G59's 1…6 (docs/IR.md `work_offset`). G54 P0, the external work
+// offset, is set by the PLC: nothing in a program or a machine file says its value.
+bool BlockLowerer::Block::extendedWorkOffset(int &index) {
+  IsoWord *p = bw.get('P');
+  if (p->expr || p->hasPoint || !(p->value >= 0 && p->value <= 93) || p->value != std::floor(p->value)) {
+    L.diags_->error(p->loc, "G54 P needs a whole number 1 to 93 (an extended work offset) written as a constant",
+                   "bad-offset-index");
+    return false;
+  }
+  if (p->value == 0) {
+    L.diags_->error(p->loc, "G54 P0 (the external work offset, set by the PLC) is not supported: its value is not known",
+                   "unsupported-code");
+    return false;
+  }
+  bw.used |= Words::bit('P');
+  index = 6 + (int)p->value;
+  return true;
+}
+
+// LinuxCNC G43.1 <axes>: each named axis's offset becomes its word, the others keep theirs;
+// G43.2 H<n> (H0: the tool in the spindle) or <axes> adds tool n's length or the values to the
+// active offsets. The axis words move the machine too when the block has a motion code
+// (rs274: `G43.1 Z1 G0 X5` offsets X by 5 and moves to X5).
+bool BlockLowerer::Block::offsetToolLength(bool add, SourceLoc loc) {
+  const bool axes = bw.hasAny("XYZABCUVW");
+  if (add && axes == bw.has('H')) {
+    L.diags_->error(loc, axes ? "G43.2: Can not have both H and axis words" : "G43.2: No axes specified and H word missing",
+                   axes ? "bad-command" : "missing-word");
+    return false;
+  }
+  Op &op = emit(OpKind::ToolLength, loc);
+  op.set("form", Expr::symbol(add ? "add" : "dynamic", loc));
+  if (add && bw.has('H')) op.set("h", take('H', Scale::None));
+  for (const char *a = "XYZABCUVW"; *a; ++a)
+    if (bw.has(*a)) op.set(std::string(1, *a), literal(*bw.get(*a), factor(scaleOf(*a))));
+  if (!G(GGroup::Motion)) {
+    bw.used |= Words::bits("XYZABCUVW") & bw.present;
+    offsetTookAxes = true;
+  }
   return true;
 }
 

@@ -320,4 +320,48 @@ bool BlockLowerer::Block::speedOp() {
   return true;
 }
 
+
+// A lathe's T word (Fanuc T, two digits tool, two digits offset): T0101 selects and mounts tool 1
+// and applies offset 1 (the X and Z offsets of tool 1's edge) at once, without G43; T0100
+// cancels the offset.
+bool BlockLowerer::Block::latheTool() {
+  IsoWord *t = bw.get('T');
+  if (t->expr || t->value < 0 || t->value != std::floor(t->value) || t->value > 9999) {
+    L.diags_->error(t->loc, "a lathe T word is a constant tool and offset number T<tt><oo> (T0101)", "bad-number");
+    return false;
+  }
+  bw.used |= Words::bit('T');
+  auto n = [&](int v) { return Expr::number(v, ir::Type::Int, t->loc); };
+  emit(OpKind::ToolSelect, t->loc).set("value", n((int)t->value / 100));
+  emit(OpKind::ToolChange, t->loc);
+  emit(OpKind::ToolLength, t->loc).set("h", n((int)t->value % 100));
+  return true;
+}
+
+// G-code system A of a lathe: U and W are the incremental X and Z (`ic`); X with U (Z with W) is
+// an error.
+bool BlockLowerer::Block::latheAxisWords(Op &op) {
+  if (L.system_ != 'A') {  // systems B and C program increments with G91
+    for (char c : std::string_view("UW"))
+      if (bw.has(c)) {
+        L.diags_->error(bw.get(c)->loc,
+                       fmt::format("{} in G-code system {}: the 808D manual does not say it is an increment (use G91)", c, L.system_),
+                       "unsupported-code");
+        return false;
+      }
+    return true;
+  }
+  std::string ic;
+  for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}}) {
+    if (bw.has(abs) && bw.has(inc)) {
+      L.diags_->error(bw.get(inc)->loc, fmt::format("{} and {} in one block ({} is the incremental {})", abs, inc, inc, abs),
+                     "duplicate-word");
+      return false;
+    }
+    if (bw.has(inc)) add(op, abs, take(inc, Scale::Linear)), ic += abs;
+  }
+  if (!ic.empty()) op.set("ic", Expr::symbol(ic, op.loc));
+  return true;
+}
+
 }  // namespace ncc::iso
