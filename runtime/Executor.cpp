@@ -3,6 +3,7 @@
 // ExecutorCompensation.cpp. The semantics follow LinuxCNC's rs274 at machine level (the oracle).
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
+#include "runtime/WorkOffsetCode.h"
 
 #include "ir/Value.h"
 
@@ -11,11 +12,6 @@
 #include <fmt/format.h>
 
 namespace ncc {
-
-// The Sinumerik code of settable frame n: G500, G54…G57, G505…G599.
-std::string settableFrameCode(int n) {
-  return n == 0 ? "G500" : n < 5 ? fmt::format("G5{}", 3 + n) : fmt::format("G5{:02d}", n);
-}
 
 static void rotateXY(AxisVec &p, double degrees) {
   double r = degrees * M_PI / 180, c = std::cos(r), s = std::sin(r);
@@ -695,12 +691,6 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
     return true;
   }
   case CmdKind::WorkOffset: {
-    static const char *kSystems[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
-    static const std::array<std::string, Machine::kWorkOffsets + 1> kExtended = [] {
-      std::array<std::string, Machine::kWorkOffsets + 1> a;  // 808D G54 P1…P93: slots 7..99 (7..9 named G59.x)
-      for (int i = 7; i <= Machine::kWorkOffsets; ++i) a[i] = "G54 P" + std::to_string(i - 6);
-      return a;
-    }();
     if (c.sub == 0) {  // Sinumerik G500: no settable frame; the stored base frames become active
       x.activateBaseFrames();
       x.selectNoSettableFrame();
@@ -711,7 +701,8 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
     if (c.sub < 1 || c.sub > (x.machine.dialect == "sinumerik" ? x.settableFrames() - 1 : Machine::kWorkOffsets)) {
       if (x.machine.dialect != "sinumerik") return x.error("bad work offset number", "bad-offset-index");
       return x.error(fmt::format("{}: the machine has {} settable frames, G500 … {} (settable_frames, MD28080)",
-                                 settableFrameCode(c.sub), x.settableFrames(), settableFrameCode(x.settableFrames() - 1)),
+                                 workOffsetCode(c.sub, OffsetCodes::Sinumerik), x.settableFrames(),
+                                 workOffsetCode(x.settableFrames() - 1, OffsetCodes::Sinumerik)),
                      "bad-offset-index");
     }
     x.activateBaseFrames();  // Sinumerik G54…: the stored base frames too (manual L12337-L12345)
@@ -725,9 +716,11 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
     if (apply) x.applyWorkOffset();
     else x.updateChain();
     x.curBlockFrame = true;
-    x.noteFrame(c.sub <= 9                              ? kSystems[c.sub - 1]
-                : x.machine.dialect == "sinumerik" ? settableFrameCode(c.sub).c_str()
-                                                   : kExtended[c.sub].c_str());
+    // ISO slots 7..9 keep LinuxCNC's names: both G59.1 and the 808D's G54 P1 select them.
+    x.noteFrame(workOffsetCode(c.sub, x.machine.dialect == "sinumerik" ? OffsetCodes::Sinumerik
+                                      : c.sub <= 9                     ? OffsetCodes::LinuxCnc
+                                                                       : OffsetCodes::Iso808)
+                    .c_str());
     return true;
   }
   case CmdKind::SetOffset: {

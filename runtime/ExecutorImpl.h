@@ -62,7 +62,6 @@ public:
   }
 };
 
-std::string settableFrameCode(int n);  // Sinumerik G500, G54…G57, G505…G599 (Executor.cpp)
 
 // The [controller] reset list as bits (Executor.cpp: kResetGroups).
 uint32_t resetGroupMask(const std::vector<std::string> &groups);

@@ -3,6 +3,7 @@
 // setting is one row, and every problem is reported as "file:line:col: error: message".
 #include "runtime/Machine.h"
 #include "runtime/MachineReader.h"
+#include "runtime/WorkOffsetCode.h"
 
 #include "runtime/Geometry.h"
 
@@ -14,6 +15,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <fmt/format.h>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -729,6 +731,14 @@ const ToolData *Machine::findTool(int n) const {
   if (auto it = tools.find(n); it != tools.end()) return &it->second;
   // A machine without a tool table restricts nothing.
   return n == 0 || tools.empty() || (n > 0 && n <= freeTools) ? &kNone : nullptr;
+}
+
+std::string workOffsetCode(int n, OffsetCodes codes) {
+  if (codes == OffsetCodes::Sinumerik)
+    return n < 0 || n > Machine::kWorkOffsets ? "" : n == 0 ? "G500" : n < 5 ? fmt::format("G5{}", 3 + n) : fmt::format("G5{:02d}", n);
+  if (n >= 1 && n <= 6) return fmt::format("G5{}", 3 + n);
+  if (codes == OffsetCodes::LinuxCnc) return n >= 7 && n <= 9 ? fmt::format("G59.{}", n - 6) : "";
+  return n >= 7 && n <= Machine::kWorkOffsets ? fmt::format("G54 P{}", n - 6) : "";
 }
 
 }  // namespace ncc

@@ -9,6 +9,7 @@
 // same either way, which `ncc translate --verify` checks.
 #include "backends/emit/EmitterImpl.h"
 #include "runtime/Geometry.h"
+#include "runtime/WorkOffsetCode.h"
 
 #include <fmt/format.h>
 
@@ -18,7 +19,6 @@ namespace {
 
 // The codes of one target. Selection index 1..9 is the machine's g54…"g59.3"; 0 none.
 struct FrameCodes {
-  std::array<const char *, 10> select;  // nullptr: the target has no code for it
   const char *shift;                    // local shift with X Y Z words; the same with none cancels
   bool shiftCancelNeedsZeros;           // ISO G52 cancels with X0 Y0 Z0, Sinumerik TRANS alone
   const char *lengthCode;               // with the offset number's word: G43 H1; Sinumerik D1 alone
@@ -26,20 +26,11 @@ struct FrameCodes {
   const char *lengthOff;
 };
 
-// ISO: ncc's ISO front end reads LinuxCNC's G59.1-G59.3 (a Fanuc would say G54.1 P1-P3, which
-// ncc does not read back yet); it has no "no offset" selection. Sinumerik: G500 (the settable
-// frame off), G54-G57, then G505-G509 (docs/SINUMERIK.md).
-const FrameCodes kIsoCodes{{nullptr, "G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"},
-                           "G52", true, "G43", "H", "G49"};
-const FrameCodes kSinumerikCodes{{"G500", "G54", "G55", "G56", "G57", "G505", "G506", "G507", "G508", "G509"},
-                                 "TRANS", false, "", "D", "D0"};
-
-// NC-200: origin n by (UAO,n) (seed 003 L1572, L1609-1611), (UAO,0) the zero origin; the
-// machine's [offsets] g54… are its origins 1…9. Seed 003 shows no local shift and no tool length
-// code (T.x is tool and offset, whose values it does not give): both stay in the positions.
-const FrameCodes kNc200Codes{{"(UAO,0)", "(UAO,1)", "(UAO,2)", "(UAO,3)", "(UAO,4)", "(UAO,5)", "(UAO,6)", "(UAO,7)",
-                              "(UAO,8)", "(UAO,9)"},
-                             nullptr, false, nullptr, nullptr, nullptr};
+const FrameCodes kIsoCodes{"G52", true, "G43", "H", "G49"};
+const FrameCodes kSinumerikCodes{"TRANS", false, "", "D", "D0"};
+// NC-200: seed 003 shows no local shift and no tool length code (T.x is tool and offset, whose
+// values it does not give): both stay in the positions.
+const FrameCodes kNc200Codes{nullptr, false, nullptr, nullptr, nullptr};
 
 // A target without these codes: everything stays in the positions (machine coordinates).
 const FrameCodes *frameCodes(Target t) {
@@ -49,10 +40,24 @@ const FrameCodes *frameCodes(Target t) {
   return nullptr;
 }
 
+// The code selecting work offset n on the target, empty when it has none. ISO: G54…G59, then
+// G59.1-G59.3 for LinuxCNC and the 808D's G54 P1…P93 for the others (ncc reads both in .nc); no
+// "no offset" selection. Sinumerik: G500, G54-G57, G505-G509 (its G510… are frames of their own
+// table, not these slots). NC-200: origin n by (UAO,n) (seed 003 L1572, L1609-1611), (UAO,0)
+// the zero origin; the machine's [offsets] g54… are its origins 1…9.
+std::string selectionCode(Target t, const Machine &m, int n) {
+  if (t == Target::ISO) return workOffsetCode(n, m.controller.family == "linuxcnc" ? OffsetCodes::LinuxCnc : OffsetCodes::Iso808);
+  if (n < 0 || n > 9) return "";
+  if (t == Target::Sinumerik) return workOffsetCode(n, OffsetCodes::Sinumerik);
+  if (t == Target::Nc200) return fmt::format("(UAO,{})", n);
+  return "";
+}
+
+// The source's selection, for notes (the source's dialect is not known here).
 std::string sourceSelectionName(int selection) {
   static const char *kNames[] = {"G500", "G54", "G55", "G56", "G57", "G58/G505", "G59/G506",
                                  "G59.1/G507", "G59.2/G508", "G59.3/G509"};
-  if (selection > 9 && selection <= 99) return fmt::format("G54 P{}", selection - 6);  // the 808D's extended offsets
+  if (selection > 9 && selection <= Machine::kWorkOffsets) return workOffsetCode(selection, OffsetCodes::Iso808);
   return selection >= 0 && selection <= 9 ? kNames[selection] : "an unknown work offset";
 }
 
@@ -193,9 +198,11 @@ void Emitter::syncFrame(const MotionRecord &r) {
     written_.selection = 1;
     bool selected = false;
     for (const std::string &blk : st_.setup)
-      for (int i = 0; i <= 9; ++i)
-        if (codes->select[i] && (" " + blk + " ").find(std::string(" ") + codes->select[i] + " ") != std::string::npos)
+      for (int i = 0; i <= Machine::kWorkOffsets; ++i) {  // the last match: "G54 P1" after "G54"
+        std::string code = selectionCode(st_.target, machine_, i);
+        if (!code.empty() && (" " + blk + " ").find(" " + code + " ") != std::string::npos)
           written_.selection = i, selected = true;
+      }
     // A selection activates the stored base frames on the target (ncc's reader, as the Sinumerik
     // control, also in ISO mode); the NC-200 has none: there they stay in the positions.
     if (st_.target != Target::Nc200) written_.base = storedBaseFrames(machine_, selected);
@@ -214,7 +221,8 @@ void Emitter::syncFrame(const MotionRecord &r) {
   // The work offset: the source's when the target has a code for it, else the one in force
   // with the whole translation in the positions.
   int sel = written_.selection;
-  const bool selectable = src_.selection <= 9 && codes->select[src_.selection] != nullptr;
+  const std::string selCode = selectionCode(st_.target, machine_, src_.selection);
+  const bool selectable = !selCode.empty();
   if (selectable) sel = src_.selection;
   else baked.push_back(std::string("the frame of ") + sourceSelectionName(src_.selection));
   // What the target adds for the selection: its table entry after the stored base frames, which
@@ -276,7 +284,12 @@ void Emitter::syncFrame(const MotionRecord &r) {
     writeBlock(w, r.blockNumber);
   };
   if (sel != written_.selection) {
-    block({codes->select[sel]});
+    Words w;  // "G54 P1" is two words (the target's separator goes between them)
+    for (size_t at = 0, sp; at < selCode.size(); at = sp + 1) {
+      sp = std::min(selCode.find(' ', at), selCode.size());
+      w.push_back(selCode.substr(at, sp - at));
+    }
+    block(w);
     written_.selection = sel;
     written_.base = base;
   }

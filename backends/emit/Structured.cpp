@@ -3,6 +3,7 @@
 // allows it; statements (assignments, control) take a line of their own in the block's order.
 #include "backends/emit/StructuredImpl.h"
 #include "backends/emit/WordFormat.h"
+#include "runtime/WorkOffsetCode.h"
 
 #include <fmt/format.h>
 
@@ -34,8 +35,6 @@ static const ModeCode kModes[] = {
     {"stop_once", "exact_stop_once", nullptr, "G9"},
 };
 // Work offsets 1..9 (docs/EMIT.md "Work offsets").
-static const char *const kIsoOffsets[] = {"G54", "G55", "G56", "G57", "G58", "G59", "G59.1", "G59.2", "G59.3"};
-static const char *const kSinOffsets[] = {"G54", "G55", "G56", "G57", "G505", "G506", "G507", "G508", "G509"};
 // The words of a move both readers take with the same meaning: axes, arc centre and radius.
 struct MoveWord {
   const char *key, *iso, *sinumerik;
@@ -217,7 +216,8 @@ bool Writer::machineWord(const Op &o) {
       if (iso_) return fail(o.loc, "Sinumerik G500 (no settable frame)");
       return addWord("G500"), true;
     }
-    addWord((iso_ ? kIsoOffsets : kSinOffsets)[(int)i->num - 1]);
+    // ISO keeps LinuxCNC's G59.1-G59.3 here: the structured writer has no machine family.
+    addWord(workOffsetCode((int)i->num, iso_ ? OffsetCodes::LinuxCnc : OffsetCodes::Sinumerik));
     return true;
   }
   case OpKind::ToolLength: {

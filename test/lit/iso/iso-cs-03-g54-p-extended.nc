@@ -23,6 +23,26 @@ M30
 ; FRAME: frame_change "G59.2" {{.*}} m03=200 {{.*}} wcs=8 @3:1
 ; FRAME: frame_change "G54 P6" {{.*}} m03=600 {{.*}} m23=-5 wcs=12 @4:1
 ; FRAME: frame_change "G54 P5" {{.*}} m03=0 {{.*}} wcs=11 @5:1
+; Translated for an 808D (family "iso") the selections keep their codes and read back equal; a
+; Sinumerik target selects P1-P3 as G507-G509 (the same slots) and bakes P4… into the positions.
+; RUN: %ncc translate %s --machine=%S/Inputs/808d-extended-offsets.toml --to=iso --verify -o %t.iso.nc 2>&1 | FileCheck %s --check-prefix=VERIFY
+; RUN: FileCheck %s --check-prefix=ISO --input-file=%t.iso.nc
+; RUN: %ncc translate %s --machine=%S/Inputs/808d-extended-offsets.toml --to=sinumerik --verify -o %t.mpf 2>&1 | FileCheck %s --check-prefix=VERIFY
+; RUN: FileCheck %s --check-prefix=SIN --input-file=%t.mpf
+; VERIFY: verified:
+; ISO: G54 P1
+; ISO-NEXT: X0. Y0.
+; ISO-NEXT: G54 P2
+; ISO-NEXT: X1.
+; ISO-NEXT: G54 P6
+; ISO-NEXT: X0. Y0. Z0.
+; ISO-NEXT: G54 P5
+; ISO-NEXT: X0.
+; ISO-NEXT: G55
+; SIN: N30 G507
+; SIN: N50 G508
+; SIN: ; ncc: from here the positions include the frame of G54 P6: no code for it on this target
+; SIN-NEXT: N70 X400 Y4 Z-5
 ; The NC IR: work_offset index 6 + n.
 ; RUN: %ncc compile %s --emit=ir | FileCheck %s --check-prefix=IR
 ; IR: work_offset index=7 loc(1:2:1)
