@@ -270,6 +270,9 @@ struct IsoBlockStream::Impl {
     lower.callsRefused = "needs the whole program (not streamable)";
     p = text.data();
     end = p + text.size();
+    // Lines up to the last newline can take the parser's fast path without bounds checks.
+    const void *nl = text.empty() ? nullptr : memrchr(text.data(), '\n', text.size());
+    lastNewline = nl ? static_cast<const char *>(nl) : text.data();
     if (!lower.optionsValid()) {
       diags.error({}, "unknown decimal mode '" + opts.decimalMode + "' (calculator, is-b, is-c)", "options");
       p = end;
@@ -283,6 +286,7 @@ struct IsoBlockStream::Impl {
   BlockLowerer lower;
   ParsedBlock block;
   const char *p, *end;
+  const char *lastNewline;  // a line starting before it ends with a newline (the text's start: none)
   uint32_t lineNo = 0;
   bool content = false, ended = false, fatal = false;
 };
@@ -298,13 +302,20 @@ bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks, CmdSink *lean) {
   size_t blocks = 0;
   while (s.p < s.end && blocks < maxBlocks && !s.fatal && !s.ended) {
     const char *lineStart = s.p;
-    const char *nl = static_cast<const char *>(std::memchr(s.p, '\n', (size_t)(s.end - s.p)));
-    const char *le = nl ? nl : s.end;
-    std::string_view line(s.p, (size_t)(le - s.p));
-    s.p = nl ? nl + 1 : s.end;
-    ++s.lineNo;
     ParsedBlock &b = s.block;
-    if (!s.parser.parse(line, s.fileId, s.lineNo, b)) continue;
+    ++s.lineNo;
+    // A block of plain words is read up to its newline in one pass (no line search first); any
+    // other line, and the last one when no newline ends it, go through parse().
+    const char *nl = nullptr;
+    if (s.p < s.lastNewline && s.parser.parsePlainLine(s.p, s.end, s.fileId, s.lineNo, b, nl)) {
+      s.p = nl + 1;
+    } else {
+      nl = static_cast<const char *>(std::memchr(s.p, '\n', (size_t)(s.end - s.p)));
+      const char *le = nl ? nl : s.end;
+      std::string_view line(s.p, (size_t)(le - s.p));
+      s.p = nl ? nl + 1 : s.end;
+      if (!s.parser.parse(line, s.fileId, s.lineNo, b)) continue;
+    }
     if (b.percent) {
       if (s.content) s.ended = true;  // closing '%': the rest is not part of the program
       continue;
