@@ -157,7 +157,7 @@ static bool stopsBulk(unsigned char c, unsigned char next, unsigned char next2) 
 
 #if NCC_BULK_AVX2
 // skipBulk's loop thirty-two bytes at a time where the processor has AVX2 (the same classes and
-// the same G rule; three-operand instructions, no register copies): about a quarter of the SSE2
+// the same G rule; three-operand instructions, no register copies): about half the SSE2
 // loop's instructions per byte. What is left goes to skipBulk.
 [[gnu::target("avx2")]] static inline __m256i eq32(__m256i v, char c) { return _mm256_cmpeq_epi8(v, _mm256_set1_epi8(c)); }
 [[gnu::target("avx2")]] static const char *skipBulkAvx2(const char *q, const char *limit, const char *end) {
