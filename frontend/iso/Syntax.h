@@ -131,6 +131,11 @@ public:
               bool lathe = false)
       : diags_(diags), flavour_(flavour), map_(paramMapFor(flavour, mem, lathe)), skipMask_(blockDeleteMask) {}
   bool parse(std::string_view line, uint32_t file, uint32_t lineNo, ParsedBlock &out);
+  // The stream's fast path (frontend/iso/Stream.cpp): the line at `line`, whose newline comes
+  // before `end`, when it is a block of plain words (parse()'s fast path); `newline` is then
+  // where it ends. False: nothing reported, parse() reads the line.
+  bool parsePlainLine(const char *line, const char *end, uint32_t file, uint32_t lineNo, ParsedBlock &out,
+                      const char *&newline);
 
   // Expression entry points (also used by tests).
   ir::ExprPtr parseExpr(int minPrec);
@@ -159,6 +164,8 @@ private:
   bool parseAssign(ParsedBlock &out);
   bool parseOWord(ParsedBlock &out, const char *at);
   bool parsePlainWords(ParsedBlock &out);  // the fast path of parse (false: parseItems reads the block)
+  template <bool kSentinel>
+  const char *plainWords(const char *q, const char *end, ParsedBlock &out);
   bool parseItems(ParsedBlock &out);
   ir::ExprPtr parseBracket();   // [ expr ]
   ir::ExprPtr parseUnary();

@@ -280,6 +280,71 @@ TEST(IsoBlockParser, PlainWordsFastPathMatchesGeneralPathRandomly) {
   EXPECT_GT(accepted, 4000);  // the comparison is not vacuous
 }
 
+// The stream's line path (parsePlainLine: read to the newline, no line search first) takes a
+// line only when parse() takes it on its fast path, and reads it alike: words, values (sign of
+// zero included), points, columns, the block number, the block's location; its end is the
+// line's newline. Random texts of plain-looking lines with blanks, CR, empty lines, block skips,
+// comments and stray bytes; one ParsedBlock each, reused line after line as the stream does.
+TEST(IsoBlockParser, PlainLineMatchesParse) {
+  std::mt19937 rng(606);
+  auto pick = [&](const std::string &from) { return from[rng() % from.size()]; };
+  auto randomLine = [&] {
+    std::string line;
+    while (rng() % 5 == 0) line.push_back(pick(" \t"));
+    if (rng() % 50 == 0) line.push_back(pick("%/(O"));
+    for (int words = (int)(rng() % 6); words > 0; --words) {
+      line.push_back(pick("GXYZIJFNxgnMO"));
+      while (rng() % 4 == 0) line.push_back(pick(" \t\v\f"));
+      if (rng() % 3 == 0) line.push_back(pick("+-"));
+      while (rng() % 4 == 0) line.push_back(' ');
+      for (int n = (int)(rng() % 19); n > 0; --n) line.push_back(rng() % 8 == 0 ? '.' : pick("0123456789"));
+      while (rng() % 3 == 0) line.push_back(' ');
+      if (rng() % 40 == 0) line.push_back(pick("e?#;/(\r"));
+    }
+    if (rng() % 10 == 0) line.push_back('\r');
+    return line;
+  };
+  SourceManager sm;
+  Diagnostics d(sm);
+  d.setCollect(true);
+  int taken = 0;
+  for (int round = 0; round < 400; ++round) {
+    std::string text;
+    std::vector<size_t> starts;
+    for (int i = 0; i < 100; ++i) starts.push_back(text.size()), text += randomLine() + "\n";
+    BlockParser p(d, round % 2 ? Flavour::RS274 : Flavour::Fanuc, 0);
+    ParsedBlock line, whole;
+    for (size_t i = 0; i < starts.size(); ++i) {
+      const char *b = text.data() + starts[i], *nl = nullptr;
+      const char *e = text.data() + text.find('\n', starts[i]);
+      const std::string_view view(b, (size_t)(e - b));
+      const uint32_t lineNo = (uint32_t)i + 2;
+      const bool fast = p.parsePlainLine(b, text.data() + text.size(), 3, lineNo, line, nl);
+      const bool ok = p.parse(view, 3, lineNo, whole);
+      ASSERT_EQ(fast, ok && whole.plain) << view;
+      if (!fast) continue;
+      ++taken;
+      EXPECT_EQ(nl, e) << view;
+      EXPECT_TRUE(line.plain && line.content) << view;
+      EXPECT_EQ(line.n, whole.n) << view;
+      EXPECT_EQ(line.loc.line, whole.loc.line) << view;
+      EXPECT_EQ(line.loc.col, whole.loc.col) << view;
+      ASSERT_EQ(line.words.size(), whole.words.size()) << view;
+      for (size_t k = 0; k < line.words.size(); ++k) {
+        const IsoWord &x = line.words[k], &y = whole.words[k];
+        EXPECT_EQ(x.letter, y.letter) << view;
+        EXPECT_EQ(x.hasPoint, y.hasPoint) << view;
+        EXPECT_EQ(x.value, y.value) << view;
+        EXPECT_EQ(std::signbit(x.value), std::signbit(y.value)) << view;
+        EXPECT_EQ(x.loc.file, y.loc.file) << view;
+        EXPECT_EQ(x.loc.line, y.loc.line) << view;
+        EXPECT_EQ(x.loc.col, y.loc.col) << view;
+      }
+    }
+  }
+  EXPECT_GT(taken, 5000);  // the comparison is not vacuous
+}
+
 // One ParsedBlock reused line after line (as the stream does): a plain block after a general
 // one, a general one after a plain one, and a fast path given up half way leave nothing behind.
 TEST(IsoBlockParser, PlainAndGeneralBlocksAlternate) {
