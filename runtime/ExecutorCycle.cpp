@@ -327,6 +327,9 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
   ctx.spindle = x.st.spindle;
   ctx.speed = x.st.speed;
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
+  if (auto t = x.machine.toolTable.find(x.st.toolInSpindle); t != x.machine.toolTable.end())
+    ctx.plungeAngle = t->second.plungeAngle, ctx.pointAngle = t->second.pointAngle,
+    ctx.cuttingLength = t->second.cuttingLength;
   std::vector<CycleStep> steps;
   const char *name = pattern ? pattern->name : cyc->name;
   bool ok = pattern ? expandPattern(*pattern, *patternArgs, cyc, args, ctx, steps, err)

@@ -364,6 +364,9 @@ const KeyDef<ToolIn> kToolKeys[] = {
     {"number", &ToolIn::number, 0, 99999, false, nullptr, true},
     {"name", &ToolIn::name},
     {"edges", NodeReader(readEdges), 0, 0, false, nullptr, true},
+    {"plunge_angle", &ToolIn::plungeAngle, 0, 90},  // TOOL.T ANGLE
+    {"point_angle", &ToolIn::pointAngle, 0, 180},   // TOOL.T T-ANGLE
+    {"cutting_length", &ToolIn::cuttingLength, 0},  // TOOL.T LCUTS
 };
 
 void readTools(Ctx &c, const toml::node &n, void *obj) {

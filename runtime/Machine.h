@@ -51,6 +51,11 @@ struct ToolEdge {
 struct Tool {
   std::string name;
   std::map<int, ToolEdge> edges;  // by D number
+  // Heidenhain TOOL.T data the machining cycles read (docs/MACHINE.md "[[tools]]"), 0 = not
+  // given: ANGLE, the largest plunge angle (degrees from the plane) of helical and reciprocating
+  // plunges; T-ANGLE, the point angle of a drill or centring tool (degrees, the full angle);
+  // LCUTS, the cutting length (mm).
+  double plungeAngle = 0, pointAngle = 0, cuttingLength = 0;
 };
 
 // When a work offset written by a program (LinuxCNC #5221, Fanuc #5221, Sinumerik $P_UIFR)

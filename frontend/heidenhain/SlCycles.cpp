@@ -150,7 +150,7 @@ bool BlockParser::slCall(const std::string &how) {
   };
   static const Refusal kRefused[] = {
       {22, "Q18", 0, "fine roughing with a coarse roughing tool (Q18) is not simulated yet"},
-      {22, "Q19", 0, "plunging along the tool table's ANGLE (Q19 not 0) is not simulated: the tool data has no ANGLE"},
+      {22, "Q19", 0, "plunging along the tool table's ANGLE (Q19 not 0) is not simulated yet"},
       {22, "Q401", 100, "a feed factor Q401 below 100 % for full-width cuts is not simulated"},
       {25, "Q18", 0, "residual machining after a coarse roughing tool (Q18) is not simulated yet"},
   };

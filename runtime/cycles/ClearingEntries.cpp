@@ -27,7 +27,8 @@ bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, Mil
   double climb, overlap;
   if (!position(a, "Q215", 2, m.op, err)) return false;
   if (!(a.get("Q202") > 0)) return fail(err, "Q202 (plunging depth) must be greater than 0");
-  m.infeed = a.get("Q202");
+  // The control shortens the infeed to the tool's cutting length LCUTS (seed002a L5919-5925).
+  m.infeed = ctx.cuttingLength > 0 ? std::min(a.get("Q202"), ctx.cuttingLength) : a.get("Q202");
   if (m.depth / m.infeed > kMaxPecks) return fail(err, "Q202 (plunging depth) too small");
   if (!(a.get("Q207") > 0)) return fail(err, "Q207 (milling feed) must be greater than 0");
   m.plungeFeed = a.get("Q206"), m.millFeed = a.get("Q207");
@@ -39,12 +40,6 @@ bool heiMill(const CycleArgs &a, const CycleContext &ctx, double minOverlap, Mil
   if (m.floorAllowance >= m.depth) return fail(err, "Q369 (floor allowance) must be less than the depth Q201");
   if (m.finishInfeed > 0 && m.depth / m.finishInfeed > kMaxPecks) return fail(err, "Q338 (finishing infeed) too small");
   if (climb != std::floor(climb)) return fail(err, "Q351 must be +1 (climb), -1 (up-cut) or 0");
-  // Helical and reciprocating plunges follow the tool table's plunge angle ANGLE, which the tool
-  // data does not hold; the manual makes vertical plunging mandatory without it.
-  if (a.get("Q366") != 0)
-    return fail(err, "Q366 = " + std::to_string((int)a.get("Q366")) +
-                         " (helical or reciprocating plunge) needs the tool's plunge angle (tool table ANGLE), which "
-                         "ncc's tool data does not hold: program Q366=0");
   if (a.get("Q439") != 0)
     return fail(err, "Q439 (feed referred to the cutting edge) is not supported: program Q439=0 (tool centre path)");
   m.stepover = overlap * m.r;
@@ -79,6 +74,11 @@ bool hei251(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (2 * rc > std::min(L, W)) return fail(err, "Q220 (corner radius) is larger than half the shorter side");
   if (2 * (m.r + m.sideAllowance) >= std::min(L, W))
     return fail(err, "the tool with the side allowance Q368 does not fit into the pocket");
+  // Q366 1 a helix about the centre, 2 to and fro along Q218 (the tool's centre reaches L/2 - R -
+  // Q368 either way).
+  if (!heiPlunge(a, ctx, true, 2, m, err) || !helixFits(m, std::min(L, W) / 2 - m.sideAllowance, err) ||
+      !centredRamp(m, L / 2 - m.r - m.sideAllowance, err))
+    return false;
   PocketShape p;
   p.wall = roundedRect(L / 2, W / 2, rc);
   double a2 = L / 2 - m.r, b2 = W / 2 - m.r;
@@ -97,6 +97,12 @@ bool hei252(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   double d = a.get("Q223");
   if (!(d > 0)) return fail(err, "Q223 (pocket diameter) must be greater than 0");
   if (2 * (m.r + m.sideAllowance) >= d) return fail(err, "the tool with the side allowance Q368 does not fit into the pocket");
+  // 252 knows Q366 0 and 1 (a helix); its vertical plunge wants a tool whose ANGLE is 0 or 90
+  // (seed002a L6398-6404).
+  if (!heiPlunge(a, ctx, true, 1, m, err) || !helixFits(m, d / 2 - m.sideAllowance, err)) return false;
+  if (a.get("Q366") == 0 && ctx.plungeAngle != 0 && ctx.plungeAngle != 90)
+    return fail(err, fmt::format("Q366 = 0 (vertical plunge) wants a tool whose plunge angle ANGLE is 0 or 90, not {}",
+                                 ctx.plungeAngle));
   PocketShape p;
   p.wall = circleContour(d / 2);
   p.finish.path = circleContour(d / 2 - m.r);
@@ -115,6 +121,8 @@ bool hei253(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (!(L > 0) || !(W > 0)) return fail(err, "Q218 (slot length) and Q219 (slot width) must be greater than 0");
   if (W > L) return fail(err, "Q219 (slot width) is larger than Q218 (slot length, the longer side)");
   if (!position(a, "Q367", 4, pos, err)) return false;
+  // Q366 1 and 2: to and fro along the slot's centre line (seed002a L6471-6474, L6644-6648).
+  if (!heiPlunge(a, ctx, false, 2, m, err)) return false;
   // Q367 puts an end or an arc's centre at the tool; Q374 turns the slot about the tool.
   Mill mill = placed(out, ctx, m, {kSlotEnd[pos][0] * L / 2 + kSlotEnd[pos][1] * W / 2, 0}, a.get("Q374"));
   if (!straightSlot(m, L, W, "side allowance Q368", mill, err)) return false;
@@ -139,6 +147,9 @@ bool hei254(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (reps != std::floor(reps)) return fail(err, "Q377 (repetitions) must be a whole number");
   if (!(sweepDeg > 0) || sweepDeg >= 360) return fail(err, "Q248 (angular length) must lie between 0 and 360 (a closed ring is not a slot)");
   if (W / 2 >= rp) return fail(err, "the slot reaches the circle's centre: Q219 must be less than Q375");
+  // Q366 1 and 2: to and fro along the slot's centre arc (seed002a L6736-6739: the process; the
+  // parameter text's "helical" for 1 and 2, L6992-6996, contradicts it and 253).
+  if (!heiPlunge(a, ctx, false, 2, m, err)) return false;
   // The circle's centre: Q216/Q217 (Q367 0), else back from the tool, which is at the start end
   // (1), the middle (2) or the far end (3) of the centre line [model: the ends in angle order].
   const PlaneAxes ax = planeAxes((Plane)ctx.plane);
@@ -330,6 +341,7 @@ bool hei233(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   if (!faceParams(a, ctx, f, m, err) || !position(a, "Q389", 4, strategy, err) || !position(a, "Q215", 2, op, err))
     return false;
   if (strategy == 4) return fail(err, "Q389 4 (spiral from outside in) is not supported");
+  if (ctx.cuttingLength > 0) f.maxInfeed = std::min(f.maxInfeed, ctx.cuttingLength);  // LCUTS (seed002a L7975-7979)
   for (const char *k : {"Q347", "Q348", "Q349"})
     if (a.get(k) != 0) return fail(err, std::string(k) + " (a limited side) is not supported: program 0");
   const double dirAxis = a.has("Q350") ? a.get("Q350") : 1;

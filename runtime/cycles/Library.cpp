@@ -457,15 +457,25 @@ bool hei206(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> 
   return true;
 }
 
-// 240 CENTERING (L1771-L1856): in at Q206 to the depth Q201 (Q343 = 0), dwell Q211, rapid to
-// the 2nd set-up clearance. Q343 = 1 (to the diameter Q344) needs the tool's point angle, which
-// the tool data do not carry: an error.
+// 240 CENTERING (L1771-L1856): in at Q206 to the depth Q201 (Q343 = 0) or to the diameter Q344
+// (Q343 = 1), dwell Q211, rapid to the 2nd set-up clearance. A diameter needs the tool's point
+// angle T-ANGLE (L1826-L1828): the cone of point angle T reaches the diameter D at the depth
+// D / 2 / tan(T / 2) below its tip; Q344's sign is the direction, as Q201's.
 bool hei240(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleStep> &out, std::string &err) {
-  if (a.get("Q343") != 0)
-    return fail(err, "Q343 = 1 (centring to the diameter Q344) needs the tool's point angle T-ANGLE: not supported");
+  const double toDiameter = a.get("Q343");
+  if (toDiameter != 0 && toDiameter != 1) return fail(err, "Q343 must be 0 (to the depth Q201) or 1 (to the diameter Q344)");
+  CycleArgs b = a;
+  if (toDiameter == 1) {
+    const double t = ctx.pointAngle, d = a.get("Q344");
+    if (!(t > 0 && t < 180))
+      return fail(err, t == 0 ? "Q343 = 1 (centring to the diameter Q344) needs the tool's point angle T-ANGLE "
+                                "(point_angle in the machine's tool table)"
+                              : "Q343 = 1: the tool's point angle T-ANGLE must lie between 0 and 180 degrees");
+    b.num["Q201"] = d / 2 / std::tan(t / 2 * M_PI / 180);
+  }
   HeiLevels l;
   HoleSpec h;
-  if (!heiHole(a, h, l, err)) return err.empty();
+  if (!heiHole(b, h, l, err)) return err.empty();
   h.dwellBottom = heiDwell(a, "Q211");
   hole(h, ctx.plane, ctx, out);
   return true;

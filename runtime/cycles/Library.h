@@ -36,6 +36,9 @@ struct CycleContext {
   int spindle = 0;                  // 0 stop, 1 cw, 2 ccw
   double speed = 0;                 // rpm
   double toolRadius = 0;            // mm, the active tool's (0: no tool or no radius)
+  // The active tool's table data (Tool in runtime/Machine.h; 0: not given): the largest plunge
+  // angle ANGLE and the point angle T-ANGLE in degrees, the cutting length LCUTS in mm.
+  double plungeAngle = 0, pointAngle = 0, cuttingLength = 0;
 };
 
 struct CycleDef {

@@ -15,14 +15,41 @@ constexpr double kChordTolerance = 0.001;
 PlanePoint rot90(PlanePoint p) { return {-p[1], p[0]}; }
 PlanePoint along(PlanePoint p, PlanePoint d, double k) { return {p[0] + k * d[0], p[1] + k * d[1]}; }
 
+// Plunges steeper than this many helix turns or ramp strokes per level are refused (ANGLE too
+// small for the element).
+constexpr double kMaxStrokes = 10000;
+
+// The largest drop of one plunge: an infeed (or the floor allowance) plus the set-up clearance.
+double maxDrop(const MillJob &m) { return std::min(m.infeed > 0 ? m.infeed : m.depth, m.depth) + m.clearance; }
+
+// Along the ramp to its end `toB` (else back to a) at `level`.
+void rampStroke(const Ramp &k, bool toB, double level, double f, Mill &mill) {
+  const PlanePoint to = toB ? k.b : k.a;
+  if (k.arc) mill.arc(to, k.centre, k.ccw == toB, level, f);
+  else mill.feed(to, level, f);
+}
+
+// From over the ramp's end a down to the level `t` below the surface in the fewest equal strokes
+// to and fro no steeper than the ramp angle, at the plunging feed; true when it ends at b.
+bool rampDown(const MillJob &m, double t, Mill &mill) {
+  const double from = (mill.level() - m.surface) * m.lv.dir, drop = t - from;
+  if (mill.here() != m.ramp.a) mill.rapid(m.ramp.a, mill.level());
+  const int n = std::max(1, (int)std::ceil(drop / (m.ramp.length * std::tan(m.rampAngle * M_PI / 180)) - 1e-9));
+  for (int i = 1; i <= n; ++i) rampStroke(m.ramp, i % 2 == 1, m.level(from + drop * i / n), m.plungeFeed, mill);
+  return n % 2 == 1;
+}
+
 // Down to the level `t` below the surface at `at` (the tool is over it, above the level).
 // [model] A helix starts `helixRadius` off the point in the milling direction's sense, turns down
-// at `helixPitch` per turn, then once round flat at the level.
+// at `helixPitch` per turn, then once round flat at the level. A reciprocating plunge starts at
+// the ramp's end a, runs to and fro in the fewest equal strokes no steeper than `rampAngle`, then
+// once more along the ramp flat at the level (the wedge the last stroke left).
 void plunge(const MillJob &m, PlanePoint at, double t, Mill &mill) {
   switch (m.plunge) {
   case Plunge::Vertical: mill.feed(at, m.level(t), m.plungeFeed); return;
   case Plunge::Rapid: mill.up(m.level(t)); return;
   case Plunge::Helix: break;
+  case Plunge::Reciprocate: rampStroke(m.ramp, !rampDown(m, t, mill), m.level(t), m.plungeFeed, mill); return;
   }
   const double drop = t - (mill.level() - m.surface) * m.lv.dir, turns = drop / m.helixPitch;
   const double whole = std::floor(turns + 1e-9), part = turns - whole;
@@ -35,6 +62,16 @@ void plunge(const MillJob &m, PlanePoint at, double t, Mill &mill) {
     mill.arc(end, at, m.ccw, m.level(t), m.plungeFeed, part < 1e-9 ? (int)whole : (int)whole + 1);
   }
   mill.arc(mill.here(), at, m.ccw, m.level(t), m.plungeFeed);
+}
+
+// The ramp of a reciprocating plunge, checked: a track the tool can run, not too many strokes.
+bool setRamp(MillJob &m, const Ramp &k, std::string &err) {
+  if (m.plunge != Plunge::Reciprocate) return true;
+  if (!(k.length > 1e-6)) return fail(err, "the slot is as long as it is wide: it has no centre line for the reciprocating plunge");
+  if (maxDrop(m) / (k.length * std::tan(m.rampAngle * M_PI / 180)) > kMaxStrokes)
+    return fail(err, fmt::format("the tool's plunge angle ANGLE {} is too small for the reciprocating plunge", m.rampAngle));
+  m.ramp = k;
+  return true;
 }
 
 bool rings(const MillJob &m, const PocketShape &p, double allowance, std::vector<Polygon> &out, std::string &err) {
@@ -68,6 +105,49 @@ std::vector<double> infeeds(double step, double total) {
   for (double t = step; t < total - 1e-9; t += step) out.push_back(t);
   out.push_back(total);
   return out;
+}
+
+bool heiPlunge(const CycleArgs &a, const CycleContext &ctx, bool helix, int maxQ366, MillJob &m, std::string &err) {
+  int q366;
+  if (!position(a, "Q366", maxQ366, q366, err)) return false;
+  m.plunge = Plunge::Vertical;
+  if (q366 == 0) return true;  // straight down whatever the tool's ANGLE
+  const double angle = ctx.plungeAngle;
+  const char *what = helix && q366 == 1 ? "helical" : "reciprocating";
+  if (!(angle > 0))
+    return fail(err, fmt::format("Q366 = {} ({} plunge) needs the tool's plunge angle ANGLE: the tool table gives none "
+                                 "(plunge_angle in the machine's tool table; 0 is an error, as on the control)",
+                                 q366, what));
+  if (angle >= 90) return true;  // [choice] ANGLE 90: straight down (as cycle 22, L9422)
+  if (helix && q366 == 1) {
+    m.plunge = Plunge::Helix;
+    m.helixRadius = m.r;
+    m.helixPitch = 2 * M_PI * m.r * std::tan(angle * M_PI / 180);
+    if (maxDrop(m) / m.helixPitch > kMaxStrokes)
+      return fail(err, fmt::format("the tool's plunge angle ANGLE {} is too small for the helical plunge", angle));
+    return true;
+  }
+  m.plunge = Plunge::Reciprocate;
+  m.rampAngle = angle;
+  return true;
+}
+
+bool centredRamp(MillJob &m, double room, std::string &err) {
+  if (m.plunge != Plunge::Reciprocate) return true;
+  if (2 * room < 4 * m.r - 1e-9)
+    return fail(err, fmt::format("the reciprocating plunge's stroke of at least twice the tool diameter, {}, does not fit "
+                                 "into the pocket",
+                                 4 * m.r));
+  const double want = std::max(4 * m.r, maxDrop(m) / std::tan(m.rampAngle * M_PI / 180));
+  const double len = std::min(want, 2 * room);
+  return setRamp(m, {{-len / 2, 0}, {len / 2, 0}, false, {}, true, len}, err);
+}
+
+bool helixFits(const MillJob &m, double room, std::string &err) {
+  if (m.plunge != Plunge::Helix || room >= 2 * m.r - 1e-9) return true;
+  return fail(err, fmt::format("the helical plunge's helix cuts a bore of twice the tool diameter, {}, which does not fit "
+                               "into the pocket",
+                               4 * m.r));
 }
 
 bool param(const CycleArgs &a, const char *k, double lo, double hi, double &out, std::string &err, double def) {
@@ -176,24 +256,55 @@ Mill placed(std::vector<CycleStep> &out, const CycleContext &ctx, const MillJob 
 // A slot as wide as the tool: the tool-centre path is the centre line (a line or an arc between
 // the ends' centres; seed002a L6563-6567: roughing only), the tool lifted out of the slot after
 // every infeed.
+// A reciprocating plunge ramps along the line itself from the set-up clearance over the last
+// level cut [model], and the pass runs back from the end the ramp reached.
 void slotLine(const MillJob &m, const Contour &line, Mill &mill) {
+  double floor = -m.clearance;  // the depth already cut
   auto pass = [&](double t, double f) {
     mill.go(line.start, m.lv.zsc);
-    mill.feed(line.start, m.level(t), m.plungeFeed);
-    mill.run(line, true, m.level(t), f);
+    bool forward = true;
+    if (m.plunge == Plunge::Reciprocate) {
+      mill.up(m.level(std::max(floor, 0.0) - m.clearance));
+      forward = !rampDown(m, t, mill);
+    } else {
+      mill.feed(line.start, m.level(t), m.plungeFeed);
+    }
+    mill.run(line, forward, m.level(t), f);
     mill.up(m.lv.zsc);
+    floor = t;
   };
   if (m.roughing())
     for (double t : infeeds(m.infeed, m.depth - m.floorAllowance)) pass(t, m.millFeed);
   if (m.floorPass) pass(m.depth, m.finishFeed);
 }
 
+namespace {
+// The ramp of a slot: its centre line between the ends' centres (seed002a L6477: "from the left
+// end along the middle of the slot").
+Ramp lineRamp(const Contour &line) {
+  const PathSeg &s = line.segs[0];
+  double len = std::hypot(s.end[0] - line.start[0], s.end[1] - line.start[1]);
+  if (s.arc) {
+    const double r = std::hypot(line.start[0] - s.centre[0], line.start[1] - s.centre[1]);
+    double sweep = std::atan2(s.end[1] - s.centre[1], s.end[0] - s.centre[0]) -
+                   std::atan2(line.start[1] - s.centre[1], line.start[0] - s.centre[0]);
+    if (s.ccw && sweep <= 0) sweep += 2 * M_PI;
+    if (!s.ccw && sweep >= 0) sweep -= 2 * M_PI;
+    len = r * std::fabs(sweep);
+  }
+  return {line.start, s.end, s.arc, s.centre, s.ccw, len};
+}
+}  // namespace
+
 // A straight slot L x W about the origin along x: along its centre line when as wide as the tool
 // (no allowance), else a pocket with round ends whose wall is finished from the left arc
 // (seed002a L6486), counter-clockwise from its apex.
-bool straightSlot(const MillJob &m, double L, double W, const char *allowance, Mill &mill, std::string &err) {
+bool straightSlot(const MillJob &job, double L, double W, const char *allowance, Mill &mill, std::string &err) {
+  MillJob m = job;
+  const Contour centreLine{{-(L - W) / 2, 0}, {{{(L - W) / 2, 0}, false, {}, true}}};
+  if (!setRamp(m, lineRamp(centreLine), err)) return false;
   if (m.sideAllowance == 0 && std::fabs(W - 2 * m.r) < 1e-9) {
-    slotLine(m, {{-(L - W) / 2, 0}, {{{(L - W) / 2, 0}, false, {}, true}}}, mill);
+    slotLine(m, centreLine, mill);
     return true;
   }
   if (2 * (m.r + m.sideAllowance) >= W) return fail(err, fmt::format("the tool with the {} does not fit into the slot", allowance));
@@ -208,8 +319,9 @@ bool straightSlot(const MillJob &m, double L, double W, const char *allowance, M
 // `count` slots W wide along arcs of radius rp about `centre`, each through `sweepDeg` from
 // `first` + i x `step` degrees, each from where the last left the tool, up to the end level
 // (lv.z2) after each; as wide as the tool (no allowance): along the centre arc.
-bool arcSlots(const MillJob &m, int plane, PlanePoint centre, double rp, double W, double sweepDeg, double first,
+bool arcSlots(const MillJob &job, int plane, PlanePoint centre, double rp, double W, double sweepDeg, double first,
               double step, int count, const char *allowance, std::vector<CycleStep> &out, std::string &err) {
+  MillJob m = job;
   if (W / 2 >= rp) return fail(err, "the slot reaches the circle's centre: it is wider than the circle's diameter");
   const bool line = m.sideAllowance == 0 && std::fabs(W - 2 * m.r) < 1e-9;
   if (!line && 2 * (m.r + m.sideAllowance) >= W)
@@ -221,6 +333,8 @@ bool arcSlots(const MillJob &m, int plane, PlanePoint centre, double rp, double 
   p.finish.normal = {std::cos(sweep / 2), std::sin(sweep / 2)};
   p.finish.room = (W / 2 - m.r) / 2;
   p.home = {rp * std::cos(sweep / 2), rp * std::sin(sweep / 2)};
+  const Contour centreLine{{rp, 0}, {{{rp * std::cos(sweep), rp * std::sin(sweep)}, true, {0, 0}, true}}};
+  if (!setRamp(m, lineRamp(centreLine), err)) return false;
   std::array<double, 3> at = m.call;
   for (int i = 0; i < count; ++i) {
     for (auto it = out.rbegin(); it != out.rend(); ++it)  // where the last slot left the tool
@@ -230,7 +344,7 @@ bool arcSlots(const MillJob &m, int plane, PlanePoint centre, double rp, double 
       }
     Mill mill(out, plane, centre, first + i * step, m.lv.dir, at);
     if (line) {
-      slotLine(m, {{rp, 0}, {{{rp * std::cos(sweep), rp * std::sin(sweep)}, true, {0, 0}, true}}}, mill);
+      slotLine(m, centreLine, mill);
     } else if (!millPocket(m, p, mill, err)) {
       return false;
     }

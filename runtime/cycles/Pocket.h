@@ -14,8 +14,19 @@ namespace ncc::entry {
 
 // How the tool goes down to a level at the plunge point: at the feed (Heidenhain Q366 0,
 // Sinumerik _VARI 2nd digit 1), at rapid into a pre-drilled hole (Sinumerik 0), on a helix of
-// `helixRadius` about the point with `helixPitch` per turn (Sinumerik 2).
-enum class Plunge : uint8_t { Vertical, Rapid, Helix };
+// `helixRadius` about the point with `helixPitch` per turn (Sinumerik 2, Heidenhain Q366 1), to
+// and fro along `ramp` no steeper than `rampAngle` (Heidenhain Q366 2, slots 1 and 2).
+enum class Plunge : uint8_t { Vertical, Rapid, Helix, Reciprocate };
+
+// The track of a reciprocating plunge in the element's frame: a line from `a` to `b`, or an arc
+// about `centre` (counter-clockwise from a to b when `ccw`), `length` long.
+struct Ramp {
+  PlanePoint a{}, b{};
+  bool arc = false;
+  PlanePoint centre{};
+  bool ccw = true;
+  double length = 0;
+};
 
 // ---- The options every pocket, slot and stud shares, named after the Heidenhain 25x parameters
 // (seed002a "Pocket / stud / slot cycles: shared semantics"); the Sinumerik entries fill them from
@@ -31,6 +42,8 @@ struct MillJob {
   bool wallPass = false, floorPass = false;  // the finishing passes to run
   Plunge plunge = Plunge::Vertical;
   double helixRadius = 0, helixPitch = 0;
+  Ramp ramp;                      // Reciprocate: the track (set by the element's shape)
+  double rampAngle = 0;           // Reciprocate: the steepest slope, degrees (the tool's ANGLE)
   double stepover = 0;            // Q370 x tool radius
   double r = 0;                   // tool radius
   bool ccw = true;                // the direction round a pocket's wall (studs: the other)
@@ -63,6 +76,20 @@ struct PocketShape {
 // Q367 of 253: the tool at the middle, the left end, the left arc's centre, the right arc's
 // centre, the right end; the slot's centre from the tool in slot lengths (x L/2, x W/2 on x).
 inline constexpr double kSlotEnd[5][2] = {{0, 0}, {1, 0}, {1, -1}, {-1, 1}, {-1, 0}};
+
+// The plunges Q366 selects (seed002a: 251 L6093-6113, 252 L6398-6410, 253 L6640-6648, 254
+// L6992-7003) with the tool's ANGLE: m.plunge and the helix (Heidenhain helices have the tool
+// radius, so they cut a bore of twice the tool diameter) or the ramp's angle; `helix` is whether
+// Q366 1 is a helix (251, 252) or, as 2, a reciprocating plunge (253, 254); `maxQ366` the
+// largest value the cycle knows.
+bool heiPlunge(const CycleArgs &a, const CycleContext &ctx, bool helix, int maxQ366, MillJob &m, std::string &err);
+// The track of a reciprocating plunge along x about the origin, centred, for a pocket whose tool
+// centre can move `room` either way: as long as one infeed plus the set-up clearance at the
+// ANGLE, at least twice the tool diameter (seed002a L6108-6111), at most 2 x room.
+bool centredRamp(MillJob &m, double room, std::string &err);
+// False with an error when the helix of a Q366 1 plunge does not fit `room` (the distance from
+// the plunge point to the nearest wall, less the side allowance).
+bool helixFits(const MillJob &m, double room, std::string &err);
 
 // The depths below the surface of successive infeeds of at most `step` down to `total`.
 std::vector<double> infeeds(double step, double total);
