@@ -118,7 +118,6 @@ struct Candidate {
   }
 };
 
-
 bool sameElem(const PathElem &a, const PathElem &b) {
   return a.arc == b.arc && norm(a.start - b.start) <= kJoin && norm(a.end - b.end) <= kJoin &&
          (!a.arc || (a.dir == b.dir && norm(a.center - b.center) <= kJoin));
