@@ -125,9 +125,11 @@ bool sameElem(const PathElem &a, const PathElem &b) {
 
 PathElem reversedElem(const PathElem &e) { return {e.arc, e.end, e.start, e.center, -e.dir}; }
 
-// Splits the candidates where they meet and keeps the pieces with `inside` on exactly one side,
-// turned so that it lies on their left; a piece kept twice (two candidates along one another) once.
-std::vector<PathElem> keptPieces(std::vector<Candidate> &cs, const std::function<bool(Point2)> &inside) {
+// Splits the candidates where they meet and keeps the pieces `side` says bound the region (+1 as
+// they run, -1 turned round, 0 not), given a point of the piece and the unit normal to its left;
+// a piece kept twice (two candidates along one another) once, both when kept both ways round (the
+// region is no wider than a line there).
+std::vector<PathElem> keptPieces(std::vector<Candidate> &cs, const std::function<int(Point2, Point2)> &side) {
   for (size_t i = 0; i < cs.size(); ++i)
     for (size_t k = i + 1; k < cs.size(); ++k) {
       Point2 meet[2];
@@ -152,14 +154,24 @@ std::vector<PathElem> keptPieces(std::vector<Candidate> &cs, const std::function
       // Tested off the middle: a probe on an edge the region has on both sides (two pockets side
       // by side) would be in neither; such edges meet the pieces at round fractions if at all.
       const Point2 mid = pointAt(c.e, at[k].first + 0.4637 * (at[k + 1].first - at[k].first));
-      const Point2 n = kProbe * leftOf(tangentAt(c.e, mid));
-      const bool left = inside(mid + n), right = inside(mid - n);
-      if (left == right) continue;
-      const PathElem piece = left ? p : reversedElem(p);
+      const int way = side(mid, leftOf(tangentAt(c.e, mid)));
+      if (way == 0) continue;
+      const PathElem piece = way > 0 ? p : reversedElem(p);
       if (std::none_of(kept.begin(), kept.end(), [&](const PathElem &q) { return sameElem(q, piece); })) kept.push_back(piece);
     }
   }
-  return kept;
+  std::vector<PathElem> once;
+  for (const PathElem &e : kept)
+    if (std::none_of(kept.begin(), kept.end(), [&](const PathElem &q) { return sameElem(q, reversedElem(e)); })) once.push_back(e);
+  return once;
+}
+
+// The region lies on exactly one side of the piece through p (tested kProbe to each side).
+std::function<int(Point2, Point2)> probeSides(const std::function<bool(Point2)> &inside) {
+  return [inside](Point2 p, Point2 n) {
+    const bool left = inside(p + kProbe * n), right = inside(p - kProbe * n);
+    return left == right ? 0 : left ? 1 : -1;
+  };
 }
 
 // Whether b goes on along a's line or circle (pieces of one element, or a contour element the
@@ -257,7 +269,7 @@ bool regionBoundary(const ArcRegion &region, std::vector<ArcLoop> &out, std::str
     for (const ArcLoop &l : *loops)
       for (const PathElem &e : l)
         if (lengthOf(e) > kSplit) cs.push_back({e, lengthOf(e), {}});
-  return linkLoops(keptPieces(cs, [&](Point2 p) { return region.contains(p); }), out, err);
+  return linkLoops(keptPieces(cs, probeSides([&](Point2 p) { return region.contains(p); })), out, err);
 }
 
 double distanceTo(const std::vector<ArcLoop> &loops, Point2 p) {
@@ -285,7 +297,11 @@ bool toolCentreBoundary(const ToolCentreRegion &centres, std::vector<ArcLoop> &o
       const double turn = turnAngle(endTangent(e), startTangent(next));
       if (turn < -1e-9 || std::fabs(turn) > kTwoPi / 2 - 1e-9) add({true, offsetEnd(e, 1, d), offsetStart(next, 1, d), e.end, -1});
     }
-  return linkLoops(keptPieces(cs, [&](Point2 p) { return centres.contains(p); }), out, err);
+  // Every candidate point is d from the element it comes from, with the tool-centre region on its
+  // left: a piece stays where no other part of the boundary is nearer (to within kTouch; a test
+  // to each side would misjudge offsets that meet at a very small angle) and it is in the region.
+  auto side = [&](Point2 p, Point2) { return centres.region.contains(p) && distanceTo(centres.boundary, p) >= d - kTouch ? 1 : 0; };
+  return linkLoops(keptPieces(cs, side), out, err);
 }
 
 }  // namespace ncc

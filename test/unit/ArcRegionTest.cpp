@@ -136,5 +136,28 @@ void randomContours(bool grid) {
   EXPECT_GT(checked, 1000);
 }
 
+TEST(ArcRegion, ManyShortLines) {
+  // A wavy pocket of 400 short lines (a CAM polyline) round a round island: neighbouring offsets
+  // meet at very small angles, where a test a hair to each side of a piece cannot tell.
+  ArcRegion r;
+  ArcLoop l;
+  const int n = 400;
+  for (int i = 0; i < n; ++i) {
+    const double a0 = 2 * M_PI * i / n, a1 = 2 * M_PI * (i + 1) / n, r0 = 40 + 3 * std::sin(7 * a0), r1 = 40 + 3 * std::sin(7 * a1);
+    l.push_back(line(r0 * std::cos(a0), r0 * std::sin(a0), r1 * std::cos(a1), r1 * std::sin(a1)));
+  }
+  l.back().end = l.front().start;
+  r.pockets = {l};
+  r.islands = {circle(0, 0, 5, -1)};
+  std::vector<ArcLoop> b, w;
+  std::string err;
+  ASSERT_TRUE(regionBoundary(r, b, err)) << err;
+  ASSERT_TRUE(toolCentreBoundary({r, b, 4}, w, err)) << err;
+  ASSERT_EQ(w.size(), 2u);
+  for (const ArcLoop &loop : w)
+    for (const PathElem &e : loop)
+      for (Point2 p : along(e, 4)) ASSERT_NEAR(distanceTo(b, p), 4, 1e-7);
+}
+
 TEST(ArcRegion, RandomContoursWallsExact) { randomContours(false); }
 TEST(ArcRegion, GridContoursWallsExact) { randomContours(true); }
