@@ -149,6 +149,7 @@ bool subContour(RegionLoop loop, int side, double tol, SubContour &out, std::str
   const bool ccw = ClipperLib::Area(toPath(contourPolygon({loop.start, loop.segs}, tol))) > 0;
   out.pocket = (side == 1) == ccw;  // the tool inside: left of a counter-clockwise path
   out.start = loop.start;
+  out.loop = loop;
   return loopPolygon(loop, !out.pocket, tol, out.poly, err);
 }
 

@@ -34,6 +34,7 @@ struct SubContour {
   Polygon poly;
   bool pocket = true;
   PlanePoint start{};
+  RegionLoop loop;  // the closed path itself, exact (cycle 24's walls are offset from it)
 };
 // The sub-contour of a captured loop run with RL (`side` 1) or RR (2): a pocket when the tool is
 // inside (RL and counter-clockwise, RR and clockwise: the manual's "traversed inside"), else an

@@ -1,6 +1,6 @@
 #include "runtime/cycles/SlFinish.h"
 
-#include "runtime/cycles/ClipperPaths.h"
+#include "runtime/cycles/ArcRegion.h"
 #include "runtime/cycles/Mill.h"
 #include "runtime/cycles/Pocket.h"
 
@@ -12,8 +12,6 @@ namespace ncc {
 
 namespace {
 constexpr double kTwoPi = 6.283185307179586;
-// The finishing rings are sampled finer than the roughing's: the walls are what the part keeps.
-constexpr double kFinishChord = 0.00001;
 
 PlanePoint pp(Point2 p) { return {p.x, p.y}; }
 Point2 add(Point2 a, Point2 d, double k) { return {a.x + k * d.x, a.y + k * d.y}; }
@@ -137,35 +135,97 @@ bool contourTrain(const std::vector<PathElem> &elems, const TrainJob &j, std::ve
 }
 
 namespace {
-// Whether the tool centre may stand at p: inside the outer ring and outside the islands' rings.
-bool allowed(const RingPiece &piece, PlanePoint p) {
-  const ClipperLib::IntPoint q = toClipper(p);
-  if (ClipperLib::PointInPolygon(q, toPath(piece.outer)) == 0) return false;
-  for (const Polygon &h : piece.holes)
-    if (ClipperLib::PointInPolygon(q, toPath(h)) == 1) return false;
-  return true;
+Point2 xy(PlanePoint p) { return {p[0], p[1]}; }
+
+// A captured sub-contour as exact elements (its zero-length lines dropped).
+ArcLoop arcLoop(const RegionLoop &l) {
+  ArcLoop out;
+  Point2 from = xy(l.start);
+  for (const PathSeg &s : l.segs) {
+    const Point2 to = xy(s.end);
+    if (s.arc) out.push_back({true, from, to, xy(s.centre), s.ccw ? 1 : -1});
+    else if (dist(from, to) > 1e-9) out.push_back(line(from, to));
+    from = to;
+  }
+  return out;
+}
+
+// The SL contour's region from its sub-contours, by the rule slArea applies to their polygons.
+ArcRegion arcRegion(const std::vector<SubContour> &subs) {
+  ArcRegion r;
+  const SubContour *first = nullptr;
+  for (const SubContour &s : subs) {
+    (s.pocket ? r.pockets : r.islands).push_back(arcLoop(s.loop));
+    if (s.pocket && !first) first = &s;
+  }
+  for (size_t k = 1; k < r.pockets.size(); ++k) r.intersect = r.intersect || insideLoop(r.pockets[k], xy(first->start));
+  return r;
 }
 
 // The approach radius that fits: the tool radius, halved until the half circle through the start
 // and its diameter lie where the tool centre may be (0: none fits, a vertical plunge).
-double approachRadius(const RingPiece &piece, Point2 s, Point2 d, Point2 n, double r) {
+double approachRadius(const ToolCentreRegion &centres, Point2 s, Point2 d, Point2 n, double r) {
   for (int tries = 0; tries < 7; ++tries, r /= 2) {
     const Point2 c = add(s, n, r);
     bool fits = true;
     for (int k = 1; k < 24 && fits; ++k) {  // the half circle from C - r d through S to C + r d, and C - r d … C + r d
       const double a = kTwoPi / 2 * k / 24;
       const Point2 onArc = add(add(c, d, -r * std::cos(a)), n, -r * std::sin(a));
-      fits = allowed(piece, pp(onArc)) && allowed(piece, pp(add(c, d, r * (2.0 * k / 24 - 1))));
+      fits = centres.contains(onArc) && centres.contains(add(c, d, r * (2.0 * k / 24 - 1)));
     }
-    if (fits && allowed(piece, pp(add(c, d, -r))) && allowed(piece, pp(add(c, d, r)))) return r;
+    if (fits && centres.contains(add(c, d, -r)) && centres.contains(add(c, d, r))) return r;
   }
   return 0;
 }
 
-struct Wall {
-  Polygon ring;  // in the direction of travel
-  const RingPiece *piece;
-};
+double elemLength(const PathElem &e) { return e.arc ? dist(e.start, e.center) * sweep(e) : dist(e.start, e.end); }
+
+// The middle of an element, and the element split there.
+Point2 middle(const PathElem &e) {
+  if (!e.arc) return {(e.start.x + e.end.x) / 2, (e.start.y + e.end.y) / 2};
+  const double a = std::atan2(e.start.y - e.center.y, e.start.x - e.center.x) + e.dir * sweep(e) / 2;
+  const double r = dist(e.start, e.center);
+  return {e.center.x + r * std::cos(a), e.center.y + r * std::sin(a)};
+}
+
+// A wall's start: the middle of its longest straight element (a clean tangent; none: of its
+// longest arc), of equal ones the nearest `here`; the distance to it and the element's index.
+std::pair<double, size_t> wallStart(const ArcLoop &ring, PlanePoint here) {
+  auto straight = [](const PathElem &e) { return !e.arc; };
+  const bool lines = std::any_of(ring.begin(), ring.end(), straight);
+  double longest = 0;
+  for (const PathElem &e : ring)
+    if (!lines || !e.arc) longest = std::max(longest, elemLength(e));
+  std::pair<double, size_t> best{1e300, 0};
+  for (size_t i = 0; i < ring.size(); ++i) {
+    if ((lines && ring[i].arc) || elemLength(ring[i]) < longest - 1e-6) continue;
+    const Point2 m = middle(ring[i]);
+    const double d = std::hypot(m.x - here[0], m.y - here[1]);
+    if (d < best.first - 1e-9) best = {d, i};
+  }
+  return best;
+}
+
+// The ring from the middle of element k round to it again; arcs over a half turn cut in two at
+// their middle, so that no arc move ends near its start (where a full circle and a sliver of
+// one are told apart by rounding).
+ArcLoop fromMiddle(const ArcLoop &ring, size_t k) {
+  const PathElem &e = ring[k];
+  const Point2 m = middle(e);
+  ArcLoop turned{{e.arc, m, e.end, e.center, e.dir}}, out;
+  for (size_t i = 1; i < ring.size(); ++i) turned.push_back(ring[(k + i) % ring.size()]);
+  turned.push_back({e.arc, e.start, m, e.center, e.dir});
+  for (const PathElem &t : turned) {
+    if (t.arc && sweep(t) > kTwoPi / 2) {
+      const Point2 h = middle(t);
+      out.push_back({true, t.start, h, t.center, t.dir});
+      out.push_back({true, h, t.end, t.center, t.dir});
+    } else {
+      out.push_back(t);
+    }
+  }
+  return out;
+}
 }  // namespace
 
 bool sideFinish(const PocketRegion &region, const SideFinishJob &j, std::vector<CycleStep> &out, std::string &err) {
@@ -173,55 +233,41 @@ bool sideFinish(const PocketRegion &region, const SideFinishJob &j, std::vector<
   if (j.infeed < 0) return err = "the infeed must not be negative", false;
   if (j.clearance < 0) return err = "the set-up clearance must not be negative", false;
   if (j.height < j.surface + j.clearance) return err = "the clearance height lies below the set-up clearance", false;
-  ClearingSpec s;
-  if (!region.subs.empty() && !slArea(region.subs, s.area, err)) return false;
-  s.contour = region.outline, s.islands = region.islands;
-  s.toolRadius = j.toolRadius, s.stepover = 2 * j.toolRadius, s.allowance = j.finishAllowance;
-  s.chordTolerance = kFinishChord, s.margin = kChordSagFactor * kFinishChord;
-  std::vector<RingPiece> pieces;
-  std::vector<Polygon> walls;
-  if (!clearingPieces(s, pieces, walls, err)) return false;
-  std::vector<Wall> todo;
-  for (const RingPiece &p : pieces) {  // rings come counter-clockwise: climb runs the islands' clockwise
-    if (p.parent >= 0) continue;
-    todo.push_back({p.outer, &p});
-    if (!j.ccw) std::reverse(todo.back().ring.begin(), todo.back().ring.end());
-    for (const Polygon &h : p.holes) {
-      todo.push_back({h, &p});
-      if (j.ccw) std::reverse(todo.back().ring.begin(), todo.back().ring.end());
-    }
-  }
+  if (region.subs.empty()) return err = "side finishing needs an SL contour", false;
+  // The polygons' boolean only checks the contour as cycles 21-23 do (the same messages); the walls
+  // come from the exact elements.
+  std::vector<Polygon> area;
+  if (!slArea(region.subs, area, err)) return false;
+  const ArcRegion exact = arcRegion(region.subs);
+  std::vector<ArcLoop> boundary, walls;
+  if (!regionBoundary(exact, boundary, err)) return false;
+  const ToolCentreRegion centres{exact, boundary, j.toolRadius + j.finishAllowance};
+  if (!toolCentreBoundary(centres, walls, err)) return false;
+  if (walls.empty())
+    return err = fmt::format("the tool (its radius plus Q14: {:g}) does not fit into the contour", centres.d), false;
+  // The walls have the region on their left: counter-clockwise outer walls and clockwise islands'
+  // are climb milling with M3; up-cut runs them the other way round.
+  if (!j.ccw)
+    for (ArcLoop &w : walls) w = reversedPath(w);
   auto level = [&](double t) { return j.surface - t; };
   const std::vector<double> levels = entry::infeeds(j.infeed, j.depth);
   Mill mill(out, j.plane, {0, 0}, 0, -1, j.at);
-  std::vector<bool> done(todo.size());
-  for (size_t left = todo.size(); left > 0; --left) {
-    // The ring's start: the middle of its longest edge (a clean tangent; of equal ones the
-    // nearest), the ring whose start is nearest the tool next.
-    size_t best = 0, bestEdge = 0;
+  std::vector<bool> done(walls.size());
+  for (size_t left = walls.size(); left > 0; --left) {
+    // The wall whose start is nearest the tool next.
+    size_t best = 0, bestElem = 0;
     double bestD = 1e300;
-    auto edge = [](const Polygon &r, size_t i) { return std::hypot(r[(i + 1) % r.size()][0] - r[i][0], r[(i + 1) % r.size()][1] - r[i][1]); };
-    for (size_t w = 0; w < todo.size(); ++w) {
+    for (size_t w = 0; w < walls.size(); ++w) {
       if (done[w]) continue;
-      const Polygon &r = todo[w].ring;
-      double longest = 0;
-      for (size_t i = 0; i < r.size(); ++i) longest = std::max(longest, edge(r, i));
-      for (size_t i = 0; i < r.size(); ++i) {
-        if (edge(r, i) < longest - 1e-6) continue;
-        const PlanePoint a = r[i], b = r[(i + 1) % r.size()];
-        const double dd = std::hypot((a[0] + b[0]) / 2 - mill.here()[0], (a[1] + b[1]) / 2 - mill.here()[1]);
-        if (dd < bestD - 1e-9) bestD = dd, best = w, bestEdge = i;
-      }
+      const auto [d, i] = wallStart(walls[w], mill.here());
+      if (d < bestD - 1e-9) bestD = d, best = w, bestElem = i;
     }
     done[best] = true;
-    const Polygon &ring = todo[best].ring;
-    const size_t n = ring.size();
-    const PlanePoint a = ring[bestEdge], b = ring[(bestEdge + 1) % n];
-    const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
-    const Point2 S{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}, d{(b[0] - a[0]) / len, (b[1] - a[1]) / len};
+    const ArcLoop ring = fromMiddle(walls[best], bestElem);
+    const Point2 S = ring.front().start, d = startTangent(ring.front());
     // The free side (the region's inside) lies left of a climb ring, right of an up-cut one.
     const Point2 nrm = j.ccw ? Point2{-d.y, d.x} : Point2{d.y, -d.x};
-    const double rho = approachRadius(*todo[best].piece, S, d, nrm, j.toolRadius);
+    const double rho = approachRadius(centres, S, d, nrm, j.toolRadius);
     const Point2 C = add(S, nrm, rho), P0 = add(C, d, -rho), P1 = add(C, d, rho);
     mill.go(pp(P0), j.height);
     mill.rapid(pp(P0), level(-j.clearance));
@@ -232,8 +278,7 @@ bool sideFinish(const PocketRegion &region, const SideFinishJob &j, std::vector<
       if (mill.here() != pp(P0)) mill.feed(pp(P0), mill.level(), j.feed);
       mill.feed(pp(P0), level(t) + h, j.plungeFeed);
       if (rho > 0) mill.arc(pp(S), pp(C), j.ccw, level(t), j.feed);
-      for (size_t k = 1; k <= n; ++k) mill.feed(ring[(bestEdge + k) % n], level(t), j.feed);
-      mill.feed(pp(S), level(t), j.feed);
+      runPath(mill, ring, level(t), j.feed);
       if (rho > 0) mill.arc(pp(P1), pp(C), j.ccw, level(t) + h, j.feed);
       cut = t;
     }

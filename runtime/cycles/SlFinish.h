@@ -1,6 +1,6 @@
 // Heidenhain SL side finishing (cycle 24) and contour train (cycle 25): the walls of a region
 // (Region.h) finished once round each, and an open contour milled on its RL/RR side, level by
-// level (docs/CYCLES.md "Heidenhain side finishing and contour train"). Plane coordinates as
+// level (docs/CYCLES.md "Heidenhain side finishing (cycle 24)", docs/HEIDENHAIN.md). Plane coordinates as
 // Region.h's; levels on the tool axis in the coordinates of `at`.
 #pragma once
 #include "runtime/CutterComp.h"
@@ -9,8 +9,9 @@
 namespace ncc {
 
 // Cycle 24 (L9671-L9840): each wall of the region (the outer walls and the islands' walls of
-// every separate area) on the tool-centre ring `toolRadius + finishAllowance` off it, all its
-// levels before the next; onto the ring and off it on tangential quarter helices.
+// every separate area) on the tool-centre ring `toolRadius + finishAllowance` off it, exact lines
+// and arcs from the sub-contours' own elements (ArcRegion.h), all its levels before the next;
+// onto the ring and off it on tangential quarter helices.
 struct SideFinishJob {
   int plane = 0;
   std::array<double, 3> at{};

@@ -1,0 +1,45 @@
+; SL cycles 14, 20 and 24 on a pocket with a round end (LBL 1: clockwise with RR, a pocket:
+; 0..40 in X, from Y0 up to Y40 and a half circle of radius 20 about X20 Y40 over the top) with a
+; round island (LBL 2: a full circle of radius 5 about X20 Y20, clockwise with RL, an island).
+; Tool 3 (radius 3) finishes the walls; the rough-out tool is tool 1 (radius 8.02). Used by
+; sl-side-arcs.test.
+0 BEGIN PGM SLARCS MM
+1 BLK FORM 0.1 Z X+0 Y+0 Z-40
+2 BLK FORM 0.2 X+100 Y+100 Z+0
+3 TOOL CALL 3 Z S4000
+4 L X-20 Y-20 Z+250 R0 FMAX
+5 CYCL DEF 14.0 KONTUR
+6 CYCL DEF 14.1 METKA KONTURA 1/2
+7 CYCL DEF 20 DANNYJE KONTURA
+  Q1=-10 ;GLUBINA FREZEROWANIA
+  Q2=1 ;PEREKRITIE TRAEKTOR.
+  Q3=+0.5 ;PRIPUSK NA STORONU
+  Q4=+0 ;PRIPUSK NA GLUBINU
+  Q5=+0 ;KOORD. POVERHNOSTI
+  Q6=2 ;BEZOPASN.RASSTOYANIE
+  Q7=+100 ;B.WYSOTA?
+  Q8=0 ;ROUNDING RADIUS
+  Q9=+1 ;ROTATIONAL DIRECTION
+8 CYCL DEF 24 CHIST.OBRAB.STOR.
+  Q9=+1 ;SIDE FINISHING DIRECTION
+  Q10=5 ;GLUBINA WREZANJA
+  Q11=80 ;PODACHA NA WREZANJE
+  Q12=400 ;FEED RATE F. ROUGHNG
+  Q14=+0 ;PRIPUSK NA STORONU
+  Q438=1 ;ROUGH-OUT TOOL
+9 CYCL CALL M3
+10 L Z+250 R0 FMAX M2
+11 LBL 1
+12 L X+0 Y+0 RR
+13 L Y+40
+14 CC X+20 Y+40
+15 C X+40 Y+40 DR-
+16 L Y+0
+17 L X+0
+18 LBL 0
+19 LBL 2
+20 CC X+20 Y+20
+21 L X+25 Y+20 RL
+22 C X+25 Y+20 DR-
+23 LBL 0
+24 END PGM SLARCS MM
