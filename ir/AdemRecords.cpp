@@ -68,6 +68,8 @@ const Homoglyph kHomoglyphs[] = {{0x0410, 'A'}, {0x0412, 'B'}, {0x0415, 'E'}, {0
                                  {0x041E, 'O'}, {0x0420, 'P'}, {0x0421, 'C'}, {0x0422, 'T'}, {0x0425, 'X'}};
 }  // namespace
 
+bool ademIsUtf8(std::string_view bytes) { return validUtf8(bytes); }
+
 std::string ademToUtf8(std::string_view bytes) {
   if (validUtf8(bytes)) return std::string(bytes);
   std::string o;
@@ -164,7 +166,7 @@ bool listingNumber(std::string_view tok, double &v) {
 
 class AdemReader::Listing {
 public:
-  Listing(std::string_view t, uint32_t file) : t_(t), file_(file), utf8_(validUtf8(t)) {}
+  Listing(std::string_view t, uint32_t file, int utf8 = -1) : t_(t), file_(file), utf8_(utf8 < 0 ? validUtf8(t) : utf8 != 0) {}
   bool next(AdemRecord &r, std::vector<AdemError> &errs) {
     errs_ = &errs;
     for (;;) {
@@ -530,9 +532,9 @@ private:
   const LayoutInfo *info_ = nullptr;
 };
 
-AdemReader::AdemReader(std::string_view bytes, uint32_t file) : binary_(looksLikeAdemBinary(bytes)) {
+AdemReader::AdemReader(std::string_view bytes, uint32_t file, int utf8) : binary_(looksLikeAdemBinary(bytes)) {
   if (binary_) bin_ = std::make_unique<Binary>(bytes, file);
-  else listing_ = std::make_unique<Listing>(bytes, file);
+  else listing_ = std::make_unique<Listing>(bytes, file, utf8);
 }
 AdemReader::~AdemReader() = default;
 bool AdemReader::next(AdemRecord &r, std::vector<AdemError> &errors) {

@@ -87,6 +87,9 @@ bool ademFieldIsText(const AdemLayout *l, int index);
 std::string ademNormalise(std::string_view utf8);
 // The text of a listing or of binary text fields as UTF-8: valid UTF-8 as it is, else CP866.
 std::string ademToUtf8(std::string_view bytes);
+// Whether bytes are valid UTF-8 (a listing that is not is read as CP866). Pieces cut before a
+// byte that is not a continuation byte (10xxxxxx) are all valid exactly when the whole is.
+bool ademIsUtf8(std::string_view bytes);
 
 struct AdemError {
   SourceLoc loc;
@@ -102,7 +105,9 @@ bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors);
 // to (the bytes before it are not looked at again).
 class AdemReader {
 public:
-  AdemReader(std::string_view bytes, uint32_t file);
+  // `utf8`: whether the listing is valid UTF-8 (ademIsUtf8), when the caller found out (a
+  // streamed reader does, releasing the pages it has read); -1: the reader looks.
+  AdemReader(std::string_view bytes, uint32_t file, int utf8 = -1);
   ~AdemReader();
   AdemReader(const AdemReader &) = delete;
   AdemReader &operator=(const AdemReader &) = delete;

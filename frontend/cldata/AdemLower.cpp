@@ -357,7 +357,7 @@ bool AdemLowerer::lower(const AdemRecord &r) {
 class AdemStream : public BlockStream {
 public:
   AdemStream(SourceManager &sm, uint32_t file, Diagnostics &d)
-      : sm_(sm), file_(file), diags_(d), reader_(sm.text(file), file), lw_(d, scratch_) {}
+      : sm_(sm), file_(file), diags_(d), reader_(sm.text(file), file, utf8(sm, file)), lw_(d, scratch_) {}
   bool next(ir::Region &out, size_t maxBlocks, CmdSink *) override {
     lw_.setBody(out);
     if (!started_) lw_.start(reader_.binary() ? SourceLoc{} : SourceLoc{file_, 1, 1}), started_ = true;
@@ -372,6 +372,23 @@ public:
   }
 
 private:
+  // Whether a listing is UTF-8 (else CP866) needs the whole file: looked at a megabyte at a time
+  // (cut before a byte that starts a character), each piece's pages released after it.
+  static int utf8(SourceManager &sm, uint32_t file) {
+    std::string_view t = sm.text(file);
+    if (looksLikeAdemBinary(t)) return -1;
+    constexpr size_t kPiece = 1 << 20;
+    bool ok = true;
+    for (size_t b = 0; ok && b < t.size();) {
+      size_t e = std::min(t.size(), b + kPiece);
+      while (e < t.size() && ((unsigned char)t[e] & 0xC0) == 0x80) ++e;
+      ok = ademIsUtf8(t.substr(b, e - b));
+      sm.released(file, e);
+      b = e;
+    }
+    return ok;
+  }
+
   void chunk(size_t maxBlocks) {
     size_t n = 0;
     errs_.clear();
