@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 
 namespace ncc::cld {
 
@@ -270,19 +271,21 @@ private:
     // Trailing blanks are ASCII in either encoding: trimmed before the text is converted.
     while (!raw.empty() && (raw.back() == ' ' || raw.back() == '\t' || raw.back() == '\r')) raw.remove_suffix(1);
     if (!raw.empty()) {
-      // A listing repeats a few names: what the last one gave, for the same name and code.
-      if (!named_ || raw != lastName_ || coded != lastCoded_ || (coded && r.code != lastCode_)) {
+      // A listing repeats a few names, each with its code: what a name gave is remembered per
+      // code (a slot by the code's low bits), so that LINE ARC LINE ARC look up no name twice.
+      Named &n = named_[(unsigned)r.code % std::size(named_)];
+      if (!n.valid || raw != n.name || coded != n.coded || r.code != n.code) {
         std::string name = text(raw);
-        lastByName_ = ademCodeByName(name);
-        lastOther_ = coded && lastByName_ && lastByName_ != r.code && !ademNameOf(r.code, name);
-        lastName_.assign(raw);
-        lastCoded_ = coded, lastCode_ = r.code, named_ = true;
+        n.byName = ademCodeByName(name);
+        n.other = coded && n.byName && n.byName != r.code && !ademNameOf(r.code, name);
+        n.name.assign(raw);
+        n.coded = coded, n.code = r.code, n.valid = true;
       }
       if (!coded) {
-        if (!lastByName_) return fail(nl, fmt::format("'{}' is not the name of a record ncc knows; write its code as [code]", text(raw)));
-        r.code = lastByName_;
-      } else if (lastOther_) {
-        errs_->push_back({nl, fmt::format("'{}' names record [{}], not [{}]: the code counts", text(raw), lastByName_, r.code), true});
+        if (!n.byName) return fail(nl, fmt::format("'{}' is not the name of a record ncc knows; write its code as [code]", text(raw)));
+        r.code = n.byName;
+      } else if (n.other) {
+        errs_->push_back({nl, fmt::format("'{}' names record [{}], not [{}]: the code counts", text(raw), n.byName, r.code), true});
       }
     } else if (!coded) {
       return fail(r.loc, "a record starts with [code] or a record name");
@@ -402,10 +405,13 @@ private:
   uint32_t line_ = 1;
   std::string text_;  // a quoted value's bytes
   const LayoutInfo *info_ = nullptr;  // the last record's code
-  // The last record name and what it gave (ademCodeByName, and whether it names another code).
-  std::string lastName_;
-  bool named_ = false, lastCoded_ = false, lastOther_ = false;
-  int lastCode_ = 0, lastByName_ = 0;
+  // A record name and what it gave: ademCodeByName, and whether it names another code.
+  struct Named {
+    std::string name;
+    bool valid = false, coded = false, other = false;
+    int code = 0, byName = 0;
+  };
+  Named named_[16];
 };
 
 bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors) {
