@@ -174,6 +174,7 @@ std::unique_ptr<BlockStream> openBlockStream(SourceKind kind, SourceManager &sm,
   // A code that calls a program needs the whole program (the callee, its nesting rule).
   if (kind == SourceKind::ISO && opts.macroCalls.empty() && iso::isoIsStreamable(sm.text(file), &sm, file))
     return std::make_unique<IsoStream>(sm, file, isoOptions(opts), diags);
+  if (kind == SourceKind::Adem) return cld::openAdemStream(sm, file, diags);  // CLData has no control flow
   return nullptr;
 }
 

@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 
 namespace ncc::cld {
 
@@ -66,6 +69,8 @@ const Homoglyph kHomoglyphs[] = {{0x0410, 'A'}, {0x0412, 'B'}, {0x0415, 'E'}, {0
                                  {0x041E, 'O'}, {0x0420, 'P'}, {0x0421, 'C'}, {0x0422, 'T'}, {0x0425, 'X'}};
 }  // namespace
 
+bool ademIsUtf8(std::string_view bytes) { return validUtf8(bytes); }
+
 std::string ademToUtf8(std::string_view bytes) {
   if (validUtf8(bytes)) return std::string(bytes);
   std::string o;
@@ -122,27 +127,63 @@ std::vector<int> positional(const AdemLayout *l) {
 }
 bool freeWords(const AdemLayout *l) { return l && std::strcmp(l->fields, "*") == 0; }
 
+// What the readers need of a code's layout, worked out once per code instead of per record:
+// the positional FR indices, which fields are texts, whether values are free words.
+struct LayoutInfo {
+  int code = 0;
+  const AdemLayout *lay = nullptr;  // null: a code the table does not have
+  std::vector<int> order;
+  std::vector<int> texts;  // the text fields' indices (a few)
+  bool free = false;
+  bool isText(int i) const { return std::find(texts.begin(), texts.end(), i) != texts.end(); }
+};
+const LayoutInfo &layoutInfo(int code);
+
+// A whole number of at most nine digits (what atoi of those digits gives).
+int digitsValue(std::string_view s) {
+  int v = 0;
+  for (char c : s) v = v * 10 + (c - '0');
+  return v;
+}
+
+// A listing value: the number it is, as strtod reads all of it. from_chars (correctly rounded,
+// as glibc's strtod) takes the common forms without a copy; strtod the rest ('+', hex, overflow).
+bool listingNumber(std::string_view tok, double &v) {
+  if (tok.empty() || !(std::isdigit((unsigned char)tok[0]) || tok[0] == '-' || tok[0] == '+' || tok[0] == '.'))
+    return false;
+  if (tok[0] != '+') {
+    auto [p, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), v);
+    if (ec == std::errc() && p == tok.data() + tok.size()) return true;
+  }
+  std::string s(tok);
+  char *end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size();
+}
+
+}  // namespace
+
 // ---- the listing ----
 
-class ListingReader {
+class AdemReader::Listing {
 public:
-  ListingReader(std::string_view t, uint32_t file, std::vector<AdemError> &e) : t_(t), file_(file), errs_(e), utf8_(validUtf8(t)) {}
-  std::vector<AdemRecord> run() {
-    std::vector<AdemRecord> out;
+  Listing(std::string_view t, uint32_t file, int utf8 = -1) : t_(t), file_(file), utf8_(utf8 < 0 ? validUtf8(t) : utf8 != 0) {}
+  bool next(AdemRecord &r, std::vector<AdemError> &errs) {
+    errs_ = &errs;
     for (;;) {
       skipBlanks(true);
-      if (i_ >= t_.size()) break;
-      AdemRecord r;
-      if (record(r)) out.push_back(std::move(r));
-      else resync();
+      if (i_ >= t_.size()) return false;
+      r.reset();
+      if (record(r)) return true;
+      resync();
     }
-    return out;
   }
+  size_t offset() const { return i_; }
 
 private:
   SourceLoc loc() const { return {file_, line_, (uint32_t)(i_ - lineStart_ + 1)}; }
   bool fail(SourceLoc l, std::string m) {
-    errs_.push_back({l, std::move(m)});
+    errs_->push_back({l, std::move(m)});
     return false;
   }
   char peek(size_t k = 0) const { return i_ + k < t_.size() ? t_[i_ + k] : '\0'; }
@@ -184,7 +225,7 @@ private:
       advance();
     }
   }
-  bool digit(char c) const { return c >= '0' && c <= '9'; }
+  static bool digit(char c) { return c >= '0' && c <= '9'; }
   // At a '[' with only an ordinal or blanks before it on its line: a record starts here.
   bool atRecordStart() const {
     if (peek() != '[') return false;
@@ -197,8 +238,13 @@ private:
     size_t b = i_;
     while (digit(peek())) advance();
     if (b == i_ || i_ - b > 9) return false;
-    v = std::atoi(std::string(t_.substr(b, i_ - b)).c_str());
+    v = digitsValue(t_.substr(b, i_ - b));
     return true;
+  }
+  // The end of a value written without quotes.
+  bool valueEnds(bool comment) const {
+    char c = t_[i_];
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ';' || (comment && c == '$' && peek(1) == '$');
   }
 
   bool record(AdemRecord &r) {
@@ -221,23 +267,33 @@ private:
     SourceLoc nl = loc();
     size_t nb = i_;
     while (i_ < t_.size() && peek() != '/' && peek() != ';' && peek() != '\n' && !(peek() == '$' && peek(1) == '$')) advance();
-    std::string name = text(t_.substr(nb, i_ - nb));
-    while (!name.empty() && (name.back() == ' ' || name.back() == '\t' || name.back() == '\r')) name.pop_back();
-    if (!name.empty()) {
-      int byName = ademCodeByName(name);
+    std::string_view raw = t_.substr(nb, i_ - nb);
+    // Trailing blanks are ASCII in either encoding: trimmed before the text is converted.
+    while (!raw.empty() && (raw.back() == ' ' || raw.back() == '\t' || raw.back() == '\r')) raw.remove_suffix(1);
+    if (!raw.empty()) {
+      // A listing repeats a few names, each with its code: what a name gave is remembered per
+      // code (a slot by the code's low bits), so that LINE ARC LINE ARC look up no name twice.
+      Named &n = named_[(unsigned)r.code % std::size(named_)];
+      if (!n.valid || raw != n.name || coded != n.coded || r.code != n.code) {
+        std::string name = text(raw);
+        n.byName = ademCodeByName(name);
+        n.other = coded && n.byName && n.byName != r.code && !ademNameOf(r.code, name);
+        n.name.assign(raw);
+        n.coded = coded, n.code = r.code, n.valid = true;
+      }
       if (!coded) {
-        if (!byName) return fail(nl, fmt::format("'{}' is not the name of a record ncc knows; write its code as [code]", name));
-        r.code = byName;
-      } else if (byName && byName != r.code && !ademNameOf(r.code, name)) {
-        errs_.push_back({nl, fmt::format("'{}' names record [{}], not [{}]: the code counts", name, byName, r.code), true});
+        if (!n.byName) return fail(nl, fmt::format("'{}' is not the name of a record ncc knows; write its code as [code]", text(raw)));
+        r.code = n.byName;
+      } else if (n.other) {
+        errs_->push_back({nl, fmt::format("'{}' names record [{}], not [{}]: the code counts", text(raw), n.byName, r.code), true});
       }
     } else if (!coded) {
       return fail(r.loc, "a record starts with [code] or a record name");
     }
-    const AdemLayout *lay = ademLayout(r.code);
+    if (!info_ || info_->code != r.code) info_ = &layoutInfo(r.code);
     if (peek() == '/') {
       advance();
-      if (!values(r, lay)) return false;
+      if (!values(r, *info_)) return false;
     }
     skipBlanks(false);
     if (peek() != ';') {
@@ -248,8 +304,9 @@ private:
     return true;
   }
 
-  bool values(AdemRecord &r, const AdemLayout *lay) {
-    std::vector<int> order = positional(lay);  // an unknown code: FR[3], FR[4]… in order
+  bool values(AdemRecord &r, const LayoutInfo &li) {
+    const AdemLayout *lay = li.lay;
+    const std::vector<int> &order = li.order;  // an unknown code: FR[3], FR[4]… in order
     size_t next = 0;       // the next positional field
     int nextTail = 0;
     auto nextIndex = [&]() -> int {
@@ -272,53 +329,49 @@ private:
           return fail(vl, "FR[i]=value expected, i from 3");
         i_ += 2;
       }
-      AdemField f;
-      f.loc = loc();
-      std::string tok;  // a value as written
+      SourceLoc fl = loc();
+      bool isText = false;
+      double num = 0;
+      std::string_view tok;  // a value as written
       if (peek() == '\'') {
         advance();
-        std::string s;
+        text_.clear();
         for (;;) {
-          if (i_ >= t_.size() || peek() == '\n') return fail(f.loc, "the text does not end with ' on its line");
+          if (i_ >= t_.size() || peek() == '\n') return fail(fl, "the text does not end with ' on its line");
           if (peek() == '\'') {
             advance();
             if (peek() != '\'') break;  // '' is one quote
           }
-          s += t_[i_];
+          text_ += t_[i_];
           advance();
         }
-        f.isText = true;
-        f.text = text(s);
+        isText = true;
       } else {
         size_t b = i_;
-        while (i_ < t_.size() && peek() != ' ' && peek() != '\t' && peek() != '\r' && peek() != '\n' && peek() != ';' &&
-               !(peek() == '$' && peek(1) == '$'))
-          advance();
-        tok = std::string(t_.substr(b, i_ - b));
-        char *end = nullptr;
-        double v = std::strtod(tok.c_str(), &end);
-        bool isNum = !tok.empty() && end == tok.c_str() + tok.size() && (digit(tok[0]) || tok[0] == '-' || tok[0] == '+' || tok[0] == '.');
-        if (isNum) {
-          if (!std::isfinite(v)) return fail(f.loc, fmt::format("'{}' is too large", tok));
-          f.num = v;
+        while (i_ < t_.size() && !valueEnds(true)) advance();
+        tok = t_.substr(b, i_ - b);
+        if (listingNumber(tok, num)) {
+          if (!std::isfinite(num)) return fail(fl, fmt::format("'{}' is too large", tok));
         } else if (explicitIndex < 0) {
-          if (freeWords(lay)) continue;  // a step's words: the code says which step it is
-          if (!word(r, text(tok), f.loc)) return false;
+          if (li.free) continue;  // a step's words: the code says which step it is
+          if (!word(r, text(tok), fl)) return false;
           continue;
         } else {
-          return fail(f.loc, fmt::format("a number or a 'text' expected, not '{}'", text(tok)));
+          return fail(fl, fmt::format("a number or a 'text' expected, not '{}'", text(tok)));
         }
       }
       int idx = explicitIndex >= 0 ? explicitIndex : nextIndex();
-      if (idx < 0) return fail(f.loc, fmt::format("record [{}] takes {} value{}", r.code, order.size(), order.size() == 1 ? "" : "s"));
+      if (idx < 0) return fail(fl, fmt::format("record [{}] takes {} value{}", r.code, order.size(), order.size() == 1 ? "" : "s"));
       if (idx > 300000) return fail(vl, "FR index too large");
-      bool wantText = ademFieldIsText(lay, idx);
-      if (f.isText && !wantText) return fail(f.loc, fmt::format("FR[{}] of record [{}] is a number, not a text", idx, r.code));
-      if (!f.isText && wantText) {  // a name written as a number: its text as written
-        f.isText = true;
-        f.text = text(tok);
-      }
-      r.fr[idx] = std::move(f);
+      bool wantText = li.isText(idx);
+      if (isText && !wantText) return fail(fl, fmt::format("FR[{}] of record [{}] is a number, not a text", idx, r.code));
+      AdemField &f = r.fr[idx];
+      f.loc = fl;
+      f.isText = isText || wantText;
+      f.num = isText ? 0 : num;
+      if (isText) f.text = text(text_);
+      else if (wantText) f.text = text(tok);  // a name written as a number: its text as written
+      else f.text.clear();
     }
   }
 
@@ -332,7 +385,7 @@ private:
       skipBlanks(true);
       SourceLoc nl = loc();
       size_t b = i_;
-      while (i_ < t_.size() && peek() != ' ' && peek() != '\t' && peek() != '\r' && peek() != '\n' && peek() != ';') advance();
+      while (i_ < t_.size() && !valueEnds(false)) advance();
       std::string tok(t_.substr(b, i_ - b));
       char *end = nullptr;
       double v = std::strtod(tok.c_str(), &end);
@@ -345,13 +398,21 @@ private:
 
   std::string_view t_;
   uint32_t file_;
-  std::vector<AdemError> &errs_;
+  std::vector<AdemError> *errs_ = nullptr;
   bool utf8_;
   size_t i_ = 0, lineStart_ = 0;
   bool nextLine_ = false;
   uint32_t line_ = 1;
+  std::string text_;  // a quoted value's bytes
+  const LayoutInfo *info_ = nullptr;  // the last record's code
+  // A record name and what it gave: ademCodeByName, and whether it names another code.
+  struct Named {
+    std::string name;
+    bool valid = false, coded = false, other = false;
+    int code = 0, byName = 0;
+  };
+  Named named_[16];
 };
-}  // namespace
 
 bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors) {
   bool ok = true;
@@ -363,7 +424,11 @@ bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors) {
 }
 
 std::vector<AdemRecord> readAdemListing(std::string_view text, uint32_t file, std::vector<AdemError> &errors) {
-  return ListingReader(text, file, errors).run();
+  AdemReader::Listing reader(text, file);
+  std::vector<AdemRecord> out;
+  AdemRecord r;
+  while (reader.next(r, errors)) out.push_back(r);
+  return out;
 }
 
 // ---- the binary form ----
@@ -397,64 +462,97 @@ bool looksLikeAdemBinary(std::string_view bytes) {
   return bytes.substr(0, 64).find('\0') != std::string_view::npos;
 }
 
-std::vector<AdemRecord> readAdemBinary(std::string_view b, uint32_t file, std::vector<AdemError> &errors) {
-  std::vector<AdemRecord> out;
-  size_t pos = 0;
-  for (uint32_t n = 1; pos < b.size(); ++n) {
-    auto fail = [&](std::string m) { errors.push_back({{file, 0, 0}, fmt::format("record {} at byte {}: {}", n, pos, m)}); };
-    if (b.size() - pos < 3 * kCell) {
-      fail(fmt::format("the file ends {} bytes into the record, before its first three cells (FR[0] FR[1] FR[2])", b.size() - pos));
-      break;
+class AdemReader::Binary {
+public:
+  Binary(std::string_view b, uint32_t file) : b_(b), file_(file) {}
+  size_t offset() const { return pos_; }
+  // The next record read without error; a record with an error is skipped (its length is
+  // known), a broken length ends the file.
+  bool next(AdemRecord &r, std::vector<AdemError> &errors) {
+    while (!done_ && pos_ < b_.size()) {
+      bool ok = one(r, errors);
+      ++n_;
+      if (ok) return true;
     }
-    double len = cellAt(b, pos), code = cellAt(b, pos + 8), obj = cellAt(b, pos + 16);
+    return false;
+  }
+
+private:
+  bool one(AdemRecord &r, std::vector<AdemError> &errors) {
+    const size_t pos = pos_;
+    auto fail = [&](std::string m) { errors.push_back({{file_, 0, 0}, fmt::format("record {} at byte {}: {}", n_, pos, m)}); };
+    if (b_.size() - pos < 3 * kCell) {
+      fail(fmt::format("the file ends {} bytes into the record, before its first three cells (FR[0] FR[1] FR[2])", b_.size() - pos));
+      return done_ = true, false;
+    }
+    double len = cellAt(b_, pos), code = cellAt(b_, pos + 8), obj = cellAt(b_, pos + 16);
     if (!whole(len) || len < 3 || len > kMaxCells) {
       fail(fmt::format("FR[0], the record's length in cells, is {} (a whole number from 3 expected)", len));
-      break;
+      return done_ = true, false;
     }
     size_t cells = (size_t)len;
-    if (cells * kCell > b.size() - pos) {
-      fail(fmt::format("FR[0] says {} cells ({} bytes), the file has {} bytes left", cells, cells * kCell, b.size() - pos));
-      break;
+    if (cells * kCell > b_.size() - pos) {
+      fail(fmt::format("FR[0] says {} cells ({} bytes), the file has {} bytes left", cells, cells * kCell, b_.size() - pos));
+      return done_ = true, false;
     }
-    AdemRecord r;
-    r.loc = {file, 0, n};
+    pos_ += cells * kCell;
+    r.reset();
+    r.loc = {file_, 0, n_};
     r.byte = pos;
     bool ok = true;
     if (!whole(code) || code < 1 || code > 1e9) ok = false, fail(fmt::format("FR[1], the record code, is {}", code));
     if (!whole(obj) || std::fabs(obj) > 1e9) ok = false, fail(fmt::format("FR[2], the route object's ordinal, is {}", obj));
     r.code = ok ? (int)code : 0;
     r.obj = ok ? (int)obj : 0;
-    const AdemLayout *lay = ok ? ademLayout(r.code) : nullptr;
+    if (ok && (!info_ || info_->code != r.code)) info_ = &layoutInfo(r.code);
     for (size_t k = 3, fi = 3; ok && k < cells; ++fi) {
-      double v = cellAt(b, pos + k * kCell);
-      AdemField f;
-      f.loc = r.loc;
-      if (ademFieldIsText(lay, (int)fi)) {
+      double v = cellAt(b_, pos + k * kCell);
+      if (info_->isText((int)fi)) {
         // A text field: its byte count, then the bytes in as many cells as they fill.
         size_t room = (cells - k - 1) * kCell;
         if (!whole(v) || v < 0 || v > (double)room) {
           fail(fmt::format("FR[{}] of record [{}] is a text of {} bytes, the record has {} bytes left", fi, r.code, v, room));
-          ok = false;
-          break;
+          return false;
         }
         size_t len8 = (size_t)v;
-        f.isText = true;
-        f.text = ademToUtf8(b.substr(pos + (k + 1) * kCell, len8));
+        r.fr[(int)fi] = AdemField{true, 0, ademToUtf8(b_.substr(pos + (k + 1) * kCell, len8)), r.loc};
         k += 1 + (len8 + kCell - 1) / kCell;
       } else {
         if (!std::isfinite(v)) {
           fail(fmt::format("FR[{}] of record [{}] is not a finite number", fi, r.code));
-          ok = false;
-          break;
+          return false;
         }
-        f.num = v;
+        AdemField &f = r.fr[(int)fi];  // zeros too: the record has the field
+        f.num = v, f.loc = r.loc;
         ++k;
       }
-      r.fr[(int)fi] = std::move(f);  // zeros too: the record has the field
     }
-    if (ok) out.push_back(std::move(r));
-    pos += cells * kCell;
+    return ok;
   }
+
+  std::string_view b_;
+  uint32_t file_;
+  size_t pos_ = 0;
+  uint32_t n_ = 1;  // the record's ordinal
+  bool done_ = false;
+  const LayoutInfo *info_ = nullptr;
+};
+
+AdemReader::AdemReader(std::string_view bytes, uint32_t file, int utf8) : binary_(looksLikeAdemBinary(bytes)) {
+  if (binary_) bin_ = std::make_unique<Binary>(bytes, file);
+  else listing_ = std::make_unique<Listing>(bytes, file, utf8);
+}
+AdemReader::~AdemReader() = default;
+bool AdemReader::next(AdemRecord &r, std::vector<AdemError> &errors) {
+  return binary_ ? bin_->next(r, errors) : listing_->next(r, errors);
+}
+size_t AdemReader::offset() const { return binary_ ? bin_->offset() : listing_->offset(); }
+
+std::vector<AdemRecord> readAdemBinary(std::string_view b, uint32_t file, std::vector<AdemError> &errors) {
+  AdemReader::Binary reader(b, file);
+  std::vector<AdemRecord> out;
+  AdemRecord r;
+  while (reader.next(r, errors)) out.push_back(r);
   return out;
 }
 
@@ -624,12 +722,42 @@ const std::vector<std::pair<std::string, int>> &allNames() {
   }();
   return names;
 }
+
+const LayoutInfo &layoutInfo(int code) {
+  static const std::vector<LayoutInfo> infos = [] {
+    std::vector<LayoutInfo> v;
+    for (auto &l : kLayouts) {
+      LayoutInfo i;
+      i.code = l.code;
+      i.lay = &l;
+      i.order = positional(&l);
+      for (int f : i.order)
+        if (ademFieldIsText(&l, f)) i.texts.push_back(f);
+      i.free = freeWords(&l);
+      v.push_back(std::move(i));
+    }
+    std::sort(v.begin(), v.end(), [](const LayoutInfo &a, const LayoutInfo &b) { return a.code < b.code; });
+    return v;
+  }();
+  static const LayoutInfo unknown;
+  auto it = std::lower_bound(infos.begin(), infos.end(), code, [](const LayoutInfo &i, int c) { return i.code < c; });
+  if (it == infos.end() || it->code != code) return unknown;
+  return *it;
+}
 }  // namespace
 
-const AdemLayout *ademLayout(int code) {
-  for (auto &l : kLayouts)
-    if (l.code == code) return &l;
-  return nullptr;
+const AdemLayout *ademLayout(int code) { return layoutInfo(code).lay; }
+
+AdemField &AdemFields::operator[](int i) {
+  if (v_.empty() || v_.back().first < i) return v_.emplace_back(i, AdemField{}).second;
+  auto it = std::lower_bound(v_.begin(), v_.end(), i, [](const Entry &e, int k) { return e.first < k; });
+  if (it == v_.end() || it->first != i) it = v_.emplace(it, i, AdemField{});
+  return it->second;
+}
+
+const AdemField *AdemFields::find(int i) const {
+  auto it = std::lower_bound(v_.begin(), v_.end(), i, [](const Entry &e, int k) { return e.first < k; });
+  return it == v_.end() || it->first != i ? nullptr : &it->second;
 }
 
 int ademCodeByName(std::string_view utf8) {

@@ -4,9 +4,10 @@
 #pragma once
 #include "ir/Diagnostics.h"
 
-#include <map>
+#include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace ncc::cld {
@@ -18,6 +19,26 @@ struct AdemField {
   SourceLoc loc;
 };
 
+// FR[3]… by index, in index order. A flat vector: a record has a few fields, almost always given
+// in index order (appended), and a reader that reuses one record from record to record keeps
+// the vector's storage (no allocation per record: the streamed front end, docs/CLDATA.md).
+class AdemFields {
+public:
+  using Entry = std::pair<int, AdemField>;
+  // The field at index i, made (empty) at its place when there is none.
+  AdemField &operator[](int i);
+  const AdemField *find(int i) const;
+  std::vector<Entry>::const_iterator begin() const { return v_.begin(); }
+  std::vector<Entry>::const_iterator end() const { return v_.end(); }
+  std::vector<Entry>::const_reverse_iterator rbegin() const { return v_.rbegin(); }
+  bool empty() const { return v_.empty(); }
+  size_t size() const { return v_.size(); }
+  void clear() { v_.clear(); }
+
+private:
+  std::vector<Entry> v_;
+};
+
 struct AdemRecord {
   int code = 0;
   int obj = 0;  // FR[2], the route object's ordinal
@@ -25,10 +46,14 @@ struct AdemRecord {
   // to show), and `byte` is its offset.
   SourceLoc loc;
   size_t byte = 0;
-  std::map<int, AdemField> fr;  // FR[3]… by index (FR[0..2] are the members above)
-  const AdemField *field(int i) const {
-    auto it = fr.find(i);
-    return it == fr.end() ? nullptr : &it->second;
+  AdemFields fr;  // FR[3]… by index (FR[0..2] are the members above)
+  const AdemField *field(int i) const { return fr.find(i); }
+  // Back to an empty record, keeping the fields' storage.
+  void reset() {
+    code = obj = 0;
+    loc = {};
+    byte = 0;
+    fr.clear();
   }
 };
 
@@ -62,6 +87,9 @@ bool ademFieldIsText(const AdemLayout *l, int index);
 std::string ademNormalise(std::string_view utf8);
 // The text of a listing or of binary text fields as UTF-8: valid UTF-8 as it is, else CP866.
 std::string ademToUtf8(std::string_view bytes);
+// Whether bytes are valid UTF-8 (a listing that is not is read as CP866). Pieces cut before a
+// byte that is not a continuation byte (10xxxxxx) are all valid exactly when the whole is.
+bool ademIsUtf8(std::string_view bytes);
 
 struct AdemError {
   SourceLoc loc;
@@ -70,6 +98,30 @@ struct AdemError {
 };
 // Reports them; false when one was an error.
 bool reportAdemErrors(Diagnostics &d, const std::vector<AdemError> &errors);
+
+// Either form, one record at a time (the streamed front end): `next` fills `r` (reused: its
+// storage is kept) with the next record read without error and returns false at the end of the
+// input; errors and warnings go to `errors` as they are found. `offset` is where reading has got
+// to (the bytes before it are not looked at again).
+class AdemReader {
+public:
+  // `utf8`: whether the listing is valid UTF-8 (ademIsUtf8), when the caller found out (a
+  // streamed reader does, releasing the pages it has read); -1: the reader looks.
+  AdemReader(std::string_view bytes, uint32_t file, int utf8 = -1);
+  ~AdemReader();
+  AdemReader(const AdemReader &) = delete;
+  AdemReader &operator=(const AdemReader &) = delete;
+  bool binary() const { return binary_; }
+  bool next(AdemRecord &r, std::vector<AdemError> &errors);
+  size_t offset() const;
+  class Listing;  // the two forms' readers (ir/AdemRecords.cpp)
+  class Binary;
+
+private:
+  bool binary_;
+  std::unique_ptr<Listing> listing_;
+  std::unique_ptr<Binary> bin_;
+};
 
 // The text listing. Diagnostics point at the record, or at the value that is wrong.
 std::vector<AdemRecord> readAdemListing(std::string_view text, uint32_t file, std::vector<AdemError> &errors);

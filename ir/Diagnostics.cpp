@@ -91,12 +91,12 @@ std::string_view SourceManager::text(uint32_t file) const {
 std::string_view SourceManager::lineText(uint32_t file, uint32_t line) const {
   auto *f = get(file);
   if (!f || line == 0) return {};
-  if (f->lineStarts.empty()) {
-    auto &ls = const_cast<File *>(f)->lineStarts;
-    ls.push_back(0);
-    for (uint32_t i = 0; i < f->text.size(); ++i)
-      if (f->text[i] == '\n') ls.push_back(i + 1);
-  }
+  // Indexed only as far as asked (up to the start of the line after `line`): a streamed file's
+  // early diagnostic neither reads the rest of the file nor holds an index of all its lines.
+  auto &ls = const_cast<File *>(f)->lineStarts;
+  if (ls.empty()) ls.push_back(0);
+  for (uint32_t i = ls.back(); ls.size() <= line && i < f->text.size(); ++i)
+    if (f->text[i] == '\n') ls.push_back(i + 1);
   if (line > f->lineStarts.size()) return {};
   uint32_t b = f->lineStarts[line - 1];
   uint32_t e = line < f->lineStarts.size() ? f->lineStarts[line] - 1 : (uint32_t)f->text.size();

@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace ncc::cld {
 
@@ -16,9 +18,12 @@ namespace {
 
 class AdemLowerer : ClPath {
 public:
-  AdemLowerer(Diagnostics &d, ir::Function &fn, std::vector<size_t> bytes)
-      : ClPath(d, fn.body, {"feed record [23]", "[183]"}), bytes_(std::move(bytes)) {}
-  bool run(const std::vector<AdemRecord> &recs, SourceLoc start);
+  AdemLowerer(Diagnostics &d, ir::Region &body) : ClPath(d, body, {"feed record [23]", "[183]"}) {}
+  // The program's start (before the first record), then each record in turn.
+  void start(SourceLoc l) { begin(l); }
+  bool lower(const AdemRecord &r);
+  bool ended() const { return ended_; }
+  using ClPath::setBody;
 
   using Handler = bool (AdemLowerer::*)(const AdemRecord &);
   // The reader's half of a code's row; its names and fields (what both directions share) are
@@ -31,9 +36,11 @@ public:
   static const Code kCodes[];
 
 private:
+  // A binary file's record has no line: messages name it by its ordinal and byte offset.
+  // Diagnostics are made while the record is lowered, so it is the current one.
   std::string where(SourceLoc l) const override {
-    if (l.line != 0 || l.col == 0 || l.col > bytes_.size()) return {};
-    return fmt::format("record {} at byte {}: ", l.col, bytes_[l.col - 1]);
+    if (l.line != 0 || l.col == 0 || l.col != cur_->loc.col) return {};
+    return fmt::format("record {} at byte {}: ", l.col, cur_->byte);
   }
   const Code *code_ = nullptr;  // the row of the record being lowered
 
@@ -105,7 +112,7 @@ private:
   bool plane(const AdemRecord &r);
   bool transform(const AdemRecord &r);
 
-  std::vector<size_t> bytes_;  // a binary file's record offsets, by ordinal
+  const AdemRecord *cur_ = nullptr;  // the record being lowered
   bool rapid_ = false;         // [25] until [23]
   int plane901_ = 0;           // [901] FR10: 0 XY, 1 YZ, 2 ZX
   int lengthH_ = -1;           // the length offset [35] chose
@@ -200,10 +207,11 @@ const AdemLowerer::Code AdemLowerer::kCodes[] = {
 const char *const kToolKinds[] = {"", "mill", "drill", "centre drill", "counterbore", "reamer", "tap", "turning tool",
                                   "punch", "wire", "laser", "torch"};
 
+// kCodes is in code order.
 const AdemLowerer::Code *findCode(int code) {
-  for (auto &c : AdemLowerer::kCodes)
-    if (c.code == code) return &c;
-  return nullptr;
+  auto end = std::end(AdemLowerer::kCodes);
+  auto it = std::lower_bound(std::begin(AdemLowerer::kCodes), end, code, [](const AdemLowerer::Code &c, int k) { return c.code < k; });
+  return it != end && it->code == code ? it : nullptr;
 }
 
 bool AdemLowerer::feed(const AdemRecord &r) {
@@ -326,25 +334,86 @@ bool AdemLowerer::transform(const AdemRecord &r) {
   return true;
 }
 
-bool AdemLowerer::run(const std::vector<AdemRecord> &recs, SourceLoc start) {
-  bool ok = true;
-  begin(start);
-  for (auto &r : recs) {
-    if (ended_) {
-      warning(r.loc, fmt::format("record [{}] after the program's end [4] is not run", r.code), "code-after-end");
-      continue;
-    }
-    code_ = findCode(r.code);
-    if (!code_) {
-      // Motion codes are 181-191: an unknown one may move the tool, the others are skipped.
-      if (r.code >= 180 && r.code < 200) ok = error(r.loc, fmt::format("record [{}] is a motion code ncc does not know", r.code), "unknown-code");
-      else warning(r.loc, fmt::format("record [{}] is not in the manual's catalogue: skipped", r.code), "unknown-code");
-      continue;
-    }
-    if (!(this->*(code_->fn))(r)) ok = false;
+bool AdemLowerer::lower(const AdemRecord &r) {
+  cur_ = &r;
+  if (ended_) {
+    warning(r.loc, fmt::format("record [{}] after the program's end [4] is not run", r.code), "code-after-end");
+    return true;
   }
-  return ok;
+  if (!code_ || code_->code != r.code) code_ = findCode(r.code);
+  if (!code_) {
+    // Motion codes are 181-191: an unknown one may move the tool, the others are skipped.
+    if (r.code >= 180 && r.code < 200) return error(r.loc, fmt::format("record [{}] is a motion code ncc does not know", r.code), "unknown-code");
+    warning(r.loc, fmt::format("record [{}] is not in the manual's catalogue: skipped", r.code), "unknown-code");
+    return true;
+  }
+  return (this->*(code_->fn))(r);
 }
+
+// The streamed front end (docs/CLDATA.md "Streaming"): a chunk of records read (into records
+// reused from chunk to chunk), their reading errors reported, then lowered into the chunk's
+// region, which the driver runs and clears. The lowerer's state (mode, feed, position) goes on
+// from chunk to chunk, so the ops are those of the whole program, a chunk at a time.
+class AdemStream : public BlockStream {
+public:
+  AdemStream(SourceManager &sm, uint32_t file, Diagnostics &d)
+      : sm_(sm), file_(file), diags_(d), reader_(sm.text(file), file, utf8(sm, file)), lw_(d, scratch_) {}
+  bool next(ir::Region &out, size_t maxBlocks, CmdSink *) override {
+    lw_.setBody(out);
+    if (!started_) lw_.start(reader_.binary() ? SourceLoc{} : SourceLoc{file_, 1, 1}), started_ = true;
+    chunk(maxBlocks);
+    // After the end record the rest only gives warnings; after an error nothing runs, but every
+    // error is still reported, as the whole-program front end does. Both read on to the end here.
+    while (!atEnd_ && (lw_.ended() || diags_.hasErrors())) {
+      if (diags_.hasErrors()) out.clear();
+      chunk(maxBlocks);
+    }
+    return !atEnd_;
+  }
+
+private:
+  // Whether a listing is UTF-8 (else CP866) needs the whole file: looked at a megabyte at a time
+  // (cut before a byte that starts a character), each piece's pages released after it.
+  static int utf8(SourceManager &sm, uint32_t file) {
+    std::string_view t = sm.text(file);
+    if (looksLikeAdemBinary(t)) return -1;
+    constexpr size_t kPiece = 1 << 20;
+    bool ok = true;
+    for (size_t b = 0; ok && b < t.size();) {
+      size_t e = std::min(t.size(), b + kPiece);
+      while (e < t.size() && ((unsigned char)t[e] & 0xC0) == 0x80) ++e;
+      ok = ademIsUtf8(t.substr(b, e - b));
+      sm.released(file, e);
+      b = e;
+    }
+    return ok;
+  }
+
+  void chunk(size_t maxBlocks) {
+    size_t n = 0;
+    errs_.clear();
+    for (; n < maxBlocks; ++n) {
+      if (recs_.size() <= n) recs_.emplace_back();
+      if (!reader_.next(recs_[n], errs_)) {
+        atEnd_ = true;
+        break;
+      }
+    }
+    reportAdemErrors(diags_, errs_);
+    for (size_t i = 0; i < n; ++i) lw_.lower(recs_[i]);
+    sm_.released(file_, reader_.offset());
+  }
+
+  SourceManager &sm_;
+  uint32_t file_;
+  Diagnostics &diags_;
+  AdemReader reader_;
+  ir::Region scratch_;
+  AdemLowerer lw_;
+  std::vector<AdemRecord> recs_;
+  std::vector<AdemError> errs_;
+  bool started_ = false, atEnd_ = false;
+};
 
 }  // namespace
 
@@ -355,16 +424,15 @@ bool parseAdemProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir
   bool binary = looksLikeAdemBinary(text);
   auto recs = binary ? readAdemBinary(text, fileId, errs) : readAdemListing(text, fileId, errs);
   bool ok = reportAdemErrors(diags, errs);
-  std::vector<size_t> bytes;  // by ordinal (the records with errors are not in recs)
-  for (auto &r : recs)
-    if (binary) {
-      if (bytes.size() < r.loc.col) bytes.resize(r.loc.col);
-      bytes[r.loc.col - 1] = r.byte;
-    }
-  AdemLowerer lw(diags, fn, std::move(bytes));
-  if (!lw.run(recs, binary ? SourceLoc{} : SourceLoc{fileId, 1, 1})) ok = false;
+  AdemLowerer lw(diags, fn.body);
+  lw.start(binary ? SourceLoc{} : SourceLoc{fileId, 1, 1});
+  for (auto &r : recs) ok &= lw.lower(r);
   out.functions.push_back(std::move(fn));
   return ok;
+}
+
+std::unique_ptr<BlockStream> openAdemStream(SourceManager &sm, uint32_t file, Diagnostics &diags) {
+  return std::make_unique<AdemStream>(sm, file, diags);
 }
 
 }  // namespace ncc::cld

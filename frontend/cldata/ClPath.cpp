@@ -130,7 +130,7 @@ void ClPath::coolant(SourceLoc l, const char *which, bool on) {
   Op c(OpKind::Coolant, l);
   if (which) c.set(which, Expr::symbol(on ? "on" : "off"));
   else c.set("flood", Expr::symbol("off")).set("mist", Expr::symbol("off"));  // null: every coolant off
-  body_.push_back(std::move(c));
+  body_->push_back(std::move(c));
 }
 
 bool ClPath::dwell(SourceLoc l, double seconds) {

@@ -41,7 +41,7 @@ struct ClWords {
 
 class ClPath {
 public:
-  ClPath(Diagnostics &d, ir::Region &body, ClWords w) : d_(d), body_(body), words_(w) {}
+  ClPath(Diagnostics &d, ir::Region &body, ClWords w) : d_(d), body_(&body), words_(w) {}
   virtual ~ClPath() = default;
 
 protected:
@@ -52,7 +52,9 @@ protected:
     return false;
   }
   void warning(SourceLoc l, std::string msg, const char *rule) { d_.warning(l, where(l) + msg, rule); }
-  ir::Op &emit(ir::OpKind k, SourceLoc l) { return body_.emplace_back(k, l); }
+  ir::Op &emit(ir::OpKind k, SourceLoc l) { return body_->emplace_back(k, l); }
+  // Where the ops go from now on: a streamed front end lowers each chunk into the driver's region.
+  void setBody(ir::Region &body) { body_ = &body; }
   static ir::ExprPtr num(double v) { return ir::Expr::number(v, ir::Type::Real); }
 
   // The program's start: mm, absolute, plane XY.
@@ -78,7 +80,7 @@ protected:
   void cutterCompOff(SourceLoc l);
 
   Diagnostics &d_;
-  ir::Region &body_;
+  ir::Region *body_;
   ClWords words_;
   std::string mode_;
   std::string plane_ = "xy";

@@ -8,6 +8,9 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
+#include <memory>
+
 namespace ncc::driver {
 
 bool samePaths(Session &s, const MotionBuffer &source, const MotionBuffer &back, double tolerance, bool rapidLegs) {
@@ -19,6 +22,61 @@ bool samePaths(Session &s, const MotionBuffer &source, const MotionBuffer &back,
   s.diags.error({}, "verification failed: " + report);
   return false;
 }
+
+namespace {
+// The error limit of the session's diagnostics (Diagnostics' default: translate sets none).
+constexpr unsigned kSessionErrorLimit = 50;
+
+// Replays what a collecting Diagnostics holds into the session's, in order.
+void replay(const Diagnostics &from, Diagnostics &to) {
+  for (const Diagnostic &d : from.collected()) to.report(d.severity, d.loc, d.message, d.rule);
+}
+
+// Copies a spooled output to standard output.
+bool copyOut(std::FILE *spool) {
+  std::rewind(spool);
+  char buf[1 << 16];
+  bool ok = true;
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, spool)) > 0;) ok &= std::fwrite(buf, 1, n, stdout) == n;
+  return ok && !std::ferror(spool);
+}
+
+// Without --verify the program's records go from the run straight into the emitter, and its
+// text straight into a temporary file (the output's own, renamed at the end; for standard output
+// an anonymous one copied out at the end), so neither the Motion IR stream nor the program text
+// is ever held whole: with a streamed front end (ISO flat programs, ADEM CLData) the memory stays
+// flat whatever the length (docs/CLDATA.md "Streaming", bench/cldata.sh). What the reader sees is
+// what the buffered translation gave: the emitter's diagnostics wait in a collecting Diagnostics
+// until the run is over (a refusal does not stop the run, and a failed run reports none of them),
+// and a failed translation writes nothing. Returns -1 when it cannot start (the output cannot be
+// created, the machine's [emit] section is bad): the buffered path then reports it as before.
+int translateStreamed(Session &s, uint32_t f, const emit::EmitOptions &eo, const std::string &out) {
+  const bool toStdout = out.empty() || out == "-";
+  std::unique_ptr<AtomicFile> file;
+  std::unique_ptr<std::FILE, int (*)(std::FILE *)> anon(toStdout ? std::tmpfile() : nullptr, &std::fclose);
+  if (!toStdout) file = std::make_unique<AtomicFile>(out);
+  std::FILE *spool = toStdout ? anon.get() : file->stream();
+  if (!spool) return -1;
+  Diagnostics emitDiags(s.sm);
+  emitDiags.setCollect(true);
+  emitDiags.setErrorLimit(kSessionErrorLimit + 1);  // one more: the session then says "too many errors"
+  auto emitter = emit::ProgramEmitter::create(s.machine, eo, spool, emitDiags);
+  if (!emitter) return -1;
+  if (!s.execute(f, *emitter)) return kExitErrors;
+  bool ok = emitter->finish(emitDiags);
+  replay(emitDiags, s.diags);
+  if (!ok) return kExitErrors;
+  if (toStdout) {
+    if (copyOut(spool)) return s.exitCode();
+    s.diags.error({}, "cannot write the translation to standard output");
+    return kExitErrors;
+  }
+  std::string err;
+  if (file->commit(err)) return s.exitCode();
+  s.diags.error({}, err);
+  return kExitErrors;
+}
+}  // namespace
 
 int cmdTranslate(int argc, char **argv) {
   Session s;
@@ -65,6 +123,10 @@ int cmdTranslate(int argc, char **argv) {
   uint32_t f = s.start(file);
   if (!f) return kExitErrors;
   if (keepStructure) return translateStructured(s, f, eo, out, verify, tol);
+  if (!verify)
+    if (int rc = translateStreamed(s, f, eo, out); rc >= 0) return rc;
+
+  // --verify runs the translation back and compares it with the source's records: both held.
 
   MotionBuffer source;
   if (!s.execute(f, source)) return kExitErrors;
