@@ -69,6 +69,7 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
     L.diags_->error(loc, "G10 needs a P word (the offset number) or L2 (a work offset)", "missing-word");
     return false;
   }
+  if (IsoWord *p = bw.get('P'); !p->expr && p->value == 0) return workpieceShift(op, loc);
   for (char c : std::string_view("QYV"))
     if (bw.has(c)) {
       L.diags_->error(bw.get(c)->loc,
@@ -88,6 +89,38 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
   op.set("index", take('P', Scale::None));
   for (char c : std::string_view("XZRUWC"))
     if (bw.has(c)) add(op, c, take(c, Scale::Linear));
+  out.push_back(std::move(op));
+  axesTaken = true;
+  return frameOps();
+}
+
+// The 808D's turning G10 P00 X(U) Z(W) C(H) (manual L4356-4363): writes the workpiece shift, which
+// moves every workpiece coordinate system; X Z C absolute (in G91 added), U W H added, axes not
+// programmed keep their shift. Lowered as `set_offset kind=lathe_tool index=0` with those words
+// (runtime/ExecutorState.cpp `workpieceShift`: the external frame of the chain).
+bool BlockLowerer::Block::workpieceShift(Op &op, SourceLoc loc) {
+  for (char c : std::string_view("RQYVIJKABE"))
+    if (bw.has(c)) {
+      L.diags_->error(bw.get(c)->loc, fmt::format("G10 P00 writes the workpiece shift of X, Z and C: {} is not one of its words", c),
+                     "unsupported-code");
+      return false;
+    }
+  for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}, std::pair{'C', 'H'}})
+    if (bw.has(abs) && bw.has(inc)) {
+      L.diags_->error(bw.get(inc)->loc, fmt::format("G10 P00: {} and {} in one block ({} adds to the shift {} sets)", abs, inc, inc, abs),
+                     "duplicate-word");
+      return false;
+    }
+  if (!bw.hasAny("XZCUWH")) {
+    L.diags_->error(loc, "G10 P00 needs a shift: X(U), Z(W) or C(H)", "missing-word");
+    return false;
+  }
+  op.set("kind", Expr::symbol("lathe_tool", loc));
+  op.set("index", take('P', Scale::None));
+  for (char c : std::string_view("XZUW"))
+    if (bw.has(c)) add(op, c, take(c, Scale::Linear));
+  for (char c : std::string_view("CH"))
+    if (bw.has(c)) add(op, c, take(c, Scale::Rotary));
   out.push_back(std::move(op));
   axesTaken = true;
   return frameOps();
@@ -115,7 +148,8 @@ bool BlockLowerer::Block::fanucWorkOffsetWrite(SourceLoc loc) {
 bool BlockLowerer::Block::coordinateOps() {
   // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
   // unless Fanuc's G4 X took X as the time.
-  axesTaken = macroCall || dwellTookAxis || offsetTookAxes;
+  // G72.1's X Y Z are the rotation's centre (LowerCopy.cpp); with G72.2 they are unused words.
+  axesTaken = macroCall || dwellTookAxis || offsetTookAxes || (nonModal && nonModal->kind == GKind::ContourCopy);
   if (nonModal && nonModal->kind == GKind::SetOffset) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::SetOffset, loc);
