@@ -35,8 +35,10 @@ bool BlockLowerer::Block::contourCopy() {
                    "missing-word");
     return false;
   }
-  if (!l->expr && (l->value < 1 || l->value != std::floor(l->value) || l->hasPoint)) {
-    L.diags_->error(l->loc, fmt::format("{} L must be a whole number of repetitions, 1 or more", code), "bad-number");
+  // A computed L would need a run-time check that it is a whole number >= 1 (copy 0 always runs).
+  if (l->expr || l->value < 1 || l->value != std::floor(l->value) || l->hasPoint) {
+    L.diags_->error(l->loc, fmt::format("{} L must be a constant whole number of repetitions, 1 or more", code),
+                   "bad-number");
     return false;
   }
   if (rotate ? !bw.has('R') : !bw.hasAny("IJK")) {
@@ -46,9 +48,13 @@ bool BlockLowerer::Block::contourCopy() {
                    "missing-word");
     return false;
   }
-  Op &set = emit(OpKind::Frame, loc);
-  set.set("slot", Expr::symbol("copy", loc));
-  set.set("action", Expr::symbol("set", loc));
+  auto copyFrame = [&](const char *action) {
+    Op op(OpKind::Frame, loc);
+    op.set("slot", Expr::symbol("copy", loc));
+    op.set("action", Expr::symbol(action, loc));
+    return op;
+  };
+  Op set = copyFrame("set");
   if (rotate) {
     axisWords(set, "XYZ");  // the centre; the executor wants the active plane's two axes
     add(set, 'R', take('R', Scale::Rotary));
@@ -56,6 +62,7 @@ bool BlockLowerer::Block::contourCopy() {
     for (char c : std::string_view("IJK"))
       if (bw.has(c)) add(set, c, take(c, Scale::Linear));
   }
+  out.push_back(std::move(set));
   // Copy 0, then L-1 times: the next copy's frame and the call (no frame change after the last).
   std::string callee = fmt::format("O{}", prog);
   L.calls.push_back({callee, loc});
@@ -67,25 +74,16 @@ bool BlockLowerer::Block::contourCopy() {
     return op;
   };
   out.push_back(call());
-  ExprPtr count = take('L', Scale::None);
-  if (count->kind == ir::ExprKind::Number)
-    count = count->num > 1 ? Expr::number(count->num - 1, ir::Type::Int, loc) : nullptr;
-  else
-    count = Expr::binary(ir::OpCode::Sub, std::move(count), Expr::number(1, ir::Type::Int, loc), loc);
-  if (count) {
+  bw.used |= Words::bit('L');
+  if (l->value > 1) {
     Op loop(OpKind::Loop, loc);
-    loop.set("count", std::move(count));
+    loop.set("count", Expr::number(l->value - 1, ir::Type::Int, l->loc));
     loop.regions.emplace_back();
-    Op step(OpKind::Frame, loc);
-    step.set("slot", Expr::symbol("copy", loc));
-    step.set("action", Expr::symbol("step", loc));
-    loop.regions[0].push_back(std::move(step));
+    loop.regions[0].push_back(copyFrame("step"));
     loop.regions[0].push_back(call());
     out.push_back(std::move(loop));
   }
-  Op &end = emit(OpKind::Frame, loc);
-  end.set("slot", Expr::symbol("copy", loc));
-  end.set("action", Expr::symbol("cancel", loc));
+  out.push_back(copyFrame("cancel"));
   return true;
 }
 

@@ -61,6 +61,20 @@ bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc
   return true;
 }
 
+// The turning G10 forms name each value twice: the first letter of a pair sets it, the second adds
+// to it (X U, Z W, ...); both in one block is an error.
+bool BlockLowerer::Block::setOrAdd(const char *pairs, const char *code, const char *what) {
+  for (; pairs[0] && pairs[1]; pairs += 2)
+    if (bw.has(pairs[0]) && bw.has(pairs[1])) {
+      L.diags_->error(bw.get(pairs[1])->loc,
+                     fmt::format("{}: {} and {} in one block ({} adds to the {} {} sets)", code, pairs[0], pairs[1],
+                                 pairs[1], what, pairs[0]),
+                     "duplicate-word");
+      return false;
+    }
+  return true;
+}
+
 // The 808D turning tool offset write G10 P X(U) Z(W) R(C) (manual L4297-4355): X Z R set, U W C
 // add; which of wear and geometry P names is the executor's (LatheTool). Q is an error: the
 // manual's table reads "cutting-edge length" where Fanuc has the imaginary tool tip.
@@ -79,12 +93,7 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
                      "unsupported-code");
       return false;
     }
-  for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}, std::pair{'R', 'C'}})
-    if (bw.has(abs) && bw.has(inc)) {
-      L.diags_->error(bw.get(inc)->loc, fmt::format("G10: {} and {} in one block ({} adds to the offset {} sets)", abs, inc, inc, abs),
-                     "duplicate-word");
-      return false;
-    }
+  if (!setOrAdd("XUZWRC", "G10", "offset")) return false;
   op.set("kind", Expr::symbol("lathe_tool", loc));
   op.set("index", take('P', Scale::None));
   for (char c : std::string_view("XZRUWC"))
@@ -105,12 +114,7 @@ bool BlockLowerer::Block::workpieceShift(Op &op, SourceLoc loc) {
                      "unsupported-code");
       return false;
     }
-  for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}, std::pair{'C', 'H'}})
-    if (bw.has(abs) && bw.has(inc)) {
-      L.diags_->error(bw.get(inc)->loc, fmt::format("G10 P00: {} and {} in one block ({} adds to the shift {} sets)", abs, inc, inc, abs),
-                     "duplicate-word");
-      return false;
-    }
+  if (!setOrAdd("XUZWCH", "G10 P00", "shift")) return false;
   if (!bw.hasAny("XZCUWH")) {
     L.diags_->error(loc, "G10 P00 needs a shift: X(U), Z(W) or C(H)", "missing-word");
     return false;

@@ -121,18 +121,15 @@ bool finishCalls(ir::Module &m, Diagnostics &diags) {
           ok = false;
         } else if (resumes) {
           const Expr *count = op.get("count");
-          if (afterCopyStart) {  // G72.1/G72.2 (LowerCopy.cpp): copy 0, then a loop of copies
+          // G72.1/G72.2 (LowerCopy.cpp) call copy 0, then a loop of copies.
+          const char *why = afterCopyStart ? "G72.1/G72.2 cannot repeat it"
+                            : count && !(count->kind == ir::ExprKind::Number && count->num == 1)
+                                ? "it cannot be called repeatedly (L or the repeat digits of P)"
+                                : nullptr;
+          if (why) {
             diags.error(op.loc,
-                        fmt::format("{} may end with M99 P<n> (back to a block of the caller): G72.1/G72.2 cannot "
-                                    "repeat it",
-                                    callee ? *callee : std::string("the called program")),
-                        "unsupported-code");
-            ok = false;
-          } else if (count && !(count->kind == ir::ExprKind::Number && count->num == 1)) {
-            diags.error(op.loc,
-                        fmt::format("{} may end with M99 P<n> (back to a block of the caller): it cannot be called "
-                                    "repeatedly (L or the repeat digits of P)",
-                                    callee ? *callee : std::string("the called program")),
+                        fmt::format("{} may end with M99 P<n> (back to a block of the caller): {}",
+                                    callee ? *callee : std::string("the called program"), why),
                         "unsupported-code");
             ok = false;
           }
