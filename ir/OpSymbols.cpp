@@ -1,4 +1,5 @@
 #include "ir/OpSymbols.h"
+#include "ir/FrameCopy.h"
 #include "ir/MachineCmd.h"
 
 #include <iterator>
@@ -63,8 +64,10 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::Frame, "slot", "rotation", (uint8_t)FrameSlot::Rotation},
     {OpKind::Frame, "slot", "scale", (uint8_t)FrameSlot::Scale},
     {OpKind::Frame, "slot", "mirror", (uint8_t)FrameSlot::Mirror},
+    {OpKind::Frame, "slot", "copy", kFrameSlotCopy},
     {OpKind::Frame, "action", "set", (uint8_t)FrameAction::Set},
     {OpKind::Frame, "action", "cancel", (uint8_t)FrameAction::Cancel},
+    {OpKind::Frame, "action", "step", kFrameActionStep},
     {OpKind::Frame, "form", "plane", 0},
     {OpKind::Frame, "form", "axis", kFrameFormAxis},
     {OpKind::Frame, "combine", "refuse", 0},

@@ -2,6 +2,7 @@
 // ExecutorMotion.cpp, tool data and system variables in ExecutorState.cpp, compensation in
 // ExecutorCompensation.cpp. The semantics follow LinuxCNC's rs274 at machine level (the oracle).
 #include "runtime/ExecutorImpl.h"
+#include "ir/FrameCopy.h"
 #include "runtime/Geometry.h"
 #include "runtime/WorkOffsetCode.h"
 
@@ -356,6 +357,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
   auto slot = (FrameSlot)c.sub;
   bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
   bool combine = c.sub2 & kFrameCombine;
+  if (c.sub == kFrameSlotCopy) return execCopyFrame(c, c.sub2 & 0x0f);
   if (comp.active()) return error("Cannot change the programmable frame with cutter radius comp on", "cutcomp-conflict");
   const AxisVec program = programPosition();
   auto word = [&](int axis, double def) { return c.has((Word)axis) ? c.get((Word)axis) * axisScale(axis) : def; };
@@ -683,11 +685,11 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
   case CmdKind::CutterComp: return x.execCutterComp(c);
   case CmdKind::Frame: {
     // FrameSlot order; set, cancel (ISO names: the only dialect with frame ops so far).
-    static const char *kSlots[][2] = {{"G52", "G52"}, {"G68", "G69"}, {"G51", "G50"}, {"G51.1", "G50.1"}};
+    static const char *kSlots[][2] = {{"G52", "G52"}, {"G68", "G69"}, {"G51", "G50"}, {"G51.1", "G50.1"},
+                                      {"G72.x copy", "G72.x end"}};
     if (!x.execFrame(c)) return false;
     x.curBlockFrame = true;
-    bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
-    x.noteFrame(c.sub < 4 ? kSlots[c.sub][set ? 0 : 1] : "frame");
+    x.noteFrame(c.sub < 5 ? kSlots[c.sub][(c.sub2 & 0x0f) == (uint8_t)FrameAction::Cancel ? 1 : 0] : "frame");
     return true;
   }
   case CmdKind::WorkOffset: {

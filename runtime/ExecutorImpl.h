@@ -330,6 +330,8 @@ struct Executor::Impl {
   // G41/G42 in force without a nose radius: the T word that brings one starts it.
   bool noseCompAfterT();
   bool execFrame(const MachineCmd &c);
+  bool execCopyFrame(const MachineCmd &c, int action);  // G72.1/G72.2 (ExecutorCopy.cpp)
+  bool workpieceShift(const MachineCmd &c);  // 808D turning G10 P00 (ExecutorState.cpp)
   // Emits a FrameChange record when the program -> machine transform (without the tool length,
   // which has its own record) or the work offset selection differs from the last one emitted;
   // `what` names the cause.

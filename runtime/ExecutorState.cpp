@@ -224,6 +224,7 @@ bool Executor::Impl::setToolNumber(double q) {
 // C add to them. A change applies at the next T word that selects the offset.
 bool Executor::Impl::latheToolOffset(const MachineCmd &c) {
   double p = c.get(Word::P);
+  if (p == 0) return workpieceShift(c);
   if (!(p >= 1 && p <= 1600 && p != 100 && p == std::floor(p)))
     return error("G10 P must be 1-99 (wear) or 101-1600 (geometry: 100 + the offset number)", "bad-offset-index");
   const bool geometry = p > 100;
@@ -249,6 +250,28 @@ bool Executor::Impl::latheToolOffset(const MachineCmd &c) {
   std::string err;
   const char *rule;
   return setEdge(t, d, e, err, rule) || error(err, rule);
+}
+
+// The 808D's turning G10 P00 (manual L4356-4363; front end: LowerFrames.cpp, index 0 of the
+// lathe_tool form): the workpiece shift moves every workpiece coordinate system, so ncc keeps it in
+// the external frame of the chain ($P_EXTFRAME, outside the settable frames) and applies it at
+// once. X Z C set the shift (in G91 add to it), U W H add; X is a diameter when X is programmed so.
+bool Executor::Impl::workpieceShift(const MachineCmd &c) {
+  struct Field {
+    int axis;
+    Word set, add;
+  };
+  static const Field kFields[] = {{0, Word::X, Word::U}, {2, Word::Z, Word::W}, {5, Word::C, Word::H}};
+  FrameValue &f = systemFrames[ExtFrame];
+  const bool incremental = st.distance == ModeValue::Incremental;
+  for (auto &k : kFields) {
+    double unit = axisScale(k.axis);
+    if (c.has(k.set)) f.coarse[k.axis] = (incremental ? f.coarse[k.axis] : 0) + c.get(k.set) * unit;
+    if (c.has(k.add)) f.coarse[k.axis] += c.get(k.add) * unit;
+  }
+  updateChain();
+  noteFrame("G10 P00");
+  return true;
 }
 
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {

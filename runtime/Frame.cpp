@@ -67,17 +67,21 @@ Affine Affine::scaling(const Vec3 &f, const Vec3 &centre) {
 }
 
 void ProgrammableFrame::update() {
-  Affine c;
+  copy = Affine{};
+  if (copyOn && copyAngle != 0) copy = Affine::rotation(copyAxis, copyIndex * copyAngle, copyCentre);
+  if (copyOn)
+    for (int i = 0; i < 3; ++i) copy.t[i] += copyIndex * copyShift[i];
+  Affine c = copy;
   Vec3 mirror{1, 1, 1};
   for (int i = 0; i < 3; ++i)
     if (mirrorAxes[i]) mirror[i] = -1;
   // Scale, then mirror, then rotate (Heidenhain's 26/11, 8, 10: digest seed002a §4.8's model;
   // ISO never has two kinds at once).
-  if (scaleOn) c = Affine::scaling(scaleFactors, scaleCentre);
+  if (scaleOn) c = c.then(Affine::scaling(scaleFactors, scaleCentre));
   c = c.then(Affine::scaling(mirror, mirrorAt));
   if (rotationLevels == 2) c = c.then(rotation[1]);
   if (rotationLevels >= 1) c = c.then(rotation[0]);
-  linear = !c.linearIdentity();
+  linear = !c.linearIdentity() || copyOn;  // a copy's shift is in the composite, not in local
   for (int i = 0; i < 3; ++i) c.t[i] += local[i];
   composite = c;
   inverseComposite = c.inverse();

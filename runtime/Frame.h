@@ -42,6 +42,14 @@ struct ProgrammableFrame {
   int rotationLevels = 0;    // 0, 1 or 2 stacked G68 rotations
   Affine rotation[2];        // level 1 (outer, the first G68), level 2 (inner)
   AxisVec local{};
+  // The 808D's G72.1/G72.2 contour repetition (innermost, on the program side): copy k runs with
+  // k times the step, a rotation of copyAngle degrees about copyAxis through copyCentre or the
+  // shift copyShift (mm). copyOn from G72.x's start to its end.
+  bool copyOn = false;
+  int copyIndex = 0;
+  double copyAngle = 0;
+  Vec3 copyAxis{}, copyCentre{}, copyShift{};
+  Affine copy;  // the transform of copy copyIndex (update() sets it)
 
   // The composite of the linear slots and the local shift, and its inverse (update() sets them).
   Affine composite, inverseComposite;
@@ -58,6 +66,7 @@ struct ProgrammableFrame {
   void clearMirror() { mirrorAxes = {}, mirrorAt = {}; }
   void clearScale() { scaleOn = false, scaleFactors = {1, 1, 1}, scaleCentre = {}; }
   void clearRotation() { rotationLevels = 0, rotation[0] = rotation[1] = Affine{}; }
+  void clearCopy() { copyOn = false, copyIndex = 0, copyAngle = 0, copyAxis = copyCentre = copyShift = {}; }
 
   // Program coordinates -> the input of the G92 slot, and back (all six axes; A B C shift only).
   AxisVec out(const AxisVec &program) const;

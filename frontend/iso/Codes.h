@@ -20,6 +20,7 @@ enum class GKind : uint8_t {
   MacroCall,     // G65
   ModalMacro,    // G66 (arg 0: set a modal macro call, after each move) / G67 (arg 1: cancel)
   SubCall,       // G05 P<program> L<count>: subprogram call (808D); G05 without P, P0, P01 ignored
+  ContourCopy,   // 808D G72.1 (arg 1: rotational) / G72.2 (arg 2: linear) contour repetition (LowerCopy.cpp)
   Frame,         // G52 (local shift), G68/G69 (rotation), G51/G50 (scaling), G51.1/G50.1 (mirror); arg 1 on, 0 off
   TurnCycle,     // G70-G73 multiple repetitive turning cycles (arg: the A-system code)
   SpindleMode,   // G96 (arg 2: constant surface speed) / G97 (arg 1: constant rpm)

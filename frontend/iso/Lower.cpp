@@ -763,6 +763,7 @@ bool BlockLowerer::Block::callsAndReturn() {
       bw.used |= (1u << ('P' - 'A')) | (1u << ('L' - 'A'));
     }
   }
+  if (nonModal && nonModal->kind == GKind::ContourCopy && !contourCopy()) return false;
   if (auto *g67 = G(GGroup::MacroModal); g67 && g67->arg == 1) emit(OpKind::ModalCall, gloc(GGroup::MacroModal));
   if (macroCall) {
     bool modal = !G(GGroup::NonModal);  // G66: a modal_call, after each following move (docs/IR.md §5.5)

@@ -192,6 +192,8 @@ struct BlockLowerer::Block {
 
   bool latheTool();                 // T0101 on a lathe
   bool latheToolOffset(Op &op, SourceLoc loc);  // G10 P X Z R on a lathe (LowerFrames.cpp)
+  bool workpieceShift(Op &op, SourceLoc loc);   // G10 P00 X Z C on a lathe (LowerFrames.cpp)
+  bool setOrAdd(const char *pairs, const char *code, const char *what);  // X with U … (LowerFrames.cpp)
   bool latheAxisWords(Op &op);      // U W on a lathe (system A)
   const GCodeInfo *lookupG(const IsoWord &w);  // a constant G word's table entry (null: reported)
   bool classify();       // G and M codes through the tables; conflicts and duplicates
@@ -209,6 +211,7 @@ struct BlockLowerer::Block {
   bool ioCode(const MUse &m);       // LinuxCNC M62-M68
   bool callsAndReturn();
   bool returnOp(SourceLoc loc);  // M99 [P] (LowerCalls.cpp)
+  bool contourCopy();            // G72.1 / G72.2 (LowerCopy.cpp)
   // False, reported, when the lowerer refuses calls (BlockLowerer::callsRefused).
   bool callAllowed(SourceLoc loc, std::string_view what) {
     if (!L.callsRefused) return true;

@@ -61,6 +61,20 @@ bool BlockLowerer::Block::toolOffsetOp(Op &op, int lv, IsoWord *l, SourceLoc loc
   return true;
 }
 
+// The turning G10 forms name each value twice: the first letter of a pair sets it, the second adds
+// to it (X U, Z W, ...); both in one block is an error.
+bool BlockLowerer::Block::setOrAdd(const char *pairs, const char *code, const char *what) {
+  for (; pairs[0] && pairs[1]; pairs += 2)
+    if (bw.has(pairs[0]) && bw.has(pairs[1])) {
+      L.diags_->error(bw.get(pairs[1])->loc,
+                     fmt::format("{}: {} and {} in one block ({} adds to the {} {} sets)", code, pairs[0], pairs[1],
+                                 pairs[1], what, pairs[0]),
+                     "duplicate-word");
+      return false;
+    }
+  return true;
+}
+
 // The 808D turning tool offset write G10 P X(U) Z(W) R(C) (manual L4297-4355): X Z R set, U W C
 // add; which of wear and geometry P names is the executor's (LatheTool). Q is an error: the
 // manual's table reads "cutting-edge length" where Fanuc has the imaginary tool tip.
@@ -69,6 +83,7 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
     L.diags_->error(loc, "G10 needs a P word (the offset number) or L2 (a work offset)", "missing-word");
     return false;
   }
+  if (IsoWord *p = bw.get('P'); !p->expr && p->value == 0) return workpieceShift(op, loc);
   for (char c : std::string_view("QYV"))
     if (bw.has(c)) {
       L.diags_->error(bw.get(c)->loc,
@@ -78,16 +93,38 @@ bool BlockLowerer::Block::latheToolOffset(Op &op, SourceLoc loc) {
                      "unsupported-code");
       return false;
     }
-  for (auto [abs, inc] : {std::pair{'X', 'U'}, std::pair{'Z', 'W'}, std::pair{'R', 'C'}})
-    if (bw.has(abs) && bw.has(inc)) {
-      L.diags_->error(bw.get(inc)->loc, fmt::format("G10: {} and {} in one block ({} adds to the offset {} sets)", abs, inc, inc, abs),
-                     "duplicate-word");
-      return false;
-    }
+  if (!setOrAdd("XUZWRC", "G10", "offset")) return false;
   op.set("kind", Expr::symbol("lathe_tool", loc));
   op.set("index", take('P', Scale::None));
   for (char c : std::string_view("XZRUWC"))
     if (bw.has(c)) add(op, c, take(c, Scale::Linear));
+  out.push_back(std::move(op));
+  axesTaken = true;
+  return frameOps();
+}
+
+// The 808D's turning G10 P00 X(U) Z(W) C(H) (manual L4356-4363): writes the workpiece shift, which
+// moves every workpiece coordinate system; X Z C absolute (in G91 added), U W H added, axes not
+// programmed keep their shift. Lowered as `set_offset kind=lathe_tool index=0` with those words
+// (runtime/ExecutorState.cpp `workpieceShift`: the external frame of the chain).
+bool BlockLowerer::Block::workpieceShift(Op &op, SourceLoc loc) {
+  for (char c : std::string_view("RQYVIJKABE"))
+    if (bw.has(c)) {
+      L.diags_->error(bw.get(c)->loc, fmt::format("G10 P00 writes the workpiece shift of X, Z and C: {} is not one of its words", c),
+                     "unsupported-code");
+      return false;
+    }
+  if (!setOrAdd("XUZWCH", "G10 P00", "shift")) return false;
+  if (!bw.hasAny("XZCUWH")) {
+    L.diags_->error(loc, "G10 P00 needs a shift: X(U), Z(W) or C(H)", "missing-word");
+    return false;
+  }
+  op.set("kind", Expr::symbol("lathe_tool", loc));
+  op.set("index", take('P', Scale::None));
+  for (char c : std::string_view("XZUW"))
+    if (bw.has(c)) add(op, c, take(c, Scale::Linear));
+  for (char c : std::string_view("CH"))
+    if (bw.has(c)) add(op, c, take(c, Scale::Rotary));
   out.push_back(std::move(op));
   axesTaken = true;
   return frameOps();
@@ -115,7 +152,8 @@ bool BlockLowerer::Block::fanucWorkOffsetWrite(SourceLoc loc) {
 bool BlockLowerer::Block::coordinateOps() {
   // A dwell leaves the axis words to the motion of its block (rs274 runs both, dwell first),
   // unless Fanuc's G4 X took X as the time.
-  axesTaken = macroCall || dwellTookAxis || offsetTookAxes;
+  // G72.1's X Y Z are the rotation's centre (LowerCopy.cpp); with G72.2 they are unused words.
+  axesTaken = macroCall || dwellTookAxis || offsetTookAxes || (nonModal && nonModal->kind == GKind::ContourCopy);
   if (nonModal && nonModal->kind == GKind::SetOffset) {
     SourceLoc loc = gloc(GGroup::NonModal);
     Op op(OpKind::SetOffset, loc);

@@ -96,6 +96,7 @@ bool finishCalls(ir::Module &m, Diagnostics &diags) {
     std::function<void(Region &)> walk = [&](Region &r) {
       Region out;
       std::optional<SourceLoc> pending;  // a resume check waits for the op after its call
+      bool copyStart = false;            // the op before started a G72.x (its copy 0 call follows)
       for (auto &op : r) {
         for (auto &sub : op.regions) walk(sub);
         bool isCall = op.kind == OpKind::Call || op.kind == OpKind::ModalCall;
@@ -109,17 +110,26 @@ bool finishCalls(ir::Module &m, Diagnostics &diags) {
           }
         }
         bool resumes = isCall && !resumers.empty() && (!callee || resumers.count(*callee));
+        const bool afterCopyStart = copyStart;
+        const Expr *slot = op.kind == OpKind::Frame ? op.get("slot") : nullptr;
+        const Expr *action = op.kind == OpKind::Frame ? op.get("action") : nullptr;
+        copyStart = slot && slot->kind == ir::ExprKind::Symbol && slot->str == "copy" && action &&
+                    action->kind == ir::ExprKind::Symbol && action->str == "set";
         if (resumes && op.kind == OpKind::ModalCall) {
           diags.error(op.loc, fmt::format("{} ends with M99 P<n>, which a modal call (G66) cannot return by", *callee),
                       "unsupported-code");
           ok = false;
         } else if (resumes) {
           const Expr *count = op.get("count");
-          if (count && !(count->kind == ir::ExprKind::Number && count->num == 1)) {
+          // G72.1/G72.2 (LowerCopy.cpp) call copy 0, then a loop of copies.
+          const char *why = afterCopyStart ? "G72.1/G72.2 cannot repeat it"
+                            : count && !(count->kind == ir::ExprKind::Number && count->num == 1)
+                                ? "it cannot be called repeatedly (L or the repeat digits of P)"
+                                : nullptr;
+          if (why) {
             diags.error(op.loc,
-                        fmt::format("{} may end with M99 P<n> (back to a block of the caller): it cannot be called "
-                                    "repeatedly (L or the repeat digits of P)",
-                                    callee ? *callee : std::string("the called program")),
+                        fmt::format("{} may end with M99 P<n> (back to a block of the caller): {}",
+                                    callee ? *callee : std::string("the called program"), why),
                         "unsupported-code");
             ok = false;
           }

@@ -78,8 +78,9 @@ static bool needsWholeProgram(const char *&q, const char *le) {
   const bool point = r < le && *r == '.';
   if (k0 == 'M') return v == 98 || v == 99;
   // G65/G66 macro calls, G5 (high-speed cycle call); the lathe contour cycles G70-G73 run a
-  // block range (also G73 of a mill: playing safe); G290 Siemens-mode blocks.
-  return !point && (v == 65 || v == 66 || v == 5 || (v >= 70 && v <= 73) || v == 290);
+  // block range (also G73 of a mill: playing safe), the 808D's G72.1/G72.2 call a subprogram
+  // (with a point: LinuxCNC's G71.1 … too, playing safe); G290 Siemens-mode blocks.
+  return (v >= 70 && v <= 73) || (!point && (v == 65 || v == 66 || v == 5 || v == 290));
 }
 
 // The first byte at or after q that is not ScanClass::Skip (end if none): sixteen bytes at a
