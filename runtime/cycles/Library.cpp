@@ -733,6 +733,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addSinClearingEntries(v);
     addSinSpigotEntries(v);
     addSinThreadMillEntries(v);
+    addSinDrillThreadEntries(v);
     addHeiPatternEntries(v);
     addHeiThreadMillEntries(v);
     addHeiDeepHoleEntries(v);
