@@ -109,7 +109,10 @@ enum class SetOffsetKind : uint8_t {
   ToolSet, ToolTouch, ToolTouchG593, ToolLength, ToolLengthWear, ToolRadius, ToolRadiusWear,
   // The 808D turning G10 P X(U) Z(W) R(C): P1-P99 the wear, P101-P1600 the geometry of offset
   // P (- 100); X Z R absolute, U W C added (runtime/ExecutorState.cpp).
-  LatheTool
+  LatheTool,
+  // Sinumerik DELDL (runtime/ExecutorSinTool.cpp): the additive offsets of tool P's edge D go
+  // (P absent: every tool; D absent: every edge); Q 1: the program reads the status.
+  DeleteAdditive
 };
 // The programmable frame (runtime/Frame.h): its slots, what a `frame` op does to one, and how a
 // rotation reads its words. form=plane is the ISO 2-D G68 (about the active plane's normal axis,

@@ -194,7 +194,7 @@ static const OpInfo kOps[] = {
     {OpKind::ToolLength, "tool_length", 0, 0, "", "h D dl form X Y Z A B C U V W"},
     {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d d_default entry"},
     {OpKind::WorkOffset, "work_offset", 0, 0, "index", ""},
-    {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C U V W R H"},
+    {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C U V W R H D Q"},
     {OpKind::Stop, "stop", 0, 0, "kind", ""},
     {OpKind::Aux, "aux", 0, 0, "", "m b h index value input"},
     {OpKind::Frame, "frame", 0, 0, "slot action", "form combine X Y Z A B C U V W I J K R"},

@@ -55,6 +55,7 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::SetOffset, "kind", "tool_radius", (uint8_t)SetOffsetKind::ToolRadius},
     {OpKind::SetOffset, "kind", "tool_radius_wear", (uint8_t)SetOffsetKind::ToolRadiusWear},
     {OpKind::SetOffset, "kind", "lathe_tool", (uint8_t)SetOffsetKind::LatheTool},
+    {OpKind::SetOffset, "kind", "deldl", (uint8_t)SetOffsetKind::DeleteAdditive},
     {OpKind::Aux, "input", "digital", 0},
     {OpKind::Aux, "input", "analog", 1},
     {OpKind::ToolLength, "form", "table", (uint8_t)ToolLengthForm::Table},

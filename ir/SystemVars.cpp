@@ -19,7 +19,7 @@ static const char *const kNames[] = {
     "_adaptive_feed", "_feed_hold", "_feed", "_rpm", "_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v",
     "_w", "_current_tool", "_current_pocket", "_selected_tool", "_selected_pocket",
     "_remap_level", "_task", "_g92_on", "_coord_system_number", "_tool_diameter", "_tool_length_h",
-    "_cutter_d", "_probe_x", "_probe_y", "_probe_z", "_probe_a", "_probe_b", "_probe_c", "_probe_u",
+    "_cutter_d", "_sin_deldl_status", "_probe_x", "_probe_y", "_probe_z", "_probe_a", "_probe_b", "_probe_c", "_probe_u",
     "_probe_v", "_probe_w", "_probe_tripped", "_pframe", "_iframe", "_actframe", "_actbframe", "_chbfrmask",
     "_ncbfrmask", "_partframe", "_setframe", "_extframe", "_iso1frame", "_iso2frame", "_iso3frame", "_gframe",
     "_toolframe", "_wpframe", "_traframe", "_iso4frame", "_cycframe"};

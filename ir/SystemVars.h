@@ -22,6 +22,8 @@ enum class SysVar : uint16_t {
   SpindleCw, Mist, Flood, SpeedOverride, FeedOverride, AdaptiveFeed, FeedHold, Feed, Rpm, PosX,
   PosY, PosZ, PosA, PosB, PosC, PosU, PosV, PosW, CurrentTool, CurrentPocket, SelectedTool,
   SelectedPocket, RemapLevel, Task, G92On, CoordSystemNumber, ToolDiameter, ToolLengthH, CutterD,
+  // Sinumerik: the status of the last DELDL (0 done, -1 not or not completely).
+  DeldlStatus,
   // The last probe's result (LinuxCNC #5061-#5069: where it stopped, X Y Z A B C U V W in the work
   // coordinates and units of its block; #5070: 1 when it tripped), docs/PROBING.md.
   ProbeX, ProbeY, ProbeZ, ProbeA, ProbeB, ProbeC, ProbeU, ProbeV, ProbeW, ProbeTripped,

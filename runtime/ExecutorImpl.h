@@ -372,6 +372,9 @@ struct Executor::Impl {
   // Sinumerik tool offsets (ExecutorSinTool.cpp): the length vector (X Y Z) and radius of edge d
   // of tool t with DL set dl; selection of an edge (D) and of a DL set; the plane's share.
   bool sinToolOffsets(int t, int d, int dl, Vec3 &length, double &radius, std::string &err) const;
+  // DELDL (SetOffsetKind::DeleteAdditive): the status a program reads back ($_sin_deldl_status).
+  bool deleteAdditive(const MachineCmd &c);
+  double deldlStatus = 0;
   bool mirroredAxes(bool out[3]) const;
   bool applySinTool();
   bool selectSinEdge(int d, double dl);

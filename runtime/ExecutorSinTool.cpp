@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <set>
 
 namespace ncc {
 
@@ -162,6 +163,59 @@ bool Executor::Impl::sinRadius(int t, int d, double &radius) {
   Vec3 length;
   std::string err;
   return sinToolOffsets(t, d, activeDl, length, radius, err) || error(err, "unsupported-code");
+}
+
+// DELDL (SIN-TOL-06, L17030-L17066): the wear and setup values of every DL set of the edges named
+// (`DELDL[t, d]` one edge, `DELDL[t]` the tool's, `DELDL` every tool's) go. The active tool's stay
+// (L17064: "values of active tools cannot be deleted"; [model] active: the tool in the spindle with
+// an edge selected, whose offsets are in effect). The status is 0 when everything named was
+// deleted, -1 when an edge named does not exist or an active one kept its values (the manual's
+// "–"). The active tool's values stay silently in the statement form too, as the manual says.
+bool Executor::Impl::deleteAdditive(const MachineCmd &c) {
+  const bool oneTool = c.has(Word::P), oneEdge = c.has(Word::D);
+  const int t = oneTool ? (int)c.get(Word::P) : 0, d = oneEdge ? (int)c.get(Word::D) : 0;
+  std::set<std::pair<int, int>> edges;
+  bool missing = false;
+  auto toolEdges = [&](int tool) {
+    auto it = machine.toolTable.find(tool);
+    if (it != machine.toolTable.end())
+      for (auto &e : it->second.edges) edges.insert({tool, e.first});
+    else if (toolExists(tool))
+      edges.insert({tool, 1});  // a valid number the table lacks: edge 1 alone
+    for (auto &e : edgeEdits)
+      if (e.first.first == tool) edges.insert(e.first);
+  };
+  if (!oneTool) {
+    for (auto &tool : machine.toolTable) toolEdges(tool.first);
+    for (auto &e : edgeEdits) edges.insert(e.first);
+  } else if (oneEdge) {
+    const bool whole = c.get(Word::P) == t && c.get(Word::D) == d;
+    if (whole && hasEdge(t, d)) edges.insert({t, d});
+    else missing = true;
+  } else {
+    if (c.get(Word::P) == t) toolEdges(t);
+    missing = edges.empty();
+  }
+  bool kept = false;
+  for (auto [tool, edge] : edges) {
+    if (tool == st.toolInSpindle && activeEdge != 0) {
+      kept = true;
+      continue;
+    }
+    ToolEdge e = edgeOf(tool, edge);
+    for (auto *sets : {&e.sumWear, &e.sumSetup})
+      for (auto &set : *sets)
+        for (double &v : set) v = 0;
+    edgeEdits[{tool, edge}] = e;
+  }
+  deldlStatus = missing || kept ? -1 : 0;
+  // The statement form names a tool or edge that does not exist: an error, as for D (the status
+  // form leaves it to the program).
+  if (missing && c.get(Word::Q) != 1)
+    return error(oneEdge ? fmt::format("DELDL[{}, {}]: tool {} has no cutting edge D{}", t, d, t, d)
+                         : fmt::format("DELDL[{}]: the machine has no tool {}", t, t),
+                 "unknown-tool");
+  return true;
 }
 
 }  // namespace ncc

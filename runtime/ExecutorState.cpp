@@ -277,6 +277,7 @@ bool Executor::Impl::workpieceShift(const MachineCmd &c) {
 bool Executor::Impl::execToolOffset(const MachineCmd &c) {
   auto kind = (SetOffsetKind)c.sub;
   if (kind == SetOffsetKind::LatheTool) return latheToolOffset(c);
+  if (kind == SetOffsetKind::DeleteAdditive) return deleteAdditive(c);
   if (!c.has(Word::P)) return error("G10 needs a P word (the tool or offset number)", "missing-word");
   ToolData data;
   if (!offsetData(c.get(Word::P), "P", data)) return false;  // existing numbers only (808D: none can be created)
@@ -421,6 +422,7 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   }
   case SysVar::ToolLengthH: out = st.toolLengthH; return true;
   case SysVar::CutterD: out = x.cutterD; return true;
+  case SysVar::DeldlStatus: out = x.deldlStatus; return true;
   case SysVar::ProbeX:
   case SysVar::ProbeY:
   case SysVar::ProbeZ:

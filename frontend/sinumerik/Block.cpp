@@ -260,9 +260,10 @@ bool BlockParser::keyword(const std::string &kw) {
   for (const char *c : kNotYet)
     if (kw == c)
       return fail(t, fmt::format("'{}' is not simulated (not yet supported construct)", kw), "unsupported-code");
-  // The D number management of the tool data (SIN-TOL-06, -20 … -23, L17030-L17066, L18246-L18371).
+  if (kw == "DELDL") return deleteAdditive(t, false);  // ToolData.cpp
+  // The D number management of the tool data (SIN-TOL-20 … -23, L18246-L18371).
   static const struct { const char *name, *what; } kToolData[] = {
-      {"DELDL", "deleting additive offsets"}, {"DZERO", "invalidating D numbers"},
+      {"DZERO", "invalidating D numbers"},
       {"SETDNO", "renaming a D number"},      {"GETDNO", "reading a D number"},
       {"CHKDNO", "checking D numbers"},       {"GETACTTD", "the T number of a D number"}};
   for (auto &c : kToolData)

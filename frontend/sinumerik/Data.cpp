@@ -240,6 +240,7 @@ bool BlockParser::def() {
 
 // After `=`: a value; frames chain with `:` (L3181, `A : B`), arrays take SET/REP lists.
 ExprPtr BlockParser::assignValue(const Expr &target) {
+  if (tok().isName("DELDL") && !machineCtx_) return deldlStatus(tok());  // S = DELDL[t, d] (ToolData.cpp)
   ExprPtr v = expr(0);
   if (!v) return nullptr;
   while (tok().is(":")) {

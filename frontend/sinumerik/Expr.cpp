@@ -374,6 +374,10 @@ ExprPtr BlockParser::nameExpr(const Token &t) {
   }
   if (tok().is("(") ) return function(t);
   if (f_.vars.count(t.text)) return variable(t);
+  if (t.text == "DELDL" && !machineCtx_) {  // its status only as an assignment's value (ToolData.cpp)
+    fail(t, "DELDL gives its status as the whole value of an assignment only: S = DELDL[t, d]");
+    return nullptr;
+  }
   if (t.text == "R" && tok().is("[")) {
     ++i_;
     ExprPtr e = expr(0);

@@ -245,6 +245,10 @@ private:
   bool machineCtx_ = false;
   // WRITE DELETE READ FILEDATE … (Files.cpp): false when `kw` is none.
   bool fileCommand(const std::string &kw);  // inside one: unknown names, $ variables and functions parse as placeholders
+  // DELDL (ToolData.cpp): the statement at `at` (the keyword, not consumed) and, as the value of an
+  // assignment, the status it leaves.
+  bool deleteAdditive(const Token &at, bool status);
+  ir::ExprPtr deldlStatus(const Token &at);
   ir::ExprPtr machineValue();
   void openCtl(Ctl kind, ir::Op op, SourceLoc l);
   bool lowerWords();

@@ -743,6 +743,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addSinClearingEntries(v);
     addSinSpigotEntries(v);
     addSinThreadMillEntries(v);
+    addSinDrillThreadEntries(v);
     addHeiPatternEntries(v);
     addHeiThreadMillEntries(v);
     addHeiDeepHoleEntries(v);

@@ -68,6 +68,7 @@ void addClearingEntries(std::vector<CycleDef> &out);
 void addSinClearingEntries(std::vector<CycleDef> &out);
 void addSinSpigotEntries(std::vector<CycleDef> &out);  // SinSpigotEntries.cpp: CYCLE76, 77, 79
 void addSinThreadMillEntries(std::vector<CycleDef> &out);  // SinThreadMill.cpp: CYCLE70
+void addSinDrillThreadEntries(std::vector<CycleDef> &out);  // SinDrillThread.cpp: CYCLE78
 void addHeiPatternEntries(std::vector<CycleDef> &out);  // HeiPatternDef.cpp
 void addHeiThreadMillEntries(std::vector<CycleDef> &out);  // HeiThreadMill.cpp: 262-267
 void addHeiDeepHoleEntries(std::vector<CycleDef> &out);    // HeiDeepHole.cpp: 204, 205, 241

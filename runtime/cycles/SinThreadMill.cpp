@@ -12,10 +12,7 @@ namespace ncc {
 
 using namespace entry;
 
-namespace {
-
-// _PITA: the pitch _PIT in mm (0, 1), threads per inch (2), inches (3) or as a module (4).
-bool pitchMm(const CycleArgs &a, double &pitch, std::string &err) {
+bool entry::sinPitchMm(const CycleArgs &a, double &pitch, std::string &err) {
   const double p = a.get("_PIT");
   if (!(p > 0)) return fail(err, "_PIT (thread pitch) must be greater than 0");
   switch ((int)a.get("_PITA")) {
@@ -27,6 +24,8 @@ bool pitchMm(const CycleArgs &a, double &pitch, std::string &err) {
   }
   return true;
 }
+
+namespace {
 
 // The radial depths of the passes (from the crest): roughing (_VARI 1) in equal cuts of at most
 // _MID to _H1 - _FAL, finishing (2) the one pass at _H1.
@@ -51,7 +50,7 @@ bool sinCycle70(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
   for (const char *k : {"_RTP", "_RFP", "_DP", "_DIATH", "_H1", "_PIT", "_FFR"})
     if (!a.has(k)) return fail(err, std::string(k) + " is required");
   Thread t;
-  if (!pitchMm(a, t.pitch, err)) return false;
+  if (!sinPitchMm(a, t.pitch, err)) return false;
   // The thread length: _DP absolute, or (_AMODE 1st digit 1) below _RFP.
   const double rfp = a.get("_RFP"), sdis = std::fabs(a.get("_SDIS"));
   const double end = digit(a.get("_AMODE"), 1) == 1 ? rfp - a.get("_DP") : a.get("_DP");

@@ -1,7 +1,10 @@
 // The thread-milling helix the Heidenhain (262-267, HeiThreadMill.cpp) and Sinumerik (CYCLE70,
 // SinThreadMill.cpp) entries share: docs/CYCLES.md "Heidenhain thread milling".
 #pragma once
+#include "runtime/cycles/Library.h"
 #include "runtime/cycles/Mill.h"
+
+#include <string>
 
 namespace ncc::entry {
 
@@ -24,5 +27,9 @@ struct Thread {
 // tool-centre feed is mill x centre / radius), the tangential departure back to the start point's
 // radius at `approach`.
 void helix(Mill &m, const Thread &t, double from, double to);
+
+// The Sinumerik thread pitch in mm (SinThreadMill.cpp; CYCLE70 and CYCLE78): _PIT by _PITA, mm (0,
+// 1), threads per inch (2), inches (3) or a module (4).
+bool sinPitchMm(const CycleArgs &a, double &pitch, std::string &err);
 
 }  // namespace ncc::entry
