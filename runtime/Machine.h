@@ -50,6 +50,7 @@ struct ToolEdge {
 
 struct Tool {
   std::string name;
+  int teeth = 0;  // cutting edges (the TNC's CUT): Heidenhain FZ feeds per tooth (0: not given)
   std::map<int, ToolEdge> edges;  // by D number
 };
 
