@@ -101,11 +101,12 @@ bool BlockParser::cycleValue(int cycle, const std::string &name, CycleValue &v, 
   }
   if (t.isWord("PREDEF")) {
     const GlobalGroup *g = groupOf(name);
-    if (!g || g->number == 125)
-      return fail(t, fmt::format("{}=PREDEF: no GLOBAL DEF group has {} (100: Q200 Q204 Q253 Q208, 105: Q256 Q211 Q210, "
-                                 "110: Q370 Q351 Q366, 111: Q2 Q6 Q7 Q9, 120: Q320 Q260 Q301)",
-                                 name, name),
-                  "cycle-parameter");
+    if (!g || g->number == 125) {
+      std::string groups;
+      for (const GlobalGroup &k : kGroups)
+        if (k.number != 125) groups += fmt::format("{}{}: {}", groups.empty() ? "" : ", ", k.number, k.params);
+      return fail(t, fmt::format("{}=PREDEF: no GLOBAL DEF group has {} ({})", name, name, groups), "cycle-parameter");
+    }
     ++i_;
     v.kind = CycleValue::Predef;
     std::string var = globalDefVar(name);
@@ -140,8 +141,12 @@ bool BlockParser::cycleValue(int cycle, const std::string &name, CycleValue &v, 
       f_.pp.fauto = true;
       v.value = hglobal(kFauto, v.at);
     } else {  // FU 0.2, FZ 0.05: the executor converts them where the cycle runs (ir/CycleFeed.h)
+      const Token &at = tok();
       ExprPtr f = signedValue();
       if (!f) return false;
+      if (f->kind == ir::ExprKind::Number && !(f->num > 0 && f->num < cyclefeed::kBand))
+        return fail(at, fmt::format("{} takes a feed per {} greater than 0", word, k == kwFu ? "revolution" : "tooth"),
+                    "cycle-parameter");
       v.kind = k == kwFu ? CycleValue::PerRev : CycleValue::PerTooth;
       v.value = Expr::binary(OpCode::Sub, num(k == kwFu ? cyclefeed::kPerRev : cyclefeed::kPerTooth, v.at), std::move(f), v.at);
     }
