@@ -2,6 +2,7 @@
 // resolves the words into the machine frame and turns the steps of expandCycle into records.
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
+#include "runtime/cycles/CycleFeed.h"
 #include "runtime/cycles/Entry.h"
 
 #include <cctype>
@@ -202,6 +203,11 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
     case CycleStepKind::Rapid: moveTo(RecordKind::Rapid, to, !s.preMove); break;
     case CycleStepKind::Feed:
     case CycleStepKind::Arc: {
+      if (s.feed == cyclefeed::kRapid) {  // a feed parameter given as FMAX (CycleFeed.h)
+        if (s.kind == CycleStepKind::Arc) return error("FMAX as the feed of a cycle's arc: the TNC moves arcs at a feed", "cycle-invalid");
+        moveTo(RecordKind::Rapid, to, true);
+        break;
+      }
       double f = s.feed > 0 ? s.feed : feedMM;
       if (f != rate) {
         MotionRecord r = record(RecordKind::FeedRate);
@@ -309,10 +315,25 @@ bool Executor::runCycle(const CycleDef &cycle, const CycleArgs &args, const Cycl
   return impl_->runLibraryCycle(&cycle, args, pattern, patternArgs);
 }
 
-bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args, const CycleDef *pattern,
+// An entry's error, named by the entry: entry::unsupported marks a parameter value ncc does not
+// honour (unsupported-code), anything else is a wrong call (cycle-invalid).
+static bool entryError(Executor::Impl &x, const char *name, std::string err) {
+  const bool unsupported = err.compare(0, entry::kUnsupported.size(), entry::kUnsupported) == 0;
+  if (unsupported) err.erase(0, entry::kUnsupported.size());
+  return x.error(std::string(name) + ": " + err, unsupported ? "unsupported-code" : "cycle-invalid");
+}
+
+bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &given, const CycleDef *pattern,
                                      const CycleArgs *patternArgs) {
   Impl &x = *this;
   std::string err;
+  CycleArgs args = given;  // FU/FZ feeds become mm/min with this call's spindle and tool (CycleFeed.h)
+  if (cyc) {
+    cyclefeed::Spindle sp{x.st.speed, 0};
+    if (auto t = x.machine.toolTable.find(x.st.toolInSpindle); x.st.toolInSpindle > 0 && t != x.machine.toolTable.end())
+      sp.teeth = t->second.teeth;
+    if (!cyclefeed::resolve(*cyc, args, sp, err)) return entryError(x, cyc->name, std::move(err));
+  }
   if ((cyc && !checkCycleArgs(*cyc, args, err)) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
     return x.error(err, "cycle-invalid");
   if (x.st.units != ModeValue::MM) return x.error("library cycles run in mm (G21) only", "unsupported-code");
@@ -335,11 +356,7 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
   bool ok = pattern ? expandPattern(*pattern, *patternArgs, cyc, args, ctx, steps, err)
                     : cyc->expand ? cyc->expand(args, ctx, steps, err)
                                   : (err = "a position pattern: give it a cycle to run", false);
-  if (!ok) {  // entry::unsupported marks a parameter value ncc does not honour
-    const bool unsupported = err.compare(0, entry::kUnsupported.size(), entry::kUnsupported) == 0;
-    if (unsupported) err.erase(0, entry::kUnsupported.size());
-    return x.error(std::string(name) + ": " + err, unsupported ? "unsupported-code" : "cycle-invalid");
-  }
+  if (!ok) return entryError(x, name, std::move(err));
   for (const CycleStep &s : steps)
     if ((s.kind == CycleStepKind::Feed || s.kind == CycleStepKind::Arc) && s.feed <= 0 && !x.checkFeed(name))
       return false;

@@ -363,6 +363,7 @@ void readEdges(Ctx &c, const toml::node &n, void *obj) {
 const KeyDef<ToolIn> kToolKeys[] = {
     {"number", &ToolIn::number, 0, 99999, false, nullptr, true},
     {"name", &ToolIn::name},
+    {"teeth", &ToolIn::teeth, 0, 999},
     {"edges", NodeReader(readEdges), 0, 0, false, nullptr, true},
     {"plunge_angle", &ToolIn::plungeAngle, 0, 90},  // TOOL.T ANGLE
     {"point_angle", &ToolIn::pointAngle, 0, 180},   // TOOL.T T-ANGLE

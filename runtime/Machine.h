@@ -50,6 +50,7 @@ struct ToolEdge {
 
 struct Tool {
   std::string name;
+  int teeth = 0;  // cutting edges (the TNC's CUT): Heidenhain FZ feeds per tooth (0: not given)
   std::map<int, ToolEdge> edges;  // by D number
   // Heidenhain TOOL.T data the machining cycles read (docs/MACHINE.md "[[tools]]"), 0 = not
   // given: ANGLE, the largest plunge angle (degrees from the plane) of helical and reciprocating

@@ -187,6 +187,24 @@ bool BlockParser::blkForm() {
   return true;
 }
 
+// A tool called by its name (TOOL CALL "name", the SL cycles' QS13 …): the machine's tool table
+// gives its number; null after an error at `at`.
+ExprPtr BlockParser::toolByName(const std::string &name, SourceLoc at) {
+  auto [from, to] = f_.pp.opts.toolNames.equal_range(name);
+  if (from == to) {
+    f_.error(at, fmt::format("tool \"{}\" is not in the machine's tool table", name), "unknown-tool");
+    return nullptr;
+  }
+  if (std::next(from) != to) {  // sister tools: the TNC picks by tool life, which ncc does not keep
+    f_.error(at, fmt::format("tool \"{}\" names {} tools of the machine's table (a replacement tool is chosen by tool "
+                             "life, which is not simulated): call the tool by number",
+                             name, std::distance(from, to)),
+             "unsupported-code");
+    return nullptr;
+  }
+  return Expr::number(from->second, ir::Type::Int, at);
+}
+
 // TOOL CALL n Z S F DL DR: select and change the tool (its length and radius from the machine's
 // table), the working plane of the tool axis, the spindle speed and the feed (also FAUTO's).
 bool BlockParser::tool() {
@@ -204,15 +222,7 @@ bool BlockParser::tool() {
   if (!expectWord("CALL")) return false;
   ExprPtr number;
   if (tok().kind == Tok::String) {  // a tool name: the machine's tool table gives its number
-    const std::string &name = tok().text;
-    auto [from, to] = f_.pp.opts.toolNames.equal_range(name);
-    if (from == to) return fail(tok(), fmt::format("tool \"{}\" is not in the machine's tool table", name), "unknown-tool");
-    if (std::next(from) != to)  // sister tools: the TNC picks by tool life, which ncc does not keep
-      return fail(tok(), fmt::format("tool \"{}\" names {} tools of the machine's table (a replacement tool is chosen by tool "
-                                     "life, which is not simulated): call the tool by number",
-                                     name, std::distance(from, to)),
-                  "unsupported-code");
-    number = Expr::number(from->second, ir::Type::Int);
+    if (!(number = toolByName(tok().text, loc()))) return false;
     ++i_;
   } else if (tok().kind == Tok::Number) {
     if (!tok().isInt) return fail(tok(), "a tool number is a whole number");

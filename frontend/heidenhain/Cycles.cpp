@@ -309,26 +309,19 @@ bool BlockParser::cycl() {
     std::string name;
     if (!cycleParamName(number, seen, name)) return false;
     if (inLib && !takes(lib.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
-    ExprPtr v;
-    if (tok().isWord("FAUTO")) {  // the feed of the last TOOL CALL, taken now (L570)
-      f_.pp.fauto = true;
-      v = hglobal(kFauto, loc());
-      ++i_;
-    } else if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FU") ||
-               tok().isWord("FZ")) {
-      if (inLib)
-        return fail(tok(), fmt::format("{}={} is not simulated yet", name, tok().kind == Tok::String ? "\"…\"" : tok().text),
-                    "unsupported-code");
-      ++i_;
-      continue;
-    } else if (!(v = signedValue())) {
-      return false;
-    }
-    if (inLib && !lib.pattern && name == "Q203") {  // CYCL CALL POS compares the tool with it
+    // FAUTO, FMAX, FU, FZ and PREDEF are the library's as numbers (FMAX, FU, FZ: the codes the
+    // executor resolves at the call, ir/CycleFeed.h); a cycle ncc does not run has them read only.
+    CycleValue cv;
+    if (!cycleValue(number, name, cv, inLib)) return false;
+    if (!inLib) continue;
+    if (cv.kind == CycleValue::Text)
+      return f_.error(cv.at, fmt::format("{} of cycle {} takes a number, not a string", name, number), "cycle-parameter");
+    ExprPtr v = std::move(cv.value);
+    if (!lib.pattern && name == "Q203") {  // CYCL CALL POS compares the tool with it
       f_.pp.surface = f_.cycleSurface = true;
       out().push_back(assignOp(hglobal(kSurface, bl), v->clone(), bl));
     }
-    if (inLib) c.set((lib.pattern ? "p." : "a.") + name, std::move(v));
+    c.set((lib.pattern ? "p." : "a.") + name, std::move(v));
   }
   Op note(OpKind::Comment, bl);
   note.set("text", Expr::string(fmt::format("CYCL DEF {}", n.text)));

@@ -111,6 +111,7 @@ public:
   bool mainInch = false;
   std::set<std::string> probeVars;  // the touch-probe cycles' scratch values (ProbeGen.cpp)
   std::set<std::string> slVars;  // the SL cycles' frozen parameters: declared by the main program
+  std::set<std::string> globalDefVars;  // the GLOBAL DEF values PREDEF reads (GlobalDef.cpp): … unset at the start
   bool ok = true;
   // The function of a called program (CALL PGM): parsed on first use; "" with an error at loc.
   std::string program(const std::string &written, uint32_t fromFile, SourceLoc loc);
@@ -149,6 +150,15 @@ struct PathWords {
       if (c.axis == axis) return &c;
     return nullptr;
   }
+};
+
+// A cycle parameter line's value (GlobalDef.cpp): a number or Q parameter, or what the manual
+// allows beside (docs/HEIDENHAIN.md "Cycle parameter values").
+struct CycleValue {
+  enum Kind { Number, Fauto, Fmax, PerRev, PerTooth, Predef, Text } kind = Number;
+  ir::ExprPtr value;  // null for Text; FMAX, FU, FZ as the feed codes of ir/CycleFeed.h
+  std::string text;   // Text: the string
+  SourceLoc at;       // where the value is written
 };
 
 // Which words a statement takes.
@@ -193,6 +203,7 @@ private:
   bool endPgm();
   bool blkForm();
   bool tool();
+  ir::ExprPtr toolByName(const std::string &name, SourceLoc at);  // a tool's number by its name
   bool fn();
   bool assign();
   bool label();
@@ -214,7 +225,10 @@ private:
   bool cyclCallPat();                              // Patterns.cpp
   bool patternDef();                               // Patterns.cpp
   bool select();                                   // Patterns.cpp: SEL PATTERN
-  bool globalDef();                                // Patterns.cpp: GLOBAL DEF 125
+  bool globalDef();                                // GlobalDef.cpp: GLOBAL DEF 100 … 125
+  // The value of parameter `name` of cycle `cycle` at the current token; with `emit`, PREDEF adds
+  // the check that a GLOBAL DEF gave the value (a run-time stop at the word otherwise).
+  bool cycleValue(int cycle, const std::string &name, CycleValue &v, bool emit);
   bool tchProbe();                                 // Probe.cpp: TCH PROBE
   bool oldProbeBlock(int number, int sub, const Token &n);  // Probe.cpp: TCH PROBE 0.0, 0.1
   bool approachDepart();                           // Approach.cpp: APPR, DEP
@@ -279,6 +293,10 @@ bool slCycle(int number);
 std::string slVar(int cycle, const std::string &q);
 // A program name written in a block: a string, or the words and numbers up to `stopWord`.
 std::string nameText(const std::vector<Token> &t, size_t &k, std::string_view stopWord);
+// The program-wide variable holding GLOBAL DEF's value of `q` ("Q200"), and its value before
+// any GLOBAL DEF gave one.
+std::string globalDefVar(const std::string &q);
+double globalDefUnset();
 // Sections (call_section) need label names; LBL 0 gets one per occurrence.
 std::string labelOf(const Token &t);
 

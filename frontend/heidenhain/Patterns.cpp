@@ -1,5 +1,5 @@
-// PATTERN DEF (all six forms), SEL PATTERN with point tables (.pnt), GLOBAL DEF 125 and CYCL
-// CALL PAT (seed002a §3.3, §3.4; manual L1160-L1676). The positions are computed when the call
+// PATTERN DEF (all six forms), SEL PATTERN with point tables (.pnt) and CYCL CALL PAT (seed002a
+// §3.3, §3.4; manual L1160-L1676; GLOBAL DEF 125's Q345: GlobalDef.cpp). The positions are computed when the call
 // runs, by the cycle library's `hei.PATTERN.…` patterns (runtime/cycles/HeiPatternDef.cpp): a
 // CYCL CALL PAT is one `cycle action=call pattern=…` per pattern form (a point table: per nine
 // rows).
@@ -224,35 +224,6 @@ bool BlockParser::select() {
   std::vector<Op> ops;
   addPositions(ops, exprs, loc(t_[0]));
   f_.pattern = std::move(ops);
-  return true;
-}
-
-// GLOBAL DEF 125 POSITIONING with Q345 (L3867-L3871; the text calls it Q352, L1273: the
-// example's Q345 is the parameter's name on the control): 1 moves between the positions of
-// CYCL CALL PAT at the cycle's 2nd set-up clearance. [model] it holds to the program's end.
-bool BlockParser::globalDef() {
-  if (!expectWord("DEF")) return false;
-  const Token &n = tok();
-  if (n.kind != Tok::Number || n.num != 125)
-    return fail(n, fmt::format("GLOBAL DEF {} is not simulated yet (only 125 POSITIONING)", n.text), "unsupported-code");
-  ++i_;
-  while (!atEnd() && tok().line == n.line) ++i_;  // the title
-  bool seen = false;
-  while (!atEnd()) {
-    const Token &q = tok();
-    if (!q.isWord("Q") || peek().kind != Tok::Number || peek().text != "345")
-      return fail(q, "GLOBAL DEF 125 takes Q345 (SELECT POS. HEIGHT)", "cycle-parameter");
-    if (seen) return fail(q, "Q345 twice in GLOBAL DEF 125", "cycle-parameter");
-    seen = true;
-    i_ += 2;
-    if (!tok().is("=")) return fail(tok(), "'=' expected after Q345");
-    ++i_;
-    ExprPtr v = signedValue();
-    if (!v) return false;
-    f_.pp.global125 = true;
-    out().push_back(assignOp(hglobal(kGlobal125, loc(q)), std::move(v), loc(q)));
-  }
-  if (!seen) return fail(n, "GLOBAL DEF 125 needs Q345", "cycle-parameter");
   return true;
 }
 

@@ -51,16 +51,15 @@ bool BlockParser::tchProbe() {
     if (!cycleParamName(number, seen, name, "TCH PROBE")) return false;
     if (pc && !listed(pc->params, name))
       return fail(q, fmt::format("{} is not a parameter of touch-probe cycle {}", name, number), "cycle-parameter");
-    if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FAUTO")) {
-      if (pc)
-        return fail(tok(), fmt::format("{}={} is not simulated yet", name, tok().kind == Tok::String ? "\"…\"" : tok().text),
-                    "unsupported-code");
-      ++i_;
-      continue;
-    }
-    ExprPtr v = signedValue();
-    if (!v) return false;
-    call.given[name] = std::move(v);
+    // PREDEF: GLOBAL DEF 120 PROBING's value (Q320, Q260, Q301); FAUTO: the TOOL CALL's feed;
+    // Q396=FMAX: the probe table's FMAX, which Q396=0 stands for in ncc's model (ProbeGen.cpp).
+    CycleValue cv;
+    if (!cycleValue(number, name, cv, pc != nullptr)) return false;
+    if (!pc) continue;
+    if (cv.kind == CycleValue::Text)
+      return f_.error(cv.at, fmt::format("{}=\"…\" is not simulated yet", name), "unsupported-code");
+    if (cv.kind == CycleValue::Fmax) cv.value = num(0, cv.at);
+    call.given[name] = std::move(cv.value);
   }
   if (!pc)
     return fail(n, fmt::format("touch-probe cycle {} is not simulated yet (TCH PROBE)", number), "unsupported-code");

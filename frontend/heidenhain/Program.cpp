@@ -161,6 +161,7 @@ bool parseHeidenhainProgram(SourceManager &sm, uint32_t fileId, const HeiOptions
   }
   for (const std::string &v : pp.probeVars) globals.push_back({v.c_str(), 0});
   for (const std::string &v : pp.slVars) globals.push_back({v.c_str(), 0});
+  for (const std::string &v : pp.globalDefVars) globals.push_back({v.c_str(), globalDefUnset()});
   std::vector<Op> decls;
   for (auto [g, init] : globals) {
     Op d(OpKind::Declare, {});

@@ -28,6 +28,10 @@ constexpr SlCycle kSl[] = {
     {270, "CONTOUR TRAIN DATA", "Q390 Q391 Q392 Q393 Q394"},
 };
 
+// The tool parameters a QS string may give by name, and the parameters of GLOBAL DEF 111.
+constexpr const char *kToolParams = "Q13 Q18 Q438";
+constexpr const char *kContourDefaults = "Q2 Q6 Q7 Q9";
+
 const SlCycle *slRow(int number) {
   for (auto &c : kSl)
     if (c.number == number) return &c;
@@ -87,23 +91,32 @@ bool BlockParser::slDefinition(int number, const Token &n) {
     const Token &q = tok();
     std::string name;
     if (!cycleParamName(number, given, name)) return false;
-    if (!takesParam(row.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
-    ExprPtr v;
-    if (tok().isWord("FAUTO")) {  // the feed of the last TOOL CALL, taken now (L570)
-      f_.pp.fauto = true;
-      v = hglobal(kFauto, loc());
-      ++i_;
-    } else if (name == "Q208" && tok().isWord("FMAX")) {  // the retract at rapid
+    // QS13, QS18, QS438: the tool by its name instead of Q13 … (L9360, L9484, L9802).
+    const bool named = name.rfind("QS", 0) == 0;
+    if (named) name = "Q" + name.substr(2);
+    if (!takesParam(row.params, name) || (named && !takesParam(kToolParams, name)))
+      return fail(q, fmt::format("{}{} is not a parameter of cycle {}", named ? "QS" : "Q", name.substr(1), number), "cycle-parameter");
+    if (named && !given.insert(name).second)
+      return fail(q, fmt::format("{} and QS{} both in CYCL DEF {}", name, name.substr(1), number), "cycle-parameter");
+    CycleValue cv;
+    if (!cycleValue(number, name, cv, true)) return false;
+    ExprPtr v = std::move(cv.value);
+    if (named != (cv.kind == CycleValue::Text))
+      return f_.error(cv.at, named ? fmt::format("QS{} takes the tool's name in quotes", name.substr(1))
+                                   : fmt::format("{} takes a number (QS{} the tool's name)", name, name.substr(1)),
+                      "cycle-parameter");
+    if (named && !(v = toolByName(cv.text, cv.at))) return false;
+    if (cv.kind == CycleValue::Fmax) {  // Q208: the retract at rapid
       fmaxOut = true;
-      ++i_;
       continue;
-    } else if (tok().kind == Tok::String || tok().isWord("PREDEF") || tok().isWord("FMAX") || tok().isWord("FU") ||
-               tok().isWord("FZ")) {
-      return fail(tok(), fmt::format("{}={} is not simulated yet", name, tok().kind == Tok::String ? "\"…\"" : tok().text),
-                  "unsupported-code");
-    } else if (!(v = signedValue())) {
-      return false;
     }
+    if (cv.kind == CycleValue::PerRev || cv.kind == CycleValue::PerTooth)
+      return f_.error(cv.at, fmt::format("{}={} in the SL cycles is not simulated yet", name, cv.kind == CycleValue::PerRev ? "FU" : "FZ"),
+                      "unsupported-code");
+    if (cv.kind == CycleValue::Predef && !takesParam(kContourDefaults, name))
+      return f_.error(cv.at, fmt::format("{}=PREDEF: the SL cycles take PREDEF for the values of GLOBAL DEF 111 CONTOUR MILLING ({})",
+                                         name, kContourDefaults),
+                      "cycle-parameter");
     std::string var = slVar(number, name);
     f_.pp.slVars.insert(var);
     out().push_back(assignOp(Expr::var(ir::VarSpace::Global, var, nullptr, bl), std::move(v), bl));
