@@ -327,6 +327,10 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
   ctx.spindle = x.st.spindle;
   ctx.speed = x.st.speed;
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
+  // A captured contour belongs to the one cycle after it (CYCLE95's NPP).
+  const CycleContour kept = std::move(x.keptContour);
+  if (x.keptSet) ctx.contour = &kept;
+  x.keptSet = false;
   std::vector<CycleStep> steps;
   const char *name = pattern ? pattern->name : cyc->name;
   bool ok = pattern ? expandPattern(*pattern, *patternArgs, cyc, args, ctx, steps, err)

@@ -35,4 +35,10 @@ struct Contour {
   std::vector<ContourElem> elems;
 };
 
+// The contour a library cycle cuts from (CycleContext::contour, Sinumerik CYCLE95): a type of its
+// own for Library.h, whose users may also see the milling paths' Contour (Mill.h).
+struct CycleContour {
+  Contour contour;
+};
+
 }  // namespace ncc

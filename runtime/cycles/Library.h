@@ -15,6 +15,8 @@
 
 namespace ncc {
 
+struct CycleContour;  // runtime/cycles/Contour.h
+
 // A cycle's arguments by parameter name (positional calls are mapped to names by the front end
 // from the entry's parameter list). Omitted parameters are absent, not 0.
 struct CycleArgs {
@@ -36,6 +38,9 @@ struct CycleContext {
   int spindle = 0;                  // 0 stop, 1 cw, 2 ccw
   double speed = 0;                 // rpm
   double toolRadius = 0;            // mm, the active tool's (0: no tool or no radius)
+  // The contour captured for this cycle (CycleDef::contour): ZX plane coordinates, x a radius;
+  // null when none was captured.
+  const CycleContour *contour = nullptr;
 };
 
 struct CycleDef {
@@ -55,6 +60,9 @@ struct CycleDef {
   // with a `~` before it is one for the control's input screens only (CYCLE99's thread table
   // _PTAB): the front end accepts and drops it.
   const char *strings = nullptr;
+  // The STRING parameter that names the contour the cycle cuts from (CYCLE95's NPP): the front
+  // end captures it before the call, the executor hands it over in CycleContext::contour.
+  const char *contour = nullptr;
 };
 
 // The entries of each file of the library (Library.cpp: holes and patterns, ClearingEntries.cpp:
@@ -69,6 +77,7 @@ void addHeiPatternEntries(std::vector<CycleDef> &out);  // HeiPatternDef.cpp
 void addHeiThreadMillEntries(std::vector<CycleDef> &out);  // HeiThreadMill.cpp: 262-267
 void addHeiDeepHoleEntries(std::vector<CycleDef> &out);    // HeiDeepHole.cpp: 204, 205, 241
 void addSinThreadEntries(std::vector<CycleDef> &out);      // SinThread.cpp: CYCLE98, CYCLE99
+void addSinTurningEntries(std::vector<CycleDef> &out);     // SinTurning.cpp: CYCLE951
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 
