@@ -327,9 +327,16 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &args,
   ctx.spindle = x.st.spindle;
   ctx.speed = x.st.speed;
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
-  // A captured contour belongs to the one cycle after it (CYCLE95's NPP).
-  const CycleContour kept = std::move(x.keptContour);
-  if (x.keptSet) ctx.contour = &kept;
+  // A captured contour belongs to the one cycle after it (CYCLE95's NPP); it was captured in the
+  // offset frame (Contour.h), the cycle works in program coordinates (ZX: a = Z, b = X).
+  CycleContour kept = std::move(x.keptContour);
+  if (x.keptSet) {
+    const Pt2 off{x.frameOffset(2), x.frameOffset(0)};
+    auto toProgram = [&](Pt2 &p) { p.a -= off.a, p.b -= off.b; };
+    toProgram(kept.contour.start);
+    for (ContourElem &e : kept.contour.elems) toProgram(e.end), toProgram(e.centre);
+    ctx.contour = &kept;
+  }
   x.keptSet = false;
   std::vector<CycleStep> steps;
   const char *name = pattern ? pattern->name : cyc->name;

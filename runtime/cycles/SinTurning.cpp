@@ -52,8 +52,8 @@ bool roundedPath(const std::vector<Pt2> &pts, const std::vector<Round> &rounds, 
   }
   for (size_t i = 0; i + 1 < n; ++i)
     if (cut[i] + cut[i + 1] > length(minus(pts[i + 1], pts[i])) + 1e-7)
-      return fail(err, fmt::format("the radius or chamfer {} does not fit its edge (edge length {:g})",
-                                   cut[i] > 0 ? (int)i : (int)i + 1, length(minus(pts[i + 1], pts[i]))));
+      return fail(err, fmt::format("a radius or chamfer does not fit its edge (edge length {:g})",
+                                   length(minus(pts[i + 1], pts[i]))));
   auto line = [&](Pt2 to) {
     ContourElem e;
     e.end = to;
@@ -448,7 +448,8 @@ bool sinCycle95(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleSt
     std::vector<ContourElem> moves;
     if (!stockRemoval(job, s, moves, err)) {
       if (err.find("monotonic") != std::string::npos)
-        return unsupported(err, "contours with undercuts (not monotonic along the cut and across it) are not supported: " + err);
+        return unsupported(err, std::string("contours with undercuts are not supported: the contour must run monotonic along ") +
+                                    (ca == 0 ? "Z and X" : "X and Z") + " (FF2 is not used)");
       return false;
     }
     contourSteps(moves, C, y, ff1, dam, dt, out);
