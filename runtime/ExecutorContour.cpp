@@ -2,7 +2,8 @@
 // executor runs the blocks as usual, but their records go to a capture instead of the sinks
 // (RouteSink); `end` hands the captured path to a consumer: Finish replays it as it ran (ISO G70),
 // the roughing consumers (G71 G72 G73, runtime/cycles/Turning.h) put the modal state back (the
-// blocks were only read) and cut from the contour. Every consumer ends at the start point.
+// blocks were only read) and cut from the contour. Every consumer ends at the start point. Keep
+// (Sinumerik CYCLE95) only puts the state back and keeps the contour for the library cycle after it.
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
 #include "runtime/cycles/Turning.h"
