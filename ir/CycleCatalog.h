@@ -23,6 +23,9 @@ struct CycleSignature {
   const char *params = nullptr;  // the positional parameter names, space-separated
   const char *strings = nullptr; // the STRING parameters (the others take numbers)
   bool pattern = false;          // a position pattern (HOLES1), not a machining cycle
+  // The STRING parameter naming a contour the cycle cuts from (CYCLE95's NPP): the front end runs
+  // that contour into a capture before the call (docs/IR.md §5.6 `use=keep`); null for none.
+  const char *contour = nullptr;
 };
 // False when the library has no entry of that name.
 using CycleLookup = bool (*)(std::string_view name, CycleSignature &out);

@@ -143,7 +143,8 @@ enum class ContourAction : uint8_t { Data, Begin, End, Run };
 // Rs274*: LinuxCNC's G70, G71 and G72 (runtime/cycles/TurningRs274.h).
 enum class ContourUse : uint8_t {
   Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket, Sub, Pilot, Floor,
-  Side, Train, Rs274Finish, Rs274RoughZ, Rs274RoughX
+  Side, Train, Rs274Finish, Rs274RoughZ, Rs274RoughX,
+  Keep  // the captured contour is kept for the next library cycle (Sinumerik CYCLE95's NPP)
 };
 // What a `cycle` op does (docs/IR.md §5.8): Run the entry here (at each position of its
 // pattern), Define store it for Call (Heidenhain CYCL DEF), Modal store it and run it after each

@@ -2,7 +2,8 @@
 // executor runs the blocks as usual, but their records go to a capture instead of the sinks
 // (RouteSink); `end` hands the captured path to a consumer: Finish replays it as it ran (ISO G70),
 // the roughing consumers (G71 G72 G73, runtime/cycles/Turning.h) put the modal state back (the
-// blocks were only read) and cut from the contour. Every consumer ends at the start point.
+// blocks were only read) and cut from the contour. Every consumer ends at the start point. Keep
+// (Sinumerik CYCLE95) only puts the state back and keeps the contour for the library cycle after it.
 #include "runtime/ExecutorImpl.h"
 #include "runtime/Geometry.h"
 #include "runtime/cycles/Turning.h"
@@ -16,6 +17,8 @@ namespace ncc {
 namespace {
 const char *const kUseNames[] = {"contour.finish", "contour.rough_z", "contour.rough_x", "contour.pattern"};
 const char *const kRs274Names[] = {"rs274.G70", "rs274.G71", "rs274.G72"};
+
+bool rs274Use(ContourUse u) { return u >= ContourUse::Rs274Finish && u <= ContourUse::Rs274RoughX; }
 
 // What a record inside a contour may be: motion becomes an element, state records are read
 // (their effect is in the captured feeds), the rest has no place in a contour.
@@ -72,7 +75,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
   case ContourAction::Data: return contourData(c);
   case ContourAction::Begin:
     if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
-    if ((ContourUse)c.sub2 >= ContourUse::Rs274Finish && !rs274ContourAllowed((ContourUse)c.sub2)) return false;
+    if (rs274Use((ContourUse)c.sub2) && !rs274ContourAllowed((ContourUse)c.sub2)) return false;
     if (linearFrame()) return error("contour cycles under a rotation, scaling or mirror are not supported", "unsupported-code");
     if (comp.active()) return error("contour cycles with cutter compensation on are not supported", "unsupported-code");
     cornerFlush("a contour begins");
@@ -192,7 +195,12 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
   std::string err;
   // Plane coordinates of X and Z: the turning consumers need the ZX plane.
   if (plane() != Plane::ZX) return error("turning contour cycles need the ZX plane (G18)", "unsupported-code");
-  if (use >= ContourUse::Rs274Finish) return rs274Contour(c, ct);
+  if (rs274Use(use)) return rs274Contour(c, ct);
+  if (use == ContourUse::Keep) {  // for the library cycle that follows (CYCLE95)
+    keptContour.contour = ct;
+    keptSet = true;
+    return true;
+  }
   const int ix = 1, iz = 0;  // G18: a = Z, b = X
   // The finishing allowance: U along X (a diameter when X is), W along Z, signed as programmed.
   double allowance[2] = {0, 0};

@@ -351,6 +351,17 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &given
   if (auto t = x.machine.toolTable.find(x.st.toolInSpindle); t != x.machine.toolTable.end())
     ctx.plungeAngle = t->second.plungeAngle, ctx.pointAngle = t->second.pointAngle,
     ctx.cuttingLength = t->second.cuttingLength;
+  // A captured contour belongs to the one cycle after it (CYCLE95's NPP); it was captured in the
+  // offset frame (Contour.h), the cycle works in program coordinates (ZX: a = Z, b = X).
+  CycleContour kept = std::move(x.keptContour);
+  if (x.keptSet) {
+    const Pt2 off{x.frameOffset(2), x.frameOffset(0)};
+    auto toProgram = [&](Pt2 &p) { p.a -= off.a, p.b -= off.b; };
+    toProgram(kept.contour.start);
+    for (ContourElem &e : kept.contour.elems) toProgram(e.end), toProgram(e.centre);
+    ctx.contour = &kept;
+  }
+  x.keptSet = false;
   std::vector<CycleStep> steps;
   const char *name = pattern ? pattern->name : cyc->name;
   bool ok = pattern ? expandPattern(*pattern, *patternArgs, cyc, args, ctx, steps, err)

@@ -4,6 +4,7 @@
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Frame.h"
+#include "runtime/cycles/Contour.h"
 #include "runtime/cycles/Library.h"
 #include "runtime/cycles/Region.h"
 #include "runtime/cycles/Thread.h"
@@ -589,6 +590,9 @@ struct Executor::Impl {
   bool roughSet = false;
   double patternReliefX = 0, patternReliefZ = 0, patternCount = 0;
   bool patternSet = false;
+  // A contour kept for the next library cycle (use=keep, Sinumerik CYCLE95's NPP): ZX plane.
+  CycleContour keptContour;
+  bool keptSet = false;
   bool contourData(const MachineCmd &c);
   bool contourConsume(const MachineCmd &c);
   bool rs274Contour(const MachineCmd &c, const struct Contour &ct);  // LinuxCNC G70-G72

@@ -35,6 +35,7 @@ static int stringParam(std::string_view list, std::string_view param) {
 
 bool BlockParser::libraryCycle(bool modal, const std::string &name, const CycleSignature &lib, const Token &at) {
   SourceLoc l = loc(at);
+  if (modal && lib.contour) return fail(at, fmt::format("MCALL takes a drilling or milling cycle, not {}", name));
   if (modal && lib.pattern)
     return fail(at, fmt::format("MCALL takes a drilling or milling cycle, not the position pattern {}", name));
   std::vector<std::string> params;
@@ -71,7 +72,60 @@ bool BlockParser::libraryCycle(bool modal, const std::string &name, const CycleS
     Op cancel(OpKind::ModalCall, l);  // replaces a subprogram's modal call
     post_.push_back(std::move(cancel));
   }
+  if (lib.contour && !contourCapture(name, lib.contour, c, at)) return false;
   post_.push_back(std::move(c));
+  return true;
+}
+
+// A cycle that works from a named contour (CYCLE95's NPP): the contour's blocks run into a
+// capture the cycle then cuts from (docs/IR.md §5.6 `use=keep`), before the cycle op:
+//   contour action=begin use=keep
+//   call callee="NAME" frame=new          (a subprogram)  |  call_section from="A" to="B" ("A:B")
+//   contour action=end use=keep
+bool BlockParser::contourCapture(const std::string &name, const char *param, const Op &cycle, const Token &at) {
+  SourceLoc l = loc(at);
+  const Expr *npp = cycle.get(std::string("a.") + param);
+  if (!npp) return fail(at, fmt::format("{} needs the contour's name {}", name, param), "missing-word");
+  if (npp->kind != ir::ExprKind::String)
+    return fail(at, fmt::format("{} {}: the contour's name must be a constant string", name, param), "unsupported-code");
+  std::string text = npp->str;
+  for (char &ch : text) ch = (char)std::toupper((unsigned char)ch);
+  if (text.empty()) return fail(at, fmt::format("{} {}: the contour's name is empty", name, param), "cycle-invalid");
+  Op begin(OpKind::Contour, l);
+  begin.set("action", Expr::symbol("begin", l));
+  begin.set("use", Expr::symbol("keep", l));
+  post_.push_back(std::move(begin));
+  if (size_t colon = text.find(':'); colon != std::string::npos) {  // a section of this program
+    std::string from = text.substr(0, colon), to = text.substr(colon + 1);
+    if (from.empty() || to.empty() || to.find(':') != std::string::npos)
+      return fail(at, fmt::format("{} {} \"{}\": a contour section is \"START:END\", two labels", name, param, npp->str),
+                  "cycle-invalid");
+    Op s(OpKind::CallSection, l);
+    s.set("from", Expr::string(from, l));
+    s.set("to", Expr::string(to, l));
+    post_.push_back(std::move(s));
+  } else {  // a subprogram
+    std::string type, callee = calledProgram(text, type);
+    if (!type.empty()) callee = "_N_" + callee + "_" + type;
+    const Signature *sig = f_.pp.callee(callee, l, nullptr, type);
+    if (!sig) {
+      failed_ = true;
+      return false;
+    }
+    if (!sig->params.empty())
+      return fail(at, fmt::format("{} {}: the contour subprogram {} takes parameters", name, param, callee), "cycle-invalid");
+    if (sig->retTarget)
+      return fail(at, fmt::format("{} {}: the contour subprogram {} returns with RET(target)", name, param, callee),
+                  "unsupported-code");
+    Op call(OpKind::Call, l);
+    call.set("callee", Expr::string(callee, l));
+    call.set("frame", Expr::symbol("new", l));
+    post_.push_back(std::move(call));
+  }
+  Op end(OpKind::Contour, l);
+  end.set("action", Expr::symbol("end", l));
+  end.set("use", Expr::symbol("keep", l));
+  post_.push_back(std::move(end));
   return true;
 }
 

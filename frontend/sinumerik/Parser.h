@@ -228,6 +228,7 @@ private:
   // A standard cycle from the library (Cycles.cpp): `NAME(args)` runs it here (a position
   // pattern: the modal cycle at each position), `MCALL NAME(args)` makes it modal.
   bool libraryCycle(bool modal, const std::string &name, const CycleSignature &lib, const Token &at);
+  bool contourCapture(const std::string &name, const char *param, const ir::Op &cycle, const Token &at);
   ir::Op cycleCancel(SourceLoc l) const;
   bool gotoStatement(const std::string &kw, std::vector<ir::Op> &into);
   bool ifStatement();

@@ -1,7 +1,7 @@
 // A captured contour (runtime/ExecutorContour.cpp): the path of a block range that ran into a
 // capture instead of the machine, as lines and arcs in the coordinates of the active plane, for
-// the consumers that work from a contour (ISO G70-G73 today, runtime/cycles/Turning.h; later
-// Heidenhain SL cycles and Sinumerik CYCLE95). Plane coordinates: `a` is the plane's first axis,
+// the consumers that work from a contour (ISO G70-G73, runtime/cycles/Turning.h; Sinumerik
+// CYCLE95, SinTurning.cpp, through `use=keep`; Heidenhain SL cycles). Plane coordinates: `a` is the plane's first axis,
 // `b` its second (G17: X Y, G18: Z X, G19: Y Z), mm in the executor's offset frame (the machine
 // frame while only translations are active; a diameter-programmed X is a radius here).
 #pragma once
@@ -33,6 +33,12 @@ struct ContourElem {
 struct Contour {
   Pt2 start;  // where the tool stood when the capture began
   std::vector<ContourElem> elems;
+};
+
+// The contour a library cycle cuts from (CycleContext::contour, Sinumerik CYCLE95): a type of its
+// own for Library.h, whose users may also see the milling paths' Contour (Mill.h).
+struct CycleContour {
+  Contour contour;
 };
 
 }  // namespace ncc

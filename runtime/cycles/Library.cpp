@@ -748,6 +748,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addHeiThreadMillEntries(v);
     addHeiDeepHoleEntries(v);
     addSinThreadEntries(v);
+    addSinTurningEntries(v);
     return v;
   }();
   return all;
@@ -762,7 +763,7 @@ const CycleDef *findCycle(std::string_view name) {
 bool cycleSignature(std::string_view name, CycleSignature &out) {
   const CycleDef *d = findCycle(name);
   if (!d) return false;
-  out = {d->name, d->params, d->strings ? d->strings : "", d->positions != nullptr};
+  out = {d->name, d->params, d->strings ? d->strings : "", d->positions != nullptr, d->contour};
   return true;
 }
 

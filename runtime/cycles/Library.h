@@ -15,6 +15,8 @@
 
 namespace ncc {
 
+struct CycleContour;  // runtime/cycles/Contour.h
+
 // A cycle's arguments by parameter name (positional calls are mapped to names by the front end
 // from the entry's parameter list). Omitted parameters are absent, not 0.
 struct CycleArgs {
@@ -39,6 +41,9 @@ struct CycleContext {
   // The active tool's table data (Tool in runtime/Machine.h; 0: not given): the largest plunge
   // angle ANGLE and the point angle T-ANGLE in degrees, the cutting length LCUTS in mm.
   double plungeAngle = 0, pointAngle = 0, cuttingLength = 0;
+  // The contour captured for this cycle (CycleDef::contour): ZX plane coordinates, x a radius;
+  // null when none was captured.
+  const CycleContour *contour = nullptr;
 };
 
 struct CycleDef {
@@ -58,6 +63,9 @@ struct CycleDef {
   // with a `~` before it is one for the control's input screens only (CYCLE99's thread table
   // _PTAB): the front end accepts and drops it.
   const char *strings = nullptr;
+  // The STRING parameter that names the contour the cycle cuts from (CYCLE95's NPP): the front
+  // end captures it before the call, the executor hands it over in CycleContext::contour.
+  const char *contour = nullptr;
 };
 
 // The entries of each file of the library (Library.cpp: holes and patterns, ClearingEntries.cpp:
@@ -73,6 +81,7 @@ void addHeiPatternEntries(std::vector<CycleDef> &out);  // HeiPatternDef.cpp
 void addHeiThreadMillEntries(std::vector<CycleDef> &out);  // HeiThreadMill.cpp: 262-267
 void addHeiDeepHoleEntries(std::vector<CycleDef> &out);    // HeiDeepHole.cpp: 204, 205, 241
 void addSinThreadEntries(std::vector<CycleDef> &out);      // SinThread.cpp: CYCLE98, CYCLE99
+void addSinTurningEntries(std::vector<CycleDef> &out);     // SinTurning.cpp: CYCLE951
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 

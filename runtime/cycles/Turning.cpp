@@ -230,9 +230,11 @@ bool stockRemoval(const Contour &c, const StockRemoval &s, std::vector<ContourEl
       if (l < top - 1e-6) best = std::max(best, l);
     return best;
   };
+  const double qBase = std::isnan(s.layersFrom) ? qC : sq * s.layersFrom;
+  if (qBase < qC - kEps) return err = "the layers would begin before the start point", false;
   double qNow = qC;  // across the layers, where the tool is
   for (int k = 1;; ++k) {
-    const double q = qC + k * s.depth;
+    const double q = qBase + k * s.depth;
     if (q >= qMax - kEps) break;
     // The stretches of this layer where the contour lies deeper than it.
     std::vector<double> cuts = pr.crossings(q);

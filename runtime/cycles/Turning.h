@@ -4,6 +4,7 @@
 #pragma once
 #include "runtime/cycles/Contour.h"
 
+#include <cmath>
 #include <string>
 
 namespace ncc {
@@ -22,6 +23,10 @@ struct StockRemoval {
   // Type II (the first contour block names both axes): the contour may have pockets across the
   // layers (not monotonic in the other axis); it must still run one way along the cut.
   bool typeII = false;
+  // The level the layers count from, on the axis across the layers (plane coordinates): the
+  // layers lie `depth`, 2 `depth` … beyond it. NaN: the start point's level (ISO G71/G72).
+  // Sinumerik CYCLE95 counts from the contour's top so that equal layers end on its bottom.
+  double layersFrom = std::nan("");
 };
 bool stockRemoval(const Contour &c, const StockRemoval &s, std::vector<ContourElem> &out, std::string &err);
 
