@@ -6,6 +6,7 @@
 // table and its [emit.heidenhain] keys with the word-address writer (Emitter.cpp); what it writes
 // is read back by frontend/heidenhain (docs/EMIT.md "Klartext").
 #include "backends/emit/EmitterImpl.h"
+#include "ir/CycleFeed.h"
 #include "runtime/cycles/Library.h"
 
 #include <fmt/format.h>
@@ -417,9 +418,11 @@ bool Klartext::nativeCycle(const MotionRecord &r) {
       const double *mz = r.param("mz");
       value += mz ? *mz : 0;
     }
-    std::string digits;
-    if (!formatNumber(value, f, digits)) return false;
-    signDigits(digits);
+    std::string digits = "FMAX";  // a feed of FMAX (ir/CycleFeed.h) is written as the keyword
+    if (value != cyclefeed::kRapid) {
+      if (!formatNumber(value, f, digits)) return false;
+      signDigits(digits);
+    }
     std::string l = "  " + std::string(name) + "=" + digits;
     for (auto &[q, what] : kQComments)
       if (name == q) l += " ;" + std::string(what);
