@@ -43,6 +43,14 @@ Contour halfTurn(Contour c) {
   return c;
 }
 
+double arcSweep(PlanePoint from, const PathSeg &s) {
+  double a0 = std::atan2(from[1] - s.centre[1], from[0] - s.centre[0]);
+  double a1 = std::atan2(s.end[1] - s.centre[1], s.end[0] - s.centre[0]);
+  double sweep = s.ccw ? a1 - a0 : a0 - a1;
+  if (sweep <= 1e-12) sweep += 2 * M_PI;
+  return sweep;
+}
+
 Polygon contourPolygon(const Contour &c, double tol) {
   Polygon out;
   PlanePoint at = c.start;
@@ -50,9 +58,7 @@ Polygon contourPolygon(const Contour &c, double tol) {
     if (s.arc) {
       double r = std::hypot(at[0] - s.centre[0], at[1] - s.centre[1]);
       double a0 = std::atan2(at[1] - s.centre[1], at[0] - s.centre[0]);
-      double a1 = std::atan2(s.end[1] - s.centre[1], s.end[0] - s.centre[0]);
-      double sweep = s.ccw ? a1 - a0 : a0 - a1;
-      if (sweep <= 1e-12) sweep += 2 * M_PI;
+      double sweep = arcSweep(at, s);
       // The region lies left of the contour: inside a counter-clockwise arc, whose chords (corners
       // on it, half-angle h) sag r (1 - cos h) <= tol inward; outside a clockwise one, which gets
       // tangents instead (corners r / cos h out), so the polygon never takes in material.

@@ -27,6 +27,9 @@ Contour halfTurn(Contour c);
 // The contour as a polygon within `tol` of it that takes in nothing beyond it (the region lies
 // left of the contour): chords inside counter-clockwise arcs, tangents outside clockwise ones.
 Polygon contourPolygon(const Contour &c, double tol);
+// The turn of arc segment `s` from `from` in its direction, (0, 2 pi] (an end on the start: a
+// full turn).
+double arcSweep(PlanePoint from, const PathSeg &s);
 
 class Mill {
 public:

@@ -284,14 +284,7 @@ namespace {
 Ramp lineRamp(const Contour &line) {
   const PathSeg &s = line.segs[0];
   double len = std::hypot(s.end[0] - line.start[0], s.end[1] - line.start[1]);
-  if (s.arc) {
-    const double r = std::hypot(line.start[0] - s.centre[0], line.start[1] - s.centre[1]);
-    double sweep = std::atan2(s.end[1] - s.centre[1], s.end[0] - s.centre[0]) -
-                   std::atan2(line.start[1] - s.centre[1], line.start[0] - s.centre[0]);
-    if (s.ccw && sweep <= 0) sweep += 2 * M_PI;
-    if (!s.ccw && sweep >= 0) sweep -= 2 * M_PI;
-    len = r * std::fabs(sweep);
-  }
+  if (s.arc) len = std::hypot(line.start[0] - s.centre[0], line.start[1] - s.centre[1]) * arcSweep(line.start, s);
   return {line.start, s.end, s.arc, s.centre, s.ccw, len};
 }
 }  // namespace
