@@ -8,6 +8,7 @@
 #include "ir/OpSymbols.h"
 #include "ir/SystemVars.h"
 #include "ir/NCIR.h"
+#include "ir/WordList.h"
 #include "ir/Value.h"
 
 #include <fmt/format.h>
@@ -33,16 +34,6 @@ const VarRule kIntConstRules[] = {{OpKind::Block, "n"}, {OpKind::Block, "skip"}}
 // Keys of `call` besides the `a.<name>` arguments.
 const char *kCallKeys = "callee count frame result";
 
-bool inList(std::string_view list, std::string_view word) {
-  size_t i = 0;
-  while (i < list.size()) {
-    size_t j = list.find(' ', i);
-    if (j == std::string_view::npos) j = list.size();
-    if (list.substr(i, j - i) == word) return true;
-    i = j + 1;
-  }
-  return false;
-}
 
 std::string lower(std::string_view s) {
   std::string o(s);
@@ -154,9 +145,9 @@ private:
       if (!seen.insert(a.key).second) error(op.loc, fmt::format("'{}' has argument '{}' twice", info.name, a.key));
       bool ok;
       if (op.kind == OpKind::Call || op.kind == OpKind::ModalCall)
-        ok = inList(op.kind == OpKind::Call ? kCallKeys : "callee count", a.key) ||
+        ok = inWordList(op.kind == OpKind::Call ? kCallKeys : "callee count", a.key) ||
              (a.key.size() > 2 && a.key.compare(0, 2, "a.") == 0);
-      else ok = std::string_view(info.allowed) == "*" || inList(info.required, a.key) || inList(info.allowed, a.key);
+      else ok = std::string_view(info.allowed) == "*" || inWordList(info.required, a.key) || inWordList(info.allowed, a.key);
       if (!ok) error(op.loc, fmt::format("'{}' has unknown argument '{}'", info.name, a.key));
     }
     std::string_view req = info.required;

@@ -2,6 +2,7 @@
 // the cycles' parameters.
 #include "frontend/heidenhain/Cycles.h"
 #include "frontend/heidenhain/Parser.h"
+#include "ir/WordList.h"
 
 #include <fmt/format.h>
 
@@ -18,13 +19,6 @@ bool defActiveNumber(int n) {
   return k.count(n) || (n >= 400 && n < 500) || (n >= 1400 && n < 1500);
 }
 
-bool takes(std::string_view params, std::string_view q) {
-  for (size_t at = 0; (at = params.find(q, at)) != std::string_view::npos; at += q.size()) {
-    size_t end = at + q.size();
-    if ((at == 0 || params[at - 1] == ' ') && (end == params.size() || params[end] == ' ')) return true;
-  }
-  return false;
-}
 }  // namespace
 
 bool defActiveCycle(int number) { return defActiveNumber(number); }
@@ -308,7 +302,7 @@ bool BlockParser::cycl() {
     const Token &q = tok();
     std::string name;
     if (!cycleParamName(number, seen, name)) return false;
-    if (inLib && !takes(lib.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
+    if (inLib && !inWordList(lib.params, name)) return fail(q, fmt::format("{} is not a parameter of cycle {}", name, number), "cycle-parameter");
     // FAUTO, FMAX, FU, FZ and PREDEF are the library's as numbers (FMAX, FU, FZ: the codes the
     // executor resolves at the call, ir/CycleFeed.h); a cycle ncc does not run has them read only.
     CycleValue cv;

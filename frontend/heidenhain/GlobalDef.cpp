@@ -4,10 +4,10 @@
 // blocks that give the PREDEF values (L948-L1158).
 #include "frontend/heidenhain/Parser.h"
 #include "ir/CycleFeed.h"
+#include "ir/WordList.h"
 
 #include <fmt/format.h>
 
-#include <sstream>
 
 namespace ncc::hei {
 
@@ -30,16 +30,10 @@ constexpr GlobalGroup kGroups[] = {
     {125, "POSITIONING", "Q345"},               // CYCL CALL PAT between the points (Patterns.cpp)
 };
 
-bool inList(std::string_view list, std::string_view w) {
-  std::istringstream in{std::string(list)};
-  for (std::string x; in >> x;)
-    if (x == w) return true;
-  return false;
-}
 
 const GlobalGroup *groupOf(const std::string &q) {
   for (const GlobalGroup &g : kGroups)
-    if (inList(g.params, q)) return &g;
+    if (inWordList(g.params, q)) return &g;
   return nullptr;
 }
 
@@ -74,7 +68,7 @@ constexpr KeywordRule kKeywords[] = {
 
 unsigned keywordsOf(int cycle, const std::string &q) {
   for (const KeywordRule &r : kKeywords)
-    if (q == r.q && (!r.cycles || inList(r.cycles, std::to_string(cycle)))) return r.allowed;
+    if (q == r.q && (!r.cycles || inWordList(r.cycles, std::to_string(cycle)))) return r.allowed;
   return 0;
 }
 
@@ -180,7 +174,7 @@ bool BlockParser::globalDef() {
     const Token &q = tok();
     std::string name;
     if (!cycleParamName(g->number, seen, name, "GLOBAL DEF")) return false;
-    if (!inList(g->params, name))
+    if (!inWordList(g->params, name))
       return fail(q, fmt::format("{} is not a parameter of {} ({})", name, block, g->params), "cycle-parameter");
     CycleValue v;
     if (!cycleValue(g->number, name, v, true)) return false;

@@ -5,6 +5,7 @@
 // rows).
 #include "frontend/SubprogramFiles.h"
 #include "frontend/heidenhain/Parser.h"
+#include "ir/WordList.h"
 
 #include <fmt/format.h>
 
@@ -32,12 +33,6 @@ const Form kForms[] = {
     {"PITCHCIRC", "hei.PATTERN.PITCHCIRC", "X Y D START STEP NUM Z"},
 };
 
-bool listed(std::string_view list, std::string_view w) {
-  std::istringstream in{std::string(list)};
-  for (std::string s; in >> s;)
-    if (s == w) return true;
-  return false;
-}
 
 // The call op of one pattern form, its own arguments set.
 Op patternOp(const char *entry, SourceLoc l) {
@@ -92,7 +87,7 @@ bool BlockParser::patternDef() {
       std::string name = k.text;
       bool inc = isPos && name.size() == 2 && name[0] == 'I';
       if (inc) name.erase(0, 1);
-      if (k.kind != Tok::Word || !listed(form->words, name))
+      if (k.kind != Tok::Word || !inWordList(form->words, name))
         return fail(k, fmt::format("'{}' is not a word of {} (it takes: {})", k.text, form->word, form->words));
       if (inc && lastPos == 1) return fail(k, "POS1 is absolute (L1283): no incremental coordinates");
       ++i_;

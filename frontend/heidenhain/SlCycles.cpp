@@ -5,6 +5,7 @@
 // pocket or island from its direction and RL/RR) and runs the core's region consumer with the
 // values the definitions froze (program-wide `%%_HEI_SL<cycle>_Q<n>`).
 #include "frontend/heidenhain/Parser.h"
+#include "ir/WordList.h"
 
 #include <fmt/format.h>
 
@@ -38,14 +39,6 @@ const SlCycle *slRow(int number) {
   return nullptr;
 }
 
-bool takesParam(const char *params, const std::string &q) {
-  std::string_view p(params);
-  for (size_t at = 0; (at = p.find(q, at)) != std::string_view::npos; at += q.size()) {
-    size_t end = at + q.size();
-    if ((at == 0 || p[at - 1] == ' ') && (end == p.size() || p[end] == ' ')) return true;
-  }
-  return false;
-}
 
 // Which consumer a machining cycle's call runs.
 const char *slUse(int number) {
@@ -94,7 +87,7 @@ bool BlockParser::slDefinition(int number, const Token &n) {
     // QS13, QS18, QS438: the tool by its name instead of Q13 … (L9360, L9484, L9802).
     const bool named = name.rfind("QS", 0) == 0;
     if (named) name = "Q" + name.substr(2);
-    if (!takesParam(row.params, name) || (named && !takesParam(kToolParams, name)))
+    if (!inWordList(row.params, name) || (named && !inWordList(kToolParams, name)))
       return fail(q, fmt::format("{}{} is not a parameter of cycle {}", named ? "QS" : "Q", name.substr(1), number), "cycle-parameter");
     if (named && !given.insert(name).second)
       return fail(q, fmt::format("{} and QS{} both in CYCL DEF {}", name, name.substr(1), number), "cycle-parameter");
@@ -113,7 +106,7 @@ bool BlockParser::slDefinition(int number, const Token &n) {
     if (cv.kind == CycleValue::PerRev || cv.kind == CycleValue::PerTooth)
       return f_.error(cv.at, fmt::format("{}={} in the SL cycles is not simulated yet", name, cv.kind == CycleValue::PerRev ? "FU" : "FZ"),
                       "unsupported-code");
-    if (cv.kind == CycleValue::Predef && !takesParam(kContourDefaults, name))
+    if (cv.kind == CycleValue::Predef && !inWordList(kContourDefaults, name))
       return f_.error(cv.at, fmt::format("{}=PREDEF: the SL cycles take PREDEF for the values of GLOBAL DEF 111 CONTOUR MILLING ({})",
                                          name, kContourDefaults),
                       "cycle-parameter");

@@ -1,6 +1,7 @@
 // Resolving the keyword feeds of a cycle's arguments (CycleFeed.h).
 #include "runtime/cycles/CycleFeed.h"
 #include "runtime/cycles/Entry.h"
+#include "ir/WordList.h"
 
 #include <fmt/format.h>
 
@@ -31,16 +32,10 @@ constexpr RapidOk kRapidOk[] = {
     {"hei.233", "Q253"},      {"hei.256", "Q206"}, {"hei.257", "Q206"},
 };
 
-bool listed(const char *list, std::string_view q) {
-  std::string_view l(list);
-  for (size_t at = 0; (at = l.find(q, at)) != std::string_view::npos; at += q.size())
-    if ((at == 0 || l[at - 1] == ' ') && (at + q.size() == l.size() || l[at + q.size()] == ' ')) return true;
-  return false;
-}
 
 bool rapidHonoured(const CycleDef &def, std::string_view q) {
   for (const RapidOk &r : kRapidOk)
-    if (std::strcmp(r.entry, def.name) == 0) return listed(r.params, q);
+    if (std::strcmp(r.entry, def.name) == 0) return inWordList(r.params, q);
   return false;
 }
 }  // namespace
