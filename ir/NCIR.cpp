@@ -192,7 +192,7 @@ static const OpInfo kOps[] = {
     {OpKind::Home, "home", 0, 0, "ref", "X Y Z A B C U V W ic"},
     {OpKind::MachineMove, "machine_move", 0, 0, "rapid", "X Y Z A B C U V W"},
     {OpKind::ToolLength, "tool_length", 0, 0, "", "h D dl form X Y Z A B C U V W"},
-    {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d d_default entry"},
+    {OpKind::CutterComp, "cutter_comp", 0, 0, "side", "d d_default entry radius orientation"},
     {OpKind::WorkOffset, "work_offset", 0, 0, "index", ""},
     {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C U V W R H D Q"},
     {OpKind::Stop, "stop", 0, 0, "kind", ""},

@@ -36,6 +36,7 @@ static const KeyWord kKeyWords[] = {
     {OpKind::Feed, "value", Word::F},       {OpKind::Speed, "value", Word::S},
     {OpKind::ToolSelect, "value", Word::T}, {OpKind::Dwell, "seconds", Word::P},
     {OpKind::ToolLength, "h", Word::H},     {OpKind::CutterComp, "d", Word::D},
+    {OpKind::CutterComp, "radius", Word::R}, {OpKind::CutterComp, "orientation", Word::L},
     {OpKind::SetOffset, "index", Word::P},  {OpKind::Aux, "m", Word::P},
     {OpKind::Aux, "b", Word::P},            {OpKind::Aux, "h", Word::P},
     {OpKind::Mode, "tolerance", Word::P},   {OpKind::Mode, "naive_tolerance", Word::Q},

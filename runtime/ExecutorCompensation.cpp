@@ -75,6 +75,40 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
     sideSwitch = comp.active();
     if (sideSwitch && !comp.stop(true)) return error(comp.error(), comp.rule());
   }
+  int side = c.sub;
+  ToolData t;
+  compEdge = 0;
+  if (c.has(Word::R)) {  // rs274 G41.1/G42.1: the block's D diameter and L orientation, no table
+    if (!dynamicCompData(c, side, t)) return false;
+  } else if (!compToolData(c, lathe, toolDefault, t)) {
+    return false;
+  }
+  double radius = t.radius;
+  // Compensation works on the machine path, in the active plane: a mirrored frame swaps the
+  // sides (G41 <-> G42, as the 808D manual's table 2-12 says); a frame that tilts the plane is
+  // not supported.
+  if (radius > 0 && plane() == Plane::YZ && machine.controller.family == "linuxcnc")  // rs274's limit
+    return error("Cutter radius compensation allowed only in XY, XZ planes", "cutcomp-plane");
+  bool flip = false;
+  if (radius > 0 && !frameKeepsPlane(plane(), flip))
+    return error("cutter radius compensation under a rotation that tilts its plane is not supported",
+                 "unsupported-code");
+  compOut.plane = plane();
+  compOut.shift = {};
+  // rs274 numbers the orientation its own way: G41.1's L always, a tool table's on its machines.
+  const bool rs274Tip = c.has(Word::R) || machine.controller.family == "linuxcnc";
+  if (radius > 0 && (machine.controller.lathe() || rs274Tip) && !noseTipShift(t, radius, side, rs274Tip)) return false;
+  const AxisVec from = sideSwitch ? comp.toolPosition() : compOut.toComp(st.position);
+  capture.compOn |= capture.active;
+  st.cutterComp = side;
+  compExit = false;
+  if (radius > 0) comp.start((side == 1) != flip ? 1 : -1, radius, from, normalEntry);
+  return true;
+}
+
+// G41/G42's tool data: the D word's offset, the T word's on a lathe, the spindle tool's (rs274
+// without D) or the active Sinumerik edge's.
+bool Executor::Impl::compToolData(const MachineCmd &c, bool lathe, bool toolDefault, ToolData &t) {
   if (lathe && !c.has(Word::D)) cutterD = st.toolLengthH;  // the offset of the T word (T0202: 2)
   else if (c.has(Word::D)) {
     double d = c.get(Word::D);
@@ -89,32 +123,31 @@ bool Executor::Impl::execCutterComp(const MachineCmd &c) {
             : toolDefault ? "cutter compensation without a D word and no tool in the spindle: radius 0"
                         : "cutter compensation without a D word: radius 0",
             "cutcomp-without-d");
-  ToolData t;
   if (!offsetData(cutterD, "D", t)) return false;
-  compEdge = 0;
   if (activeEdge > 0 && toolDefault && !c.has(Word::D)) {  // Sinumerik: the active edge's radius
     compEdge = activeEdge;
     t = edgeData(st.toolInSpindle, compEdge);
     if (!sinRadius(st.toolInSpindle, compEdge, t.radius)) return false;
   }
-  double radius = t.radius;
-  // Compensation works on the machine path, in the active plane: a mirrored frame swaps the
-  // sides (G41 <-> G42, as the 808D manual's table 2-12 says); a frame that tilts the plane is
-  // not supported.
-  if (radius > 0 && plane() == Plane::YZ && machine.controller.family == "linuxcnc")  // rs274's limit
-    return error("Cutter radius compensation allowed only in XY, XZ planes", "cutcomp-plane");
-  bool flip = false;
-  if (radius > 0 && !frameKeepsPlane(plane(), flip))
-    return error("cutter radius compensation under a rotation that tilts its plane is not supported",
-                 "unsupported-code");
-  compOut.plane = plane();
-  compOut.shift = {};
-  if (radius > 0 && machine.controller.lathe() && !noseTipShift(t, radius)) return false;
-  const AxisVec from = sideSwitch ? comp.toolPosition() : compOut.toComp(st.position);
-  capture.compOn |= capture.active;
-  st.cutterComp = c.sub;
-  compExit = false;
-  if (radius > 0) comp.start((c.sub == 1) != flip ? 1 : -1, radius, from, normalEntry);
+  return true;
+}
+
+// rs274's G41.1/G42.1: radius D/2 in program units (a negative one swaps the side, as rs274
+// does), orientation L (0 without it) in rs274's numbering, which only G18 may give 1-8.
+bool Executor::Impl::dynamicCompData(const MachineCmd &c, int &side, ToolData &t) {
+  const char *code = c.sub == 1 ? "G41.1" : "G42.1";
+  t = ToolData{};
+  t.radius = c.get(Word::R) * scale();
+  if (t.radius < 0) t.radius = -t.radius, side = 3 - side;
+  if (c.has(Word::L)) {
+    const double o = c.get(Word::L);
+    if (std::fabs(o - std::nearbyint(o)) > 1e-4 || std::fabs(o) > 1e9)
+      return error(fmt::format("{} needs an integer orientation L", code), "bad-number");
+    t.tip = (int)std::nearbyint(o);
+    if (plane() != Plane::ZX && t.tip != 0 && t.tip != 9)
+      return error(fmt::format("{} with L word, but plane is not G18", code), "cutcomp-plane");
+  }
+  cutterD = 0;
   return true;
 }
 

@@ -325,9 +325,12 @@ struct Executor::Impl {
   bool execCutterComp(const MachineCmd &c);
   // A lathe's tool nose radius compensation: the shift from the nose centre to the imaginary
   // tool tip of edge `t` (compOut.shift), or an error where the tip cannot be honoured.
-  bool noseTipShift(const ToolData &t, double radius);
+  // side 1 (G41) or 2 (G42); `rs274`: t.tip is an rs274 orientation (on any machine, in G18).
+  bool noseTipShift(const ToolData &t, double radius, int side, bool rs274);
   // The 808D/Fanuc turning rules of G41/G42 apply; a LinuxCNC lathe keeps rs274's.
   bool isoLathe() const { return machine.controller.lathe() && machine.controller.family != "linuxcnc"; }
+  bool compToolData(const MachineCmd &c, bool lathe, bool toolDefault, ToolData &t);
+  bool dynamicCompData(const MachineCmd &c, int &side, ToolData &t);
   // G41/G42 in force without a nose radius: the T word that brings one starts it.
   bool noseCompAfterT();
   bool execFrame(const MachineCmd &c);

@@ -62,14 +62,15 @@ bool Executor::Impl::turnCycle(const MachineCmd &c) {
 // Tool nose radius compensation (808D manual L2186-2512): the program and the tool offsets
 // describe the imaginary tool tip; CutterComp offsets the nose centre's path by the radius and
 // the machine position is that centre plus the tip vector. Tips 0 and 9 are the centre itself.
-bool Executor::Impl::noseTipShift(const ToolData &t, double radius) {
+bool Executor::Impl::noseTipShift(const ToolData &t, double radius, int side, bool rs274) {
   if (linearFrame())
     return error("tool nose radius compensation under a rotation, scaling or mirror is not supported", "unsupported-code");
-  const Point2 v = noseTipVector(t.tip);
+  // rs274's orientations 1-8 (interp_queue.cc's latheorigin) are the Fanuc tips mirrored in X.
+  static const int kRs274Tip[10] = {0, 4, 3, 2, 1, 5, 8, 7, 6, 9};
+  const Point2 v = noseTipVector(rs274 && t.tip >= 0 && t.tip <= 9 ? kRs274Tip[t.tip] : t.tip);
   if (v.x == 0 && v.y == 0) return true;
-  if (machine.controller.family == "linuxcnc")  // rs274 reads an orientation with its own rules
-    return error("cutter compensation with a lathe tool orientation (tip 1-8) on a LinuxCNC machine is not supported",
-                 "unsupported-code");
+  if (plane() != Plane::ZX && rs274)
+    return error(fmt::format("G{} with lathe tool, but plane is not G18", side == 2 ? 42 : 41), "cutcomp-plane");
   if (plane() != Plane::ZX)
     return error("tool nose radius compensation with an imaginary tool tip 1-8 needs the ZX plane (G18)",
                  "unsupported-code");

@@ -139,6 +139,9 @@ static const GCodeInfo kRs274GCodes[] = {
     MODE(384, Motion, ProbeAway, "straight probe away from the work, error on a miss"),
     MODE(385, Motion, ProbeAwayNoError, "straight probe away from the work"),
     SPECIAL(301, SetOffset, NonModal, 6, "store reference point 2"),
+    // G41.1/G42.1: the radius from a D diameter, a lathe orientation from L (arg 3, 4: left, right).
+    SPECIAL(411, CutterComp, CutterComp, 3, "dynamic cutter compensation left"),
+    SPECIAL(421, CutterComp, CutterComp, 4, "dynamic cutter compensation right"),
     SPECIAL(431, ToolLength, ToolLength, 2, "dynamic tool length offset"),
     SPECIAL(432, ToolLength, ToolLength, 3, "additional tool length offset"),
     MODE(760, Motion, ThreadCycle, "threading cycle"),

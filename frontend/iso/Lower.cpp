@@ -429,17 +429,26 @@ bool BlockLowerer::Block::setup() {
   modeOp(GGroup::Plane, "plane");
   modeOp(GGroup::Units, "units");
   if (auto *gi = G(GGroup::CutterComp)) {
-    static const char *sides[] = {"off", "left", "right"};
-    Op &op = emit(OpKind::CutterComp, gloc(GGroup::CutterComp));
-    op.set("side", Expr::symbol(sides[gi->arg], gloc(GGroup::CutterComp)));
-    if (gi->arg != 0 && bw.has('D') && L.lathe_) {  // the radius and tip are the T word's offset
+    static const char *sides[] = {"off", "left", "right", "left", "right"};
+    const SourceLoc gl = gloc(GGroup::CutterComp);
+    if (gi->arg >= 3 && !bw.has('D')) {  // rs274 G41.1/G42.1: D is the cutter's diameter
+      L.diags_->error(gl, fmt::format("G{}.1 with no D word", gi->arg == 3 ? 41 : 42), "missing-word");
+      return false;
+    }
+    Op &op = emit(OpKind::CutterComp, gl);
+    op.set("side", Expr::symbol(sides[gi->arg], gl));
+    if (gi->arg >= 3) {
+      op.set("radius", Expr::binary(ir::OpCode::Div, take('D', Scale::Linear), Expr::number(2, ir::Type::Int, gl), gl));
+      if (bw.has('L')) op.set("orientation", take('L', Scale::None));
+    } else if (gi->arg != 0 && bw.has('D') && L.lathe_) {  // the radius and tip are the T word's offset
       L.diags_->error(bw.get('D')->loc, "a lathe takes the tool nose radius from the offset of its T word (T0101), not from D",
                      "unknown-code");
       return false;
+    } else if (gi->arg != 0 && bw.has('D')) {
+      op.set("d", take('D', Scale::None));
+    } else if (gi->arg != 0 && L.flavour_ == Flavour::RS274) {  // rs274: the loaded tool's radius
+      op.set("d_default", Expr::symbol("tool", gl));
     }
-    if (gi->arg != 0 && bw.has('D')) op.set("d", take('D', Scale::None));
-    else if (gi->arg != 0 && L.flavour_ == Flavour::RS274)  // rs274: the loaded tool's radius
-      op.set("d_default", Expr::symbol("tool", gloc(GGroup::CutterComp)));
   }
   if (auto *gi = G(GGroup::ToolLength)) {
     SourceLoc loc = gloc(GGroup::ToolLength);
