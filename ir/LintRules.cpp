@@ -108,6 +108,8 @@ static const LintRule kRules[] = {
      "R below the bottom, Q ≤ 0, a rotary axis word in a cycle block, …"},
     {"contour-invalid", Severity::Error, "front end, executor",
      "contour cycles (ISO G70-G73, region pockets): a code the contour blocks must not hold, a contour range out of order, a contour the cycle cannot cut (type II, not monotonic; a region contour open or crossing itself, an island outside its outline), a chamfer ending it"},
+    {"positive-depth", Severity::Error, "executor",
+     "a Heidenhain 2xx cycle with a positive depth Q201 on a TNC whose machine parameter displayDepthErr is on (machine key `display_depth_err`, default true)"},
     {"cycle-bad-repeat", Severity::Error, "executor",
      "L/K repeat count below 1"},
     {"cycle-spindle", Severity::Error, "executor",

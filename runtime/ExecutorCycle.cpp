@@ -7,6 +7,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <fmt/format.h>
+#include <string_view>
 
 namespace ncc {
 
@@ -336,6 +338,13 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &given
   }
   if ((cyc && !checkCycleArgs(*cyc, args, err)) || (pattern && !checkCycleArgs(*pattern, *patternArgs, err)))
     return x.error(err, "cycle-invalid");
+  // A TNC with displayDepthErr on refuses a positive depth in its 2xx cycles (seed002a L1802).
+  if (cyc && x.machine.controller.displayDepthErr && std::string_view(cyc->name).substr(0, 5) == "hei.2" &&
+      args.has("Q201") && args.get("Q201") > 0)
+    return x.error(fmt::format("{}: the depth Q201=+{:g} is positive: the TNC stops with an error (machine parameter "
+                               "displayDepthErr, key display_depth_err; without it the cycle pre-positions below the surface)",
+                               cyc->name, args.get("Q201")),
+                   "positive-depth");
   if (x.st.units != ModeValue::MM) return x.error("library cycles run in mm (G21) only", "unsupported-code");
   if (!x.compForbids("Cannot use canned cycles with cutter compensation on")) return false;
   if (!x.cycleFrameOk()) return false;

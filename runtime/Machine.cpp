@@ -172,6 +172,7 @@ const KeyDef<Controller> kControllerKeys[] = {
     {"reset", &Controller::reset, 0, 0, false, kResetGroups},
     {"r_params", &Controller::rParams, 0, 100000},
     {"q_params", &Controller::qParams, 0, 100000},
+    {"display_depth_err", &Controller::displayDepthErr},
     {"real_tolerance", &Controller::realTolerance, 0, 1},
     {"axes_scale_enable", &Controller::axesScaleEnable},
     {"scale_weighting", &Controller::scaleWeighting, 1e-5, 1e-3},

@@ -88,6 +88,9 @@ struct Controller {
                                     "feed",        "spindle", "coolant", "cutter_comp"};
   int rParams = 100;                 // Sinumerik R0..R(n-1)
   int qParams = 2000;                // Heidenhain Q0..Q(n-1)
+  // TNC machine parameter displayDepthErr (201003): a positive depth Q201 in a 2xx cycle is an
+  // error (true, the TNC's default) or runs with the pre-positioning inverted (false).
+  bool displayDepthErr = true;
   double realTolerance = 1e-12;      // Sinumerik: relative tolerance of REAL = and <>
   // ISO G51 scaling (808D MD22914 $MC_AXES_SCALE_ENABLE, MD22910 weighting): false = one factor
   // P for all axes, true = per-axis factors I J K (a negative one mirrors); factor x weighting.
