@@ -92,6 +92,7 @@ private:
     uint64_t shape = 0, state = 0;
     double code = 0;
     double linear = 1, rotary = 1;  // the divisors of words without a decimal point
+    WordMask mask = 0;              // the move's words
     uint8_t word[kMaxWords];        // per word in order: its Word (| kRotary), or kCode
     int8_t motionWord = -1;         // the motion code's index (-1: none)
     ModeValue mode{}, motionAfter{}, pathMotionAfter{};  // its mode value; the modes after the block

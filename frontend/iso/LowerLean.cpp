@@ -168,6 +168,7 @@ bool BlockLowerer::Block::decideMove(LeanMove &m) {
       b.words.size() > (size_t)LeanMove::kMaxWords)
     return false;
   static_assert(kWords < LeanMove::kRotary);
+  m.mask = 0;
   for (size_t i = 0; i < b.words.size(); ++i) {
     const IsoWord &w = b.words[i];
     if (w.letter == 'G') {
@@ -177,6 +178,7 @@ bool BlockLowerer::Block::decideMove(LeanMove &m) {
       const MoveWord &mw = kMoveWords[Words::slot(w.letter)];
       if (bw.w[Words::slot(w.letter)] != &w || mw.scale == Scale::None) return false;
       m.word[i] = (uint8_t)((unsigned)mw.word | (mw.scale == Scale::Rotary ? LeanMove::kRotary : 0));
+      m.mask |= wordBit(mw.word);
     }
   }
   trackModes();
@@ -209,12 +211,14 @@ inline bool BlockLowerer::leanMove(const LeanMove &m, ParsedBlock &b, CmdSink &s
     mode.nmodes = 1;
     mode.modes[0] = m.mode;
   }
+  // c.set for each word, the mask at once (c has no word set here).
   const IsoWord *w = b.words.data();
   for (size_t i = 0, n = b.words.size(); i < n; ++i) {
     const unsigned word = m.word[i];
     if (word == LeanMove::kCode) continue;
-    c.set((Word)(word & ~LeanMove::kRotary), Block::constValue(w[i], word & LeanMove::kRotary ? m.rotary : m.linear));
+    c.w[word & ~LeanMove::kRotary] = Block::constValue(w[i], word & LeanMove::kRotary ? m.rotary : m.linear);
   }
+  c.mask |= m.mask;
   const bool ok = sink.execMove(&blk, 1, m.motionWord >= 0 ? &mode : nullptr, c);
   c.kind = CmdKind::Block;
   c.loc = {};
