@@ -114,7 +114,7 @@ private:
   }
   static size_t leanSet(uint64_t shape, uint64_t state) {
     static_assert(kLeanSets == 32);
-    return (size_t)(((shape ^ state * 31) * 0x9E3779B97F4A7C15ull) >> 59);
+    return (size_t)((((shape * 0x9E3779B97F4A7C15ull) ^ state) * 0xC2B2AE3D27D4EB4Full) >> 59);
   }
   Flavour flavour_;
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
