@@ -565,6 +565,7 @@ bool BlockParser::parse(std::string_view line, uint32_t file, uint32_t lineNo, P
   if (parsePlainWords(out)) return true;
   out.words.clear();  // what the fast path read before it gave up
   out.n = -1;
+  out.shape = 0;
   bool ok = parseItems(out);
   if (ok && flavour_ == Flavour::Fanuc) fanucSemantics(out);
   return ok && !failed_;

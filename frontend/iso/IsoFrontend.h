@@ -82,6 +82,7 @@ public:
   // become machine commands sent to it at once (BlockLowerer::lowerLean), after the ops
   // appended before them have run: the call then returns early.
   bool next(ir::Region &out, size_t maxBlocks, CmdSink *lean = nullptr);
+  uint64_t leanReuses() const;  // plain blocks lowered by a decision made for their shape before
 
 private:
   struct Impl;

@@ -41,6 +41,8 @@ public:
   enum class Lean : uint8_t { Done, Fallback, Held, Error, Stopped };
   Lean lowerLean(ParsedBlock &b, CmdSink &sink, bool pending);
 
+  uint64_t leanReuses = 0;  // blocks that took a cached lean decision (tests)
+
   std::vector<CallRef> calls;  // every callee referenced, for subprogram resolution
   // Set when calls cannot be resolved (a streamed program, the ISO blocks of a Sinumerik
   // program): M98, G65/G66, G05 P and the contour cycles are then errors saying why.
@@ -80,6 +82,40 @@ private:
   ir::Region none_;  // the lean path's Block writes no ops
   MachineCmd cmd_;   // the lean path's command, cleared after each use
   MachineCmd leanBlock_, leanMode_;  // leanMove's Block and Mode commands (it passes three at once)
+  // A plain move block decided (LowerLean.cpp): what classify, leanFits and trackModes made of
+  // its shape in the state before it, reused for the next block of that shape in that state.
+  struct LeanMove {
+    static constexpr int kMaxWords = 14;  // a motion code and XYZABCUVWIJKR, each once
+    static constexpr uint8_t kCode = 0xFF, kRotary = 0x80;
+    // The key: ParsedBlock::shape, the motion code's value (its letter is the shape's only G),
+    // leanState() before the block.
+    uint64_t shape = 0, state = 0;
+    double code = 0;
+    double linear = 1, rotary = 1;  // the divisors of words without a decimal point
+    WordMask mask = 0;              // the move's words
+    uint8_t word[kMaxWords];        // per word in order: its Word (| kRotary), or kCode
+    int8_t motionWord = -1;         // the motion code's index (-1: none)
+    ModeValue mode{}, motionAfter{}, pathMotionAfter{};  // its mode value; the modes after the block
+  };
+  // Two ways per set (G2 and G3 with the same words share a set): a block that finds neither
+  // decides again and takes the first way, the first moving to the second.
+  static constexpr int kLeanSets = 32;
+  LeanMove leanCache_[kLeanSets][2];
+  bool leanMove(const LeanMove &m, ParsedBlock &b, CmdSink &sink);
+  [[gnu::noinline]] Lean lowerLeanDecide(ParsedBlock &b, CmdSink &sink, bool pending, LeanMove *set, uint64_t state);
+  // Everything the lean path's decision reads of the lowerer, packed: the modes, the decimal
+  // mode, the flavour, G16, the lathe and the 808D's B function (the G-code cache only ever
+  // gains entries, and each is the same for the same code).
+  uint64_t leanState() const {
+    return (uint64_t)motion_ | (uint64_t)pathMotion_ << 8 | (uint64_t)feedMode_ << 16 | (uint64_t)units_ << 24 |
+           (uint64_t)plane_ << 32 | (uint64_t)distance_ << 40 | (uint64_t)(uint8_t)decimal_ << 48 |
+           (uint64_t)((unsigned)flavour_ | (unsigned)polar_ << 2 | (unsigned)lathe_ << 3 | (unsigned)auxiliaryB_ << 4)
+               << 56;
+  }
+  static size_t leanSet(uint64_t shape, uint64_t state) {
+    static_assert(kLeanSets == 32);
+    return (size_t)((((shape * 0x9E3779B97F4A7C15ull) ^ state) * 0xC2B2AE3D27D4EB4Full) >> 59);
+  }
   Flavour flavour_;
   int decimal_ = 0;  // 0 calculator, 1 IS-B, 2 IS-C, -1 invalid
   bool axesScaleEnable_ = false;  // G51 factors: I J K (else P)

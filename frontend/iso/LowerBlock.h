@@ -226,7 +226,7 @@ struct BlockLowerer::Block {
   bool leanClassify();
   bool leanFits() const;
   bool leanEmit(CmdSink &sink);
-  bool leanMove(CmdSink &sink, uint32_t moveWords);  // a block that is a move and its motion mode
+  bool decideMove(LeanMove &m);  // a block that is a move and its motion mode: decided for reuse
   void leanMoveWords(MachineCmd &c, uint32_t moveWords);
 };
 

@@ -8,6 +8,7 @@
 #include "frontend/iso/LowerBlock.h"
 
 #include <array>
+#include <utility>
 
 namespace ncc::iso {
 
@@ -84,7 +85,6 @@ bool BlockLowerer::Block::leanFits() const {
 
 bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
   const uint32_t moveWords = bw.present & ~Words::bit('F');
-  if (moveWords && moveWords == bw.present && !(groups & ~groupBit(GGroup::Motion))) return leanMove(sink, moveWords);
   // The command is back to MachineCmd{} after each use: each kind resets the fields it set
   // (kind, loc, and its own: the block number, the mode, the words), not all of them.
   MachineCmd &c = L.cmd_;
@@ -133,54 +133,136 @@ bool BlockLowerer::Block::leanEmit(CmdSink &sink) {
   return ok;
 }
 
-// Most lines of a flat program: the Block, the motion mode if the block has one, and the move,
-// in one call (CmdSink::execMove; the executor skips a mode that is in force).
-bool BlockLowerer::Block::leanMove(CmdSink &sink, uint32_t moveWords) {
-  MachineCmd &blk = L.leanBlock_, &mode = L.leanMode_, &c = L.cmd_;
-  blk.loc = b.loc;
-  blk.blockNumber = b.n;
-  trackModes();
-  if (G(GGroup::Motion)) {
-    mode.kind = CmdKind::Mode;
-    mode.loc = gloc(GGroup::Motion);
-    mode.nmodes = 1;
-    mode.modes[0] = modeValue(GGroup::Motion);
-  }
-  leanMoveWords(c, moveWords);
-  const bool ok = sink.execMove(&blk, 1, G(GGroup::Motion) ? &mode : nullptr, c);
-  c.kind = CmdKind::Block;
-  c.loc = {};
-  c.clearWords();
-  return ok;
-}
+namespace {
+// A move word's command word and scale by its letter's slot (Block::Words::slot: A-Z are 0-25;
+// the letters leanFits lets through).
+struct MoveWord {
+  Word word;
+  Scale scale;
+};
+constexpr auto kMoveWords = [] {
+  std::array<MoveWord, 28> t{};
+  const char *letters = "XYZABCUVWIJKR";
+  for (int i = 0; letters[i]; ++i) t[letters[i] - 'A'] = {(Word)((int)Word::X + i), scaleOf(letters[i])};
+  return t;
+}();
+static_assert(Word::R == (Word)((int)Word::X + 12));
+}  // namespace
 
 void BlockLowerer::Block::leanMoveWords(MachineCmd &c, uint32_t moveWords) {
+  static_assert(Words::slot('A') == 0 && Words::slot('Z') == 25);
   c.kind = CmdKind::Move;
   c.loc = G(GGroup::Motion) ? gloc(GGroup::Motion) : b.loc;
-  // A move word's command word and scale by its slot (the letters leanFits lets through).
-  struct MoveWord {
-    Word word;
-    Scale scale;
-  };
-  static constexpr auto kMoveWords = [] {
-    std::array<MoveWord, 28> t{};
-    const char *letters = "XYZABCUVWIJKR";
-    for (int i = 0; letters[i]; ++i) t[Words::slot(letters[i])] = {(Word)((int)Word::X + i), scaleOf(letters[i])};
-    return t;
-  }();
-  static_assert(Word::R == (Word)((int)Word::X + 12));
   for (uint32_t m = moveWords; m; m &= m - 1) {
     const int slot = __builtin_ctz(m);
     c.set(kMoveWords[slot].word, constValue(*bw.w[slot], factor(kMoveWords[slot].scale)));
   }
 }
 
+// Most lines of a flat program: a block that is a move and at most its motion code. Decided
+// once (classify, leanFits, trackModes, the factors) per shape and state: each word's command
+// word and divisor by its place in the block. False: not such a block (leanEmit does it).
+bool BlockLowerer::Block::decideMove(LeanMove &m) {
+  const uint32_t moveWords = bw.present & ~Words::bit('F');
+  if (!moveWords || moveWords != bw.present || (groups & ~groupBit(GGroup::Motion)) ||
+      b.words.size() > (size_t)LeanMove::kMaxWords)
+    return false;
+  static_assert(kWords < LeanMove::kRotary);
+  m.mask = 0;
+  for (size_t i = 0; i < b.words.size(); ++i) {
+    const IsoWord &w = b.words[i];
+    if (w.letter == 'G') {
+      if (!G(GGroup::Motion) || gs[(size_t)GGroup::Motion].word != &w) return false;
+      m.word[i] = LeanMove::kCode;
+    } else {
+      const MoveWord &mw = kMoveWords[Words::slot(w.letter)];
+      if (bw.w[Words::slot(w.letter)] != &w || mw.scale == Scale::None) return false;
+      m.word[i] = (uint8_t)((unsigned)mw.word | (mw.scale == Scale::Rotary ? LeanMove::kRotary : 0));
+      m.mask |= wordBit(mw.word);
+    }
+  }
+  trackModes();
+  m.motionWord = -1;
+  if (G(GGroup::Motion)) {
+    m.motionWord = (int8_t)(gs[(size_t)GGroup::Motion].word - b.words.data());
+    m.mode = modeValue(GGroup::Motion);
+    m.code = gs[(size_t)GGroup::Motion].word->value;  // G01 and G1.0 are G1: classify looks up the value
+  }
+  m.linear = factor(Scale::Linear);
+  m.rotary = factor(Scale::Rotary);
+  m.motionAfter = L.motion_;
+  m.pathMotionAfter = L.pathMotion_;
+  return true;
+}
+
+// The Block, the motion mode if the block has one, and the move, in one call
+// (CmdSink::execMove; the executor skips a mode that is in force).
+inline bool BlockLowerer::leanMove(const LeanMove &m, ParsedBlock &b, CmdSink &sink) {
+  motion_ = m.motionAfter;  // trackModes: a motion code is the only code here
+  pathMotion_ = m.pathMotionAfter;
+  MachineCmd &blk = leanBlock_, &mode = leanMode_, &c = cmd_;
+  blk.loc = b.loc;
+  blk.blockNumber = b.n;
+  c.kind = CmdKind::Move;
+  c.loc = b.loc;
+  if (m.motionWord >= 0) {
+    mode.kind = CmdKind::Mode;
+    mode.loc = c.loc = b.words[(size_t)m.motionWord].loc;
+    mode.nmodes = 1;
+    mode.modes[0] = m.mode;
+  }
+  // c.set for each word, the mask at once (c has no word set here).
+  const IsoWord *w = b.words.data();
+  for (size_t i = 0, n = b.words.size(); i < n; ++i) {
+    const unsigned word = m.word[i];
+    if (word == LeanMove::kCode) continue;
+    c.w[word & ~LeanMove::kRotary] = Block::constValue(w[i], word & LeanMove::kRotary ? m.rotary : m.linear);
+  }
+  c.mask |= m.mask;
+  const bool ok = sink.execMove(&blk, 1, m.motionWord >= 0 ? &mode : nullptr, c);
+  c.kind = CmdKind::Block;
+  c.loc = {};
+  c.clearWords();
+  return ok;
+}
+
 BlockLowerer::Lean BlockLowerer::lowerLean(ParsedBlock &b, CmdSink &sink, bool pending) {
   if (lathe_ || polar_ || !plainWords(b)) return Lean::Fallback;
+  // A move block whose shape was decided in this state: the same decision (leanState has all
+  // the decision reads of the lowerer; the shape and the code all it reads of the block but
+  // the values, in order).
+  const uint64_t state = leanState();
+  if (!b.shape) return lowerLeanDecide(b, sink, pending, nullptr, state);
+  LeanMove *set = leanCache_[leanSet(b.shape, state)];
+  auto fits = [&](const LeanMove &m) {
+    return m.shape == b.shape && m.state == state && (m.motionWord < 0 || b.words[(size_t)m.motionWord].value == m.code);
+  };
+  if (!fits(set[0])) {
+    if (!fits(set[1])) return lowerLeanDecide(b, sink, pending, set, state);
+    std::swap(set[0], set[1]);  // the first way holds the latest used
+  }
+  if (pending) return Lean::Held;
+  ++leanReuses;
+  return leanMove(set[0], b, sink) ? Lean::Done : Lean::Stopped;
+}
+
+// A block the cache does not know: classify and check it, and decide it for the cache (`set`,
+// with `state` the lowerer's before it) when it is a move.
+BlockLowerer::Lean BlockLowerer::lowerLeanDecide(ParsedBlock &b, CmdSink &sink, bool pending, LeanMove *set,
+                                                 uint64_t state) {
   Block blk(*this, b, none_);
   if (!blk.leanClassify() && !blk.classify()) return Lean::Error;
   if (!blk.leanFits()) return Lean::Fallback;
   if (pending) return Lean::Held;
+  LeanMove local;
+  if (set) set[1] = set[0];
+  LeanMove &m = set ? set[0] : local;
+  m.shape = 0;  // an entry half rewritten is no entry
+  if (blk.decideMove(m)) {
+    m.shape = b.shape;
+    m.state = state;
+    return leanMove(m, b, sink) ? Lean::Done : Lean::Stopped;
+  }
   return blk.leanEmit(sink) ? Lean::Done : Lean::Stopped;
 }
 

@@ -38,9 +38,13 @@ const char *BlockParser::plainWords(const char *q, const char *end, ParsedBlock 
   // Locals: the stores into `out` may alias the parser's members, which would be reloaded per word.
   const uint32_t file = file_, line = line_;
   const char *const begin = begin_;
+  uint64_t shape = 0;  // ParsedBlock::shape, in a register
   for (;;) {
     const unsigned char c = ch(q);
-    if (c == '\n') return q;
+    if (c == '\n') {
+      out.shape = out.words.size() <= 8 ? shape : 0;
+      return q;
+    }
     if (!(kPlain.c[c] & kLetter)) return nullptr;
     const char *at = q++;
     const char letter = char(c & 0xDF);  // upper case
@@ -79,6 +83,7 @@ const char *BlockParser::plainWords(const char *q, const char *end, ParsedBlock 
       const double v = (double)(int64_t)mantissa / kExactPow10[fraction];
       w.value = neg ? -v : v;
       w.loc = {file, line, (uint32_t)(at - begin + 1)};  // locAt(at)
+      shape = shape << 8 | (unsigned char)letter;
     }
     while (k & kBlank) k = cls(++q);
   }

@@ -339,6 +339,8 @@ IsoBlockStream::IsoBlockStream(SourceManager &sm, uint32_t fileId, const IsoOpti
 
 IsoBlockStream::~IsoBlockStream() = default;
 
+uint64_t IsoBlockStream::leanReuses() const { return impl_->lower.leanReuses; }
+
 bool IsoBlockStream::next(ir::Region &out, size_t maxBlocks, CmdSink *lean) {
   Impl &s = *impl_;
   size_t before = out.size();

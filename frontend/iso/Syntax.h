@@ -80,16 +80,22 @@ struct ParsedBlock {
   ir::ExprPtr ocomputed;     // computed O-word number: O[#2*10] call, O#1 call
   std::vector<ir::ExprPtr> oargs;  // o<n> call [a] [b]
   bool plain = false;        // the parser's fast path wrote it: only loc, content, n and words
+  // A plain block's shape, set by the fast path: its letters in order, one byte each (G1 X Y:
+  // 0x47'58'59), so equal shapes have the same letters in the same order; 0 when not worked out
+  // (more than 8 words). Part of the lean lowering's decision cache key (LowerLean.cpp).
+  uint64_t shape = 0;
 
   // Back to empty; clearPlain after a plain block, which set nothing else.
   void clearPlain() {
     loc = {};
     content = plain = false;
     n = -1;
+    shape = 0;
     words.clear();
   }
   void clear() {
     plain = false;
+    shape = 0;
     loc = {};
     content = percent = false;
     n = -1;

@@ -29,6 +29,7 @@ public:
 struct Streamed {
   std::vector<MachineCmd> cmds;
   size_t direct = 0;
+  uint64_t reuses = 0;  // blocks that took a decision cached for their shape
   std::vector<std::string> diags;
 };
 
@@ -57,6 +58,7 @@ Streamed stream(const std::string &src, const char *name, bool lean, IsoOptions 
   Streamed out;
   out.cmds = std::move(rec.cmds);
   out.direct = rec.direct;
+  out.reuses = s.leanReuses();
   for (auto &d : diags.collected())
     out.diags.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.col) + " " + d.message + " [" + d.rule + "]");
   return out;
@@ -173,6 +175,53 @@ TEST(LeanLower, DecimalModesScaleAsTheOpsPath) {
     opts.decimalMode = mode;
     EXPECT_GT(expectSame(src, "t.nc", opts), 10u);
   }
+}
+
+// A move block's decision is reused for the next block of the same shape (letters and G codes in
+// order) only while everything it read is unchanged: each program here changes one such thing
+// between two blocks of one shape, and the commands and messages must stay the ops path's.
+TEST(LeanLower, ShapeCacheFollowsUnits) {
+  // IS-B: X2000 is 2 mm, or 0.2 inch after G20 (a cached divisor 1000 would give 2 inches).
+  const char *src = "G21 G90 G1 X1000 F100\nX2000\nX3000\nG20\nX2000\nX3000\nG21\nX4000\nM30\n";
+  IsoOptions opts;
+  opts.decimalMode = "is-b";
+  Streamed lean = stream(src, "t.nc", true, opts);
+  EXPECT_GE(lean.reuses, 3u);  // X3000 twice, X4000
+  expectSame(src, "t.nc", opts);
+}
+
+TEST(LeanLower, ShapeCacheFollowsMotionMode) {
+  // I J are the arc's under G2, unused words under G1: the last block is an error, although its
+  // shape took the lean path under G2.
+  const char *src = "G2 X1 Y0 I0.5 J0 F100\nX2 Y0 I0.5 J0\nX3 Y0 I0.5 J0\nG1 X3\nX4 Y0 I0.5 J0\n";
+  for (const char *name : {"t.nc", "t.ngc"}) {
+    SCOPED_TRACE(name);
+    Streamed lean = stream(src, name, true);
+    ASSERT_EQ(lean.diags.size(), 2u);  // I and J
+    for (const std::string &d : lean.diags) EXPECT_EQ(d.rfind("5:", 0), 0u) << d;
+    EXPECT_GE(lean.reuses, 1u);
+    expectSame(src, name);
+  }
+  // LinuxCNC's G80 leaves no motion mode (the last path motion is still G2): the arc's shape
+  // after it is an error.
+  const char *g80 = "G2 X1 Y0 I0.5 J0 F100\nX2 Y0 I0.5 J0\nX3 Y0 I0.5 J0\nG80\nX4 Y0 I0.5 J0\n";
+  Streamed lean = stream(g80, "t.ngc", true);
+  ASSERT_EQ(lean.diags.size(), 2u);
+  for (const std::string &d : lean.diags) EXPECT_EQ(d.rfind("5:", 0), 0u) << d;
+  EXPECT_EQ(lean.reuses, 1u);
+  expectSame(g80, "t.ngc");
+}
+
+TEST(LeanLower, ShapeCacheKeepsWordOrderAndSpelling) {
+  // The motion code's place (the Mode command's column) is the shape's, the code is the key's:
+  // G0 X5 has G1 X3's letters and state but not its code. G01 and G1.0 are G1; more than 8
+  // words have no shape. Reused: X4 G1, G1 X7 (G1 X3's, beside G0 X5's), G1.0 X8, G1.0 X9, X3.
+  const char *src = "G1 X1 F100\nX2 G1\nG1 X3\nX4 G1\nG0 X5\nG01 X6\nG1 X7\nG1.0 X8\nG1.0 X9\n"
+                    "G0 X1 Y2 Z3 A4 B5 C6 U7 V8 W9\nG0 X1 Y2 Z3 A4 B5 C6 U7 V8 W9\nG17 X1\nX2\nG18 X1\nX2\n"
+                    "G91 X1\nX2\nX3\nM30\n";
+  Streamed lean = stream(src, "t.ngc", true);
+  EXPECT_EQ(lean.reuses, 5u);
+  EXPECT_GT(expectSame(src, "t.ngc"), 40u);
 }
 
 TEST(LeanLower, LatheTakesTheOpsPath) {
