@@ -104,9 +104,14 @@ private:
     ++lines_;
   }
   void block(const std::string &text) {
-    line(std::to_string(nextN_) + " " + text);
+    char n[kIntegerMax];
+    block_.assign(n, writeInteger(n, nextN_, 0));
+    block_ += ' ';
+    block_ += text;
+    line(block_);
     nextN_ += st_.blockStep;
   }
+  std::string block_;  // block's buffer, reused
   // A signed Klartext number (`+0`, `+12.5`, `-3`) of class c, or false (reported).
   bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
   bool refuse(const MotionRecord &r, const std::string &why);
@@ -144,6 +149,14 @@ private:
   bool posKnown_ = false;
   AxisVec pos_{};
   std::array<std::string, kAxes> posText_;
+  // The value posText_ was formatted from (NAN: not known): an unchanged value is an unchanged
+  // text, found without formatting it (as in the word-address Emitter).
+  std::array<double, kAxes> posValue_ = nanAxes();
+  static AxisVec nanAxes() {
+    AxisVec v;
+    v.fill(NAN);
+    return v;
+  }
   std::string feedText_, poleText_;
   bool haveProgrammedFeed_ = false;
   double programmedFeed_ = 0;
@@ -218,7 +231,7 @@ void Klartext::ensurePosition(const MotionRecord &r) {
 void Klartext::notePosition(const AxisVec &end) {
   for (int i = 0; i < kAxes; ++i) {
     WordClass c = isLengthAxis(i) ? WordClass::Axis : WordClass::Rotary;
-    formatNumber(end[i], fmt(c), posText_[i]);
+    posValue_[i] = formatNumber(end[i], fmt(c), posText_[i]) ? end[i] : NAN;
     pos_[i] = roundTo(end[i], fmt(c).decimals);
   }
 }
@@ -226,16 +239,24 @@ void Klartext::notePosition(const AxisVec &end) {
 std::string Klartext::axisWords(const AxisVec &end, const MotionRecord &r) {
   std::string words;
   for (int i = 0; i < kAxes; ++i) {
+    if (end[i] == posValue_[i]) continue;  // the value of the written text: the same text
     WordClass c = isLengthAxis(i) ? WordClass::Axis : WordClass::Rotary;
-    std::string digits, w;
-    if (!formatNumber(end[i], fmt(c), digits)) {
+    char digits[kNumberMax];
+    const char *e = writeNumber(digits, end[i], fmt(c));
+    if (!e) {
+      std::string w;
       number(end[i], c, std::string(1, kAxisLetters[i]), r, w);  // reports it
       continue;
     }
-    if (digits == posText_[i]) continue;
-    posText_[i] = digits;
+    const std::string_view text(digits, size_t(e - digits));
+    posValue_[i] = end[i];
+    if (text == posText_[i]) continue;
+    posText_[i].assign(text);
     pos_[i] = roundTo(end[i], fmt(c).decimals);
-    if (number(end[i], c, std::string(1, kAxisLetters[i]), r, w)) words += " " + w;
+    words += ' ';
+    words += kAxisLetters[i];
+    if (fmt(c).plusSign && text[0] != '-' && text[0] != '+') words += '+';  // as number() signs it
+    words += text;
   }
   return words;
 }
@@ -360,8 +381,8 @@ void Klartext::arc(const MotionRecord &r) {
     notePosition(r.end);
     pos_[0] = pole[0] + rad * std::cos(a);
     pos_[1] = pole[1] + rad * std::sin(a);
-    posText_[0].clear();
-    posText_[1].clear();
+    posText_[0].clear(), posValue_[0] = NAN;
+    posText_[1].clear(), posValue_[1] = NAN;
   }
   text += ccw ? " DR+" : " DR-";
   text += feedWord(r);
