@@ -13,12 +13,13 @@ void Emitter::badNumber(double v, const std::string &letter, const MotionRecord 
 }
 
 bool Emitter::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
-  std::string digits;
-  if (!formatNumber(v, fmt(c), digits)) {
+  char digits[kNumberMax];
+  const char *e = writeNumber(digits, v, fmt(c));
+  if (!e) {
     badNumber(v, letter, r);
     return false;
   }
-  out = letter + digits;
+  out.assign(letter).append(digits, size_t(e - digits));
   return true;
 }
 
