@@ -26,9 +26,12 @@ const char *const kIgnored[] = {"PAINT", "DISPLY", "PLOT", "SEQNO", "INTOL", "OU
 
 class Lowerer : ClPath {
 public:
-  Lowerer(SourceManager &sm, uint32_t file, Diagnostics &d, ir::Function &fn)
-      : ClPath(d, fn.body, {"FEDRAT", "CIRCLE"}), sm_(sm), file_(file) {}
-  bool run();
+  Lowerer(Diagnostics &d, ir::Region &body) : ClPath(d, body, {"FEDRAT", "CIRCLE"}) {}
+  void start(SourceLoc l) { begin(l); }
+  bool lower(const Record &r);
+  bool finish();  // after the last record
+  bool ended() const { return ended_; }
+  using ClPath::setBody;
 
 private:
   using Handler = bool (Lowerer::*)(const Record &);
@@ -72,8 +75,6 @@ private:
   bool end(const Record &r) { return ClPath::end(r.loc), true; }
   bool msys(const Record &r);
 
-  SourceManager &sm_;
-  uint32_t file_;
   bool rapidNext_ = false;
   std::optional<ClArc> arc_;  // a CIRCLE waiting for the GOTO that ends its arc
   struct Cycle {
@@ -317,47 +318,106 @@ bool Lowerer::msys(const Record &r) {
   return true;
 }
 
-bool Lowerer::run() {
-  std::vector<RecordError> errs;
-  auto recs = readRecords(sm_.text(file_), file_, errs);
-  bool ok = true;
-  for (auto &e : errs) ok = error(e.loc, e.message, "syntax");
-  begin({file_, 1, 1});
-  for (auto &r : recs) {
-    if (r.word.empty()) {
-      if (r.loc.valid() && !r.rest.empty()) comment(r.rest, r.loc);
-      continue;
-    }
-    if (ended_ && r.word != "FINI") {
-      d_.warning(r.loc, fmt::format("{} after the program's end is not run", r.word), "code-after-end");
-      continue;
-    }
-    const Entry *e = nullptr;
-    for (auto &t : kTable)
-      if (r.word == t.word) e = &t;
-    if (e) {
-      if (arc_ && r.word != "GOTO" && r.word != "PPRINT" && r.word != "FINI" && r.word != "END")
-        ok = error(r.loc, fmt::format("{} between CIRCLE and the GOTO that ends its arc", r.word), "syntax");
-      else if (!(this->*(e->fn))(r)) ok = false;
-      continue;
-    }
-    bool ignored = false;
-    for (auto *w : kIgnored) ignored = ignored || r.word == w;
-    if (ignored) d_.warning(r.loc, fmt::format("{} does not change the tool path: skipped", r.word), "lenient-syntax");
-    else ok = error(r.loc, fmt::format("{} is not a record ncc reads", r.word), "unknown-code");
+bool Lowerer::lower(const Record &r) {
+  if (r.word.empty()) {
+    if (r.loc.valid() && !r.rest.empty()) comment(r.rest, r.loc);
+    return true;
   }
-  if (arc_) ok = error(arc_->loc, "CIRCLE without the GOTO that ends its arc", "syntax");
-  return ok;
+  if (ended_ && r.word != "FINI") {
+    d_.warning(r.loc, fmt::format("{} after the program's end is not run", r.word), "code-after-end");
+    return true;
+  }
+  const Entry *e = nullptr;
+  for (auto &t : kTable)
+    if (r.word == t.word) e = &t;
+  if (e) {
+    if (arc_ && r.word != "GOTO" && r.word != "PPRINT" && r.word != "FINI" && r.word != "END")
+      return error(r.loc, fmt::format("{} between CIRCLE and the GOTO that ends its arc", r.word), "syntax");
+    return (this->*(e->fn))(r);
+  }
+  bool ignored = false;
+  for (auto *w : kIgnored) ignored = ignored || r.word == w;
+  if (!ignored) return error(r.loc, fmt::format("{} is not a record ncc reads", r.word), "unknown-code");
+  d_.warning(r.loc, fmt::format("{} does not change the tool path: skipped", r.word), "lenient-syntax");
+  return true;
 }
+
+bool Lowerer::finish() {
+  if (arc_) return error(arc_->loc, "CIRCLE without the GOTO that ends its arc", "syntax");
+  return true;
+}
+
+bool reportRecordErrors(Diagnostics &d, const std::vector<RecordError> &errs) {
+  for (auto &e : errs) d.error(e.loc, e.message, "syntax");
+  return errs.empty();
+}
+
+// The streamed front end (docs/APT.md "Streaming"), as ADEM's (AdemLower.cpp): a chunk of
+// records read into records reused from chunk to chunk, their reading errors reported, then
+// lowered into the driver's region; the lowerer's state goes on from chunk to chunk, so the ops
+// are the whole-program front end's, a chunk at a time.
+class AptStream : public BlockStream {
+public:
+  AptStream(SourceManager &sm, uint32_t file, Diagnostics &d)
+      : sm_(sm), file_(file), diags_(d), reader_(sm.text(file), file), lw_(d, scratch_) {}
+  bool next(ir::Region &out, size_t maxBlocks, CmdSink *) override {
+    lw_.setBody(out);
+    if (!started_) lw_.start({file_, 1, 1}), started_ = true;
+    chunk(maxBlocks);
+    // After the end the rest only gives warnings; after an error nothing runs, but every error is
+    // still reported, as the whole-program front end does. Both read on to the end here.
+    while (!atEnd_ && (lw_.ended() || diags_.hasErrors())) {
+      if (diags_.hasErrors()) out.clear();
+      chunk(maxBlocks);
+    }
+    return !atEnd_;
+  }
+
+private:
+  void chunk(size_t maxBlocks) {
+    size_t n = 0;
+    errs_.clear();
+    for (; n < maxBlocks; ++n) {
+      if (recs_.size() <= n) recs_.emplace_back();
+      if (!reader_.next(recs_[n], errs_)) {
+        atEnd_ = true;
+        break;
+      }
+    }
+    reportRecordErrors(diags_, errs_);
+    for (size_t i = 0; i < n; ++i) lw_.lower(recs_[i]);
+    if (atEnd_) lw_.finish();
+    sm_.released(file_, reader_.offset());
+  }
+
+  SourceManager &sm_;
+  uint32_t file_;
+  Diagnostics &diags_;
+  RecordReader reader_;
+  ir::Region scratch_;
+  Lowerer lw_;
+  std::vector<Record> recs_;
+  std::vector<RecordError> errs_;
+  bool started_ = false, atEnd_ = false;
+};
 
 }  // namespace
 
 bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
   ir::Function fn = beginClModule(sm, fileId, out);
-  Lowerer lw(sm, fileId, diags, fn);
-  bool ok = lw.run();
+  std::vector<RecordError> errs;
+  auto recs = readRecords(sm.text(fileId), fileId, errs);
+  bool ok = reportRecordErrors(diags, errs);
+  Lowerer lw(diags, fn.body);
+  lw.start({fileId, 1, 1});
+  for (auto &r : recs) ok &= lw.lower(r);
+  ok &= lw.finish();
   out.functions.push_back(std::move(fn));
   return ok;
+}
+
+std::unique_ptr<BlockStream> openAptStream(SourceManager &sm, uint32_t file, Diagnostics &diags) {
+  return std::make_unique<AptStream>(sm, file, diags);
 }
 
 }  // namespace ncc::cld
