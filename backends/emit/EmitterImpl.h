@@ -235,6 +235,7 @@ private:
   // so most axes of most blocks are found unchanged without formatting them (setPosText).
   std::array<double, kAxes> posValue_;
   void setPosText(int axis, double writtenValue) {
+    if (writtenValue == posValue_[axis]) return;  // posText_ is its text already
     posValue_[axis] = formatNumber(writtenValue, fmt(axisClass(axis)), posText_[axis]) ? writtenValue : NAN;
   }
   std::string line_;                        // writeBlock's buffer, reused

@@ -152,6 +152,13 @@ private:
   // The value posText_ was formatted from (NAN: not known): an unchanged value is an unchanged
   // text, found without formatting it (as in the word-address Emitter).
   std::array<double, kAxes> posValue_ = nanAxes();
+  // Whether v formats to the written text of axis i (formatted only when the value differs).
+  bool writtenText(int i, double v) const {
+    if (v == posValue_[i]) return true;
+    char digits[kNumberMax];
+    const char *e = writeNumber(digits, v, fmt(isLengthAxis(i) ? WordClass::Axis : WordClass::Rotary));
+    return e ? std::string_view(digits, size_t(e - digits)) == posText_[i] : posText_[i].empty();
+  }
   static AxisVec nanAxes() {
     AxisVec v;
     v.fill(NAN);
@@ -167,15 +174,16 @@ private:
 };
 
 bool Klartext::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
-  std::string digits;
-  if (!formatNumber(v, fmt(c), digits)) {
+  char buf[kNumberMax + 1];
+  char *b = buf + 1, *e = writeNumber(b, v, fmt(c));  // room in front for signDigits's '+'
+  if (!e) {
     diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
                             "] number format (not finite or too many digits)", "emit");
     errors_ = true;
     return false;
   }
-  if (fmt(c).plusSign) signDigits(digits);
-  out = letter + digits;
+  if (fmt(c).plusSign && (e == b || (*b != '-' && *b != '+'))) *--b = '+';  // as signDigits
+  out.assign(letter).append(b, size_t(e - b));
   return true;
 }
 
@@ -231,7 +239,7 @@ void Klartext::ensurePosition(const MotionRecord &r) {
 void Klartext::notePosition(const AxisVec &end) {
   for (int i = 0; i < kAxes; ++i) {
     WordClass c = isLengthAxis(i) ? WordClass::Axis : WordClass::Rotary;
-    posValue_[i] = formatNumber(end[i], fmt(c), posText_[i]) ? end[i] : NAN;
+    if (end[i] != posValue_[i]) posValue_[i] = formatNumber(end[i], fmt(c), posText_[i]) ? end[i] : NAN;
     pos_[i] = roundTo(end[i], fmt(c).decimals);
   }
 }
@@ -334,9 +342,7 @@ void Klartext::arc(const MotionRecord &r) {
   double e[2] = {roundTo(r.end[0], fmt(WordClass::Axis).decimals), roundTo(r.end[1], fmt(WordClass::Axis).decimals)};
   double c[2] = {r.center[0], r.center[1]};
   bool full = s[0] == e[0] && s[1] == e[1];
-  std::string z;
-  formatNumber(r.end[2], fmt(WordClass::Axis), z);
-  const bool helix = turns > 1 || z != posText_[2];
+  const bool helix = turns > 1 || !writtenText(2, r.end[2]);
   if (full && turns == 1 && !helix) {
     // Shorter than the output resolution: a full circle would be wrong, a line is within rounding.
     double os[2] = {r.start[0], r.start[1]}, oe[2] = {r.end[0], r.end[1]};
