@@ -4,6 +4,7 @@
 // with the ADEM CLData front end.
 #include "frontend/cldata/CldFrontend.h"
 #include "frontend/cldata/ClPath.h"
+#include "frontend/cldata/ClStream.h"
 #include "frontend/cldata/Records.h"
 #include "ir/AptWords.h"
 
@@ -352,55 +353,6 @@ bool reportRecordErrors(Diagnostics &d, const std::vector<RecordError> &errs) {
   return errs.empty();
 }
 
-// The streamed front end (docs/APT.md "Streaming"), as ADEM's (AdemLower.cpp): a chunk of
-// records read into records reused from chunk to chunk, their reading errors reported, then
-// lowered into the driver's region; the lowerer's state goes on from chunk to chunk, so the ops
-// are the whole-program front end's, a chunk at a time.
-class AptStream : public BlockStream {
-public:
-  AptStream(SourceManager &sm, uint32_t file, Diagnostics &d)
-      : sm_(sm), file_(file), diags_(d), reader_(sm.text(file), file), lw_(d, scratch_) {}
-  bool next(ir::Region &out, size_t maxBlocks, CmdSink *) override {
-    lw_.setBody(out);
-    if (!started_) lw_.start({file_, 1, 1}), started_ = true;
-    chunk(maxBlocks);
-    // After the end the rest only gives warnings; after an error nothing runs, but every error is
-    // still reported, as the whole-program front end does. Both read on to the end here.
-    while (!atEnd_ && (lw_.ended() || diags_.hasErrors())) {
-      if (diags_.hasErrors()) out.clear();
-      chunk(maxBlocks);
-    }
-    return !atEnd_;
-  }
-
-private:
-  void chunk(size_t maxBlocks) {
-    size_t n = 0;
-    errs_.clear();
-    for (; n < maxBlocks; ++n) {
-      if (recs_.size() <= n) recs_.emplace_back();
-      if (!reader_.next(recs_[n], errs_)) {
-        atEnd_ = true;
-        break;
-      }
-    }
-    reportRecordErrors(diags_, errs_);
-    for (size_t i = 0; i < n; ++i) lw_.lower(recs_[i]);
-    if (atEnd_) lw_.finish();
-    sm_.released(file_, reader_.offset());
-  }
-
-  SourceManager &sm_;
-  uint32_t file_;
-  Diagnostics &diags_;
-  RecordReader reader_;
-  ir::Region scratch_;
-  Lowerer lw_;
-  std::vector<Record> recs_;
-  std::vector<RecordError> errs_;
-  bool started_ = false, atEnd_ = false;
-};
-
 }  // namespace
 
 bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
@@ -417,7 +369,8 @@ bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir:
 }
 
 std::unique_ptr<BlockStream> openAptStream(SourceManager &sm, uint32_t file, Diagnostics &diags) {
-  return std::make_unique<AptStream>(sm, file, diags);
+  return std::make_unique<ClStream<RecordReader, Record, RecordError, Lowerer>>(sm, file, diags, SourceLoc{file, 1, 1},
+                                                                                reportRecordErrors, sm.text(file), file);
 }
 
 }  // namespace ncc::cld
