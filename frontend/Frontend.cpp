@@ -175,6 +175,7 @@ std::unique_ptr<BlockStream> openBlockStream(SourceKind kind, SourceManager &sm,
   if (kind == SourceKind::ISO && opts.macroCalls.empty() && iso::isoIsStreamable(sm.text(file), &sm, file))
     return std::make_unique<IsoStream>(sm, file, isoOptions(opts), diags);
   if (kind == SourceKind::Adem) return cld::openAdemStream(sm, file, diags);  // CLData has no control flow
+  if (kind == SourceKind::CLData) return cld::openAptStream(sm, file, diags);  // nor has APT CL text
   return nullptr;
 }
 

@@ -1,5 +1,7 @@
 // printf's "%.4f" with integer arithmetic: the canonical trace prints every number this way
-// (rs274's format), and it is most of the trace writer's time.
+// (rs274's format), and it is most of the trace writer's time. The digit writers below are the
+// one place that turns integers into decimal text without printf: the trace's %.4f and the
+// emitters' word formats (backends/emit/WordFormat.cpp) both use them.
 #pragma once
 #include <charconv>
 #include <cmath>
@@ -20,19 +22,37 @@ inline char *pair(char *p, unsigned v) {
   std::memcpy(p, kDigitPairs + 2 * v, 2);
   return p + 2;
 }
+}  // namespace fixed4detail
+
+// Room writeUnsigned needs: 2^64 has 20 digits.
+constexpr size_t kUnsignedMax = 20;
+
+// Writes the decimal digits of v at p (no sign, no padding: "0" for 0) and returns the end.
+inline char *writeUnsigned(char *p, uint64_t v) {
+  char tmp[kUnsignedMax];
+  char *end = tmp + kUnsignedMax, *d = end;
+  for (; v >= 100; v /= 100) d -= 2, fixed4detail::pair(d, unsigned(v % 100));
+  if (v >= 10) d -= 2, fixed4detail::pair(d, unsigned(v));
+  else *--d = char('0' + v);
+  std::memcpy(p, d, size_t(end - d));
+  return p + (end - d);
+}
+
+// Writes exactly n digits of v (v < 10^n, n <= kUnsignedMax), zeros on the left: a fraction's
+// digits ("0050" for 50 at n = 4). Returns the end.
+inline char *writePadded(char *p, uint64_t v, int n) {
+  char *end = p + n, *d = end;
+  for (; d - p >= 2; v /= 100) d -= 2, fixed4detail::pair(d, unsigned(v % 100));
+  if (d > p) *p = char('0' + v % 10);
+  return end;
+}
+
+namespace fixed4detail {
 // Writes q / 10^4 with four decimals at p for q >= 10^8, returns the end.
 [[gnu::noinline]] inline char *digitsLarge(char *p, uint64_t q) {
-  uint64_t ip = q / 10000;
-  const unsigned f = unsigned(q % 10000);
-  char tmp[40];  // the digits end at tmp + 24, so the 16-byte copy below stays inside
-  char *end = tmp + 24, *d = end;
-  for (; ip >= 100; ip /= 100) d -= 2, pair(d, unsigned(ip % 100));
-  if (ip >= 10) d -= 2, pair(d, unsigned(ip));
-  else *--d = char('0' + ip);
-  std::memcpy(p, d, 16);  // at most 14 digits
-  p += end - d;
+  p = writeUnsigned(p, q / 10000);
   *p = '.';
-  return pair(pair(p + 1, f / 100), f % 100);
+  return writePadded(p + 1, q % 10000, 4);
 }
 
 // Writes the sign and q / 10^4 with four decimals at p for q < 10^8 (|v| < 10^4, the usual

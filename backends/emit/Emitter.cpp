@@ -13,25 +13,28 @@ void Emitter::badNumber(double v, const std::string &letter, const MotionRecord 
 }
 
 bool Emitter::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
-  std::string digits;
-  if (!formatNumber(v, fmt(c), digits)) {
+  char digits[kNumberMax];
+  const char *e = writeNumber(digits, v, fmt(c));
+  if (!e) {
     badNumber(v, letter, r);
     return false;
   }
-  out = letter + digits;
+  out.assign(letter).append(digits, size_t(e - digits));
   return true;
 }
 
 void Emitter::writeBlock(const Words &words, int64_t sourceN) {
   if (words.empty()) return;
-  std::string line;
+  std::string &line = line_;
+  line.clear();
+  char n[kIntegerMax + 1] = "N";
   if (st_.numbering == Numbering::Renumber) {
     if (numberedCount_++ % st_.blockEvery == 0) {
-      line = "N" + formatInteger(nextN_, st_.blockDigits);
+      line.assign(n, writeInteger(n + 1, nextN_, st_.blockDigits));
       nextN_ += st_.blockStep;
     }
   } else if (st_.numbering == Numbering::Source && sourceN >= 0) {
-    line = "N" + formatInteger(sourceN, st_.blockDigits);
+    line.assign(n, writeInteger(n + 1, sourceN, st_.blockDigits));
   }
   for (const std::string &w : words) {
     if (!line.empty()) line += st_.separator;
@@ -98,30 +101,39 @@ void Emitter::ensurePosition(const MotionRecord &r) {
 
 void Emitter::notePosition(const AxisVec &end, int axes) {
   for (int i = 0; i < axes; ++i) {
-    formatNumber(written(i, end[i]), fmt(axisClass(i)), posText_[i]);
+    setPosText(i, written(i, end[i]));
     pos_[i] = readBack(i, end[i]);
   }
 }
 
 void Emitter::axisWords(const AxisVec &end, Words &w, const MotionRecord &r) {
   for (int i = 0; i < kAxes; ++i) {
-    std::string digits;
-    WordClass c = axisClass(i);
-    if (!formatNumber(written(i, end[i]), fmt(c), digits)) {
-      badNumber(written(i, end[i]), std::string(1, kAxisLetters[i]), r);
+    const WordClass c = axisClass(i);
+    const double v = written(i, end[i]);
+    // A non-modal class (the passport's modal flag off) restates every axis the machine has.
+    const bool modal = fmt(c).modal || !machine_.axes[i].present;
+    if (modal && v == posValue_[i]) continue;  // the value of the written text: the same text
+    char digits[kNumberMax];
+    const char *e = writeNumber(digits, v, fmt(c));
+    if (!e) {
+      badNumber(v, std::string(1, kAxisLetters[i]), r);
       continue;
     }
-    // A non-modal class (the passport's modal flag off) restates every axis the machine has.
-    if (digits == posText_[i] && (fmt(c).modal || !machine_.axes[i].present)) continue;
-    posText_[i] = digits;
+    const std::string_view text(digits, size_t(e - digits));
+    if (modal && text == posText_[i]) {
+      posValue_[i] = v;  // formats to the written text too
+      continue;
+    }
+    posText_[i].assign(text);
+    posValue_[i] = v;
     pos_[i] = readBack(i, end[i]);
-    w.push_back(axisWord(i) + digits);
+    w.push_back(axisWord(i) + posText_[i]);
   }
 }
 
 // Sinumerik writes the controller's axis names (a name of more than one letter with '=':
 // Q1=3); ISO addresses are the letters.
-std::string Emitter::axisWord(int axis) const {
+std::string Emitter::axisWordOf(int axis) const {
   if (st_.target != Target::Sinumerik) return std::string(1, kAxisLetters[axis]);
   std::string name = machine_.axisName(axis);
   return name.size() > 1 ? name + "=" : name;
@@ -167,6 +179,7 @@ void Emitter::moveBlock(const MotionRecord &r) {
   flushPending();
   ensurePosition(r);
   Words w;
+  w.reserve(kBlockWords);
   if (r.exactStop && pathMode_ != 1) push(w, code(Code::ExactStopOnce));
   bool rapid = r.kind == RecordKind::Rapid;
   motionCode(rapid ? Code::Rapid : Code::Linear, w);
@@ -264,6 +277,7 @@ void Emitter::arcBlock(const MotionRecord &r, const AxisVec &end, int turns, boo
     }
   }
   Words w;
+  w.reserve(kBlockWords);
   double startNormal = pos_[pa.normal];
   if (st_.planeOwnBlock) {  // a three-letter plane code stands alone, before the arc
     planeWord(r.plane, w);

@@ -185,7 +185,7 @@ void Emitter::setWrittenOffset(const AxisVec &offset) {
   for (int i = 0; i < kAxes; ++i) {
     if (old[i] == offset[i]) continue;
     pos_[i] += old[i] - offset[i];
-    formatNumber(written(i, pos_[i]), fmt(axisClass(i)), posText_[i]);
+    setPosText(i, written(i, pos_[i]));
   }
 }
 

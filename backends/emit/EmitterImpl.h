@@ -30,9 +30,9 @@ public:
     if (str_) {
       *str_ += text;
       *str_ += eol;
-    } else if (file_) {
-      std::fputs(text.c_str(), file_);
-      std::fputs(eol.c_str(), file_);
+    } else if (file_) {  // the texts hold no NUL (sanitizeText): the same bytes as fputs, no strlen
+      std::fwrite(text.data(), 1, text.size(), file_);
+      std::fwrite(eol.data(), 1, eol.size(), file_);
     }
   }
   // Bytes as they are (ADEM's binary records).
@@ -100,6 +100,8 @@ public:
   Emitter(const Machine &m, ControllerStyle style, const EmitOptions &opts, LineSink out, Diagnostics &diags)
       : machine_(m), st_(std::move(style)), opts_(opts), out_(out), diags_(diags), nextN_(st_.blockStart) {
     plane_ = st_.setupPlane;
+    for (int i = 0; i < kAxes; ++i) axisWords_[i] = axisWordOf(i);
+    posValue_.fill(NAN);
   }
 
   void writeHeader();
@@ -109,11 +111,14 @@ public:
 
 private:
   using Words = std::vector<std::string>;
+  static constexpr size_t kBlockWords = 8;  // room a move's words take (one allocation, not three)
 
   const NumberFormat &fmt(WordClass c) const { return st_.formats[(size_t)c]; }
   const std::string &code(Code c) const { return st_.codes[(size_t)c]; }
   bool latheIso() const { return st_.lathe && st_.target == Target::ISO; }  // docs/EMIT.md "Lathes"
-  std::string axisWord(int axis) const;
+  const std::string &axisWord(int axis) const { return axisWords_[axis]; }
+  std::string axisWordOf(int axis) const;
+  std::array<std::string, kAxes> axisWords_;  // axisWordOf, once per axis
   static WordClass axisClass(int axis) { return isLengthAxis(axis) ? WordClass::Axis : WordClass::Rotary; }
   // Written value of a machine position (a lathe's X as a diameter) and the position the
   // controller reads back from the rounded word.
@@ -226,6 +231,14 @@ private:
   bool posKnown_ = false;
   AxisVec pos_{};                           // rounded, as the controller reads it
   std::array<std::string, kAxes> posText_;  // formatted, for the "unchanged" test
+  // The value posText_ was formatted from (NAN: not known). The same value gives the same text,
+  // so most axes of most blocks are found unchanged without formatting them (setPosText).
+  std::array<double, kAxes> posValue_;
+  void setPosText(int axis, double writtenValue) {
+    if (writtenValue == posValue_[axis]) return;  // posText_ is its text already
+    posValue_[axis] = formatNumber(writtenValue, fmt(axisClass(axis)), posText_[axis]) ? writtenValue : NAN;
+  }
+  std::string line_;                        // writeBlock's buffer, reused
   std::string motion_;                      // last motion G code written
   Plane plane_ = Plane::XY;                 // the header selects G17
   int64_t feedMode_ = 0;                    // the header selects G94

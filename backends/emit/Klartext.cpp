@@ -104,9 +104,14 @@ private:
     ++lines_;
   }
   void block(const std::string &text) {
-    line(std::to_string(nextN_) + " " + text);
+    char n[kIntegerMax];
+    block_.assign(n, writeInteger(n, nextN_, 0));
+    block_ += ' ';
+    block_ += text;
+    line(block_);
     nextN_ += st_.blockStep;
   }
+  std::string block_;  // block's buffer, reused
   // A signed Klartext number (`+0`, `+12.5`, `-3`) of class c, or false (reported).
   bool number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out);
   bool refuse(const MotionRecord &r, const std::string &why);
@@ -144,6 +149,21 @@ private:
   bool posKnown_ = false;
   AxisVec pos_{};
   std::array<std::string, kAxes> posText_;
+  // The value posText_ was formatted from (NAN: not known): an unchanged value is an unchanged
+  // text, found without formatting it (as in the word-address Emitter).
+  std::array<double, kAxes> posValue_ = nanAxes();
+  // Whether v formats to the written text of axis i (formatted only when the value differs).
+  bool writtenText(int i, double v) const {
+    if (v == posValue_[i]) return true;
+    char digits[kNumberMax];
+    const char *e = writeNumber(digits, v, fmt(isLengthAxis(i) ? WordClass::Axis : WordClass::Rotary));
+    return e ? std::string_view(digits, size_t(e - digits)) == posText_[i] : posText_[i].empty();
+  }
+  static AxisVec nanAxes() {
+    AxisVec v;
+    v.fill(NAN);
+    return v;
+  }
   std::string feedText_, poleText_;
   bool haveProgrammedFeed_ = false;
   double programmedFeed_ = 0;
@@ -154,15 +174,16 @@ private:
 };
 
 bool Klartext::number(double v, WordClass c, const std::string &letter, const MotionRecord &r, std::string &out) {
-  std::string digits;
-  if (!formatNumber(v, fmt(c), digits)) {
+  char buf[kNumberMax + 1];
+  char *b = buf + 1, *e = writeNumber(b, v, fmt(c));  // room in front for signDigits's '+'
+  if (!e) {
     diags_.error(r.loc, "cannot write " + letter + " = " + std::to_string(v) + " in the [" + st_.section +
                             "] number format (not finite or too many digits)", "emit");
     errors_ = true;
     return false;
   }
-  if (fmt(c).plusSign) signDigits(digits);
-  out = letter + digits;
+  if (fmt(c).plusSign && (e == b || (*b != '-' && *b != '+'))) *--b = '+';  // as signDigits
+  out.assign(letter).append(b, size_t(e - b));
   return true;
 }
 
@@ -218,7 +239,7 @@ void Klartext::ensurePosition(const MotionRecord &r) {
 void Klartext::notePosition(const AxisVec &end) {
   for (int i = 0; i < kAxes; ++i) {
     WordClass c = isLengthAxis(i) ? WordClass::Axis : WordClass::Rotary;
-    formatNumber(end[i], fmt(c), posText_[i]);
+    if (end[i] != posValue_[i]) posValue_[i] = formatNumber(end[i], fmt(c), posText_[i]) ? end[i] : NAN;
     pos_[i] = roundTo(end[i], fmt(c).decimals);
   }
 }
@@ -226,16 +247,24 @@ void Klartext::notePosition(const AxisVec &end) {
 std::string Klartext::axisWords(const AxisVec &end, const MotionRecord &r) {
   std::string words;
   for (int i = 0; i < kAxes; ++i) {
+    if (end[i] == posValue_[i]) continue;  // the value of the written text: the same text
     WordClass c = isLengthAxis(i) ? WordClass::Axis : WordClass::Rotary;
-    std::string digits, w;
-    if (!formatNumber(end[i], fmt(c), digits)) {
+    char digits[kNumberMax];
+    const char *e = writeNumber(digits, end[i], fmt(c));
+    if (!e) {
+      std::string w;
       number(end[i], c, std::string(1, kAxisLetters[i]), r, w);  // reports it
       continue;
     }
-    if (digits == posText_[i]) continue;
-    posText_[i] = digits;
+    const std::string_view text(digits, size_t(e - digits));
+    posValue_[i] = end[i];
+    if (text == posText_[i]) continue;
+    posText_[i].assign(text);
     pos_[i] = roundTo(end[i], fmt(c).decimals);
-    if (number(end[i], c, std::string(1, kAxisLetters[i]), r, w)) words += " " + w;
+    words += ' ';
+    words += kAxisLetters[i];
+    if (fmt(c).plusSign && text[0] != '-' && text[0] != '+') words += '+';  // as number() signs it
+    words += text;
   }
   return words;
 }
@@ -313,9 +342,7 @@ void Klartext::arc(const MotionRecord &r) {
   double e[2] = {roundTo(r.end[0], fmt(WordClass::Axis).decimals), roundTo(r.end[1], fmt(WordClass::Axis).decimals)};
   double c[2] = {r.center[0], r.center[1]};
   bool full = s[0] == e[0] && s[1] == e[1];
-  std::string z;
-  formatNumber(r.end[2], fmt(WordClass::Axis), z);
-  const bool helix = turns > 1 || z != posText_[2];
+  const bool helix = turns > 1 || !writtenText(2, r.end[2]);
   if (full && turns == 1 && !helix) {
     // Shorter than the output resolution: a full circle would be wrong, a line is within rounding.
     double os[2] = {r.start[0], r.start[1]}, oe[2] = {r.end[0], r.end[1]};
@@ -360,8 +387,8 @@ void Klartext::arc(const MotionRecord &r) {
     notePosition(r.end);
     pos_[0] = pole[0] + rad * std::cos(a);
     pos_[1] = pole[1] + rad * std::sin(a);
-    posText_[0].clear();
-    posText_[1].clear();
+    posText_[0].clear(), posValue_[0] = NAN;
+    posText_[1].clear(), posValue_[1] = NAN;
   }
   text += ccw ? " DR+" : " DR-";
   text += feedWord(r);

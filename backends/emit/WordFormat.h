@@ -23,11 +23,22 @@ struct NumberFormat {
 // The value after rounding to fmt.decimals (what the controller will read back).
 double roundTo(double v, int decimals);
 
-// Formats v into out (number only, no letter). Returns false when v is not finite or its
-// integer part needs more than maxIntDigits digits.
+// Left padding beyond this many digits is not written (no controller reads wider numbers).
+constexpr int kNumberPadMax = 40;
+// Room writeNumber needs: sign, padding or 20 integer digits, point, 9 decimals.
+constexpr size_t kNumberMax = 1 + kNumberPadMax + 20 + 1 + 9;
+
+// Writes v at p (number only, no letter; room for kNumberMax characters) and returns the end, or
+// nullptr when v is not finite or its integer part needs more than maxIntDigits digits.
+char *writeNumber(char *p, double v, const NumberFormat &fmt);
+// The same into out; false (out unchanged) where writeNumber gives nullptr.
 bool formatNumber(double v, const NumberFormat &fmt, std::string &out);
 
-// Formats an integer word value (T, M, N, O numbers) padded to `pad` digits.
+// Room writeInteger needs: sign and 20 digits.
+constexpr size_t kIntegerMax = 21;
+// Writes an integer word value (T, M, N, O numbers) padded to `pad` digits (at most 20), as
+// printf's "%0*lld" with the sign outside the width: -007 for -7 at 3. Returns the end.
+char *writeInteger(char *p, int64_t v, int pad);
 std::string formatInteger(int64_t v, int pad);
 
 // Text for a comment or message: control characters become spaces, `forbidden` characters are

@@ -5,6 +5,7 @@
 #include "ir/AdemRecords.h"
 #include "frontend/cldata/CldFrontend.h"
 #include "frontend/cldata/ClPath.h"
+#include "frontend/cldata/ClStream.h"
 
 #include <fmt/format.h>
 
@@ -23,6 +24,7 @@ public:
   void start(SourceLoc l) { begin(l); }
   bool lower(const AdemRecord &r);
   bool ended() const { return ended_; }
+  bool finish() { return true; }  // nothing waits for a later record
   using ClPath::setBody;
 
   using Handler = bool (AdemLowerer::*)(const AdemRecord &);
@@ -350,70 +352,23 @@ bool AdemLowerer::lower(const AdemRecord &r) {
   return (this->*(code_->fn))(r);
 }
 
-// The streamed front end (docs/CLDATA.md "Streaming"): a chunk of records read (into records
-// reused from chunk to chunk), their reading errors reported, then lowered into the chunk's
-// region, which the driver runs and clears. The lowerer's state (mode, feed, position) goes on
-// from chunk to chunk, so the ops are those of the whole program, a chunk at a time.
-class AdemStream : public BlockStream {
-public:
-  AdemStream(SourceManager &sm, uint32_t file, Diagnostics &d)
-      : sm_(sm), file_(file), diags_(d), reader_(sm.text(file), file, utf8(sm, file)), lw_(d, scratch_) {}
-  bool next(ir::Region &out, size_t maxBlocks, CmdSink *) override {
-    lw_.setBody(out);
-    if (!started_) lw_.start(reader_.binary() ? SourceLoc{} : SourceLoc{file_, 1, 1}), started_ = true;
-    chunk(maxBlocks);
-    // After the end record the rest only gives warnings; after an error nothing runs, but every
-    // error is still reported, as the whole-program front end does. Both read on to the end here.
-    while (!atEnd_ && (lw_.ended() || diags_.hasErrors())) {
-      if (diags_.hasErrors()) out.clear();
-      chunk(maxBlocks);
-    }
-    return !atEnd_;
+// Whether a listing is UTF-8 (else CP866) needs the whole file: looked at a megabyte at a time
+// (cut before a byte that starts a character), each piece's pages released after it; -1 for a
+// binary file.
+int listingIsUtf8(SourceManager &sm, uint32_t file) {
+  std::string_view t = sm.text(file);
+  if (looksLikeAdemBinary(t)) return -1;
+  constexpr size_t kPiece = 1 << 20;
+  bool ok = true;
+  for (size_t b = 0; ok && b < t.size();) {
+    size_t e = std::min(t.size(), b + kPiece);
+    while (e < t.size() && ((unsigned char)t[e] & 0xC0) == 0x80) ++e;
+    ok = ademIsUtf8(t.substr(b, e - b));
+    sm.released(file, e);
+    b = e;
   }
-
-private:
-  // Whether a listing is UTF-8 (else CP866) needs the whole file: looked at a megabyte at a time
-  // (cut before a byte that starts a character), each piece's pages released after it.
-  static int utf8(SourceManager &sm, uint32_t file) {
-    std::string_view t = sm.text(file);
-    if (looksLikeAdemBinary(t)) return -1;
-    constexpr size_t kPiece = 1 << 20;
-    bool ok = true;
-    for (size_t b = 0; ok && b < t.size();) {
-      size_t e = std::min(t.size(), b + kPiece);
-      while (e < t.size() && ((unsigned char)t[e] & 0xC0) == 0x80) ++e;
-      ok = ademIsUtf8(t.substr(b, e - b));
-      sm.released(file, e);
-      b = e;
-    }
-    return ok;
-  }
-
-  void chunk(size_t maxBlocks) {
-    size_t n = 0;
-    errs_.clear();
-    for (; n < maxBlocks; ++n) {
-      if (recs_.size() <= n) recs_.emplace_back();
-      if (!reader_.next(recs_[n], errs_)) {
-        atEnd_ = true;
-        break;
-      }
-    }
-    reportAdemErrors(diags_, errs_);
-    for (size_t i = 0; i < n; ++i) lw_.lower(recs_[i]);
-    sm_.released(file_, reader_.offset());
-  }
-
-  SourceManager &sm_;
-  uint32_t file_;
-  Diagnostics &diags_;
-  AdemReader reader_;
-  ir::Region scratch_;
-  AdemLowerer lw_;
-  std::vector<AdemRecord> recs_;
-  std::vector<AdemError> errs_;
-  bool started_ = false, atEnd_ = false;
-};
+  return ok;
+}
 
 }  // namespace
 
@@ -432,7 +387,9 @@ bool parseAdemProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir
 }
 
 std::unique_ptr<BlockStream> openAdemStream(SourceManager &sm, uint32_t file, Diagnostics &diags) {
-  return std::make_unique<AdemStream>(sm, file, diags);
+  const SourceLoc start = looksLikeAdemBinary(sm.text(file)) ? SourceLoc{} : SourceLoc{file, 1, 1};
+  return std::make_unique<ClStream<AdemReader, AdemRecord, AdemError, AdemLowerer>>(
+      sm, file, diags, start, reportAdemErrors, sm.text(file), file, listingIsUtf8(sm, file));
 }
 
 }  // namespace ncc::cld

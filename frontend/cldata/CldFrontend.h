@@ -18,5 +18,7 @@ bool parseAdemProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir
 // The same programs a chunk of records at a time, in bounded memory (docs/CLDATA.md
 // "Streaming"): the ops of the whole-program front end, chunk by chunk.
 std::unique_ptr<BlockStream> openAdemStream(SourceManager &sm, uint32_t file, Diagnostics &diags);
+// APT CL text the same way (docs/APT.md "Streaming").
+std::unique_ptr<BlockStream> openAptStream(SourceManager &sm, uint32_t file, Diagnostics &diags);
 
 }  // namespace ncc::cld

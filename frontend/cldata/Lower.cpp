@@ -4,6 +4,7 @@
 // with the ADEM CLData front end.
 #include "frontend/cldata/CldFrontend.h"
 #include "frontend/cldata/ClPath.h"
+#include "frontend/cldata/ClStream.h"
 #include "frontend/cldata/Records.h"
 #include "ir/AptWords.h"
 
@@ -26,9 +27,12 @@ const char *const kIgnored[] = {"PAINT", "DISPLY", "PLOT", "SEQNO", "INTOL", "OU
 
 class Lowerer : ClPath {
 public:
-  Lowerer(SourceManager &sm, uint32_t file, Diagnostics &d, ir::Function &fn)
-      : ClPath(d, fn.body, {"FEDRAT", "CIRCLE"}), sm_(sm), file_(file) {}
-  bool run();
+  Lowerer(Diagnostics &d, ir::Region &body) : ClPath(d, body, {"FEDRAT", "CIRCLE"}) {}
+  void start(SourceLoc l) { begin(l); }
+  bool lower(const Record &r);
+  bool finish();  // after the last record
+  bool ended() const { return ended_; }
+  using ClPath::setBody;
 
 private:
   using Handler = bool (Lowerer::*)(const Record &);
@@ -72,8 +76,6 @@ private:
   bool end(const Record &r) { return ClPath::end(r.loc), true; }
   bool msys(const Record &r);
 
-  SourceManager &sm_;
-  uint32_t file_;
   bool rapidNext_ = false;
   std::optional<ClArc> arc_;  // a CIRCLE waiting for the GOTO that ends its arc
   struct Cycle {
@@ -317,47 +319,58 @@ bool Lowerer::msys(const Record &r) {
   return true;
 }
 
-bool Lowerer::run() {
-  std::vector<RecordError> errs;
-  auto recs = readRecords(sm_.text(file_), file_, errs);
-  bool ok = true;
-  for (auto &e : errs) ok = error(e.loc, e.message, "syntax");
-  begin({file_, 1, 1});
-  for (auto &r : recs) {
-    if (r.word.empty()) {
-      if (r.loc.valid() && !r.rest.empty()) comment(r.rest, r.loc);
-      continue;
-    }
-    if (ended_ && r.word != "FINI") {
-      d_.warning(r.loc, fmt::format("{} after the program's end is not run", r.word), "code-after-end");
-      continue;
-    }
-    const Entry *e = nullptr;
-    for (auto &t : kTable)
-      if (r.word == t.word) e = &t;
-    if (e) {
-      if (arc_ && r.word != "GOTO" && r.word != "PPRINT" && r.word != "FINI" && r.word != "END")
-        ok = error(r.loc, fmt::format("{} between CIRCLE and the GOTO that ends its arc", r.word), "syntax");
-      else if (!(this->*(e->fn))(r)) ok = false;
-      continue;
-    }
-    bool ignored = false;
-    for (auto *w : kIgnored) ignored = ignored || r.word == w;
-    if (ignored) d_.warning(r.loc, fmt::format("{} does not change the tool path: skipped", r.word), "lenient-syntax");
-    else ok = error(r.loc, fmt::format("{} is not a record ncc reads", r.word), "unknown-code");
+bool Lowerer::lower(const Record &r) {
+  if (r.word.empty()) {
+    if (r.loc.valid() && !r.rest.empty()) comment(r.rest, r.loc);
+    return true;
   }
-  if (arc_) ok = error(arc_->loc, "CIRCLE without the GOTO that ends its arc", "syntax");
-  return ok;
+  if (ended_ && r.word != "FINI") {
+    d_.warning(r.loc, fmt::format("{} after the program's end is not run", r.word), "code-after-end");
+    return true;
+  }
+  const Entry *e = nullptr;
+  for (auto &t : kTable)
+    if (r.word == t.word) e = &t;
+  if (e) {
+    if (arc_ && r.word != "GOTO" && r.word != "PPRINT" && r.word != "FINI" && r.word != "END")
+      return error(r.loc, fmt::format("{} between CIRCLE and the GOTO that ends its arc", r.word), "syntax");
+    return (this->*(e->fn))(r);
+  }
+  bool ignored = false;
+  for (auto *w : kIgnored) ignored = ignored || r.word == w;
+  if (!ignored) return error(r.loc, fmt::format("{} is not a record ncc reads", r.word), "unknown-code");
+  d_.warning(r.loc, fmt::format("{} does not change the tool path: skipped", r.word), "lenient-syntax");
+  return true;
+}
+
+bool Lowerer::finish() {
+  if (arc_) return error(arc_->loc, "CIRCLE without the GOTO that ends its arc", "syntax");
+  return true;
+}
+
+bool reportRecordErrors(Diagnostics &d, const std::vector<RecordError> &errs) {
+  for (auto &e : errs) d.error(e.loc, e.message, "syntax");
+  return errs.empty();
 }
 
 }  // namespace
 
 bool parseAptProgram(SourceManager &sm, uint32_t fileId, Diagnostics &diags, ir::Module &out) {
   ir::Function fn = beginClModule(sm, fileId, out);
-  Lowerer lw(sm, fileId, diags, fn);
-  bool ok = lw.run();
+  std::vector<RecordError> errs;
+  auto recs = readRecords(sm.text(fileId), fileId, errs);
+  bool ok = reportRecordErrors(diags, errs);
+  Lowerer lw(diags, fn.body);
+  lw.start({fileId, 1, 1});
+  for (auto &r : recs) ok &= lw.lower(r);
+  ok &= lw.finish();
   out.functions.push_back(std::move(fn));
   return ok;
+}
+
+std::unique_ptr<BlockStream> openAptStream(SourceManager &sm, uint32_t file, Diagnostics &diags) {
+  return std::make_unique<ClStream<RecordReader, Record, RecordError, Lowerer>>(sm, file, diags, SourceLoc{file, 1, 1},
+                                                                                reportRecordErrors, sm.text(file), file);
 }
 
 }  // namespace ncc::cld

@@ -6,12 +6,7 @@
 namespace ncc::cld {
 
 namespace {
-// A logical record: its characters and where each one was written.
-struct Logical {
-  std::string text;
-  std::vector<SourceLoc> locs;
-  SourceLoc at(size_t i) const { return locs.empty() ? SourceLoc{} : locs[std::min(i, locs.size() - 1)]; }
-};
+using Logical = LogicalRecord;
 
 std::string upper(std::string_view s) {
   std::string r(s);
@@ -63,42 +58,49 @@ Record record(const Logical &l) {
 }
 }  // namespace
 
-std::vector<Record> readRecords(std::string_view text, uint32_t file, std::vector<RecordError> &errors) {
-  std::vector<Record> out;
-  Logical cur;
-  bool continuing = false;
-  uint32_t line = 0;
-  size_t pos = 0;
-  while (pos < text.size()) {
-    size_t nl = text.find('\n', pos);
-    std::string_view ln = text.substr(pos, nl == std::string_view::npos ? text.size() - pos : nl - pos);
-    pos = nl == std::string_view::npos ? text.size() : nl + 1;
-    ++line;
+bool RecordReader::next(Record &out, std::vector<RecordError> &errors) {
+  while (pos_ < text_.size()) {
+    size_t nl = text_.find('\n', pos_);
+    std::string_view ln = text_.substr(pos_, nl == std::string_view::npos ? text_.size() - pos_ : nl - pos_);
+    pos_ = nl == std::string_view::npos ? text_.size() : nl + 1;
+    ++line_;
     if (!ln.empty() && ln.back() == '\r') ln.remove_suffix(1);
     size_t cmt = ln.find("$$");
     std::string_view code = ln.substr(0, cmt);
     if (cmt != std::string_view::npos && code.find_first_not_of(" \t") == std::string_view::npos) {
-      if (continuing) continue;  // a comment line inside a continued record
+      if (continuing_) continue;  // a comment line inside a continued record
       Record c;  // a comment line: kept as a comment
-      c.loc = {file, line, (uint32_t)cmt + 1};
+      c.loc = {file_, line_, (uint32_t)cmt + 1};
       c.rest = std::string(ln.substr(cmt + 2));
       while (!c.rest.empty() && c.rest.front() == ' ') c.rest.erase(0, 1);
-      out.push_back(std::move(c));
-      continue;
+      out = std::move(c);
+      return true;
     }
     size_t last = code.find_last_not_of(" \t");
     bool more = last != std::string_view::npos && code[last] == '$';
     if (more) code = code.substr(0, last);
     for (size_t k = 0; k < code.size(); ++k) {
-      cur.text.push_back(code[k]);
-      cur.locs.push_back({file, line, (uint32_t)k + 1});
+      cur_.text.push_back(code[k]);
+      cur_.locs.push_back({file_, line_, (uint32_t)k + 1});
     }
-    continuing = more;
+    continuing_ = more;
     if (more) continue;
-    if (cur.text.find_first_not_of(" \t") != std::string::npos) out.push_back(record(cur));
-    cur = {};
+    const bool any = cur_.text.find_first_not_of(" \t") != std::string::npos;
+    if (any) out = record(cur_);
+    cur_.text.clear();
+    cur_.locs.clear();
+    if (any) return true;
   }
-  if (continuing) errors.push_back({{file, line, 1}, "the file ends inside a `$` continuation"});
+  if (continuing_ && !reported_) errors.push_back({{file_, line_, 1}, "the file ends inside a `$` continuation"});
+  reported_ = true;
+  return false;
+}
+
+std::vector<Record> readRecords(std::string_view text, uint32_t file, std::vector<RecordError> &errors) {
+  std::vector<Record> out;
+  RecordReader reader(text, file);
+  Record r;
+  while (reader.next(r, errors)) out.push_back(std::move(r));
   return out;
 }
 
