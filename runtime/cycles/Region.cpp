@@ -172,6 +172,8 @@ bool slArea(const std::vector<SubContour> &subs, std::vector<Polygon> &area, std
   return true;
 }
 
+bool closedLoop(RegionLoop &loop, std::string &err) { return closeLoop(loop, err); }
+
 bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::string &err) {
   out.clear();
   return closeLoop(loop, err) && loopPolygon(loop, island, tol, out, err);
@@ -230,7 +232,9 @@ namespace {
 bool regionRoute(const PocketRegion &region, const RegionPocketJob &j, std::vector<RoughPass> &passes,
                  std::vector<Polygon> &walls, std::string &err) {
   ClearingSpec s;
-  if (!region.subs.empty() && !slArea(region.subs, s.area, err)) return false;
+  if (!region.formula.empty() ? !formulaArea(region, j.chordTolerance, s.area, err)
+                               : !region.subs.empty() && !slArea(region.subs, s.area, err))
+    return false;
   s.contour = region.outline, s.islands = region.islands;
   s.toolRadius = j.toolRadius, s.stepover = j.stepover, s.allowance = j.sideAllowance;
   s.chordTolerance = j.chordTolerance, s.margin = kChordSagFactor * j.chordTolerance;
