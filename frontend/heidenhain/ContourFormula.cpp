@@ -220,6 +220,7 @@ bool BlockParser::formulaCaptures(SourceLoc bl) {
     call.set("callee", Expr::string(f_.slProgram));
     call.set("frame", Expr::symbol("new"));
     out().push_back(std::move(call));
+    out().push_back(blockOp());  // the cycle's moves are this block's again, not the program's last
     return true;
   }
   for (const auto &e : f_.contourDef) formulaCapture(e, bl);

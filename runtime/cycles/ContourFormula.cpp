@@ -60,15 +60,6 @@ bool inside(const ContourFormula &f, int k, const std::function<bool(int)> &in) 
   return false;
 }
 
-ClipperLib::Paths clip(ClipperLib::ClipType op, const ClipperLib::Paths &a, const ClipperLib::Paths &b) {
-  ClipperLib::Clipper c;
-  c.AddPaths(a, ClipperLib::ptSubject, true);
-  c.AddPaths(b, ClipperLib::ptClip, true);
-  ClipperLib::Paths out;
-  c.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
-
 // The polygons of node k. A capture's arcs are sampled on the safe side of the result: inside
 // where the operand adds to the region (`grow`), outside where it takes away from it (the right
 // side of a difference; `^` is (A | B) \ (A & B), each operand both ways).
@@ -91,17 +82,17 @@ struct AreaEval {
     case FormulaOp::Union:
     case FormulaOp::Intersection:
       if (!eval(n.left, grow, a) || !eval(n.right, grow, b)) return false;
-      out = clip(n.op == (int)FormulaOp::Union ? ClipperLib::ctUnion : ClipperLib::ctIntersection, a, b);
+      out = clipPaths(n.op == (int)FormulaOp::Union ? ClipperLib::ctUnion : ClipperLib::ctIntersection, a, b);
       return true;
     case FormulaOp::Difference:
       if (!eval(n.left, grow, a) || !eval(n.right, !grow, b)) return false;
-      out = clip(ClipperLib::ctDifference, a, b);
+      out = clipPaths(ClipperLib::ctDifference, a, b);
       return true;
     case FormulaOp::Xor: {
       ClipperLib::Paths c, d;
       if (!eval(n.left, grow, a) || !eval(n.right, grow, b) || !eval(n.left, !grow, c) || !eval(n.right, !grow, d))
         return false;
-      out = clip(ClipperLib::ctDifference, clip(ClipperLib::ctUnion, a, b), clip(ClipperLib::ctIntersection, c, d));
+      out = clipPaths(ClipperLib::ctDifference, clipPaths(ClipperLib::ctUnion, a, b), clipPaths(ClipperLib::ctIntersection, c, d));
       return true;
     }
     }

@@ -13,6 +13,8 @@ import json
 import math
 import sys
 
+from sl_check import samples  # a move as points (arcs by their sweep)
+
 
 def inside_poly(p, poly):
     c = False
@@ -48,24 +50,6 @@ def parse(tokens, shapes):
         return f
 
     return expr()
-
-
-def samples(r):
-    s, e = r["start"], r["end"]
-    if r["kind"] == "arc":
-        c = r["center"]
-        a0 = math.atan2(s[1] - c[1], s[0] - c[0])
-        a1 = math.atan2(e[1] - c[1], e[0] - c[0])
-        rad = math.hypot(s[0] - c[0], s[1] - c[1])
-        ccw = r["turns"] > 0
-        sweep = (a1 - a0) % (2 * math.pi) if ccw else -((a0 - a1) % (2 * math.pi))
-        if abs(sweep) < 1e-12:
-            sweep = 2 * math.pi if ccw else -2 * math.pi
-        n = 128
-        return [(c[0] + rad * math.cos(a0 + sweep * k / n), c[1] + rad * math.sin(a0 + sweep * k / n),
-                 s[2] + (e[2] - s[2]) * k / n) for k in range(n + 1)]
-    n = max(1, int(math.hypot(e[0] - s[0], e[1] - s[1]) / 0.1))
-    return [tuple(s[i] + (e[i] - s[i]) * k / n for i in range(3)) for k in range(n + 1)]
 
 
 def main():
