@@ -39,6 +39,7 @@ Op formulaStep(const char *key, int n, SourceLoc at) {
 // run at each SL cycle's call; it replaces cycle 14 and CONTOUR DEF.
 bool BlockParser::selContour() {
   ++i_;
+  f_.slBroken = true;  // until it is read
   const Token &name = tok();
   if (name.kind != Tok::String) return fail(name, "SEL CONTOUR needs the contour program's name in quotes");
   ++i_;
@@ -49,6 +50,7 @@ bool BlockParser::selContour() {
   if (callee.empty()) return false;
   f_.slProgram = callee;
   f_.slLabels.clear(), f_.contourDef.clear();
+  f_.slBroken = false;
   return true;
 }
 
@@ -185,6 +187,7 @@ bool BlockParser::qcFormula() {
 // CONTOUR DEF P1 = "POCK1.H" I2 = "ISLE2.H" DEPTH5 … (L12305-L12313): up to nine contours, the
 // first a pocket (the deepest, L12395); the region is the pockets united less the islands.
 bool BlockParser::contourDef() {
+  f_.slBroken = true;  // until it is read
   if (!expectWord("DEF")) return false;
   std::vector<FileParser::ContourDefEntry> entries;
   while (!atEnd()) {
@@ -208,6 +211,7 @@ bool BlockParser::contourDef() {
   if (entries.empty()) return fail(tok(), "CONTOUR DEF needs its contours (P1 = \"program\" …)", "missing-word");
   f_.contourDef = std::move(entries);
   f_.slLabels.clear(), f_.slProgram.clear();
+  f_.slBroken = false;
   return true;
 }
 

@@ -90,6 +90,7 @@ public:
   std::vector<ContourDefEntry> contourDef;
   bool contourProgram = false;
   std::set<int> qcKnown;
+  bool slBroken = false;  // the last SEL CONTOUR or CONTOUR DEF failed: its calls add no error
   // TCH PROBE 0.0 <title> Qn X-: the result parameter and the probing axis and direction for 0.1.
   struct OldProbe {
     int cycle = -1, resultQ = 0, dir = 0;

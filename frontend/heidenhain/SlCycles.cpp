@@ -68,7 +68,7 @@ bool BlockParser::contourLabels(const Token &n) {
   if (labels.empty()) return fail(n, fmt::format("CYCL DEF {} needs the contour's label numbers", n.text), "missing-word");
   if (labels.size() > 12) return fail(n, "cycle 14 lists at most 12 labels (L9013)", "cycle-parameter");
   f_.slLabels = std::move(labels);
-  f_.slProgram.clear(), f_.contourDef.clear();  // cycle 14 replaces a contour formula
+  f_.slProgram.clear(), f_.contourDef.clear(), f_.slBroken = false;  // cycle 14 replaces a contour formula
   return true;
 }
 
@@ -139,6 +139,7 @@ bool BlockParser::slCall(const std::string &how) {
   if (!how.empty())
     return fail(t_[0], fmt::format("cycle {} by CYCL CALL{} is not simulated yet", number, how), "unsupported-code");
   const bool formula = !f_.slProgram.empty() || !f_.contourDef.empty();  // ContourFormula.cpp
+  if (f_.slLabels.empty() && !formula && f_.slBroken) return false;  // its error is reported
   if (f_.slLabels.empty() && (!formula || number == 25))
     return fail(t_[0], fmt::format("cycle {} needs cycle 14 (CONTOUR) with the contour's labels before it{}", number,
                                    number == 25 ? " (L9872)" : " (or SEL CONTOUR, CONTOUR DEF)"),
