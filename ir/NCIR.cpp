@@ -199,7 +199,7 @@ static const OpInfo kOps[] = {
     {OpKind::Aux, "aux", 0, 0, "", "m b h index value input"},
     {OpKind::Frame, "frame", 0, 0, "slot action", "form combine X Y Z A B C U V W I J K R"},
     {OpKind::Contour, "contour", 0, 0, "action",
-     "use U W R D E I P type depth infeed surface clearance height stepover overlap side_allowance floor_allowance direction "
+     "use U W R D E I P Q type depth infeed surface clearance height stepover overlap side_allowance floor_allowance direction "
      "plunge_feed feed retract_feed corner_radius finish_allowance extension T"},
     {OpKind::Cycle, "cycle", 0, 0, "", "*"},
     {OpKind::Declare, "declare", 0, 0, "var type", "init len"},

@@ -64,6 +64,13 @@ bool Executor::Impl::contourData(const MachineCmd &c) {
     patternSet = true;
     return true;
   case ContourUse::Sub:  // a new SL contour: the sub-contours collected so far are dropped
+    if (c.has(Word::P) || c.has(Word::Q) || c.has(Word::R)) {  // a contour formula's step (docs/IR.md §5.6)
+      if (region.formula.empty()) return error("a contour formula needs its contours declared before it", "contour-invalid");
+      const Word w = c.has(Word::P) ? Word::P : c.has(Word::Q) ? Word::Q : Word::R;
+      const FormulaStep::Kind k = w == Word::P ? FormulaStep::Push : w == Word::Q ? FormulaStep::Apply : FormulaStep::Store;
+      region.formula.push_back({k, (int)c.get(w)});
+      return true;
+    }
     region = PocketRegion{};
     return true;
   default: return error("the finishing consumer takes no data", "syntax");
@@ -186,7 +193,7 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
   }
   if (use == ContourUse::Sub) {
     if (!capture.sl) return error("an SL sub-contour's capture must begin with use=subcontour", "contour-invalid");
-    return regionSub(ct);
+    return regionSub(c, ct);
   }
   if (capture.sl) return error("a capture begun with use=subcontour must end with it", "contour-invalid");
   if (use == ContourUse::Pilot || use == ContourUse::Floor || use == ContourUse::Side)

@@ -607,7 +607,7 @@ struct Executor::Impl {
   PocketRegion region;
   bool regionCapture(const MachineCmd &c, const struct Contour &ct);
   bool regionRun(const MachineCmd &c);
-  bool regionSub(const struct Contour &ct);
+  bool regionSub(const MachineCmd &c, const struct Contour &ct);
   // Heidenhain 24 (run use=side) and 25 (end use=train), runtime/ExecutorSlFinish.cpp.
   bool regionSide(const MachineCmd &c);
   bool contourTrainRun(const MachineCmd &c, const struct Contour &ct);

@@ -25,7 +25,7 @@ bool Executor::Impl::regionCapture(const MachineCmd &c, const Contour &ct) {
   std::string err;
   if (!regionPolygon(loop, island, kRegionChordTolerance, p, err)) return error(err, "contour-invalid");
   if (!island) {
-    region = PocketRegion{(int)plane(), std::move(p), {}, {}};
+    region = PocketRegion{(int)plane(), std::move(p), {}, {}, {}};
     return true;
   }
   if (!islandInside(region, p, kRegionChordTolerance)) return error("the island reaches outside the outline", "contour-invalid");
@@ -35,18 +35,30 @@ bool Executor::Impl::regionCapture(const MachineCmd &c, const Contour &ct) {
 
 // An SL sub-contour: a pocket or an island by its direction and RL/RR (the manual, L8853-L8860);
 // cycle 14's labels collect in order, `contour action=data use=subcontour` starts anew.
-bool Executor::Impl::regionSub(const Contour &ct) {
+// A contour formula's operand (`end use=subcontour P=n`: QCn, Heidenhain DECLARE CONTOUR or CONTOUR
+// DEF) is always a pocket; it declares n for the formula steps that follow.
+bool Executor::Impl::regionSub(const MachineCmd &c, const Contour &ct) {
+  const bool operand = c.has(Word::P);
   if (!region.subs.empty() && region.plane != (int)plane())
     return error("the sub-contours of an SL contour must lie in one plane", "contour-invalid");
-  if (region.subs.size() >= 12) return error("an SL contour has at most 12 sub-contours (cycle 14, L9013)", "contour-invalid");
+  if (!region.subs.empty() && operand == region.formula.empty())
+    return error("an SL contour takes cycle 14's sub-contours or a contour formula's, not both", "contour-invalid");
+  if (!operand && region.subs.size() >= 12) return error("an SL contour has at most 12 sub-contours (cycle 14, L9013)", "contour-invalid");
+  if (operand && region.subs.size() >= 128) return error("a contour formula has at most 128 contours (L11788)", "contour-invalid");
+  if (operand && c.has(Word::Depth) && c.get(Word::Depth) != 0)
+    return error("a contour's own depth (DEPTH, FCL 2) is not simulated yet", "unsupported-code");
+  if (operand && capture.side != 0)
+    return error("a contour of a contour formula takes no radius compensation: it is always a pocket (L11843)", "contour-invalid");
   RegionLoop loop;
   loop.start = {ct.start.a, ct.start.b};
   for (const ContourElem &e : ct.elems)
     loop.segs.push_back({{e.end.a, e.end.b}, e.kind == ContourKind::Arc, {e.centre.a, e.centre.b}, e.ccw});
   SubContour sub;
   std::string err;
-  if (!subContour(loop, capture.side, kRegionChordTolerance, sub, err)) return error(err, "contour-invalid");
-  if (region.subs.empty()) region = PocketRegion{(int)plane(), {}, {}, {}};
+  if (!(operand ? formulaOperand(loop, kRegionChordTolerance, sub, err) : subContour(loop, capture.side, kRegionChordTolerance, sub, err)))
+    return error(err, "contour-invalid");
+  if (region.subs.empty()) region = PocketRegion{(int)plane(), {}, {}, {}, {}};
+  if (operand) region.formula.push_back({FormulaStep::Declare, (int)c.get(Word::P), (int)region.subs.size()});
   region.subs.push_back(std::move(sub));
   return true;
 }

@@ -21,8 +21,8 @@ bool BlockParser::expectWord(std::string_view w) {
 namespace {
 // Statements of the Klartext language ncc knows but does not run yet: refused, naming them.
 const char *const kNotYet[] = {
-    "RPL", "DECLARE", "CONTOUR",
-    "PLANE", "FUNCTION", "QC", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
+    "RPL",
+    "PLANE", "FUNCTION", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
 };
 
 // Text of a block for a comment (BLK FORM is kept that way): the tokens, signs glued to values.
@@ -88,6 +88,7 @@ bool BlockParser::parse() {
       {"APPR", &BlockParser::approachDepart}, {"DEP", &BlockParser::approachDepart},
       {"PATTERN", &BlockParser::patternDef}, {"SEL", &BlockParser::select}, {"GLOBAL", &BlockParser::globalDef},
       {"TCH", &BlockParser::tchProbe},
+      {"DECLARE", &BlockParser::declareContour}, {"CONTOUR", &BlockParser::contourDef}, {"QC", &BlockParser::qcFormula},
       {"FL", &BlockParser::fkElement}, {"FLT", &BlockParser::fkElement}, {"FC", &BlockParser::fkElement},
       {"FCT", &BlockParser::fkElement}, {"FPOL", &BlockParser::fkPole}, {"FSELECT", &BlockParser::fkSelect},
   };

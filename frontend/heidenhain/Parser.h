@@ -77,6 +77,20 @@ public:
   std::vector<std::pair<std::string, SourceLoc>> slLabels;
   std::map<int, std::set<std::string>> slGiven;
   std::map<int, bool> slFmaxOut;
+  // Contour formulas (ContourFormula.cpp): the function of the program SEL CONTOUR selected, the
+  // entries of CONTOUR DEF (either replaces cycle 14), whether this file was loaded by SEL
+  // CONTOUR (DECLARE CONTOUR and QC formulas belong there) and the QC numbers it has so far.
+  std::string slProgram;
+  struct ContourDefEntry {
+    bool island;
+    int n;
+    std::string callee, label;  // a program's function, or a label of this file
+    SourceLoc at;
+  };
+  std::vector<ContourDefEntry> contourDef;
+  bool contourProgram = false;
+  std::set<int> qcKnown;
+  bool slBroken = false;  // the last SEL CONTOUR or CONTOUR DEF failed: its calls add no error
   // TCH PROBE 0.0 <title> Qn X-: the result parameter and the probing axis and direction for 0.1.
   struct OldProbe {
     int cycle = -1, resultQ = 0, dir = 0;
@@ -109,6 +123,7 @@ public:
   bool approach = false;   // some file uses APPR/DEP: … declares their scratch values
   bool callPat = false;    // some CYCL CALL PAT is split over several ops: … declares the call's level
   bool mainInch = false;
+  bool loadingContourProgram = false;  // program() loads SEL CONTOUR's program
   std::set<std::string> probeVars;  // the touch-probe cycles' scratch values (ProbeGen.cpp)
   std::set<std::string> slVars;  // the SL cycles' frozen parameters: declared by the main program
   std::set<std::string> globalDefVars;  // the GLOBAL DEF values PREDEF reads (GlobalDef.cpp): … unset at the start
@@ -222,6 +237,15 @@ private:
   bool slCall(const std::string &how);             // SlCycles.cpp: CYCL CALL of 21-25
   void subContourCapture(const char *use, const std::string &label, SourceLoc at, SourceLoc bl);
   bool trainCall(SourceLoc bl, PathWords &w);
+  // Contour formulas (ContourFormula.cpp)
+  bool selContour();                               // SEL CONTOUR "program"
+  bool declareContour();                           // DECLARE CONTOUR QCn = "program" | LBL n [DEPTHd]
+  bool contourDef();                               // CONTOUR DEF P1 = … I2 = … [DEPTHd]
+  bool qcFormula();                                // QCn = ( QC1 | QC2 ) \ QC3
+  bool contourSource(FileParser::ContourDefEntry &e);  // "program" | LBL n, then DEPTH
+  bool formulaOperand(int closeWith, char &op);    // QCn | ( … ) with the operators that follow
+  void formulaCapture(const FileParser::ContourDefEntry &e, SourceLoc bl);
+  bool formulaCaptures(SourceLoc bl);              // CYCL CALL: SEL CONTOUR's or CONTOUR DEF's region
   bool cyclCallPat();                              // Patterns.cpp
   bool patternDef();                               // Patterns.cpp
   bool select();                                   // Patterns.cpp: SEL PATTERN

@@ -194,6 +194,7 @@ bool readPointTable(ProgramParser &pp, uint32_t fid, bool inchProgram, std::vect
 // `.PNT` added when the name has no extension. [model] ncc reads it when the program is compiled.
 bool BlockParser::select() {
   const Token &what = tok();
+  if (what.isWord("CONTOUR")) return selContour();
   if (!what.isWord("PATTERN"))
     return fail(what, fmt::format("'SEL {}' is not simulated yet (a Klartext function ncc does not run)", what.text), "unsupported-code");
   ++i_;

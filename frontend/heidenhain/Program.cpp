@@ -132,6 +132,8 @@ std::string ProgramParser::program(const std::string &written, uint32_t fromFile
     name = fmt::format("{}_{}", name, k);
   loaded[path] = name;
   FileParser fp(*this, fid, name, false);
+  fp.contourProgram = loadingContourProgram;
+  loadingContourProgram = false;
   if (!fp.run()) ok = false;
   fp.fn.dialect = ir::Dialect::Unknown;
   done.push_back(std::move(fp.fn));

@@ -68,6 +68,7 @@ bool BlockParser::contourLabels(const Token &n) {
   if (labels.empty()) return fail(n, fmt::format("CYCL DEF {} needs the contour's label numbers", n.text), "missing-word");
   if (labels.size() > 12) return fail(n, "cycle 14 lists at most 12 labels (L9013)", "cycle-parameter");
   f_.slLabels = std::move(labels);
+  f_.slProgram.clear(), f_.contourDef.clear(), f_.slBroken = false;  // cycle 14 replaces a contour formula
   return true;
 }
 
@@ -137,8 +138,12 @@ bool BlockParser::slCall(const std::string &how) {
   const int number = f_.cycle;
   if (!how.empty())
     return fail(t_[0], fmt::format("cycle {} by CYCL CALL{} is not simulated yet", number, how), "unsupported-code");
-  if (f_.slLabels.empty())
-    return fail(t_[0], fmt::format("cycle {} needs cycle 14 (CONTOUR) with the contour's labels before it", number), "cycle-invalid");
+  const bool formula = !f_.slProgram.empty() || !f_.contourDef.empty();  // ContourFormula.cpp
+  if (f_.slLabels.empty() && !formula && f_.slBroken) return false;  // its error is reported
+  if (f_.slLabels.empty() && (!formula || number == 25))
+    return fail(t_[0], fmt::format("cycle {} needs cycle 14 (CONTOUR) with the contour's labels before it{}", number,
+                                   number == 25 ? " (L9872)" : " (or SEL CONTOUR, CONTOUR DEF)"),
+                "cycle-invalid");
   if (number != 25 && !f_.slGiven.count(20))
     return fail(t_[0], fmt::format("cycle {} needs cycle 20 (CONTOUR DATA) before it (L9181)", number), "cycle-invalid");
   const std::set<std::string> &data = f_.slGiven[20], &own = f_.slGiven[number];
@@ -180,6 +185,7 @@ bool BlockParser::slCall(const std::string &how) {
   reset.set("action", Expr::symbol("data", bl));
   reset.set("use", Expr::symbol("subcontour", bl));
   out().push_back(std::move(reset));
+  if (formula && !formulaCaptures(bl)) return false;
   for (auto &[label, at] : f_.slLabels) {
     subContourCapture("subcontour", label, at, bl);
     Op end(OpKind::Contour, at);

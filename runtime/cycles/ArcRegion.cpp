@@ -259,6 +259,7 @@ bool insideLoop(const ArcLoop &loop, Point2 p) {
 
 bool ArcRegion::contains(Point2 p) const {
   auto in = [&](const ArcLoop &l) { return insideLoop(l, p); };
+  if (formula.root >= 0) return formulaContains(formula, [&](int k) { return in(pockets[k]); });
   const bool pocket = intersect ? std::all_of(pockets.begin(), pockets.end(), in) : std::any_of(pockets.begin(), pockets.end(), in);
   return pocket && std::none_of(islands.begin(), islands.end(), in);
 }

@@ -7,6 +7,7 @@
 // are linked into loops, the pieces of one element joined again.
 #pragma once
 #include "runtime/CutterComp.h"
+#include "runtime/cycles/ContourFormula.h"
 
 #include <string>
 #include <vector>
@@ -21,10 +22,13 @@ using ArcLoop = std::vector<PathElem>;
 bool insideLoop(const ArcLoop &loop, Point2 p);
 
 // An SL contour's region: inside a pocket (inside both when `intersect`: the first pocket starts
-// inside the second, L9140-L9173), outside every island.
+// inside the second, L9140-L9173), outside every island; or a contour formula's.
 struct ArcRegion {
   std::vector<ArcLoop> pockets, islands;
   bool intersect = false;
+  // A contour formula's region (root >= 0): the formula over `pockets`, the k-th the formula's
+  // capture k (ContourFormula.h); `intersect` and `islands` are then unused.
+  ContourFormula formula;
   bool contains(Point2 p) const;
 };
 

@@ -21,6 +21,17 @@ inline ClipperLib::Path toPath(const Polygon &p) {
   return out;
 }
 
+// A boolean of two path sets, each filled by the non-zero rule (the region pockets, the contour
+// formulas).
+inline ClipperLib::Paths clipPaths(ClipperLib::ClipType op, const ClipperLib::Paths &a, const ClipperLib::Paths &b) {
+  ClipperLib::Clipper c;
+  c.AddPaths(a, ClipperLib::ptSubject, true);
+  c.AddPaths(b, ClipperLib::ptClip, true);
+  ClipperLib::Paths out;
+  c.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+
 inline Polygon fromPath(const ClipperLib::Path &p) {
   Polygon out;
   for (auto &q : p) out.push_back({q.X / kClipperScale, q.Y / kClipperScale});

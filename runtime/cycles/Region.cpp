@@ -122,14 +122,6 @@ ClipperLib::Paths paths(const std::vector<const Polygon *> &ps) {
   for (auto *p : ps) out.push_back(toPath(*p));
   return out;
 }
-ClipperLib::Paths boolean(ClipperLib::ClipType op, const ClipperLib::Paths &a, const ClipperLib::Paths &b) {
-  ClipperLib::Clipper c;
-  c.AddPaths(a, ClipperLib::ptSubject, true);
-  c.AddPaths(b, ClipperLib::ptClip, true);
-  ClipperLib::Paths out;
-  c.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
 }  // namespace
 
 bool subContour(RegionLoop loop, int side, double tol, SubContour &out, std::string &err) {
@@ -164,13 +156,15 @@ bool slArea(const std::vector<SubContour> &subs, std::vector<Polygon> &area, std
   for (auto &p : rest) inside = inside || ClipperLib::PointInPolygon(toClipper(a0.start), p) == 1;
   if (inside && pockets.size() != 2)
     return err = "the first pocket starts inside another: an intersection, which needs exactly two pockets", false;
-  a = inside ? boolean(ClipperLib::ctIntersection, first, rest) : boolean(ClipperLib::ctUnion, first, rest);
-  a = boolean(ClipperLib::ctDifference, a, paths(islands));
+  a = inside ? clipPaths(ClipperLib::ctIntersection, first, rest) : clipPaths(ClipperLib::ctUnion, first, rest);
+  a = clipPaths(ClipperLib::ctDifference, a, paths(islands));
   area.clear();
   for (auto &p : a) area.push_back(fromPath(p));
   if (area.empty()) return err = "the SL contour encloses no area", false;
   return true;
 }
+
+bool closedLoop(RegionLoop &loop, std::string &err) { return closeLoop(loop, err); }
 
 bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::string &err) {
   out.clear();
@@ -230,7 +224,9 @@ namespace {
 bool regionRoute(const PocketRegion &region, const RegionPocketJob &j, std::vector<RoughPass> &passes,
                  std::vector<Polygon> &walls, std::string &err) {
   ClearingSpec s;
-  if (!region.subs.empty() && !slArea(region.subs, s.area, err)) return false;
+  if (!region.formula.empty() ? !formulaArea(region, j.chordTolerance, s.area, err)
+                               : !region.subs.empty() && !slArea(region.subs, s.area, err))
+    return false;
   s.contour = region.outline, s.islands = region.islands;
   s.toolRadius = j.toolRadius, s.stepover = j.stepover, s.allowance = j.sideAllowance;
   s.chordTolerance = j.chordTolerance, s.margin = kChordSagFactor * j.chordTolerance;

@@ -6,6 +6,7 @@
 // second axes); this header stays free of Mill.h so the executor's contour code can include it.
 #pragma once
 #include "runtime/cycles/Clearing.h"
+#include "runtime/cycles/ContourFormula.h"
 #include "runtime/cycles/Step.h"
 
 #include <string>
@@ -28,6 +29,10 @@ struct RegionLoop {
 // of it (an island). False with a message otherwise.
 bool regionPolygon(RegionLoop loop, bool island, double tol, Polygon &out, std::string &err);
 
+// The loop closed as regionPolygon closes it (a first move that only led to the contour's first
+// point dropped); false with a message when it is open.
+bool closedLoop(RegionLoop &loop, std::string &err);
+
 // A Heidenhain SL sub-contour (a label of cycle 14): its polygon (counter-clockwise, sampled on
 // the safe side for what it is), whether it is a pocket, and its first point.
 struct SubContour {
@@ -48,10 +53,17 @@ struct PocketRegion {
   Polygon outline;
   std::vector<Polygon> islands;
   std::vector<SubContour> subs;  // not empty: an SL contour (outline and islands unused)
+  std::vector<FormulaStep> formula;  // not empty: a contour formula over the subs (ContourFormula.h)
 };
 // The SL contour's area (ClearingSpec::area): the pockets united (the intersection of two when the
 // first starts inside the second, L9140-L9173), less the islands.
 bool slArea(const std::vector<SubContour> &subs, std::vector<Polygon> &area, std::string &err);
+// A contour formula's operand (DECLARE CONTOUR, CONTOUR DEF): always a pocket, whatever its
+// direction (L11843); closed, not crossing itself.
+bool formulaOperand(RegionLoop loop, double tol, SubContour &out, std::string &err);
+// The region of a contour formula (PocketRegion::formula): its captures sampled within `tol` on
+// the safe side of what they add or take away, combined by Clipper (ContourFormula.cpp).
+bool formulaArea(const PocketRegion &region, double tol, std::vector<Polygon> &area, std::string &err);
 // Whether `island` lies inside the outline (within `tol`): an island reaching out of it is an error.
 bool islandInside(const PocketRegion &r, const Polygon &island, double tol);
 

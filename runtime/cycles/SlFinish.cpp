@@ -237,8 +237,10 @@ bool sideFinish(const PocketRegion &region, const SideFinishJob &j, std::vector<
   // The polygons' boolean only checks the contour as cycles 21-23 do (the same messages); the walls
   // come from the exact elements.
   std::vector<Polygon> area;
-  if (!slArea(region.subs, area, err)) return false;
-  const ArcRegion exact = arcRegion(region.subs);
+  const bool formula = !region.formula.empty();
+  if (!(formula ? formulaArea(region, kRegionChordTolerance, area, err) : slArea(region.subs, area, err))) return false;
+  ArcRegion exact = arcRegion(region.subs);  // a formula's captures are all pockets: one loop each, in order
+  if (formula && !buildFormula(region.formula, exact.formula, err)) return false;
   std::vector<ArcLoop> boundary, walls;
   if (!regionBoundary(exact, boundary, err)) return false;
   const ToolCentreRegion centres{exact, boundary, j.toolRadius + j.finishAllowance};
