@@ -1,4 +1,5 @@
 #include "ir/Builtins.h"
+#include "ir/ContourMath.h"
 #include "ir/FrameBuiltins.h"
 #include "ir/Arith.h"
 #include "ir/StrArgs.h"
@@ -281,6 +282,9 @@ static const BuiltinInfo kBuiltins[] = {
     {"TOLEQ", 3, ncc_builtin_toleq, "ncc_builtin_toleq"},   {"TOLNE", 3, ncc_builtin_tolne, "ncc_builtin_tolne"},
     {"TOLLT", 3, ncc_builtin_tollt, "ncc_builtin_tollt"},   {"TOLLE", 3, ncc_builtin_tolle, "ncc_builtin_tolle"},
     {"TOLGT", 3, ncc_builtin_tolgt, "ncc_builtin_tolgt"},   {"TOLGE", 3, ncc_builtin_tolge, "ncc_builtin_tolge"},
+    // Sinumerik INTERSEC and CALCDAT (ir/ContourMath.h): the selector first.
+    {"SIN_INTERSEC", 16, ncc_builtin_sin_intersec, "ncc_builtin_sin_intersec"},
+    {"SIN_CALCDAT", 10, ncc_builtin_sin_calcdat, "ncc_builtin_sin_calcdat", nullptr, nullptr, 'n', 8},
     // String builtins: name, arity, -, -, function, argument kinds, result kind, fewest arguments.
     {"STRLEN", 1, nullptr, nullptr, strStrlen, "s", 'n'},
     {"INDEX", 2, nullptr, nullptr, strIndex, "ss", 'n'},

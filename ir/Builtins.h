@@ -35,8 +35,8 @@ struct BuiltinInfo {
   char argKind(size_t i) const { return args ? args[i] : 'n'; }
 };
 
-// The most arguments of any builtin (CTRANS: six axis/value pairs).
-constexpr unsigned kMaxBuiltinArgs = 12;
+// The most arguments of any builtin (Sinumerik INTERSEC's SIN_INTERSEC: two contour elements).
+constexpr unsigned kMaxBuiltinArgs = 16;
 
 // Returns null for an unknown name (the name is compared case-insensitively).
 const BuiltinInfo *findBuiltin(std::string_view name);

@@ -144,7 +144,10 @@ enum class ContourAction : uint8_t { Data, Begin, End, Run };
 enum class ContourUse : uint8_t {
   Finish, RoughAlongZ, RoughAlongX, PatternRepeat, Outline, Island, Pocket, Sub, Pilot, Floor,
   Side, Train, Rs274Finish, Rs274RoughZ, Rs274RoughX,
-  Keep  // the captured contour is kept for the next library cycle (Sinumerik CYCLE95's NPP)
+  Keep,  // the captured contour is kept for the next library cycle (Sinumerik CYCLE95's NPP)
+  // Sinumerik contour tables (runtime/ExecutorContourTable.cpp): begin/end CONTPRON or CONTDCON
+  // (the captured moves become the table the program reads back as $_sin_table), run EXECTAB.
+  SinTable
 };
 // What a `cycle` op does (docs/IR.md §5.8): Run the entry here (at each position of its
 // pattern), Define store it for Call (Heidenhain CYCL DEF), Modal store it and run it after each

@@ -93,6 +93,7 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::Contour, "use", "rs274_rough_z", (uint8_t)ContourUse::Rs274RoughZ},
     {OpKind::Contour, "use", "rs274_rough_x", (uint8_t)ContourUse::Rs274RoughX},
     {OpKind::Contour, "use", "keep", (uint8_t)ContourUse::Keep},
+    {OpKind::Contour, "use", "sin_table", (uint8_t)ContourUse::SinTable},
     {OpKind::Cycle, "action", "run", (uint8_t)CycleAction::Run},
     {OpKind::Cycle, "action", "define", (uint8_t)CycleAction::Define},
     {OpKind::Cycle, "action", "modal", (uint8_t)CycleAction::Modal},

@@ -52,6 +52,7 @@ const std::vector<std::string> &allNames() {
     for (int i = 0; i < kUserFrames; ++i) n.push_back("_uifr[" + std::to_string(i) + "]");
     for (const char *base : {"_chbfr", "_chbframe", "_ncbfr", "_ncbframe"})
       for (int i = 0; i < kBaseFrames; ++i) n.push_back(fmt::format("{}[{}]", base, i));
+    n.push_back("_sin_table");
     return n;
   }();
   return names;
@@ -72,6 +73,7 @@ const char *sysVarName(SysVar v) { return (size_t)v < allNames().size() ? allNam
 
 std::string sysRefText(const SysRef &r) {
   SysVarInfo info = sysVarInfo(r.var);
+  if (info.family == SysFamily::SinTable) return fmt::format("_sin_table[{}, {}]", r.tool, r.edge);
   if (info.family != SysFamily::ToolData) return sysVarName(r.var);
   return "_tool_data[" + std::to_string(r.tool) + ", " + std::to_string(r.edge) + ", " + std::to_string(info.axis) + "]";
 }
@@ -80,6 +82,7 @@ SysVarInfo sysVarInfo(SysVar v) {
   int id = (int)v - (int)SysVar::Count;
   if (id < 0 || id >= kSysVarIds - (int)SysVar::Count) return {};
   if (id < kWorkOffsetIds) return {SysFamily::WorkOffset, id / 7 + 1, id % 7};
+  if ((int)v == kSinTableId) return {SysFamily::SinTable, 0, 0};
   if ((int)v >= kBaseFrameIds) {
     int b = (int)v - kBaseFrameIds;
     return {(SysFamily)((int)SysFamily::ChBfr + b / kBaseFrames), b % kBaseFrames, 0};
@@ -100,6 +103,7 @@ SysVar sysVarOf(SysFamily f, int system, int axis) {
   if (f == SysFamily::UserFrame && system >= 0 && system < kUserFrames) return (SysVar)(kUserFrameIds + system);
   if (f >= SysFamily::ChBfr && f <= SysFamily::NcBframe && system >= 0 && system < kBaseFrames)
     return (SysVar)(kBaseFrameIds + ((int)f - (int)SysFamily::ChBfr) * kBaseFrames + system);
+  if (f == SysFamily::SinTable) return (SysVar)kSinTableId;
   return kNoSysVar;
 }
 
@@ -114,9 +118,9 @@ static_assert(kMaxToolNumber < 131072);
 namespace {
 // Base names of the indexed families, in SysFamily order from WorkOffset on.
 constexpr const char *kFamilyBase[] = {"_work_offset", "_g92", "_home1", "_home2", "_abs", "_tool_offsets", "_tool_data",
-                                       "_uifr",         "_chbfr", "_chbframe", "_ncbfr",      "_ncbframe"};
-constexpr int kFamilyDims[] = {2, 1, 1, 1, 1, 1, 3, 1, 1, 1, 1, 1};
-static_assert(std::size(kFamilyBase) == (size_t)SysFamily::NcBframe && std::size(kFamilyDims) == std::size(kFamilyBase));
+                                       "_uifr",         "_chbfr", "_chbframe", "_ncbfr",      "_ncbframe", "_sin_table"};
+constexpr int kFamilyDims[] = {2, 1, 1, 1, 1, 1, 3, 1, 1, 1, 1, 1, 2};
+static_assert(std::size(kFamilyBase) == (size_t)SysFamily::SinTable && std::size(kFamilyDims) == std::size(kFamilyBase));
 bool wholeIn(double x, int lo, int hi) { return x >= lo && x <= hi && x == (double)(int)x; }
 }  // namespace
 
@@ -142,6 +146,9 @@ SysRef sysVarAt(SysFamily f, double i, double j, double k) {
   case SysFamily::ChBframe:
   case SysFamily::NcBfr:
   case SysFamily::NcBframe: return {wholeIn(i, 0, kBaseFrames - 1) ? sysVarOf(f, (int)i, 0) : kNoSysVar};
+  case SysFamily::SinTable:
+    if (!wholeIn(i, 0, kSinTableRows - 1) || !wholeIn(j, 0, kSinTableColumns - 1)) return {};
+    return {sysVarOf(f, 0, 0), (int32_t)i, (int32_t)j};
   default: return {wholeIn(i, 0, 5) ? sysVarOf(f, 0, (int)i) : kNoSysVar};
   }
 }
@@ -154,6 +161,7 @@ std::string sysVarIndexMessage(std::string_view name, SysFamily f, double i, dou
   const char *range = f == SysFamily::WorkOffset ? "system 1..9, axis 0..6"
                       : f == SysFamily::ToolData  ? "tool 1..99999, edge 0..99999, field 0..60"
                       : f == SysFamily::UserFrame ? "settable frame 0..99"
+                      : f == SysFamily::SinTable  ? "row 0..131071, column 0..31"
                       : f >= SysFamily::ChBfr     ? "base frame 0..7"
                                                   : "axis 0..5";
   return "system variable '$" + std::string(name) + "[" + idx + "]': index out of range (" + range + ")";

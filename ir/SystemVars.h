@@ -45,7 +45,11 @@ enum class SysFamily : uint8_t {
   None, WorkOffset, G92, Home1, Home2, MachinePos, ToolOffset, ToolData, UserFrame,
   // Sinumerik base frames n = 0..7: the channel's stored ($P_CHBFR[n]) and active
   // ($P_CHBFRAME[n]) ones, the NCU-global stored ($P_NCBFR[n]) and active ($P_NCBFRAME[n]) ones.
-  ChBfr, ChBframe, NcBfr, NcBframe
+  ChBfr, ChBframe, NcBfr, NcBframe,
+  // Sinumerik contour tables (CONTPRON, CONTDCON, CALCDAT …, runtime/ExecutorContourTable.cpp):
+  // `$_sin_table[i, j]`, row i, column j of the table the last one built (read-only; one id, the
+  // indices travel in the SysRef's tool and edge as tool data's do).
+  SinTable
 };
 struct SysVarInfo {
   SysFamily family = SysFamily::None;
@@ -84,7 +88,9 @@ constexpr int kUserFrameIds = kToolDataIds + kToolFields;
 // count at most 8), system = the index.
 constexpr int kBaseFrames = 8;
 constexpr int kBaseFrameIds = kUserFrameIds + kUserFrames;
-constexpr int kSysVarIds = kBaseFrameIds + 4 * kBaseFrames;
+constexpr int kSinTableId = kBaseFrameIds + 4 * kBaseFrames;  // `$_sin_table[i, j]`
+constexpr int kSinTableRows = 131072, kSinTableColumns = 32;   // the indices it takes (17 bits: SysRef)
+constexpr int kSysVarIds = kSinTableId + 1;
 static_assert(kSysVarIds < (int)kNoSysVar);
 
 // What an engine reads or writes: the id and, for tool data, the tool and the edge (edge 0: the
@@ -121,7 +127,9 @@ bool sysVarWritable(SysVar v);
 bool sysFamilyWritable(SysFamily f);
 // Variables whose values are FRAMEs (engines read and write them with CmdSink::readFrame/writeFrame).
 bool sysVarIsFrame(SysVar v);
-inline bool sysFamilyIsFrame(SysFamily f) { return f == SysFamily::UserFrame || f >= SysFamily::ChBfr; }
+inline bool sysFamilyIsFrame(SysFamily f) {
+  return f == SysFamily::UserFrame || (f >= SysFamily::ChBfr && f <= SysFamily::NcBframe);
+}
 // The same by IR name (`_pframe`, the family `_uifr`), for the static types of sema and the JIT.
 bool sysVarNameIsFrame(std::string_view name);
 

@@ -533,7 +533,7 @@ bool Executor::Impl::plainStateNow() const {
   if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
   return !(st.feedMode == ModeValue::InverseTime || st.css || st.ended || pf.linear || rotated() || poly.outside ||
            corner.active || corner.requested || comp.active() || compExit || sinSpline.open || storedCycle.modal ||
-           tapOpen);
+           tapOpen || capture.table);
 }
 
 // Here, not in ExecutorMotion.cpp with plainMove: exec inlines it.
@@ -677,7 +677,9 @@ bool Executor::Impl::execCommand(const MachineCmd &c) {
     x.emit(r);  // with compensation on it waits for the pending move
     return true;
   }
-  case CmdKind::Move: return x.execMove(c) && x.modalCycleAfterMove(c);
+  case CmdKind::Move:
+    if (x.capture.table) x.sinTableNote();  // a contour table notes each move's modes
+    return x.execMove(c) && x.modalCycleAfterMove(c);
   case CmdKind::Home: x.curBlockFrame = true; return x.execHome(c);
   case CmdKind::Contour: return x.execContour(c);
   case CmdKind::MachineMove: return x.execMachineMove(c);

@@ -82,6 +82,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
   case ContourAction::Data: return contourData(c);
   case ContourAction::Begin:
     if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
+    if ((ContourUse)c.sub2 == ContourUse::SinTable && !sinTableBegin(c)) return false;
     if (rs274Use((ContourUse)c.sub2) && !rs274ContourAllowed((ContourUse)c.sub2)) return false;
     if (linearFrame()) return error("contour cycles under a rotation, scaling or mirror are not supported", "unsupported-code");
     if (comp.active()) return error("contour cycles with cutter compensation on are not supported", "unsupported-code");
@@ -92,6 +93,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     capture.compOn = false;
     capture.train = (ContourUse)c.sub2 == ContourUse::Train;
     capture.sl = (ContourUse)c.sub2 == ContourUse::Sub || capture.train, capture.side = 0;
+    capture.table = (ContourUse)c.sub2 == ContourUse::SinTable;
     capture.st = st;
     capture.feedMM = feedMM, capture.toolLength = toolLength, capture.toolOffsetX = toolOffsetX, capture.toolOffsetY = toolOffsetY;
     capture.lastPath = lastPathNow();
@@ -99,6 +101,7 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
     route.capture = &capture.records;
     return true;
   case ContourAction::Run:
+    if ((ContourUse)c.sub2 == ContourUse::SinTable) return sinTableExec(c);  // EXECTAB (may be captured)
     if (capture.active) return error("a contour cycle inside a contour", "contour-invalid");
     if ((ContourUse)c.sub2 == ContourUse::Side) return regionSide(c);
     if ((ContourUse)c.sub2 != ContourUse::Pocket && (ContourUse)c.sub2 != ContourUse::Pilot &&
@@ -111,6 +114,9 @@ bool Executor::Impl::execContour(const MachineCmd &c) {
       return error("the last contour move must not end in a chamfer or rounding", "contour-invalid");
     route.capture = nullptr;
     capture.active = false;
+    if (capture.table != ((ContourUse)c.sub2 == ContourUse::SinTable))
+      return error("a contour table's capture must begin and end with use=sin_table", "contour-invalid");
+    capture.table = false;
     // Compensation the contour turns on (808D: not in G71-G73, L3842-3843) ends in it (G70).
     if (capture.compOn && ((ContourUse)c.sub2 == ContourUse::Outline || (ContourUse)c.sub2 == ContourUse::Island))
       return error("a region contour must be captured with cutter compensation off", "contour-invalid");
@@ -186,6 +192,7 @@ bool Executor::Impl::contourConsume(const MachineCmd &c) {
   Contour ct;
   if (!capturedContour(ct)) return false;
   if (use == ContourUse::Outline || use == ContourUse::Island) return regionCapture(c, ct);
+  if (use == ContourUse::SinTable) return sinTableBuild(ct);
   if (use == ContourUse::Train || capture.train) {
     if (use != ContourUse::Train || !capture.train)
       return error("a contour train's capture must begin and end with use=train", "contour-invalid");

@@ -587,6 +587,7 @@ struct Executor::Impl {
     // run (its side: 1 left, 2 right); `train` for the latter.
     bool sl = false, train = false;
     int side = 0;
+    bool table = false;  // a Sinumerik contour table's (use=sin_table): each move's modes are noted
   } capture;
   // Modal consumer data (ISO G71/G72 U R: layer depth and retract; G73 U W R: relief, count), mm.
   double roughDepth = 0, roughRetract = 0;
@@ -596,6 +597,29 @@ struct Executor::Impl {
   // A contour kept for the next library cycle (use=keep, Sinumerik CYCLE95's NPP): ZX plane.
   CycleContour keptContour;
   bool keptSet = false;
+  // Sinumerik contour tables (ExecutorContourTable.cpp): CONTPRON/CONTDCON's parameters, the
+  // modes each captured move ran in, the table built at EXECUTE ($_sin_table), EXECTAB.
+  struct SinTable {
+    bool coded = false;  // CONTDCON (6 columns), else CONTPRON (11)
+    int mode = 0;        // CONTPRON's machining mode: 0 G, 1 L, 2 N, 3 P
+    int rows = 0;        // the program's array
+    int unitHint = -1;   // the last G70 G71 G700 G710 the front end saw (0 … 3), -1 none
+    struct Modes {
+      SourceLoc loc;
+      ModeValue distance, units, feedMode, pathMode;
+      bool css, g9;
+      double tolerance, feed;
+    };
+    std::vector<Modes> modes;
+    bool built = false;
+    std::vector<std::vector<double>> table;
+    double undercuts = 0;
+  } sinTable;
+  bool sinTableBegin(const MachineCmd &c);
+  void sinTableNote();  // a move under a table's capture: its modes
+  bool sinTableBuild(const struct Contour &ct);
+  bool sinTableExec(const MachineCmd &c);  // EXECTAB
+  bool sinTableRead(const SysRef &ref, double &out, std::string &err) const;
   bool contourData(const MachineCmd &c);
   bool contourConsume(const MachineCmd &c);
   bool rs274Contour(const MachineCmd &c, const struct Contour &ct);  // LinuxCNC G70-G72

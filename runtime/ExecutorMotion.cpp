@@ -52,7 +52,8 @@ void Executor::Impl::inverseTimeRate(double mmPerMin) {
 }
 
 bool Executor::Impl::checkFeed(const char *code) {
-  if (capture.active && capture.sl) return true;  // an SL sub-contour is only read: the cycle gives the feeds
+  // An SL sub-contour or a contour table (CONTPRON) is only read: the feeds come later.
+  if (capture.active && (capture.sl || capture.table)) return true;
   if (st.feedMode == ModeValue::InverseTime) {
     // Inverse time: every feed move carries its own F.
     if (feedInBlock && feedMM > 0) return true;

@@ -345,6 +345,7 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
     return true;
   }
   switch (info.family) {
+  case SysFamily::SinTable: return x.sinTableRead(ref, out, err);  // ExecutorContourTable.cpp
   case SysFamily::MachinePos: out = st.position[info.axis] / x.axisScale(info.axis); return true;  // program units
   case SysFamily::ToolData: {
     int t, d;

@@ -253,10 +253,11 @@ bool BlockParser::keyword(const std::string &kw) {
     return true;
   }
   if (fileCommand(kw)) return true;       // Files.cpp
+  if (contourStatement(kw)) return true;  // Contour.cpp
   if (machineConstruct(kw)) return true;  // MachineOnly.cpp
   if (programCall(kw)) return true;       // Calls.cpp
   // Language constructs ncc does not have yet: refused by name, never silently skipped.
-  static const char *kNotYet[] = {"EXECTAB", "REDEF", "GOTOS", "TRAORI", "TRANSMIT", "TRACYL", "G291"};
+  static const char *kNotYet[] = {"REDEF", "GOTOS", "TRAORI", "TRANSMIT", "TRACYL", "G291"};
   for (const char *c : kNotYet)
     if (kw == c)
       return fail(t, fmt::format("'{}' is not simulated (not yet supported construct)", kw), "unsupported-code");

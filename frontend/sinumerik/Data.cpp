@@ -241,6 +241,8 @@ bool BlockParser::def() {
 // After `=`: a value; frames chain with `:` (L3181, `A : B`), arrays take SET/REP lists.
 ExprPtr BlockParser::assignValue(const Expr &target) {
   if (tok().isName("DELDL") && !machineCtx_) return deldlStatus(tok());  // S = DELDL[t, d] (ToolData.cpp)
+  if ((tok().isName("CALCDAT") || tok().isName("INTERSEC")) && peek().is("(") && !machineCtx_)
+    return contourFunction(tok());  // S = CALCDAT(…) (Contour.cpp)
   ExprPtr v = expr(0);
   if (!v) return nullptr;
   while (tok().is(":")) {

@@ -261,6 +261,10 @@ ExprPtr BlockParser::systemVar(const Token &t) {
 ExprPtr BlockParser::function(const Token &t) {
   SourceLoc l = loc(t);
   if (!machineCtx_) {
+    if (t.text == "CALCDAT" || t.text == "INTERSEC") {  // their results go to arrays (Contour.cpp)
+      fail(t, fmt::format("{} gives its status as the whole value of an assignment only: S = {}(…)", t.text, t.text));
+      return nullptr;
+    }
     if (t.text == "ISVAR") return isvar(t);
     if (t.text == "GETVARTYP") return getvartyp(t);
     if (t.text == "STRINGIS") return stringis(t);

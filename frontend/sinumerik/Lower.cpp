@@ -60,6 +60,7 @@ bool BlockParser::lowerWords() {
       mode.set(modeGroupName(grp), Expr::symbol(modeValueInfo(g.mode).name));
       mode.loc = l;
       f_.followMode(g.mode);
+      if (g.act == GAct::Units) f_.noteUnits(g.code->name);  // the contour tables' unit code (Contour.cpp)
       if (grp == ModeGroup::Motion) f_.leadChange = g.arg;  // G34/G35: the lead's change
       break;
     }

@@ -85,6 +85,17 @@ public:
   bool macroLine(std::vector<Token> &toks, uint32_t line, bool &defined);
   ir::Region &cur() { return *regions.back(); }
   std::vector<Token> lineTokens;  // the current line's, reused
+  // CONTPRON / CONTDCON … EXECUTE (Contour.cpp): the table being prepared (empty name: none), and
+  // the last G70 G71 G700 G710 above in this file (0 … 3, -1 none), the tables' unit code.
+  struct ContourTable {
+    std::string name;
+    VarDecl decl;
+    ir::ExprPtr undercuts;
+    bool coded = false;
+    SourceLoc loc;
+  } contourTable;
+  int staticUnits = -1;
+  void noteUnits(std::string_view gcode);
 };
 
 class ProgramParser {
@@ -245,6 +256,14 @@ private:
   bool machineGCode(const GInfo &g, const Token &at);
   bool machineCtx_ = false;
   // WRITE DELETE READ FILEDATE … (Files.cpp): false when `kw` is none.
+  // Contour tables (Contour.cpp): CONTPRON CONTDCON EXECUTE EXECTAB (false: `kw` is none of
+  // them); INTERSEC and CALCDAT as the value of an assignment.
+  bool contourStatement(const std::string &kw);
+  bool executeTable(const Token &at);
+  bool exectab(const Token &at);
+  ir::ExprPtr contourFunction(const Token &at);
+  const VarDecl *contourTableArg(const char *kw, int cols, std::string &name);
+  bool contourArgs(std::vector<ir::ExprPtr> &out, std::vector<const Token *> &at);
   bool fileCommand(const std::string &kw);  // inside one: unknown names, $ variables and functions parse as placeholders
   // DELDL (ToolData.cpp): the statement at `at` (the keyword, not consumed) and, as the value of an
   // assignment, the status it leaves.

@@ -196,6 +196,10 @@ bool FunctionParser::run() {
     pp.error(c.loc, fmt::format("{} without {}", kOpen[(int)c.kind], kClose[(int)c.kind]), "loop-mismatch");
     ok = false;
   }
+  if (!contourTable.name.empty())  // Contour.cpp
+    ok = pp.error(contourTable.loc, fmt::format("{} without EXECUTE in the same program",
+                                                contourTable.coded ? "CONTDCON" : "CONTPRON"),
+                  "loop-mismatch");
   return ok;
 }
 
