@@ -559,7 +559,7 @@ bool Executor::exec(const MachineCmd &c) {
     return true;
   }
   Impl::PlainStateRefresh refresh{x};
-  return !c.mask && c.kind == CmdKind::Mode ? x.execMode(c) : x.execCommand(c);
+  return !c.mask && c.kind == CmdKind::Mode && !x.route.transform ? x.execMode(c) : x.execCommand(c);
 }
 
 // Every other command (out of line: the fast paths above stay a small function).
