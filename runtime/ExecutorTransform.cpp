@@ -39,6 +39,15 @@ bool Executor::Impl::execTransform(const CycleDef &def, const CycleArgs &args, C
     return error(fmt::format("{} needs cutter radius compensation off (G40 and a move after it)", what), "cutcomp-conflict");
   if (corner.active || corner.requested || sinSpline.open || nurbs.open)
     return error(fmt::format("{} must not follow a chamfer, rounding or an open spline sequence", what), "transform");
+  // The manual switches the programmable frame off at selection and TRAFOOF (L16148, L16188):
+  // ncc does not (the frame stays in the Cartesian system), so one that is active is an error.
+  bool frame = pf.linear;
+  for (double v : pf.local) frame = frame || v != 0;
+  if (frame && (name != "TRAFOOF" || route.transform))
+    return error(fmt::format("{} with a programmable frame active (TRANS, ROT, SCALE, MIRROR, G52, G68, G51): the "
+                             "control would switch it off, ncc does not; cancel it before",
+                             what),
+                 "transform");
   if (name == "TRAFOOF") return transformOff();
 
   const int rot = rotaryAxisOf(machine);
