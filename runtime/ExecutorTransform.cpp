@@ -19,10 +19,7 @@ int rotaryAxisOf(const Machine &m) {
   return a == "A" ? 3 : a == "B" ? 4 : 5;
 }
 
-const char *axisLetter(int i) {
-  static const char *k[] = {"X", "Y", "Z", "A", "B", "C", "U", "V", "W"};
-  return k[i];
-}
+std::string axisLetter(int i) { return std::string(1, kAxisLetters[i]); }
 
 }  // namespace
 

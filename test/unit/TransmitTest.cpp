@@ -47,6 +47,25 @@ double worstLineDeviation(const TransformSetup &s, const AxisVec &a, const AxisV
   return worst;
 }
 
+// A face transformation's sink started at machine X10 C0, and an arc record in G17 from (10, 0).
+struct FaceSink {
+  Collect out;
+  SourceManager sm;
+  Diagnostics diags{sm};
+  TransformSink sink{out, diags};
+  FaceSink() { sink.begin(face(), P(10, 0, 0, 0)); }
+  void arc(const AxisVec &end, std::array<double, 3> center, int turns) {
+    MotionRecord r;
+    r.kind = RecordKind::Arc;
+    r.plane = Plane::XY;
+    r.start = P(10, 0, 0);
+    r.end = end;
+    r.center = center;
+    r.turns = turns;
+    sink.record(r);
+  }
+};
+
 }  // namespace
 
 TEST(Transmit, FaceMapsAndKeepsCContinuous) {
@@ -130,38 +149,16 @@ TEST(Transmit, SinkRunsThroughThePoleExactly) {
 }
 
 TEST(Transmit, ArcThroughThePoleIsRefused) {
-  Collect out;
-  SourceManager sm;
-  Diagnostics diags(sm);
-  TransformSink sink(out, diags);
-  sink.begin(face(), P(10, 0, 0, 0));
-  MotionRecord r;
-  r.kind = RecordKind::Arc;
-  r.plane = Plane::XY;
-  r.start = P(10, 0, 0);
-  r.end = P(0, 10, 0);
-  r.center = {5, 5, 0};
-  r.turns = -1;  // clockwise: the long way, through (0, 0)
-  sink.record(r);
-  EXPECT_TRUE(sink.failed);
-  EXPECT_EQ(diags.errorCount(), 1u);
+  FaceSink f;
+  f.arc(P(0, 10, 0), {5, 5, 0}, -1);  // clockwise: the long way, through (0, 0)
+  EXPECT_TRUE(f.sink.failed);
+  EXPECT_EQ(f.diags.errorCount(), 1u);
 }
 
 TEST(Transmit, ArcAboutThePoleIsCAlone) {
-  Collect out;
-  SourceManager sm;
-  Diagnostics diags(sm);
-  TransformSink sink(out, diags);
-  sink.begin(face(), P(10, 0, 0, 0));
-  MotionRecord r;
-  r.kind = RecordKind::Arc;
-  r.plane = Plane::XY;
-  r.start = P(10, 0, 0);
-  r.end = P(10, 0, 0);
-  r.center = {0, 0, 0};
-  r.turns = 1;  // a full circle, counter-clockwise
-  sink.record(r);
-  ASSERT_EQ(out.recs.size(), 4u);
-  for (auto &o : out.recs) EXPECT_NEAR(o.end[0], 10, 1e-9);
-  EXPECT_NEAR(out.recs.back().end[5], 360, 1e-9);
+  FaceSink f;
+  f.arc(P(10, 0, 0), {0, 0, 0}, 1);  // a full circle, counter-clockwise
+  ASSERT_EQ(f.out.recs.size(), 4u);
+  for (auto &o : f.out.recs) EXPECT_NEAR(o.end[0], 10, 1e-9);
+  EXPECT_NEAR(f.out.recs.back().end[5], 360, 1e-9);
 }
