@@ -88,6 +88,8 @@ static const LintRule kRules[] = {
      "G92, G52, G54-G59, G10 L20, G28/G30 while a programmable rotation, scaling or mirror (G68, G51, G51.1) is active (808D manual 2.4.2.3-4)"},
     {"frame-invalid", Severity::Error, "executor",
      "a G68/G51/G51.1 the controller rejects: I0 J0 K0 rotation vector (alarm 12560), a third G68, scale factor 0, G51.1 in G91 or without an axis, a centre word off the rotation plane"},
+    {"transform", Severity::Error, "executor",
+     "a kinematic transformation (TRANSMIT, TRACYL, ISO G12.1, G07.1) the machine cannot run (no rotary C axis on the spindle), a code its manual forbids while it is active (a plane change, G28, G53, a C word), or a path it cannot follow (an arc through the pole)"},
     {"cutcomp-conflict", Severity::Error, "executor",
      "G28/G30, G53, a canned cycle or a plane change while compensation is on"},
     {"cutcomp-plane", Severity::Error, "executor",

@@ -533,7 +533,7 @@ bool Executor::Impl::plainStateNow() const {
   if (st.motion == ModeValue::Linear && !(feedMM > 0)) return false;  // checkFeed's error
   return !(st.feedMode == ModeValue::InverseTime || st.css || st.ended || pf.linear || rotated() || poly.outside ||
            corner.active || corner.requested || comp.active() || compExit || sinSpline.open || storedCycle.modal ||
-           tapOpen || capture.table);
+           tapOpen || capture.table || route.transform);
 }
 
 // Here, not in ExecutorMotion.cpp with plainMove: exec inlines it.
@@ -559,12 +559,13 @@ bool Executor::exec(const MachineCmd &c) {
     return true;
   }
   Impl::PlainStateRefresh refresh{x};
-  return !c.mask && c.kind == CmdKind::Mode ? x.execMode(c) : x.execCommand(c);
+  return !c.mask && c.kind == CmdKind::Mode && !x.route.transform ? x.execMode(c) : x.execCommand(c);
 }
 
 // Every other command (out of line: the fast paths above stay a small function).
 bool Executor::Impl::execCommand(const MachineCmd &c) {
   Impl &x = *this;
+  if (x.route.transform && !x.trfMode.inner) return x.transformCommand(c);  // ExecutorTransform.cpp
   if (c.kind == CmdKind::Cycle) return x.execCycle(c);  // its words are parameters, not axes
   // Never let NaN or infinity reach positions: a diagnostic instead.
   for (WordMask m = c.mask; m; m &= m - 1) {  // only the words present (all 64 bits)

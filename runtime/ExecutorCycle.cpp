@@ -433,6 +433,7 @@ bool Executor::Impl::execCycle(const MachineCmd &c) {
   if ((entry && !cycleArgsOf(c, *entry, 0, args, err)) ||
       (pattern && !cycleArgsOf(c, *pattern, entry ? (int)cycleParamNames(*entry).size() : 0, patternArgs, err)))
     return error(err, "bad-number");
+  if (entry && isTransformEntry(*entry)) return execTransform(*entry, args, cycleAction(c.sub2));
   switch (cycleAction(c.sub2)) {
   case CycleAction::Define:
   case CycleAction::Modal:

@@ -9,6 +9,7 @@
 #include "runtime/cycles/Region.h"
 #include "runtime/cycles/Thread.h"
 #include "runtime/Executor.h"
+#include "runtime/Transmit.h"
 
 #include <vector>
 
@@ -57,8 +58,10 @@ public:
   explicit RouteSink(MotionSink &out) : out(out) {}
   MotionSink &out;
   std::vector<MotionRecord> *capture = nullptr;
+  MotionSink *transform = nullptr;  // a kinematic transformation's (ExecutorTransform.cpp)
   void record(const MotionRecord &r) override {
     if (capture) capture->push_back(r);
+    else if (transform) transform->record(r);
     else out.record(r);
   }
 };
@@ -70,7 +73,7 @@ uint32_t resetGroupMask(const std::vector<std::string> &groups);
 struct Executor::Impl {
   bool lintRun = false;  // Executor::setLintRun
   Impl(const Machine &m, MotionSink &s, Diagnostics &d)
-      : route(s), machine(m), sink(route), diags(d), compOut(route), comp(compOut) {
+      : route(s), machine(m), sink(route), diags(d), compOut(route), comp(compOut), trf(s, d) {
     std::copy(m.workOffsets.begin(), m.workOffsets.end(), g5x.begin());
     for (auto &[n, offsets] : m.settableFrames) g5x[n - 1] = offsets;
     offsetWrite = m.controller.offsetWritePolicy();
@@ -651,6 +654,18 @@ struct Executor::Impl {
     CycleArgs args;
     bool modal = false;
   } storedCycle;
+  // --- kinematic transformations TRANSMIT/TRACYL/G12.1/G07.1 (ExecutorTransform.cpp) ---
+  TransformSink trf;  // route.transform while one is active
+  struct TransformMode {
+    bool iso = false;        // the ISO rules (the rotary axis word is the surface coordinate)
+    const char *name = "";   // TRANSMIT, TRACYL, G12.1, G07.1
+    ModeValue plane = ModeValue::XY;  // ISO: the plane before, restored at the end
+    WordMask missingAxes = 0;
+    bool inner = false;      // transformCommand runs the command it checked
+  } trfMode;
+  bool execTransform(const CycleDef &def, const CycleArgs &args, CycleAction action);
+  bool transformCommand(const MachineCmd &c);  // every command while one is active
+  bool transformOff();
 };
 
 }  // namespace ncc

@@ -421,6 +421,29 @@ void readEmit(Ctx &c, const toml::node &n, void *obj) {
   });
 }
 
+// [transform] (docs/MACHINE.md "[transform]"): the kinematic transformations' data (TRANSMIT,
+// TRACYL, ISO G12.1/G07.1), kept as text like [emit.*] and read by runtime/ExecutorTransform.cpp:
+// rotary_axis (the spindle's rotary axis, default "C") and tolerance (the chordal tolerance, mm).
+void readTransform(Ctx &c, const toml::node &n, void *obj) {
+  Machine &m = *static_cast<Machine *>(obj);
+  const toml::table *t = n.as_table();
+  if (!t) return c.error(n.source(), "transform: expected a table, got " + typeName(n));
+  for (auto &&[k, v] : *t) {
+    std::string key(k.str());
+    if (key == "rotary_axis") {
+      auto *sv = v.as_string();
+      if (!sv || (**sv != "A" && **sv != "B" && **sv != "C"))
+        c.error(v.source(), "transform.rotary_axis: expected \"A\", \"B\" or \"C\"");
+    } else if (key == "tolerance") {
+      double d = v.is_integer() ? (double)**v.as_integer() : v.is_floating_point() ? **v.as_floating_point() : -1;
+      if (!(d > 0 && d <= 1)) c.error(v.source(), "transform.tolerance: expected a number of mm in (0, 1]");
+    } else {
+      c.error(k.source(), "unknown key '" + key + "' in [transform] (rotary_axis, tolerance)");
+    }
+  }
+  flattenEmit(c, *t, "", m.sections["transform"], m.sectionPositions["transform"]);
+}
+
 // ---- kinematics (docs/MACHINE.md "Kinematics") ---------------------------------------------
 
 constexpr const char *kChainTypes = "xyz table-table head-table head-head";
@@ -561,6 +584,7 @@ const KeyDef<Machine> kTopKeys[] = {
     {"offsets", NodeReader(readOffsets)},
     {"tools", NodeReader(readTools)},
     {"emit", NodeReader(readEmit)},
+    {"transform", NodeReader(readTransform)},
 };
 
 }  // namespace

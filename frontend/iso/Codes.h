@@ -24,6 +24,7 @@ enum class GKind : uint8_t {
   Frame,         // G52 (local shift), G68/G69 (rotation), G51/G50 (scaling), G51.1/G50.1 (mirror); arg 1 on, 0 off
   TurnCycle,     // G70-G73 multiple repetitive turning cycles (arg: the A-system code)
   SpindleMode,   // G96 (arg 2: constant surface speed) / G97 (arg 1: constant rpm)
+  Transform,     // 808D G12.1 (arg 1) / G13.1 (arg 0) face-end, G07.1 (arg 2) cylinder transformation (LowerTransform.cpp)
   NoOp,          // cancels a function ncc does not model and is always off (G15, G291)
   Unsupported,   // known code that is not lowered yet: error with the description
 };

@@ -834,7 +834,7 @@ bool BlockLowerer::lowerActions(ParsedBlock &b, Region &out) {
 
 bool BlockLowerer::lowerPlain(ParsedBlock &b, Region &out) {
   Block blk(*this, b, out);
-  return blk.classify() && blk.setup() && blk.coordinateOps() && blk.turnCycle() && blk.motion() && blk.stops() &&
+  return blk.classify() && blk.setup() && blk.coordinateOps() && blk.transformOp() && blk.turnCycle() && blk.motion() && blk.stops() &&
          blk.callsAndReturn() && blk.finish();
 }
 

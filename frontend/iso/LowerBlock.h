@@ -204,6 +204,7 @@ struct BlockLowerer::Block {
   bool rs274TurnCycle(); // LinuxCNC G70, G71 (.1 .2), G72 (.1 .2) (LowerTurning.cpp)
   bool speedOp();        // S, G96/G97, G50 S / G92 S (LowerTurning.cpp)
   bool frameOps();       // G52, G68/G69, G51/G50, G51.1/G50.1
+  bool transformOp();    // G12.1/G13.1, G07.1 (LowerTransform.cpp)
   bool motion();
   bool threadWords(Op &op, ModeValue m);  // the words of G32/G33/G33.1/G76/G92/G78
   void peckWords(Op &op);                  // P Q R of the lathe's G74/G75 (LowerTurning.cpp)

@@ -107,6 +107,7 @@ bool BlockParser::keyword(const std::string &kw) {
       return fail(t, fmt::format("'{}' cannot share a block with other statements", kw));
   if (kw == "DEF") return def();
   if (kw == "PROC") return proc();
+  if (kw == "TRANSMIT" || kw == "TRACYL" || kw == "TRAFOOF") return transformation(kw);  // Transform.cpp
   if (kw == "IF") return ifStatement();
   if (kw == "ELSE") {
     if (f_.ctl.empty() || f_.ctl.back().kind != Ctl::If) return fail(t, "ELSE without IF", "loop-mismatch");
@@ -257,7 +258,7 @@ bool BlockParser::keyword(const std::string &kw) {
   if (machineConstruct(kw)) return true;  // MachineOnly.cpp
   if (programCall(kw)) return true;       // Calls.cpp
   // Language constructs ncc does not have yet: refused by name, never silently skipped.
-  static const char *kNotYet[] = {"REDEF", "GOTOS", "TRAORI", "TRANSMIT", "TRACYL", "G291"};
+  static const char *kNotYet[] = {"REDEF", "GOTOS", "TRAORI", "G291"};
   for (const char *c : kNotYet)
     if (kw == c)
       return fail(t, fmt::format("'{}' is not simulated (not yet supported construct)", kw), "unsupported-code");

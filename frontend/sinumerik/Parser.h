@@ -241,6 +241,7 @@ private:
   bool libraryCycle(bool modal, const std::string &name, const CycleSignature &lib, const Token &at);
   bool contourCapture(const std::string &name, const char *param, const ir::Op &cycle, const Token &at);
   ir::Op cycleCancel(SourceLoc l) const;
+  bool transformation(const std::string &kw);  // TRANSMIT TRACYL TRAFOOF (Transform.cpp)
   bool gotoStatement(const std::string &kw, std::vector<ir::Op> &into);
   bool ifStatement();
   bool caseStatement();

@@ -1,3 +1,4 @@
+#include "runtime/Transmit.h"
 #include "runtime/cycles/Library.h"
 #include "runtime/cycles/Entry.h"
 #include "runtime/cycles/Mill.h"
@@ -749,6 +750,7 @@ const std::vector<CycleDef> &cycleLibrary() {
     addHeiDeepHoleEntries(v);
     addSinThreadEntries(v);
     addSinTurningEntries(v);
+    addTransformEntries(v);  // runtime/Transmit.cpp: TRANSMIT, TRACYL, TRAFOOF
     return v;
   }();
   return all;

@@ -445,7 +445,7 @@ TEST(Machine, ShippedMachinesLoad) {
       EXPECT_TRUE(Machine::load(e.path().string(), m, err)) << err;
       ++n;
     }
-  EXPECT_EQ(n, 20);  // default, 9 examples, 8 emitter test machines, the oracle machine, the shop programs' mill
+  EXPECT_EQ(n, 22);  // default, 11 examples (two mill-turn), 8 emitter test machines, the oracle machine, the shop programs' mill
   // The embedded text is the file.
   std::ifstream f(root + "/runtime/machines/default-mill.toml");
   std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
