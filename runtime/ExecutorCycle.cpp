@@ -350,7 +350,7 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &given
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
   if (auto t = x.machine.toolTable.find(x.st.toolInSpindle); t != x.machine.toolTable.end())
     ctx.plungeAngle = t->second.plungeAngle, ctx.pointAngle = t->second.pointAngle,
-    ctx.cuttingLength = t->second.cuttingLength;
+    ctx.cuttingLength = t->second.cuttingLength, ctx.toolWidth = t->second.width;
   // A captured contour belongs to the one cycle after it (CYCLE95's NPP); it was captured in the
   // offset frame (Contour.h), the cycle works in program coordinates (ZX: a = Z, b = X).
   CycleContour kept = std::move(x.keptContour);

@@ -749,6 +749,8 @@ const std::vector<CycleDef> &cycleLibrary() {
     addHeiDeepHoleEntries(v);
     addSinThreadEntries(v);
     addSinTurningEntries(v);
+    addSinGrooveEntries(v);
+    addSinUndercutEntries(v);
     return v;
   }();
   return all;
