@@ -56,26 +56,20 @@ struct Half {
   int dir = 1;
 };
 
-// The v of the element from p at u (p.a <= u <= end.a or the reverse): the line's or arc's point.
-double vAt(Pt2 p, const ContourElem &e, double u) {
-  if (std::fabs(e.end.a - p.a) < kEps) return std::max(p.b, e.end.b);
-  if (e.kind != ContourKind::Arc) return p.b + (e.end.b - p.b) * (u - p.a) / (e.end.a - p.a);
-  const double r = std::hypot(p.a - e.centre.a, p.b - e.centre.b);
-  const double h = std::sqrt(std::max(0.0, r * r - (u - e.centre.a) * (u - e.centre.a)));
-  const double lo = std::min(p.b, e.end.b) - 1e-7, hi = std::max(p.b, e.end.b) + 1e-7;
-  const double v1 = e.centre.b + h;
-  return v1 >= lo && v1 <= hi ? v1 : e.centre.b - h;
-}
-
-// The u of the element from p at depth v (between its ends' depths).
-double uAt(Pt2 p, const ContourElem &e, double v) {
-  if (std::fabs(e.end.b - p.b) < kEps) return p.a;
-  if (e.kind != ContourKind::Arc) return p.a + (e.end.a - p.a) * (v - p.b) / (e.end.b - p.b);
-  const double r = std::hypot(p.a - e.centre.a, p.b - e.centre.b);
-  const double h = std::sqrt(std::max(0.0, r * r - (v - e.centre.b) * (v - e.centre.b)));
-  const double lo = std::min(p.a, e.end.a) - 1e-7, hi = std::max(p.a, e.end.a) + 1e-7;
-  const double u1 = e.centre.a + h;
-  return u1 >= lo && u1 <= hi ? u1 : e.centre.a - h;
+// The other coordinate of the element's point (from p, monotonic in both) whose coordinate on
+// `axis` (0: u, 1: v) is x: the line's or the arc's point between the element's ends; an element
+// along the other axis gives its start.
+double pointOn(Pt2 p, const ContourElem &e, int axis, double x) {
+  auto on = [](Pt2 q, int ax) { return ax == 0 ? q.a : q.b; };
+  const int o = 1 - axis;
+  if (std::fabs(on(e.end, axis) - on(p, axis)) < kEps) return on(p, o);
+  if (e.kind != ContourKind::Arc)
+    return on(p, o) + (on(e.end, o) - on(p, o)) * (x - on(p, axis)) / (on(e.end, axis) - on(p, axis));
+  const double r = std::hypot(p.a - e.centre.a, p.b - e.centre.b), dx = x - on(e.centre, axis);
+  const double h = std::sqrt(std::max(0.0, r * r - dx * dx));
+  const double lo = std::min(on(p, o), on(e.end, o)) - 1e-7, hi = std::max(on(p, o), on(e.end, o)) + 1e-7;
+  const double y = on(e.centre, o) + h;
+  return y >= lo && y <= hi ? y : on(e.centre, o) - h;
 }
 
 // The deepest v the half reaches on its top side of u (-inf: none): how deep a plunge whose side
@@ -89,7 +83,7 @@ double depthAt(const Half &h, double u) {
     if (h.dir * (e.end.a - u) <= kEps) {
       best = std::max(best, e.end.b);
     } else {
-      best = std::max(best, vAt(p, e, u));
+      best = std::max(best, pointOn(p, e, 0, u));
       break;
     }
     p = e.end;
@@ -102,7 +96,7 @@ double crossingAt(const Half &h, double v) {
   Pt2 p = h.start;
   if (p.b >= v - kEps) return p.a;
   for (const ContourElem &e : h.elems) {
-    if (e.end.b >= v - kEps) return uAt(p, e, v);
+    if (e.end.b >= v - kEps) return pointOn(p, e, 1, v);
     p = e.end;
   }
   return p.a;
