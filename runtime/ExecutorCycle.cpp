@@ -345,6 +345,7 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &given
   AxisVec here = x.programPosition();
   for (int i = 0; i < 3; ++i) ctx.position[i] = here[i];
   ctx.feed = x.st.feedMode == ModeValue::PerMinute ? x.feedMM : 0;
+  ctx.feedPerRev = x.st.feedMode == ModeValue::PerRev;
   ctx.spindle = x.st.spindle;
   ctx.speed = x.st.speed;
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;

@@ -42,6 +42,7 @@ struct CycleContext {
   // angle ANGLE and the point angle T-ANGLE in degrees, the cutting length LCUTS in mm.
   double plungeAngle = 0, pointAngle = 0, cuttingLength = 0;
   double toolWidth = 0;  // a grooving insert's width in mm (Tool::width; 0: not given)
+  bool feedPerRev = false;  // G95 (feed per revolution) is active
   // The contour captured for this cycle (CycleDef::contour): ZX plane coordinates, x a radius;
   // null when none was captured.
   const CycleContour *contour = nullptr;

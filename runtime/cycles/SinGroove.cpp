@@ -262,8 +262,10 @@ bool sinCycle930(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
   if (idep < 0) return fail(err, "_IDEP1 (depth per plunge) must not be negative");
   if (sdis < 0) return fail(err, "_SDIS (safety clearance) must not be negative");
   if (sdis == 0) sdis = 1;  // [model] as CYCLE951: 1 mm
-  const int num = std::max(1, (int)a.get("_NUM"));
-  if (a.get("_NUM") != std::floor(a.get("_NUM")) || a.get("_NUM") < 0) return fail(err, "_NUM (number of grooves) must be 0 or more");
+  const double grooves = a.get("_NUM");
+  if (grooves != std::floor(grooves) || grooves < 0 || grooves > 1e6)
+    return fail(err, "_NUM (number of grooves) must be a whole number from 0 to a million");
+  const int num = std::max(1, (int)grooves);
   const double dbh = a.get("_DBH");
   if (num > 1 && !(dbh > 0)) return fail(err, "_DBH (distance between the grooves) must be greater than 0 for several grooves");
   // The programmed point is the insert's corner towards -Z (longitudinal) or -X (face): u of the
@@ -326,6 +328,8 @@ bool sinCycle930(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
   }
   // The row: each groove _DBH further along the width; to the first at the safety level, depth
   // axis first.
+  if ((double)num * (double)one.size() > 1e6)
+    return fail(err, fmt::format("_NUM {} grooves would make more than a million moves", num));
   std::vector<ContourElem> moves;
   const Pt2 here{ctx.position[2], ctx.position[0]};
   f.approach(here, {one.front().end.a, -sdis}, moves);

@@ -115,7 +115,12 @@ bool sinCycle940(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
   double sdis = a.get("_SDIS");
   if (sdis < 0) return fail(err, "_SDIS (safety clearance) must not be negative");
   if (sdis == 0) sdis = 1;  // [model] as CYCLE930 and CYCLE951: 1 mm
-  const double feed = std::fabs(a.get("_FFP"));
+  // _FFP is mm/rev (the manual): as it stands under G95, times the spindle speed under G94.
+  double feed = std::fabs(a.get("_FFP"));
+  if (!ctx.feedPerRev && feed > 0) {
+    if (!(ctx.speed > 0)) return fail(err, "_FFP is a feed per revolution: under G94 it needs a spindle speed S");
+    feed *= ctx.speed;
+  }
   const double vx = depthOf(a.get("_VRT"), digit(amode, 3) == 1);
   const int piti = (int)a.get("_PITI");
   if (piti != a.get("_PITI") || piti < 0) return fail(err, "_PITI must be a table index 0 or more");
