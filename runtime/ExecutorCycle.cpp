@@ -354,12 +354,13 @@ bool Executor::Impl::runLibraryCycle(const CycleDef *cyc, const CycleArgs &given
   AxisVec here = x.programPosition();
   for (int i = 0; i < 3; ++i) ctx.position[i] = here[i];
   ctx.feed = x.st.feedMode == ModeValue::PerMinute ? x.feedMM : 0;
+  ctx.feedPerRev = x.st.feedMode == ModeValue::PerRev;
   ctx.spindle = x.st.spindle;
   ctx.speed = x.st.speed;
   if (x.st.toolInSpindle > 0) ctx.toolRadius = x.toolNumberData(x.st.toolInSpindle).radius;
   if (auto t = x.machine.toolTable.find(x.st.toolInSpindle); t != x.machine.toolTable.end())
     ctx.plungeAngle = t->second.plungeAngle, ctx.pointAngle = t->second.pointAngle,
-    ctx.cuttingLength = t->second.cuttingLength;
+    ctx.cuttingLength = t->second.cuttingLength, ctx.toolWidth = t->second.width;
   // A captured contour belongs to the one cycle after it (CYCLE95's NPP); it was captured in the
   // offset frame (Contour.h), the cycle works in program coordinates (ZX: a = Z, b = X).
   CycleContour kept = std::move(x.keptContour);

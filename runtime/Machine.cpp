@@ -369,6 +369,7 @@ const KeyDef<ToolIn> kToolKeys[] = {
     {"plunge_angle", &ToolIn::plungeAngle, 0, 90},  // TOOL.T ANGLE
     {"point_angle", &ToolIn::pointAngle, 0, 180},   // TOOL.T T-ANGLE
     {"cutting_length", &ToolIn::cuttingLength, 0},  // TOOL.T LCUTS
+    {"width", &ToolIn::width, 0},                   // a grooving insert's width (CYCLE930)
 };
 
 void readTools(Ctx &c, const toml::node &n, void *obj) {

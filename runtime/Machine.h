@@ -57,6 +57,9 @@ struct Tool {
   // plunges; T-ANGLE, the point angle of a drill or centring tool (degrees, the full angle);
   // LCUTS, the cutting length (mm).
   double plungeAngle = 0, pointAngle = 0, cuttingLength = 0;
+  // A grooving tool's insert width (mm; Sinumerik Operate's plate width), 0 = not given: the
+  // grooving cycles (CYCLE930) step their plunges by it and cut the far flank with its far corner.
+  double width = 0;
 };
 
 // When a work offset written by a program (LinuxCNC #5221, Fanuc #5221, Sinumerik $P_UIFR)

@@ -42,6 +42,10 @@ static int execOne(ncrt_ctx *ctx, const MachineCmd &c) {
 }
 
 // ---------------------------------------------------------------- packed stream
+// The commands whose text travels with them: comments, messages and a cycle's STRING argument
+// (CYCLE940's _FORM, HOLES1's _HIDE), which a long packed run lost before.
+static bool carriesText(CmdKind k) { return k == CmdKind::Comment || k == CmdKind::Message || k == CmdKind::Cycle; }
+
 static void putVarint(uint64_t v, std::string &out) {
   do {
     uint8_t b = v & 0x7f;
@@ -73,7 +77,7 @@ void packCmd(const MachineCmd &c, const char *text, std::string &out) {
   putVarint(c.loc.col, out);
   for (int w = 0; w < kWords; ++w)
     if (c.mask & wordBit((Word)w)) out.append((const char *)&c.w[w], sizeof(double));
-  if (c.kind == CmdKind::Comment || c.kind == CmdKind::Message) {
+  if (carriesText(c.kind)) {
     size_t n = text ? std::strlen(text) : 0;
     putVarint(n, out);
     out.append(text ? text : "", n);
@@ -109,7 +113,7 @@ static bool unpackCmd(const uint8_t *&p, const uint8_t *end, MachineCmd &c) {
       std::memcpy(&c.w[w], p, sizeof(double));
       p += 8;
     }
-  if (c.kind == CmdKind::Comment || c.kind == CmdKind::Message) {
+  if (carriesText(c.kind)) {
     if (!getVarint(p, end, v) || (uint64_t)(end - p) < v + 1) return false;
     c.text = (const char *)p;
     p += v + 1;

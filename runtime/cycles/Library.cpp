@@ -751,6 +751,8 @@ const std::vector<CycleDef> &cycleLibrary() {
     addSinThreadEntries(v);
     addSinTurningEntries(v);
     addTransformEntries(v);  // runtime/Transmit.cpp: TRANSMIT, TRACYL, TRAFOOF
+    addSinGrooveEntries(v);
+    addSinUndercutEntries(v);
     return v;
   }();
   return all;

@@ -41,6 +41,8 @@ struct CycleContext {
   // The active tool's table data (Tool in runtime/Machine.h; 0: not given): the largest plunge
   // angle ANGLE and the point angle T-ANGLE in degrees, the cutting length LCUTS in mm.
   double plungeAngle = 0, pointAngle = 0, cuttingLength = 0;
+  double toolWidth = 0;  // a grooving insert's width in mm (Tool::width; 0: not given)
+  bool feedPerRev = false;  // G95 (feed per revolution) is active
   // The contour captured for this cycle (CycleDef::contour): ZX plane coordinates, x a radius;
   // null when none was captured.
   const CycleContour *contour = nullptr;
@@ -81,7 +83,9 @@ void addHeiPatternEntries(std::vector<CycleDef> &out);  // HeiPatternDef.cpp
 void addHeiThreadMillEntries(std::vector<CycleDef> &out);  // HeiThreadMill.cpp: 262-267
 void addHeiDeepHoleEntries(std::vector<CycleDef> &out);    // HeiDeepHole.cpp: 204, 205, 241
 void addSinThreadEntries(std::vector<CycleDef> &out);      // SinThread.cpp: CYCLE98, CYCLE99
-void addSinTurningEntries(std::vector<CycleDef> &out);     // SinTurning.cpp: CYCLE951
+void addSinTurningEntries(std::vector<CycleDef> &out);     // SinTurning.cpp: CYCLE951, CYCLE95
+void addSinGrooveEntries(std::vector<CycleDef> &out);       // SinGroove.cpp: CYCLE930
+void addSinUndercutEntries(std::vector<CycleDef> &out);     // SinUndercut.cpp: CYCLE940
 const std::vector<CycleDef> &cycleLibrary();
 const CycleDef *findCycle(std::string_view name);
 

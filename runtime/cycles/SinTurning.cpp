@@ -6,6 +6,7 @@
 // pass along the contour. Lathe geometry in the ZX plane, program coordinates, x a radius (ncc
 // runs Sinumerik in DIAMOF): absolute X values of the cycle are diameters, incremental ones radii.
 #include "runtime/cycles/Entry.h"
+#include "runtime/cycles/TurnPath.h"
 #include "runtime/cycles/Turning.h"
 
 #include <algorithm>
@@ -23,66 +24,10 @@ constexpr double kMaxLayers = 10000;  // a tiny _MID for a large corner is an er
 
 // A point of the plane: a = Z, b = X (radius), as Contour.h.
 Pt2 minus(Pt2 p, Pt2 q) { return {p.a - q.a, p.b - q.b}; }
-Pt2 along(Pt2 p, Pt2 d, double t) { return {p.a + d.a * t, p.b + d.b * t}; }
 double length(Pt2 d) { return std::hypot(d.a, d.b); }
 Pt2 unit(Pt2 d) {
   const double l = length(d);
   return {d.a / l, d.b / l};
-}
-
-// A corner of the contour: a radius (tangent arc) or a chamfer (equal legs along both edges).
-struct Round {
-  double size = 0;
-  bool chamfer = false;
-};
-
-// The polyline pts with corner i (1 … n-2) rounded by rounds[i]: lines and tangent arcs from
-// pts[0] to pts.back(). Each corner takes its tangent (radius) or leg (chamfer) length from both
-// edges; together they must fit each edge.
-bool roundedPath(const std::vector<Pt2> &pts, const std::vector<Round> &rounds, std::vector<ContourElem> &out,
-                 std::string &err) {
-  const size_t n = pts.size();
-  std::vector<double> cut(n, 0.0);  // the length taken from each side of corner i
-  for (size_t i = 1; i + 1 < n; ++i) {
-    if (rounds[i].size <= 0) continue;
-    const Pt2 din = unit(minus(pts[i], pts[i - 1])), dout = unit(minus(pts[i + 1], pts[i]));
-    const double turn = std::acos(std::clamp(din.a * dout.a + din.b * dout.b, -1.0, 1.0));
-    if (turn < 1e-9) continue;  // a straight point has no corner to round
-    cut[i] = rounds[i].chamfer ? rounds[i].size : rounds[i].size * std::tan(turn / 2);
-  }
-  for (size_t i = 0; i + 1 < n; ++i)
-    if (cut[i] + cut[i + 1] > length(minus(pts[i + 1], pts[i])) + 1e-7)
-      return fail(err, fmt::format("a radius or chamfer does not fit its edge (edge length {:g})",
-                                   length(minus(pts[i + 1], pts[i]))));
-  auto line = [&](Pt2 to) {
-    ContourElem e;
-    e.end = to;
-    out.push_back(e);
-  };
-  for (size_t i = 1; i < n; ++i) {
-    const Pt2 din = unit(minus(pts[i], pts[i - 1]));
-    if (cut[i] <= 0 || i + 1 == n) {
-      line(pts[i]);
-      continue;
-    }
-    const Pt2 dout = unit(minus(pts[i + 1], pts[i]));
-    const Pt2 t1 = along(pts[i], din, -cut[i]), t2 = along(pts[i], dout, cut[i]);
-    line(t1);
-    if (rounds[i].chamfer) {
-      line(t2);
-      continue;
-    }
-    // The centre lies on the inner side of the turn, a radius from the first tangent point.
-    const bool left = din.a * dout.b - din.b * dout.a > 0;
-    const Pt2 normal = left ? Pt2{-din.b, din.a} : Pt2{din.b, -din.a};
-    ContourElem arc;
-    arc.kind = ContourKind::Arc;
-    arc.end = t2;
-    arc.centre = along(t1, normal, rounds[i].size);
-    arc.ccw = left;
-    out.push_back(arc);
-  }
-  return true;
 }
 
 // The corner in its own frame: u along the part from the free face (Z0) inwards, w across from
@@ -198,12 +143,8 @@ bool sinCycle951(const CycleArgs &a, const CycleContext &ctx, std::vector<CycleS
       path.erase(path.begin() + 1), rounds.erase(rounds.begin() + 1);
       break;
     }
-  auto leg = [](const Round &c, Pt2 din, Pt2 dout) {
-    const double turn = std::acos(std::clamp(din.a * dout.a + din.b * dout.b, -1.0, 1.0));
-    return c.size <= 0 ? 0.0 : c.chamfer ? c.size : c.size * std::tan(turn / 2);
-  };
-  const double e1 = leg(r[0], {0, 1}, unit(minus(path[1], path[0])));
-  const double e3 = leg(r[2], unit(minus(path.back(), path[path.size() - 2])), {1, 0});
+  const double e1 = roundLeg(r[0], {0, 1}, unit(minus(path[1], path[0])));
+  const double e3 = roundLeg(r[2], unit(minus(path.back(), path[path.size() - 2])), {1, 0});
   path.insert(path.begin(), Pt2{0, -e1}), rounds.insert(rounds.begin(), Round{});
   path.push_back({u3 + e3, H}), rounds.push_back(Round{});
   if (e1 <= 0) path.erase(path.begin()), rounds.erase(rounds.begin());
@@ -327,40 +268,6 @@ double outermost(const Contour &c, int axis, double sign) {
     from = e.end;
   }
   return best;
-}
-
-// The cycle's steps from contour moves: rapids, feeds at `feed` (0: the modal feed) split every
-// `dam` of path with a dwell of `dt` seconds (chip breaking), arcs.
-void contourSteps(const std::vector<ContourElem> &moves, Pt2 from, double y, double feed, double dam, double dt,
-                  std::vector<CycleStep> &out) {
-  for (const ContourElem &e : moves) {
-    CycleStep st;
-    st.pos = {e.end.b, y, e.end.a};
-    if (e.kind == ContourKind::Rapid) {
-      out.push_back(st);
-    } else if (e.kind == ContourKind::Arc) {
-      st.kind = CycleStepKind::Arc, st.feed = feed;
-      st.centre = {e.centre.b, y, e.centre.a};
-      st.ccw = e.ccw;
-      out.push_back(st);
-    } else {
-      const double len = std::hypot(e.end.a - from.a, e.end.b - from.b);
-      const int pieces = dam > 0 ? std::max(1, (int)std::ceil(len / dam - 1e-9)) : 1;
-      for (int i = 1; i <= pieces; ++i) {
-        CycleStep f;
-        f.kind = CycleStepKind::Feed, f.feed = feed;
-        const double t = (double)i / pieces;
-        f.pos = {from.b + (e.end.b - from.b) * t, y, from.a + (e.end.a - from.a) * t};
-        out.push_back(f);
-        if (i < pieces && dt > 0) {
-          CycleStep d;
-          d.kind = CycleStepKind::Dwell, d.seconds = dt;
-          out.push_back(d);
-        }
-      }
-    }
-    from = e.end;
-  }
 }
 
 // CYCLE95(NPP, MID, FALZ, FALX, FAL, FF1, FF2, FF3, _VARI, DT, DAM, _VRT, _GMODE, _DMODE): the
