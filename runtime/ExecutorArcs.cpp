@@ -104,6 +104,7 @@ bool Executor::Impl::arcThrough(const MachineCmd &c) {
 // ends at the end point; the normal axis moves linearly (a helix), as with G2/G3.
 bool Executor::Impl::arcTangent(const MachineCmd &c) {
   if (!checkFeed("CT")) return false;
+  if (Vec3 tn; pf.tiltOn && !tiltedNormal(tn, &c)) return false;  // a turned table: not yet
   if (pf.linear && !pf.similar())
     return error("an arc under a frame that scales its axes unequally is not supported", "unsupported-code");
   if (c.mask & (wordBit(Word::I) | wordBit(Word::J) | wordBit(Word::K) | wordBit(Word::R)))

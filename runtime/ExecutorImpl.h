@@ -4,12 +4,14 @@
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Frame.h"
+#include "runtime/Kinematics.h"
 #include "runtime/cycles/Contour.h"
 #include "runtime/cycles/Library.h"
 #include "runtime/cycles/Region.h"
 #include "runtime/cycles/Thread.h"
 #include "runtime/Executor.h"
 
+#include <optional>
 #include <vector>
 
 namespace ncc {
@@ -332,6 +334,20 @@ struct Executor::Impl {
   bool noseCompAfterT();
   bool execFrame(const MachineCmd &c);
   bool execCopyFrame(const MachineCmd &c, int action);  // G72.1/G72.2 (ExecutorCopy.cpp)
+  // --- the tilted working plane (ExecutorPlane.cpp): Heidenhain 19 / PLANE, pf's tilt slot ---
+  bool execTilt(const MachineCmd &c);
+  // On a machine with a rotary chain the tilt maps the workpiece-frame tip through the chain at the
+  // joints of the position (tiltOut: frameOut's last step, tiltIn: frameIn's first).
+  bool tiltMapped() const { return pf.tiltOn && !machine.chain.joints.empty(); }
+  AxisVec tiltOut(AxisVec tip) const;
+  AxisVec tiltIn(const AxisVec &machinePos) const;
+  // The machine normal of the active plane's normal under the frame (arcs of cycles); false when
+  // the chain turns the workpiece with the table (an error then).
+  bool tiltedNormal(Vec3 &n, const MachineCmd *arc = nullptr);  // arc: its block (its rotary words)
+  bool planeJoint(int i, double &out, std::string &err) const;  // Q120-Q122
+  std::optional<Kinematics> kinematics;  // the machine's chain (built at the first tilt)
+  AxisVec planeJoints{};                  // the rotary positions of the last tilt
+  std::string planeJointsProblem = "no working plane was tilted";  // why they are not known
   bool workpieceShift(const MachineCmd &c);  // 808D turning G10 P00 (ExecutorState.cpp)
   // Emits a FrameChange record when the program -> machine transform (without the tool length,
   // which has its own record) or the work offset selection differs from the last one emitted;

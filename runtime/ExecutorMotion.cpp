@@ -209,6 +209,7 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   const ArcAxes &ax = kArcAxes[(int)plane()];
   const char *code = cw ? "G2" : "G3";
   if (!checkFeed(code)) return false;
+  if (Vec3 tn; pf.tiltOn && !tiltedNormal(tn, &c)) return false;  // a turned table: not yet
   // Under a programmable frame the arc may land in another principal plane, or in a tilted one
   // (3-D G68): its machine plane and normal, and whether it turns the other way (a mirror).
   bool flip = false;
