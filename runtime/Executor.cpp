@@ -100,7 +100,8 @@ bool Executor::Impl::frameKeepsPlane(Plane pl, bool &flip) const {
   if (rotated()) return pl == Plane::XY;  // rs274's Rz (pf is never linear with it: no G68 in .ngc)
   const PlaneAxes ax = planeAxes(pl);
   const int a1 = ax.u, a2 = ax.v, d = ax.n;
-  const auto &m = pf.composite.m;
+  const Affine out = outLinear();
+  const auto &m = out.m;
   if (m[d][a1] != 0 || m[d][a2] != 0 || m[a1][d] != 0 || m[a2][d] != 0) return false;
   double n1 = m[a1][a1] * m[a1][a1] + m[a2][a1] * m[a2][a1], n2 = m[a1][a2] * m[a1][a2] + m[a2][a2] * m[a2][a2];
   double dot = m[a1][a1] * m[a1][a2] + m[a2][a1] * m[a2][a2];

@@ -341,9 +341,12 @@ struct Executor::Impl {
   bool tiltMapped() const { return pf.tiltOn && !machine.chain.joints.empty(); }
   AxisVec tiltOut(AxisVec tip) const;
   AxisVec tiltIn(const AxisVec &machinePos) const;
-  // The machine normal of the active plane's normal under the frame (arcs of cycles); false when
-  // the chain turns the workpiece with the table (an error then).
+  // The machine normal of the active plane's normal under the frame (arcs of cycles); false (an
+  // error) for an arc block that turns a rotary axis of the chain.
   bool tiltedNormal(Vec3 &n, const MachineCmd *arc = nullptr);  // arc: its block (its rotary words)
+  // The linear part of program -> machine for directions: the programmable frame, then on a chain
+  // under the tilt the turn of the table at the current joints (arcs' planes and normals).
+  Affine outLinear() const;
   bool planeJoint(int i, double &out, std::string &err) const;  // Q120-Q122
   std::optional<Kinematics> kinematics;  // the machine's chain (built at the first tilt)
   AxisVec planeJoints{};                  // the rotary positions of the last tilt

@@ -97,8 +97,24 @@ AxisVec Executor::Impl::tiltIn(const AxisVec &machinePos) const {
   return f;
 }
 
+Affine Executor::Impl::outLinear() const {
+  if (!tiltMapped()) return pf.composite;
+  Affine table = kinematics->tipToMachine(st.position, toolLength);
+  table.t = {};
+  Affine l = pf.composite;
+  l.t = {};
+  l = l.then(table);
+  // Directions only (an arc's plane and normal): the table's turn leaves rounding of 1e-16 where
+  // a machine axis is meant, which would make a plane arc a tilted one.
+  for (auto &row : l.m)
+    for (double &v : row)
+      for (double exact : {-1.0, 0.0, 1.0})
+        if (std::fabs(v - exact) < 1e-12) v = exact;
+  return l;
+}
+
 bool Executor::Impl::tiltedNormal(Vec3 &n, const MachineCmd *arc) {
-  n = unit(pf.composite.applyLinear(planeNormal(plane())));
+  n = unit(outLinear().applyLinear(planeNormal(plane())));
   if (!tiltMapped()) return true;
   for (auto &j : machine.chain.joints)  // the chain's map changes along the arc: no arc then
     if (arc && arc->has((Word)j.axis))
@@ -106,15 +122,7 @@ bool Executor::Impl::tiltedNormal(Vec3 &n, const MachineCmd *arc) {
                                "follow a circle",
                                kWordKeys[j.axis]),
                    "unsupported-code");
-  Affine a = kinematics->tipToMachine(st.position, toolLength);
-  if (a.linearIdentity()) return true;
-  std::string at;
-  for (auto &j : machine.chain.joints)
-    if (!j.onHead) at += fmt::format("{}{}={:.4f}", at.empty() ? "" : " ", kWordKeys[j.axis], st.position[j.axis]);
-  return error(fmt::format("an arc in the tilted working plane while the table is turned ({}) is not simulated yet: the "
-                           "table turns the arc's plane in the machine",
-                           at),
-               "unsupported-code");
+  return true;
 }
 
 bool Executor::Impl::planeJoint(int i, double &out, std::string &err) const {
@@ -137,6 +145,9 @@ bool Executor::Impl::execTilt(const MachineCmd &c) {
   // The TNC's order (L13192-L13204): datum shift, tilt, rotation; reset the other way round. ncc
   // keeps the mirror, rotation and axis scaling inside the tilt, so they must not be active when
   // it changes, nor a shift made in the tilted system (the pivot would change its meaning).
+  if (comp.active())  // the compensation works on the machine path: its plane would tilt under it
+    return error(fmt::format("PLANE {} / cycle 19 with radius compensation (RL/RR) on: program R0 before", what),
+                 "cutcomp-conflict");
   const bool involved = pf.tiltOn || set;
   if (involved && (pf.mirrorOn() || pf.rotationLevels || pf.copyOn ||
       (pf.scaleOn && !(pf.scaleFactors[0] == pf.scaleFactors[1] && pf.scaleFactors[1] == pf.scaleFactors[2]))))
