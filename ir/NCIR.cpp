@@ -197,7 +197,7 @@ static const OpInfo kOps[] = {
     {OpKind::SetOffset, "set_offset", 0, 0, "kind", "index X Y Z A B C U V W R H D Q"},
     {OpKind::Stop, "stop", 0, 0, "kind", ""},
     {OpKind::Aux, "aux", 0, 0, "", "m b h index value input"},
-    {OpKind::Frame, "frame", 0, 0, "slot action", "form combine X Y Z A B C U V W I J K R"},
+    {OpKind::Frame, "frame", 0, 0, "slot action", "form combine tilt position X Y Z A B C U V W I J K R F H P Q E"},
     {OpKind::Contour, "contour", 0, 0, "action",
      "use U W R D E I P Q type depth infeed surface clearance height stepover overlap side_allowance floor_allowance direction "
      "plunge_feed feed retract_feed corner_radius finish_allowance extension T"},

@@ -1,5 +1,5 @@
 #include "ir/OpSymbols.h"
-#include "ir/FrameCopy.h"
+#include "ir/FrameTilt.h"
 #include "ir/MachineCmd.h"
 
 #include <iterator>
@@ -66,6 +66,17 @@ static const OpSymbol kOpSymbols[] = {
     {OpKind::Frame, "slot", "scale", (uint8_t)FrameSlot::Scale},
     {OpKind::Frame, "slot", "mirror", (uint8_t)FrameSlot::Mirror},
     {OpKind::Frame, "slot", "copy", kFrameSlotCopy},
+    {OpKind::Frame, "slot", "tilt", kFrameSlotTilt},
+    {OpKind::Frame, "tilt", "spatial", (uint8_t)TiltForm::Spatial},
+    {OpKind::Frame, "tilt", "projected", (uint8_t)TiltForm::Projected},
+    {OpKind::Frame, "tilt", "euler", (uint8_t)TiltForm::Euler},
+    {OpKind::Frame, "tilt", "vector", (uint8_t)TiltForm::Vector},
+    {OpKind::Frame, "tilt", "points", (uint8_t)TiltForm::Points},
+    {OpKind::Frame, "tilt", "relative", (uint8_t)TiltForm::Relative},
+    {OpKind::Frame, "tilt", "axial", (uint8_t)TiltForm::Axial},
+    {OpKind::Frame, "position", "stay", (uint8_t)TiltMove::Stay},
+    {OpKind::Frame, "position", "turn", (uint8_t)TiltMove::Turn},
+    {OpKind::Frame, "position", "move", (uint8_t)TiltMove::Move},
     {OpKind::Frame, "action", "set", (uint8_t)FrameAction::Set},
     {OpKind::Frame, "action", "cancel", (uint8_t)FrameAction::Cancel},
     {OpKind::Frame, "action", "step", kFrameActionStep},

@@ -22,7 +22,7 @@ static const char *const kNames[] = {
     "_cutter_d", "_sin_deldl_status", "_probe_x", "_probe_y", "_probe_z", "_probe_a", "_probe_b", "_probe_c", "_probe_u",
     "_probe_v", "_probe_w", "_probe_tripped", "_pframe", "_iframe", "_actframe", "_actbframe", "_chbfrmask",
     "_ncbfrmask", "_partframe", "_setframe", "_extframe", "_iso1frame", "_iso2frame", "_iso3frame", "_gframe",
-    "_toolframe", "_wpframe", "_traframe", "_iso4frame", "_cycframe"};
+    "_toolframe", "_wpframe", "_traframe", "_iso4frame", "_cycframe", "_plane_a", "_plane_b", "_plane_c"};
 static_assert(sizeof(kNames) / sizeof(kNames[0]) == (size_t)SysVar::Count);
 
 namespace {
@@ -194,12 +194,12 @@ bool sysFamilyWritable(SysFamily f) {
 
 bool sysVarWritable(SysVar v) {
   return v == SysVar::PFrame || v == SysVar::IFrame || (v >= SysVar::ProbeX && v <= SysVar::ProbeTripped) ||
-         (v >= SysVar::ChBfrMask && v < SysVar::Count) || sysFamilyWritable(sysVarInfo(v).family);
+         (v >= SysVar::ChBfrMask && v <= SysVar::CycFrame) || sysFamilyWritable(sysVarInfo(v).family);
 }
 
 bool sysVarIsFrame(SysVar v) {
   return v == SysVar::PFrame || v == SysVar::IFrame || v == SysVar::ActFrame || v == SysVar::ActBFrame ||
-         (v >= SysVar::PartFrame && v < SysVar::Count) || sysFamilyIsFrame(sysVarInfo(v).family);
+         (v >= SysVar::PartFrame && v <= SysVar::CycFrame) || sysFamilyIsFrame(sysVarInfo(v).family);
 }
 
 bool sysVarNameIsFrame(std::string_view name) {

@@ -34,7 +34,10 @@ enum class SysVar : uint16_t {
   // read-only) and the masks choosing the members that enter it ($P_CHBFRMASK, $P_NCBFRMASK);
   // the system frames of the chain, outer ones first ($P_PARTFRAME … $P_GFRAME).
   ActBFrame, ChBfrMask, NcBfrMask, PartFrame, SetFrame, ExtFrame, Iso1Frame, Iso2Frame, Iso3Frame, GFrame,
-  ToolFrame, WpFrame, TraFrame, Iso4Frame, CycFrame, Count
+  ToolFrame, WpFrame, TraFrame, Iso4Frame, CycFrame,
+  // The rotary-axis positions of the tilted working plane (Heidenhain Q120-Q122 after cycle 19 and
+  // PLANE … STAY, runtime/ExecutorPlane.cpp), degrees.
+  PlaneA, PlaneB, PlaneC, Count
 };
 
 // Indexed families after the named variables (ids from SysVar::Count on): work offsets of

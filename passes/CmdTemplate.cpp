@@ -1,4 +1,5 @@
 #include "passes/CmdTemplate.h"
+#include "ir/FrameTilt.h"
 #include "ir/OpSymbols.h"
 #include "ir/SystemVars.h"
 #include "passes/CycleOp.h"
@@ -174,11 +175,11 @@ bool buildCmdTemplate(const Op &op, CmdTemplate &out, Diagnostics &diags) {
     if (!symbolArg("kind", c.sub)) return false;
     break;
   case OpKind::Frame: {
-    uint16_t action = 0, form = 0, combine = 0;
+    uint16_t action = 0, form = 0, combine = 0, tilt = 0, position = 0;
     if (!symbolArg("slot", c.sub) || !symbolArg("action", action) || !symbolArg("form", form) ||
-        !symbolArg("combine", combine))
+        !symbolArg("combine", combine) || !symbolArg("tilt", tilt) || !symbolArg("position", position))
       return false;
-    c.sub2 = (uint16_t)(action | form | combine);
+    c.sub2 = (uint16_t)(action | form | combine | tilt << kTiltFormShift | position << kTiltMoveShift);
     break;
   }
   case OpKind::Contour:
@@ -316,6 +317,10 @@ Op cmdToOp(const MachineCmd &c) {
     if (c.sub == (uint8_t)FrameSlot::Rotation && (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set)
       op.set("form", Expr::symbol(opSymbolName(op.kind, "form", c.sub2 & kFrameFormAxis)));
     if (c.sub2 & kFrameCombine) op.set("combine", Expr::symbol("ordered"));
+    if (c.sub == kFrameSlotTilt && tiltForm(c.sub2) != TiltForm::None) {
+      op.set("tilt", Expr::symbol(opSymbolName(op.kind, "tilt", (uint8_t)tiltForm(c.sub2))));
+      op.set("position", Expr::symbol(opSymbolName(op.kind, "position", (uint8_t)tiltMove(c.sub2))));
+    }
     break;
   case CmdKind::Contour:
     op.set("action", Expr::symbol(opSymbolName(op.kind, "action", c.sub)));

@@ -2,7 +2,7 @@
 // ExecutorMotion.cpp, tool data and system variables in ExecutorState.cpp, compensation in
 // ExecutorCompensation.cpp. The semantics follow LinuxCNC's rs274 at machine level (the oracle).
 #include "runtime/ExecutorImpl.h"
-#include "ir/FrameCopy.h"
+#include "ir/FrameTilt.h"
 #include "runtime/Geometry.h"
 #include "runtime/WorkOffsetCode.h"
 
@@ -24,7 +24,9 @@ AxisVec Executor::Impl::frameIn(const AxisVec &m) const {
   if (!linearFrame()) return m;
   AxisVec f;
   const AxisVec &o = chainOffset;
-  for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - toolOffset(i);
+  if (tiltMapped()) f = tiltIn(m);  // the tilt on a chain: the tool length along the tool axis
+  else
+    for (int i = 0; i < kAxes; ++i) f[i] = m[i] - o[i] - toolOffset(i);
   if (rotated()) rotateXY(f, -rotation());
   if (!pf.linear) return f;
   for (int i = 0; i < kAxes; ++i) f[i] -= g92[i];
@@ -39,6 +41,7 @@ AxisVec Executor::Impl::frameOut(const AxisVec &f) const {
     for (int i = 0; i < kAxes; ++i) m[i] += g92[i];
   }
   if (rotated()) rotateXY(m, rotation());
+  if (tiltMapped()) return tiltOut(m);
   const AxisVec &o = chainOffset;
   for (int i = 0; i < kAxes; ++i) m[i] += o[i] + toolOffset(i);
   return m;
@@ -97,7 +100,8 @@ bool Executor::Impl::frameKeepsPlane(Plane pl, bool &flip) const {
   if (rotated()) return pl == Plane::XY;  // rs274's Rz (pf is never linear with it: no G68 in .ngc)
   const PlaneAxes ax = planeAxes(pl);
   const int a1 = ax.u, a2 = ax.v, d = ax.n;
-  const auto &m = pf.composite.m;
+  const Affine out = outLinear();
+  const auto &m = out.m;
   if (m[d][a1] != 0 || m[d][a2] != 0 || m[a1][d] != 0 || m[a2][d] != 0) return false;
   double n1 = m[a1][a1] * m[a1][a1] + m[a2][a1] * m[a2][a1], n2 = m[a1][a2] * m[a1][a2] + m[a2][a2] * m[a2][a2];
   double dot = m[a1][a1] * m[a1][a2] + m[a2][a1] * m[a2][a2];
@@ -134,6 +138,10 @@ AxisVec Executor::Impl::target(const MachineCmd &c) const {
     t[1] = y + frameOffset(1);
   }
   if (linear) t = frameOut(t);
+  // A block of rotary words only keeps the linear axes where they are: the TNC's tilting
+  // compensation acts on an axis when that axis moves (L13010), not through the rotary move.
+  if (tiltMapped() && !(c.mask & 7u))
+    for (int i = 0; i < 3; ++i) t[i] = st.position[i];
   return t;
 }
 
@@ -358,6 +366,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
   bool set = (c.sub2 & 0x0f) == (uint8_t)FrameAction::Set;
   bool combine = c.sub2 & kFrameCombine;
   if (c.sub == kFrameSlotCopy) return execCopyFrame(c, c.sub2 & 0x0f);
+  if (c.sub == kFrameSlotTilt) return execTilt(c);
   if (comp.active()) return error("Cannot change the programmable frame with cutter radius comp on", "cutcomp-conflict");
   const AxisVec program = programPosition();
   auto word = [&](int axis, double def) { return c.has((Word)axis) ? c.get((Word)axis) * axisScale(axis) : def; };
@@ -366,7 +375,7 @@ bool Executor::Impl::execFrame(const MachineCmd &c) {
     return error("rotation, scaling and mirroring take no U V W words", "frame-invalid");
   switch (slot) {
   case FrameSlot::Local:  // G52: the named axes' shift (G52 X0 Y0 cancels); cancel = all
-    if (!frameForbids("G52")) return false;
+    if (!pf.onlyTilt() && !frameForbids("G52")) return false;  // under the tilt alone: along its axes
     for (int i = 0; i < kAxes; ++i)
       if (!set || c.has((Word)i)) pf.local[i] = set ? c.get((Word)i) * axisScale(i) : 0;
     break;

@@ -104,12 +104,13 @@ bool Executor::Impl::arcThrough(const MachineCmd &c) {
 // ends at the end point; the normal axis moves linearly (a helix), as with G2/G3.
 bool Executor::Impl::arcTangent(const MachineCmd &c) {
   if (!checkFeed("CT")) return false;
+  if (Vec3 tn; pf.tiltOn && !tiltedNormal(tn, &c)) return false;  // an arc turning the chain
   if (pf.linear && !pf.similar())
     return error("an arc under a frame that scales its axes unequally is not supported", "unsupported-code");
   if (c.mask & (wordBit(Word::I) | wordBit(Word::J) | wordBit(Word::K) | wordBit(Word::R)))
     return error("a tangential arc takes no centre or radius", "arc-invalid");
   if (!(c.mask & kAxisMask)) return true;
-  const Vec3 nrm = pf.linear ? pf.composite.applyLinear(planeNormal(plane())) : planeNormal(plane());
+  const Vec3 nrm = pf.linear ? outLinear().applyLinear(planeNormal(plane())) : planeNormal(plane());
   const Vec3 n = scaled(nrm, 1 / norm(nrm));
   // The tangent and the chord in the plane (their parts along the normal dropped).
   Vec3 t{};

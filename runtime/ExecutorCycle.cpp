@@ -176,6 +176,8 @@ bool Executor::Impl::cycleFrameOk() {
     return error("canned cycles outside the XY plane with a rotated coordinate system are not supported",
                  "unsupported-code");
   if (!pf.linear) return true;
+  // A tilted working plane turns the whole cycle rigidly (ExecutorPlane.cpp); a rotation inside it too.
+  if (pf.tiltOn && !pf.scaleOn && !pf.mirrorOn()) return true;
   // Only a rotation about the drilling axis keeps the cycle's geometry.
   const auto &m = pf.composite.m;
   const int d = planeAxes(plane()).n;
@@ -224,8 +226,9 @@ bool Executor::Impl::runSteps(const std::vector<CycleStep> &steps) {
       AxisVec c = frameIn(st.position);
       c[0] = s.centre[0], c[1] = s.centre[1], c[2] = s.centre[2];
       c = frameOut(c);
-      if (!emitArc(to, {c[0], c[1], c[2]}, planeNormal(plane()), s.ccw ? s.turns : -s.turns, s.feed, true))
-        return false;
+      Vec3 n = planeNormal(plane());
+      if (pf.tiltOn && !tiltedNormal(n)) return false;
+      if (!emitArc(to, {c[0], c[1], c[2]}, n, s.ccw ? s.turns : -s.turns, s.feed, true)) return false;
       break;
     }
     case CycleStepKind::Dwell: {

@@ -4,6 +4,7 @@
 #include "runtime/CutterComp.h"
 #include "runtime/Cycles.h"
 #include "runtime/Frame.h"
+#include "runtime/Kinematics.h"
 #include "runtime/cycles/Contour.h"
 #include "runtime/cycles/Library.h"
 #include "runtime/cycles/Region.h"
@@ -11,6 +12,7 @@
 #include "runtime/Executor.h"
 #include "runtime/Transmit.h"
 
+#include <optional>
 #include <vector>
 
 namespace ncc {
@@ -338,6 +340,23 @@ struct Executor::Impl {
   bool noseCompAfterT();
   bool execFrame(const MachineCmd &c);
   bool execCopyFrame(const MachineCmd &c, int action);  // G72.1/G72.2 (ExecutorCopy.cpp)
+  // --- the tilted working plane (ExecutorPlane.cpp): Heidenhain 19 / PLANE, pf's tilt slot ---
+  bool execTilt(const MachineCmd &c);
+  // On a machine with a rotary chain the tilt maps the workpiece-frame tip through the chain at the
+  // joints of the position (tiltOut: frameOut's last step, tiltIn: frameIn's first).
+  bool tiltMapped() const { return pf.tiltOn && !machine.chain.joints.empty(); }
+  AxisVec tiltOut(AxisVec tip) const;
+  AxisVec tiltIn(const AxisVec &machinePos) const;
+  // The machine normal of the active plane's normal under the frame (arcs of cycles); false (an
+  // error) for an arc block that turns a rotary axis of the chain.
+  bool tiltedNormal(Vec3 &n, const MachineCmd *arc = nullptr);  // arc: its block (its rotary words)
+  // The linear part of program -> machine for directions: the programmable frame, then on a chain
+  // under the tilt the turn of the table at the current joints (arcs' planes and normals).
+  Affine outLinear() const;
+  bool planeJoint(int i, double &out, std::string &err) const;  // Q120-Q122
+  std::optional<Kinematics> kinematics;  // the machine's chain (built at the first tilt)
+  AxisVec planeJoints{};                  // the rotary positions of the last tilt
+  std::string planeJointsProblem = "no working plane was tilted";  // why they are not known
   bool workpieceShift(const MachineCmd &c);  // 808D turning G10 P00 (ExecutorState.cpp)
   // Emits a FrameChange record when the program -> machine transform (without the tool length,
   // which has its own record) or the work offset selection differs from the last one emitted;

@@ -210,6 +210,7 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
   const ArcAxes &ax = kArcAxes[(int)plane()];
   const char *code = cw ? "G2" : "G3";
   if (!checkFeed(code)) return false;
+  if (Vec3 tn; pf.tiltOn && !tiltedNormal(tn, &c)) return false;  // an arc turning the chain
   // Under a programmable frame the arc may land in another principal plane, or in a tilted one
   // (3-D G68): its machine plane and normal, and whether it turns the other way (a mirror).
   bool flip = false;
@@ -221,10 +222,11 @@ bool Executor::Impl::arc(const MachineCmd &c, bool cw) {
       return error(rotated() ? "arcs outside the XY plane with a rotated coordinate system are not supported"
                              : "an arc under a frame that scales its axes unequally is not supported",
                    "unsupported-code");
-    Vec3 n = pf.composite.applyLinear(planeNormal(plane()));
+    const Affine out = outLinear();
+    Vec3 n = out.applyLinear(planeNormal(plane()));
     double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     for (double &v : n) v /= len;
-    flip = pf.composite.det() < 0;  // a mirror reverses the turn about the mapped normal
+    flip = out.det() < 0;  // a mirror reverses the turn about the mapped normal
     machineNormal = n;
     tilted = true;
     for (int i = 0; i < 3; ++i)  // a principal axis after all: that plane, turning about +axis

@@ -451,6 +451,9 @@ bool Executor::readSystem(const SysRef &ref, double &out, std::string &err) cons
   case SysVar::Iso4Frame:
   case SysVar::CycFrame:
   case SysVar::Count: return false;
+  case SysVar::PlaneA:
+  case SysVar::PlaneB:
+  case SysVar::PlaneC: return x.planeJoint((int)v - (int)SysVar::PlaneA, out, err);
   }
   // Positions: program coordinates (all offsets applied), in program units.
   out = x.programPosition()[axis] / x.axisScale(axis);

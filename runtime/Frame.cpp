@@ -81,8 +81,9 @@ void ProgrammableFrame::update() {
   c = c.then(Affine::scaling(mirror, mirrorAt));
   if (rotationLevels == 2) c = c.then(rotation[1]);
   if (rotationLevels >= 1) c = c.then(rotation[0]);
-  linear = !c.linearIdentity() || copyOn;  // a copy's shift is in the composite, not in local
+  linear = !c.linearIdentity() || copyOn || tiltOn;  // a copy's shift is in the composite, not in local
   for (int i = 0; i < 3; ++i) c.t[i] += local[i];
+  if (tiltOn) c = c.then(tilt);
   composite = c;
   inverseComposite = c.inverse();
 }

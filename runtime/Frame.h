@@ -50,10 +50,18 @@ struct ProgrammableFrame {
   double copyAngle = 0;
   Vec3 copyAxis{}, copyCentre{}, copyShift{};
   Affine copy;  // the transform of copy copyIndex (update() sets it)
+  // The tilted working plane (Heidenhain cycle 19 / PLANE, runtime/ExecutorPlane.cpp): the
+  // outermost slot, a rotation about the datum active at its definition (`tiltPivot`, the local
+  // shift then), so a shift defined before the tilt moves the pivot and one defined after it
+  // (local - tiltPivot) moves the tilted system along its own axes.
+  bool tiltOn = false;
+  Affine tilt;  // the rotation about tiltPivot (update() applies it last)
+  double tiltMatrix[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // its linear part: tilted axes in columns
+  Vec3 tiltPivot{};
 
   // The composite of the linear slots and the local shift, and its inverse (update() sets them).
   Affine composite, inverseComposite;
-  bool linear = false;  // a mirror, scaling or rotation is active (else only the local shift)
+  bool linear = false;  // a mirror, scaling, rotation or tilt is active (else only the local shift)
 
   void update();
   // The same transform (composite and local shift) as `o`, exactly: what was written still holds.
@@ -67,6 +75,10 @@ struct ProgrammableFrame {
   void clearScale() { scaleOn = false, scaleFactors = {1, 1, 1}, scaleCentre = {}; }
   void clearRotation() { rotationLevels = 0, rotation[0] = rotation[1] = Affine{}; }
   void clearCopy() { copyOn = false, copyIndex = 0, copyAngle = 0, copyAxis = copyCentre = copyShift = {}; }
+  void clearTilt() { tiltOn = false, tilt = Affine{}, tiltPivot = {}, tiltMatrix[0][0] = tiltMatrix[1][1] = tiltMatrix[2][2] = 1,
+                     tiltMatrix[0][1] = tiltMatrix[0][2] = tiltMatrix[1][0] = tiltMatrix[1][2] = tiltMatrix[2][0] = tiltMatrix[2][1] = 0; }
+  // Only the tilt (and the local shift) is active: no mirror, scaling, rotation or copy inside it.
+  bool onlyTilt() const { return tiltOn && !mirrorOn() && !scaleOn && rotationLevels == 0 && !copyOn; }
 
   // Program coordinates -> the input of the G92 slot, and back (all six axes; A B C shift only).
   AxisVec out(const AxisVec &program) const;

@@ -96,6 +96,31 @@ ToolPose Kinematics::forward(const AxisVec &q, double toolLength) const {
   return {carryTable(q, tip, true, true), carryTable(q, carryHead(q, t0, false), false, true)};
 }
 
+Affine Kinematics::tipToMachine(const AxisVec &q, double toolLength) const {
+  Affine a;
+  Vec3 offset = carryHead(q, scaled(chain_.toolAxis, -toolLength), true);
+  Vec3 o = carryTable(q, {0, 0, 0}, true, false);
+  for (int j = 0; j < 3; ++j) {
+    Vec3 e{};
+    e[j] = 1;
+    Vec3 col = carryTable(q, e, false, false);
+    for (int i = 0; i < 3; ++i) a.m[i][j] = col[i];
+  }
+  for (int i = 0; i < 3; ++i) a.t[i] = o[i] - offset[i];
+  return a;
+}
+
+Affine Kinematics::orientation(const AxisVec &q) const {
+  Affine a;
+  for (int j = 0; j < 3; ++j) {
+    Vec3 e{};
+    e[j] = 1;
+    Vec3 col = carryTable(q, carryHead(q, e, false), false, true);
+    for (int i = 0; i < 3; ++i) a.m[i][j] = col[i];
+  }
+  return a;
+}
+
 void Kinematics::place(JointSolution &s, const double raw[2], const AxisVec &current, const ToolPose &target,
                        double toolLength) const {
   s.joints = current;

@@ -9,6 +9,7 @@
 // when they are zero. The tool axis points from the tip into the spindle; the tip lies
 // `toolLength` from the gauge point along it.
 #pragma once
+#include "runtime/Frame.h"
 #include "runtime/Geometry.h"
 #include "runtime/Machine.h"
 
@@ -44,6 +45,13 @@ public:
   explicit Kinematics(const Machine &m);
 
   ToolPose forward(const AxisVec &joints, double toolLength = 0) const;
+  // For fixed rotary joints: the rigid map from a tool tip in the workpiece frame to the gauge
+  // point in machine X Y Z (forward's X Y Z -> tip, inverted; the tilted working plane,
+  // runtime/ExecutorPlane.cpp). Its linear part is the identity unless a table joint is turned.
+  Affine tipToMachine(const AxisVec &joints, double toolLength = 0) const;
+  // The head's axes seen from the workpiece at these joints (columns: the machine X Y Z carried
+  // by the head joints, then back through the table joints): PLANE AXIAL's working plane.
+  Affine orientation(const AxisVec &joints) const;
   // `current`: the axis positions now; the solution nearest them (or of the preferred tilt sign)
   // is chosen, the free joint keeps its value at a singular pose, and axes outside the chain
   // keep theirs. `target.axis` need not be unit length, but must not be zero.

@@ -22,7 +22,7 @@ namespace {
 // Statements of the Klartext language ncc knows but does not run yet: refused, naming them.
 const char *const kNotYet[] = {
     "RPL",
-    "PLANE", "FUNCTION", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
+    "FUNCTION", "SPL", "TRANS", "POLARKIN", "TABDATA", "PRESET", "FK",
 };
 
 // Text of a block for a comment (BLK FORM is kept that way): the tokens, signs glued to values.
@@ -87,7 +87,7 @@ bool BlockParser::parse() {
       {"STOP", &BlockParser::stop},      {"M", &BlockParser::mOnly},
       {"APPR", &BlockParser::approachDepart}, {"DEP", &BlockParser::approachDepart},
       {"PATTERN", &BlockParser::patternDef}, {"SEL", &BlockParser::select}, {"GLOBAL", &BlockParser::globalDef},
-      {"TCH", &BlockParser::tchProbe},
+      {"TCH", &BlockParser::tchProbe},   {"PLANE", &BlockParser::plane},
       {"DECLARE", &BlockParser::declareContour}, {"CONTOUR", &BlockParser::contourDef}, {"QC", &BlockParser::qcFormula},
       {"FL", &BlockParser::fkElement}, {"FLT", &BlockParser::fkElement}, {"FC", &BlockParser::fkElement},
       {"FCT", &BlockParser::fkElement}, {"FPOL", &BlockParser::fkPole}, {"FSELECT", &BlockParser::fkSelect},

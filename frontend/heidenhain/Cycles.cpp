@@ -40,9 +40,10 @@ Op FileParser::storedCall(SourceLoc l) const {
 }
 
 // The old-style cycles ncc runs, DEF-active: 7 DATUM SHIFT, 8 MIRROR IMAGE, 9 DWELL TIME,
-// 10 ROTATION, 11 SCALING, 26 AXIS-SPECIFIC SCALING.
+// 10 ROTATION, 11 SCALING, 19 WORKING PLANE (Plane.cpp), 26 AXIS-SPECIFIC SCALING.
 bool oldCycleRuns(int number) {
-  return number == 7 || number == 8 || number == 9 || number == 10 || number == 11 || number == 26 || number == 32;
+  return number == 7 || number == 8 || number == 9 || number == 10 || number == 11 || number == 19 || number == 26 ||
+         number == 32;
 }
 
 // One sub-block of cycle 7, 9 or 10 (8, 11, 26: Transforms.cpp). The TNC keeps one datum shift
@@ -52,6 +53,7 @@ bool oldCycleRuns(int number) {
 bool BlockParser::oldCycleBlock(int number, const Token &n) {
   SourceLoc bl = loc(t_[0]);
   if (number == 32) return toleranceBlock(n);
+  if (number == 19) return workingPlaneCycle(n);
   if (number != 7 && number != 9 && number != 10) return transformBlock(number, n);
   f_.pp.frames = true;
   if (number == 9) {  // CYCL DEF 9.1 DWELL 1.5: the time is the block's number

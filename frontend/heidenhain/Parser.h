@@ -227,6 +227,11 @@ private:
   bool oldCycleBlock(int number, const Token &n);  // Cycles.cpp: 7.k, 9.k, 10.k
   bool transformBlock(int number, const Token &n);  // Transforms.cpp: 8.k, 11.k, 26.k
   bool toleranceBlock(const Token &n);             // Cycles.cpp: 32.1, 32.2
+  bool workingPlaneCycle(const Token &n);          // Plane.cpp: 19.1
+  bool plane();                                    // Plane.cpp: PLANE …
+  ir::Op tiltOp(bool set, const char *form, const char *position);
+  std::string planeWord();
+  bool planePositioning(ir::Op &o, const Token &kw);
   bool cyclCallPos();                              // Cycles.cpp
   bool programCycle(const Token &n);               // Cycles.cpp: CYCL DEF 12.1 PGM
   bool contourLabels(const Token &n);              // SlCycles.cpp: CYCL DEF 14.1 1/2/3

@@ -29,6 +29,7 @@ ExprPtr valueFor(OpKind op, const std::string &key) {
       {"dir", "ccw"},       {"flood", "on"},   {"mist", "on"},   {"side", "left"}, {"d_default", "tool"},
       {"slot", "rotation"}, {"action", "set"}, {"form", "axis"}, {"ic", "X"}, {"ac", "Y"}, {"way", "shortest"},
       {"mode", "css"},      {"after_css", "error"}, {"entry", "normal"}, {"combine", "ordered"},
+      {"tilt", "spatial"},  {"position", "turn"},
   };
   if (key == "text") return Expr::string("x");
   if (op == OpKind::ToolLength && key == "form") return Expr::symbol("dynamic");
