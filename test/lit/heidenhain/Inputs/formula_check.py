@@ -9,21 +9,10 @@ first violation.
 The formula takes | & ^ \\ and parentheses, as the Klartext one.
 """
 import argparse
-import json
 import math
 import sys
 
-from sl_check import samples  # a move as points (arcs by their sweep)
-
-
-def inside_poly(p, poly):
-    c = False
-    for i in range(len(poly)):
-        a, b = poly[i], poly[(i + 1) % len(poly)]
-        if (a[1] > p[1]) != (b[1] > p[1]):
-            if p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]):
-                c = not c
-    return c
+from sl_check import inside, moves_of, samples  # point in polygon, the moves, a move as points
 
 
 def parse(tokens, shapes):
@@ -70,22 +59,13 @@ def main():
     for c in a.poly:
         name, v = c.split("=")
         poly = [tuple(float(x) for x in pt.split(",")) for pt in v.split()]
-        shapes[name] = lambda p, poly=poly: inside_poly(p, poly)
+        shapes[name] = lambda p, poly=poly: inside(p, poly)
     tokens = a.formula.replace("(", " ( ").replace(")", " ) ").split()
     region = parse(tokens, shapes)
     rim = [(math.cos(2 * math.pi * k / 90), math.sin(2 * math.pi * k / 90)) for k in range(90)]
     keep = a.keep - 1e-3
     moves, deepest = 0, math.inf
-    for line in sys.stdin:
-        r = json.loads(line)
-        if r["kind"] not in ("rapid", "linear", "arc"):
-            continue
-        if "work" in r:  # program coordinates: shift start, end and centre by work - end
-            d = [w - e for w, e in zip(r["work"], r["end"])]
-            r["start"] = [v + dv for v, dv in zip(r["start"], d)]
-            r["end"] = list(r["work"])
-            if "center" in r:
-                r["center"] = [v + dv for v, dv in zip(r["center"], d)]
+    for r in moves_of(sys.stdin):
         if min(r["start"][2], r["end"][2]) >= a.below or (a.line is not None and r["line"] != a.line):
             continue
         moves += 1

@@ -90,6 +90,22 @@ def poly_arg(text):
     return [tuple(float(v) for v in pt.split(",")) for pt in text.split()]
 
 
+def moves_of(stream):
+    """The rapid, linear and arc records of a JSONL motion stream, in program coordinates (a
+    record with "work" has its start, end and centre shifted by work - end)."""
+    for line in stream:
+        r = json.loads(line)
+        if r["kind"] not in ("rapid", "linear", "arc"):
+            continue
+        if "work" in r:
+            d = [w - e for w, e in zip(r["work"], r["end"])]
+            r["start"] = [v + dv for v, dv in zip(r["start"], d)]
+            r["end"] = list(r["work"])
+            if "center" in r:
+                r["center"] = [v + dv for v, dv in zip(r["center"], d)]
+        yield r
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--below", type=float, required=True)
@@ -108,16 +124,7 @@ def main():
     moves = 0
     min_island = min_wall = math.inf
     deepest = math.inf
-    for line in sys.stdin:
-        r = json.loads(line)
-        if r["kind"] not in ("rapid", "linear", "arc"):
-            continue
-        if "work" in r:  # program coordinates: shift start, end and centre by work - end
-            d = [w - e for w, e in zip(r["work"], r["end"])]
-            r["start"] = [v + dv for v, dv in zip(r["start"], d)]
-            r["end"] = list(r["work"])
-            if "center" in r:
-                r["center"] = [v + dv for v, dv in zip(r["center"], d)]
+    for r in moves_of(sys.stdin):
         if min(r["start"][2], r["end"][2]) >= a.below:
             continue
         moves += 1
